@@ -1,0 +1,174 @@
+// deploydyn command-line tool: `run` a model into a result folder, `check` a model file.
+// Exit codes: 0 success, 1 solver failure or interruption, 2 bad input.
+
+#include <CLI/CLI.hpp>
+#include <fmt/format.h>
+#include <unistd.h>
+
+#include <atomic>
+#include <chrono>
+#include <csignal>
+#include <cstdio>
+#include <iostream>
+
+#include "deploydyn/assembly/assembler.hpp"
+#include "deploydyn/io/input_error.hpp"
+#include "deploydyn/io/model_loader.hpp"
+#include "deploydyn/output/run_to_folder.hpp"
+
+namespace {
+
+using namespace deploydyn;
+
+constexpr int kExitSolverFailure = 1;
+constexpr int kExitBadInput = 2;
+
+std::atomic<bool> g_stop{false};
+extern "C" void request_stop(int) { g_stop.store(true); }
+
+std::vector<Override> parse_overrides(const std::vector<std::string>& texts) {
+  std::vector<Override> overrides;
+  for (const std::string& text : texts) overrides.push_back(parse_override(text));
+  return overrides;
+}
+
+// A one-line progress display on stderr, refreshed a few times a second, for runs longer
+// than about a second; silent when stderr is not a terminal or with --quiet.
+class ProgressLine {
+ public:
+  ProgressLine(double end_time_s, bool quiet)
+      : end_time_s_(end_time_s), enabled_(!quiet && isatty(fileno(stderr)) != 0),
+        start_(Clock::now()), last_(start_) {}
+
+  void update(double time_s) {
+    ++steps_;
+    if (!enabled_) return;
+    const auto now = Clock::now();
+    if (now - start_ < std::chrono::seconds(1) || now - last_ < std::chrono::milliseconds(250)) return;
+    last_ = now;
+    const double elapsed = std::chrono::duration<double>(now - start_).count();
+    const double rate = steps_ / elapsed;
+    const double eta = time_s > 0.0 ? elapsed * (end_time_s_ - time_s) / time_s : 0.0;
+    fmt::print(stderr, "\r  t = {:.4g} / {:.4g} s   {:.0f} steps/s   ETA {:.0f} s   ", time_s,
+               end_time_s_, rate, eta);
+    shown_ = true;
+  }
+  void clear() {
+    if (shown_) fmt::print(stderr, "\r{:60}\r", "");
+  }
+
+ private:
+  using Clock = std::chrono::steady_clock;
+  double end_time_s_;
+  bool enabled_;
+  bool shown_ = false;
+  long steps_ = 0;
+  Clock::time_point start_, last_;
+};
+
+int run_command(const std::string& model_file, const std::string& out_dir,
+                const std::vector<std::string>& sets, bool quiet) {
+  const Model model = load_model(model_file, parse_overrides(sets));
+  std::signal(SIGINT, request_stop);
+  std::signal(SIGTERM, request_stop);
+  ProgressLine progress(model.analysis.end_time_s, quiet);
+  RunControl control;
+  control.progress = [&](double t) { progress.update(t); };
+  control.stop = &g_stop;
+  const RunReport report = run_to_folder(model, out_dir, control);
+  progress.clear();
+  if (report.status == RunStatus::completed) {
+    if (!quiet) {
+      fmt::print(stderr, "{}: {} in {:.3f} s, {} Newton iterations ({:.2f} per step); results in {}\n",
+                 model_file, report.message, report.wall_time_s, report.newton_iterations,
+                 report.steps > 0 ? double(report.newton_iterations) / report.steps : 0.0, out_dir);
+    }
+    return 0;
+  }
+  fmt::print(stderr, "{}: {}\nresults so far are in {}\n", model_file, report.message, out_dir);
+  return kExitSolverFailure;
+}
+
+int check_command(const std::string& model_file, const std::vector<std::string>& sets) {
+  const Model model = load_model(model_file, parse_overrides(sets));
+  const Assembler assembler(model);
+  int support_rows = 0;
+  for (const FixedNode& s : model.supports) {
+    for (int axis = 0; axis < model.dimension; ++axis) support_rows += s.axes[axis] ? 1 : 0;
+  }
+  const int driver_rows = assembler.n_equations() - support_rows;
+  double mass = 0.0;
+  for (const BarElement& b : model.bars) mass += b.mass_kg;
+  for (const Node& n : model.nodes) mass += n.point_mass_kg;
+  auto names = [](const auto& items) {
+    std::vector<std::string> out;
+    for (const auto& item : items) out.push_back(item.name);
+    return fmt::format("{}", fmt::join(out, ", "));
+  };
+  // Grübler count with bars taken as rigid: each bar removes one degree of freedom.
+  const int free_motion = assembler.n_dofs() - support_rows - model.n_bars();
+  const AnalysisOptions& a = model.analysis;
+
+  fmt::print("model       {} ({})\n", model.name.empty() ? "(unnamed)" : model.name, model_file);
+  fmt::print("dimension   {}D\n", model.dimension);
+  fmt::print("nodes       {}: {}\n", model.n_nodes(), names(model.nodes));
+  fmt::print("elements    {} bars: {}; total mass {:.6g} kg\n", model.n_bars(), names(model.bars), mass);
+  fmt::print("supports    {} ({} equations)\n", model.supports.size(), support_rows);
+  fmt::print("drivers     {} ({} equations){}{}\n", model.drivers.size(), driver_rows,
+             model.drivers.empty() ? "" : ": ", names(model.drivers));
+  fmt::print("unknowns    {} coordinates + {} multipliers\n", assembler.n_dofs(), assembler.n_equations());
+  fmt::print("mobility    {} coordinates − {} support equations − {} bars = {} with rigid bars; "
+             "{} after the drivers{}\n",
+             assembler.n_dofs(), support_rows, model.n_bars(), free_motion, free_motion - driver_rows,
+             free_motion - driver_rows == 0   ? " (driven mechanism, kinematically determinate)"
+             : free_motion - driver_rows > 0 ? " (free motion left: a dynamic run is needed)"
+                                             : " (over-constrained with rigid bars: bars will be strained)");
+  fmt::print("thermal     ΔT(0) = {:g} °C on bars without their own\n", model.temperature_change_C.value(0.0));
+  fmt::print("analysis    {}, t = 0 → {:g} s, step {:g} s ({:.0f} steps), Newmark β = {:g}, γ = {:g}\n",
+             a.type == AnalysisType::dynamic ? "dynamic" : "static", a.end_time_s, a.step_s,
+             a.end_time_s / a.step_s, a.integrator.beta, a.integrator.gamma);
+  return 0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  CLI::App app{"deploydyn: deployment dynamics of flexible deployable structures under thermal loading"};
+  app.require_subcommand(1);
+  app.set_version_flag("--version", "deploydyn 0.1.0");
+
+  std::string model_file, out_dir = "results";
+  std::vector<std::string> sets;
+  bool quiet = false;
+
+  CLI::App* run = app.add_subcommand("run", "Run a model's analysis; write history.csv and summary.json");
+  run->add_option("model", model_file, "Model file (YAML or JSON)")->required();
+  run->add_option("--out,-o", out_dir, "Result folder (created if needed)")->capture_default_str();
+  run->add_option("--set,-s", sets, "Override a scalar of the model: PATH=VALUE, e.g. thermal.dT=130");
+  run->add_flag("--quiet,-q", quiet, "No progress or closing line on stderr");
+
+  CLI::App* check = app.add_subcommand("check", "Validate a model and print a one-screen summary");
+  check->add_option("model", model_file, "Model file (YAML or JSON)")->required();
+  check->add_option("--set,-s", sets, "Override a scalar of the model: PATH=VALUE");
+
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    const int code = app.exit(e);
+    return code == 0 ? 0 : kExitBadInput;
+  }
+
+  try {
+    if (*run) return run_command(model_file, out_dir, sets, quiet);
+    return check_command(model_file, sets);
+  } catch (const InputError& e) {
+    fmt::print(stderr, "error: {}\n", e.what());
+    return kExitBadInput;
+  } catch (const std::invalid_argument& e) {
+    fmt::print(stderr, "error: {}: {}\n", model_file, e.what());
+    return kExitBadInput;
+  } catch (const std::exception& e) {
+    fmt::print(stderr, "error: {}\n", e.what());
+    return kExitSolverFailure;
+  }
+}

@@ -1,0 +1,314 @@
+#include "deploydyn/assembly/assembler.hpp"
+
+#include <stdexcept>
+
+#include "deploydyn/constraints/prescribed_coordinates.hpp"
+#include "deploydyn/elements/bar.hpp"
+
+namespace deploydyn {
+namespace {
+
+constexpr const char* kAxisNames[] = {"x", "y", "z"};
+
+bar::Section section_of(const BarElement& e, const Model& model) {
+  return {model.materials[e.material].youngs_modulus_Pa * e.area_m2, e.reference_length_m};
+}
+
+template <int D>
+bar::Vector<D> node_position(const Eigen::VectorXd& q, std::span<const int> dofs) {
+  bar::Vector<D> x;
+  for (int i = 0; i < D; ++i) x[i] = q[dofs[i]];
+  return x;
+}
+
+std::unique_ptr<Constraint> make_support(const FixedNode& support, const Model& model,
+                                         const DofMap& dofs) {
+  const Node& node = model.nodes[support.node];
+  std::vector<int> rows;
+  std::vector<double> initial;
+  std::vector<std::string> labels;
+  for (int axis = 0; axis < model.dimension; ++axis) {
+    if (!support.axes[axis]) continue;
+    rows.push_back(dofs.index(support.node, axis));
+    initial.push_back(node.position_m[axis]);
+    labels.push_back("support " + node.name + ", " + kAxisNames[axis]);
+  }
+  return std::make_unique<PrescribedCoordinates>(rows, initial, labels);
+}
+
+std::unique_ptr<Constraint> make_driver(const Driver& driver, const Model& model,
+                                        const DofMap& dofs) {
+  const DriverMotion motion(driver.profile, driver.reading);
+  const std::string label = "driver " + driver.name;
+  if (driver.kind == Driver::Kind::coordinate) {
+    const Node& node = model.nodes[driver.node];
+    return std::make_unique<PrescribedCoordinates>(
+        std::vector<int>{dofs.index(driver.node, driver.direction)},
+        std::vector<double>{node.position_m[driver.direction]},
+        std::vector<std::string>{label + " (" + kAxisNames[driver.direction] + "." + node.name +
+                                 ")"},
+        motion);
+  }
+  const BarElement& bar = model.bars[driver.element];
+  const int tip = bar.node_a == driver.pivot ? bar.node_b : bar.node_a;
+  std::vector<int> pivot_dofs, tip_dofs;
+  for (int axis = 0; axis < model.dimension; ++axis) {
+    pivot_dofs.push_back(dofs.index(driver.pivot, axis));
+    tip_dofs.push_back(dofs.index(tip, axis));
+  }
+  const Eigen::Vector3d axis = model.dimension == 2 ? Eigen::Vector3d::UnitZ() : driver.axis;
+  return std::make_unique<DrivenBarAngle>(pivot_dofs, tip_dofs,
+                                          model.nodes[driver.pivot].position_m,
+                                          model.nodes[tip].position_m, axis, motion,
+                                          label + " (angle of element " + bar.name + ")");
+}
+
+}  // namespace
+
+Assembler::Assembler(const Model& model) : model_(model), dofs_(model) {
+  for (const BarElement& e : model.bars) {
+    std::vector<int> d;
+    for (int node : {e.node_a, e.node_b}) {
+      for (int axis = 0; axis < model.dimension; ++axis) d.push_back(dofs_.index(node, axis));
+    }
+    bar_dofs_.push_back(std::move(d));
+  }
+  for (const FixedNode& support : model.supports) {
+    constraints_.push_back(make_support(support, model, dofs_));
+  }
+  for (const Driver& driver : model.drivers) {
+    driver_constraint_.push_back(static_cast<int>(constraints_.size()));
+    constraints_.push_back(make_driver(driver, model, dofs_));
+  }
+  for (const auto& c : constraints_) {
+    first_row_.push_back(n_equations_);
+    n_equations_ += c->n_equations();
+  }
+  for (int index : driver_constraint_) driver_rows_.push_back(first_row_[index]);
+}
+
+Eigen::VectorXd Assembler::initial_coordinates() const {
+  Eigen::VectorXd q(n_dofs());
+  for (int node = 0; node < model_.n_nodes(); ++node) {
+    for (int axis = 0; axis < model_.dimension; ++axis) {
+      q[dofs_.index(node, axis)] = model_.nodes[node].position_m[axis];
+    }
+  }
+  return q;
+}
+
+double Assembler::thermal_strain(int bar, double t) const {
+  const BarElement& e = model_.bars[bar];
+  return model_.materials[e.material].expansion_per_C * e.temperature_change_C.value(t);
+}
+
+template <int D>
+void Assembler::for_each_bar(const Eigen::VectorXd& q, double t, double thermal_factor,
+                             auto&& visit) const {
+  for (int b = 0; b < model_.n_bars(); ++b) {
+    const std::span<const int> d = bar_dofs_[b];
+    const bar::Section section = section_of(model_.bars[b], model_);
+    const bar::State<D> state =
+        bar::evaluate<D>(node_position<D>(q, d.first(D)), node_position<D>(q, d.last(D)), section,
+                         thermal_factor * thermal_strain(b, t));
+    visit(b, d, state, section);
+  }
+}
+
+// Calls body(std::integral_constant<int, D>) with the model's dimension D = 2 or 3, so that
+// the element kernels run with fixed-size matrices.
+template <class Body>
+void with_dimension(int dimension, Body&& body) {
+  if (dimension == 2) {
+    body(std::integral_constant<int, 2>{});
+  } else {
+    body(std::integral_constant<int, 3>{});
+  }
+}
+
+void Assembler::internal_force(const Eigen::VectorXd& q, double t, double thermal_factor,
+                               Eigen::VectorXd& f) const {
+  f.setZero(n_dofs());
+  with_dimension(model_.dimension, [&](auto dim) {
+    constexpr int D = decltype(dim)::value;
+    for_each_bar<D>(q, t, thermal_factor, [&](int, std::span<const int> d, const auto& s,
+                                              const bar::Section& section) {
+      const bar::ElementVector<D> fe = bar::internal_force<D>(s, section);
+      for (int i = 0; i < 2 * D; ++i) f[d[i]] += fe[i];
+    });
+  });
+}
+
+void Assembler::external_force(double t, Eigen::VectorXd& f) const {
+  f.setZero(n_dofs());
+  const int dim = model_.dimension;
+  if (!model_.gravity_m_s2.isZero()) {
+    // Each bar's weight is shared equally by its two nodes (DESIGN §2).
+    for (int b = 0; b < model_.n_bars(); ++b) {
+      for (int i = 0; i < 2 * dim; ++i) {
+        f[bar_dofs_[b][i]] += 0.5 * model_.bars[b].mass_kg * model_.gravity_m_s2[i % dim];
+      }
+    }
+    for (int node = 0; node < model_.n_nodes(); ++node) {
+      for (int axis = 0; axis < dim; ++axis) {
+        f[dofs_.index(node, axis)] += model_.nodes[node].point_mass_kg * model_.gravity_m_s2[axis];
+      }
+    }
+  }
+  for (const NodalLoad& load : model_.loads) {
+    const double factor = load.factor.value(t);
+    for (int axis = 0; axis < dim; ++axis) {
+      f[dofs_.index(load.node, axis)] += factor * load.force_N[axis];
+    }
+  }
+}
+
+void Assembler::mass_times(const Eigen::VectorXd& a, Eigen::VectorXd& out) const {
+  out.setZero(n_dofs());
+  with_dimension(model_.dimension, [&](auto dim) {
+    constexpr int D = decltype(dim)::value;
+    for (int b = 0; b < model_.n_bars(); ++b) {
+      const bar::ElementMatrix<D> m = bar::mass_matrix<D>(model_.bars[b].mass_kg, model_.analysis.mass);
+      const std::vector<int>& d = bar_dofs_[b];
+      bar::ElementVector<D> ae;
+      for (int i = 0; i < 2 * D; ++i) ae[i] = a[d[i]];
+      const bar::ElementVector<D> me = m * ae;
+      for (int i = 0; i < 2 * D; ++i) out[d[i]] += me[i];
+    }
+  });
+  for (int node = 0; node < model_.n_nodes(); ++node) {
+    for (int axis = 0; axis < model_.dimension; ++axis) {
+      const int i = dofs_.index(node, axis);
+      out[i] += model_.nodes[node].point_mass_kg * a[i];
+    }
+  }
+}
+
+void Assembler::constraints(const Eigen::VectorXd& q, double t, Eigen::VectorXd& phi) const {
+  phi.resize(n_equations());
+  for (std::size_t c = 0; c < constraints_.size(); ++c) {
+    const Constraint& con = *constraints_[c];
+    Eigen::MatrixXd jacobian(con.n_equations(), con.dofs().size());
+    con.evaluate(q, t, phi.segment(first_row_[c], con.n_equations()), jacobian);
+  }
+}
+
+void Assembler::constraint_force(const Eigen::VectorXd& q, double t, const Eigen::VectorXd& lambda,
+                                 Eigen::VectorXd& f) const {
+  f.setZero(n_dofs());
+  for (std::size_t c = 0; c < constraints_.size(); ++c) {
+    const Constraint& con = *constraints_[c];
+    Eigen::VectorXd phi(con.n_equations());
+    Eigen::MatrixXd jacobian(con.n_equations(), con.dofs().size());
+    con.evaluate(q, t, phi, jacobian);
+    const Eigen::VectorXd fc = jacobian.transpose() * lambda.segment(first_row_[c], con.n_equations());
+    for (std::size_t i = 0; i < con.dofs().size(); ++i) f[con.dofs()[i]] += fc[i];
+  }
+}
+
+void Assembler::constraint_rates(const Eigen::VectorXd& q, const Eigen::VectorXd& v, double t,
+                                 Eigen::VectorXd& phi_t, Eigen::VectorXd& bias) const {
+  phi_t.resize(n_equations());
+  bias.resize(n_equations());
+  for (std::size_t c = 0; c < constraints_.size(); ++c) {
+    const Constraint& con = *constraints_[c];
+    con.time_derivatives(q, v, t, phi_t.segment(first_row_[c], con.n_equations()),
+                         bias.segment(first_row_[c], con.n_equations()));
+  }
+}
+
+void Assembler::iteration_matrix(const Eigen::VectorXd& q, double t, double thermal_factor,
+                                 const Eigen::VectorXd& lambda, const MatrixWeights& w,
+                                 LinearSystem& system) const {
+  system.set_zero();
+  with_dimension(model_.dimension, [&](auto dim) {
+    constexpr int D = decltype(dim)::value;
+    for_each_bar<D>(q, t, thermal_factor, [&](int b, std::span<const int> d, const auto& s,
+                                              const bar::Section& section) {
+      bar::ElementMatrix<D> k = w.stiffness * bar::tangent<D>(s, section);
+      if (w.mass != 0.0) k += w.mass * bar::mass_matrix<D>(model_.bars[b].mass_kg, model_.analysis.mass);
+      system.add(d, d, k);
+    });
+  });
+  if (w.mass != 0.0) {
+    for (int node = 0; node < model_.n_nodes(); ++node) {
+      if (model_.nodes[node].point_mass_kg == 0.0) continue;
+      for (int axis = 0; axis < model_.dimension; ++axis) {
+        const int i = dofs_.index(node, axis);
+        const Eigen::Matrix<double, 1, 1> m(w.mass * model_.nodes[node].point_mass_kg);
+        system.add(std::span<const int>(&i, 1), std::span<const int>(&i, 1), m);
+      }
+    }
+  }
+  for (std::size_t c = 0; c < constraints_.size(); ++c) {
+    const Constraint& con = *constraints_[c];
+    const int n_eq = con.n_equations();
+    const auto n_local = static_cast<Eigen::Index>(con.dofs().size());
+    Eigen::VectorXd phi(n_eq);
+    Eigen::MatrixXd jacobian(n_eq, n_local);
+    con.evaluate(q, t, phi, jacobian);
+    std::vector<int> rows(n_eq);
+    for (int k = 0; k < n_eq; ++k) rows[k] = n_dofs() + first_row_[c] + k;
+    system.add_symmetric_pair(rows, con.dofs(), w.constraint_scale * jacobian);
+    Eigen::MatrixXd hessian = Eigen::MatrixXd::Zero(n_local, n_local);
+    con.add_hessian_term(q, t, lambda.segment(first_row_[c], n_eq), hessian);
+    if (!hessian.isZero(0.0)) system.add(con.dofs(), con.dofs(), w.stiffness * hessian);
+  }
+}
+
+double Assembler::stiffness_scale(const Eigen::VectorXd& q, double t) const {
+  double scale = 0.0;
+  with_dimension(model_.dimension, [&](auto dim) {
+    constexpr int D = decltype(dim)::value;
+    for_each_bar<D>(q, t, 1.0, [&](int, std::span<const int>, const auto& s,
+                                   const bar::Section& section) {
+      scale = std::max(scale, bar::tangent<D>(s, section).diagonal().cwiseAbs().maxCoeff());
+    });
+  });
+  return scale > 0.0 ? scale : 1.0;
+}
+
+BarResult Assembler::bar_result(int b, const Eigen::VectorXd& q, double t) const {
+  BarResult result;
+  with_dimension(model_.dimension, [&](auto dim) {
+    constexpr int D = decltype(dim)::value;
+    const std::span<const int> d = bar_dofs_[b];
+    const bar::State<D> s =
+        bar::evaluate<D>(node_position<D>(q, d.first(D)), node_position<D>(q, d.last(D)),
+                         section_of(model_.bars[b], model_), thermal_strain(b, t));
+    result = {s.strain, s.mechanical_strain, s.axial_force_N, s.length_m};
+  });
+  return result;
+}
+
+double Assembler::strain_energy(const Eigen::VectorXd& q, double t) const {
+  double energy = 0.0;
+  with_dimension(model_.dimension, [&](auto dim) {
+    constexpr int D = decltype(dim)::value;
+    for_each_bar<D>(q, t, 1.0, [&](int, std::span<const int>, const auto& s,
+                                   const bar::Section& section) {
+      energy += bar::strain_energy<D>(s, section);
+    });
+  });
+  return energy;
+}
+
+double Assembler::driver_effort(int driver, const Eigen::VectorXd& q, double t,
+                                const Eigen::VectorXd& lambda) const {
+  const Constraint& con = *constraints_[driver_constraint_[driver]];
+  const auto multipliers = lambda.segment(driver_rows_[driver], con.n_equations());
+  if (const auto* angle = dynamic_cast<const DrivenBarAngle*>(&con)) {
+    return angle->torque(q, t, multipliers);
+  }
+  // Coordinate driver: the force it applies along the coordinate is −λ.
+  return -multipliers[0];
+}
+
+std::string Assembler::describe_equation(int row) const {
+  for (std::size_t c = constraints_.size(); c-- > 0;) {
+    if (row >= first_row_[c]) return constraints_[c]->describe(row - first_row_[c]);
+  }
+  return "constraint row " + std::to_string(row);
+}
+
+}  // namespace deploydyn

@@ -1,0 +1,94 @@
+#pragma once
+// Builds the mechanics of a Model (bars, constraints, loads) and evaluates the global
+// quantities the solvers need, for
+//   M q̈ + f_int(q, t) + Bᵀλ = f_ext(t),   Φ(q, t) = 0          (DESIGN §2, paper Eq. 8)
+// Elements and constraints return local vectors and matrices; this class scatters them.
+// It holds no solution state: q, q̇, λ are always passed in.
+
+#include <Eigen/Core>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "deploydyn/assembly/linear_system.hpp"
+#include "deploydyn/constraints/constraint.hpp"
+#include "deploydyn/constraints/driven_bar_angle.hpp"
+#include "deploydyn/model/dof_map.hpp"
+#include "deploydyn/model/model.hpp"
+
+namespace deploydyn {
+
+// What one bar reports at one configuration (history.csv columns).
+struct BarResult {
+  double strain = 0.0;             // total Green–Lagrange
+  double mechanical_strain = 0.0;  // total − thermal
+  double axial_force_N = 0.0;      // true axial force, tension positive
+  double length_m = 0.0;
+};
+
+class Assembler {
+ public:
+  // Throws std::invalid_argument for a model whose mechanics cannot be built (e.g. a driven
+  // bar along its rotation axis). Keeps a reference to `model`, which must outlive it.
+  explicit Assembler(const Model& model);
+
+  const Model& model() const { return model_; }
+  const DofMap& dof_map() const { return dofs_; }
+  int n_dofs() const { return dofs_.n_dofs(); }
+  int n_equations() const { return n_equations_; }  // constraint rows
+  int n_unknowns() const { return n_dofs() + n_equations(); }
+
+  Eigen::VectorXd initial_coordinates() const;
+
+  // f_int(q, t) with the thermal strain scaled by `thermal_factor` (1 in a run; less while
+  // the initial equilibrium is found by load stepping).
+  void internal_force(const Eigen::VectorXd& q, double t, double thermal_factor,
+                      Eigen::VectorXd& f) const;
+  void external_force(double t, Eigen::VectorXd& f) const;
+  void mass_times(const Eigen::VectorXd& a, Eigen::VectorXd& out) const;  // M a
+
+  void constraints(const Eigen::VectorXd& q, double t, Eigen::VectorXd& phi) const;
+  void constraint_force(const Eigen::VectorXd& q, double t, const Eigen::VectorXd& lambda,
+                        Eigen::VectorXd& f) const;  // Bᵀλ
+  void constraint_rates(const Eigen::VectorXd& q, const Eigen::VectorXd& v, double t,
+                        Eigen::VectorXd& phi_t, Eigen::VectorXd& bias) const;
+
+  // Weights of the iteration matrix [c_M M + c_K (K + H(λ)), s Bᵀ; s B, 0].
+  struct MatrixWeights {
+    double mass = 0.0;
+    double stiffness = 1.0;
+    double constraint_scale = 1.0;
+  };
+  void iteration_matrix(const Eigen::VectorXd& q, double t, double thermal_factor,
+                        const Eigen::VectorXd& lambda, const MatrixWeights& weights,
+                        LinearSystem& system) const;
+  // Largest diagonal entry of K at q: a stiffness scale for the static constraint rows.
+  double stiffness_scale(const Eigen::VectorXd& q, double t) const;
+
+  BarResult bar_result(int bar, const Eigen::VectorXd& q, double t) const;
+  double strain_energy(const Eigen::VectorXd& q, double t) const;
+  // Driver effort: torque (N·m) for bar_angle, force (N) for coordinate drivers.
+  double driver_effort(int driver, const Eigen::VectorXd& q, double t,
+                       const Eigen::VectorXd& lambda) const;
+  // First constraint row of driver `driver` in λ.
+  int driver_row(int driver) const { return driver_rows_[driver]; }
+
+  // Plain words for constraint row `row`, e.g. "support D, y" or "driver motor".
+  std::string describe_equation(int row) const;
+
+ private:
+  template <int D>
+  void for_each_bar(const Eigen::VectorXd& q, double t, double thermal_factor, auto&& visit) const;
+  double thermal_strain(int bar, double t) const;
+
+  const Model& model_;
+  DofMap dofs_;
+  std::vector<std::vector<int>> bar_dofs_;                // [bar] → 2·D global indices
+  std::vector<std::unique_ptr<Constraint>> constraints_;  // supports first, then drivers
+  std::vector<int> first_row_;                            // [constraint] → first λ row
+  std::vector<int> driver_rows_;                          // [driver] → first λ row
+  std::vector<int> driver_constraint_;                    // [driver] → index in constraints_
+  int n_equations_ = 0;
+};
+
+}  // namespace deploydyn

@@ -1,0 +1,53 @@
+#pragma once
+// A holonomic constraint Φ(q, t) = 0 with its derivatives (DESIGN §2):
+//   B = ∂Φ/∂q                         Jacobian, on the few unknowns it touches
+//   H(λ) = ∂(Bᵀλ)/∂q                  Hessian contracted with the multipliers (corrects the
+//                                      paper's B₂ in Eqs. 12, 15, 19: it belongs to the Δq column)
+//   Φ_t = ∂Φ/∂t,  Φ̈ = B q̈ + bias(q, q̇, t)   for consistent initial velocity and acceleration
+// Each constraint owns a small block of equation rows; the assembler places it.
+
+#include <Eigen/Core>
+#include <span>
+#include <string>
+#include <vector>
+
+namespace deploydyn {
+
+class Constraint {
+ public:
+  virtual ~Constraint() = default;
+
+  int n_equations() const { return n_equations_; }
+  // Global indices of the unknowns Φ depends on, in the column order of the local Jacobian.
+  std::span<const int> dofs() const { return dofs_; }
+
+  // Φ (n_equations) and the local Jacobian (n_equations × dofs().size()) at (q, t).
+  virtual void evaluate(const Eigen::VectorXd& q, double t, Eigen::Ref<Eigen::VectorXd> phi,
+                        Eigen::Ref<Eigen::MatrixXd> jacobian) const = 0;
+
+  // Adds H(λ) (local, dofs × dofs). The constraints we have are linear in q, so the default
+  // adds nothing; a constraint nonlinear in q overrides it.
+  virtual void add_hessian_term(const Eigen::VectorXd& q, double t,
+                                Eigen::Ref<const Eigen::VectorXd> lambda,
+                                Eigen::Ref<Eigen::MatrixXd> hessian) const {
+    (void)q, (void)t, (void)lambda, (void)hessian;
+  }
+
+  // Φ_t and bias = Φ̈ − B q̈ at (q, q̇, t).
+  virtual void time_derivatives(const Eigen::VectorXd& q, const Eigen::VectorXd& v, double t,
+                                Eigen::Ref<Eigen::VectorXd> phi_t,
+                                Eigen::Ref<Eigen::VectorXd> bias) const = 0;
+
+  // Plain words for equation `row` (local), used when a solve fails: "support A, x".
+  virtual std::string describe(int row) const = 0;
+
+ protected:
+  Constraint(int n_equations, std::vector<int> dofs)
+      : n_equations_(n_equations), dofs_(std::move(dofs)) {}
+
+ private:
+  int n_equations_;
+  std::vector<int> dofs_;
+};
+
+}  // namespace deploydyn

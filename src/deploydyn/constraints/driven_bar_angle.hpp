@@ -1,0 +1,48 @@
+#pragma once
+// Driver that turns a bar's direction about its pivot node (DESIGN §2):
+//   Φ_k = n_k(t) · (x_b − x_a),   n_k(t) = R(axis, s(t)) n_k(0)
+// where the n_k are unit normals to the bar's initial direction: one in 2D (axis = z, so
+// Φ = −sin θ Δx + cos θ Δy), two in 3D. Only the direction is prescribed, the bar stays free
+// to stretch, so thermal expansion of the driven bar is not resisted. Linear in q: H(λ) = 0.
+// The actuator torque about the axis is axis · (d × F_b) with F_b = −Σ λ_k n_k the constraint
+// force on the far node; in 2D that is −λ l (positive when it drives towards larger angles).
+
+#include <Eigen/Geometry>
+
+#include "deploydyn/constraints/constraint.hpp"
+#include "deploydyn/constraints/driver_motion.hpp"
+
+namespace deploydyn {
+
+class DrivenBarAngle final : public Constraint {
+ public:
+  // pivot_dofs/tip_dofs: the D coordinates of the pivot and the far node; their initial
+  // positions fix n_k(0). axis: unit rotation axis (z in 2D). Throws std::invalid_argument
+  // when the bar has zero length or lies along the axis.
+  DrivenBarAngle(std::vector<int> pivot_dofs, std::vector<int> tip_dofs,
+                 const Eigen::Vector3d& pivot_position, const Eigen::Vector3d& tip_position,
+                 const Eigen::Vector3d& axis, DriverMotion motion, std::string label);
+
+  void evaluate(const Eigen::VectorXd& q, double t, Eigen::Ref<Eigen::VectorXd> phi,
+                Eigen::Ref<Eigen::MatrixXd> jacobian) const override;
+  void time_derivatives(const Eigen::VectorXd& q, const Eigen::VectorXd& v, double t,
+                        Eigen::Ref<Eigen::VectorXd> phi_t,
+                        Eigen::Ref<Eigen::VectorXd> bias) const override;
+  std::string describe(int row) const override;
+
+  // Torque (N·m) the actuator applies to the bar about the axis, from this constraint's
+  // multipliers (λ as in M q̈ + f + Bᵀλ = f_ext).
+  double torque(const Eigen::VectorXd& q, double t, Eigen::Ref<const Eigen::VectorXd> lambda) const;
+
+ private:
+  int dimension() const { return static_cast<int>(dofs().size()) / 2; }
+  Eigen::Vector3d bar_vector(const Eigen::VectorXd& x) const;  // x_b − x_a (or its rate)
+  Eigen::Vector3d normal(int k, double t) const;
+
+  Eigen::Vector3d axis_;
+  std::vector<Eigen::Vector3d> initial_normals_;
+  DriverMotion motion_;
+  std::string label_;
+};
+
+}  // namespace deploydyn

@@ -1,0 +1,113 @@
+#pragma once
+// Two-node bar in absolute nodal coordinates (Géradin & Cardona 2000; Cai et al. 2017 Eqs. 1,
+// 16–18; DESIGN §2, with the paper's errata corrected).
+//
+//   d = x_b − x_a,  ε = (d·d − L0²) / (2 L0²)        Green–Lagrange strain, Eq. (1)
+//   ε_m = ε − ε_t,  ε_t = α ΔT                        mechanical strain, Eq. (18)
+//   U = ½ EA L0 ε_m²                                  strain energy (reference length L0)
+//   f = (EA ε_m / L0) [−d; d]                         internal force  = ∂U/∂q
+//   K = (EA/L0³) [ddᵀ −ddᵀ; −ddᵀ ddᵀ]                 material tangent
+//     + (EA ε_m/L0) [I −I; −I I]                      geometric tangent
+//   S = EA ε_m (2nd Piola–Kirchhoff),  N = S l / L0   (true axial force, tension positive)
+//   M = (m/6) [2I I; I 2I] consistent, (m/2) I lumped  (constant in absolute coordinates)
+//
+// Kernels are fixed-size in the space dimension D (2 or 3): no heap work per element.
+
+#include <Eigen/Core>
+#include <cmath>
+
+#include "deploydyn/model/model.hpp"
+
+namespace deploydyn::bar {
+
+template <int D>
+using Vector = Eigen::Matrix<double, D, 1>;
+template <int D>
+using ElementVector = Eigen::Matrix<double, 2 * D, 1>;
+template <int D>
+using ElementMatrix = Eigen::Matrix<double, 2 * D, 2 * D>;
+
+// The section constants one evaluation needs.
+struct Section {
+  double axial_stiffness_N = 0.0;   // EA
+  double reference_length_m = 0.0;  // L0
+};
+
+// Strain state of a bar at one configuration.
+template <int D>
+struct State {
+  Vector<D> d;                   // x_b − x_a (m)
+  double length_m = 0.0;         // l = |d|
+  double strain = 0.0;           // ε, total Green–Lagrange
+  double mechanical_strain = 0.0;  // ε_m = ε − ε_t
+  double pk2_force_N = 0.0;      // S = EA ε_m
+  double axial_force_N = 0.0;    // N = S l / L0
+};
+
+template <int D>
+State<D> evaluate(const Vector<D>& x_a, const Vector<D>& x_b, const Section& section,
+                  double thermal_strain) {
+  State<D> s;
+  s.d = x_b - x_a;
+  const double l0 = section.reference_length_m;
+  const double length_sq = s.d.squaredNorm();
+  s.length_m = std::sqrt(length_sq);
+  s.strain = (length_sq - l0 * l0) / (2.0 * l0 * l0);
+  s.mechanical_strain = s.strain - thermal_strain;
+  s.pk2_force_N = section.axial_stiffness_N * s.mechanical_strain;
+  s.axial_force_N = s.pk2_force_N * s.length_m / l0;
+  return s;
+}
+
+template <int D>
+double strain_energy(const State<D>& s, const Section& section) {
+  return 0.5 * section.axial_stiffness_N * section.reference_length_m * s.mechanical_strain *
+         s.mechanical_strain;
+}
+
+template <int D>
+ElementVector<D> internal_force(const State<D>& s, const Section& section) {
+  ElementVector<D> f;
+  const Vector<D> g = (s.pk2_force_N / section.reference_length_m) * s.d;
+  f << -g, g;
+  return f;
+}
+
+template <int D>
+ElementMatrix<D> material_tangent(const State<D>& s, const Section& section) {
+  const double l0 = section.reference_length_m;
+  const Eigen::Matrix<double, D, D> k = (section.axial_stiffness_N / (l0 * l0 * l0)) * s.d * s.d.transpose();
+  ElementMatrix<D> out;
+  out << k, -k, -k, k;
+  return out;
+}
+
+template <int D>
+ElementMatrix<D> geometric_tangent(const State<D>& s, const Section& section) {
+  const Eigen::Matrix<double, D, D> k =
+      (s.pk2_force_N / section.reference_length_m) * Eigen::Matrix<double, D, D>::Identity();
+  ElementMatrix<D> out;
+  out << k, -k, -k, k;
+  return out;
+}
+
+template <int D>
+ElementMatrix<D> tangent(const State<D>& s, const Section& section) {
+  return material_tangent(s, section) + geometric_tangent(s, section);
+}
+
+template <int D>
+ElementMatrix<D> mass_matrix(double mass_kg, MassMatrixKind kind) {
+  using Block = Eigen::Matrix<double, D, D>;
+  const Block eye = Block::Identity();
+  ElementMatrix<D> m;
+  if (kind == MassMatrixKind::consistent) {
+    m << 2.0 * eye, eye, eye, 2.0 * eye;
+    return (mass_kg / 6.0) * m;
+  }
+  m.setZero();
+  m.diagonal().setConstant(mass_kg / 2.0);
+  return m;
+}
+
+}  // namespace deploydyn::bar

@@ -1,0 +1,885 @@
+#include "deploydyn/io/model_loader.hpp"
+
+#include <fmt/format.h>
+#include <yaml-cpp/yaml.h>
+
+#include <array>
+#include <charconv>
+#include <cmath>
+#include <fstream>
+#include <limits>
+#include <map>
+#include <optional>
+#include <sstream>
+#include <unordered_map>
+
+#include "deploydyn/io/input_error.hpp"
+#include "deploydyn/io/yaml_reader.hpp"
+
+namespace deploydyn {
+namespace {
+
+using io::Sign;
+using io::YamlValue;
+
+constexpr std::string_view kPaperEq23 = "paper_eq23";
+constexpr std::size_t kUnbounded = std::numeric_limits<std::size_t>::max();
+// A step below 1 ns or a run of more than 1e8 steps is a typo in the file, not a choice.
+constexpr double kMinStep_s = 1e-9;
+constexpr double kMaxSteps = 1e8;
+// output_interval / step is "whole" up to the rounding of decimal inputs such as 5e-3 / 1e-3.
+constexpr double kWholeMultipleTolerance = 1e-9;
+// Nodes closer than this are at the same position: a bar between them has no direction.
+constexpr double kMinBarLength_m = 1e-12;
+
+// The names of one kind of object (nodes, materials, ...) in file order, to resolve references.
+class NameIndex {
+ public:
+  explicit NameIndex(std::string kind) : kind_(std::move(kind)) {}
+
+  void add(const std::string& name) {
+    index_.emplace(name, static_cast<int>(names_.size()));
+    names_.push_back(name);
+  }
+
+  int find(const YamlValue& reference) const {
+    const std::string name = reference.text();
+    const auto found = index_.find(name);
+    if (found == index_.end()) {
+      reference.fail(fmt::format("unknown {} '{}'; {}s are {}", kind_, name, kind_,
+                                 io::join_names(names_)));
+    }
+    return found->second;
+  }
+
+ private:
+  std::string kind_;
+  std::vector<std::string> names_;
+  std::unordered_map<std::string, int> index_;
+};
+
+using FunctionTable = std::map<std::string, TimeFunction, std::less<>>;
+
+// Reads the model's sections in dependency order: functions and nodes before what refers to them.
+class ModelReader {
+ public:
+  explicit ModelReader(const YamlValue& root) : root_(root) {}
+
+  Model read() {
+    if (!root_.is_map()) {
+      root_.fail("expected a mapping with nodes, materials and elements, got " +
+                 root_.description());
+    }
+    root_.expect_keys({"name", "description", "units", "nodes", "materials", "elements",
+                       "thermal", "supports", "drivers", "loads", "gravity", "functions",
+                       "analysis", "output"});
+    if (const auto name = root_.find("name")) model_.name = name->text();
+    if (const auto description = root_.find("description")) {
+      model_.description = description->text();
+    }
+    if (const auto units = root_.find("units"); units && units->text() != "SI") {
+      units->fail(fmt::format("only SI is supported (m, kg, s, N, Pa, °C), got '{}'",
+                              units->text()));
+    }
+    if (const auto functions = root_.find("functions")) read_functions(*functions);
+    read_nodes(root_.at("nodes"));
+    read_materials(root_.at("materials"));
+    if (const auto thermal = root_.find("thermal")) {
+      thermal->expect_keys({"dT"});
+      if (const auto dT = thermal->find("dT")) model_.temperature_change_C = function(*dT);
+    }
+    read_elements(root_.at("elements"));
+    if (const auto supports = root_.find("supports")) read_supports(*supports);
+    if (const auto drivers = root_.find("drivers")) read_drivers(*drivers);
+    if (const auto loads = root_.find("loads")) read_loads(*loads);
+    if (const auto gravity = root_.find("gravity")) {
+      model_.gravity_m_s2 = vector(*gravity, "m/s²");
+    }
+    model_.analysis.output_interval_s = model_.analysis.step_s;
+    if (const auto analysis = root_.find("analysis")) read_analysis(*analysis);
+    if (const auto output = root_.find("output")) read_output(*output);
+    return std::move(model_);
+  }
+
+ private:
+  // Function specs -----------------------------------------------------------------------------
+
+  void read_functions(const YamlValue& section) {
+    for (const auto& [name, spec] : section.entries()) {
+      if (name == kPaperEq23) spec.fail("'paper_eq23' is a builtin function; choose another name");
+      // Entries may name the builtin but not each other: no order or cycles to worry about.
+      functions_.emplace(name, read_function(spec, nullptr));
+    }
+  }
+
+  TimeFunction function(const YamlValue& spec) const { return read_function(spec, &functions_); }
+
+  static TimeFunction read_function(const YamlValue& spec, const FunctionTable* named) {
+    if (spec.is_number()) return TimeFunction::constant(spec.number());
+    if (spec.is_scalar()) {
+      const std::string name = spec.text();
+      if (name == kPaperEq23) return TimeFunction::paper_eq23();
+      std::vector<std::string> known{std::string(kPaperEq23)};
+      if (named != nullptr) {
+        if (const auto found = named->find(name); found != named->end()) return found->second;
+        for (const auto& entry : *named) known.push_back(entry.first);
+      }
+      spec.fail(fmt::format("unknown function '{}'; give a number, a mapping with 'type', or one "
+                            "of: {}", name, io::join_names(known)));
+    }
+    if (!spec.is_map()) {
+      spec.fail("expected a function: a number, a function name or a mapping with 'type', got " +
+                spec.description());
+    }
+    switch (spec.at("type").choice(
+        {"constant", "smooth_step", "smooth_trapezoid", "paper_eq23", "table"})) {
+      case 0:
+        spec.expect_keys({"type", "value"});
+        return TimeFunction::constant(spec.at("value").number());
+      case 1:
+        return smooth_step(spec);
+      case 2:
+        return smooth_trapezoid(spec, false);
+      case 3:
+        return smooth_trapezoid(spec, true);
+      default:
+        return table(spec);
+    }
+  }
+
+  static TimeFunction smooth_step(const YamlValue& spec) {
+    spec.expect_keys({"type", "t0", "v0", "t1", "v1"});
+    TimeFunction::SmoothStep f{spec.at("t0").number(Sign::any, "s"), spec.at("v0").number(),
+                               spec.at("t1").number(Sign::any, "s"), spec.at("v1").number()};
+    if (!(f.t1 > f.t0)) {
+      spec.at("t1").fail(fmt::format("must be after t0 = {} s, got {}", f.t0, f.t1));
+    }
+    return TimeFunction(f);
+  }
+
+  // paper_eq23 as a mapping takes the same keys, each defaulting to the paper's value.
+  static TimeFunction smooth_trapezoid(const YamlValue& spec, bool keys_optional) {
+    spec.expect_keys({"type", "amplitude", "rise", "fall"});
+    const auto get = [&](std::string_view key) {
+      return keys_optional ? spec.find(key) : std::optional<YamlValue>(spec.at(key));
+    };
+    TimeFunction::SmoothTrapezoid f;  // the paper's values
+    if (const auto amplitude = get("amplitude")) f.amplitude = amplitude->number();
+    const auto rise = get("rise");
+    const auto fall = get("fall");
+    if (rise) {
+      const auto times = rise->numbers(2, 2, "s");
+      f.rise_start = times[0];
+      f.rise_end = times[1];
+      if (!(f.rise_end > f.rise_start)) {
+        rise->fail(fmt::format("expected [t0, t1] with t0 < t1, got [{}, {}]", f.rise_start,
+                               f.rise_end));
+      }
+    }
+    if (fall) {
+      const auto times = fall->numbers(2, 2, "s");
+      f.fall_start = times[0];
+      f.fall_end = times[1];
+    }
+    if (!(f.fall_start >= f.rise_end && f.fall_end > f.fall_start)) {
+      (fall ? *fall : rise ? *rise : spec)
+          .fail(fmt::format("needs rise [t0, t1] and fall [t2, t3] with t0 < t1 <= t2 < t3, got "
+                            "[{}, {}] and [{}, {}]",
+                            f.rise_start, f.rise_end, f.fall_start, f.fall_end));
+    }
+    return TimeFunction(f);
+  }
+
+  static TimeFunction table(const YamlValue& spec) {
+    spec.expect_keys({"type", "points"});
+    TimeFunction::Table f;
+    for (const auto& point : spec.at("points").items(1, kUnbounded, "[t, value] pairs")) {
+      const auto t_and_value = point.numbers(2, 2, "");
+      if (!f.times.empty() && !(t_and_value[0] > f.times.back())) {
+        point.fail(fmt::format("times must increase strictly, got {} after {}", t_and_value[0],
+                               f.times.back()));
+      }
+      f.times.push_back(t_and_value[0]);
+      f.values.push_back(t_and_value[1]);
+    }
+    return TimeFunction(f);
+  }
+
+  // Geometry ----------------------------------------------------------------------------------
+
+  void read_nodes(const YamlValue& section) {
+    const auto entries = section.entries();
+    if (entries.empty()) section.fail("needs at least one node");
+    std::optional<std::size_t> dimension;
+    for (const auto& [name, spec] : entries) {
+      Node node{.name = name};
+      if (spec.is_map()) {
+        spec.expect_keys({"at", "mass"});
+        node.point_mass_kg = spec.number_or("mass", 0.0, Sign::non_negative, "kg");
+      }
+      const YamlValue at = spec.is_map() ? spec.at("at") : spec;
+      const auto coordinates = at.numbers(2, 3, "m");
+      if (!dimension) dimension = coordinates.size();
+      if (coordinates.size() != *dimension) {
+        at.fail(fmt::format("has {} coordinates but node '{}' has {}; all nodes must be 2D or "
+                            "all 3D",
+                            coordinates.size(), model_.nodes.front().name, *dimension));
+      }
+      for (std::size_t i = 0; i < coordinates.size(); ++i) node.position_m[i] = coordinates[i];
+      nodes_.add(name);
+      model_.nodes.push_back(node);
+    }
+    model_.dimension = static_cast<int>(*dimension);
+  }
+
+  // A vector with one component per axis of the model, e.g. a force.
+  Eigen::Vector3d vector(const YamlValue& value, std::string_view unit) const {
+    const auto n = static_cast<std::size_t>(model_.dimension);
+    const auto components = value.numbers(n, n, unit);
+    Eigen::Vector3d result = Eigen::Vector3d::Zero();
+    for (std::size_t i = 0; i < n; ++i) result[i] = components[i];
+    return result;
+  }
+
+  // x, y or z (z only in 3D models), as 0, 1, 2.
+  int axis(const YamlValue& name) const {
+    const auto index = static_cast<int>(name.choice({"x", "y", "z"}));
+    if (index >= model_.dimension) name.fail("'z' is only allowed in 3D models; this model is 2D");
+    return index;
+  }
+
+  // Materials and elements --------------------------------------------------------------------
+
+  void read_materials(const YamlValue& section) {
+    const auto entries = section.entries();
+    if (entries.empty()) section.fail("needs at least one material");
+    for (const auto& [name, spec] : entries) {
+      spec.expect_keys({"E", "alpha", "density"});
+      Material material;
+      material.name = name;
+      material.youngs_modulus_Pa = spec.at("E").number(Sign::positive, "Pa");
+      material.expansion_per_C = spec.number_or("alpha", 0.0, Sign::any, "1/°C");
+      if (const auto density = spec.find("density")) {
+        material.density_kg_m3 = density->number(Sign::positive, "kg/m³");
+      }
+      materials_.add(name);
+      model_.materials.push_back(material);
+    }
+  }
+
+  void read_elements(const YamlValue& section) {
+    const auto entries = section.entries();
+    if (entries.empty()) section.fail("needs at least one element");
+    for (const auto& [name, spec] : entries) {
+      spec.expect_keys({"nodes", "area", "material", "mass", "length", "dT"});
+      BarElement bar;
+      bar.name = name;
+      const YamlValue ends = spec.at("nodes");
+      const auto end_names = ends.items(2, 2, "node names");
+      bar.node_a = nodes_.find(end_names[0]);
+      bar.node_b = nodes_.find(end_names[1]);
+      if (bar.node_a == bar.node_b) {
+        ends.fail(fmt::format("a bar needs two different nodes, got '{}' twice",
+                              end_names[0].text()));
+      }
+      const double distance =
+          (model_.nodes[bar.node_b].position_m - model_.nodes[bar.node_a].position_m).norm();
+      if (distance < kMinBarLength_m) {
+        ends.fail(fmt::format("zero-length bar: nodes '{}' and '{}' are at the same position",
+                              end_names[0].text(), end_names[1].text()));
+      }
+      bar.area_m2 = spec.at("area").number(Sign::positive, "m²");
+      bar.material = materials_.find(spec.at("material"));
+      const Material& material = model_.materials[bar.material];
+
+      const auto length = spec.find("length");
+      bar.length_given = length.has_value();
+      bar.reference_length_m = length ? length->number(Sign::positive, "m") : distance;
+
+      const auto mass = spec.find("mass");
+      bar.mass_given = mass.has_value();
+      if (mass) {
+        bar.mass_kg = mass->number(Sign::positive, "kg");
+      } else if (material.density_kg_m3) {
+        bar.mass_kg = *material.density_kg_m3 * bar.area_m2 * bar.reference_length_m;
+      } else {
+        spec.fail_key("mass", fmt::format("needs a mass: give 'mass' (kg) here or a 'density' "
+                                          "(kg/m³) in material '{}'",
+                                          material.name));
+      }
+
+      const auto dT = spec.find("dT");
+      bar.temperature_given = dT.has_value();
+      bar.temperature_change_C = dT ? function(*dT) : model_.temperature_change_C;
+      elements_.add(name);
+      model_.bars.push_back(bar);
+    }
+  }
+
+  // Supports, drivers, loads ------------------------------------------------------------------
+
+  void read_supports(const YamlValue& section) {
+    std::map<int, std::string> support_of_node;  // node → path of its support
+    for (const auto& spec : section.items(0, kUnbounded, "supports {node: name, fix: [x, y]}")) {
+      spec.expect_keys({"node", "fix"});
+      const YamlValue node = spec.at("node");
+      FixedNode support{.node = nodes_.find(node),
+                        .axes = {true, true, model_.dimension == 3}};
+      if (const auto [previous, added] = support_of_node.emplace(support.node, spec.path());
+          !added) {
+        node.fail(fmt::format("node '{}' already has a support ({}); list its axes in one 'fix'",
+                              node.text(), previous->second));
+      }
+      if (const auto fix = spec.find("fix")) {
+        support.axes = {false, false, false};
+        for (const auto& name : fix->items(1, 3, "axis names (x, y, z)")) {
+          support.axes[static_cast<std::size_t>(axis(name))] = true;
+        }
+      }
+      model_.supports.push_back(support);
+    }
+  }
+
+  void read_drivers(const YamlValue& section) {
+    for (const auto& [name, spec] : section.entries()) {
+      Driver driver;
+      driver.name = name;
+      const bool bar_angle = spec.at("type").choice({"bar_angle", "coordinate"}) == 0;
+      if (bar_angle) {
+        read_bar_angle(spec, driver);
+      } else {
+        spec.expect_keys({"type", "node", "direction", "profile", "reading"});
+        driver.kind = Driver::Kind::coordinate;
+        driver.node = nodes_.find(spec.at("node"));
+        driver.direction = axis(spec.at("direction"));
+        driver.reading = reading(spec, {"velocity", "displacement"});
+      }
+      driver.profile = function(spec.at("profile"));
+      model_.drivers.push_back(driver);
+    }
+  }
+
+  void read_bar_angle(const YamlValue& spec, Driver& driver) const {
+    spec.expect_keys({"type", "element", "pivot", "axis", "profile", "reading"});
+    driver.kind = Driver::Kind::bar_angle;
+    driver.element = elements_.find(spec.at("element"));
+    const BarElement& bar = model_.bars[driver.element];
+    driver.pivot = bar.node_a;
+    if (const auto pivot = spec.find("pivot")) {
+      driver.pivot = nodes_.find(*pivot);
+      if (driver.pivot != bar.node_a && driver.pivot != bar.node_b) {
+        pivot->fail(fmt::format("node '{}' is not on element '{}'; the pivot must be '{}' or '{}'",
+                                pivot->text(), bar.name, model_.nodes[bar.node_a].name,
+                                model_.nodes[bar.node_b].name));
+      }
+    }
+    if (const auto axis_value = spec.find("axis")) {
+      if (model_.dimension == 2) {
+        axis_value->fail("only allowed in 3D models; in 2D bars turn about z");
+      }
+      const auto components = axis_value->numbers(3, 3, "");
+      const Eigen::Vector3d direction(components[0], components[1], components[2]);
+      if (direction.norm() == 0.0) axis_value->fail("must not be zero, got [0, 0, 0]");
+      driver.axis = direction.normalized();
+    }
+    driver.reading = reading(spec, {"angular_velocity", "angle"});
+  }
+
+  // The first reading is the rate (the default), the second the value.
+  static DriverReading reading(const YamlValue& spec,
+                               std::initializer_list<std::string_view> rate_then_value) {
+    const auto given = spec.find("reading");
+    return !given || given->choice(rate_then_value) == 0 ? DriverReading::rate
+                                                        : DriverReading::value;
+  }
+
+  void read_loads(const YamlValue& section) {
+    for (const auto& spec : section.items(0, kUnbounded, "loads {node: name, force: [fx, fy]}")) {
+      spec.expect_keys({"node", "force", "factor"});
+      NodalLoad load{.node = nodes_.find(spec.at("node")),
+                     .force_N = vector(spec.at("force"), "N")};
+      if (const auto factor = spec.find("factor")) load.factor = function(*factor);
+      model_.loads.push_back(load);
+    }
+  }
+
+  // Analysis and output -----------------------------------------------------------------------
+
+  void read_analysis(const YamlValue& spec) {
+    spec.expect_keys({"type", "end", "step", "output_interval", "load_steps", "mass", "integrator",
+                      "newton"});
+    AnalysisOptions& analysis = model_.analysis;
+    if (const auto type = spec.find("type")) {
+      analysis.type = type->choice({"static", "dynamic"}) == 0 ? AnalysisType::quasi_static
+                                                               : AnalysisType::dynamic;
+    }
+    analysis.end_time_s = spec.number_or("end", analysis.end_time_s, Sign::positive, "s");
+    analysis.step_s = spec.number_or("step", analysis.step_s, Sign::positive, "s");
+    const auto step_problem = [&]() -> std::string {
+      if (analysis.step_s < kMinStep_s) return fmt::format("must be at least {} s", kMinStep_s);
+      if (analysis.step_s > analysis.end_time_s) {
+        return fmt::format("must not exceed end = {} s", analysis.end_time_s);
+      }
+      if (analysis.end_time_s / analysis.step_s > kMaxSteps) {
+        return fmt::format("gives {:.3g} steps up to end = {} s; at most {:g} are allowed",
+                           analysis.end_time_s / analysis.step_s, analysis.end_time_s, kMaxSteps);
+      }
+      return {};
+    }();
+    if (!step_problem.empty()) {
+      const std::string problem = fmt::format("{}, got {}", step_problem, analysis.step_s);
+      if (const auto step = spec.find("step")) step->fail(problem);
+      spec.fail_key("step", problem + " (the default)");
+    }
+    if (const auto load_steps = spec.find("load_steps")) {
+      analysis.load_steps = load_steps->integer(1);
+    }
+    if (const auto mass = spec.find("mass")) {
+      analysis.mass = mass->choice({"consistent", "lumped"}) == 0 ? MassMatrixKind::consistent
+                                                                  : MassMatrixKind::lumped;
+    }
+    if (const auto integrator = spec.find("integrator")) read_integrator(*integrator);
+    if (const auto newton = spec.find("newton")) read_newton(*newton);
+    analysis.output_interval_s = analysis.step_s;
+    if (const auto interval = spec.find("output_interval")) read_output_interval(*interval);
+  }
+
+  void read_output_interval(const YamlValue& interval) {
+    const AnalysisOptions& analysis = model_.analysis;
+    const double value = interval.number(Sign::positive, "s");
+    const double n_steps = value / analysis.step_s;
+    if (n_steps < 1.0 - kWholeMultipleTolerance) {
+      interval.fail(fmt::format("must be at least step = {} s, got {}", analysis.step_s, value));
+    }
+    if (std::abs(n_steps - std::round(n_steps)) > kWholeMultipleTolerance * n_steps) {
+      interval.fail(fmt::format("must be a whole multiple of step = {} s, got {} ({:.6g} steps)",
+                                 analysis.step_s, value, n_steps));
+    }
+    model_.analysis.output_interval_s = value;
+  }
+
+  void read_integrator(const YamlValue& spec) {
+    spec.expect_keys({"type", "beta", "gamma"});
+    if (const auto type = spec.find("type")) type->choice({"newmark"});
+    IntegratorOptions& integrator = model_.analysis.integrator;
+    integrator.beta = spec.number_or("beta", integrator.beta, Sign::any, "");
+    if (!(integrator.beta > 0.0 && integrator.beta <= 0.5)) {
+      spec.at("beta").fail(fmt::format("must be in (0, 0.5], got {}", integrator.beta));
+    }
+    integrator.gamma = spec.number_or("gamma", integrator.gamma, Sign::any, "");
+    if (integrator.gamma < 0.5) {
+      spec.at("gamma").fail(fmt::format("must be at least 0.5, got {}", integrator.gamma));
+    }
+  }
+
+  void read_newton(const YamlValue& spec) {
+    spec.expect_keys({"max_iterations", "tol_force", "tol_constraint", "tol_displacement"});
+    NewtonOptions& newton = model_.analysis.newton;
+    if (const auto max_iterations = spec.find("max_iterations")) {
+      newton.max_iterations = max_iterations->integer(1);
+    }
+    newton.force_tolerance = spec.number_or("tol_force", newton.force_tolerance, Sign::positive, "");
+    newton.constraint_tolerance_m =
+        spec.number_or("tol_constraint", newton.constraint_tolerance_m, Sign::positive, "m");
+    newton.displacement_tolerance_m =
+        spec.number_or("tol_displacement", newton.displacement_tolerance_m, Sign::positive, "m");
+  }
+
+  void read_output(const YamlValue& spec) {
+    spec.expect_keys({"history", "summary"});
+    OutputOptions& output = model_.output;
+    if (const auto history = spec.find("history")) output.history_file = file_name(*history);
+    if (const auto summary = spec.find("summary")) output.summary_file = file_name(*summary);
+  }
+
+  // Output goes into the run's output folder, so only a plain name makes sense.
+  static std::string file_name(const YamlValue& value) {
+    const std::string name = value.text();
+    if (name.empty() || name == "." || name == ".." ||
+        name.find_first_of("/\\") != std::string::npos) {
+      value.fail(fmt::format("must be a plain file name without folders, got '{}'", name));
+    }
+    return name;
+  }
+
+  const YamlValue& root_;
+  Model model_;
+  FunctionTable functions_;
+  NameIndex nodes_{"node"};
+  NameIndex materials_{"material"};
+  NameIndex elements_{"element"};
+};
+
+// Overrides ------------------------------------------------------------------------------------
+
+std::vector<std::string> split_path(const std::string& path) {
+  std::vector<std::string> keys;
+  std::size_t start = 0;
+  while (true) {
+    const std::size_t dot = path.find('.', start);
+    keys.push_back(path.substr(start, dot - start));
+    if (dot == std::string::npos) return keys;
+    start = dot + 1;
+  }
+}
+
+// Replaces (or adds, as the last key of an existing mapping) the scalar at override.path.
+void apply_override(YAML::Node root, const Override& override, io::YamlSource& source) {
+  const auto fail = [&](const std::string& problem) {
+    throw InputError(fmt::format("--set {}={}", override.path, override.value), 0, 0,
+                     override.path, problem);
+  };
+  const auto keys = split_path(override.path);
+  YAML::Node current = root;
+  std::string walked = "the top level";
+  for (std::size_t i = 0; i < keys.size(); ++i) {
+    const std::string& key = keys[i];
+    const bool last = i + 1 == keys.size();
+    if (key.empty()) fail("empty key in the path; separate keys by single dots, e.g. analysis.step");
+    std::optional<YAML::Node> next;
+    if (current.IsMap()) {
+      std::vector<std::string> present;
+      for (const auto& entry : current) {
+        if (entry.first.Scalar() == key) {
+          next.emplace(entry.second);
+          break;
+        }
+        present.push_back(entry.first.Scalar());
+      }
+      if (!next && last) {
+        current[key] = YAML::Node(override.value);
+        source.add_override(override);
+        return;
+      }
+      if (!next) fail(fmt::format("no key '{}' in {}{}", key, walked, io::suggestion(key, present)));
+    } else if (current.IsSequence()) {
+      std::size_t index = 0;
+      const auto [end, error] = std::from_chars(key.data(), key.data() + key.size(), index);
+      if (error != std::errc() || end != key.data() + key.size() || index >= current.size()) {
+        fail(fmt::format("{} is a list of {} items; expected an index from 0 to {}, got '{}'",
+                         walked, current.size(), current.size() - 1, key));
+      }
+      const YAML::Node& list = current;  // const: never let [] append
+      next.emplace(list[index]);
+    } else {
+      fail(fmt::format("{} is a single value; it has no '{}'", walked, key));
+    }
+    walked = fmt::format("'{}'", fmt::join(keys.begin(), keys.begin() + static_cast<std::ptrdiff_t>(i) + 1, "."));
+    current.reset(*next);  // rebinds; plain assignment would overwrite the node in the tree
+  }
+  if (!current.IsScalar() && !current.IsNull()) {
+    fail(fmt::format("{} is {}; --set replaces single values only", walked, io::describe(current)));
+  }
+  // Assigning a Node replaces the tree's node; the new one has no mark, so errors name the --set.
+  current = YAML::Node(override.value);
+  source.add_override(override);
+}
+
+YAML::Node parse_yaml(const std::string& text, const std::string& source_name) {
+  try {
+    return YAML::Load(text);
+  } catch (const YAML::ParserException& error) {
+    const bool located = !error.mark.is_null();
+    throw InputError(source_name, located ? error.mark.line + 1 : 0,
+                     located ? error.mark.column + 1 : 0, "", "YAML syntax: " + error.msg);
+  }
+}
+
+// Writing -------------------------------------------------------------------------------------
+
+template <class... Ts>
+struct Overloaded : Ts... {
+  using Ts::operator()...;
+};
+
+// The shortest text that reads back to the same double (at most 17 significant digits).
+std::string number_text(double value) { return fmt::format("{}", value); }
+
+void emit_numbers(YAML::Emitter& out, std::initializer_list<double> values) {
+  out << YAML::Flow << YAML::BeginSeq;
+  for (const double value : values) out << number_text(value);
+  out << YAML::EndSeq;
+}
+
+void emit_vector(YAML::Emitter& out, const Eigen::Vector3d& vector, int dimension) {
+  out << YAML::Flow << YAML::BeginSeq;
+  for (int i = 0; i < dimension; ++i) out << number_text(vector[i]);
+  out << YAML::EndSeq;
+}
+
+void emit_function(YAML::Emitter& out, const TimeFunction& function) {
+  std::visit(
+      Overloaded{
+          [&](const TimeFunction::Constant& f) { out << number_text(f.value); },
+          [&](const TimeFunction::SmoothStep& f) {
+            out << YAML::Flow << YAML::BeginMap << YAML::Key << "type" << YAML::Value
+                << "smooth_step" << YAML::Key << "t0" << YAML::Value << number_text(f.t0)
+                << YAML::Key << "v0" << YAML::Value << number_text(f.v0) << YAML::Key << "t1"
+                << YAML::Value << number_text(f.t1) << YAML::Key << "v1" << YAML::Value
+                << number_text(f.v1) << YAML::EndMap;
+          },
+          [&](const TimeFunction::SmoothTrapezoid& f) {
+            out << YAML::Flow << YAML::BeginMap << YAML::Key << "type" << YAML::Value
+                << "smooth_trapezoid" << YAML::Key << "amplitude" << YAML::Value
+                << number_text(f.amplitude) << YAML::Key << "rise" << YAML::Value;
+            emit_numbers(out, {f.rise_start, f.rise_end});
+            out << YAML::Key << "fall" << YAML::Value;
+            emit_numbers(out, {f.fall_start, f.fall_end});
+            out << YAML::EndMap;
+          },
+          [&](const TimeFunction::Table& f) {
+            out << YAML::Flow << YAML::BeginMap << YAML::Key << "type" << YAML::Value << "table"
+                << YAML::Key << "points" << YAML::Value << YAML::BeginSeq;
+            for (std::size_t i = 0; i < f.times.size(); ++i) {
+              emit_numbers(out, {f.times[i], f.values[i]});
+            }
+            out << YAML::EndSeq << YAML::EndMap;
+          },
+      },
+      function.kind());
+}
+
+void emit_key(YAML::Emitter& out, const std::string& key) { out << YAML::Key << key << YAML::Value; }
+
+void emit_number(YAML::Emitter& out, const std::string& key, double value) {
+  emit_key(out, key);
+  out << number_text(value);
+}
+
+void emit_geometry(YAML::Emitter& out, const Model& model) {
+  emit_key(out, "nodes");
+  out << YAML::BeginMap;
+  for (const Node& node : model.nodes) {
+    emit_key(out, node.name);
+    if (node.point_mass_kg == 0.0) {
+      emit_vector(out, node.position_m, model.dimension);
+      continue;
+    }
+    out << YAML::Flow << YAML::BeginMap;
+    emit_key(out, "at");
+    emit_vector(out, node.position_m, model.dimension);
+    emit_number(out, "mass", node.point_mass_kg);
+    out << YAML::EndMap;
+  }
+  out << YAML::EndMap;
+
+  emit_key(out, "materials");
+  out << YAML::BeginMap;
+  for (const Material& material : model.materials) {
+    emit_key(out, material.name);
+    out << YAML::Flow << YAML::BeginMap;
+    emit_number(out, "E", material.youngs_modulus_Pa);
+    emit_number(out, "alpha", material.expansion_per_C);
+    if (material.density_kg_m3) emit_number(out, "density", *material.density_kg_m3);
+    out << YAML::EndMap;
+  }
+  out << YAML::EndMap;
+
+  emit_key(out, "thermal");
+  out << YAML::BeginMap;
+  emit_key(out, "dT");
+  emit_function(out, model.temperature_change_C);
+  out << YAML::EndMap;
+
+  // Mass and length always explicit: the reload then needs no recomputation.
+  emit_key(out, "elements");
+  out << YAML::BeginMap;
+  for (const BarElement& bar : model.bars) {
+    emit_key(out, bar.name);
+    out << YAML::Flow << YAML::BeginMap;
+    emit_key(out, "nodes");
+    out << YAML::Flow << YAML::BeginSeq << model.nodes[bar.node_a].name
+        << model.nodes[bar.node_b].name << YAML::EndSeq;
+    emit_number(out, "area", bar.area_m2);
+    emit_key(out, "material");
+    out << model.materials[bar.material].name;
+    emit_number(out, "mass", bar.mass_kg);
+    emit_number(out, "length", bar.reference_length_m);
+    if (bar.temperature_given) {
+      emit_key(out, "dT");
+      emit_function(out, bar.temperature_change_C);
+    }
+    out << YAML::EndMap;
+  }
+  out << YAML::EndMap;
+}
+
+void emit_boundary_conditions(YAML::Emitter& out, const Model& model) {
+  static constexpr std::array<const char*, 3> kAxisNames{"x", "y", "z"};
+  if (!model.supports.empty()) {
+    emit_key(out, "supports");
+    out << YAML::BeginSeq;
+    for (const FixedNode& support : model.supports) {
+      out << YAML::Flow << YAML::BeginMap;
+      emit_key(out, "node");
+      out << model.nodes[support.node].name;
+      emit_key(out, "fix");
+      out << YAML::Flow << YAML::BeginSeq;
+      for (int i = 0; i < model.dimension; ++i) {
+        if (support.axes[static_cast<std::size_t>(i)]) out << kAxisNames[static_cast<std::size_t>(i)];
+      }
+      out << YAML::EndSeq << YAML::EndMap;
+    }
+    out << YAML::EndSeq;
+  }
+
+  if (!model.drivers.empty()) {
+    emit_key(out, "drivers");
+    out << YAML::BeginMap;
+    for (const Driver& driver : model.drivers) {
+      emit_key(out, driver.name);
+      out << YAML::BeginMap;
+      const bool rate = driver.reading == DriverReading::rate;
+      if (driver.kind == Driver::Kind::bar_angle) {
+        emit_key(out, "type");
+        out << "bar_angle";
+        emit_key(out, "element");
+        out << model.bars[driver.element].name;
+        emit_key(out, "pivot");
+        out << model.nodes[driver.pivot].name;
+        if (model.dimension == 3) {
+          emit_key(out, "axis");
+          emit_vector(out, driver.axis, 3);
+        }
+        emit_key(out, "reading");
+        out << (rate ? "angular_velocity" : "angle");
+      } else {
+        emit_key(out, "type");
+        out << "coordinate";
+        emit_key(out, "node");
+        out << model.nodes[driver.node].name;
+        emit_key(out, "direction");
+        out << kAxisNames[static_cast<std::size_t>(driver.direction)];
+        emit_key(out, "reading");
+        out << (rate ? "velocity" : "displacement");
+      }
+      emit_key(out, "profile");
+      emit_function(out, driver.profile);
+      out << YAML::EndMap;
+    }
+    out << YAML::EndMap;
+  }
+
+  if (!model.loads.empty()) {
+    emit_key(out, "loads");
+    out << YAML::BeginSeq;
+    for (const NodalLoad& load : model.loads) {
+      out << YAML::Flow << YAML::BeginMap;
+      emit_key(out, "node");
+      out << model.nodes[load.node].name;
+      emit_key(out, "force");
+      emit_vector(out, load.force_N, model.dimension);
+      emit_key(out, "factor");
+      emit_function(out, load.factor);
+      out << YAML::EndMap;
+    }
+    out << YAML::EndSeq;
+  }
+
+  if (!model.gravity_m_s2.isZero(0.0)) {
+    emit_key(out, "gravity");
+    emit_vector(out, model.gravity_m_s2, model.dimension);
+  }
+}
+
+void emit_analysis(YAML::Emitter& out, const Model& model) {
+  const AnalysisOptions& analysis = model.analysis;
+  emit_key(out, "analysis");
+  out << YAML::BeginMap;
+  emit_key(out, "type");
+  out << (analysis.type == AnalysisType::quasi_static ? "static" : "dynamic");
+  emit_number(out, "end", analysis.end_time_s);
+  emit_number(out, "step", analysis.step_s);
+  // 0 means "every step", which is also what leaving the key out says.
+  if (analysis.output_interval_s > 0.0) emit_number(out, "output_interval", analysis.output_interval_s);
+  emit_key(out, "load_steps");
+  out << analysis.load_steps;
+  emit_key(out, "mass");
+  out << (analysis.mass == MassMatrixKind::consistent ? "consistent" : "lumped");
+  emit_key(out, "integrator");
+  out << YAML::Flow << YAML::BeginMap;
+  emit_key(out, "type");
+  out << "newmark";
+  emit_number(out, "beta", analysis.integrator.beta);
+  emit_number(out, "gamma", analysis.integrator.gamma);
+  out << YAML::EndMap;
+  emit_key(out, "newton");
+  out << YAML::Flow << YAML::BeginMap;
+  emit_key(out, "max_iterations");
+  out << analysis.newton.max_iterations;
+  emit_number(out, "tol_force", analysis.newton.force_tolerance);
+  emit_number(out, "tol_constraint", analysis.newton.constraint_tolerance_m);
+  emit_number(out, "tol_displacement", analysis.newton.displacement_tolerance_m);
+  out << YAML::EndMap;
+  out << YAML::EndMap;
+
+  emit_key(out, "output");
+  out << YAML::BeginMap;
+  emit_key(out, "history");
+  out << model.output.history_file;
+  emit_key(out, "summary");
+  out << model.output.summary_file;
+  out << YAML::EndMap;
+}
+
+}  // namespace
+
+Override parse_override(const std::string& text) {
+  const std::size_t equals = text.find('=');
+  if (equals == std::string::npos || equals == 0) {
+    throw InputError("--set " + text, 0, 0, "",
+                     "expected PATH=VALUE, e.g. thermal.dT=130 or analysis.step=5e-4");
+  }
+  return {text.substr(0, equals), text.substr(equals + 1)};
+}
+
+Model load_model(const std::filesystem::path& file, const std::vector<Override>& overrides) {
+  const std::string source_name = file.string();
+  std::error_code ignored;
+  std::ifstream in(file, std::ios::binary);
+  if (!in || std::filesystem::is_directory(file, ignored)) {
+    throw InputError(source_name, 0, 0, "", "cannot open file");
+  }
+  std::ostringstream text;
+  text << in.rdbuf();
+  if (in.bad()) throw InputError(source_name, 0, 0, "", "cannot read file");
+  return load_model_from_string(text.str(), source_name, overrides);
+}
+
+Model load_model_from_string(const std::string& text, const std::string& source_name,
+                             const std::vector<Override>& overrides) {
+  io::YamlSource source(source_name);
+  try {
+    const YAML::Node root = parse_yaml(text, source_name);
+    for (const Override& override : overrides) apply_override(root, override, source);
+    const YamlValue root_value(root, "", source);
+    return ModelReader(root_value).read();
+  } catch (const YAML::Exception& error) {
+    // The reader checks types before converting, so this is a safety net, not a path.
+    const bool located = !error.mark.is_null();
+    throw InputError(source_name, located ? error.mark.line + 1 : 0,
+                     located ? error.mark.column + 1 : 0, "", "cannot read the model: " + error.msg);
+  }
+}
+
+void save_model(const Model& model, std::ostream& out) {
+  YAML::Emitter emitter;
+  emitter << YAML::BeginMap;
+  if (!model.name.empty()) {
+    emit_key(emitter, "name");
+    emitter << model.name;
+  }
+  if (!model.description.empty()) {
+    emit_key(emitter, "description");
+    emitter << model.description;
+  }
+  emit_key(emitter, "units");
+  emitter << "SI";
+  emit_geometry(emitter, model);
+  emit_boundary_conditions(emitter, model);
+  emit_analysis(emitter, model);
+  emitter << YAML::EndMap;
+  out << emitter.c_str() << '\n';
+}
+
+}  // namespace deploydyn

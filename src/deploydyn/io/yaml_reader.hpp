@@ -1,0 +1,90 @@
+#pragma once
+// Checked reading of a YAML tree. Every failure is an InputError naming the file, line, column
+// and dotted field, so that the model loader only has to state what is allowed.
+
+#include <yaml-cpp/yaml.h>
+
+#include <cstddef>
+#include <initializer_list>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <utility>
+#include <vector>
+
+#include "deploydyn/io/model_loader.hpp"
+
+namespace deploydyn::io {
+
+// Where a tree came from: a file (or a source name), possibly edited by --set overrides.
+class YamlSource {
+ public:
+  explicit YamlSource(std::string name) : name_(std::move(name)) {}
+
+  const std::string& name() const { return name_; }
+  // Remembers an applied override: nodes it made have no mark, and their errors name it.
+  void add_override(const Override& applied) { overrides_.push_back(applied); }
+
+  [[noreturn]] void fail(const YAML::Mark& mark, const std::string& field,
+                         const std::string& problem) const;
+
+ private:
+  std::string name_;
+  std::vector<Override> overrides_;
+};
+
+enum class Sign { any, positive, non_negative };
+
+// "'abc'", "a list", "a mapping" or "nothing": what a node is, for messages.
+std::string describe(const YAML::Node& node);
+// "; did you mean 'area'?" when a candidate is a few edits away, else "; allowed: a, b, c".
+std::string suggestion(std::string_view word, const std::vector<std::string>& candidates);
+// "A, B, C" (the first few, then "...").
+std::string join_names(const std::vector<std::string>& names);
+
+// One node of the tree with its dotted path, e.g. "elements.2.area".
+class YamlValue {
+ public:
+  YamlValue(YAML::Node node, std::string path, const YamlSource& source)
+      : node_(std::move(node)), path_(std::move(path)), source_(&source) {}
+  YamlValue(const YamlValue&) = default;
+  // Assigning a YAML::Node overwrites the node it refers to, i.e. it would edit the tree.
+  YamlValue& operator=(const YamlValue&) = delete;
+
+  const std::string& path() const { return path_; }
+  bool is_scalar() const { return node_.IsScalar(); }
+  bool is_map() const { return node_.IsMap(); }
+  std::string description() const { return describe(node_); }
+
+  [[noreturn]] void fail(const std::string& problem) const;
+  // An error about `key` of this mapping that has no node of its own (e.g. it is missing).
+  [[noreturn]] void fail_key(std::string_view key, const std::string& problem) const;
+
+  // Mappings. Keys must be unique; expect_keys also rejects keys not in `allowed`.
+  void expect_keys(std::initializer_list<std::string_view> allowed) const;
+  std::vector<std::pair<std::string, YamlValue>> entries() const;
+  std::optional<YamlValue> find(std::string_view key) const;
+  YamlValue at(std::string_view key) const;  // a required key
+  double number_or(std::string_view key, double fallback, Sign sign, std::string_view unit) const;
+
+  // Lists; `what` describes the expected items in messages, e.g. "coordinates (m)".
+  std::vector<YamlValue> items(std::size_t n_min, std::size_t n_max, std::string_view what) const;
+
+  // Scalars.
+  std::string text() const;
+  bool is_number() const;  // a scalar that reads as a number (finite or not)
+  double number(Sign sign = Sign::any, std::string_view unit = {}) const;
+  int integer(int min) const;
+  std::vector<double> numbers(std::size_t n_min, std::size_t n_max, std::string_view unit) const;
+  // One of `allowed`; returns its position in the list.
+  std::size_t choice(std::initializer_list<std::string_view> allowed) const;
+
+ private:
+  std::string child_path(std::string_view key) const;
+
+  YAML::Node node_;
+  std::string path_;
+  const YamlSource* source_;
+};
+
+}  // namespace deploydyn::io

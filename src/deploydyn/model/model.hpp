@@ -1,0 +1,130 @@
+#pragma once
+// The model: what a model file describes, as plain data with every reference resolved to an
+// index. Units are SI throughout (m, kg, s, N, Pa; °C for temperature differences).
+// Building mechanics from it is the assembler's job; reading and writing it is io/'s.
+
+#include <Eigen/Core>
+#include <array>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "deploydyn/model/time_function.hpp"
+
+namespace deploydyn {
+
+struct Node {
+  std::string name;
+  Eigen::Vector3d position_m = Eigen::Vector3d::Zero();  // z = 0 in 2D models
+  double point_mass_kg = 0.0;                             // lumped at the node, optional
+};
+
+struct Material {
+  std::string name;
+  double youngs_modulus_Pa = 0.0;
+  double expansion_per_C = 0.0;      // α, thermal expansion coefficient (1/°C)
+  std::optional<double> density_kg_m3;  // used when an element gives no mass
+};
+
+// Two-node bar (truss) element, DESIGN §2. Material values are copied in at load time.
+struct BarElement {
+  std::string name;
+  int node_a = 0, node_b = 0;  // indices into Model::nodes
+  int material = 0;            // index into Model::materials
+  double area_m2 = 0.0;
+  double mass_kg = 0.0;              // total; given, or density · area · reference length
+  bool mass_given = false;           // true when the model file named the mass
+  double reference_length_m = 0.0;   // L0: given, or the distance of the nodes' initial positions
+  bool length_given = false;
+  TimeFunction temperature_change_C;  // ΔT_e(t), °C
+  bool temperature_given = false;     // per-element ΔT rather than the model-wide one
+};
+
+// Ground support: the chosen coordinates of a node keep their initial values.
+struct FixedNode {
+  int node = 0;
+  std::array<bool, 3> axes{true, true, true};  // x, y, z fixed
+};
+
+// How a driver's profile f(t) is read.
+enum class DriverReading {
+  rate,   // f is the angular velocity (rad/s) or velocity (m/s); the motion is ∫f (default)
+  value,  // f is the rotation (rad) or displacement (m) from the initial state
+};
+
+// Rheonomic constraint that moves the mechanism and reports the effort it needs.
+struct Driver {
+  enum class Kind {
+    bar_angle,   // turns a bar's direction about its pivot node; the bar stays elastic (DESIGN §2)
+    coordinate,  // prescribes one coordinate of a node
+  };
+  std::string name;
+  Kind kind = Kind::bar_angle;
+  int element = 0;  // bar_angle: the driven bar
+  int pivot = 0;    // bar_angle: the node it turns about (one of the bar's nodes)
+  Eigen::Vector3d axis = Eigen::Vector3d::UnitZ();  // bar_angle in 3D: rotation axis (unit)
+  int node = 0;     // coordinate: the node
+  int direction = 0;  // coordinate: 0 = x, 1 = y, 2 = z
+  TimeFunction profile;
+  DriverReading reading = DriverReading::rate;
+};
+
+// External force on a node: force_N · factor(t).
+struct NodalLoad {
+  int node = 0;
+  Eigen::Vector3d force_N = Eigen::Vector3d::Zero();
+  TimeFunction factor = TimeFunction::constant(1.0);
+};
+
+enum class AnalysisType { quasi_static, dynamic };
+enum class MassMatrixKind { consistent, lumped };
+
+struct NewtonOptions {
+  int max_iterations = 25;
+  double force_tolerance = 1e-8;        // ‖r‖∞ relative to the largest force term
+  double constraint_tolerance_m = 1e-10;  // ‖Φ‖∞ (m or rad·m)
+  double displacement_tolerance_m = 1e-12;  // ‖Δq‖∞ that counts as converged
+};
+
+// Newmark's family; β = ¼, γ = ½ is the paper's trapezoidal rule.
+struct IntegratorOptions {
+  double beta = 0.25;
+  double gamma = 0.5;
+};
+
+struct AnalysisOptions {
+  AnalysisType type = AnalysisType::dynamic;
+  double end_time_s = 1.0;
+  double step_s = 1e-3;
+  double output_interval_s = 0.0;  // 0: every step
+  int load_steps = 1;              // initial thermal equilibrium: ΔT applied in this many parts
+  NewtonOptions newton;
+  IntegratorOptions integrator;
+  MassMatrixKind mass = MassMatrixKind::consistent;
+};
+
+struct OutputOptions {
+  std::string history_file = "history.csv";
+  std::string summary_file = "summary.json";
+};
+
+struct Model {
+  std::string name;
+  std::string description;
+  int dimension = 2;  // 2 or 3
+  std::vector<Node> nodes;
+  std::vector<Material> materials;
+  std::vector<BarElement> bars;
+  std::vector<FixedNode> supports;
+  std::vector<Driver> drivers;
+  std::vector<NodalLoad> loads;
+  Eigen::Vector3d gravity_m_s2 = Eigen::Vector3d::Zero();
+  TimeFunction temperature_change_C;  // model-wide ΔT(t), for bars that give none
+  AnalysisOptions analysis;
+  OutputOptions output;
+
+  int n_nodes() const { return static_cast<int>(nodes.size()); }
+  int n_bars() const { return static_cast<int>(bars.size()); }
+};
+
+}  // namespace deploydyn

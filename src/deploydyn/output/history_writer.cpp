@@ -1,0 +1,66 @@
+#include "deploydyn/output/history_writer.hpp"
+
+#include <fmt/format.h>
+
+#include <stdexcept>
+
+namespace deploydyn {
+namespace {
+
+// A reader loses nothing between flushes longer than this; writing every row at once would
+// make small runs pay a system call per row.
+constexpr auto kFlushInterval = std::chrono::milliseconds(200);
+
+}  // namespace
+
+std::vector<std::string> history_columns(const Model& model) {
+  std::vector<std::string> columns{"t"};
+  for (const Node& node : model.nodes) {
+    for (int axis = 0; axis < model.dimension; ++axis) {
+      columns.push_back(std::string(1, "xyz"[axis]) + "." + node.name);
+    }
+  }
+  for (const BarElement& bar : model.bars) {
+    for (const char* quantity : {"strain.", "mstrain.", "force."}) columns.push_back(quantity + bar.name);
+  }
+  for (const Driver& driver : model.drivers) {
+    columns.push_back((driver.kind == Driver::Kind::bar_angle ? "torque." : "force.") + driver.name);
+  }
+  for (const char* energy : {"kinetic", "strain_energy", "external_work"}) columns.push_back(energy);
+  return columns;
+}
+
+HistoryWriter::HistoryWriter(const std::filesystem::path& file, const Model& model)
+    : file_(std::fopen(file.c_str(), "w")), last_flush_(std::chrono::steady_clock::now()) {
+  if (file_ == nullptr) throw std::runtime_error("cannot write " + file.string());
+  const std::vector<std::string> columns = history_columns(model);
+  std::fputs(fmt::format("{}\n", fmt::join(columns, ",")).c_str(), file_);
+  std::fflush(file_);
+}
+
+HistoryWriter::~HistoryWriter() {
+  if (file_ != nullptr) std::fclose(file_);
+}
+
+void HistoryWriter::record(const StepRecord& r) {
+  // 17 significant digits: values read back are the values computed.
+  row_.clear();
+  auto out = std::back_inserter(row_);
+  fmt::format_to(out, "{:.17g}", r.time_s);
+  for (double x : r.q) fmt::format_to(out, ",{:.17g}", x);
+  for (const BarResult& bar : r.bars) {
+    fmt::format_to(out, ",{:.17g},{:.17g},{:.17g}", bar.strain, bar.mechanical_strain, bar.axial_force_N);
+  }
+  for (double effort : r.driver_efforts) fmt::format_to(out, ",{:.17g}", effort);
+  fmt::format_to(out, ",{:.17g},{:.17g},{:.17g}\n", r.kinetic_energy_J, r.strain_energy_J,
+                 r.external_work_J);
+  std::fwrite(row_.data(), 1, row_.size(), file_);
+  if (std::chrono::steady_clock::now() - last_flush_ >= kFlushInterval) flush();
+}
+
+void HistoryWriter::flush() {
+  std::fflush(file_);
+  last_flush_ = std::chrono::steady_clock::now();
+}
+
+}  // namespace deploydyn

@@ -1,0 +1,16 @@
+#pragma once
+// One run with its results on disk: history.csv streamed while it runs, summary.json at the
+// end, whatever the end (completed, failed or interrupted). What the CLI's `run` does.
+
+#include <filesystem>
+
+#include "deploydyn/solvers/analysis.hpp"
+
+namespace deploydyn {
+
+// Creates `folder` if needed. Throws std::runtime_error only when files cannot be written,
+// and std::invalid_argument when the model's mechanics cannot be built.
+RunReport run_to_folder(const Model& model, const std::filesystem::path& folder,
+                        const RunControl& control = {});
+
+}  // namespace deploydyn

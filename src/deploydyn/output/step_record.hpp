@@ -1,0 +1,33 @@
+#pragma once
+// Everything reported for one output time: what history.csv writes as one row and the
+// summary's envelope tracks.
+
+#include <Eigen/Core>
+#include <vector>
+
+#include "deploydyn/assembly/assembler.hpp"
+#include "deploydyn/solvers/motion_state.hpp"
+
+namespace deploydyn {
+
+struct StepRecord {
+  double time_s = 0.0;
+  Eigen::VectorXd q;                   // nodal coordinates (m)
+  std::vector<BarResult> bars;         // per element, model order
+  std::vector<double> driver_efforts;  // torque (N·m) or force (N), per driver
+  double kinetic_energy_J = 0.0;       // ½ q̇ᵀ M q̇
+  double strain_energy_J = 0.0;        // Σ ½ EA L0 ε_m²
+  double external_work_J = 0.0;        // work of loads and drivers since the start
+};
+
+StepRecord make_step_record(const Assembler& assembler, const MotionState& state,
+                            double external_work_J);
+
+// Receives the records of a run as they are computed.
+class RecordSink {
+ public:
+  virtual ~RecordSink() = default;
+  virtual void record(const StepRecord& record) = 0;
+};
+
+}  // namespace deploydyn

@@ -1,0 +1,112 @@
+#include "deploydyn/output/summary_writer.hpp"
+
+#include "deploydyn/model/dof_map.hpp"
+
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <stdexcept>
+
+namespace deploydyn {
+namespace {
+
+using nlohmann::ordered_json;
+
+const char* status_name(RunStatus status) {
+  switch (status) {
+    case RunStatus::completed: return "completed";
+    case RunStatus::failed: return "failed";
+    case RunStatus::interrupted: return "interrupted";
+  }
+  return "unknown";
+}
+
+ordered_json extremes(const Extremes& e) {
+  if (e.empty()) return nullptr;
+  return {{"min", e.min}, {"t_min", e.time_of_min_s}, {"max", e.max}, {"t_max", e.time_of_max_s}};
+}
+
+ordered_json failure(const FailureReport& f) {
+  return {{"phase", f.phase},
+          {"time", f.time_s},
+          {"step", f.step},
+          {"iteration", f.iteration},
+          {"force_residual", f.force_residual_N},
+          {"constraint_residual", f.constraint_residual},
+          {"largest_constraint_residual_at", f.worst_constraint},
+          {"largest_force_residual_at", f.worst_dof},
+          {"reason", f.reason}};
+}
+
+}  // namespace
+
+void write_summary(const std::filesystem::path& file, const Model& model, const Envelope& envelope,
+                   const RunReport& report) {
+  ordered_json j;
+  j["model"] = model.name;
+  j["status"] = status_name(report.status);
+  j["message"] = report.message;
+  if (report.status == RunStatus::failed) j["failure"] = failure(report.failure);
+  j["units"] = {{"length", "m"}, {"force", "N"}, {"torque", "N·m"}, {"time", "s"},
+                {"energy", "J"}, {"temperature_change", "°C"}};
+  j["analysis"] = {{"type", model.analysis.type == AnalysisType::dynamic ? "dynamic" : "static"},
+                   {"end", model.analysis.end_time_s},
+                   {"step", model.analysis.step_s},
+                   {"integrator", {{"type", "newmark"},
+                                   {"beta", model.analysis.integrator.beta},
+                                   {"gamma", model.analysis.integrator.gamma}}}};
+
+  ordered_json elements = ordered_json::object();
+  for (int b = 0; b < model.n_bars() && b < static_cast<int>(envelope.elements().size()); ++b) {
+    const ElementEnvelope& e = envelope.elements()[b];
+    elements[model.bars[b].name] = {{"strain", extremes(e.strain)},
+                                    {"mstrain", extremes(e.mechanical_strain)},
+                                    {"force", extremes(e.axial_force_N)}};
+  }
+  j["elements"] = elements;
+
+  ordered_json drivers = ordered_json::object();
+  for (std::size_t d = 0; d < model.drivers.size() && d < envelope.drivers().size(); ++d) {
+    const Extremes& e = envelope.drivers()[d];
+    const bool torque = model.drivers[d].kind == Driver::Kind::bar_angle;
+    ordered_json entry = extremes(e);
+    entry["quantity"] = torque ? "torque" : "force";
+    entry["unit"] = torque ? "N·m" : "N";
+    entry["peak"] = e.peak_magnitude();
+    entry["t_peak"] = -e.min > e.max ? e.time_of_min_s : e.time_of_max_s;
+    drivers[model.drivers[d].name] = entry;
+  }
+  j["drivers"] = drivers;
+
+  ordered_json positions = ordered_json::object();
+  if (envelope.n_records() > 0) {
+    const Eigen::VectorXd& q = envelope.last().q;
+    const DofMap dofs(model);
+    for (int node = 0; node < model.n_nodes(); ++node) {
+      std::vector<double> x;
+      for (int axis = 0; axis < model.dimension; ++axis) x.push_back(q[dofs.index(node, axis)]);
+      positions[model.nodes[node].name] = x;
+    }
+    j["final_time"] = envelope.last().time_s;
+  }
+  j["final_positions"] = positions;
+  j["steps"] = report.steps;
+  j["newton_iterations"] = report.newton_iterations;
+  j["newton_iterations_per_step"] =
+      report.steps > 0 ? static_cast<double>(report.newton_iterations) / report.steps : 0.0;
+  j["max_newton_iterations_per_step"] = report.max_iterations_per_step;
+  j["rejected_steps"] = report.rejected_steps;
+  j["initial_equilibrium"] = {{"load_steps", report.initial_load_steps},
+                              {"newton_iterations", report.initial_iterations}};
+  j["wall_time"] = report.wall_time_s;
+
+  const std::filesystem::path temporary = file.string() + ".tmp";
+  {
+    std::ofstream out(temporary);
+    if (!out) throw std::runtime_error("cannot write " + temporary.string());
+    out << j.dump(2) << '\n';
+    if (!out) throw std::runtime_error("cannot write " + temporary.string());
+  }
+  std::filesystem::rename(temporary, file);
+}
+
+}  // namespace deploydyn

@@ -1,0 +1,156 @@
+#include "deploydyn/solvers/analysis.hpp"
+
+#include <fmt/format.h>
+
+#include <chrono>
+#include <cmath>
+
+#include "deploydyn/assembly/dense_linear_system.hpp"
+#include "deploydyn/solvers/newmark.hpp"
+#include "deploydyn/solvers/static_solver.hpp"
+
+namespace deploydyn {
+namespace {
+
+FailureReport describe_failure(const Assembler& assembler, std::string phase, double t, int step,
+                               const NewtonResult& newton) {
+  FailureReport f;
+  f.phase = std::move(phase);
+  f.time_s = t;
+  f.step = step;
+  f.iteration = newton.iterations;
+  f.force_residual_N = newton.force_residual_N;
+  f.constraint_residual = newton.constraint_residual;
+  if (newton.worst_equation >= 0) f.worst_constraint = assembler.describe_equation(newton.worst_equation);
+  if (newton.worst_dof >= 0) f.worst_dof = assembler.dof_map().label(newton.worst_dof);
+  f.reason = newton.failure;
+  return f;
+}
+
+std::string failure_message(const FailureReport& f) {
+  std::string where = f.step > 0 ? fmt::format("{} {} (t = {:.6g} s)", f.phase, f.step, f.time_s)
+                                 : fmt::format("{} (t = {:.6g} s)", f.phase, f.time_s);
+  std::string message = fmt::format(
+      "{} failed after {} Newton iterations: {}; force residual {:.3e} N (largest at {}), "
+      "constraint residual {:.3e}",
+      where, f.iteration, f.reason, f.force_residual_N, f.worst_dof.empty() ? "-" : f.worst_dof,
+      f.constraint_residual);
+  if (!f.worst_constraint.empty()) message += " (largest at " + f.worst_constraint + ")";
+  return message;
+}
+
+// Work of the loads and of the constraint forces −Bᵀλ (only drivers do work: supports do not
+// move) over one step, by the trapezoidal rule: ½ (F_n + F_{n+1})·(q_{n+1} − q_n).
+class WorkCounter {
+ public:
+  explicit WorkCounter(const Assembler& assembler) : assembler_(assembler) {}
+  void start(const MotionState& s) { applied_ = applied_force(s); }
+  void advance(const Eigen::VectorXd& q_before, const MotionState& s) {
+    const Eigen::VectorXd applied = applied_force(s);
+    work_J_ += 0.5 * (applied_ + applied).dot(s.q - q_before);
+    applied_ = applied;
+  }
+  double work_J() const { return work_J_; }
+
+ private:
+  Eigen::VectorXd applied_force(const MotionState& s) const {
+    Eigen::VectorXd external, reaction;
+    assembler_.external_force(s.time_s, external);
+    assembler_.constraint_force(s.q, s.time_s, s.lambda, reaction);
+    return external - reaction;
+  }
+  const Assembler& assembler_;
+  Eigen::VectorXd applied_;
+  double work_J_ = 0.0;
+};
+
+}  // namespace
+
+RunReport run_analysis(const Assembler& assembler, RecordSink& sink, const RunControl& control) {
+  const auto wall_start = std::chrono::steady_clock::now();
+  const AnalysisOptions& options = assembler.model().analysis;
+  RunReport report;
+  DenseLinearSystem system(assembler.n_unknowns());
+  auto finish = [&](RunReport& r) -> RunReport {
+    r.wall_time_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start).count();
+    return r;
+  };
+  auto fail = [&](FailureReport failure) -> RunReport {
+    report.status = RunStatus::failed;
+    report.message = failure_message(failure);
+    report.failure = std::move(failure);
+    return finish(report);
+  };
+
+  MotionState state;
+  state.time_s = 0.0;
+  state.q = assembler.initial_coordinates();
+  state.v = Eigen::VectorXd::Zero(assembler.n_dofs());
+  state.a = Eigen::VectorXd::Zero(assembler.n_dofs());
+  state.lambda = Eigen::VectorXd::Zero(assembler.n_equations());
+
+  const StaticResult initial = solve_static(assembler, options, options.load_steps, system, state);
+  report.initial_load_steps = initial.load_steps;
+  report.initial_iterations = initial.total_iterations;
+  if (initial.thermal_factor < 1.0) {
+    FailureReport f = describe_failure(assembler, "initial equilibrium", 0.0, 0, initial.newton);
+    f.reason += fmt::format(" (thermal load reached {:.1f}%)", 100.0 * initial.thermal_factor);
+    return fail(f);
+  }
+  const bool dynamic = options.type == AnalysisType::dynamic;
+  if (dynamic) {
+    const FactorizationStatus status = initialise_rates(assembler, system, state);
+    if (!status.ok) {
+      FailureReport f;
+      f.phase = "initial rates";
+      f.reason = status.message;
+      return fail(f);
+    }
+  }
+
+  WorkCounter work(assembler);
+  work.start(state);
+  sink.record(make_step_record(assembler, state, 0.0));
+
+  const double h = options.step_s;
+  const auto n_steps = static_cast<long>(std::llround(options.end_time_s / h));
+  const double output_interval = options.output_interval_s > 0.0 ? options.output_interval_s : h;
+  const long output_every = std::max(1L, std::lround(output_interval / h));
+  const NewmarkIntegrator newmark(assembler, options);
+
+  for (long n = 1; n <= n_steps; ++n) {
+    if (control.stop != nullptr && control.stop->load()) {
+      report.status = RunStatus::interrupted;
+      report.message = fmt::format("interrupted at t = {:.6g} s", state.time_s);
+      return finish(report);
+    }
+    const Eigen::VectorXd q_before = state.q;
+    // Times are n·h, not a running sum, so that the last step lands on end_time exactly.
+    const double step = static_cast<double>(n) * h - state.time_s;
+    NewtonResult newton;
+    if (dynamic) {
+      newton = newmark.step(step, system, state);
+    } else {
+      MotionState next = state;
+      next.time_s += step;
+      const StaticResult r = solve_static(assembler, options, 1, system, next);
+      newton = r.newton;
+      if (r.thermal_factor >= 1.0) state = std::move(next);  // q̇ stays 0: inertia is ignored
+    }
+    report.newton_iterations += newton.iterations;
+    report.max_iterations_per_step = std::max(report.max_iterations_per_step, newton.iterations);
+    if (!newton.converged) {
+      return fail(describe_failure(assembler, "time step", state.time_s + step, static_cast<int>(n),
+                                   newton));
+    }
+    report.steps = static_cast<int>(n);
+    report.time_reached_s = state.time_s;
+    work.advance(q_before, state);
+    if (n % output_every == 0 || n == n_steps) sink.record(make_step_record(assembler, state, work.work_J()));
+    if (control.progress) control.progress(state.time_s);
+  }
+  report.message = fmt::format("completed: {} steps to t = {:.6g} s", report.steps, report.time_reached_s);
+  return finish(report);
+}
+
+}  // namespace deploydyn

@@ -1,0 +1,55 @@
+#pragma once
+// Runs a model's analysis from start to end:
+//   1. static equilibrium at t = 0 with the thermal strain applied (load steps, DESIGN §3);
+//   2. dynamic: consistent initial rates, then Newmark steps; static: a static solve per step;
+//   3. a StepRecord to the sink at t = 0 and at every output interval.
+// How it ended is a RunReport, never an exception: the caller keeps what was written.
+
+#include <atomic>
+#include <functional>
+#include <string>
+
+#include "deploydyn/assembly/assembler.hpp"
+#include "deploydyn/output/step_record.hpp"
+
+namespace deploydyn {
+
+enum class RunStatus { completed, failed, interrupted };
+
+// Where and why a solve failed.
+struct FailureReport {
+  std::string phase;          // "initial equilibrium", "initial rates", "time step"
+  double time_s = 0.0;        // time the failed solve was for
+  int step = 0;               // time step number (1-based; 0 before the first)
+  int iteration = 0;          // Newton iterations done in the failed solve
+  double force_residual_N = 0.0;
+  double constraint_residual = 0.0;
+  std::string worst_constraint;  // constraint with the largest |Φ|
+  std::string worst_dof;         // unknown with the largest force residual, e.g. "y.B"
+  std::string reason;
+};
+
+struct RunReport {
+  RunStatus status = RunStatus::completed;
+  std::string message;            // one line for people
+  FailureReport failure;          // when status == failed
+  double time_reached_s = 0.0;
+  int steps = 0;
+  int newton_iterations = 0;      // in the time steps
+  int max_iterations_per_step = 0;
+  int rejected_steps = 0;
+  int initial_load_steps = 0;
+  int initial_iterations = 0;
+  double wall_time_s = 0.0;
+};
+
+struct RunControl {
+  // Called after every step with the time reached; may be empty.
+  std::function<void(double time_s)> progress;
+  // Set from elsewhere (a signal handler) to stop after the current step.
+  const std::atomic<bool>* stop = nullptr;
+};
+
+RunReport run_analysis(const Assembler& assembler, RecordSink& sink, const RunControl& control = {});
+
+}  // namespace deploydyn

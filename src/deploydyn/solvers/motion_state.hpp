@@ -1,0 +1,16 @@
+#pragma once
+// The solution at one time: coordinates, their rates and the constraint multipliers.
+
+#include <Eigen/Core>
+
+namespace deploydyn {
+
+struct MotionState {
+  double time_s = 0.0;
+  Eigen::VectorXd q;       // nodal coordinates (m)
+  Eigen::VectorXd v;       // q̇ (m/s)
+  Eigen::VectorXd a;       // q̈ (m/s²)
+  Eigen::VectorXd lambda;  // multipliers: constraint forces are −Bᵀλ
+};
+
+}  // namespace deploydyn

@@ -1,0 +1,54 @@
+#include "deploydyn/solvers/newton.hpp"
+
+#include <fmt/format.h>
+
+namespace deploydyn {
+
+NewtonResult solve_newton(DiscreteEquations& equations, const NewtonOptions& options,
+                          LinearSystem& system, Eigen::VectorXd& q, Eigen::VectorXd& lambda) {
+  const auto n_dofs = q.size();
+  const auto n_eq = lambda.size();
+  Eigen::VectorXd r(n_dofs), phi(n_eq), step(n_dofs + n_eq);
+  NewtonResult result;
+  double last_correction = std::numeric_limits<double>::infinity();
+
+  for (;; ++result.iterations) {
+    const double force_scale = equations.residual(q, lambda, r, phi);
+    Eigen::Index worst = 0;
+    result.force_residual_N = n_dofs > 0 ? r.cwiseAbs().maxCoeff(&worst) : 0.0;
+    result.worst_dof = static_cast<int>(worst);
+    result.constraint_residual = n_eq > 0 ? phi.cwiseAbs().maxCoeff(&worst) : 0.0;
+    result.worst_equation = n_eq > 0 ? static_cast<int>(worst) : -1;
+
+    if (!std::isfinite(result.force_residual_N) || !std::isfinite(result.constraint_residual)) {
+      result.failure = "the residual is NaN or Inf";
+      return result;
+    }
+    const bool forces_balanced = result.force_residual_N <= options.force_tolerance * force_scale ||
+                                 last_correction <= options.displacement_tolerance_m;
+    if (result.constraint_residual <= options.constraint_tolerance_m && forces_balanced) {
+      result.converged = true;
+      return result;
+    }
+    if (result.iterations >= options.max_iterations) {
+      result.failure = fmt::format("no convergence in {} Newton iterations", options.max_iterations);
+      return result;
+    }
+
+    equations.matrix(q, lambda, system);
+    const FactorizationStatus status = system.factorize();
+    if (!status.ok) {
+      result.failure = status.message;
+      return result;
+    }
+    const double s = equations.constraint_scale();
+    step.head(n_dofs) = -r;
+    step.tail(n_eq) = -s * phi;
+    system.solve(step);
+    q += step.head(n_dofs);
+    lambda += s * step.tail(n_eq);
+    last_correction = step.head(n_dofs).cwiseAbs().maxCoeff();
+  }
+}
+
+}  // namespace deploydyn

@@ -1,0 +1,28 @@
+#pragma once
+// Newton–Raphson on DiscreteEquations (paper Eqs. 10–15 with the errata of DESIGN §2):
+//   [∂r/∂q  s Bᵀ] [Δq ]     [ r ]
+//   [ s B    0  ] [Δλ̂] = − [s Φ],   q += Δq,  λ += s Δλ̂
+// Converged when ‖Φ‖∞ ≤ tol_constraint and either ‖r‖∞ ≤ tol_force · (largest force term) or
+// the last correction ‖Δq‖∞ ≤ tol_displacement. A failure is a status, never an abort.
+
+#include <string>
+
+#include "deploydyn/model/model.hpp"
+#include "deploydyn/solvers/discrete_equations.hpp"
+
+namespace deploydyn {
+
+struct NewtonResult {
+  bool converged = false;
+  int iterations = 0;                  // linear solves done
+  double force_residual_N = 0.0;       // ‖r‖∞ at the end
+  double constraint_residual = 0.0;    // ‖Φ‖∞ at the end
+  int worst_dof = -1;                  // index of the largest |r|
+  int worst_equation = -1;             // index of the largest |Φ|
+  std::string failure;                 // why it did not converge
+};
+
+NewtonResult solve_newton(DiscreteEquations& equations, const NewtonOptions& options,
+                          LinearSystem& system, Eigen::VectorXd& q, Eigen::VectorXd& lambda);
+
+}  // namespace deploydyn

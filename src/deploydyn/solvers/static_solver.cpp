@@ -1,0 +1,65 @@
+#include "deploydyn/solvers/static_solver.hpp"
+
+#include <algorithm>
+
+namespace deploydyn {
+namespace {
+
+constexpr double kSmallestLoadStep = 1.0 / 1024.0;  // of the full thermal load
+
+class StaticEquations final : public DiscreteEquations {
+ public:
+  StaticEquations(const Assembler& assembler, double t, double thermal_factor, double scale)
+      : assembler_(assembler), t_(t), thermal_factor_(thermal_factor), scale_(scale) {}
+
+  double residual(const Eigen::VectorXd& q, const Eigen::VectorXd& lambda, Eigen::VectorXd& r,
+                  Eigen::VectorXd& phi) override {
+    assembler_.internal_force(q, t_, thermal_factor_, internal_);
+    assembler_.external_force(t_, external_);
+    assembler_.constraint_force(q, t_, lambda, reaction_);
+    assembler_.constraints(q, t_, phi);
+    r = internal_ - external_ + reaction_;
+    return std::max({internal_.lpNorm<Eigen::Infinity>(), external_.lpNorm<Eigen::Infinity>(),
+                     reaction_.lpNorm<Eigen::Infinity>()});
+  }
+  void matrix(const Eigen::VectorXd& q, const Eigen::VectorXd& lambda,
+              LinearSystem& system) override {
+    assembler_.iteration_matrix(q, t_, thermal_factor_, lambda, {0.0, 1.0, scale_}, system);
+  }
+  double constraint_scale() const override { return scale_; }
+
+ private:
+  const Assembler& assembler_;
+  double t_, thermal_factor_, scale_;
+  Eigen::VectorXd internal_, external_, reaction_;
+};
+
+}  // namespace
+
+StaticResult solve_static(const Assembler& assembler, const AnalysisOptions& options,
+                          int load_steps, LinearSystem& system, MotionState& state) {
+  StaticResult result;
+  // Constraint rows scaled to the stiffness keep the matrix balanced (DESIGN §2).
+  const double scale = assembler.stiffness_scale(state.q, state.time_s);
+  double increment = 1.0 / std::max(load_steps, 1);
+  while (result.thermal_factor < 1.0) {
+    const double target = std::min(1.0, result.thermal_factor + increment);
+    StaticEquations equations(assembler, state.time_s, target, scale);
+    Eigen::VectorXd q = state.q;
+    Eigen::VectorXd lambda = state.lambda;
+    result.newton = solve_newton(equations, options.newton, system, q, lambda);
+    result.total_iterations += result.newton.iterations;
+    if (!result.newton.converged) {
+      increment *= 0.5;
+      if (increment < kSmallestLoadStep) return result;
+      continue;
+    }
+    state.q = q;
+    state.lambda = lambda;
+    result.thermal_factor = target;
+    ++result.load_steps;
+  }
+  return result;
+}
+
+}  // namespace deploydyn
