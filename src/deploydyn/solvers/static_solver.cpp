@@ -1,11 +1,21 @@
 #include "deploydyn/solvers/static_solver.hpp"
 
 #include <algorithm>
+#include <limits>
 
 namespace deploydyn {
 namespace {
 
 constexpr double kSmallestLoadStep = 1.0 / 1024.0;  // of the full thermal load
+// Largest node movement in one load step, as a share of the shortest bar: about 1° of bar
+// rotation, small enough for Newton to stay on the branch it starts on.
+constexpr double kLargestMoveShare = 0.02;
+
+double shortest_bar_m(const Model& model) {
+  double shortest = std::numeric_limits<double>::infinity();
+  for (const BarElement& bar : model.bars) shortest = std::min(shortest, bar.reference_length_m);
+  return shortest;
+}
 
 class StaticEquations final : public DiscreteEquations {
  public:
@@ -42,6 +52,7 @@ StaticResult solve_static(const Assembler& assembler, const AnalysisOptions& opt
   // Constraint rows scaled to the stiffness keep the matrix balanced (DESIGN §2).
   const double scale = assembler.stiffness_scale(state.q, state.time_s);
   double increment = 1.0 / std::max(load_steps, 1);
+  const double largest_move_m = kLargestMoveShare * shortest_bar_m(assembler.model());
   while (result.thermal_factor < 1.0) {
     const double target = std::min(1.0, result.thermal_factor + increment);
     StaticEquations equations(assembler, state.time_s, target, scale);
@@ -49,9 +60,16 @@ StaticResult solve_static(const Assembler& assembler, const AnalysisOptions& opt
     Eigen::VectorXd lambda = state.lambda;
     result.newton = solve_newton(equations, options.newton, system, q, lambda);
     result.total_iterations += result.newton.iterations;
-    if (!result.newton.converged) {
+    const bool jumped = (q - state.q).lpNorm<Eigen::Infinity>() > largest_move_m;
+    if (!result.newton.converged || jumped) {
       increment *= 0.5;
-      if (increment < kSmallestLoadStep) return result;
+      if (increment < kSmallestLoadStep) {
+        if (result.newton.converged) {
+          result.newton.converged = false;
+          result.newton.failure = "the load step cannot be made small enough to follow the equilibrium path";
+        }
+        return result;
+      }
       continue;
     }
     state.q = q;

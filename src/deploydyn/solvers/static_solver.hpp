@@ -2,8 +2,10 @@
 // Static (kinematic) equilibrium, paper Eq. (7) with thermal strain:
 //   f_int(q, t) − f_ext(t) + Bᵀλ = 0,   Φ(q, t) = 0
 // Used for the initial thermal equilibrium and for quasi-static deployment. The thermal
-// strain is applied in load steps; a step whose Newton solve fails is halved (down to
-// 1/1024 of the whole) before the solve is given up.
+// strain is applied in load steps; a step is halved (down to 1/1024 of the whole) when its
+// Newton solve fails or when it moves a node by more than 2 % of the shortest bar. The second
+// rule keeps the solution on the branch it started on: near a flat (singular) configuration
+// one large step can land on a self-stressed toggle position or on another assembly.
 
 #include "deploydyn/assembly/assembler.hpp"
 #include "deploydyn/solvers/motion_state.hpp"
