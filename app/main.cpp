@@ -151,6 +151,11 @@ int main(int argc, char** argv) {
   check->add_option("model", model_file, "Model file (YAML or JSON)")->required();
   check->add_option("--set,-s", sets, "Override a scalar of the model: PATH=VALUE");
 
+  // CLI11 would only say "a subcommand is required"; name the word it did not know instead.
+  if (const std::string first = argc > 1 ? argv[1] : "-"; first[0] != '-' && first != "run" && first != "check") {
+    fmt::print(stderr, "error: unknown command '{}'; commands are run and check (see --help)\n", first);
+    return kExitBadInput;
+  }
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

@@ -1,0 +1,148 @@
+// The `deploydyn` command as a user runs it: exit codes, files written, messages.
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <array>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <sstream>
+#include <string>
+
+namespace {
+
+namespace fs = std::filesystem;
+
+struct Outcome {
+  int exit_code = -1;
+  std::string output;  // stdout and stderr together
+};
+
+Outcome run_cli(const std::string& arguments) {
+  const std::string command = std::string(DEPLOYDYN_CLI) + " " + arguments + " 2>&1";
+  Outcome outcome;
+  std::FILE* pipe = popen(command.c_str(), "r");
+  std::array<char, 4096> buffer{};
+  while (std::fgets(buffer.data(), buffer.size(), pipe) != nullptr) outcome.output += buffer.data();
+  const int status = pclose(pipe);
+  outcome.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  return outcome;
+}
+
+std::string example(const std::string& name) {
+  return std::string(DEPLOYDYN_SOURCE_DIR) + "/examples/paper/" + name;
+}
+
+std::string read_file(const fs::path& file) {
+  std::ifstream in(file);
+  std::stringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+class Cli : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    folder_ = fs::temp_directory_path() /
+              ("deploydyn_cli_" + std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
+    fs::remove_all(folder_);
+  }
+  void TearDown() override { fs::remove_all(folder_); }
+  fs::path folder_;
+};
+
+TEST_F(Cli, RunWritesTheContractFiles) {
+  const Outcome o = run_cli("run " + example("parallel.yaml") + " --quiet --out " + folder_.string() +
+                            " --set analysis.end=0.05");
+  ASSERT_EQ(o.exit_code, 0) << o.output;
+  // Golden header: the column contract of DESIGN §4 for the paper's names.
+  const std::string history = read_file(folder_ / "history.csv");
+  EXPECT_EQ(history.substr(0, history.find('\n')),
+            "t,x.A,y.A,x.B,y.B,x.C,y.C,x.D,y.D,strain.1,mstrain.1,force.1,strain.2,mstrain.2,"
+            "force.2,strain.3,mstrain.3,force.3,torque.motor,kinetic,strain_energy,external_work");
+  // t = 0 and every 5 ms to 50 ms.
+  EXPECT_EQ(std::count(history.begin(), history.end(), '\n'), 1 + 11);
+
+  const auto summary = nlohmann::json::parse(read_file(folder_ / "summary.json"));
+  EXPECT_EQ(summary["status"], "completed");
+  EXPECT_EQ(summary["steps"], 50);
+  EXPECT_GT(summary["newton_iterations"].get<int>(), 0);
+  for (const char* element : {"1", "2", "3"}) {
+    for (const char* quantity : {"strain", "mstrain", "force"}) {
+      EXPECT_TRUE(summary["elements"][element][quantity].contains("t_max")) << element << quantity;
+    }
+  }
+  EXPECT_EQ(summary["drivers"]["motor"]["quantity"], "torque");
+  EXPECT_EQ(summary["final_positions"]["D"][0].get<double>(), 0.357);
+}
+
+TEST_F(Cli, SetSelectsTheTemperatureCase) {
+  const Outcome o = run_cli("run " + example("general.yaml") + " --quiet --out " + folder_.string() +
+                            " --set thermal.dT=130 --set analysis.end=0.01");
+  ASSERT_EQ(o.exit_code, 0) << o.output;
+  const auto summary = nlohmann::json::parse(read_file(folder_ / "summary.json"));
+  // A free bar heated by 130 °C: total Green–Lagrange strain αΔT = 2.6e-3 (crank, driven).
+  EXPECT_NEAR(summary["elements"]["1"]["strain"]["max"].get<double>(), 2.6e-3, 1e-9);
+}
+
+TEST_F(Cli, CheckPrintsTheSummary) {
+  const Outcome o = run_cli("check " + example("general.yaml"));
+  ASSERT_EQ(o.exit_code, 0) << o.output;
+  EXPECT_NE(o.output.find("8 coordinates + 5 multipliers"), std::string::npos) << o.output;
+  EXPECT_NE(o.output.find("kinematically determinate"), std::string::npos) << o.output;
+}
+
+TEST_F(Cli, HelpExitsCleanly) {
+  struct Case {
+    const char* arguments;
+    const char* expected;
+  };
+  for (const Case c : {Case{"--help", "check"}, Case{"run --help", "--set"}, Case{"check --help", "--set"}}) {
+    const Outcome o = run_cli(c.arguments);
+    EXPECT_EQ(o.exit_code, 0) << c.arguments << "\n" << o.output;
+    EXPECT_NE(o.output.find(c.expected), std::string::npos) << c.arguments << "\n" << o.output;
+  }
+}
+
+TEST_F(Cli, BadInputExitsWithTwoAndNamesTheField) {
+  struct Case {
+    std::string arguments, expected;
+  };
+  const Case cases[] = {
+      {"run /nonexistent/model.yaml --out " + folder_.string(), "/nonexistent/model.yaml"},
+      {"run " + example("parallel.yaml") + " --out " + folder_.string() + " --set thermal.dT=hot",
+       "thermal.dT"},
+      {"run " + example("parallel.yaml") + " --out " + folder_.string() + " --set analysis.step=-1",
+       "analysis.step"},
+      {"check " + example("parallel.yaml") + " --set elements.9.area=1", "elements"},
+      {"frobnicate", "frobnicate"},
+  };
+  for (const Case& c : cases) {
+    const Outcome o = run_cli(c.arguments);
+    EXPECT_EQ(o.exit_code, 2) << c.arguments << "\n" << o.output;
+    EXPECT_NE(o.output.find(c.expected), std::string::npos) << c.arguments << "\n" << o.output;
+  }
+  // Bad input never leaves results behind.
+  EXPECT_FALSE(fs::exists(folder_));
+}
+
+TEST_F(Cli, SolverFailureExitsWithOneAndKeepsTheResults) {
+  // One Newton iteration per step is too few for some steps of the general linkage.
+  const Outcome o = run_cli("run " + example("general.yaml") + " --quiet --out " + folder_.string() +
+                            " --set analysis.newton.max_iterations=1");
+  ASSERT_EQ(o.exit_code, 1) << o.output;
+  EXPECT_NE(o.output.find("time step"), std::string::npos) << o.output;
+  EXPECT_NE(o.output.find("constraint residual"), std::string::npos) << o.output;
+  const auto summary = nlohmann::json::parse(read_file(folder_ / "summary.json"));
+  EXPECT_EQ(summary["status"], "failed");
+  const double failed_at = summary["failure"]["time"].get<double>();
+  EXPECT_GT(failed_at, 0.0);
+  EXPECT_LT(failed_at, 5.0);
+  // Everything up to the failure is in the history.
+  const std::string history = read_file(folder_ / "history.csv");
+  EXPECT_GT(std::count(history.begin(), history.end(), '\n'), 2);
+}
+
+}  // namespace
