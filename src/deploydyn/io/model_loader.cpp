@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 #include <yaml-cpp/yaml.h>
 
+#include <algorithm>
 #include <array>
 #include <charconv>
 #include <cmath>
@@ -13,7 +14,6 @@
 #include <sstream>
 #include <unordered_map>
 
-#include "deploydyn/io/input_error.hpp"
 #include "deploydyn/io/yaml_reader.hpp"
 
 namespace deploydyn {
@@ -46,8 +46,8 @@ class NameIndex {
     const std::string name = reference.text();
     const auto found = index_.find(name);
     if (found == index_.end()) {
-      reference.fail(fmt::format("unknown {} '{}'; {}s are {}", kind_, name, kind_,
-                                 io::join_names(names_)));
+      reference.fail(
+          fmt::format("unknown {} '{}'; {}s are {}", kind_, name, kind_, io::join_names(names_)));
     }
     return found->second;
   }
@@ -70,16 +70,16 @@ class ModelReader {
       root_.fail("expected a mapping with nodes, materials and elements, got " +
                  root_.description());
     }
-    root_.expect_keys({"name", "description", "units", "nodes", "materials", "elements",
-                       "thermal", "supports", "drivers", "loads", "gravity", "functions",
-                       "analysis", "output"});
+    root_.expect_keys({"name", "description", "units", "nodes", "materials", "elements", "thermal",
+                       "supports", "drivers", "loads", "gravity", "functions", "analysis",
+                       "output"});
     if (const auto name = root_.find("name")) model_.name = name->text();
     if (const auto description = root_.find("description")) {
       model_.description = description->text();
     }
     if (const auto units = root_.find("units"); units && units->text() != "SI") {
-      units->fail(fmt::format("only SI is supported (m, kg, s, N, Pa, °C), got '{}'",
-                              units->text()));
+      units->fail(
+          fmt::format("only SI is supported (m, kg, s, N, Pa, °C), got '{}'", units->text()));
     }
     if (const auto functions = root_.find("functions")) read_functions(*functions);
     read_nodes(root_.at("nodes"));
@@ -119,13 +119,21 @@ class ModelReader {
     if (spec.is_scalar()) {
       const std::string name = spec.text();
       if (name == kPaperEq23) return TimeFunction::paper_eq23();
-      std::vector<std::string> known{std::string(kPaperEq23)};
-      if (named != nullptr) {
-        if (const auto found = named->find(name); found != named->end()) return found->second;
-        for (const auto& entry : *named) known.push_back(entry.first);
+      if (named == nullptr) {
+        spec.fail(
+            fmt::format("unknown function '{}'; entries of 'functions' may name the builtin "
+                        "paper_eq23 but not each other",
+                        name));
       }
-      spec.fail(fmt::format("unknown function '{}'; give a number, a mapping with 'type', or one "
-                            "of: {}", name, io::join_names(known)));
+      if (const auto found = named->find(name); found != named->end()) return found->second;
+      std::vector<std::string> known{std::string(kPaperEq23)};
+      for (const auto& entry : *named) known.push_back(entry.first);
+      const std::string nearest = io::did_you_mean(name, known);
+      spec.fail(fmt::format(
+          "unknown function '{}'{}", name,
+          nearest.empty()
+              ? "; give a number, a mapping with 'type', or one of: " + io::join_names(known)
+              : nearest));
     }
     if (!spec.is_map()) {
       spec.fail("expected a function: a number, a function name or a mapping with 'type', got " +
@@ -172,8 +180,8 @@ class ModelReader {
       f.rise_start = times[0];
       f.rise_end = times[1];
       if (!(f.rise_end > f.rise_start)) {
-        rise->fail(fmt::format("expected [t0, t1] with t0 < t1, got [{}, {}]", f.rise_start,
-                               f.rise_end));
+        rise->fail(
+            fmt::format("expected [t0, t1] with t0 < t1, got [{}, {}]", f.rise_start, f.rise_end));
       }
     }
     if (fall) {
@@ -182,10 +190,11 @@ class ModelReader {
       f.fall_end = times[1];
     }
     if (!(f.fall_start >= f.rise_end && f.fall_end > f.fall_start)) {
-      (fall ? *fall : rise ? *rise : spec)
-          .fail(fmt::format("needs rise [t0, t1] and fall [t2, t3] with t0 < t1 <= t2 < t3, got "
-                            "[{}, {}] and [{}, {}]",
-                            f.rise_start, f.rise_end, f.fall_start, f.fall_end));
+      const YamlValue& culprit = fall ? *fall : rise ? *rise : spec;
+      culprit.fail(
+          fmt::format("needs rise [t0, t1] and fall [t2, t3] with t0 < t1 <= t2 < t3, got "
+                      "[{}, {}] and [{}, {}]",
+                      f.rise_start, f.rise_end, f.fall_start, f.fall_end));
     }
     return TimeFunction(f);
   }
@@ -221,9 +230,10 @@ class ModelReader {
       const auto coordinates = at.numbers(2, 3, "m");
       if (!dimension) dimension = coordinates.size();
       if (coordinates.size() != *dimension) {
-        at.fail(fmt::format("has {} coordinates but node '{}' has {}; all nodes must be 2D or "
-                            "all 3D",
-                            coordinates.size(), model_.nodes.front().name, *dimension));
+        at.fail(
+            fmt::format("has {} coordinates but node '{}' has {}; all nodes must be 2D or "
+                        "all 3D",
+                        coordinates.size(), model_.nodes.front().name, *dimension));
       }
       for (std::size_t i = 0; i < coordinates.size(); ++i) node.position_m[i] = coordinates[i];
       nodes_.add(name);
@@ -279,8 +289,8 @@ class ModelReader {
       bar.node_a = nodes_.find(end_names[0]);
       bar.node_b = nodes_.find(end_names[1]);
       if (bar.node_a == bar.node_b) {
-        ends.fail(fmt::format("a bar needs two different nodes, got '{}' twice",
-                              end_names[0].text()));
+        ends.fail(
+            fmt::format("a bar needs two different nodes, got '{}' twice", end_names[0].text()));
       }
       const double distance =
           (model_.nodes[bar.node_b].position_m - model_.nodes[bar.node_a].position_m).norm();
@@ -323,8 +333,7 @@ class ModelReader {
     for (const auto& spec : section.items(0, kUnbounded, "supports {node: name, fix: [x, y]}")) {
       spec.expect_keys({"node", "fix"});
       const YamlValue node = spec.at("node");
-      FixedNode support{.node = nodes_.find(node),
-                        .axes = {true, true, model_.dimension == 3}};
+      FixedNode support{.node = nodes_.find(node), .axes = {true, true, model_.dimension == 3}};
       if (const auto [previous, added] = support_of_node.emplace(support.node, spec.path());
           !added) {
         node.fail(fmt::format("node '{}' already has a support ({}); list its axes in one 'fix'",
@@ -390,7 +399,7 @@ class ModelReader {
                                std::initializer_list<std::string_view> rate_then_value) {
     const auto given = spec.find("reading");
     return !given || given->choice(rate_then_value) == 0 ? DriverReading::rate
-                                                        : DriverReading::value;
+                                                         : DriverReading::value;
   }
 
   void read_loads(const YamlValue& section) {
@@ -406,8 +415,8 @@ class ModelReader {
   // Analysis and output -----------------------------------------------------------------------
 
   void read_analysis(const YamlValue& spec) {
-    spec.expect_keys({"type", "end", "step", "output_interval", "load_steps", "mass", "integrator",
-                      "newton"});
+    spec.expect_keys(
+        {"type", "end", "step", "output_interval", "load_steps", "mass", "integrator", "newton"});
     AnalysisOptions& analysis = model_.analysis;
     if (const auto type = spec.find("type")) {
       analysis.type = type->choice({"static", "dynamic"}) == 0 ? AnalysisType::quasi_static
@@ -453,7 +462,7 @@ class ModelReader {
     }
     if (std::abs(n_steps - std::round(n_steps)) > kWholeMultipleTolerance * n_steps) {
       interval.fail(fmt::format("must be a whole multiple of step = {} s, got {} ({:.6g} steps)",
-                                 analysis.step_s, value, n_steps));
+                                analysis.step_s, value, n_steps));
     }
     model_.analysis.output_interval_s = value;
   }
@@ -478,7 +487,8 @@ class ModelReader {
     if (const auto max_iterations = spec.find("max_iterations")) {
       newton.max_iterations = max_iterations->integer(1);
     }
-    newton.force_tolerance = spec.number_or("tol_force", newton.force_tolerance, Sign::positive, "");
+    newton.force_tolerance =
+        spec.number_or("tol_force", newton.force_tolerance, Sign::positive, "");
     newton.constraint_tolerance_m =
         spec.number_or("tol_constraint", newton.constraint_tolerance_m, Sign::positive, "m");
     newton.displacement_tolerance_m =
@@ -523,11 +533,20 @@ std::vector<std::string> split_path(const std::string& path) {
   }
 }
 
-// Replaces (or adds, as the last key of an existing mapping) the scalar at override.path.
+// Sections whose keys all have defaults: --set may create them, so that e.g.
+// analysis.newton.max_iterations=5 works on a file without a newton section. Elsewhere a missing
+// key in the middle of a path is a typo (elements.9.area when there is no element 9).
+bool is_option_section(const std::string& path) {
+  static const std::array<std::string_view, 5> kOptionSections{
+      "analysis", "analysis.integrator", "analysis.newton", "thermal", "output"};
+  return std::find(kOptionSections.begin(), kOptionSections.end(), path) != kOptionSections.end();
+}
+
+// Replaces (or adds, as the last key of a mapping) the scalar at override.path.
 void apply_override(YAML::Node root, const Override& override, io::YamlSource& source) {
   const auto fail = [&](const std::string& problem) {
-    throw InputError(fmt::format("--set {}={}", override.path, override.value), 0, 0,
-                     override.path, problem);
+    io::throw_input_error(fmt::format("--set {}={}", override.path, override.value),
+                          YAML::Mark::null_mark(), override.path, problem);
   };
   const auto keys = split_path(override.path);
   YAML::Node current = root;
@@ -535,7 +554,11 @@ void apply_override(YAML::Node root, const Override& override, io::YamlSource& s
   for (std::size_t i = 0; i < keys.size(); ++i) {
     const std::string& key = keys[i];
     const bool last = i + 1 == keys.size();
-    if (key.empty()) fail("empty key in the path; separate keys by single dots, e.g. analysis.step");
+    const std::string path_here = fmt::format(
+        "{}", fmt::join(keys.begin(), keys.begin() + static_cast<std::ptrdiff_t>(i) + 1, "."));
+    if (key.empty()) {
+      fail("empty key in the path; separate keys by single dots, e.g. analysis.step");
+    }
     std::optional<YAML::Node> next;
     if (current.IsMap()) {
       std::vector<std::string> present;
@@ -551,10 +574,21 @@ void apply_override(YAML::Node root, const Override& override, io::YamlSource& s
         source.add_override(override);
         return;
       }
-      if (!next) fail(fmt::format("no key '{}' in {}{}", key, walked, io::suggestion(key, present)));
+      if (!next && is_option_section(path_here)) {
+        current[key] = YAML::Node(YAML::NodeType::Map);
+        next.emplace(current[key]);
+      }
+      if (!next) {
+        const std::string nearest = io::did_you_mean(key, present);
+        fail(fmt::format("no key '{}' in {}{}; --set adds only a last key or an options section",
+                         key, walked,
+                         nearest.empty() ? "; keys there: " + io::join_names(present) : nearest));
+      }
     } else if (current.IsSequence()) {
       std::size_t index = 0;
       const auto [end, error] = std::from_chars(key.data(), key.data() + key.size(), index);
+      if (current.size() == 0)
+        fail(fmt::format("{} is an empty list; it has no '{}'", walked, key));
       if (error != std::errc() || end != key.data() + key.size() || index >= current.size()) {
         fail(fmt::format("{} is a list of {} items; expected an index from 0 to {}, got '{}'",
                          walked, current.size(), current.size() - 1, key));
@@ -564,7 +598,7 @@ void apply_override(YAML::Node root, const Override& override, io::YamlSource& s
     } else {
       fail(fmt::format("{} is a single value; it has no '{}'", walked, key));
     }
-    walked = fmt::format("'{}'", fmt::join(keys.begin(), keys.begin() + static_cast<std::ptrdiff_t>(i) + 1, "."));
+    walked = "'" + path_here + "'";
     current.reset(*next);  // rebinds; plain assignment would overwrite the node in the tree
   }
   if (!current.IsScalar() && !current.IsNull()) {
@@ -579,9 +613,7 @@ YAML::Node parse_yaml(const std::string& text, const std::string& source_name) {
   try {
     return YAML::Load(text);
   } catch (const YAML::ParserException& error) {
-    const bool located = !error.mark.is_null();
-    throw InputError(source_name, located ? error.mark.line + 1 : 0,
-                     located ? error.mark.column + 1 : 0, "", "YAML syntax: " + error.msg);
+    io::throw_input_error(source_name, error.mark, "", "YAML syntax: " + error.msg);
   }
 }
 
@@ -594,6 +626,15 @@ struct Overloaded : Ts... {
 
 // The shortest text that reads back to the same double (at most 17 significant digits).
 std::string number_text(double value) { return fmt::format("{}", value); }
+
+void emit_key(YAML::Emitter& out, const std::string& key) {
+  out << YAML::Key << key << YAML::Value;
+}
+
+void emit_number(YAML::Emitter& out, const std::string& key, double value) {
+  emit_key(out, key);
+  out << number_text(value);
+}
 
 void emit_numbers(YAML::Emitter& out, std::initializer_list<double> values) {
   out << YAML::Flow << YAML::BeginSeq;
@@ -608,42 +649,41 @@ void emit_vector(YAML::Emitter& out, const Eigen::Vector3d& vector, int dimensio
 }
 
 void emit_function(YAML::Emitter& out, const TimeFunction& function) {
-  std::visit(
-      Overloaded{
-          [&](const TimeFunction::Constant& f) { out << number_text(f.value); },
-          [&](const TimeFunction::SmoothStep& f) {
-            out << YAML::Flow << YAML::BeginMap << YAML::Key << "type" << YAML::Value
-                << "smooth_step" << YAML::Key << "t0" << YAML::Value << number_text(f.t0)
-                << YAML::Key << "v0" << YAML::Value << number_text(f.v0) << YAML::Key << "t1"
-                << YAML::Value << number_text(f.t1) << YAML::Key << "v1" << YAML::Value
-                << number_text(f.v1) << YAML::EndMap;
-          },
-          [&](const TimeFunction::SmoothTrapezoid& f) {
-            out << YAML::Flow << YAML::BeginMap << YAML::Key << "type" << YAML::Value
-                << "smooth_trapezoid" << YAML::Key << "amplitude" << YAML::Value
-                << number_text(f.amplitude) << YAML::Key << "rise" << YAML::Value;
-            emit_numbers(out, {f.rise_start, f.rise_end});
-            out << YAML::Key << "fall" << YAML::Value;
-            emit_numbers(out, {f.fall_start, f.fall_end});
-            out << YAML::EndMap;
-          },
-          [&](const TimeFunction::Table& f) {
-            out << YAML::Flow << YAML::BeginMap << YAML::Key << "type" << YAML::Value << "table"
-                << YAML::Key << "points" << YAML::Value << YAML::BeginSeq;
-            for (std::size_t i = 0; i < f.times.size(); ++i) {
-              emit_numbers(out, {f.times[i], f.values[i]});
-            }
-            out << YAML::EndSeq << YAML::EndMap;
-          },
-      },
-      function.kind());
-}
-
-void emit_key(YAML::Emitter& out, const std::string& key) { out << YAML::Key << key << YAML::Value; }
-
-void emit_number(YAML::Emitter& out, const std::string& key, double value) {
-  emit_key(out, key);
-  out << number_text(value);
+  const auto begin = [&](const char* type) {
+    out << YAML::Flow << YAML::BeginMap;
+    emit_key(out, "type");
+    out << type;
+  };
+  std::visit(Overloaded{
+                 [&](const TimeFunction::Constant& f) { out << number_text(f.value); },
+                 [&](const TimeFunction::SmoothStep& f) {
+                   begin("smooth_step");
+                   emit_number(out, "t0", f.t0);
+                   emit_number(out, "v0", f.v0);
+                   emit_number(out, "t1", f.t1);
+                   emit_number(out, "v1", f.v1);
+                   out << YAML::EndMap;
+                 },
+                 [&](const TimeFunction::SmoothTrapezoid& f) {
+                   begin("smooth_trapezoid");
+                   emit_number(out, "amplitude", f.amplitude);
+                   emit_key(out, "rise");
+                   emit_numbers(out, {f.rise_start, f.rise_end});
+                   emit_key(out, "fall");
+                   emit_numbers(out, {f.fall_start, f.fall_end});
+                   out << YAML::EndMap;
+                 },
+                 [&](const TimeFunction::Table& f) {
+                   begin("table");
+                   emit_key(out, "points");
+                   out << YAML::BeginSeq;
+                   for (std::size_t i = 0; i < f.times.size(); ++i) {
+                     emit_numbers(out, {f.times[i], f.values[i]});
+                   }
+                   out << YAML::EndSeq << YAML::EndMap;
+                 },
+             },
+             function.kind());
 }
 
 void emit_geometry(YAML::Emitter& out, const Model& model) {
@@ -716,7 +756,9 @@ void emit_boundary_conditions(YAML::Emitter& out, const Model& model) {
       emit_key(out, "fix");
       out << YAML::Flow << YAML::BeginSeq;
       for (int i = 0; i < model.dimension; ++i) {
-        if (support.axes[static_cast<std::size_t>(i)]) out << kAxisNames[static_cast<std::size_t>(i)];
+        if (support.axes[static_cast<std::size_t>(i)]) {
+          out << kAxisNames[static_cast<std::size_t>(i)];
+        }
       }
       out << YAML::EndSeq << YAML::EndMap;
     }
@@ -791,7 +833,9 @@ void emit_analysis(YAML::Emitter& out, const Model& model) {
   emit_number(out, "end", analysis.end_time_s);
   emit_number(out, "step", analysis.step_s);
   // 0 means "every step", which is also what leaving the key out says.
-  if (analysis.output_interval_s > 0.0) emit_number(out, "output_interval", analysis.output_interval_s);
+  if (analysis.output_interval_s > 0.0) {
+    emit_number(out, "output_interval", analysis.output_interval_s);
+  }
   emit_key(out, "load_steps");
   out << analysis.load_steps;
   emit_key(out, "mass");
@@ -827,8 +871,8 @@ void emit_analysis(YAML::Emitter& out, const Model& model) {
 Override parse_override(const std::string& text) {
   const std::size_t equals = text.find('=');
   if (equals == std::string::npos || equals == 0) {
-    throw InputError("--set " + text, 0, 0, "",
-                     "expected PATH=VALUE, e.g. thermal.dT=130 or analysis.step=5e-4");
+    io::throw_input_error("--set " + text, YAML::Mark::null_mark(), "",
+                          "expected PATH=VALUE, e.g. thermal.dT=130 or analysis.step=5e-4");
   }
   return {text.substr(0, equals), text.substr(equals + 1)};
 }
@@ -838,11 +882,11 @@ Model load_model(const std::filesystem::path& file, const std::vector<Override>&
   std::error_code ignored;
   std::ifstream in(file, std::ios::binary);
   if (!in || std::filesystem::is_directory(file, ignored)) {
-    throw InputError(source_name, 0, 0, "", "cannot open file");
+    io::throw_input_error(source_name, YAML::Mark::null_mark(), "", "cannot open file");
   }
   std::ostringstream text;
   text << in.rdbuf();
-  if (in.bad()) throw InputError(source_name, 0, 0, "", "cannot read file");
+  if (in.bad()) io::throw_input_error(source_name, YAML::Mark::null_mark(), "", "cannot read file");
   return load_model_from_string(text.str(), source_name, overrides);
 }
 
@@ -856,9 +900,7 @@ Model load_model_from_string(const std::string& text, const std::string& source_
     return ModelReader(root_value).read();
   } catch (const YAML::Exception& error) {
     // The reader checks types before converting, so this is a safety net, not a path.
-    const bool located = !error.mark.is_null();
-    throw InputError(source_name, located ? error.mark.line + 1 : 0,
-                     located ? error.mark.column + 1 : 0, "", "cannot read the model: " + error.msg);
+    io::throw_input_error(source_name, error.mark, "", "cannot read the model: " + error.msg);
   }
 }
 

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <optional>
 #include <unordered_set>
 
 #include "deploydyn/io/input_error.hpp"
@@ -12,19 +13,43 @@
 namespace deploydyn::io {
 namespace {
 
+// Edits (insert, delete, replace, swap two neighbours) that turn a into b: swapped letters are
+// the most common typo, so they count as one edit.
 std::size_t edit_distance(std::string_view a, std::string_view b) {
-  std::vector<std::size_t> row(b.size() + 1);
-  for (std::size_t j = 0; j <= b.size(); ++j) row[j] = j;
+  std::vector<std::vector<std::size_t>> d(a.size() + 1, std::vector<std::size_t>(b.size() + 1));
+  for (std::size_t i = 0; i <= a.size(); ++i) d[i][0] = i;
+  for (std::size_t j = 0; j <= b.size(); ++j) d[0][j] = j;
   for (std::size_t i = 1; i <= a.size(); ++i) {
-    std::size_t diagonal = row[0];
-    row[0] = i;
     for (std::size_t j = 1; j <= b.size(); ++j) {
-      const std::size_t above = row[j];
-      row[j] = std::min({row[j] + 1, row[j - 1] + 1, diagonal + (a[i - 1] == b[j - 1] ? 0 : 1)});
-      diagonal = above;
+      const std::size_t replace = a[i - 1] == b[j - 1] ? 0 : 1;
+      d[i][j] = std::min({d[i - 1][j] + 1, d[i][j - 1] + 1, d[i - 1][j - 1] + replace});
+      if (i > 1 && j > 1 && a[i - 1] == b[j - 2] && a[i - 2] == b[j - 1]) {
+        d[i][j] = std::min(d[i][j], d[i - 2][j - 2] + 1);
+      }
     }
   }
-  return row[b.size()];
+  return d[a.size()][b.size()];
+}
+
+std::optional<std::string> closest(std::string_view word,
+                                   const std::vector<std::string>& candidates) {
+  // A typo is a few edits, or the start of a long name; further away a guess would mislead.
+  constexpr std::size_t kMinPrefix = 3;
+  const std::size_t close_enough = std::min<std::size_t>(word.size() / 3, 3);
+  std::optional<std::string> best;
+  std::size_t best_distance = close_enough + 1;
+  for (const auto& candidate : candidates) {
+    const std::size_t distance = edit_distance(word, candidate);
+    if (distance < best_distance) {
+      best = candidate;
+      best_distance = distance;
+    }
+  }
+  if (best || word.size() < kMinPrefix) return best;
+  for (const auto& candidate : candidates) {
+    if (candidate.starts_with(word)) return candidate;
+  }
+  return std::nullopt;
 }
 
 std::vector<std::string> to_strings(std::initializer_list<std::string_view> words) {
@@ -33,6 +58,12 @@ std::vector<std::string> to_strings(std::initializer_list<std::string_view> word
 
 std::string join_all(std::initializer_list<std::string_view> words) {
   return fmt::format("{}", fmt::join(words, ", "));
+}
+
+// The nearest key if there is one, else the whole list.
+std::string hint(std::string_view key, const std::vector<std::string>& allowed) {
+  const std::string nearest = did_you_mean(key, allowed);
+  return nearest.empty() ? "; allowed: " + join_names(allowed) : nearest;
 }
 
 }  // namespace
@@ -50,20 +81,9 @@ std::string describe(const YAML::Node& node) {
   }
 }
 
-std::string suggestion(std::string_view word, const std::vector<std::string>& candidates) {
-  // A typo is a few edits; further away the user more likely needs the whole list.
-  const std::size_t close_enough = std::clamp<std::size_t>(word.size() / 2, 1, 3);
-  const std::string* best = nullptr;
-  std::size_t best_distance = close_enough + 1;
-  for (const auto& candidate : candidates) {
-    const std::size_t distance = edit_distance(word, candidate);
-    if (distance < best_distance) {
-      best = &candidate;
-      best_distance = distance;
-    }
-  }
-  if (best != nullptr) return fmt::format("; did you mean '{}'?", *best);
-  return "; allowed: " + join_names(candidates);
+std::string did_you_mean(std::string_view word, const std::vector<std::string>& candidates) {
+  const auto best = closest(word, candidates);
+  return best ? fmt::format("; did you mean '{}'?", *best) : "";
 }
 
 std::string join_names(const std::vector<std::string>& names) {
@@ -74,15 +94,23 @@ std::string join_names(const std::vector<std::string>& names) {
   return joined;
 }
 
+void throw_input_error(const std::string& source, const YAML::Mark& mark, const std::string& field,
+                       const std::string& problem) {
+  if (mark.is_null()) throw InputError(source, 0, 0, field, problem);
+  throw InputError(source, mark.line + 1, mark.column + 1, field, problem);
+}
+
 void YamlSource::fail(const YAML::Mark& mark, const std::string& field,
                       const std::string& problem) const {
-  if (!mark.is_null()) throw InputError(name_, mark.line + 1, mark.column + 1, field, problem);
-  // Only overrides make nodes without a mark; the latest one of that path made this one.
-  const auto made_it = std::find_if(overrides_.rbegin(), overrides_.rend(),
-                                    [&](const Override& o) { return o.path == field; });
-  if (made_it == overrides_.rend()) throw InputError(name_, 0, 0, field, problem);
-  throw InputError(fmt::format("--set {}={}", made_it->path, made_it->value), 0, 0, field,
-                   problem);
+  // Only overrides make nodes without a mark: the latest one at or below this path made it.
+  const auto made_it = std::find_if(overrides_.rbegin(), overrides_.rend(), [&](const Override& o) {
+    return o.path == field || o.path.starts_with(field + ".");
+  });
+  if (!mark.is_null() || made_it == overrides_.rend()) {
+    throw_input_error(name_, mark, field, problem);
+  }
+  throw_input_error(fmt::format("--set {}={}", made_it->path, made_it->value), mark, field,
+                    problem);
 }
 
 void YamlValue::fail(const std::string& problem) const {
@@ -104,7 +132,8 @@ std::vector<std::pair<std::string, YamlValue>> YamlValue::entries() const {
   for (const auto& entry : node_) {
     // yaml-cpp keeps repeated keys; a repeated name is almost always a copy-paste slip.
     if (!entry.first.IsScalar() || entry.first.Scalar().empty()) {
-      source_->fail(entry.first.Mark(), path_, "keys must be plain names, got " + describe(entry.first));
+      source_->fail(entry.first.Mark(), path_,
+                    "keys must be plain names, got " + describe(entry.first));
     }
     const std::string& key = entry.first.Scalar();
     if (!seen.insert(key).second) {
@@ -122,7 +151,7 @@ void YamlValue::expect_keys(std::initializer_list<std::string_view> allowed) con
     if (std::find(allowed.begin(), allowed.end(), key) != allowed.end()) continue;
     // Report at the key itself: its value may be lines below.
     source_->fail(entry.first.Mark(), child_path(key),
-                  fmt::format("unknown key '{}'{}", key, suggestion(key, to_strings(allowed))));
+                  fmt::format("unknown key '{}'{}", key, hint(key, to_strings(allowed))));
   }
 }
 
@@ -153,7 +182,8 @@ std::vector<YamlValue> YamlValue::items(std::size_t n_min, std::size_t n_max,
   const auto expected = [&] {
     if (n_min == n_max) return fmt::format("a list of {} {}", n_min, what);
     if (n_max == std::numeric_limits<std::size_t>::max()) {
-      return fmt::format("a list of at least {} {}", n_min, what);
+      return n_min == 0 ? fmt::format("a list of {}", what)
+                        : fmt::format("a list of at least {} {}", n_min, what);
     }
     return fmt::format("a list of {} to {} {}", n_min, n_max, what);
   };
@@ -196,10 +226,12 @@ double YamlValue::number(Sign sign, std::string_view unit) const {
 
 int YamlValue::integer(int min) const {
   const double value = number();
-  if (value != std::floor(value) || std::abs(value) > std::numeric_limits<int>::max()) {
-    fail(fmt::format("expected an integer, got {}", node_.Scalar()));
-  }
+  if (value != std::floor(value)) fail(fmt::format("expected an integer, got {}", node_.Scalar()));
   if (value < min) fail(fmt::format("must be at least {}, got {}", min, node_.Scalar()));
+  if (value > std::numeric_limits<int>::max()) {
+    fail(
+        fmt::format("must be at most {}, got {}", std::numeric_limits<int>::max(), node_.Scalar()));
+  }
   return static_cast<int>(value);
 }
 
@@ -215,9 +247,8 @@ std::size_t YamlValue::choice(std::initializer_list<std::string_view> allowed) c
   const std::string given = text();
   const auto match = std::find(allowed.begin(), allowed.end(), given);
   if (match == allowed.end()) {
-    const std::string hint = suggestion(given, to_strings(allowed));
     fail(fmt::format("must be one of {}, got '{}'{}", join_all(allowed), given,
-                     hint.starts_with("; did") ? hint : ""));
+                     did_you_mean(given, to_strings(allowed))));
   }
   return static_cast<std::size_t>(match - allowed.begin());
 }

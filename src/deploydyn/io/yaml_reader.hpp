@@ -16,12 +16,15 @@
 
 namespace deploydyn::io {
 
+// Throws InputError at mark; line and column are 0 when the mark is null (e.g. no file).
+[[noreturn]] void throw_input_error(const std::string& source, const YAML::Mark& mark,
+                                    const std::string& field, const std::string& problem);
+
 // Where a tree came from: a file (or a source name), possibly edited by --set overrides.
 class YamlSource {
  public:
   explicit YamlSource(std::string name) : name_(std::move(name)) {}
 
-  const std::string& name() const { return name_; }
   // Remembers an applied override: nodes it made have no mark, and their errors name it.
   void add_override(const Override& applied) { overrides_.push_back(applied); }
 
@@ -37,8 +40,8 @@ enum class Sign { any, positive, non_negative };
 
 // "'abc'", "a list", "a mapping" or "nothing": what a node is, for messages.
 std::string describe(const YAML::Node& node);
-// "; did you mean 'area'?" when a candidate is a few edits away, else "; allowed: a, b, c".
-std::string suggestion(std::string_view word, const std::vector<std::string>& candidates);
+// "; did you mean 'area'?" for a candidate a few edits away from word (a typo), or "".
+std::string did_you_mean(std::string_view word, const std::vector<std::string>& candidates);
 // "A, B, C" (the first few, then "...").
 std::string join_names(const std::vector<std::string>& names);
 

@@ -89,12 +89,13 @@ RunReport run_analysis(const Assembler& assembler, RecordSink& sink, const RunCo
   state.a = Eigen::VectorXd::Zero(assembler.n_dofs());
   state.lambda = Eigen::VectorXd::Zero(assembler.n_equations());
 
-  const StaticResult initial = solve_static(assembler, options, options.load_steps, system, state);
+  const StaticResult initial =
+      solve_static(assembler, options, LoadPath::thermal_ramp(0.0), options.load_steps, system, state);
   report.initial_load_steps = initial.load_steps;
   report.initial_iterations = initial.total_iterations;
-  if (initial.thermal_factor < 1.0) {
+  if (initial.path_factor < 1.0) {
     FailureReport f = describe_failure(assembler, "initial equilibrium", 0.0, 0, initial.newton);
-    f.reason += fmt::format(" (thermal load reached {:.1f}%)", 100.0 * initial.thermal_factor);
+    f.reason += fmt::format(" (thermal load reached {:.1f}%)", 100.0 * initial.path_factor);
     return fail(f);
   }
   const bool dynamic = options.type == AnalysisType::dynamic;
@@ -132,10 +133,11 @@ RunReport run_analysis(const Assembler& assembler, RecordSink& sink, const RunCo
       newton = newmark.step(step, system, state);
     } else {
       MotionState next = state;
-      next.time_s += step;
-      const StaticResult r = solve_static(assembler, options, 1, system, next);
+      const StaticResult r = solve_static(
+          assembler, options, LoadPath::time_step(state.time_s, state.time_s + step), 1, system, next);
       newton = r.newton;
-      if (r.thermal_factor >= 1.0) state = std::move(next);  // q̇ stays 0: inertia is ignored
+      newton.iterations = r.total_iterations;
+      if (r.path_factor >= 1.0) state = std::move(next);  // q̇ stays 0: inertia is ignored
     }
     report.newton_iterations += newton.iterations;
     report.max_iterations_per_step = std::max(report.max_iterations_per_step, newton.iterations);

@@ -47,15 +47,18 @@ class StaticEquations final : public DiscreteEquations {
 }  // namespace
 
 StaticResult solve_static(const Assembler& assembler, const AnalysisOptions& options,
-                          int load_steps, LinearSystem& system, MotionState& state) {
+                          const LoadPath& path, int load_steps, LinearSystem& system,
+                          MotionState& state) {
   StaticResult result;
   // Constraint rows scaled to the stiffness keep the matrix balanced (DESIGN §2).
   const double scale = assembler.stiffness_scale(state.q, state.time_s);
   double increment = 1.0 / std::max(load_steps, 1);
   const double largest_move_m = kLargestMoveShare * shortest_bar_m(assembler.model());
-  while (result.thermal_factor < 1.0) {
-    const double target = std::min(1.0, result.thermal_factor + increment);
-    StaticEquations equations(assembler, state.time_s, target, scale);
+  while (result.path_factor < 1.0) {
+    const double target = std::min(1.0, result.path_factor + increment);
+    const double t = path.start_time_s + target * (path.end_time_s - path.start_time_s);
+    const double thermal = path.start_thermal + target * (path.end_thermal - path.start_thermal);
+    StaticEquations equations(assembler, t, thermal, scale);
     Eigen::VectorXd q = state.q;
     Eigen::VectorXd lambda = state.lambda;
     result.newton = solve_newton(equations, options.newton, system, q, lambda);
@@ -74,7 +77,8 @@ StaticResult solve_static(const Assembler& assembler, const AnalysisOptions& opt
     }
     state.q = q;
     state.lambda = lambda;
-    result.thermal_factor = target;
+    state.time_s = t;
+    result.path_factor = target;
     ++result.load_steps;
   }
   return result;

@@ -1,8 +1,9 @@
 #pragma once
 // Static (kinematic) equilibrium, paper Eq. (7) with thermal strain:
 //   f_int(q, t) − f_ext(t) + Bᵀλ = 0,   Φ(q, t) = 0
-// Used for the initial thermal equilibrium and for quasi-static deployment. The thermal
-// strain is applied in load steps; a step is halved (down to 1/1024 of the whole) when its
+// Used for the initial thermal equilibrium (the thermal strain ramped from 0 to 1 at t = 0)
+// and for quasi-static deployment (time ramped over one step). The ramp, a LoadPath, is
+// followed in load steps; a step is halved (down to 1/1024 of the whole) when its
 // Newton solve fails or when it moves a node by more than 2 % of the shortest bar. The second
 // rule keeps the solution on the branch it started on: near a flat (singular) configuration
 // one large step can land on a self-stressed toggle position or on another assembly.
@@ -13,15 +14,26 @@
 
 namespace deploydyn {
 
-struct StaticResult {
-  NewtonResult newton;      // of the last solve tried
-  int load_steps = 0;       // solves that converged
-  int total_iterations = 0;
-  double thermal_factor = 0.0;  // share of ΔT reached (1 when converged)
+// A straight path in (time, share of the thermal strain), followed from start to end.
+struct LoadPath {
+  double start_time_s = 0.0, end_time_s = 0.0;
+  double start_thermal = 0.0, end_thermal = 1.0;
+
+  static LoadPath thermal_ramp(double t) { return {t, t, 0.0, 1.0}; }
+  static LoadPath time_step(double from_s, double to_s) { return {from_s, to_s, 1.0, 1.0}; }
 };
 
-// Solves at state.time_s starting from state.q/state.lambda, which it updates.
+struct StaticResult {
+  NewtonResult newton;       // of the last solve tried
+  int load_steps = 0;        // solves that converged
+  int total_iterations = 0;
+  double path_factor = 0.0;  // share of the path followed (1 when converged)
+};
+
+// Follows `path` in at least `load_steps` steps from state.q/state.lambda, updating `state`
+// (time included) as far as it gets.
 StaticResult solve_static(const Assembler& assembler, const AnalysisOptions& options,
-                          int load_steps, LinearSystem& system, MotionState& state);
+                          const LoadPath& path, int load_steps, LinearSystem& system,
+                          MotionState& state);
 
 }  // namespace deploydyn

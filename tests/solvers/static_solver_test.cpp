@@ -1,0 +1,78 @@
+// The static solver (paper Eq. 7): its load stepping of the thermal strain, and a solve at a
+// later time, where the drivers have moved the mechanism (one step of a quasi-static run).
+#include "deploydyn/solvers/static_solver.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "deploydyn/assembly/dense_linear_system.hpp"
+#include "support/model_builder.hpp"
+
+namespace deploydyn {
+namespace {
+
+using testing::BarSpec;
+using testing::ModelBuilder;
+
+// Newton stops at corrections ≤ 1e-12 m and converges quadratically: round-off is left.
+constexpr double kPositionTolerance_m = 1e-11;
+
+MotionState rest_state(const Assembler& assembler, double t) {
+  MotionState s;
+  s.time_s = t;
+  s.q = assembler.initial_coordinates();
+  s.v = s.a = Eigen::VectorXd::Zero(assembler.n_dofs());
+  s.lambda = Eigen::VectorXd::Zero(assembler.n_equations());
+  return s;
+}
+
+// α ΔT = 5 %: one load step would move B by 5 % of the bar, more than the 2 % the solver
+// allows, so it must cut the load into steps and still land on L0 √(1 + 2αΔT).
+TEST(StaticSolver, CutsALargeThermalLoadIntoStepsAndConverges) {
+  ModelBuilder m(2);
+  const int a = m.node("A", Eigen::Vector3d::Zero());
+  const int b = m.node("B", Eigen::Vector3d(1.0, 0.0, 0.0));
+  m.bar(a, b, BarSpec{2e11, 1e-4, 1.0, 1e-3, {}, TimeFunction::constant(50.0)});
+  m.pin(a);
+  m.support(b, {false, true, true});
+  const Assembler assembler(m.model());
+  DenseLinearSystem system(assembler.n_unknowns());
+  MotionState state = rest_state(assembler, 0.0);
+  const StaticResult result =
+      solve_static(assembler, m.model().analysis, LoadPath::thermal_ramp(0.0), 1, system, state);
+  ASSERT_TRUE(result.newton.converged) << result.newton.failure;
+  EXPECT_EQ(result.path_factor, 1.0);
+  EXPECT_GE(result.load_steps, 3) << "5 % in steps of at most 2 %";
+  EXPECT_NEAR(state.q[2], std::sqrt(1.0 + 2.0 * 1e-3 * 50.0), kPositionTolerance_m);
+}
+
+// A bar turned by its driver at 1 rad/s, solved statically from t = 0 to 0.2 s in one requested
+// step: the tip must follow the driver 0.2 rad round, 20 % of the bar, ten times the move the
+// solver allows in one load step, so it must cut the step.
+TEST(StaticSolver, FollowsTheDriverAtALaterTime) {
+  ModelBuilder m(2);
+  const int a = m.node("A", Eigen::Vector3d::Zero());
+  const int b = m.node("B", Eigen::Vector3d(1.0, 0.0, 0.0));
+  m.bar(a, b, BarSpec{});
+  m.pin(a);
+  Driver driver;
+  driver.name = "motor";
+  driver.element = 0;
+  driver.pivot = a;
+  driver.profile = TimeFunction::constant(1.0);
+  m.model().drivers.push_back(driver);
+  const Assembler assembler(m.model());
+  DenseLinearSystem system(assembler.n_unknowns());
+  MotionState state = rest_state(assembler, 0.0);
+  const StaticResult result =
+      solve_static(assembler, m.model().analysis, LoadPath::time_step(0.0, 0.2), 1, system, state);
+  ASSERT_TRUE(result.newton.converged) << result.newton.failure;
+  EXPECT_GE(result.load_steps, 10);
+  EXPECT_DOUBLE_EQ(state.time_s, 0.2);
+  EXPECT_NEAR(state.q[2], std::cos(0.2), kPositionTolerance_m);
+  EXPECT_NEAR(state.q[3], std::sin(0.2), kPositionTolerance_m);
+}
+
+}  // namespace
+}  // namespace deploydyn
