@@ -7,6 +7,7 @@
 #include <string>
 
 #include "deploydyn/io/model_loader.hpp"
+#include "deploydyn/io/model_writer.hpp"
 
 namespace deploydyn {
 namespace {

@@ -4,7 +4,6 @@
 // file, line, column and field.
 
 #include <filesystem>
-#include <iosfwd>
 #include <string>
 #include <vector>
 
@@ -27,8 +26,5 @@ Model load_model(const std::filesystem::path& file, const std::vector<Override>&
 // Same, from text; source_name is used in error messages in place of a file name.
 Model load_model_from_string(const std::string& text, const std::string& source_name,
                              const std::vector<Override>& overrides = {});
-
-// Writes the model as a model file that load_model reads back to an equal Model.
-void save_model(const Model& model, std::ostream& out);
 
 }  // namespace deploydyn

@@ -1,0 +1,281 @@
+#include "deploydyn/io/model_writer.hpp"
+
+#include <fmt/format.h>
+#include <yaml-cpp/yaml.h>
+
+#include <ostream>
+#include <string>
+
+namespace deploydyn {
+namespace {
+
+template <class... Ts>
+struct Overloaded : Ts... {
+  using Ts::operator()...;
+};
+
+// The shortest text that reads back to the same double (at most 17 significant digits).
+std::string number_text(double value) { return fmt::format("{}", value); }
+
+void emit_key(YAML::Emitter& out, const std::string& key) {
+  out << YAML::Key << key << YAML::Value;
+}
+
+void emit_number(YAML::Emitter& out, const std::string& key, double value) {
+  emit_key(out, key);
+  out << number_text(value);
+}
+
+void emit_numbers(YAML::Emitter& out, std::initializer_list<double> values) {
+  out << YAML::Flow << YAML::BeginSeq;
+  for (const double value : values) out << number_text(value);
+  out << YAML::EndSeq;
+}
+
+void emit_vector(YAML::Emitter& out, const Eigen::Vector3d& vector, int dimension) {
+  out << YAML::Flow << YAML::BeginSeq;
+  for (int i = 0; i < dimension; ++i) out << number_text(vector[i]);
+  out << YAML::EndSeq;
+}
+
+void emit_function(YAML::Emitter& out, const TimeFunction& function) {
+  const auto begin = [&](const char* type) {
+    out << YAML::Flow << YAML::BeginMap;
+    emit_key(out, "type");
+    out << type;
+  };
+  std::visit(Overloaded{
+                 [&](const TimeFunction::Constant& f) { out << number_text(f.value); },
+                 [&](const TimeFunction::SmoothStep& f) {
+                   begin("smooth_step");
+                   emit_number(out, "t0", f.t0);
+                   emit_number(out, "v0", f.v0);
+                   emit_number(out, "t1", f.t1);
+                   emit_number(out, "v1", f.v1);
+                   out << YAML::EndMap;
+                 },
+                 [&](const TimeFunction::SmoothTrapezoid& f) {
+                   begin("smooth_trapezoid");
+                   emit_number(out, "amplitude", f.amplitude);
+                   emit_key(out, "rise");
+                   emit_numbers(out, {f.rise_start, f.rise_end});
+                   emit_key(out, "fall");
+                   emit_numbers(out, {f.fall_start, f.fall_end});
+                   out << YAML::EndMap;
+                 },
+                 [&](const TimeFunction::Table& f) {
+                   begin("table");
+                   emit_key(out, "points");
+                   out << YAML::BeginSeq;
+                   for (std::size_t i = 0; i < f.times.size(); ++i) {
+                     emit_numbers(out, {f.times[i], f.values[i]});
+                   }
+                   out << YAML::EndSeq << YAML::EndMap;
+                 },
+             },
+             function.kind());
+}
+
+void emit_geometry(YAML::Emitter& out, const Model& model) {
+  emit_key(out, "nodes");
+  out << YAML::BeginMap;
+  for (const Node& node : model.nodes) {
+    emit_key(out, node.name);
+    if (node.point_mass_kg == 0.0) {
+      emit_vector(out, node.position_m, model.dimension);
+      continue;
+    }
+    out << YAML::Flow << YAML::BeginMap;
+    emit_key(out, "at");
+    emit_vector(out, node.position_m, model.dimension);
+    emit_number(out, "mass", node.point_mass_kg);
+    out << YAML::EndMap;
+  }
+  out << YAML::EndMap;
+
+  emit_key(out, "materials");
+  out << YAML::BeginMap;
+  for (const Material& material : model.materials) {
+    emit_key(out, material.name);
+    out << YAML::Flow << YAML::BeginMap;
+    emit_number(out, "E", material.youngs_modulus_Pa);
+    emit_number(out, "alpha", material.expansion_per_C);
+    if (material.density_kg_m3) emit_number(out, "density", *material.density_kg_m3);
+    out << YAML::EndMap;
+  }
+  out << YAML::EndMap;
+
+  emit_key(out, "thermal");
+  out << YAML::BeginMap;
+  emit_key(out, "dT");
+  emit_function(out, model.temperature_change_C);
+  out << YAML::EndMap;
+
+  // Mass and length always explicit: the reload then needs no recomputation.
+  emit_key(out, "elements");
+  out << YAML::BeginMap;
+  for (const BarElement& bar : model.bars) {
+    emit_key(out, bar.name);
+    out << YAML::Flow << YAML::BeginMap;
+    emit_key(out, "nodes");
+    out << YAML::Flow << YAML::BeginSeq << model.nodes[bar.node_a].name
+        << model.nodes[bar.node_b].name << YAML::EndSeq;
+    emit_number(out, "area", bar.area_m2);
+    emit_key(out, "material");
+    out << model.materials[bar.material].name;
+    emit_number(out, "mass", bar.mass_kg);
+    emit_number(out, "length", bar.reference_length_m);
+    if (bar.temperature_given) {
+      emit_key(out, "dT");
+      emit_function(out, bar.temperature_change_C);
+    }
+    out << YAML::EndMap;
+  }
+  out << YAML::EndMap;
+}
+
+void emit_boundary_conditions(YAML::Emitter& out, const Model& model) {
+  static constexpr std::array<const char*, 3> kAxisNames{"x", "y", "z"};
+  if (!model.supports.empty()) {
+    emit_key(out, "supports");
+    out << YAML::BeginSeq;
+    for (const FixedNode& support : model.supports) {
+      out << YAML::Flow << YAML::BeginMap;
+      emit_key(out, "node");
+      out << model.nodes[support.node].name;
+      emit_key(out, "fix");
+      out << YAML::Flow << YAML::BeginSeq;
+      for (int i = 0; i < model.dimension; ++i) {
+        if (support.axes[static_cast<std::size_t>(i)]) {
+          out << kAxisNames[static_cast<std::size_t>(i)];
+        }
+      }
+      out << YAML::EndSeq << YAML::EndMap;
+    }
+    out << YAML::EndSeq;
+  }
+
+  if (!model.drivers.empty()) {
+    emit_key(out, "drivers");
+    out << YAML::BeginMap;
+    for (const Driver& driver : model.drivers) {
+      emit_key(out, driver.name);
+      out << YAML::BeginMap;
+      const bool rate = driver.reading == DriverReading::rate;
+      if (driver.kind == Driver::Kind::bar_angle) {
+        emit_key(out, "type");
+        out << "bar_angle";
+        emit_key(out, "element");
+        out << model.bars[driver.element].name;
+        emit_key(out, "pivot");
+        out << model.nodes[driver.pivot].name;
+        if (model.dimension == 3) {
+          emit_key(out, "axis");
+          emit_vector(out, driver.axis, 3);
+        }
+        emit_key(out, "reading");
+        out << (rate ? "angular_velocity" : "angle");
+      } else {
+        emit_key(out, "type");
+        out << "coordinate";
+        emit_key(out, "node");
+        out << model.nodes[driver.node].name;
+        emit_key(out, "direction");
+        out << kAxisNames[static_cast<std::size_t>(driver.direction)];
+        emit_key(out, "reading");
+        out << (rate ? "velocity" : "displacement");
+      }
+      emit_key(out, "profile");
+      emit_function(out, driver.profile);
+      out << YAML::EndMap;
+    }
+    out << YAML::EndMap;
+  }
+
+  if (!model.loads.empty()) {
+    emit_key(out, "loads");
+    out << YAML::BeginSeq;
+    for (const NodalLoad& load : model.loads) {
+      out << YAML::Flow << YAML::BeginMap;
+      emit_key(out, "node");
+      out << model.nodes[load.node].name;
+      emit_key(out, "force");
+      emit_vector(out, load.force_N, model.dimension);
+      emit_key(out, "factor");
+      emit_function(out, load.factor);
+      out << YAML::EndMap;
+    }
+    out << YAML::EndSeq;
+  }
+
+  if (!model.gravity_m_s2.isZero(0.0)) {
+    emit_key(out, "gravity");
+    emit_vector(out, model.gravity_m_s2, model.dimension);
+  }
+}
+
+void emit_analysis(YAML::Emitter& out, const Model& model) {
+  const AnalysisOptions& analysis = model.analysis;
+  emit_key(out, "analysis");
+  out << YAML::BeginMap;
+  emit_key(out, "type");
+  out << (analysis.type == AnalysisType::quasi_static ? "static" : "dynamic");
+  emit_number(out, "end", analysis.end_time_s);
+  emit_number(out, "step", analysis.step_s);
+  // 0 means "every step", which is also what leaving the key out says.
+  if (analysis.output_interval_s > 0.0) {
+    emit_number(out, "output_interval", analysis.output_interval_s);
+  }
+  emit_key(out, "load_steps");
+  out << analysis.load_steps;
+  emit_key(out, "mass");
+  out << (analysis.mass == MassMatrixKind::consistent ? "consistent" : "lumped");
+  emit_key(out, "integrator");
+  out << YAML::Flow << YAML::BeginMap;
+  emit_key(out, "type");
+  out << "newmark";
+  emit_number(out, "beta", analysis.integrator.beta);
+  emit_number(out, "gamma", analysis.integrator.gamma);
+  out << YAML::EndMap;
+  emit_key(out, "newton");
+  out << YAML::Flow << YAML::BeginMap;
+  emit_key(out, "max_iterations");
+  out << analysis.newton.max_iterations;
+  emit_number(out, "tol_force", analysis.newton.force_tolerance);
+  emit_number(out, "tol_constraint", analysis.newton.constraint_tolerance_m);
+  emit_number(out, "tol_displacement", analysis.newton.displacement_tolerance_m);
+  out << YAML::EndMap;
+  out << YAML::EndMap;
+
+  emit_key(out, "output");
+  out << YAML::BeginMap;
+  emit_key(out, "history");
+  out << model.output.history_file;
+  emit_key(out, "summary");
+  out << model.output.summary_file;
+  out << YAML::EndMap;
+}
+
+}  // namespace
+
+void save_model(const Model& model, std::ostream& out) {
+  YAML::Emitter emitter;
+  emitter << YAML::BeginMap;
+  if (!model.name.empty()) {
+    emit_key(emitter, "name");
+    emitter << model.name;
+  }
+  if (!model.description.empty()) {
+    emit_key(emitter, "description");
+    emitter << model.description;
+  }
+  emit_key(emitter, "units");
+  emitter << "SI";
+  emit_geometry(emitter, model);
+  emit_boundary_conditions(emitter, model);
+  emit_analysis(emitter, model);
+  emitter << YAML::EndMap;
+  out << emitter.c_str() << '\n';
+}
+
+}  // namespace deploydyn
