@@ -27,10 +27,12 @@ class InputError : public std::runtime_error {
  private:
   static std::string format(const std::string& source, int line, int column,
                             const std::string& field, const std::string& problem) {
-    std::string where = source;
-    if (line > 0) where += ":" + std::to_string(line);
-    if (line > 0 && column > 0) where += ":" + std::to_string(column);
-    return where + ": " + (field.empty() ? "" : field + ": ") + problem;
+    std::string text = source;
+    if (line > 0) text.append(":").append(std::to_string(line));
+    if (line > 0 && column > 0) text.append(":").append(std::to_string(column));
+    text.append(": ");
+    if (!field.empty()) text.append(field).append(": ");
+    return text.append(problem);
   }
 
   std::string source_;
