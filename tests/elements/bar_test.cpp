@@ -174,6 +174,19 @@ TYPED_TEST(BarElement, RigidRotationGivesNoForceAndTurnsTheForce) {
   EXPECT_LT((bar::internal_force<D>(after, kSection) - expected).norm(), kDerivativeTolerance * f_before.norm());
 }
 
+// The reported true axial force N = S l / L0 is what the bar pulls on node b with, along d/l.
+TYPED_TEST(BarElement, TrueAxialForceIsTheNodalForceAlongTheBar) {
+  constexpr int D = TypeParam::value;
+  std::mt19937 rng(5);
+  for (int c = 0; c < kConfigurations; ++c) {
+    const bar::State<D> s = state_at<D>(random_configuration<D>(rng));
+    const bar::Vector<D> f_b = bar::internal_force<D>(s, kSection).template tail<D>();
+    const double along = f_b.dot(s.d) / s.length_m;
+    EXPECT_NEAR(s.axial_force_N, along, kDerivativeTolerance * std::abs(along)) << "configuration " << c;
+    EXPECT_NEAR((f_b - along * s.d / s.length_m).norm(), 0.0, kDerivativeTolerance * std::abs(along));
+  }
+}
+
 // A free bar heated by ΔT settles at l = L0 √(1 + 2αΔT), where the Green strain equals αΔT.
 TYPED_TEST(BarElement, FreeThermalExpansionIsStressFree) {
   constexpr int D = TypeParam::value;
