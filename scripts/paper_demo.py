@@ -35,11 +35,22 @@ def peak(extremes):
     return max(abs(extremes["min"]), abs(extremes["max"])) if extremes else float("nan")
 
 
+def shape_change(result, results):
+    """Largest distance (m) of a final node position from the normal (ΔT = 0) case's."""
+    normal = next((r for r in results if r["linkage"] == result["linkage"] and r["dT"] == 0.0), None)
+    if normal is None or normal["summary"] is None:
+        return float("nan")
+    mine = result["summary"]["final_positions"]
+    theirs = normal["summary"]["final_positions"]
+    return max(sum((a - b) ** 2 for a, b in zip(mine[n], theirs[n])) ** 0.5 for n in mine)
+
+
 def print_table(results):
     elements = ("1", "2", "3")
     header = (f"{'linkage':9} {'case':7} {'ΔT °C':>6} "
               + " ".join(f"{'|ε_m| bar ' + e:>13}" for e in elements)
-              + f" {'|torque| N·m':>13} {'steps':>6} {'Newton/step':>11} {'wall s':>7}  status")
+              + f" {'|torque| N·m':>13} {'shape Δ m':>10} {'steps':>6} {'Newton/step':>11}"
+              + f" {'wall s':>7}  status")
     print(header)
     print("-" * len(header))
     for r in results:
@@ -50,6 +61,7 @@ def print_table(results):
         strains = " ".join(f"{peak(s['elements'][e]['mstrain']):13.4e}" for e in elements)
         torque = s["drivers"]["motor"]["peak"]
         print(f"{r['linkage']:9} {r['case']:7} {r['dT']:6.0f} {strains} {torque:13.4e} "
+              f"{shape_change(r, results):10.2e} "
               f"{s['steps']:6d} {s['newton_iterations_per_step']:11.2f} {s['wall_time']:7.3f}  "
               f"{s['status']}")
     for r in results:
@@ -71,10 +83,17 @@ def main():
             results.append(run_case(args.cli, linkage, case, delta_t, out_root))
 
     print(f"\nCai et al. (2017) four-bar linkages, results in {out_root}/<linkage>/<case>/")
-    print("peak |mechanical strain| per bar and peak |driver torque| over 0-5 s\n")
+    print("peak |mechanical strain| per bar, peak |driver torque| over 0-5 s, and how far the final")
+    print("shape lies from the normal case's (largest node distance)\n")
     print_table(results)
     total = sum(r["summary"]["wall_time"] for r in results if r["summary"])
-    print(f"\nsolver wall time of the six runs: {total:.3f} s")
+    processes = sum(r["wall"] for r in results)
+    print(f"\nwall time of the six runs: {total:.3f} s in the solver, {processes:.3f} s with process "
+          "start and result files")
+    for r in results:
+        if r["summary"] and shape_change(r, results) > 0.01:
+            print(f"note: {r['linkage']}/{r['case']} ends more than 1 cm from the normal case's shape: "
+                  "it changed branch (see docs/paper-study.md)")
     return 1 if any(r["code"] != 0 for r in results) else 0
 
 
