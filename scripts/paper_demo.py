@@ -1,9 +1,11 @@
-#!/usr/bin/env python3
+#!/usr/bin/python3
 """The paper's study (Cai et al. 2017): both four-bar linkages under the three temperature cases.
 
 Runs `deploydyn run` for every (linkage, case) into results/paper/<linkage>/<case>/, keeps going
 when a case fails (saying why), then prints a table of the peak mechanical strain of each bar
-and the peak driver torque. Exit code 1 when any case failed, after all were tried.
+and the peak driver torque, and draws the paper's Figs. 3-5 and the driver torques into
+results/paper/*.png (scripts/plot_paper.py; a failed or missing case is left out of the plots
+with a message). Exit code 1 when any case failed, after all were tried.
 """
 import argparse
 import json
@@ -12,26 +14,36 @@ import subprocess
 import sys
 import time
 
+import plot_paper
+
 ROOT = pathlib.Path(__file__).resolve().parent.parent
 LINKAGES = ("parallel", "general")
 CASES = (("hot", 130.0), ("normal", 0.0), ("cold", -170.0))  # ΔT in °C, paper Eq. (22)
 
 
-def run_case(cli, linkage, case, delta_t, out_root):
-    folder = out_root / linkage / case
-    command = [str(cli), "run", str(ROOT / "examples" / "paper" / f"{linkage}.yaml"),
-               "--out", str(folder), "--set", f"thermal.dT={delta_t:g}", "--quiet"]
+def run_model(cli, model, folder, overrides=()):
+    """Run `deploydyn run model --out folder --set ...`; return exit code, stderr, summary, wall."""
+    command = [str(cli), "run", str(model), "--out", str(folder), "--quiet"]
+    for override in overrides:
+        command += ["--set", override]
     start = time.perf_counter()
     completed = subprocess.run(command, capture_output=True, text=True)
     wall = time.perf_counter() - start
     summary_file = folder / "summary.json"
     summary = json.loads(summary_file.read_text()) if summary_file.exists() else None
     error = completed.stderr.strip() if completed.returncode != 0 else ""
-    return {"linkage": linkage, "case": case, "dT": delta_t, "code": completed.returncode,
-            "error": error, "summary": summary, "wall": wall}
+    return {"code": completed.returncode, "error": error, "summary": summary, "wall": wall}
+
+
+def run_case(cli, linkage, case, delta_t, out_root):
+    """Run examples/paper/<linkage>.yaml at ΔT = delta_t into out_root/<linkage>/<case>/."""
+    result = run_model(cli, ROOT / "examples" / "paper" / f"{linkage}.yaml",
+                       pathlib.Path(out_root) / linkage / case, [f"thermal.dT={delta_t:g}"])
+    return {"linkage": linkage, "case": case, "dT": delta_t, **result}
 
 
 def peak(extremes):
+    """Largest magnitude of a summary.json {min, max} entry (NaN when absent)."""
     return max(abs(extremes["min"]), abs(extremes["max"])) if extremes else float("nan")
 
 
@@ -46,6 +58,7 @@ def shape_change(result, results):
 
 
 def print_table(results):
+    """The six runs' peak mechanical strains, torque, shape change, steps and wall time."""
     elements = ("1", "2", "3")
     header = (f"{'linkage':9} {'case':7} {'ΔT °C':>6} "
               + " ".join(f"{'|ε_m| bar ' + e:>13}" for e in elements)
@@ -70,6 +83,7 @@ def print_table(results):
 
 
 def main():
+    """Run the six cases, print the table, draw the figures."""
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--cli", default=str(ROOT / "build" / "release" / "deploydyn"))
     parser.add_argument("--out", default=str(ROOT / "results" / "paper"))
@@ -94,6 +108,8 @@ def main():
         if r["summary"] and shape_change(r, results) > 0.01:
             print(f"note: {r['linkage']}/{r['case']} ends more than 1 cm from the normal case's shape: "
                   "it changed branch (see docs/paper-study.md)")
+    print(file=sys.stderr)
+    plot_paper.plot_paper_set(out_root)
     return 1 if any(r["code"] != 0 for r in results) else 0
 
 

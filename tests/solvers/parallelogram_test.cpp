@@ -23,10 +23,12 @@ namespace {
 // tolerance and the scheme's O(h²) phase error of the rigid motion.
 constexpr double kPositionTolerance_m = 2e-6;
 constexpr double kStrainBound = 1e-6;
-// The example's Newmark (γ = 0.51) damps the step-to-step zigzag that the undamped rule
-// leaves in λ on the index-3 DAE; λ still rings after the start (measured: 1.3 % of the
-// peak torque I·ω̇(0.5 s) ≈ 0.025 N·m at t ≈ 0.06 s, below 0.4 % after 0.2 s).
-constexpr double kTorqueTolerance = 0.02;  // of the peak torque
+// The example's generalized-α (ρ∞ = 0.9) damps the step-to-step zigzag that the undamped rule
+// leaves in λ on the index-3 DAE. What is left is the ringing of the steel bars' axial modes
+// (2–3 kHz, not resolved by h = 1 ms) after the jumps of the driver's jerk at t = 1 and 4 s,
+// which the rigid I·ω̇ ignores: measured 2.4 % of the peak torque I·ω̇(0.5 s) ≈ 0.025 N·m at
+// t ≈ 1.36 s, below 0.9 % before t = 1 s.
+constexpr double kTorqueTolerance = 0.03;  // of the peak torque
 // Quasi-static runs solve f_int + Bᵀλ = 0 to ‖Δq‖ ≤ 1e-12 m: only that is left.
 constexpr double kQuasiStaticPositionTolerance_m = 1e-10;
 constexpr double kFreeStrainTolerance = 1e-10;  // against α ΔT ≈ 3e-3: round-off and Newton

@@ -39,6 +39,13 @@ inline RunResult run(const Model& model) {
   return result;
 }
 
+// Position of node `node` in q (m); z = 0 in 2D models.
+inline Eigen::Vector3d node_position(const Assembler& assembler, const Eigen::VectorXd& q, int node) {
+  Eigen::Vector3d x = Eigen::Vector3d::Zero();
+  for (int axis = 0; axis < assembler.model().dimension; ++axis) x[axis] = q[assembler.dof_map().index(node, axis)];
+  return x;
+}
+
 // Index of the node called `name`; -1 when there is none.
 inline int node_index(const Model& model, const std::string& name) {
   for (int i = 0; i < model.n_nodes(); ++i) {
@@ -86,6 +93,7 @@ class ModelBuilder {
     return model_.n_bars() - 1;
   }
 
+  void point_mass(int node, double mass_kg) { model_.nodes[node].point_mass_kg = mass_kg; }
   void pin(int node) { model_.supports.push_back({node, {true, true, true}}); }
   void support(int node, std::array<bool, 3> fixed_axes) { model_.supports.push_back({node, fixed_axes}); }
   void load(int node, const Eigen::Vector3d& force_N, TimeFunction factor) {

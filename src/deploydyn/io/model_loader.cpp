@@ -416,7 +416,8 @@ class ModelReader {
 
   void read_analysis(const YamlValue& spec) {
     spec.expect_keys(
-        {"type", "end", "step", "output_interval", "load_steps", "mass", "integrator", "newton"});
+        {"type", "end", "step", "output_interval", "load_steps", "mass", "integrator", "newton",
+         "adaptive"});
     AnalysisOptions& analysis = model_.analysis;
     if (const auto type = spec.find("type")) {
       analysis.type = type->choice({"static", "dynamic"}) == 0 ? AnalysisType::quasi_static
@@ -449,6 +450,7 @@ class ModelReader {
     }
     if (const auto integrator = spec.find("integrator")) read_integrator(*integrator);
     if (const auto newton = spec.find("newton")) read_newton(*newton);
+    if (const auto adaptive = spec.find("adaptive")) read_adaptive(*adaptive);
     analysis.output_interval_s = analysis.step_s;
     if (const auto interval = spec.find("output_interval")) read_output_interval(*interval);
   }
@@ -468,9 +470,34 @@ class ModelReader {
   }
 
   void read_integrator(const YamlValue& spec) {
-    spec.expect_keys({"type", "beta", "gamma"});
-    if (const auto type = spec.find("type")) type->choice({"newmark"});
+    spec.expect_keys({"type", "beta", "gamma", "rho_inf"});
     IntegratorOptions& integrator = model_.analysis.integrator;
+    if (const auto type = spec.find("type")) {
+      constexpr IntegratorOptions::Kind kinds[] = {IntegratorOptions::Kind::newmark,
+                                                   IntegratorOptions::Kind::hht,
+                                                   IntegratorOptions::Kind::generalized_alpha};
+      integrator.kind = kinds[type->choice({"newmark", "hht", "generalized_alpha"})];
+    }
+    if (integrator.kind != IntegratorOptions::Kind::newmark) {
+      // These schemes take their β and γ from ρ∞; a given β or γ would be silently ignored.
+      for (const char* key : {"beta", "gamma"}) {
+        if (const auto given = spec.find(key)) {
+          given->fail("applies to type newmark only; hht and generalized_alpha take rho_inf");
+        }
+      }
+      const bool hht = integrator.kind == IntegratorOptions::Kind::hht;
+      const double lowest = hht ? 0.5 : 0.0;  // HHT's α = (1 − ρ∞)/(1 + ρ∞) ≤ ⅓
+      integrator.rho_infinity = spec.number_or("rho_inf", integrator.rho_infinity, Sign::any, "");
+      if (!(integrator.rho_infinity >= lowest && integrator.rho_infinity <= 1.0)) {
+        spec.at("rho_inf").fail(fmt::format("must be in [{}, 1] for {}, got {}", lowest,
+                                            hht ? "hht" : "generalized_alpha",
+                                            integrator.rho_infinity));
+      }
+      return;
+    }
+    if (const auto rho = spec.find("rho_inf")) {
+      rho->fail("applies to hht and generalized_alpha; newmark takes beta and gamma");
+    }
     integrator.beta = spec.number_or("beta", integrator.beta, Sign::any, "");
     if (!(integrator.beta > 0.0 && integrator.beta <= 0.5)) {
       spec.at("beta").fail(fmt::format("must be in (0, 0.5], got {}", integrator.beta));
@@ -478,6 +505,22 @@ class ModelReader {
     integrator.gamma = spec.number_or("gamma", integrator.gamma, Sign::any, "");
     if (integrator.gamma < 0.5) {
       spec.at("gamma").fail(fmt::format("must be at least 0.5, got {}", integrator.gamma));
+    }
+  }
+
+  void read_adaptive(const YamlValue& spec) {
+    spec.expect_keys({"tolerance", "min_step", "max_step"});
+    AdaptiveOptions& adaptive = model_.analysis.adaptive;
+    adaptive.enabled = true;
+    adaptive.tolerance_m = spec.number_or("tolerance", adaptive.tolerance_m, Sign::positive, "m");
+    adaptive.min_step_s = spec.number_or("min_step", adaptive.min_step_s, Sign::positive, "s");
+    adaptive.max_step_s = spec.number_or("max_step", adaptive.max_step_s, Sign::positive, "s");
+    if (adaptive.min_step_s < kMinStep_s) {
+      spec.at("min_step").fail(fmt::format("must be at least {} s, got {}", kMinStep_s, adaptive.min_step_s));
+    }
+    if (adaptive.max_step_s > 0.0 && adaptive.max_step_s < adaptive.min_step_s) {
+      spec.at("max_step").fail(fmt::format("must not be below min_step = {} s, got {}",
+                                           adaptive.min_step_s, adaptive.max_step_s));
     }
   }
 
@@ -537,8 +580,8 @@ std::vector<std::string> split_path(const std::string& path) {
 // analysis.newton.max_iterations=5 works on a file without a newton section. Elsewhere a missing
 // key in the middle of a path is a typo (elements.9.area when there is no element 9).
 bool is_option_section(const std::string& path) {
-  static const std::array<std::string_view, 5> kOptionSections{
-      "analysis", "analysis.integrator", "analysis.newton", "thermal", "output"};
+  static const std::array<std::string_view, 6> kOptionSections{
+      "analysis", "analysis.integrator", "analysis.newton", "analysis.adaptive", "thermal", "output"};
   return std::find(kOptionSections.begin(), kOptionSections.end(), path) != kOptionSections.end();
 }
 

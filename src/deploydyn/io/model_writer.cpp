@@ -233,10 +233,27 @@ void emit_analysis(YAML::Emitter& out, const Model& model) {
   emit_key(out, "integrator");
   out << YAML::Flow << YAML::BeginMap;
   emit_key(out, "type");
-  out << "newmark";
-  emit_number(out, "beta", analysis.integrator.beta);
-  emit_number(out, "gamma", analysis.integrator.gamma);
+  switch (analysis.integrator.kind) {
+    case IntegratorOptions::Kind::newmark:
+      out << "newmark";
+      emit_number(out, "beta", analysis.integrator.beta);
+      emit_number(out, "gamma", analysis.integrator.gamma);
+      break;
+    case IntegratorOptions::Kind::hht:
+    case IntegratorOptions::Kind::generalized_alpha:
+      out << (analysis.integrator.kind == IntegratorOptions::Kind::hht ? "hht" : "generalized_alpha");
+      emit_number(out, "rho_inf", analysis.integrator.rho_infinity);
+      break;
+  }
   out << YAML::EndMap;
+  if (analysis.adaptive.enabled) {
+    emit_key(out, "adaptive");
+    out << YAML::Flow << YAML::BeginMap;
+    emit_number(out, "tolerance", analysis.adaptive.tolerance_m);
+    emit_number(out, "min_step", analysis.adaptive.min_step_s);
+    if (analysis.adaptive.max_step_s > 0.0) emit_number(out, "max_step", analysis.adaptive.max_step_s);
+    out << YAML::EndMap;
+  }
   emit_key(out, "newton");
   out << YAML::Flow << YAML::BeginMap;
   emit_key(out, "max_iterations");

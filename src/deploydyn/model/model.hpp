@@ -86,10 +86,29 @@ struct NewtonOptions {
   double displacement_tolerance_m = 1e-12;  // ‖Δq‖∞ that counts as converged
 };
 
-// Newmark's family; β = ¼, γ = ½ is the paper's trapezoidal rule.
+// Time integrator. All three are members of the generalized-α family in the form of Arnold &
+// Brüls (2007) for constrained systems (solvers/generalized_alpha.hpp):
+//   newmark:            β, γ as given (β = ¼, γ = ½ is the paper's trapezoidal rule)
+//   hht:                Hilber–Hughes–Taylor α from ρ∞ ∈ [½, 1]
+//   generalized_alpha:  Chung–Hulbert parameters from ρ∞ ∈ [0, 1]
+// ρ∞ is the spectral radius at infinite frequency: 1 keeps every mode, 0 damps the highest
+// at once; ρ∞ = 1 recovers the trapezoidal rule.
 struct IntegratorOptions {
-  double beta = 0.25;
-  double gamma = 0.5;
+  enum class Kind { newmark, hht, generalized_alpha };
+  Kind kind = Kind::newmark;
+  double beta = 0.25;         // newmark only
+  double gamma = 0.5;         // newmark only
+  double rho_infinity = 1.0;  // hht and generalized_alpha
+};
+
+// Adaptive time stepping (dynamic runs): the step grows and shrinks to keep the local error
+// estimate of the integrator below `tolerance_m`, and is cut when Newton fails. Steps always
+// land on the output times.
+struct AdaptiveOptions {
+  bool enabled = false;
+  double tolerance_m = 1e-6;  // local error in the coordinates per step (m)
+  double min_step_s = 1e-9;   // give up below this step
+  double max_step_s = 0.0;    // 0: the output interval
 };
 
 struct AnalysisOptions {
@@ -100,6 +119,7 @@ struct AnalysisOptions {
   int load_steps = 1;              // initial thermal equilibrium: ΔT applied in this many parts
   NewtonOptions newton;
   IntegratorOptions integrator;
+  AdaptiveOptions adaptive;
   MassMatrixKind mass = MassMatrixKind::consistent;
 };
 

@@ -6,7 +6,8 @@
 #include <cmath>
 
 #include "deploydyn/assembly/dense_linear_system.hpp"
-#include "deploydyn/solvers/newmark.hpp"
+#include "deploydyn/solvers/consistent_rates.hpp"
+#include "deploydyn/solvers/generalized_alpha.hpp"
 #include "deploydyn/solvers/static_solver.hpp"
 
 namespace deploydyn {
@@ -87,6 +88,7 @@ RunReport run_analysis(const Assembler& assembler, RecordSink& sink, const RunCo
   state.q = assembler.initial_coordinates();
   state.v = Eigen::VectorXd::Zero(assembler.n_dofs());
   state.a = Eigen::VectorXd::Zero(assembler.n_dofs());
+  state.pseudo_a = state.a;
   state.lambda = Eigen::VectorXd::Zero(assembler.n_equations());
 
   const StaticResult initial =
@@ -117,7 +119,7 @@ RunReport run_analysis(const Assembler& assembler, RecordSink& sink, const RunCo
   const auto n_steps = static_cast<long>(std::llround(options.end_time_s / h));
   const double output_interval = options.output_interval_s > 0.0 ? options.output_interval_s : h;
   const long output_every = std::max(1L, std::lround(output_interval / h));
-  const NewmarkIntegrator newmark(assembler, options);
+  const GeneralizedAlphaIntegrator integrator(assembler, options);
 
   for (long n = 1; n <= n_steps; ++n) {
     if (control.stop != nullptr && control.stop->load()) {
@@ -130,7 +132,7 @@ RunReport run_analysis(const Assembler& assembler, RecordSink& sink, const RunCo
     const double step = static_cast<double>(n) * h - state.time_s;
     NewtonResult newton;
     if (dynamic) {
-      newton = newmark.step(step, system, state);
+      newton = integrator.step(step, system, state);
     } else {
       MotionState next = state;
       const StaticResult r = solve_static(

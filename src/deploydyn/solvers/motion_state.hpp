@@ -10,6 +10,7 @@ struct MotionState {
   Eigen::VectorXd q;       // nodal coordinates (m)
   Eigen::VectorXd v;       // q̇ (m/s)
   Eigen::VectorXd a;       // q̈ (m/s²)
+  Eigen::VectorXd pseudo_a;  // generalized-α's pseudo-acceleration (= q̈ for Newmark)
   Eigen::VectorXd lambda;  // multipliers: constraint forces are −Bᵀλ
 };
 

@@ -1,0 +1,247 @@
+#!/usr/bin/python3
+"""Plots of deploydyn results: any history.csv columns of one or more runs, and the paper's figures.
+
+`plot_columns` draws chosen columns of one or more result folders, one panel per `Panel`.
+`plot_paper_set` draws, from the six runs of scripts/paper_demo.py (results/paper/<linkage>/
+<case>/), the counterparts of Cai et al. (2017) Figs. 3-5 and the driver torque:
+
+    fig3_parallel_normal.png    element strains and nodal coordinates, parallel linkage, ΔT = 0
+    fig4_general_normal.png     the same for the general linkage
+    fig5a_parallel_element2.png strain of element 2 (total and mechanical), three ΔT cases
+    fig5b_general_element2.png  the same for the general linkage
+    torque_parallel.png         driver torque, three ΔT cases (not in the paper)
+    torque_general.png
+
+A run whose summary.json is missing or not `completed` is skipped with a message, and so is a
+figure left without runs.
+
+    /usr/bin/python3 scripts/plot_paper.py                      # the paper's set from results/paper
+    /usr/bin/python3 scripts/plot_paper.py columns --run hot=results/paper/general/hot \\
+        --run cold=results/paper/general/cold --column mstrain.2 --scale 1e6 \\
+        --ylabel "mechanical strain (µε)" --out coupler.png
+"""
+import argparse
+import dataclasses
+import json
+import pathlib
+import sys
+import textwrap
+from typing import Callable, Optional
+
+import matplotlib
+
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt  # noqa: E402  (after choosing the backend)
+import numpy as np  # noqa: E402
+
+ROOT = pathlib.Path(__file__).resolve().parent.parent
+ALPHA = 2.0e-5                                                    # 1/°C, paper §3
+CASES = (("hot", 130.0), ("normal", 0.0), ("cold", -170.0))      # paper Eq. (22)
+CASE_COLOURS = {"hot": "tab:red", "normal": "black", "cold": "tab:blue"}
+MICRO = 1e6                                                       # strain -> µε
+LINKAGE_TITLES = {
+    "parallel": "parallel four-bar linkage (ground A–D 0.357 m, posts from γ = 5°, bar 3 driven about D)",
+    "general": "general four-bar linkage (assumed: ground A–D 0.8 m, crank from 60°; bar 1 driven about A)",
+}
+DRIVER_NOTE = "Eq. 23 ω read as angular velocity (1.46 rad), direction-only driver, ground not expanding"
+
+
+@dataclasses.dataclass
+class Run:
+    """One result folder to plot. `derive(data)` may add computed columns to its history."""
+    label: str
+    folder: pathlib.Path
+    colour: Optional[str] = None
+    linestyle: Optional[str] = None
+    derive: Optional[Callable[[dict], None]] = None
+
+
+@dataclasses.dataclass
+class Panel:
+    """One set of axes: `columns` as names or (name, legend label[, colour, line style]);
+    values times `scale`.
+
+    runs: labels of the runs to show here (default all); yscale: "linear" or "symlog" (with
+    linthresh); hlines: (value, label) reference lines; note: the legend's title;
+    minus: label of a run whose values (same output times) are subtracted from every run's.
+    """
+    columns: list
+    ylabel: str
+    scale: float = 1.0
+    runs: Optional[list] = None
+    yscale: str = "linear"
+    linthresh: float = 1.0
+    hlines: list = dataclasses.field(default_factory=list)
+    note: str = ""
+    minus: Optional[str] = None
+
+
+def load_run(run):
+    """history.csv of a completed run as {column: array}, or None (with a message) otherwise."""
+    summary_file = pathlib.Path(run.folder) / "summary.json"
+    history_file = pathlib.Path(run.folder) / "history.csv"
+    if not summary_file.exists() or not history_file.exists():
+        print(f"plot: skipping {run.folder}: no result (summary.json or history.csv missing)",
+              file=sys.stderr)
+        return None
+    status = json.loads(summary_file.read_text()).get("status")
+    if status != "completed":
+        print(f"plot: skipping {run.folder}: run {status}", file=sys.stderr)
+        return None
+    table = np.genfromtxt(history_file, delimiter=",", names=True, deletechars="")
+    data = {name: np.asarray(table[name]) for name in table.dtype.names}
+    if run.derive:
+        run.derive(data)
+    return data
+
+
+def _draw_panel(ax, panel, runs, data):
+    """Draw one panel: colour by column for one run, else by run (line style by column)."""
+    shown = [r for r in runs if panel.runs is None or r.label in panel.runs]
+    columns = [(c if isinstance(c, tuple) else (c, c)) + (None, None) for c in panel.columns]
+    column_styles = ["-", "--", ":", "-."]
+    for i, run in enumerate(shown):
+        for j, (name, label, colour, style, *_) in enumerate(columns):
+            if name not in data[run.label]:
+                print(f"plot: {run.folder} has no column {name}", file=sys.stderr)
+                continue
+            if len(shown) == 1:
+                colour = colour or f"C{j}"
+                style = style or run.linestyle or column_styles[j % len(column_styles)]
+                text = label
+            else:
+                colour = run.colour or f"C{i}"
+                style = run.linestyle or column_styles[j % len(column_styles)]
+                text = run.label if len(columns) == 1 else f"{run.label}: {label}"
+            values = data[run.label][name]
+            if panel.minus:
+                if panel.minus not in data:
+                    print(f"plot: no run {panel.minus} to subtract; panel left out", file=sys.stderr)
+                    return
+                values = values - data[panel.minus][name]
+            ax.plot(data[run.label]["t"], values * panel.scale,
+                    color=colour, linestyle=style, linewidth=1.6, label=text)
+    for value, label in panel.hlines:
+        ax.axhline(value, color="grey", linestyle=":", linewidth=1.0)
+        below = value > 0        # keep the label off the curve that settles on the line
+        ax.annotate(label, (1.0, value), xycoords=("axes fraction", "data"),
+                    xytext=(-4, -4 if below else 4), textcoords="offset points", ha="right",
+                    va="top" if below else "bottom", fontsize=8, color="dimgrey")
+    if panel.yscale == "symlog":
+        ax.set_yscale("symlog", linthresh=panel.linthresh)
+    ax.set_ylabel(panel.ylabel)
+    ax.grid(True, alpha=0.3)
+    ax.legend(fontsize=8, loc="best", framealpha=0.85, title=panel.note or None,
+              title_fontsize=8)
+
+
+def plot_columns(out_png, runs, panels, title, ncols=1, xlabel="time t (s)"):
+    """Plot history columns of `runs` (list of Run) in `panels` (list of Panel) into out_png.
+
+    Panels are laid out in `ncols` columns. Runs that cannot be loaded are skipped with a
+    message; returns the path written, or None when no run could be loaded.
+    """
+    data = {run.label: load_run(run) for run in runs}
+    runs = [run for run in runs if data[run.label] is not None]
+    if not runs:
+        print(f"plot: no result for {pathlib.Path(out_png).name}, not drawn", file=sys.stderr)
+        return None
+    nrows = -(-len(panels) // ncols)
+    fig, axes = plt.subplots(nrows, ncols, figsize=(9.0 * ncols, 3.0 * nrows + 1.0),
+                             sharex=True, squeeze=False)
+    for ax, panel in zip(axes.flat, panels):
+        _draw_panel(ax, panel, runs, data)
+    for ax in axes.flat[len(panels):]:
+        ax.set_visible(False)
+    for ax in axes[-1]:
+        ax.set_xlabel(xlabel)
+    fig.suptitle("\n".join(textwrap.fill(line, 110) for line in title.splitlines()), fontsize=10.5)
+    fig.tight_layout()
+    pathlib.Path(out_png).parent.mkdir(parents=True, exist_ok=True)
+    fig.savefig(out_png, dpi=110)
+    plt.close(fig)
+    print(f"plot: wrote {out_png}", file=sys.stderr)
+    return pathlib.Path(out_png)
+
+
+def case_runs(results, linkage, cases=CASES):
+    """The three temperature cases of a linkage as Runs, coloured hot red, normal black, cold blue."""
+    return [Run(f"{case} (ΔT = {dT:+g} °C)", pathlib.Path(results) / linkage / case,
+                colour=CASE_COLOURS[case]) for case, dT in cases]
+
+
+def thermal_lines(cases=CASES):
+    """Reference lines at the free thermal strain αΔT (µε) of each case."""
+    return [(ALPHA * dT * MICRO, f"αΔT = {ALPHA * dT * MICRO:+.0f} µε") for _, dT in cases if dT]
+
+
+def plot_paper_set(results):
+    """Draw the paper's Figs. 3-5 and the driver torques from results/<linkage>/<case>/."""
+    results = pathlib.Path(results)
+    strains = [(f"strain.{e}", f"element {e}") for e in "123"]
+    coordinates = [("x.B", "x of B", "C0", "-"), ("y.B", "y of B", "C0", "--"),
+                   ("x.C", "x of C", "C3", "-"), ("y.C", "y of C", "C3", "--")]
+    written = []
+    for linkage, fig in (("parallel", "fig3"), ("general", "fig4")):
+        normal = [Run("normal", results / linkage / "normal")]
+        panels = [Panel(strains, "total strain ε (µε)", MICRO),
+                  Panel(coordinates, "nodal coordinate (m)",
+                        note="y of B = y of C (a parallelogram)" if linkage == "parallel" else "")]
+        if linkage == "general":       # bars 1 and 3 are 60-150 times stiffer than the coupler
+            panels.insert(1, Panel(strains[0::2], "total strain ε (µε)", MICRO,
+                                   note="elements 1 and 3 only (zoom)"))
+        written.append(plot_columns(
+            results / f"{fig}_{linkage}_normal.png", normal, panels,
+            f"Fig. {fig[-1]} counterpart: {LINKAGE_TITLES[linkage]}\nΔT = 0; {DRIVER_NOTE}"))
+
+    for linkage, fig in (("parallel", "fig5a"), ("general", "fig5b")):
+        runs = case_runs(results, linkage)
+        panels = [Panel(["strain.2"], "element 2: total strain ε (µε)", MICRO,
+                        hlines=thermal_lines()),
+                  Panel(["mstrain.2"], "element 2: mechanical strain ε − αΔT (µε)", MICRO)]
+        torque = [Panel(["torque.motor"], "driver torque (N·m)")]
+        hot, normal, cold = (r.label for r in runs)
+        if linkage == "general":       # the three cases overlap: show what ΔT changes
+            panels.append(Panel(["mstrain.2"], "element 2: ε_m − ε_m(normal) (µε)", MICRO,
+                                runs=[hot, cold], minus=normal,
+                                note="difference from the normal case"))
+        if linkage == "parallel":      # the jammed cold case is 10⁴ times larger: zoom on the others
+            warm = [r.label for r in runs if not r.label.startswith("cold")]
+            panels.append(Panel(["mstrain.2"], "element 2: mechanical strain (µε)", MICRO,
+                                runs=warm, note="hot and normal only (zoom)"))
+            torque.append(Panel(["torque.motor"], "driver torque (N·m)", runs=warm,
+                                note="hot and normal only (zoom)"))
+        written.append(plot_columns(
+            results / f"{fig}_{linkage}_element2.png", runs, panels,
+            f"Fig. {fig[-2:]} counterpart: element 2 (B–C), {LINKAGE_TITLES[linkage]}\n{DRIVER_NOTE}"))
+        written.append(plot_columns(
+            results / f"torque_{linkage}.png", runs, torque,
+            f"Driver torque (not in the paper): {LINKAGE_TITLES[linkage]}\n{DRIVER_NOTE}"))
+    return [w for w in written if w]
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    sub = parser.add_subparsers(dest="command")
+    paper = sub.add_parser("paper", help="the paper's figures (default)")
+    paper.add_argument("--results", default=str(ROOT / "results" / "paper"))
+    columns = sub.add_parser("columns", help="chosen columns of chosen runs, one panel")
+    columns.add_argument("--run", action="append", required=True, metavar="LABEL=FOLDER")
+    columns.add_argument("--column", action="append", required=True)
+    columns.add_argument("--scale", type=float, default=1.0)
+    columns.add_argument("--ylabel", default="value")
+    columns.add_argument("--title", default="")
+    columns.add_argument("--out", required=True)
+    args = parser.parse_args()
+    if args.command == "columns":
+        runs = [Run(*spec.split("=", 1)) for spec in args.run]
+        for run in runs:
+            run.folder = pathlib.Path(run.folder)
+        done = plot_columns(args.out, runs, [Panel(args.column, args.ylabel, args.scale)], args.title)
+        return 0 if done else 1
+    plot_paper_set(getattr(args, "results", ROOT / "results" / "paper"))
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())

@@ -1,0 +1,52 @@
+#pragma once
+// Generalized-α for constrained mechanical systems (Arnold & Brüls, Multibody Syst. Dyn. 18,
+// 2007; Chung & Hulbert, J. Appl. Mech. 60, 1993), which contains Newmark (1959) and
+// Hilber–Hughes–Taylor. On the index-3 DAE
+//   M q̈ + f_int(q, t) + Bᵀλ = f_ext(t),   Φ(q, t) = 0,
+// equilibrium and constraints hold at t_{n+1}; a pseudo-acceleration a carries the update:
+//   q_{n+1} = q_n + h q̇_n + h² (½ − β) a_n + h² β a_{n+1}
+//   q̇_{n+1} = q̇_n + h (1 − γ) a_n + h γ a_{n+1}
+//   (1 − α_m) a_{n+1} + α_m a_n = (1 − α_f) q̈_{n+1} + α_f q̈_n
+// Parameters (IntegratorOptions):
+//   newmark            α_m = α_f = 0, β and γ given (a = q̈)
+//   hht                α_m = 0, α_f = α = (1 − ρ∞)/(1 + ρ∞), γ = ½ + α, β = ¼ (1 + α)²
+//   generalized_alpha  α_m = (2ρ∞ − 1)/(ρ∞ + 1), α_f = ρ∞/(ρ∞ + 1), γ = ½ + α_f − α_m,
+//                      β = ¼ (γ + ½)²
+// With ρ∞ = 1 the last two are the trapezoidal rule. Newton runs on q_{n+1} with
+//   ∂q̈_{n+1}/∂q_{n+1} = c = (1 − α_m) / ((1 − α_f) β h²)
+// and the iteration matrix [c M + K + H(λ), c Bᵀ; c B, 0]: constraint rows and λ scaled by c
+// (DESIGN §2) so that the matrix stays well conditioned as h → 0.
+
+#include "deploydyn/assembly/assembler.hpp"
+#include "deploydyn/solvers/motion_state.hpp"
+#include "deploydyn/solvers/newton.hpp"
+
+namespace deploydyn {
+
+struct GeneralizedAlphaCoefficients {
+  double alpha_m = 0.0, alpha_f = 0.0, beta = 0.25, gamma = 0.5;
+
+  static GeneralizedAlphaCoefficients from(const IntegratorOptions& options);
+};
+
+class GeneralizedAlphaIntegrator {
+ public:
+  GeneralizedAlphaIntegrator(const Assembler& assembler, const AnalysisOptions& options);
+
+  // Advances `state` by h. On failure `state` is left at the start of the step.
+  NewtonResult step(double h, LinearSystem& system, MotionState& state) const;
+
+  // Estimate of the local error in q of the step that led to `state` from `before`:
+  // ‖h² (β − 1/6) (a_{n+1} − a_n)‖∞ (m), the gap to a third-order Taylor step
+  // (Zienkiewicz & Xie, Earthq. Eng. Struct. Dyn. 20, 1991).
+  double local_error(double h, const MotionState& before, const MotionState& after) const;
+
+  const GeneralizedAlphaCoefficients& coefficients() const { return coefficients_; }
+
+ private:
+  const Assembler& assembler_;
+  const AnalysisOptions& options_;
+  GeneralizedAlphaCoefficients coefficients_;
+};
+
+}  // namespace deploydyn
