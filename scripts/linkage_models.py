@@ -7,6 +7,7 @@ reproduced exactly by `linkage(...)` with the default arguments (checked by `che
 """
 import math
 import pathlib
+import sys
 
 import numpy as np
 
@@ -162,4 +163,4 @@ def write(path, text):
     """Write a model file, creating its folder, and say so."""
     path.parent.mkdir(parents=True, exist_ok=True)
     path.write_text(text)
-    print(f"wrote {path.relative_to(ROOT)}")
+    print(f"wrote {path.relative_to(ROOT)}", file=sys.stderr)

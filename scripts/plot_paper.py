@@ -147,7 +147,8 @@ def plot_columns(out_png, runs, panels, title, ncols=1, xlabel="time t (s)"):
         print(f"plot: no result for {pathlib.Path(out_png).name}, not drawn", file=sys.stderr)
         return None
     nrows = -(-len(panels) // ncols)
-    fig, axes = plt.subplots(nrows, ncols, figsize=(9.0 * ncols, 3.0 * nrows + 1.0),
+    width = 9.0 if ncols == 1 else 7.0 * ncols
+    fig, axes = plt.subplots(nrows, ncols, figsize=(width, 3.0 * nrows + 1.0),
                              sharex=True, squeeze=False)
     for ax, panel in zip(axes.flat, panels):
         _draw_panel(ax, panel, runs, data)
@@ -155,7 +156,8 @@ def plot_columns(out_png, runs, panels, title, ncols=1, xlabel="time t (s)"):
         ax.set_visible(False)
     for ax in axes[-1]:
         ax.set_xlabel(xlabel)
-    fig.suptitle("\n".join(textwrap.fill(line, 110) for line in title.splitlines()), fontsize=10.5)
+    fig.suptitle("\n".join(textwrap.fill(line, int(12 * width)) for line in title.splitlines()),
+                 fontsize=10.5)
     fig.tight_layout()
     pathlib.Path(out_png).parent.mkdir(parents=True, exist_ok=True)
     fig.savefig(out_png, dpi=110)
@@ -178,7 +180,8 @@ def thermal_lines(cases=CASES):
 def plot_paper_set(results):
     """Draw the paper's Figs. 3-5 and the driver torques from results/<linkage>/<case>/."""
     results = pathlib.Path(results)
-    strains = [(f"strain.{e}", f"element {e}") for e in "123"]
+    strains = [(f"strain.{e}", f"element {e}", f"C{i}", style)
+               for i, (e, style) in enumerate(zip("123", ("-", "--", ":")))]
     coordinates = [("x.B", "x of B", "C0", "-"), ("y.B", "y of B", "C0", "--"),
                    ("x.C", "x of C", "C3", "-"), ("y.C", "y of C", "C3", "--")]
     written = []

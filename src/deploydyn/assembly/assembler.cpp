@@ -268,6 +268,12 @@ double Assembler::stiffness_scale(const Eigen::VectorXd& q, double t) const {
   return scale > 0.0 ? scale : 1.0;
 }
 
+double Assembler::mass_scale() const {
+  Eigen::VectorXd unit = Eigen::VectorXd::Ones(n_dofs()), diagonal_bound;
+  mass_times(unit, diagonal_bound);  // row sums of M ≥ its diagonal, all entries being ≥ 0
+  return diagonal_bound.size() > 0 && diagonal_bound.maxCoeff() > 0.0 ? diagonal_bound.maxCoeff() : 1.0;
+}
+
 BarResult Assembler::bar_result(int b, const Eigen::VectorXd& q, double t) const {
   BarResult result;
   with_dimension(model_.dimension, [&](auto dim) {

@@ -62,8 +62,10 @@ class Assembler {
   void iteration_matrix(const Eigen::VectorXd& q, double t, double thermal_factor,
                         const Eigen::VectorXd& lambda, const MatrixWeights& weights,
                         LinearSystem& system) const;
-  // Largest diagonal entry of K at q: a stiffness scale for the static constraint rows.
+  // Largest diagonal entries of K at q and of M: the scales that size the constraint rows of
+  // the iteration matrix like its force block.
   double stiffness_scale(const Eigen::VectorXd& q, double t) const;
+  double mass_scale() const;
 
   BarResult bar_result(int bar, const Eigen::VectorXd& q, double t) const;
   double strain_energy(const Eigen::VectorXd& q, double t) const;

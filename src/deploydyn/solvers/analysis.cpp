@@ -9,6 +9,7 @@
 #include "deploydyn/solvers/consistent_rates.hpp"
 #include "deploydyn/solvers/generalized_alpha.hpp"
 #include "deploydyn/solvers/static_solver.hpp"
+#include "deploydyn/solvers/step_controller.hpp"
 
 namespace deploydyn {
 namespace {
@@ -115,42 +116,51 @@ RunReport run_analysis(const Assembler& assembler, RecordSink& sink, const RunCo
   work.start(state);
   sink.record(make_step_record(assembler, state, 0.0));
 
-  const double h = options.step_s;
-  const auto n_steps = static_cast<long>(std::llround(options.end_time_s / h));
-  const double output_interval = options.output_interval_s > 0.0 ? options.output_interval_s : h;
-  const long output_every = std::max(1L, std::lround(output_interval / h));
   const GeneralizedAlphaIntegrator integrator(assembler, options);
-
-  for (long n = 1; n <= n_steps; ++n) {
+  StepController steps(options);
+  while (state.time_s < options.end_time_s) {
     if (control.stop != nullptr && control.stop->load()) {
       report.status = RunStatus::interrupted;
       report.message = fmt::format("interrupted at t = {:.6g} s", state.time_s);
       return finish(report);
     }
-    const Eigen::VectorXd q_before = state.q;
-    // Times are n·h, not a running sum, so that the last step lands on end_time exactly.
-    const double step = static_cast<double>(n) * h - state.time_s;
+    const double step = steps.next_step(state.time_s);
+    MotionState next = state;
     NewtonResult newton;
     if (dynamic) {
-      newton = integrator.step(step, system, state);
+      newton = integrator.step(step, system, next);
     } else {
-      MotionState next = state;
       const StaticResult r = solve_static(
           assembler, options, LoadPath::time_step(state.time_s, state.time_s + step), 1, system, next);
       newton = r.newton;
-      newton.iterations = r.total_iterations;
-      if (r.path_factor >= 1.0) state = std::move(next);  // q̇ stays 0: inertia is ignored
+      newton.iterations = r.total_iterations;  // q̇ stays 0: inertia is ignored
     }
     report.newton_iterations += newton.iterations;
     report.max_iterations_per_step = std::max(report.max_iterations_per_step, newton.iterations);
     if (!newton.converged) {
-      return fail(describe_failure(assembler, "time step", state.time_s + step, static_cast<int>(n),
-                                   newton));
+      if (steps.cut_after_failure(step)) {
+        ++report.rejected_steps;
+        continue;
+      }
+      return fail(describe_failure(assembler, "time step", state.time_s + step, report.steps + 1, newton));
     }
-    report.steps = static_cast<int>(n);
+    const double error_m = dynamic ? integrator.local_error(step, state, next) : 0.0;
+    if (!steps.accept(step, error_m)) {
+      ++report.rejected_steps;
+      continue;
+    }
+    const Eigen::VectorXd q_before = std::move(state.q);
+    state = std::move(next);
+    ++report.steps;
+    if (steps.reached_output(state.time_s)) {
+      state.time_s = steps.next_output_time();  // exactly, not up to round-off
+      work.advance(q_before, state);
+      sink.record(make_step_record(assembler, state, work.work_J()));
+      steps.output_written();
+    } else {
+      work.advance(q_before, state);
+    }
     report.time_reached_s = state.time_s;
-    work.advance(q_before, state);
-    if (n % output_every == 0 || n == n_steps) sink.record(make_step_record(assembler, state, work.work_J()));
     if (control.progress) control.progress(state.time_s);
   }
   report.message = fmt::format("completed: {} steps to t = {:.6g} s", report.steps, report.time_reached_s);

@@ -12,7 +12,9 @@ class GeneralizedAlphaEquations final : public DiscreteEquations {
       : assembler_(assembler),
         t_(start.time_s + h),
         c_pseudo_(1.0 / (c.beta * h * h)),
-        c_true_((1.0 - c.alpha_m) / (1.0 - c.alpha_f) * c_pseudo_) {
+        c_true_((1.0 - c.alpha_m) / (1.0 - c.alpha_f) * c_pseudo_),
+        // c·M dominates as h → 0 (DESIGN §2's 1/(β h²) scaling); K when h is large.
+        constraint_scale_(c_true_ * assembler.mass_scale() + assembler.stiffness_scale(start.q, start.time_s)) {
     predicted_ = start.q + h * start.v + (h * h * (0.5 - c.beta)) * start.pseudo_a;
     // q̈_{n+1} = c_true (q − q̃) + history, from the α recurrence.
     history_ = (c.alpha_m * start.pseudo_a - c.alpha_f * start.a) / (1.0 - c.alpha_f);
@@ -38,15 +40,16 @@ class GeneralizedAlphaEquations final : public DiscreteEquations {
   }
   void matrix(const Eigen::VectorXd& q, const Eigen::VectorXd& lambda,
               LinearSystem& system) override {
-    assembler_.iteration_matrix(q, t_, 1.0, lambda, {c_true_, 1.0, c_true_}, system);
+    assembler_.iteration_matrix(q, t_, 1.0, lambda, {c_true_, 1.0, constraint_scale_}, system);
   }
-  double constraint_scale() const override { return c_true_; }
+  double constraint_scale() const override { return constraint_scale_; }
 
  private:
   const Assembler& assembler_;
   double t_;
   double c_pseudo_;  // ∂a_{n+1}/∂q = 1/(β h²)
   double c_true_;    // ∂q̈_{n+1}/∂q
+  double constraint_scale_;  // s (N/m): the size of the force block's diagonal
   Eigen::VectorXd predicted_, history_, external_, inertia_, internal_, reaction_;
 };
 

@@ -14,8 +14,9 @@
 //                      β = ¼ (γ + ½)²
 // With ρ∞ = 1 the last two are the trapezoidal rule. Newton runs on q_{n+1} with
 //   ∂q̈_{n+1}/∂q_{n+1} = c = (1 − α_m) / ((1 − α_f) β h²)
-// and the iteration matrix [c M + K + H(λ), c Bᵀ; c B, 0]: constraint rows and λ scaled by c
-// (DESIGN §2) so that the matrix stays well conditioned as h → 0.
+// and the iteration matrix [c M + K + H(λ), s Bᵀ; s B, 0]. Constraint rows and λ are scaled by
+// s = c·max diag M + max diag K so that they match the force block: as h → 0 this is DESIGN
+// §2's 1/(β h²) scaling (times a mass), and it stays balanced for large steps too.
 
 #include "deploydyn/assembly/assembler.hpp"
 #include "deploydyn/solvers/motion_state.hpp"

@@ -1,0 +1,67 @@
+#include "deploydyn/solvers/step_controller.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace deploydyn {
+namespace {
+
+constexpr double kSafety = 0.9;
+constexpr double kSmallestFactor = 0.2;
+constexpr double kLargestFactor = 2.0;
+constexpr double kGrowthThreshold = 1.5;
+// A remainder to the output time below this share of a step is taken with the step rather
+// than left as a sliver of a step.
+constexpr double kSliver = 1e-6;
+
+}  // namespace
+
+StepController::StepController(const AnalysisOptions& options)
+    : adaptive_(options.adaptive.enabled && options.type == AnalysisType::dynamic),
+      tolerance_m_(options.adaptive.tolerance_m),
+      min_step_s_(options.adaptive.min_step_s),
+      end_s_(options.end_time_s),
+      output_interval_s_(options.output_interval_s > 0.0 ? options.output_interval_s : options.step_s),
+      step_s_(options.step_s) {
+  max_step_s_ = options.adaptive.max_step_s > 0.0 ? options.adaptive.max_step_s : output_interval_s_;
+  next_output_s_ = std::min(end_s_, output_interval_s_);
+}
+
+double StepController::next_step(double t) const {
+  const double remaining = next_output_s_ - t;
+  return remaining <= step_s_ * (1.0 + kSliver) ? remaining : step_s_;
+}
+
+bool StepController::reached_output(double t) const {
+  return t >= next_output_s_ - kSliver * step_s_;
+}
+
+void StepController::output_written() {
+  ++outputs_written_;
+  // Output times are multiples of the interval, not a running sum, so they do not drift.
+  next_output_s_ = std::min(end_s_, (outputs_written_ + 1) * output_interval_s_);
+}
+
+bool StepController::cut_after_failure(double tried_step) {
+  if (!adaptive_ || tried_step * 0.5 < min_step_s_) return false;
+  step_s_ = tried_step * 0.5;
+  return true;
+}
+
+bool StepController::accept(double tried_step, double error_m) {
+  if (!adaptive_) return true;
+  const double factor = error_m > 0.0 ? std::clamp(kSafety * std::cbrt(tolerance_m_ / error_m),
+                                                   kSmallestFactor, kLargestFactor)
+                                      : kLargestFactor;
+  const bool keep = error_m <= tolerance_m_ || tried_step <= min_step_s_;
+  // A step shortened to land on an output time tells how small the step must be, not how large
+  // it may grow: then only shrink.
+  const bool shortened = tried_step < step_s_ * (1.0 - kSliver);
+  // Every change of h disturbs the multipliers of an index-3 scheme, so an accepted step only
+  // changes h when it can grow by half or more.
+  const bool change = !keep || (!shortened && factor >= kGrowthThreshold) || (shortened && factor < 1.0);
+  if (change) step_s_ = std::clamp(tried_step * factor, min_step_s_, max_step_s_);
+  return keep;
+}
+
+}  // namespace deploydyn

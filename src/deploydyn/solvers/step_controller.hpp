@@ -1,0 +1,39 @@
+#pragma once
+// Chooses the time steps of a run. Fixed: the model's step, every step accepted. Adaptive:
+// after each converged step the local error estimate e (m) is compared with the tolerance;
+// the step is rejected when e > tolerance, and the next one is scaled by
+//   factor = 0.9 (tolerance / e)^(1/3),  limited to [0.2, 2],
+// since the local error of a second-order scheme grows like h³ (Hairer, Nørsett & Wanner,
+// Solving ODEs I, §II.4). A Newton failure halves the step. Steps never go below min_step
+// nor above max_step, and are shortened to land exactly on the output times.
+
+#include "deploydyn/model/model.hpp"
+
+namespace deploydyn {
+
+class StepController {
+ public:
+  explicit StepController(const AnalysisOptions& options);
+
+  // The step to take from time t (s).
+  double next_step(double t) const;
+  // The output time the run is heading for; t at or past it means "write a record".
+  double next_output_time() const { return next_output_s_; }
+  bool reached_output(double t) const;
+  void output_written();
+
+  // After a Newton failure: true with a halved step when cutting is allowed and possible.
+  bool cut_after_failure(double tried_step);
+  // After a converged step: whether to keep it (always, when not adaptive); sets the next step.
+  bool accept(double tried_step, double error_m);
+
+ private:
+  bool adaptive_;
+  double tolerance_m_, min_step_s_, max_step_s_;
+  double end_s_, output_interval_s_;
+  double step_s_;
+  double next_output_s_;
+  int outputs_written_ = 0;
+};
+
+}  // namespace deploydyn
