@@ -105,8 +105,7 @@ int check_command(const std::string& model_file, const std::vector<std::string>&
     for (const auto& item : items) out.push_back(item.name);
     return fmt::format("{}", fmt::join(out, ", "));
   };
-  // Grübler count with bars taken as rigid: each bar removes one degree of freedom.
-  const int free_motion = assembler.n_dofs() - support_rows - model.n_bars();
+  const int free_motion = assembler.rigid_mobility() + driver_rows;  // before the drivers
   const AnalysisOptions& a = model.analysis;
 
   fmt::print("model       {} ({})\n", model.name.empty() ? "(unnamed)" : model.name, model_file);

@@ -37,6 +37,9 @@ class Assembler {
   int n_dofs() const { return dofs_.n_dofs(); }
   int n_equations() const { return n_equations_; }  // constraint rows
   int n_unknowns() const { return n_dofs() + n_equations(); }
+  // Grübler count with the bars taken as rigid: coordinates − constraint equations − bars.
+  // Positive: a mechanism with free motions; 0: driven and determinate; negative: redundant.
+  int rigid_mobility() const { return n_dofs() - n_equations() - model_.n_bars(); }
 
   Eigen::VectorXd initial_coordinates() const;
 

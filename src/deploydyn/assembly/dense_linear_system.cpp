@@ -1,5 +1,7 @@
 #include "deploydyn/assembly/dense_linear_system.hpp"
 
+#include <Eigen/SVD>
+#include <algorithm>
 #include <cmath>
 #include <fmt/format.h>
 
@@ -38,13 +40,20 @@ FactorizationStatus DenseLinearSystem::factorize() {
     return status;
   }
   lu_.compute(matrix_);
-  status.reciprocal_condition = lu_.rcond();
+  // Eigen's estimate can miss an exactly zero pivot (it reported 0.28 for a matrix with a zero
+  // row), so the smallest pivot relative to the largest bounds it as well.
+  const Eigen::VectorXd pivots = lu_.matrixLU().diagonal().cwiseAbs();
+  const double pivot_ratio = pivots.size() > 0 ? pivots.minCoeff() / pivots.maxCoeff() : 1.0;
+  status.reciprocal_condition = std::min(lu_.rcond(), pivot_ratio);
   if (!(status.reciprocal_condition > kSingularReciprocalCondition)) {
     status.ok = false;
     status.message = fmt::format(
         "the iteration matrix is singular (reciprocal condition {:.2e}): a free mechanism "
         "motion, or redundant or conflicting constraints",
         status.reciprocal_condition);
+    // The right singular vector of the smallest singular value spans the (near) null space.
+    const Eigen::BDCSVD<Eigen::MatrixXd> svd(matrix_, Eigen::ComputeFullV);
+    status.null_vector = svd.matrixV().col(svd.matrixV().cols() - 1);
   }
   return status;
 }

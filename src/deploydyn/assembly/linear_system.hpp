@@ -17,6 +17,9 @@ struct FactorizationStatus {
   bool ok = true;
   double reciprocal_condition = 1.0;  // estimate; 0 when exactly singular
   std::string message;                // why it failed
+  // When singular: the unit vector the matrix (nearly) maps to zero, in the unknowns' order
+  // (q, then λ). Its large entries name the free motion or the redundant constraints.
+  Eigen::VectorXd null_vector;
 };
 
 class LinearSystem {

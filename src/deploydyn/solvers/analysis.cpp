@@ -1,6 +1,7 @@
 #include "deploydyn/solvers/analysis.hpp"
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include <chrono>
 #include <cmath>
@@ -14,6 +15,30 @@
 namespace deploydyn {
 namespace {
 
+constexpr double kFreeMotionRegularization = 1e-6;
+
+// Names the unknowns that carry a singular matrix's null vector: coordinates of a free motion
+// ("y.B") and constraints that are redundant or in conflict.
+std::string describe_null_vector(const Assembler& assembler, const Eigen::VectorXd& null_vector) {
+  constexpr double kInvolved = 0.1;  // of the largest entry
+  const double largest = null_vector.cwiseAbs().maxCoeff();
+  std::vector<std::string> coordinates, constraints;
+  for (int i = 0; i < null_vector.size(); ++i) {
+    if (std::abs(null_vector[i]) < kInvolved * largest) continue;
+    if (i < assembler.n_dofs()) {
+      coordinates.push_back(assembler.dof_map().label(i));
+    } else {
+      constraints.push_back(assembler.describe_equation(i - assembler.n_dofs()));
+    }
+  }
+  std::string text;
+  if (!coordinates.empty()) text += fmt::format("free motion of {}", fmt::join(coordinates, ", "));
+  if (!constraints.empty()) {
+    text += fmt::format("{}constraints involved: {}", text.empty() ? "" : "; ", fmt::join(constraints, "; "));
+  }
+  return text;
+}
+
 FailureReport describe_failure(const Assembler& assembler, std::string phase, double t, int step,
                                const NewtonResult& newton) {
   FailureReport f;
@@ -26,12 +51,16 @@ FailureReport describe_failure(const Assembler& assembler, std::string phase, do
   if (newton.worst_equation >= 0) f.worst_constraint = assembler.describe_equation(newton.worst_equation);
   if (newton.worst_dof >= 0) f.worst_dof = assembler.dof_map().label(newton.worst_dof);
   f.reason = newton.failure;
+  if (newton.null_vector.size() > 0) f.reason += "; " + describe_null_vector(assembler, newton.null_vector);
   return f;
 }
 
 std::string failure_message(const FailureReport& f) {
   std::string where = f.step > 0 ? fmt::format("{} {} (t = {:.6g} s)", f.phase, f.step, f.time_s)
                                  : fmt::format("{} (t = {:.6g} s)", f.phase, f.time_s);
+  if (f.iteration == 0 && f.force_residual_N == 0.0 && f.constraint_residual == 0.0) {
+    return fmt::format("{} failed: {}", where, f.reason);
+  }
   std::string message = fmt::format(
       "{} failed after {} Newton iterations: {}; force residual {:.3e} N (largest at {}), "
       "constraint residual {:.3e}",
@@ -92,8 +121,17 @@ RunReport run_analysis(const Assembler& assembler, RecordSink& sink, const RunCo
   state.pseudo_a = state.a;
   state.lambda = Eigen::VectorXd::Zero(assembler.n_equations());
 
+  const bool dynamic = options.type == AnalysisType::dynamic;
+  const bool free_mechanism = dynamic && assembler.rigid_mobility() > 0;
+  LoadPath initial_path = LoadPath::thermal_ramp(0.0);
+  if (free_mechanism) {
+    initial_path.external_loads = false;
+    // Small against the stiffness (a millionth), large enough to make the matrix regular.
+    initial_path.mass_regularization =
+        kFreeMotionRegularization * assembler.stiffness_scale(state.q, 0.0) / assembler.mass_scale();
+  }
   const StaticResult initial =
-      solve_static(assembler, options, LoadPath::thermal_ramp(0.0), options.load_steps, system, state);
+      solve_static(assembler, options, initial_path, options.load_steps, system, state);
   report.initial_load_steps = initial.load_steps;
   report.initial_iterations = initial.total_iterations;
   if (initial.path_factor < 1.0) {
@@ -101,13 +139,25 @@ RunReport run_analysis(const Assembler& assembler, RecordSink& sink, const RunCo
     f.reason += fmt::format(" (thermal load reached {:.1f}%)", 100.0 * initial.path_factor);
     return fail(f);
   }
-  const bool dynamic = options.type == AnalysisType::dynamic;
+  // A free mechanism may move in a dynamic run; otherwise every motion must meet stiffness.
+  if (!free_mechanism) {
+    const FactorizationStatus stiffness = check_static_stiffness(assembler, system, state);
+    if (!stiffness.ok) {
+      FailureReport f;
+      f.phase = "initial equilibrium";
+      f.reason = "no static stiffness at the initial state (a bifurcation or dead point, or a motion "
+                 "that no bar, support or driver resists)";
+      if (stiffness.null_vector.size() > 0) f.reason += ": " + describe_null_vector(assembler, stiffness.null_vector);
+      return fail(f);
+    }
+  }
   if (dynamic) {
     const FactorizationStatus status = initialise_rates(assembler, system, state);
     if (!status.ok) {
       FailureReport f;
       f.phase = "initial rates";
       f.reason = status.message;
+      if (status.null_vector.size() > 0) f.reason += "; " + describe_null_vector(assembler, status.null_vector);
       return fail(f);
     }
   }

@@ -39,6 +39,7 @@ NewtonResult solve_newton(DiscreteEquations& equations, const NewtonOptions& opt
     const FactorizationStatus status = system.factorize();
     if (!status.ok) {
       result.failure = status.message;
+      result.null_vector = status.null_vector;
       return result;
     }
     const double s = equations.constraint_scale();

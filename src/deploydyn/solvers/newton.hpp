@@ -20,6 +20,7 @@ struct NewtonResult {
   int worst_dof = -1;                  // index of the largest |r|
   int worst_equation = -1;             // index of the largest |Φ|
   std::string failure;                 // why it did not converge
+  Eigen::VectorXd null_vector;         // when the matrix was singular (see FactorizationStatus)
 };
 
 NewtonResult solve_newton(DiscreteEquations& equations, const NewtonOptions& options,

@@ -19,13 +19,23 @@ double shortest_bar_m(const Model& model) {
 
 class StaticEquations final : public DiscreteEquations {
  public:
-  StaticEquations(const Assembler& assembler, double t, double thermal_factor, double scale)
-      : assembler_(assembler), t_(t), thermal_factor_(thermal_factor), scale_(scale) {}
+  StaticEquations(const Assembler& assembler, const LoadPath& path, double t,
+                  double thermal_factor, double scale)
+      : assembler_(assembler),
+        t_(t),
+        thermal_factor_(thermal_factor),
+        scale_(scale),
+        external_loads_(path.external_loads),
+        mass_regularization_(path.mass_regularization) {}
 
   double residual(const Eigen::VectorXd& q, const Eigen::VectorXd& lambda, Eigen::VectorXd& r,
                   Eigen::VectorXd& phi) override {
     assembler_.internal_force(q, t_, thermal_factor_, internal_);
-    assembler_.external_force(t_, external_);
+    if (external_loads_) {
+      assembler_.external_force(t_, external_);
+    } else {
+      external_.setZero(q.size());
+    }
     assembler_.constraint_force(q, t_, lambda, reaction_);
     assembler_.constraints(q, t_, phi);
     r = internal_ - external_ + reaction_;
@@ -34,13 +44,16 @@ class StaticEquations final : public DiscreteEquations {
   }
   void matrix(const Eigen::VectorXd& q, const Eigen::VectorXd& lambda,
               LinearSystem& system) override {
-    assembler_.iteration_matrix(q, t_, thermal_factor_, lambda, {0.0, 1.0, scale_}, system);
+    assembler_.iteration_matrix(q, t_, thermal_factor_, lambda, {mass_regularization_, 1.0, scale_},
+                                system);
   }
   double constraint_scale() const override { return scale_; }
 
  private:
   const Assembler& assembler_;
   double t_, thermal_factor_, scale_;
+  bool external_loads_;
+  double mass_regularization_;
   Eigen::VectorXd internal_, external_, reaction_;
 };
 
@@ -58,7 +71,7 @@ StaticResult solve_static(const Assembler& assembler, const AnalysisOptions& opt
     const double target = std::min(1.0, result.path_factor + increment);
     const double t = path.start_time_s + target * (path.end_time_s - path.start_time_s);
     const double thermal = path.start_thermal + target * (path.end_thermal - path.start_thermal);
-    StaticEquations equations(assembler, t, thermal, scale);
+    StaticEquations equations(assembler, path, t, thermal, scale);
     Eigen::VectorXd q = state.q;
     Eigen::VectorXd lambda = state.lambda;
     result.newton = solve_newton(equations, options.newton, system, q, lambda);
@@ -82,6 +95,14 @@ StaticResult solve_static(const Assembler& assembler, const AnalysisOptions& opt
     ++result.load_steps;
   }
   return result;
+}
+
+FactorizationStatus check_static_stiffness(const Assembler& assembler, LinearSystem& system,
+                                           const MotionState& state) {
+  StaticEquations equations(assembler, LoadPath::thermal_ramp(state.time_s), state.time_s, 1.0,
+                            assembler.stiffness_scale(state.q, state.time_s));
+  equations.matrix(state.q, state.lambda, system);
+  return system.factorize();
 }
 
 }  // namespace deploydyn

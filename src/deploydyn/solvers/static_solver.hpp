@@ -1,7 +1,8 @@
 #pragma once
 // Static (kinematic) equilibrium, paper Eq. (7) with thermal strain:
 //   f_int(q, t) − f_ext(t) + Bᵀλ = 0,   Φ(q, t) = 0
-// Used for the initial thermal equilibrium (the thermal strain ramped from 0 to 1 at t = 0)
+// Used for the initial thermal equilibrium (the thermal strain ramped from 0 to 1 at t = 0;
+// for a free mechanism in a dynamic run without the loads, see LoadPath)
 // and for quasi-static deployment (time ramped over one step). The ramp, a LoadPath, is
 // followed in load steps; a step is halved (down to 1/1024 of the whole) when its
 // Newton solve fails or when it moves a node by more than 2 % of the shortest bar. The second
@@ -18,6 +19,12 @@ namespace deploydyn {
 struct LoadPath {
   double start_time_s = 0.0, end_time_s = 0.0;
   double start_thermal = 0.0, end_thermal = 1.0;
+  // A free mechanism (one that may move in a dynamic run) has no static equilibrium under
+  // loads in general, and its stiffness matrix is singular along its free motion. Its initial
+  // state therefore balances the thermal strain only, and the matrix gets a small mass term
+  // (weight × M) so that Newton takes the least motion along the free directions.
+  bool external_loads = true;
+  double mass_regularization = 0.0;  // 1/s²; 0: none
 
   static LoadPath thermal_ramp(double t) { return {t, t, 0.0, 1.0}; }
   static LoadPath time_step(double from_s, double to_s) { return {from_s, to_s, 1.0, 1.0}; }
@@ -35,5 +42,11 @@ struct StaticResult {
 StaticResult solve_static(const Assembler& assembler, const AnalysisOptions& options,
                           const LoadPath& path, int load_steps, LinearSystem& system,
                           MotionState& state);
+
+// Factorizes the static iteration matrix [K + H(λ), s Bᵀ; s B, 0] at `state`: singular when a
+// motion is resisted by no bar, support or driver (a bifurcation or dead point, or a free
+// mechanism). Newton does not factorize when it starts converged, so this asks explicitly.
+FactorizationStatus check_static_stiffness(const Assembler& assembler, LinearSystem& system,
+                                           const MotionState& state);
 
 }  // namespace deploydyn
