@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include "support/cli.hpp"
+
 #include <algorithm>
 #include <array>
 #include <cstdio>
@@ -14,33 +16,13 @@
 namespace {
 
 namespace fs = std::filesystem;
+using deploydyn::testing::read_text;
 
-struct Outcome {
-  int exit_code = -1;
-  std::string output;  // stdout and stderr together
-};
-
-Outcome run_cli(const std::string& arguments) {
-  const std::string command = std::string(DEPLOYDYN_CLI) + " " + arguments + " 2>&1";
-  Outcome outcome;
-  std::FILE* pipe = popen(command.c_str(), "r");
-  std::array<char, 4096> buffer{};
-  while (std::fgets(buffer.data(), buffer.size(), pipe) != nullptr) outcome.output += buffer.data();
-  const int status = pclose(pipe);
-  outcome.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  return outcome;
+deploydyn::testing::CliOutcome run_cli(const std::string& arguments) {
+  return deploydyn::testing::run_cli(arguments);
 }
-
-std::string example(const std::string& name) {
-  return std::string(DEPLOYDYN_SOURCE_DIR) + "/examples/paper/" + name;
-}
-
-std::string read_file(const fs::path& file) {
-  std::ifstream in(file);
-  std::stringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
+std::string example(const std::string& name) { return deploydyn::testing::example_path(name); }
+std::string read_file(const fs::path& file) { return read_text(file); }
 
 class Cli : public ::testing::Test {
  protected:
@@ -54,7 +36,7 @@ class Cli : public ::testing::Test {
 };
 
 TEST_F(Cli, RunWritesTheContractFiles) {
-  const Outcome o = run_cli("run " + example("parallel.yaml") + " --quiet --out " + folder_.string() +
+  const auto o = run_cli("run " + example("parallel.yaml") + " --quiet --out " + folder_.string() +
                             " --set analysis.end=0.05");
   ASSERT_EQ(o.exit_code, 0) << o.output;
   // Golden header: the column contract of DESIGN §4 for the paper's names.
@@ -79,7 +61,7 @@ TEST_F(Cli, RunWritesTheContractFiles) {
 }
 
 TEST_F(Cli, SetSelectsTheTemperatureCase) {
-  const Outcome o = run_cli("run " + example("general.yaml") + " --quiet --out " + folder_.string() +
+  const auto o = run_cli("run " + example("general.yaml") + " --quiet --out " + folder_.string() +
                             " --set thermal.dT=130 --set analysis.end=0.01");
   ASSERT_EQ(o.exit_code, 0) << o.output;
   const auto summary = nlohmann::json::parse(read_file(folder_ / "summary.json"));
@@ -88,7 +70,7 @@ TEST_F(Cli, SetSelectsTheTemperatureCase) {
 }
 
 TEST_F(Cli, CheckPrintsTheSummary) {
-  const Outcome o = run_cli("check " + example("general.yaml"));
+  const auto o = run_cli("check " + example("general.yaml"));
   ASSERT_EQ(o.exit_code, 0) << o.output;
   EXPECT_NE(o.output.find("8 coordinates + 5 multipliers"), std::string::npos) << o.output;
   EXPECT_NE(o.output.find("kinematically determinate"), std::string::npos) << o.output;
@@ -100,7 +82,7 @@ TEST_F(Cli, HelpExitsCleanly) {
     const char* expected;
   };
   for (const Case c : {Case{"--help", "check"}, Case{"run --help", "--set"}, Case{"check --help", "--set"}}) {
-    const Outcome o = run_cli(c.arguments);
+    const auto o = run_cli(c.arguments);
     EXPECT_EQ(o.exit_code, 0) << c.arguments << "\n" << o.output;
     EXPECT_NE(o.output.find(c.expected), std::string::npos) << c.arguments << "\n" << o.output;
   }
@@ -120,7 +102,7 @@ TEST_F(Cli, BadInputExitsWithTwoAndNamesTheField) {
       {"frobnicate", "frobnicate"},
   };
   for (const Case& c : cases) {
-    const Outcome o = run_cli(c.arguments);
+    const auto o = run_cli(c.arguments);
     EXPECT_EQ(o.exit_code, 2) << c.arguments << "\n" << o.output;
     EXPECT_NE(o.output.find(c.expected), std::string::npos) << c.arguments << "\n" << o.output;
   }
@@ -139,7 +121,7 @@ TEST_F(Cli, SolverFailureExitsWithOneAndKeepsTheResults) {
   fs::create_directories(folder_);
   const fs::path model = folder_ / "delayed.yaml";
   std::ofstream(model) << text;
-  const Outcome o = run_cli("run " + model.string() + " --quiet --out " + (folder_ / "out").string() +
+  const auto o = run_cli("run " + model.string() + " --quiet --out " + (folder_ / "out").string() +
                             " --set analysis.newton.max_iterations=1");
   ASSERT_EQ(o.exit_code, 1) << o.output;
   EXPECT_NE(o.output.find("time step"), std::string::npos) << o.output;
