@@ -8,6 +8,7 @@
 
 #include "deploydyn/io/input_error.hpp"
 #include "deploydyn/io/model_loader.hpp"
+#include "support/cli.hpp"
 
 namespace deploydyn {
 namespace {
@@ -66,10 +67,20 @@ const BadModelCase kBadModels[] = {
     {"units_not_si.yaml", 1, "units", "only SI is supported"},
     {"output_file_with_folder.yaml", 5, "output.history", "must be a plain file name"},
     {"empty.yaml", 0, "", "expected a mapping with nodes, materials and elements, got nothing"},
+    {"end_negative.yaml", 5, "analysis.end", "must be positive (s), got -2"},
+    {"rho_inf_out_of_range.yaml", 5, "analysis.integrator.rho_inf",
+     "must be in [0, 1] for generalized_alpha, got 1.5"},
+    {"gamma_with_hht.yaml", 5, "analysis.integrator.gamma", "applies to type newmark only"},
+    {"adaptive_max_below_min.yaml", 5, "analysis.adaptive.max_step",
+     "must not be below min_step = 0.001 s, got 0.0001"},
+    {"support_unknown_node.yaml", 5, "supports.0.node", "unknown node 'Z'; nodes are A, B"},
+    {"duplicate_element.yaml", 5, "elements.1", "'1' is given twice"},
+    {"driver_unknown_key.yaml", 5, "drivers.motor.extra", "unknown key 'extra'; allowed: type,"},
+    {"step_absurdly_small.yaml", 5, "analysis.step", "must be at least 1e-09 s, got 1e-12"},
     {"does_not_exist.yaml", 0, "", "cannot open file"},
 };
 
-class BadModel : public testing::TestWithParam<BadModelCase> {};
+class BadModel : public ::testing::TestWithParam<BadModelCase> {};
 
 TEST_P(BadModel, ThrowsInputErrorNamingFileLineFieldAndProblem) {
   const BadModelCase& bad = GetParam();
@@ -88,8 +99,23 @@ TEST_P(BadModel, ThrowsInputErrorNamingFileLineFieldAndProblem) {
   }
 }
 
-INSTANTIATE_TEST_SUITE_P(Files, BadModel, testing::ValuesIn(kBadModels),
-                         [](const testing::TestParamInfo<BadModelCase>& info) {
+// The command says the same, on stderr, with exit code 2 and no result folder.
+TEST_P(BadModel, CommandExitsWithTwoAndTheSameMessage) {
+  const BadModelCase& bad = GetParam();
+  const std::string path = fmt::format("{}/tests/io/bad_models/{}", DEPLOYDYN_SOURCE_DIR, bad.file);
+  testing::ScratchFolder out(std::string("bad_") + bad.file);
+  const testing::CliOutcome o = testing::run_cli("run " + path + " --quiet --out " + out.path().string());
+  EXPECT_EQ(o.exit_code, 2) << o.output;
+  EXPECT_NE(o.output.find(bad.problem), std::string::npos) << o.output;
+  if (bad.line > 0) {
+    EXPECT_NE(o.output.find(fmt::format("{}:{}:", bad.file, bad.line)), std::string::npos) << o.output;
+  }
+  EXPECT_NE(o.output.find(bad.field), std::string::npos) << o.output;
+  EXPECT_FALSE(std::filesystem::exists(out.path())) << "bad input must not leave results";
+}
+
+INSTANTIATE_TEST_SUITE_P(Files, BadModel, ::testing::ValuesIn(kBadModels),
+                         [](const ::testing::TestParamInfo<BadModelCase>& info) {
                            std::string name = info.param.file;
                            name = name.substr(0, name.find('.'));
                            return name;
@@ -107,6 +133,33 @@ TEST(BadModel, TableListsEveryFile) {
     ++n_files;
   }
   EXPECT_EQ(n_files + 1, std::size(kBadModels));  // + the file that does not exist
+}
+
+}  // namespace
+}  // namespace deploydyn
+
+namespace deploydyn {
+namespace {
+
+// A large model (20 000 nodes in a chain of bars, ~1.3 MB) with one mistake on its last line:
+// the error still names that line, and loading does not crash or take long.
+TEST(BadModel, HugeFileNamesTheLineOfItsMistake) {
+  constexpr int kNodes = 20000;
+  std::string text = "materials: {steel: {E: 2.0e11}}\nnodes:\n";
+  for (int i = 0; i < kNodes; ++i) text += fmt::format("  n{}: [{}, 0]\n", i, i);
+  text += "elements:\n";
+  for (int i = 0; i + 1 < kNodes; ++i) {
+    text += fmt::format("  e{}: {{nodes: [n{}, n{}], area: 1.0e-4, material: steel, mass: 1}}\n", i, i, i + 1);
+  }
+  text += "  last: {nodes: [n0, n1], area: -1, material: steel, mass: 1}\n";
+  const int last_line = 2 + kNodes + 1 + (kNodes - 1) + 1;
+  try {
+    load_model_from_string(text, "huge.yaml");
+    FAIL() << "the negative area was not found";
+  } catch (const InputError& error) {
+    EXPECT_EQ(error.line(), last_line) << error.what();
+    EXPECT_EQ(error.field(), "elements.last.area") << error.what();
+  }
 }
 
 }  // namespace
