@@ -1,10 +1,13 @@
 # The two entry points. Each installs what is missing (Debian packages), configures, builds,
 # then runs. `make demo`: the paper's study into results/. `make test`: every test.
+# CI also runs `make sanitize` (the tests under ASan + UBSan) and `make fuzz` (60 s of libFuzzer).
 PRESET ?= release
 BUILD  := build/$(PRESET)
 PYTHON := /usr/bin/python3
+SHELL  := /bin/bash
+FUZZ_SECONDS ?= 60
 
-.PHONY: all deps configure build demo test clean
+.PHONY: all deps configure build demo test sanitize fuzz verification clean
 
 all: build
 
@@ -22,6 +25,27 @@ demo: build
 
 test: build
 	@ctest --preset $(PRESET) -j2
+
+# The whole test suite built with AddressSanitizer and UndefinedBehaviorSanitizer.
+sanitize: deps
+	@test -f build/asan/build.ninja || cmake --preset asan >/dev/null
+	@cmake --build build/asan
+	@ctest --preset asan -j2
+
+# A bounded libFuzzer run of the model loader, seeded with the examples and the bad models.
+fuzz: deps
+	@test -f build/fuzz/build.ninja || cmake --preset fuzz >/dev/null
+	@cmake --build --preset fuzz
+	@rm -rf build/fuzz/corpus && mkdir -p build/fuzz/corpus
+	@cp examples/paper/*.yaml tests/io/bad_models/*.yaml build/fuzz/corpus/
+	@build/fuzz/model_loader_fuzzer build/fuzz/corpus -dict=fuzz/model.dict -max_len=4096 \
+	  -max_total_time=$(FUZZ_SECONDS) -timeout=10 -rss_limit_mb=4096 -print_final_stats=1 2>&1 \
+	  | grep -E '^(stat::number_of_executed_units|stat::average_exec_per_sec|==|SUMMARY|Done)' ; \
+	  test $${PIPESTATUS[0]} -eq 0
+
+# The verification manual: builds, runs the Verification* suites, writes docs/verification.md.
+verification: build
+	@$(PYTHON) scripts/verification_report.py --binary $(BUILD)/tests/deploydyn_tests --out docs/verification.md
 
 clean:
 	rm -rf build results

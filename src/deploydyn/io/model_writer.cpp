@@ -1,5 +1,7 @@
 #include "deploydyn/io/model_writer.hpp"
 
+#include "deploydyn/util/overloaded.hpp"
+
 #include <fmt/format.h>
 #include <yaml-cpp/yaml.h>
 
@@ -8,11 +10,6 @@
 
 namespace deploydyn {
 namespace {
-
-template <class... Ts>
-struct Overloaded : Ts... {
-  using Ts::operator()...;
-};
 
 // The shortest text that reads back to the same double (at most 17 significant digits).
 std::string number_text(double value) { return fmt::format("{}", value); }

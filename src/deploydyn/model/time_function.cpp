@@ -1,15 +1,12 @@
 #include "deploydyn/model/time_function.hpp"
 
+#include "deploydyn/util/overloaded.hpp"
+
 #include <algorithm>
 #include <cassert>
 
 namespace deploydyn {
 namespace {
-
-template <class... Ts>
-struct Overloaded : Ts... {
-  using Ts::operator()...;
-};
 
 // Derivative order −1 is the antiderivative F with F(t) = v0·t below the step, so that
 // ∫₀ᵗ f = F(t) − F(0).

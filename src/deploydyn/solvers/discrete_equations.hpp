@@ -22,6 +22,7 @@ class DiscreteEquations {
   // Assembles [∂r/∂q, s Bᵀ; s B, 0] at (q, λ).
   virtual void matrix(const Eigen::VectorXd& q, const Eigen::VectorXd& lambda,
                       LinearSystem& system) = 0;
+  // s (N/m): the size of the force block's diagonal, which scales the constraint rows.
   virtual double constraint_scale() const = 0;
 };
 

@@ -2,7 +2,15 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
+#include <limits>
+
 namespace deploydyn {
+namespace {
+
+constexpr double kRoundOffShare = 16.0 * std::numeric_limits<double>::epsilon();
+
+}  // namespace
 
 NewtonResult solve_newton(DiscreteEquations& equations, const NewtonOptions& options,
                           LinearSystem& system, Eigen::VectorXd& q, Eigen::VectorXd& lambda) {
@@ -24,8 +32,14 @@ NewtonResult solve_newton(DiscreteEquations& equations, const NewtonOptions& opt
       result.failure = "the residual is NaN or Inf";
       return result;
     }
-    const bool forces_balanced = result.force_residual_N <= options.force_tolerance * force_scale ||
-                                 last_correction <= options.displacement_tolerance_m;
+    // Round-off floor: the force left by moving the coordinates by a few units in their last
+    // place through the stiffest spring. Without it a model with nothing loaded (force_scale
+    // itself round-off) would never count as converged.
+    const double force_floor =
+        equations.constraint_scale() * kRoundOffShare * std::max(q.lpNorm<Eigen::Infinity>(), 1.0);
+    const bool forces_balanced =
+        result.force_residual_N <= options.force_tolerance * force_scale + force_floor ||
+        last_correction <= options.displacement_tolerance_m;
     if (result.constraint_residual <= options.constraint_tolerance_m && forces_balanced) {
       result.converged = true;
       return result;

@@ -2,8 +2,10 @@
 // Newton–Raphson on DiscreteEquations (paper Eqs. 10–15 with the errata of DESIGN §2):
 //   [∂r/∂q  s Bᵀ] [Δq ]     [ r ]
 //   [ s B    0  ] [Δλ̂] = − [s Φ],   q += Δq,  λ += s Δλ̂
-// Converged when ‖Φ‖∞ ≤ tol_constraint and either ‖r‖∞ ≤ tol_force · (largest force term) or
-// the last correction ‖Δq‖∞ ≤ tol_displacement. A failure is a status, never an abort.
+// Converged when ‖Φ‖∞ ≤ tol_constraint and either ‖r‖∞ ≤ tol_force · (largest force term)
+// + s · 16 ε · max(‖q‖∞, 1 m), a round-off floor (s, the constraint scale, is the size of the
+// force block's diagonal, N/m), or the last correction ‖Δq‖∞ ≤ tol_displacement. A failure is
+// a status, never an abort.
 
 #include <string>
 
