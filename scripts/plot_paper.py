@@ -1,7 +1,8 @@
 #!/usr/bin/python3
 """Plots of deploydyn results: any history.csv columns of one or more runs, and the paper's figures.
 
-`plot_columns` draws chosen columns of one or more result folders, one panel per `Panel`.
+`plot_columns` draws chosen columns of one or more result folders, one panel per `Panel`; it
+is the plotting core of scripts/deploydyn_plot.py as well.
 `plot_paper_set` draws, from the six runs of scripts/paper_demo.py (results/paper/<linkage>/
 <case>/), the counterparts of Cai et al. (2017) Figs. 3-5 and the driver torque:
 
@@ -48,12 +49,15 @@ DRIVER_NOTE = "Eq. 23 ω read as angular velocity (1.46 rad), direction-only dri
 
 @dataclasses.dataclass
 class Run:
-    """One result folder to plot. `derive(data)` may add computed columns to its history."""
+    """One result folder to plot. `derive(data)` may add computed columns to its history;
+    with `incomplete_ok` a failed or interrupted run is drawn (as far as it got) instead of
+    skipped."""
     label: str
     folder: pathlib.Path
     colour: Optional[str] = None
     linestyle: Optional[str] = None
     derive: Optional[Callable[[dict], None]] = None
+    incomplete_ok: bool = False
 
 
 @dataclasses.dataclass
@@ -85,11 +89,13 @@ def load_run(run):
               file=sys.stderr)
         return None
     status = json.loads(summary_file.read_text()).get("status")
-    if status != "completed":
+    if status != "completed" and not run.incomplete_ok:
         print(f"plot: skipping {run.folder}: run {status}", file=sys.stderr)
         return None
+    if status != "completed":
+        print(f"plot: {run.folder}: run {status}, drawn as far as it got", file=sys.stderr)
     table = np.genfromtxt(history_file, delimiter=",", names=True, deletechars="")
-    data = {name: np.asarray(table[name]) for name in table.dtype.names}
+    data = {name: np.atleast_1d(table[name]) for name in table.dtype.names}
     if run.derive:
         run.derive(data)
     return data
@@ -135,11 +141,12 @@ def _draw_panel(ax, panel, runs, data):
               title_fontsize=8)
 
 
-def plot_columns(out_png, runs, panels, title, ncols=1, xlabel="time t (s)"):
+def plot_columns(out_png, runs, panels, title, ncols=1, xlabel="time t (s)", also=()):
     """Plot history columns of `runs` (list of Run) in `panels` (list of Panel) into out_png.
 
-    Panels are laid out in `ncols` columns. Runs that cannot be loaded are skipped with a
-    message; returns the path written, or None when no run could be loaded.
+    Panels are laid out in `ncols` columns; `also` lists more formats to write beside it, e.g.
+    ("svg",) (text stays text in SVG). Runs that cannot be loaded are skipped with a message;
+    returns the path of out_png, or None when no run could be loaded.
     """
     data = {run.label: load_run(run) for run in runs}
     runs = [run for run in runs if data[run.label] is not None]
@@ -160,9 +167,11 @@ def plot_columns(out_png, runs, panels, title, ncols=1, xlabel="time t (s)"):
                  fontsize=10.5)
     fig.tight_layout()
     pathlib.Path(out_png).parent.mkdir(parents=True, exist_ok=True)
-    fig.savefig(out_png, dpi=110)
+    for out in [pathlib.Path(out_png)] + [pathlib.Path(out_png).with_suffix(f".{f}") for f in also]:
+        with plt.rc_context({"svg.fonttype": "none"}):
+            fig.savefig(out, dpi=110)
+        print(f"plot: wrote {out}", file=sys.stderr)
     plt.close(fig)
-    print(f"plot: wrote {out_png}", file=sys.stderr)
     return pathlib.Path(out_png)
 
 

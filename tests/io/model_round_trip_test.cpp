@@ -96,6 +96,7 @@ void expect_equal_models(const Model& a, const Model& b) {
   EXPECT_EQ(p.newton.displacement_tolerance_m, q.newton.displacement_tolerance_m);
   EXPECT_EQ(a.output.history_file, b.output.history_file);
   EXPECT_EQ(a.output.summary_file, b.output.summary_file);
+  EXPECT_EQ(a.output.vtk, b.output.vtk);
 }
 
 std::string saved(const Model& model) {
@@ -159,7 +160,7 @@ analysis:
   mass: lumped
   integrator: {type: newmark, beta: 0.3, gamma: 0.6}
   newton: {max_iterations: 12, tol_force: 1e-7, tol_constraint: 1e-11, tol_displacement: 1e-13}
-output: {history: run.csv, summary: run.json}
+output: {history: run.csv, summary: run.json, vtk: true}
 )",
                                              "every feature");
   expect_round_trip(model);

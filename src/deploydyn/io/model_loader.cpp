@@ -539,10 +539,11 @@ class ModelReader {
   }
 
   void read_output(const YamlValue& spec) {
-    spec.expect_keys({"history", "summary"});
+    spec.expect_keys({"history", "summary", "vtk"});
     OutputOptions& output = model_.output;
     if (const auto history = spec.find("history")) output.history_file = file_name(*history);
     if (const auto summary = spec.find("summary")) output.summary_file = file_name(*summary);
+    if (const auto vtk = spec.find("vtk")) output.vtk = vtk->choice({"false", "true"}) == 1;
   }
 
   // Output goes into the run's output folder, so only a plain name makes sense.

@@ -267,6 +267,8 @@ void emit_analysis(YAML::Emitter& out, const Model& model) {
   out << model.output.history_file;
   emit_key(out, "summary");
   out << model.output.summary_file;
+  emit_key(out, "vtk");
+  out << model.output.vtk;
   out << YAML::EndMap;
 }
 

@@ -126,6 +126,7 @@ struct AnalysisOptions {
 struct OutputOptions {
   std::string history_file = "history.csv";
   std::string summary_file = "summary.json";
+  bool vtk = false;  // also a ParaView time series in vtk/ (output/vtk_writer.hpp)
 };
 
 struct Model {

@@ -30,6 +30,16 @@ std::vector<std::string> history_columns(const Model& model) {
   return columns;
 }
 
+void append_history_row(const StepRecord& r, std::vector<double>& row) {
+  row.push_back(r.time_s);
+  row.insert(row.end(), r.q.begin(), r.q.end());
+  for (const BarResult& bar : r.bars) {
+    row.insert(row.end(), {bar.strain, bar.mechanical_strain, bar.axial_force_N});
+  }
+  row.insert(row.end(), r.driver_efforts.begin(), r.driver_efforts.end());
+  row.insert(row.end(), {r.kinetic_energy_J, r.strain_energy_J, r.external_work_J});
+}
+
 HistoryWriter::HistoryWriter(const std::filesystem::path& file, const Model& model)
     : file_(std::fopen(file.c_str(), "w")), last_flush_(std::chrono::steady_clock::now()) {
   if (file_ == nullptr) throw std::runtime_error("cannot write " + file.string());
@@ -44,16 +54,10 @@ HistoryWriter::~HistoryWriter() {
 
 void HistoryWriter::record(const StepRecord& r) {
   // 17 significant digits: values read back are the values computed.
+  values_.clear();
+  append_history_row(r, values_);
   row_.clear();
-  auto out = std::back_inserter(row_);
-  fmt::format_to(out, "{:.17g}", r.time_s);
-  for (double x : r.q) fmt::format_to(out, ",{:.17g}", x);
-  for (const BarResult& bar : r.bars) {
-    fmt::format_to(out, ",{:.17g},{:.17g},{:.17g}", bar.strain, bar.mechanical_strain, bar.axial_force_N);
-  }
-  for (double effort : r.driver_efforts) fmt::format_to(out, ",{:.17g}", effort);
-  fmt::format_to(out, ",{:.17g},{:.17g},{:.17g}\n", r.kinetic_energy_J, r.strain_energy_J,
-                 r.external_work_J);
+  fmt::format_to(std::back_inserter(row_), "{:.17g}\n", fmt::join(values_, ","));
   std::fwrite(row_.data(), 1, row_.size(), file_);
   if (std::chrono::steady_clock::now() - last_flush_ >= kFlushInterval) flush();
 }

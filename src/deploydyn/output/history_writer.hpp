@@ -18,6 +18,10 @@ namespace deploydyn {
 
 std::vector<std::string> history_columns(const Model& model);
 
+// Appends one record's values to `row`, in the order of history_columns: what HistoryWriter
+// writes as one row, for callers that keep the history in memory.
+void append_history_row(const StepRecord& record, std::vector<double>& row);
+
 class HistoryWriter final : public RecordSink {
  public:
   // Throws std::runtime_error when the file cannot be opened.
@@ -31,6 +35,7 @@ class HistoryWriter final : public RecordSink {
 
  private:
   std::FILE* file_ = nullptr;
+  std::vector<double> values_;
   std::string row_;
   std::chrono::steady_clock::time_point last_flush_;
 };

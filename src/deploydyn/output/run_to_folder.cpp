@@ -1,25 +1,33 @@
 #include "deploydyn/output/run_to_folder.hpp"
 
+#include <optional>
+#include <utility>
+#include <vector>
+
 #include "deploydyn/output/envelope.hpp"
 #include "deploydyn/output/history_writer.hpp"
 #include "deploydyn/output/summary_writer.hpp"
+#include "deploydyn/output/vtk_writer.hpp"
+
+#include <fstream>
+
+#include "deploydyn/io/model_writer.hpp"
 
 namespace deploydyn {
 namespace {
 
-// Sends each record to the history file and the envelope.
-class HistoryAndEnvelope final : public RecordSink {
+constexpr const char* kModelFileName = "model.yaml";
+
+// Sends each record to every sink, in order. Does not own them.
+class FanOut final : public RecordSink {
  public:
-  HistoryAndEnvelope(HistoryWriter& history, Envelope& envelope)
-      : history_(history), envelope_(envelope) {}
+  explicit FanOut(std::vector<RecordSink*> sinks) : sinks_(std::move(sinks)) {}
   void record(const StepRecord& r) override {
-    history_.record(r);
-    envelope_.record(r);
+    for (RecordSink* sink : sinks_) sink->record(r);
   }
 
  private:
-  HistoryWriter& history_;
-  Envelope& envelope_;
+  std::vector<RecordSink*> sinks_;
 };
 
 }  // namespace
@@ -28,9 +36,17 @@ RunReport run_to_folder(const Model& model, const std::filesystem::path& folder,
                         const RunControl& control) {
   const Assembler assembler(model);  // may throw before any file is touched
   std::filesystem::create_directories(folder);
+  // The model as run, --set overrides applied: the folder says how its results were made.
+  {
+    std::ofstream model_file(folder / kModelFileName);
+    save_model(model, model_file);
+  }
   HistoryWriter history(folder / model.output.history_file, model);
   Envelope envelope;
-  HistoryAndEnvelope sink(history, envelope);
+  std::vector<RecordSink*> sinks{&history, &envelope};
+  std::optional<VtkWriter> vtk;
+  if (model.output.vtk) sinks.push_back(&vtk.emplace(folder / kVtkFolderName, model));
+  FanOut sink(std::move(sinks));
   const RunReport report = run_analysis(assembler, sink, control);
   history.flush();
   write_summary(folder / model.output.summary_file, model, envelope, report);

@@ -1,6 +1,8 @@
 #pragma once
-// One run with its results on disk: history.csv streamed while it runs, summary.json at the
-// end, whatever the end (completed, failed or interrupted). What the CLI's `run` does.
+// One run with its results on disk: model.yaml (the model as run, overrides applied) first,
+// history.csv streamed while it runs, summary.json at the
+// end, whatever the end (completed, failed or interrupted); with `output.vtk`, also a ParaView
+// time series in vtk/ (output/vtk_writer.hpp), streamed. What the CLI's `run` does.
 
 #include <filesystem>
 

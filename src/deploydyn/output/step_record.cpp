@@ -7,6 +7,7 @@ StepRecord make_step_record(const Assembler& assembler, const MotionState& state
   StepRecord record;
   record.time_s = state.time_s;
   record.q = state.q;
+  record.v = state.v;
   const int n_bars = assembler.model().n_bars();
   record.bars.reserve(n_bars);
   for (int b = 0; b < n_bars; ++b) record.bars.push_back(assembler.bar_result(b, state.q, state.time_s));

@@ -13,6 +13,7 @@ namespace deploydyn {
 struct StepRecord {
   double time_s = 0.0;
   Eigen::VectorXd q;                   // nodal coordinates (m)
+  Eigen::VectorXd v;                   // their rates q̇ (m/s); zero in a static analysis
   std::vector<BarResult> bars;         // per element, model order
   std::vector<double> driver_efforts;  // torque (N·m) or force (N), per driver
   double kinetic_energy_J = 0.0;       // ½ q̇ᵀ M q̇

@@ -1,6 +1,7 @@
 #include "deploydyn/output/summary_writer.hpp"
 
 #include "deploydyn/model/dof_map.hpp"
+#include "deploydyn/solvers/generalized_alpha.hpp"
 
 #include <fstream>
 #include <nlohmann/json.hpp>
@@ -25,6 +26,19 @@ ordered_json extremes(const Extremes& e) {
   return {{"min", e.min}, {"t_min", e.time_of_min_s}, {"max", e.max}, {"t_max", e.time_of_max_s}};
 }
 
+// The scheme as chosen and its generalized-α parameters as used.
+ordered_json integrator(const IntegratorOptions& options) {
+  const char* names[] = {"newmark", "hht", "generalized_alpha"};
+  const auto c = GeneralizedAlphaCoefficients::from(options);
+  ordered_json j = {{"type", names[static_cast<int>(options.kind)]}};
+  if (options.kind != IntegratorOptions::Kind::newmark) j["rho_inf"] = options.rho_infinity;
+  j["alpha_m"] = c.alpha_m;
+  j["alpha_f"] = c.alpha_f;
+  j["beta"] = c.beta;
+  j["gamma"] = c.gamma;
+  return j;
+}
+
 ordered_json failure(const FailureReport& f) {
   return {{"phase", f.phase},
           {"time", f.time_s},
@@ -39,8 +53,7 @@ ordered_json failure(const FailureReport& f) {
 
 }  // namespace
 
-void write_summary(const std::filesystem::path& file, const Model& model, const Envelope& envelope,
-                   const RunReport& report) {
+std::string summary_json(const Model& model, const Envelope& envelope, const RunReport& report) {
   ordered_json j;
   j["model"] = model.name;
   j["status"] = status_name(report.status);
@@ -51,9 +64,7 @@ void write_summary(const std::filesystem::path& file, const Model& model, const 
   j["analysis"] = {{"type", model.analysis.type == AnalysisType::dynamic ? "dynamic" : "static"},
                    {"end", model.analysis.end_time_s},
                    {"step", model.analysis.step_s},
-                   {"integrator", {{"type", "newmark"},
-                                   {"beta", model.analysis.integrator.beta},
-                                   {"gamma", model.analysis.integrator.gamma}}}};
+                   {"integrator", integrator(model.analysis.integrator)}};
 
   ordered_json elements = ordered_json::object();
   for (int b = 0; b < model.n_bars() && b < static_cast<int>(envelope.elements().size()); ++b) {
@@ -98,12 +109,17 @@ void write_summary(const std::filesystem::path& file, const Model& model, const 
   j["initial_equilibrium"] = {{"load_steps", report.initial_load_steps},
                               {"newton_iterations", report.initial_iterations}};
   j["wall_time"] = report.wall_time_s;
+  return j.dump(2);
+}
 
+void write_summary(const std::filesystem::path& file, const Model& model, const Envelope& envelope,
+                   const RunReport& report) {
+  const std::string text = summary_json(model, envelope, report);
   const std::filesystem::path temporary = file.string() + ".tmp";
   {
     std::ofstream out(temporary);
     if (!out) throw std::runtime_error("cannot write " + temporary.string());
-    out << j.dump(2) << '\n';
+    out << text << '\n';
     if (!out) throw std::runtime_error("cannot write " + temporary.string());
   }
   std::filesystem::rename(temporary, file);

@@ -5,12 +5,17 @@
 // renamed, so a reader never sees half of it.
 
 #include <filesystem>
+#include <string>
 
 #include "deploydyn/model/model.hpp"
 #include "deploydyn/output/envelope.hpp"
 #include "deploydyn/solvers/analysis.hpp"
 
 namespace deploydyn {
+
+// The JSON text that write_summary writes (indented, without the final newline): for callers
+// that keep results in memory, such as the Python bindings.
+std::string summary_json(const Model& model, const Envelope& envelope, const RunReport& report);
 
 void write_summary(const std::filesystem::path& file, const Model& model, const Envelope& envelope,
                    const RunReport& report);
