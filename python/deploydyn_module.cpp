@@ -50,15 +50,6 @@ std::vector<Override> to_overrides(const OverridePairs& pairs) {
   return overrides;
 }
 
-const char* status_name(RunStatus status) {
-  switch (status) {
-    case RunStatus::completed: return "completed";
-    case RunStatus::failed: return "failed";
-    case RunStatus::interrupted: return "interrupted";
-  }
-  return "unknown";
-}
-
 // A loaded, validated model. Immutable once made: overriding a value loads a new one, so a run
 // in another thread never sees a model change under it.
 struct LoadedModel {
@@ -120,7 +111,7 @@ class InterruptWatch {
 
 py::dict report_dict(const RunReport& report) {
   py::dict out;
-  out["status"] = status_name(report.status);
+  out["status"] = to_string(report.status);
   out["message"] = report.message;
   return out;
 }

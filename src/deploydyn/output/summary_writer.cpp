@@ -12,15 +12,6 @@ namespace {
 
 using nlohmann::ordered_json;
 
-const char* status_name(RunStatus status) {
-  switch (status) {
-    case RunStatus::completed: return "completed";
-    case RunStatus::failed: return "failed";
-    case RunStatus::interrupted: return "interrupted";
-  }
-  return "unknown";
-}
-
 ordered_json extremes(const Extremes& e) {
   if (e.empty()) return nullptr;
   return {{"min", e.min}, {"t_min", e.time_of_min_s}, {"max", e.max}, {"t_max", e.time_of_max_s}};
@@ -56,7 +47,7 @@ ordered_json failure(const FailureReport& f) {
 std::string summary_json(const Model& model, const Envelope& envelope, const RunReport& report) {
   ordered_json j;
   j["model"] = model.name;
-  j["status"] = status_name(report.status);
+  j["status"] = to_string(report.status);
   j["message"] = report.message;
   if (report.status == RunStatus::failed) j["failure"] = failure(report.failure);
   j["units"] = {{"length", "m"}, {"force", "N"}, {"torque", "N·m"}, {"time", "s"},

@@ -97,6 +97,15 @@ class WorkCounter {
 
 }  // namespace
 
+const char* to_string(RunStatus status) {
+  switch (status) {
+    case RunStatus::completed: return "completed";
+    case RunStatus::failed: return "failed";
+    case RunStatus::interrupted: return "interrupted";
+  }
+  return "unknown";
+}
+
 RunReport run_analysis(const Assembler& assembler, RecordSink& sink, const RunControl& control) {
   const auto wall_start = std::chrono::steady_clock::now();
   const AnalysisOptions& options = assembler.model().analysis;

@@ -15,6 +15,8 @@
 namespace deploydyn {
 
 enum class RunStatus { completed, failed, interrupted };
+// "completed", "failed", "interrupted": as summary.json spells it.
+const char* to_string(RunStatus status);
 
 // Where and why a solve failed.
 struct FailureReport {
