@@ -9,7 +9,7 @@
 
 #include <cmath>
 
-#include "deploydyn/assembly/dense_linear_system.hpp"
+#include "deploydyn/assembly/linear_system_factory.hpp"
 #include "deploydyn/io/model_loader.hpp"
 #include "support/model_builder.hpp"
 
@@ -57,7 +57,8 @@ double measured_spectral_radius(const IntegratorOptions& options) {
   m.model().analysis.newton.force_tolerance = 1e-12;
   const Assembler assembler(m.model());
   const GeneralizedAlphaIntegrator integrator(assembler, m.model().analysis);
-  DenseLinearSystem system(assembler.n_unknowns());
+  const auto linear_system = make_linear_system(assembler);
+  LinearSystem& system = *linear_system;
   constexpr double kStep_s = 1000.0;  // ω h = 1e6
   constexpr double kSize = 1e-7;  // small enough for the bar to act as a linear spring
   const int x = assembler.dof_map().index(b, 0);

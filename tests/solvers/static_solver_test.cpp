@@ -6,7 +6,7 @@
 
 #include <cmath>
 
-#include "deploydyn/assembly/dense_linear_system.hpp"
+#include "deploydyn/assembly/linear_system_factory.hpp"
 #include "support/model_builder.hpp"
 
 namespace deploydyn {
@@ -37,7 +37,8 @@ TEST(StaticSolver, CutsALargeThermalLoadIntoStepsAndConverges) {
   m.pin(a);
   m.support(b, {false, true, true});
   const Assembler assembler(m.model());
-  DenseLinearSystem system(assembler.n_unknowns());
+  const auto linear_system = make_linear_system(assembler);
+  LinearSystem& system = *linear_system;
   MotionState state = rest_state(assembler, 0.0);
   const StaticResult result =
       solve_static(assembler, m.model().analysis, LoadPath::thermal_ramp(0.0), 1, system, state);
@@ -63,7 +64,8 @@ TEST(StaticSolver, FollowsTheDriverAtALaterTime) {
   driver.profile = TimeFunction::constant(1.0);
   m.model().drivers.push_back(driver);
   const Assembler assembler(m.model());
-  DenseLinearSystem system(assembler.n_unknowns());
+  const auto linear_system = make_linear_system(assembler);
+  LinearSystem& system = *linear_system;
   MotionState state = rest_state(assembler, 0.0);
   const StaticResult result =
       solve_static(assembler, m.model().analysis, LoadPath::time_step(0.0, 0.2), 1, system, state);

@@ -1,5 +1,6 @@
 #include "deploydyn/assembly/assembler.hpp"
 
+#include <array>
 #include <stdexcept>
 
 #include "deploydyn/constraints/prescribed_coordinates.hpp"
@@ -9,6 +10,14 @@ namespace deploydyn {
 namespace {
 
 constexpr const char* kAxisNames[] = {"x", "y", "z"};
+
+// Local Φ and Jacobian of one constraint on the stack: at most 3 equations (a support) on
+// 6 unknowns (a 3D driver's two nodes).
+constexpr int kMaxConstraintEquations = 3;
+constexpr int kMaxConstraintDofs = 6;
+using LocalVector = Eigen::Matrix<double, Eigen::Dynamic, 1, 0, kMaxConstraintEquations, 1>;
+using LocalJacobian = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0,
+                                    kMaxConstraintEquations, kMaxConstraintDofs>;
 
 bar::Section section_of(const BarElement& e, const Model& model) {
   return {model.materials[e.material].youngs_modulus_Pa * e.area_m2, e.reference_length_m};
@@ -85,6 +94,20 @@ Assembler::Assembler(const Model& model) : model_(model), dofs_(model) {
     n_equations_ += c->n_equations();
   }
   for (int index : driver_constraint_) driver_rows_.push_back(first_row_[index]);
+
+  const int block = 2 * model.dimension;
+  n_matrix_entries_ = model.n_bars() * block * block;
+  for (const Node& node : model.nodes) n_matrix_entries_ += node.point_mass_kg != 0.0 ? model.dimension : 0;
+  for (const auto& c : constraints_) {
+    const int n_local = static_cast<int>(c->dofs().size());
+    if (c->n_equations() > kMaxConstraintEquations || n_local > kMaxConstraintDofs) {
+      throw std::logic_error("a constraint touches more unknowns than the assembler's local buffers hold");
+    }
+    n_matrix_entries_ += 2 * c->n_equations() * n_local + (c->nonlinear() ? n_local * n_local : 0);
+  }
+  Eigen::VectorXd unit = Eigen::VectorXd::Ones(n_dofs()), row_sums;
+  mass_times(unit, row_sums);  // row sums of M ≥ its diagonal, all entries being ≥ 0
+  mass_scale_ = row_sums.size() > 0 && row_sums.maxCoeff() > 0.0 ? row_sums.maxCoeff() : 1.0;
 }
 
 Eigen::VectorXd Assembler::initial_coordinates() const {
@@ -186,9 +209,10 @@ void Assembler::mass_times(const Eigen::VectorXd& a, Eigen::VectorXd& out) const
 
 void Assembler::constraints(const Eigen::VectorXd& q, double t, Eigen::VectorXd& phi) const {
   phi.resize(n_equations());
+  LocalJacobian jacobian;
   for (std::size_t c = 0; c < constraints_.size(); ++c) {
     const Constraint& con = *constraints_[c];
-    Eigen::MatrixXd jacobian(con.n_equations(), con.dofs().size());
+    jacobian.resize(con.n_equations(), static_cast<Eigen::Index>(con.dofs().size()));
     con.evaluate(q, t, phi.segment(first_row_[c], con.n_equations()), jacobian);
   }
 }
@@ -196,13 +220,16 @@ void Assembler::constraints(const Eigen::VectorXd& q, double t, Eigen::VectorXd&
 void Assembler::constraint_force(const Eigen::VectorXd& q, double t, const Eigen::VectorXd& lambda,
                                  Eigen::VectorXd& f) const {
   f.setZero(n_dofs());
+  LocalVector phi;
+  LocalJacobian jacobian;
   for (std::size_t c = 0; c < constraints_.size(); ++c) {
     const Constraint& con = *constraints_[c];
-    Eigen::VectorXd phi(con.n_equations());
-    Eigen::MatrixXd jacobian(con.n_equations(), con.dofs().size());
+    const std::span<const int> dofs = con.dofs();
+    phi.resize(con.n_equations());
+    jacobian.resize(con.n_equations(), static_cast<Eigen::Index>(dofs.size()));
     con.evaluate(q, t, phi, jacobian);
-    const Eigen::VectorXd fc = jacobian.transpose() * lambda.segment(first_row_[c], con.n_equations());
-    for (std::size_t i = 0; i < con.dofs().size(); ++i) f[con.dofs()[i]] += fc[i];
+    const auto multipliers = lambda.segment(first_row_[c], con.n_equations());
+    for (std::size_t i = 0; i < dofs.size(); ++i) f[dofs[i]] += jacobian.col(i).dot(multipliers);
   }
 }
 
@@ -217,43 +244,82 @@ void Assembler::constraint_rates(const Eigen::VectorXd& q, const Eigen::VectorXd
   }
 }
 
-void Assembler::iteration_matrix(const Eigen::VectorXd& q, double t, double thermal_factor,
-                                 const Eigen::VectorXd& lambda, const MatrixWeights& w,
-                                 LinearSystem& system) const {
-  system.set_zero();
+// The one traversal of the iteration matrix's blocks, shared by the pattern (matrix_entries)
+// and the values (iteration_matrix) so that the two cannot disagree on order. Fixed order:
+// bars, point masses, then per constraint s·B, s·Bᵀ and (if nonlinear) H(λ).
+template <class Emit>
+void Assembler::for_each_matrix_block(const Eigen::VectorXd& q, double t, double thermal_factor,
+                                      const Eigen::VectorXd& lambda, const MatrixWeights& w,
+                                      Emit&& emit) const {
   with_dimension(model_.dimension, [&](auto dim) {
     constexpr int D = decltype(dim)::value;
     for_each_bar<D>(q, t, thermal_factor, [&](int b, std::span<const int> d, const auto& s,
                                               const bar::Section& section) {
       bar::ElementMatrix<D> k = w.stiffness * bar::tangent<D>(s, section);
       if (w.mass != 0.0) k += w.mass * bar::mass_matrix<D>(model_.bars[b].mass_kg, model_.analysis.mass);
-      system.add(d, d, k);
+      emit(d, d, k);
     });
   });
-  if (w.mass != 0.0) {
-    for (int node = 0; node < model_.n_nodes(); ++node) {
-      if (model_.nodes[node].point_mass_kg == 0.0) continue;
-      for (int axis = 0; axis < model_.dimension; ++axis) {
-        const int i = dofs_.index(node, axis);
-        const Eigen::Matrix<double, 1, 1> m(w.mass * model_.nodes[node].point_mass_kg);
-        system.add(std::span<const int>(&i, 1), std::span<const int>(&i, 1), m);
-      }
+  for (int node = 0; node < model_.n_nodes(); ++node) {
+    if (model_.nodes[node].point_mass_kg == 0.0) continue;
+    for (int axis = 0; axis < model_.dimension; ++axis) {
+      const int i = dofs_.index(node, axis);
+      const Eigen::Matrix<double, 1, 1> m(w.mass * model_.nodes[node].point_mass_kg);
+      emit(std::span<const int>(&i, 1), std::span<const int>(&i, 1), m);
     }
   }
+  LocalVector phi;
+  LocalJacobian jacobian;
+  std::array<int, kMaxConstraintEquations> rows{};
   for (std::size_t c = 0; c < constraints_.size(); ++c) {
     const Constraint& con = *constraints_[c];
     const int n_eq = con.n_equations();
     const auto n_local = static_cast<Eigen::Index>(con.dofs().size());
-    Eigen::VectorXd phi(n_eq);
-    Eigen::MatrixXd jacobian(n_eq, n_local);
+    phi.resize(n_eq);
+    jacobian.resize(n_eq, n_local);
     con.evaluate(q, t, phi, jacobian);
-    std::vector<int> rows(n_eq);
     for (int k = 0; k < n_eq; ++k) rows[k] = n_dofs() + first_row_[c] + k;
-    system.add_symmetric_pair(rows, con.dofs(), w.constraint_scale * jacobian);
-    Eigen::MatrixXd hessian = Eigen::MatrixXd::Zero(n_local, n_local);
-    con.add_hessian_term(q, t, lambda.segment(first_row_[c], n_eq), hessian);
-    if (!hessian.isZero(0.0)) system.add(con.dofs(), con.dofs(), w.stiffness * hessian);
+    const std::span<const int> row_span(rows.data(), n_eq);
+    jacobian *= w.constraint_scale;
+    emit(row_span, con.dofs(), jacobian);
+    emit(con.dofs(), row_span, jacobian.transpose());
+    if (con.nonlinear()) {
+      Eigen::MatrixXd hessian = Eigen::MatrixXd::Zero(n_local, n_local);
+      con.add_hessian_term(q, t, lambda.segment(first_row_[c], n_eq), hessian);
+      emit(con.dofs(), con.dofs(), w.stiffness * hessian);
+    }
   }
+}
+
+void Assembler::iteration_matrix(const Eigen::VectorXd& q, double t, double thermal_factor,
+                                 const Eigen::VectorXd& lambda, const MatrixWeights& w,
+                                 LinearSystem& system) const {
+  if (static_cast<int>(system.slots().size()) != n_matrix_entries_ || system.size() != n_unknowns()) {
+    throw std::logic_error("iteration_matrix: the linear system was not analysed for this model");
+  }
+  system.set_zero();
+  const std::span<double> values = system.values();
+  const int* slot = system.slots().data();
+  for_each_matrix_block(q, t, thermal_factor, lambda, w,
+                        [&](std::span<const int> rows, std::span<const int> cols, const auto& block) {
+                          for (std::size_t j = 0; j < cols.size(); ++j) {
+                            for (std::size_t i = 0; i < rows.size(); ++i) values[*slot++] += block(i, j);
+                          }
+                        });
+}
+
+std::vector<MatrixEntry> Assembler::matrix_entries() const {
+  std::vector<MatrixEntry> entries;
+  entries.reserve(n_matrix_entries_);
+  const Eigen::VectorXd q = initial_coordinates();
+  const Eigen::VectorXd lambda = Eigen::VectorXd::Zero(n_equations());
+  for_each_matrix_block(q, 0.0, 1.0, lambda, {1.0, 1.0, 1.0},
+                        [&](std::span<const int> rows, std::span<const int> cols, const auto&) {
+                          for (const int col : cols) {
+                            for (const int row : rows) entries.push_back({row, col});
+                          }
+                        });
+  return entries;
 }
 
 double Assembler::stiffness_scale(const Eigen::VectorXd& q, double t) const {
@@ -266,12 +332,6 @@ double Assembler::stiffness_scale(const Eigen::VectorXd& q, double t) const {
     });
   });
   return scale > 0.0 ? scale : 1.0;
-}
-
-double Assembler::mass_scale() const {
-  Eigen::VectorXd unit = Eigen::VectorXd::Ones(n_dofs()), diagonal_bound;
-  mass_times(unit, diagonal_bound);  // row sums of M ≥ its diagonal, all entries being ≥ 0
-  return diagonal_bound.size() > 0 && diagonal_bound.maxCoeff() > 0.0 ? diagonal_bound.maxCoeff() : 1.0;
 }
 
 BarResult Assembler::bar_result(int b, const Eigen::VectorXd& q, double t) const {

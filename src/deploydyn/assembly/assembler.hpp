@@ -62,13 +62,17 @@ class Assembler {
     double stiffness = 1.0;
     double constraint_scale = 1.0;
   };
+  // Writes the values into `system`, which must have been analysed with matrix_entries()
+  // (assembly/linear_system_factory.hpp does that).
   void iteration_matrix(const Eigen::VectorXd& q, double t, double thermal_factor,
                         const Eigen::VectorXd& lambda, const MatrixWeights& weights,
                         LinearSystem& system) const;
+  // The (row, col) of every value iteration_matrix writes, in its order: the pattern.
+  std::vector<MatrixEntry> matrix_entries() const;
   // Largest diagonal entries of K at q and of M: the scales that size the constraint rows of
   // the iteration matrix like its force block.
   double stiffness_scale(const Eigen::VectorXd& q, double t) const;
-  double mass_scale() const;
+  double mass_scale() const { return mass_scale_; }
 
   BarResult bar_result(int bar, const Eigen::VectorXd& q, double t) const;
   double strain_energy(const Eigen::VectorXd& q, double t) const;
@@ -82,6 +86,10 @@ class Assembler {
   std::string describe_equation(int row) const;
 
  private:
+  template <class Emit>
+  void for_each_matrix_block(const Eigen::VectorXd& q, double t, double thermal_factor,
+                             const Eigen::VectorXd& lambda, const MatrixWeights& weights,
+                             Emit&& emit) const;
   template <int D>
   void for_each_bar(const Eigen::VectorXd& q, double t, double thermal_factor, auto&& visit) const;
   double thermal_strain(int bar, double t) const;
@@ -94,6 +102,8 @@ class Assembler {
   std::vector<int> driver_rows_;                          // [driver] → first λ row
   std::vector<int> driver_constraint_;                    // [driver] → index in constraints_
   int n_equations_ = 0;
+  int n_matrix_entries_ = 0;
+  double mass_scale_ = 1.0;
 };
 
 }  // namespace deploydyn

@@ -1,6 +1,7 @@
 #pragma once
 // Dense LU back end (Eigen PartialPivLU): right for small models such as the four-bar
 // linkages, where a 13 × 13 matrix is factorised faster than any sparse analysis.
+// Values are stored column-major, so the slot of (row, col) is row + col · size.
 
 #include <Eigen/LU>
 
@@ -10,21 +11,19 @@ namespace deploydyn {
 
 class DenseLinearSystem final : public LinearSystem {
  public:
-  explicit DenseLinearSystem(int size) : matrix_(Eigen::MatrixXd::Zero(size, size)), lu_(size) {}
+  void solve(Eigen::Ref<Eigen::VectorXd> rhs) override;
+  const char* name() const override { return "dense LU"; }
 
-  int size() const override { return static_cast<int>(matrix_.rows()); }
-  void set_zero() override { matrix_.setZero(); }
-  void add(std::span<const int> rows, std::span<const int> cols,
-           const Eigen::Ref<const Eigen::MatrixXd>& block) override;
-  void add_symmetric_pair(std::span<const int> rows, std::span<const int> cols,
-                          const Eigen::Ref<const Eigen::MatrixXd>& block) override;
-  FactorizationStatus factorize() override;
-  void solve(Eigen::Ref<Eigen::VectorXd> rhs) const override;
-
-  const Eigen::MatrixXd& matrix() const { return matrix_; }
+ protected:
+  FactorizationStatus factorize_finite() override;
+  void build_storage(std::span<const MatrixEntry> entries) override;
+  MatrixEntry position(int value_index) const override {
+    return {value_index % size_, value_index / size_};
+  }
 
  private:
-  Eigen::MatrixXd matrix_;
+  Eigen::Map<const Eigen::MatrixXd> matrix() const { return {values_.data(), size_, size_}; }
+
   Eigen::PartialPivLU<Eigen::MatrixXd> lu_;
 };
 

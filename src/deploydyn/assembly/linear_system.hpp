@@ -1,24 +1,34 @@
 #pragma once
-// The iteration matrix of a Newton step and its solution, behind one interface so that a
-// sparse back end can replace the dense one without touching elements or solvers.
+// The iteration matrix of a Newton step and its solution, behind one interface so that dense
+// and sparse back ends are interchangeable without touching elements or solvers.
 //
 // Layout: n_dofs unknowns q first, then one row/column per constraint equation:
 //   [ A   s Bᵀ ]
 //   [ s B  0   ]
-// Elements and constraints add small blocks at global indices; the back end decides storage.
+// The sparsity pattern is fixed once per model: analyze() receives the (row, col) of every
+// value the assembler will write, in the order it writes them, and returns through slots()
+// where each one lives in values(). Assembly is then `values[slots[k]] += v_k`: no allocation
+// and no search per step. Sparse back ends do their symbolic analysis in analyze() too.
 
 #include <Eigen/Core>
 #include <span>
 #include <string>
+#include <vector>
 
 namespace deploydyn {
+
+struct MatrixEntry {
+  int row = 0;
+  int col = 0;
+};
 
 struct FactorizationStatus {
   bool ok = true;
   double reciprocal_condition = 1.0;  // estimate; 0 when exactly singular
   std::string message;                // why it failed
-  // When singular: the unit vector the matrix (nearly) maps to zero, in the unknowns' order
-  // (q, then λ). Its large entries name the free motion or the redundant constraints.
+  // When singular: a unit vector the matrix (nearly) maps to zero, in the unknowns' order
+  // (q, then λ). Its large entries name the free motion or the redundant constraints. Empty
+  // when the back end cannot say.
   Eigen::VectorXd null_vector;
 };
 
@@ -26,17 +36,47 @@ class LinearSystem {
  public:
   virtual ~LinearSystem() = default;
 
-  virtual int size() const = 0;
-  virtual void set_zero() = 0;
-  // Adds `block` at rows × cols (global indices).
-  virtual void add(std::span<const int> rows, std::span<const int> cols,
-                   const Eigen::Ref<const Eigen::MatrixXd>& block) = 0;
-  // Adds `block` and its transpose mirrored: rows × cols and cols × rows (for B and Bᵀ).
-  virtual void add_symmetric_pair(std::span<const int> rows, std::span<const int> cols,
-                                  const Eigen::Ref<const Eigen::MatrixXd>& block) = 0;
-  virtual FactorizationStatus factorize() = 0;
+  // Sets the pattern: a size × size matrix whose only non-zeros are at `entries` (repeats
+  // share a slot, their values add up). Call once; every value starts at zero.
+  void analyze(int size, std::span<const MatrixEntry> entries) {
+    size_ = size;
+    slots_.assign(entries.size(), 0);
+    build_storage(entries);
+  }
+  int size() const { return size_; }
+  // Where the value of entry k (in analyze()'s order) lives in values().
+  std::span<const int> slots() const { return slots_; }
+  std::span<double> values() { return values_; }
+  void set_zero() { std::fill(values_.begin(), values_.end(), 0.0); }
+
+  // LU factorization of the current values; a singular or non-finite matrix is a status.
+  FactorizationStatus factorize();
   // Overwrites rhs with the solution; call after a successful factorize().
-  virtual void solve(Eigen::Ref<Eigen::VectorXd> rhs) const = 0;
+  virtual void solve(Eigen::Ref<Eigen::VectorXd> rhs) = 0;
+  // "dense LU", "KLU", "UMFPACK": for reports and benchmarks.
+  virtual const char* name() const = 0;
+
+  // The matrix as dense, for diagnosis of small systems and for tests.
+  Eigen::MatrixXd to_dense() const;
+
+ protected:
+  // factorize() once the values are known to be finite.
+  virtual FactorizationStatus factorize_finite() = 0;
+  // The status of a factorization found singular: the message, and for systems small enough
+  // (an SVD of the dense matrix) the null vector.
+  FactorizationStatus singular(double reciprocal_condition) const;
+  // Below this estimated reciprocal condition number a solution carries no correct digits
+  // (machine epsilon is 2.2e-16), so the matrix is treated as singular.
+  static constexpr double kSingularReciprocalCondition = 1e-14;
+
+  // Sizes values_ and fills slots_ for the pattern.
+  virtual void build_storage(std::span<const MatrixEntry> entries) = 0;
+  // (row, col) of values_[i]; used by to_dense().
+  virtual MatrixEntry position(int value_index) const = 0;
+
+  int size_ = 0;
+  std::vector<int> slots_;
+  std::vector<double> values_;
 };
 
 }  // namespace deploydyn

@@ -25,8 +25,11 @@ class Constraint {
   virtual void evaluate(const Eigen::VectorXd& q, double t, Eigen::Ref<Eigen::VectorXd> phi,
                         Eigen::Ref<Eigen::MatrixXd> jacobian) const = 0;
 
-  // Adds H(λ) (local, dofs × dofs). The constraints we have are linear in q, so the default
-  // adds nothing; a constraint nonlinear in q overrides it.
+  // Whether Φ is nonlinear in q, i.e. has a Hessian term: the iteration matrix reserves room
+  // for H(λ) only then. The constraints we have are linear.
+  virtual bool nonlinear() const { return false; }
+  // Adds H(λ) (local, dofs × dofs). The default adds nothing; a constraint nonlinear in q
+  // overrides it together with nonlinear().
   virtual void add_hessian_term(const Eigen::VectorXd& q, double t,
                                 Eigen::Ref<const Eigen::VectorXd> lambda,
                                 Eigen::Ref<Eigen::MatrixXd> hessian) const {

@@ -417,7 +417,7 @@ class ModelReader {
   void read_analysis(const YamlValue& spec) {
     spec.expect_keys(
         {"type", "end", "step", "output_interval", "load_steps", "mass", "integrator", "newton",
-         "adaptive"});
+         "adaptive", "linear_solver"});
     AnalysisOptions& analysis = model_.analysis;
     if (const auto type = spec.find("type")) {
       analysis.type = type->choice({"static", "dynamic"}) == 0 ? AnalysisType::quasi_static
@@ -447,6 +447,11 @@ class ModelReader {
     if (const auto mass = spec.find("mass")) {
       analysis.mass = mass->choice({"consistent", "lumped"}) == 0 ? MassMatrixKind::consistent
                                                                   : MassMatrixKind::lumped;
+    }
+    if (const auto solver = spec.find("linear_solver")) {
+      constexpr LinearSolverKind kinds[] = {LinearSolverKind::automatic, LinearSolverKind::dense,
+                                            LinearSolverKind::klu, LinearSolverKind::umfpack};
+      analysis.linear_solver = kinds[solver->choice({"automatic", "dense", "klu", "umfpack"})];
     }
     if (const auto integrator = spec.find("integrator")) read_integrator(*integrator);
     if (const auto newton = spec.find("newton")) read_newton(*newton);

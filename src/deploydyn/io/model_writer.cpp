@@ -227,6 +227,8 @@ void emit_analysis(YAML::Emitter& out, const Model& model) {
   out << analysis.load_steps;
   emit_key(out, "mass");
   out << (analysis.mass == MassMatrixKind::consistent ? "consistent" : "lumped");
+  emit_key(out, "linear_solver");
+  out << to_string(analysis.linear_solver);
   emit_key(out, "integrator");
   out << YAML::Flow << YAML::BeginMap;
   emit_key(out, "type");

@@ -111,6 +111,15 @@ struct AdaptiveOptions {
   double max_step_s = 0.0;    // 0: the output interval
 };
 
+// Back end of the Newton iteration matrix (assembly/linear_system_factory.hpp). `automatic`
+// takes dense LU for small models and KLU above a size where sparse wins (measured: bench/).
+enum class LinearSolverKind { automatic, dense, klu, umfpack };
+// As model files spell them: "automatic", "dense", "klu", "umfpack".
+inline const char* to_string(LinearSolverKind kind) {
+  constexpr const char* kNames[] = {"automatic", "dense", "klu", "umfpack"};
+  return kNames[static_cast<int>(kind)];
+}
+
 struct AnalysisOptions {
   AnalysisType type = AnalysisType::dynamic;
   double end_time_s = 1.0;
@@ -121,6 +130,7 @@ struct AnalysisOptions {
   IntegratorOptions integrator;
   AdaptiveOptions adaptive;
   MassMatrixKind mass = MassMatrixKind::consistent;
+  LinearSolverKind linear_solver = LinearSolverKind::automatic;
 };
 
 struct OutputOptions {

@@ -6,7 +6,7 @@
 #include <chrono>
 #include <cmath>
 
-#include "deploydyn/assembly/dense_linear_system.hpp"
+#include "deploydyn/assembly/linear_system_factory.hpp"
 #include "deploydyn/solvers/consistent_rates.hpp"
 #include "deploydyn/solvers/generalized_alpha.hpp"
 #include "deploydyn/solvers/static_solver.hpp"
@@ -110,7 +110,8 @@ RunReport run_analysis(const Assembler& assembler, RecordSink& sink, const RunCo
   const auto wall_start = std::chrono::steady_clock::now();
   const AnalysisOptions& options = assembler.model().analysis;
   RunReport report;
-  DenseLinearSystem system(assembler.n_unknowns());
+  const std::unique_ptr<LinearSystem> linear_system = make_linear_system(assembler);
+  LinearSystem& system = *linear_system;
   auto finish = [&](RunReport& r) -> RunReport {
     r.wall_time_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start).count();
     return r;

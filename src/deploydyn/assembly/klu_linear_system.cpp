@@ -1,0 +1,83 @@
+#include "deploydyn/assembly/klu_linear_system.hpp"
+
+#include <suitesparse/klu.h>
+
+#include <stdexcept>
+
+namespace deploydyn {
+namespace {
+
+// A refactorization keeps the old pivot order; when its reciprocal condition estimate falls
+// this far below the last full factorization's, pivots are searched anew.
+constexpr double kRefactorConditionLoss = 1e-3;
+
+}  // namespace
+
+struct KluLinearSystem::Handles {
+  klu_common common{};
+  klu_symbolic* symbolic = nullptr;
+  klu_numeric* numeric = nullptr;
+
+  Handles() { klu_defaults(&common); }
+  ~Handles() {
+    if (numeric != nullptr) klu_free_numeric(&numeric, &common);
+    if (symbolic != nullptr) klu_free_symbolic(&symbolic, &common);
+  }
+};
+
+KluLinearSystem::KluLinearSystem() : klu_(std::make_unique<Handles>()) {}
+KluLinearSystem::~KluLinearSystem() = default;
+
+void KluLinearSystem::analyze_pattern() {
+  if (klu_->numeric != nullptr) klu_free_numeric(&klu_->numeric, &klu_->common);
+  if (klu_->symbolic != nullptr) klu_free_symbolic(&klu_->symbolic, &klu_->common);
+  klu_->symbolic = klu_analyze(size_, column_start_.data(), row_index_.data(), &klu_->common);
+  if (klu_->symbolic == nullptr) throw std::runtime_error("KLU could not analyse the matrix pattern");
+}
+
+FactorizationStatus KluLinearSystem::factorize_finite() {
+  if (klu_->numeric == nullptr) return factorize_fully();
+  Handles& k = *klu_;
+  const bool refactored = klu_refactor(column_start_.data(), row_index_.data(), values_.data(),
+                                       k.symbolic, k.numeric, &k.common) != 0 &&
+                          klu_rcond(k.symbolic, k.numeric, &k.common) != 0;
+  if (!refactored || !(k.common.rcond > kRefactorConditionLoss * reciprocal_condition_at_full_)) {
+    return factorize_fully();
+  }
+  FactorizationStatus status;
+  status.reciprocal_condition = k.common.rcond;
+  return status;
+}
+
+FactorizationStatus KluLinearSystem::factorize_fully() {
+  Handles& k = *klu_;
+  if (k.numeric != nullptr) klu_free_numeric(&k.numeric, &k.common);
+  ++full_factorizations_;
+  k.numeric = klu_factor(column_start_.data(), row_index_.data(), values_.data(), k.symbolic, &k.common);
+  if (k.numeric == nullptr || k.common.status == KLU_SINGULAR) {
+    const int column = k.common.singular_col;
+    FactorizationStatus status = singular(0.0);
+    if (status.null_vector.size() == 0 && column >= 0 && column < size_) {
+      // Too large for an SVD: KLU's first zero pivot names one unknown of the null space.
+      status.null_vector = Eigen::VectorXd::Unit(size_, column);
+    }
+    if (k.numeric != nullptr) klu_free_numeric(&k.numeric, &k.common);
+    return status;
+  }
+  klu_rcond(k.symbolic, k.numeric, &k.common);
+  reciprocal_condition_at_full_ = k.common.rcond;
+  if (!(k.common.rcond > kSingularReciprocalCondition)) {
+    const double rcond = k.common.rcond;
+    klu_free_numeric(&k.numeric, &k.common);
+    return singular(rcond);
+  }
+  FactorizationStatus status;
+  status.reciprocal_condition = k.common.rcond;
+  return status;
+}
+
+void KluLinearSystem::solve(Eigen::Ref<Eigen::VectorXd> rhs) {
+  klu_solve(klu_->symbolic, klu_->numeric, size_, 1, rhs.data(), &klu_->common);
+}
+
+}  // namespace deploydyn

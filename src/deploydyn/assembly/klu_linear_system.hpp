@@ -1,0 +1,36 @@
+#pragma once
+// KLU (Davis & Palamadai Natarajan, ACM TOMS 37, 2010): BTF + AMD ordering and left-looking
+// partial-pivoting LU. Refactorizes with the pivot order of its last full factorization while
+// that stays well conditioned, which skips the pivot search on nearly unchanged matrices.
+
+#include <memory>
+
+#include "deploydyn/assembly/sparse_linear_system.hpp"
+
+namespace deploydyn {
+
+class KluLinearSystem final : public SparseLinearSystem {
+ public:
+  KluLinearSystem();
+  ~KluLinearSystem() override;
+  KluLinearSystem(const KluLinearSystem&) = delete;
+  KluLinearSystem& operator=(const KluLinearSystem&) = delete;
+
+  void solve(Eigen::Ref<Eigen::VectorXd> rhs) override;
+  const char* name() const override { return "KLU"; }
+
+  int full_factorizations() const { return full_factorizations_; }
+
+ protected:
+  FactorizationStatus factorize_finite() override;
+  void analyze_pattern() override;
+
+ private:
+  struct Handles;  // klu_common, klu_symbolic, klu_numeric (klu.h stays out of this header)
+  FactorizationStatus factorize_fully();
+  std::unique_ptr<Handles> klu_;
+  double reciprocal_condition_at_full_ = 0.0;
+  int full_factorizations_ = 0;
+};
+
+}  // namespace deploydyn

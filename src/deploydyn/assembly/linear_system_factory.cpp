@@ -1,0 +1,29 @@
+#include "deploydyn/assembly/linear_system_factory.hpp"
+
+#include "deploydyn/assembly/dense_linear_system.hpp"
+#include "deploydyn/assembly/klu_linear_system.hpp"
+#include "deploydyn/assembly/umfpack_linear_system.hpp"
+
+namespace deploydyn {
+
+LinearSolverKind choose_linear_solver(LinearSolverKind requested, int n_unknowns) {
+  if (requested != LinearSolverKind::automatic) return requested;
+  return n_unknowns <= kLargestDenseSystem ? LinearSolverKind::dense : LinearSolverKind::klu;
+}
+
+std::unique_ptr<LinearSystem> make_linear_system(const Assembler& assembler, LinearSolverKind kind) {
+  std::unique_ptr<LinearSystem> system;
+  switch (choose_linear_solver(kind, assembler.n_unknowns())) {
+    case LinearSolverKind::klu: system = std::make_unique<KluLinearSystem>(); break;
+    case LinearSolverKind::umfpack: system = std::make_unique<UmfpackLinearSystem>(); break;
+    default: system = std::make_unique<DenseLinearSystem>(); break;
+  }
+  system->analyze(assembler.n_unknowns(), assembler.matrix_entries());
+  return system;
+}
+
+std::unique_ptr<LinearSystem> make_linear_system(const Assembler& assembler) {
+  return make_linear_system(assembler, assembler.model().analysis.linear_solver);
+}
+
+}  // namespace deploydyn
