@@ -56,7 +56,7 @@ double measured_spectral_radius(const IntegratorOptions& options) {
   m.model().analysis.integrator = options;
   m.model().analysis.newton.force_tolerance = 1e-12;
   const Assembler assembler(m.model());
-  const GeneralizedAlphaIntegrator integrator(assembler, m.model().analysis);
+  GeneralizedAlphaIntegrator integrator(assembler, m.model().analysis);
   const auto linear_system = make_linear_system(assembler);
   LinearSystem& system = *linear_system;
   constexpr double kStep_s = 1000.0;  // ω h = 1e6

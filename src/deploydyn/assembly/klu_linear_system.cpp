@@ -18,7 +18,12 @@ struct KluLinearSystem::Handles {
   klu_symbolic* symbolic = nullptr;
   klu_numeric* numeric = nullptr;
 
-  Handles() { klu_defaults(&common); }
+  Handles() {
+    klu_defaults(&common);
+    // No row scaling: the assembler already sizes the constraint rows like the force block
+    // (DESIGN §2), and rescaling at every refactorization cost 9 % of a roof's time step.
+    common.scale = 0;
+  }
   ~Handles() {
     if (numeric != nullptr) klu_free_numeric(&numeric, &common);
     if (symbolic != nullptr) klu_free_symbolic(&symbolic, &common);

@@ -75,23 +75,22 @@ std::string failure_message(const FailureReport& f) {
 class WorkCounter {
  public:
   explicit WorkCounter(const Assembler& assembler) : assembler_(assembler) {}
-  void start(const MotionState& s) { applied_ = applied_force(s); }
+  void start(const MotionState& s) { applied_force(s, applied_); }
   void advance(const Eigen::VectorXd& q_before, const MotionState& s) {
-    const Eigen::VectorXd applied = applied_force(s);
-    work_J_ += 0.5 * (applied_ + applied).dot(s.q - q_before);
-    applied_ = applied;
+    applied_force(s, next_);
+    work_J_ += 0.5 * (applied_ + next_).dot(s.q - q_before);
+    applied_.swap(next_);
   }
   double work_J() const { return work_J_; }
 
  private:
-  Eigen::VectorXd applied_force(const MotionState& s) const {
-    Eigen::VectorXd external, reaction;
-    assembler_.external_force(s.time_s, external);
-    assembler_.constraint_force(s.q, s.time_s, s.lambda, reaction);
-    return external - reaction;
+  void applied_force(const MotionState& s, Eigen::VectorXd& out) {
+    assembler_.external_force(s.time_s, out);
+    assembler_.constraint_force(s.q, s.time_s, s.lambda, reaction_);
+    out -= reaction_;
   }
   const Assembler& assembler_;
-  Eigen::VectorXd applied_;
+  Eigen::VectorXd applied_, next_, reaction_;
   double work_J_ = 0.0;
 };
 
@@ -176,8 +175,9 @@ RunReport run_analysis(const Assembler& assembler, RecordSink& sink, const RunCo
   work.start(state);
   sink.record(make_step_record(assembler, state, 0.0));
 
-  const GeneralizedAlphaIntegrator integrator(assembler, options);
+  GeneralizedAlphaIntegrator integrator(assembler, options);
   StepController steps(options);
+  MotionState next;  // the step's trial state; swapped with `state` when accepted
   while (state.time_s < options.end_time_s) {
     if (control.stop != nullptr && control.stop->load()) {
       report.status = RunStatus::interrupted;
@@ -185,7 +185,7 @@ RunReport run_analysis(const Assembler& assembler, RecordSink& sink, const RunCo
       return finish(report);
     }
     const double step = steps.next_step(state.time_s);
-    MotionState next = state;
+    next = state;  // copies into next's storage: no allocation after the first step
     NewtonResult newton;
     if (dynamic) {
       newton = integrator.step(step, system, next);
@@ -209,8 +209,8 @@ RunReport run_analysis(const Assembler& assembler, RecordSink& sink, const RunCo
       ++report.rejected_steps;
       continue;
     }
-    const Eigen::VectorXd q_before = std::move(state.q);
-    state = std::move(next);
+    std::swap(state, next);
+    const Eigen::VectorXd& q_before = next.q;
     ++report.steps;
     if (steps.reached_output(state.time_s)) {
       state.time_s = steps.next_output_time();  // exactly, not up to round-off

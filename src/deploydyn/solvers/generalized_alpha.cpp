@@ -1,36 +1,43 @@
 #include "deploydyn/solvers/generalized_alpha.hpp"
 
 #include <algorithm>
+#include <memory>
 
 namespace deploydyn {
-namespace {
 
+// The equations of one step, set up anew by start() for every step; vectors keep their size
+// from step to step, so a step allocates nothing.
 class GeneralizedAlphaEquations final : public DiscreteEquations {
  public:
-  GeneralizedAlphaEquations(const Assembler& assembler, const GeneralizedAlphaCoefficients& c,
-                            const MotionState& start, double h)
-      : assembler_(assembler),
-        t_(start.time_s + h),
-        c_pseudo_(1.0 / (c.beta * h * h)),
-        c_true_((1.0 - c.alpha_m) / (1.0 - c.alpha_f) * c_pseudo_),
-        // c·M dominates as h → 0 (DESIGN §2's 1/(β h²) scaling); K when h is large.
-        constraint_scale_(c_true_ * assembler.mass_scale() + assembler.stiffness_scale(start.q, start.time_s)) {
+  GeneralizedAlphaEquations(const Assembler& assembler, const GeneralizedAlphaCoefficients& c)
+      : assembler_(assembler), coefficients_(c) {}
+
+  void start(const MotionState& start, double h) {
+    const GeneralizedAlphaCoefficients& c = coefficients_;
+    t_ = start.time_s + h;
+    c_pseudo_ = 1.0 / (c.beta * h * h);
+    c_true_ = (1.0 - c.alpha_m) / (1.0 - c.alpha_f) * c_pseudo_;
+    // c·M dominates as h → 0 (DESIGN §2's 1/(β h²) scaling); K when h is large.
+    constraint_scale_ =
+        c_true_ * assembler_.mass_scale() + assembler_.stiffness_scale(start.q, start.time_s);
     predicted_ = start.q + h * start.v + (h * h * (0.5 - c.beta)) * start.pseudo_a;
     // q̈_{n+1} = c_true (q − q̃) + history, from the α recurrence.
     history_ = (c.alpha_m * start.pseudo_a - c.alpha_f * start.a) / (1.0 - c.alpha_f);
     assembler_.external_force(t_, external_);
   }
 
-  Eigen::VectorXd pseudo_acceleration(const Eigen::VectorXd& q) const {
-    return c_pseudo_ * (q - predicted_);
+  // a_{n+1} = (q − q̃) / (β h²) and q̈_{n+1}, into the given vectors.
+  void pseudo_acceleration(const Eigen::VectorXd& q, Eigen::VectorXd& out) const {
+    out = c_pseudo_ * (q - predicted_);
   }
-  Eigen::VectorXd acceleration(const Eigen::VectorXd& q) const {
-    return c_true_ * (q - predicted_) + history_;
+  void acceleration(const Eigen::VectorXd& q, Eigen::VectorXd& out) const {
+    out = c_true_ * (q - predicted_) + history_;
   }
 
   double residual(const Eigen::VectorXd& q, const Eigen::VectorXd& lambda, Eigen::VectorXd& r,
                   Eigen::VectorXd& phi) override {
-    assembler_.mass_times(acceleration(q), inertia_);
+    acceleration(q, acceleration_);
+    assembler_.mass_times(acceleration_, inertia_);
     assembler_.internal_force(q, t_, 1.0, internal_);
     assembler_.constraint_force(q, t_, lambda, reaction_);
     assembler_.constraints(q, t_, phi);
@@ -46,14 +53,13 @@ class GeneralizedAlphaEquations final : public DiscreteEquations {
 
  private:
   const Assembler& assembler_;
-  double t_;
-  double c_pseudo_;  // ∂a_{n+1}/∂q = 1/(β h²)
-  double c_true_;    // ∂q̈_{n+1}/∂q
-  double constraint_scale_;  // s (N/m): the size of the force block's diagonal
-  Eigen::VectorXd predicted_, history_, external_, inertia_, internal_, reaction_;
+  GeneralizedAlphaCoefficients coefficients_;
+  double t_ = 0.0;
+  double c_pseudo_ = 0.0;  // ∂a_{n+1}/∂q = 1/(β h²)
+  double c_true_ = 0.0;    // ∂q̈_{n+1}/∂q
+  double constraint_scale_ = 1.0;  // s (N/m): the size of the force block's diagonal
+  Eigen::VectorXd predicted_, history_, external_, acceleration_, inertia_, internal_, reaction_;
 };
-
-}  // namespace
 
 GeneralizedAlphaCoefficients GeneralizedAlphaCoefficients::from(const IntegratorOptions& o) {
   const double rho = o.rho_infinity;
@@ -76,26 +82,27 @@ GeneralizedAlphaCoefficients GeneralizedAlphaCoefficients::from(const Integrator
 
 GeneralizedAlphaIntegrator::GeneralizedAlphaIntegrator(const Assembler& assembler,
                                                        const AnalysisOptions& options)
-    : assembler_(assembler),
-      options_(options),
-      coefficients_(GeneralizedAlphaCoefficients::from(options.integrator)) {}
+    : coefficients_(GeneralizedAlphaCoefficients::from(options.integrator)),
+      equations_(std::make_unique<GeneralizedAlphaEquations>(assembler, coefficients_)),
+      newton_(options.newton) {}
 
-NewtonResult GeneralizedAlphaIntegrator::step(double h, LinearSystem& system,
-                                              MotionState& state) const {
+GeneralizedAlphaIntegrator::~GeneralizedAlphaIntegrator() = default;
+
+NewtonResult GeneralizedAlphaIntegrator::step(double h, LinearSystem& system, MotionState& state) {
   const GeneralizedAlphaCoefficients& c = coefficients_;
-  GeneralizedAlphaEquations equations(assembler_, c, state, h);
+  equations_->start(state, h);
   // Start Newton from the constant-acceleration guess q_n + h q̇_n + ½ h² a_n.
-  Eigen::VectorXd q = state.q + h * state.v + (0.5 * h * h) * state.pseudo_a;
-  Eigen::VectorXd lambda = state.lambda;
-  NewtonResult result = solve_newton(equations, options_.newton, system, q, lambda);
+  q_ = state.q + h * state.v + (0.5 * h * h) * state.pseudo_a;
+  lambda_ = state.lambda;
+  NewtonResult result = newton_.solve(*equations_, system, q_, lambda_);
   if (!result.converged) return result;
 
-  const Eigen::VectorXd pseudo_a = equations.pseudo_acceleration(q);
-  state.a = equations.acceleration(q);
-  state.v += h * ((1.0 - c.gamma) * state.pseudo_a + c.gamma * pseudo_a);
-  state.pseudo_a = pseudo_a;
-  state.q = std::move(q);
-  state.lambda = std::move(lambda);
+  equations_->pseudo_acceleration(q_, pseudo_a_);
+  equations_->acceleration(q_, state.a);
+  state.v += h * ((1.0 - c.gamma) * state.pseudo_a + c.gamma * pseudo_a_);
+  state.pseudo_a.swap(pseudo_a_);
+  state.q.swap(q_);
+  state.lambda.swap(lambda_);
   state.time_s += h;
   return result;
 }

@@ -18,6 +18,8 @@
 // s = c·max diag M + max diag K so that they match the force block: as h → 0 this is DESIGN
 // §2's 1/(β h²) scaling (times a mass), and it stays balanced for large steps too.
 
+#include <memory>
+
 #include "deploydyn/assembly/assembler.hpp"
 #include "deploydyn/solvers/motion_state.hpp"
 #include "deploydyn/solvers/newton.hpp"
@@ -30,12 +32,16 @@ struct GeneralizedAlphaCoefficients {
   static GeneralizedAlphaCoefficients from(const IntegratorOptions& options);
 };
 
+class GeneralizedAlphaEquations;
+
 class GeneralizedAlphaIntegrator {
  public:
   GeneralizedAlphaIntegrator(const Assembler& assembler, const AnalysisOptions& options);
+  ~GeneralizedAlphaIntegrator();
 
-  // Advances `state` by h. On failure `state` is left at the start of the step.
-  NewtonResult step(double h, LinearSystem& system, MotionState& state) const;
+  // Advances `state` by h. On failure `state` is left at the start of the step. Reuses its
+  // work vectors: after the first step, a step allocates nothing.
+  NewtonResult step(double h, LinearSystem& system, MotionState& state);
 
   // Estimate of the local error in q of the step that led to `state` from `before`:
   // ‖h² (β − 1/6) (a_{n+1} − a_n)‖∞ (m), the gap to a third-order Taylor step
@@ -45,9 +51,10 @@ class GeneralizedAlphaIntegrator {
   const GeneralizedAlphaCoefficients& coefficients() const { return coefficients_; }
 
  private:
-  const Assembler& assembler_;
-  const AnalysisOptions& options_;
   GeneralizedAlphaCoefficients coefficients_;
+  std::unique_ptr<GeneralizedAlphaEquations> equations_;
+  NewtonSolver newton_;
+  Eigen::VectorXd q_, lambda_, pseudo_a_;  // the step's iterate, kept for their storage
 };
 
 }  // namespace deploydyn

@@ -12,11 +12,17 @@ constexpr double kRoundOffShare = 16.0 * std::numeric_limits<double>::epsilon();
 
 }  // namespace
 
-NewtonResult solve_newton(DiscreteEquations& equations, const NewtonOptions& options,
-                          LinearSystem& system, Eigen::VectorXd& q, Eigen::VectorXd& lambda) {
+NewtonResult NewtonSolver::solve(DiscreteEquations& equations, LinearSystem& system,
+                                 Eigen::VectorXd& q, Eigen::VectorXd& lambda) {
+  const NewtonOptions& options = options_;
   const auto n_dofs = q.size();
   const auto n_eq = lambda.size();
-  Eigen::VectorXd r(n_dofs), phi(n_eq), step(n_dofs + n_eq);
+  r_.resize(n_dofs);
+  phi_.resize(n_eq);
+  step_.resize(n_dofs + n_eq);
+  Eigen::VectorXd& r = r_;
+  Eigen::VectorXd& phi = phi_;
+  Eigen::VectorXd& step = step_;
   NewtonResult result;
   double last_correction = std::numeric_limits<double>::infinity();
 

@@ -25,7 +25,17 @@ struct NewtonResult {
   Eigen::VectorXd null_vector;         // when the matrix was singular (see FactorizationStatus)
 };
 
-NewtonResult solve_newton(DiscreteEquations& equations, const NewtonOptions& options,
-                          LinearSystem& system, Eigen::VectorXd& q, Eigen::VectorXd& lambda);
+// Keeps its work vectors from one solve to the next: no heap work in a time step's Newton loop.
+class NewtonSolver {
+ public:
+  explicit NewtonSolver(const NewtonOptions& options) : options_(options) {}
+
+  NewtonResult solve(DiscreteEquations& equations, LinearSystem& system, Eigen::VectorXd& q,
+                     Eigen::VectorXd& lambda);
+
+ private:
+  NewtonOptions options_;
+  Eigen::VectorXd r_, phi_, step_;
+};
 
 }  // namespace deploydyn

@@ -67,6 +67,7 @@ StaticResult solve_static(const Assembler& assembler, const AnalysisOptions& opt
   const double scale = assembler.stiffness_scale(state.q, state.time_s);
   double increment = 1.0 / std::max(load_steps, 1);
   const double largest_move_m = kLargestMoveShare * shortest_bar_m(assembler.model());
+  NewtonSolver newton(options.newton);
   while (result.path_factor < 1.0) {
     const double target = std::min(1.0, result.path_factor + increment);
     const double t = path.start_time_s + target * (path.end_time_s - path.start_time_s);
@@ -74,7 +75,7 @@ StaticResult solve_static(const Assembler& assembler, const AnalysisOptions& opt
     StaticEquations equations(assembler, path, t, thermal, scale);
     Eigen::VectorXd q = state.q;
     Eigen::VectorXd lambda = state.lambda;
-    result.newton = solve_newton(equations, options.newton, system, q, lambda);
+    result.newton = newton.solve(equations, system, q, lambda);
     result.total_iterations += result.newton.iterations;
     const bool jumped = (q - state.q).lpNorm<Eigen::Infinity>() > largest_move_m;
     if (!result.newton.converged || jumped) {
