@@ -15,6 +15,7 @@
 #include "deploydyn/io/input_error.hpp"
 #include "deploydyn/io/model_loader.hpp"
 #include "deploydyn/output/run_to_folder.hpp"
+#include "generate_command.hpp"
 
 namespace {
 
@@ -150,9 +151,13 @@ int main(int argc, char** argv) {
   check->add_option("model", model_file, "Model file (YAML or JSON)")->required();
   check->add_option("--set,-s", sets, "Override a scalar of the model: PATH=VALUE");
 
+  cli::GenerateArguments generate_arguments;
+  CLI::App* generate = cli::add_generate_command(app, generate_arguments);
+
   // CLI11 would only say "a subcommand is required"; name the word it did not know instead.
-  if (const std::string first = argc > 1 ? argv[1] : "-"; first[0] != '-' && first != "run" && first != "check") {
-    fmt::print(stderr, "error: unknown command '{}'; commands are run and check (see --help)\n", first);
+  if (const std::string first = argc > 1 ? argv[1] : "-"; first[0] != '-' && first != "run" && first != "check" &&
+                                                            first != "generate") {
+    fmt::print(stderr, "error: unknown command '{}'; commands are run, check and generate (see --help)\n", first);
     return kExitBadInput;
   }
   try {
@@ -164,6 +169,7 @@ int main(int argc, char** argv) {
 
   try {
     if (*run) return run_command(model_file, out_dir, sets, quiet);
+    if (*generate) return cli::generate_command(generate_arguments);
     return check_command(model_file, sets);
   } catch (const InputError& e) {
     fmt::print(stderr, "error: {}\n", e.what());
