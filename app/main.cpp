@@ -1,4 +1,5 @@
-// deploydyn command-line tool: `run` a model into a result folder, `check` a model file.
+// deploydyn command-line tool: `run` a model into a result folder, `check` a model file, `study`
+// a list of load cases (app/study_command.hpp).
 // Exit codes: 0 success, 1 solver failure or interruption, 2 bad input.
 
 #include <CLI/CLI.hpp>
@@ -15,6 +16,8 @@
 #include "deploydyn/io/input_error.hpp"
 #include "deploydyn/io/model_loader.hpp"
 #include "deploydyn/output/run_to_folder.hpp"
+#include "generate_command.hpp"
+#include "study_command.hpp"
 
 namespace {
 
@@ -150,9 +153,15 @@ int main(int argc, char** argv) {
   check->add_option("model", model_file, "Model file (YAML or JSON)")->required();
   check->add_option("--set,-s", sets, "Override a scalar of the model: PATH=VALUE");
 
+  cli::GenerateArguments generate_arguments;
+  CLI::App* generate = cli::add_generate_command(app, generate_arguments);
+  cli::StudyArguments study_arguments;
+  CLI::App* study = cli::add_study_command(app, study_arguments);
+
   // CLI11 would only say "a subcommand is required"; name the word it did not know instead.
-  if (const std::string first = argc > 1 ? argv[1] : "-"; first[0] != '-' && first != "run" && first != "check") {
-    fmt::print(stderr, "error: unknown command '{}'; commands are run and check (see --help)\n", first);
+  if (const std::string first = argc > 1 ? argv[1] : "-"; first[0] != '-' && first != "run" && first != "check" &&
+                                                            first != "generate" && first != "study") {
+    fmt::print(stderr, "error: unknown command '{}'; commands are run, check, generate and study (see --help)\n", first);
     return kExitBadInput;
   }
   try {
@@ -164,6 +173,12 @@ int main(int argc, char** argv) {
 
   try {
     if (*run) return run_command(model_file, out_dir, sets, quiet);
+    if (*generate) return cli::generate_command(generate_arguments);
+    if (*study) {
+      std::signal(SIGINT, request_stop);
+      std::signal(SIGTERM, request_stop);
+      return cli::study_command(study_arguments, g_stop);
+    }
     return check_command(model_file, sets);
   } catch (const InputError& e) {
     fmt::print(stderr, "error: {}\n", e.what());

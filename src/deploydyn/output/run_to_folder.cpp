@@ -34,6 +34,12 @@ class FanOut final : public RecordSink {
 
 RunReport run_to_folder(const Model& model, const std::filesystem::path& folder,
                         const RunControl& control) {
+  Envelope envelope;
+  return run_to_folder(model, folder, control, envelope);
+}
+
+RunReport run_to_folder(const Model& model, const std::filesystem::path& folder,
+                        const RunControl& control, Envelope& envelope) {
   const Assembler assembler(model);  // may throw before any file is touched
   std::filesystem::create_directories(folder);
   // The model as run, --set overrides applied: the folder says how its results were made.
@@ -42,7 +48,7 @@ RunReport run_to_folder(const Model& model, const std::filesystem::path& folder,
     save_model(model, model_file);
   }
   HistoryWriter history(folder / model.output.history_file, model);
-  Envelope envelope;
+  envelope = Envelope();
   std::vector<RecordSink*> sinks{&history, &envelope};
   std::optional<VtkWriter> vtk;
   if (model.output.vtk) sinks.push_back(&vtk.emplace(folder / kVtkFolderName, model));

@@ -6,6 +6,7 @@
 
 #include <filesystem>
 
+#include "deploydyn/output/envelope.hpp"
 #include "deploydyn/solvers/analysis.hpp"
 
 namespace deploydyn {
@@ -14,5 +15,10 @@ namespace deploydyn {
 // and std::invalid_argument when the model's mechanics cannot be built.
 RunReport run_to_folder(const Model& model, const std::filesystem::path& folder,
                         const RunControl& control = {});
+
+// Same, and leaves the run's extremes and last record (what summary.json is made of) in
+// `envelope`, for callers that compare runs in memory (study/study_table.hpp).
+RunReport run_to_folder(const Model& model, const std::filesystem::path& folder,
+                        const RunControl& control, Envelope& envelope);
 
 }  // namespace deploydyn

@@ -1,0 +1,25 @@
+#pragma once
+// `deploydyn study STUDY.yaml [--out DIR] [--jobs N] [--quiet]`: runs a load-case study
+// (study/study_runner.hpp), each case into DIR/<case>/, and writes DIR/study.csv.
+
+#include <CLI/CLI.hpp>
+#include <atomic>
+#include <string>
+
+namespace deploydyn::cli {
+
+struct StudyArguments {
+  std::string study_file;
+  std::string out_dir;  // empty: the study file's `out`, or its default
+  int jobs = -1;        // < 0: the study file's `jobs`; 0: one per hardware thread
+  bool quiet = false;
+};
+
+// Adds `study` to `app`; parsed values land in `arguments`.
+CLI::App* add_study_command(CLI::App& app, StudyArguments& arguments);
+
+// Exit code: 0 every case completed, 1 any failed or was interrupted. Throws InputError on a bad
+// study file, before any result is written. `stop` stops every case (signal handlers set it).
+int study_command(const StudyArguments& arguments, const std::atomic<bool>& stop);
+
+}  // namespace deploydyn::cli

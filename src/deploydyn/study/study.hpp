@@ -1,0 +1,38 @@
+#pragma once
+// A load-case study: one model run under several named cases, each a list of overrides as
+// `--set` takes them (e.g. thermal.dT = 130, 0, −170), every case into its own folder, then a
+// table that compares them (study/study_table.hpp). The file format is in docs/model-format.md,
+// "Load-case studies"; study/study_loader.hpp reads it, study/study_runner.hpp runs it.
+
+#include <cstddef>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "deploydyn/io/model_loader.hpp"
+
+namespace deploydyn {
+
+// The comparison table's file name, in Study::out_folder.
+inline constexpr const char* kStudyTableFileName = "study.csv";
+
+struct StudyCase {
+  std::string name;                 // also the name of its folder under Study::out_folder
+  std::vector<Override> overrides;  // applied in this order, as `--set` would
+};
+
+struct Study {
+  std::filesystem::path model_file;
+  std::vector<StudyCase> cases;  // at least one; names unique
+  std::filesystem::path out_folder;
+  int jobs = 0;               // cases run at once; 0: one per hardware thread
+  std::size_t reference = 0;  // index into cases: final shapes are compared with this case's
+
+  std::filesystem::path case_folder(std::size_t index) const;
+  std::filesystem::path table_file() const;  // out_folder/study.csv
+};
+
+// Worker threads for `jobs` (0: one per hardware thread) and `n_cases`: from 1 to n_cases.
+int resolve_jobs(int jobs, std::size_t n_cases);
+
+}  // namespace deploydyn

@@ -1,0 +1,168 @@
+#include "deploydyn/study/study_loader.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <charconv>
+#include <fstream>
+#include <optional>
+#include <sstream>
+
+#include "deploydyn/io/input_error.hpp"
+#include "deploydyn/io/yaml_reader.hpp"
+
+namespace deploydyn {
+namespace {
+
+using io::YamlValue;
+
+// A case's name is also its folder's name, next to study.csv.
+void check_case_name(const std::string& name, const YamlValue& value) {
+  if (name == "." || name == ".." || name.find_first_of("/\\") != std::string::npos) {
+    value.fail(fmt::format("'{}' cannot name a folder; use letters, digits, '_', '-', '.'", name));
+  }
+  if (name == kStudyTableFileName) {
+    value.fail(fmt::format("'{}' is the name of the study's table", kStudyTableFileName));
+  }
+}
+
+struct CaseSpec {
+  StudyCase study_case;
+  YamlValue value;                 // the case's mapping, for messages
+  std::vector<YamlValue> setters;  // one per override, same order
+};
+
+CaseSpec read_case(const std::string& name, const YamlValue& value) {
+  check_case_name(name, value);
+  if (!value.is_map()) {
+    value.fail(
+        "expected a mapping of overrides PATH: VALUE, e.g. {thermal.dT: 130}, or {} for "
+        "the model as it is; got " +
+        value.description());
+  }
+  CaseSpec spec{{name, {}}, value, {}};
+  for (const auto& [path, setting] : value.entries()) {
+    if (!setting.is_scalar()) {
+      setting.fail("expected a single value (an override replaces one scalar of the model), got " +
+                   setting.description());
+    }
+    spec.study_case.overrides.push_back({path, setting.text()});
+    spec.setters.push_back(setting);
+  }
+  return spec;
+}
+
+// thermal.dT set to the number 0: the usual reference for shapes.
+bool sets_zero_temperature_change(const StudyCase& c) {
+  for (const Override& o : c.overrides) {
+    if (o.path != "thermal.dT") continue;
+    double value = 1.0;
+    const auto [end, error] =
+        std::from_chars(o.value.data(), o.value.data() + o.value.size(), value);
+    if (error == std::errc() && end == o.value.data() + o.value.size() && value == 0.0) return true;
+  }
+  return false;
+}
+
+// Loads the model under every case's overrides; an error caused by an override is reported at
+// that override's line in the study file.
+void check_cases(const std::filesystem::path& model_file, const YamlValue& model_value,
+                 const std::vector<CaseSpec>& specs) {
+  try {
+    load_model(model_file);
+  } catch (const InputError& e) {
+    if (e.source() == model_file.string() && e.line() == 0) {
+      model_value.fail(fmt::format("{}: {}", model_file.string(), e.problem()));
+    }
+    throw;  // the model itself is wrong: its own file and line say where
+  }
+  for (const CaseSpec& spec : specs) {
+    const auto& overrides = spec.study_case.overrides;
+    try {
+      load_model(model_file, overrides);
+    } catch (const InputError& e) {
+      for (std::size_t i = 0; i < overrides.size(); ++i) {
+        if (e.source() == fmt::format("--set {}={}", overrides[i].path, overrides[i].value)) {
+          spec.setters[i].fail(e.problem());
+        }
+      }
+      spec.value.fail(fmt::format("the model with this case's overrides: {}", e.what()));
+    }
+  }
+}
+
+Study read_study(const YamlValue& root, const std::string& source_name,
+                 const std::filesystem::path& base_folder) {
+  if (!root.is_map()) root.fail("expected a study: a mapping with model and cases");
+  root.expect_keys({"model", "description", "out", "jobs", "reference", "cases"});
+
+  Study study;
+  const YamlValue model_value = root.at("model");
+  study.model_file = base_folder / model_value.text();
+  if (const auto description = root.find("description")) description->text();
+  study.out_folder = std::filesystem::path("results") / std::filesystem::path(source_name).stem();
+  if (const auto out = root.find("out")) study.out_folder = base_folder / out->text();
+  if (const auto jobs = root.find("jobs")) study.jobs = jobs->integer(0);
+
+  const YamlValue cases = root.at("cases");
+  std::vector<CaseSpec> specs;
+  for (const auto& [name, value] : cases.entries()) specs.push_back(read_case(name, value));
+  if (specs.empty()) cases.fail("expected at least one case, e.g. hot: {thermal.dT: 130}");
+  std::vector<std::string> names;
+  for (const CaseSpec& spec : specs) {
+    names.push_back(spec.study_case.name);
+    study.cases.push_back(spec.study_case);
+  }
+
+  if (const auto reference = root.find("reference")) {
+    const std::string name = reference->text();
+    const auto match = std::find(names.begin(), names.end(), name);
+    if (match == names.end()) {
+      reference->fail(fmt::format("must name a case ({}), got '{}'{}", io::join_names(names), name,
+                                  io::did_you_mean(name, names)));
+    }
+    study.reference = static_cast<std::size_t>(match - names.begin());
+  } else {
+    const auto zero =
+        std::find_if(study.cases.begin(), study.cases.end(), sets_zero_temperature_change);
+    study.reference =
+        zero == study.cases.end() ? 0 : static_cast<std::size_t>(zero - study.cases.begin());
+  }
+
+  check_cases(study.model_file, model_value, specs);
+  return study;
+}
+
+}  // namespace
+
+Study load_study_from_string(const std::string& text, const std::string& source_name,
+                             const std::filesystem::path& base_folder) {
+  const io::YamlSource source(source_name);
+  try {
+    YAML::Node root;
+    try {
+      root = YAML::Load(text);
+    } catch (const YAML::ParserException& error) {
+      io::throw_input_error(source_name, error.mark, "", "YAML syntax: " + error.msg);
+    }
+    return read_study(YamlValue(root, "", source), source_name, base_folder);
+  } catch (const YAML::Exception& error) {
+    // The reader checks types before converting, so this is a safety net, not a path.
+    io::throw_input_error(source_name, error.mark, "", "cannot read the study: " + error.msg);
+  }
+}
+
+Study load_study(const std::filesystem::path& file) {
+  std::error_code ignored;
+  std::ifstream in(file, std::ios::binary);
+  if (!in || std::filesystem::is_directory(file, ignored)) {
+    io::throw_input_error(file.string(), YAML::Mark::null_mark(), "", "cannot open file");
+  }
+  std::ostringstream text;
+  text << in.rdbuf();
+  if (in.bad())
+    io::throw_input_error(file.string(), YAML::Mark::null_mark(), "", "cannot read file");
+  return load_study_from_string(text.str(), file.string(), file.parent_path());
+}
+
+}  // namespace deploydyn

@@ -1,0 +1,67 @@
+// `deploydyn study`: exit codes, a line per case, and nothing written for a bad study file.
+
+#include <gtest/gtest.h>
+
+#include <fstream>
+#include <string>
+
+#include "support/cli.hpp"
+
+namespace deploydyn {
+namespace {
+
+using testing::example_path;
+using testing::read_text;
+using testing::run_cli;
+using testing::ScratchFolder;
+
+// A study of examples/paper/general.yaml written into `folder`, 0.2 s per case.
+std::filesystem::path write_study(const ScratchFolder& folder, const std::string& cases) {
+  std::filesystem::create_directories(folder.path());
+  const auto file = folder.path() / "study.yaml";
+  std::ofstream(file) << "model: " << example_path("general.yaml") << "\ncases:\n" << cases;
+  return file;
+}
+
+TEST(StudyCli, AFailedCaseGivesExitCodeOneAfterTheOthersRan) {
+  ScratchFolder folder("study_cli_failure");
+  const auto file = write_study(folder,
+                                "  hot: {thermal.dT: 130, analysis.end: 0.2}\n"
+                                "  jammed: {thermal.dT: -170, analysis.end: 0.2, "
+                                "analysis.newton.max_iterations: 1}\n"
+                                "  cold: {thermal.dT: -170, analysis.end: 0.2}\n");
+  const auto out = folder.path() / "out";
+  const auto result = run_cli("study " + file.string() + " --jobs 2 --out " + out.string());
+  EXPECT_EQ(result.exit_code, 1) << result.output;
+  EXPECT_NE(result.output.find("jammed: failed: initial equilibrium"), std::string::npos)
+      << result.output;
+  EXPECT_NE(result.output.find("hot: completed"), std::string::npos) << result.output;
+  EXPECT_NE(result.output.find("2 of 3 cases completed"), std::string::npos) << result.output;
+  EXPECT_TRUE(std::filesystem::exists(out / "cold" / "history.csv"));
+  EXPECT_NE(read_text(out / "study.csv").find("\njammed,failed,"), std::string::npos);
+}
+
+TEST(StudyCli, AllCompletedIsExitCodeZeroAndQuietIsQuiet) {
+  ScratchFolder folder("study_cli_quiet");
+  const auto file = write_study(folder, "  a: {analysis.end: 0.1}\n  b: {analysis.end: 0.1}\n");
+  const auto result =
+      run_cli("study " + file.string() + " -q -j 1 -o " + (folder.path() / "out").string());
+  EXPECT_EQ(result.exit_code, 0) << result.output;
+  EXPECT_EQ(result.output, "");
+  EXPECT_TRUE(std::filesystem::exists(folder.path() / "out" / "b" / "summary.json"));
+}
+
+TEST(StudyCli, BadStudyFileIsExitCodeTwoWithNothingWritten) {
+  ScratchFolder folder("study_cli_bad");
+  const auto file = write_study(folder, "  hot: {thermal.dT: 130}\n  cold: {thermal.dTT: -170}\n");
+  const auto out = folder.path() / "out";
+  const auto result = run_cli("study " + file.string() + " --out " + out.string());
+  EXPECT_EQ(result.exit_code, 2) << result.output;
+  EXPECT_NE(result.output.find(file.string() + ":4:"), std::string::npos) << result.output;
+  EXPECT_NE(result.output.find("cases.cold.thermal.dTT"), std::string::npos) << result.output;
+  EXPECT_FALSE(std::filesystem::exists(out));
+  EXPECT_EQ(run_cli("studdy " + file.string()).exit_code, 2);
+}
+
+}  // namespace
+}  // namespace deploydyn

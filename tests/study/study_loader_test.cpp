@@ -1,0 +1,105 @@
+// Study files: what they describe, and errors that name the study file, line, field and what
+// is allowed, before anything runs.
+
+#include "deploydyn/study/study_loader.hpp"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <string>
+#include <thread>
+
+#include "deploydyn/io/input_error.hpp"
+
+namespace deploydyn {
+namespace {
+
+const std::filesystem::path kPaper = std::filesystem::path(DEPLOYDYN_SOURCE_DIR) / "examples/paper";
+
+Study load(const std::string& text) { return load_study_from_string(text, "s.yaml", kPaper); }
+
+// Loads `text`, expecting an InputError at `line` of s.yaml about `field`, saying `problem`.
+void expect_error(const std::string& text, int line, const std::string& field,
+                  const std::string& problem) {
+  try {
+    load(text);
+    ADD_FAILURE() << "no error for:\n" << text;
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.source(), "s.yaml") << e.what();
+    EXPECT_EQ(e.line(), line) << e.what();
+    EXPECT_EQ(e.field(), field) << e.what();
+    EXPECT_NE(e.problem().find(problem), std::string::npos) << e.what();
+  }
+}
+
+TEST(StudyLoader, ReadsThePaperStudy) {
+  const Study study = load_study(kPaper / "general_study.yaml");
+  EXPECT_EQ(study.model_file, kPaper / "general.yaml");
+  ASSERT_EQ(study.cases.size(), 3u);
+  EXPECT_EQ(study.cases[0].name, "hot");
+  EXPECT_EQ(study.cases[2].name, "cold");
+  ASSERT_EQ(study.cases[2].overrides.size(), 1u);
+  EXPECT_EQ(study.cases[2].overrides[0].path, "thermal.dT");
+  EXPECT_EQ(study.cases[2].overrides[0].value, "-170");
+  EXPECT_EQ(study.reference, 1u);
+  EXPECT_EQ(study.jobs, 0);
+  EXPECT_EQ(study.out_folder, std::filesystem::path("results/general_study"));
+  EXPECT_EQ(study.case_folder(1), std::filesystem::path("results/general_study/normal"));
+}
+
+TEST(StudyLoader, OptionsAndDefaults) {
+  const Study study = load(
+      "model: general.yaml\nout: here\njobs: 3\n"
+      "cases:\n  a: {thermal.dT: 10, analysis.end: 0.5}\n  b: {}\n  c: {thermal.dT: 0.0}\n");
+  EXPECT_EQ(study.out_folder, kPaper / "here");  // relative to the study file
+  EXPECT_EQ(study.jobs, 3);
+  ASSERT_EQ(study.cases[0].overrides.size(), 2u);
+  EXPECT_EQ(study.cases[0].overrides[1].path, "analysis.end");
+  EXPECT_TRUE(study.cases[1].overrides.empty());
+  EXPECT_EQ(study.reference, 2u) << "the case with ΔT = 0";
+  EXPECT_EQ(load("model: general.yaml\ncases: {a: {}, b: {}}\n").reference, 0u) << "else the first";
+}
+
+TEST(StudyLoader, MissingOrUnreadableModel) {
+  expect_error("cases: {a: {}}\n", 1, "model", "required key is missing");
+  expect_error("model: nowhere.yaml\ncases: {a: {}}\n", 1, "model", "cannot open file");
+}
+
+TEST(StudyLoader, UnknownKeyIsRejectedWithTheNearestOne) {
+  expect_error("model: general.yaml\ncases: {a: {}}\nrefrence: a\n", 3, "refrence",
+               "did you mean 'reference'?");
+}
+
+TEST(StudyLoader, CasesMustBeGivenAndNamedOnce) {
+  expect_error("model: general.yaml\ncases: {}\n", 2, "cases", "at least one case");
+  expect_error("model: general.yaml\ncases:\n  a: {}\n  a: {thermal.dT: 1}\n", 4, "cases.a",
+               "'a' is given twice");
+  expect_error("model: general.yaml\ncases:\n  a/b: {}\n", 3, "cases.a/b", "cannot name a folder");
+  expect_error("model: general.yaml\ncases:\n  a: [1]\n", 3, "cases.a", "mapping of overrides");
+  expect_error("model: general.yaml\ncases:\n  a: {thermal.dT: [1, 2]}\n", 3, "cases.a.thermal.dT",
+               "a single value");
+}
+
+TEST(StudyLoader, BadOverrideIsReportedAtItsLine) {
+  expect_error(
+      "model: general.yaml\ncases:\n  hot: {thermal.dT: 130}\n  cold: {thermal.dX: -170}\n", 4,
+      "cases.cold.thermal.dX", "unknown key 'dX'");
+  expect_error("model: general.yaml\ncases:\n  hot:\n    thermal.dT: warm\n", 4,
+               "cases.hot.thermal.dT", "unknown function 'warm'");
+}
+
+TEST(StudyLoader, ReferenceMustNameACase) {
+  expect_error("model: general.yaml\nreference: normall\ncases: {normal: {}}\n", 2, "reference",
+               "did you mean 'normal'?");
+}
+
+TEST(StudyLoader, JobsIsACountOfThreads) {
+  expect_error("model: general.yaml\njobs: -1\ncases: {a: {}}\n", 2, "jobs", "at least 0");
+  EXPECT_EQ(resolve_jobs(0, 3),
+            std::clamp(static_cast<int>(std::thread::hardware_concurrency()), 1, 3));
+  EXPECT_EQ(resolve_jobs(8, 3), 3);
+  EXPECT_EQ(resolve_jobs(1, 3), 1);
+}
+
+}  // namespace
+}  // namespace deploydyn
