@@ -13,10 +13,10 @@
 namespace deploydyn {
 namespace {
 
-// 500 000 steps of the general linkage: about 2 s here, long enough for the line to appear.
+// 1 250 000 steps of the general linkage: about 2.5 s here, long enough for the line to appear.
 std::string long_run(const testing::ScratchFolder& out) {
   return std::string(DEPLOYDYN_CLI) + " run " + testing::example_path("general.yaml") + " --out " +
-         out.path().string() + " --set analysis.step=1e-5 --set analysis.output_interval=1e-2";
+         out.path().string() + " --set analysis.step=4e-6 --set analysis.output_interval=1e-2";
 }
 
 // Runs `command` on a pseudo-terminal (util-linux `script`), returning what it printed.
