@@ -148,6 +148,16 @@ constexpr int kKlu = static_cast<int>(LinearSolverKind::klu);
 constexpr int kUmfpack = static_cast<int>(LinearSolverKind::umfpack);
 
 BENCHMARK(BM_RoofStep)->Apply([](auto* b) { roof_sizes(b, {kKlu}); });
+// Where dense LU stops paying (automatic choice, assembly/linear_system_factory.hpp): small
+// planar roofs with both back ends.
+constexpr int kDense = static_cast<int>(LinearSolverKind::dense);
+BENCHMARK(BM_RoofStep)->Name("BM_SmallRoofStep")->Apply([](auto* b) {
+  b->ArgNames({"units", "trusses", "solver"});
+  for (const int solver : {kDense, kKlu}) {
+    for (const int units : {1, 3, 10, 30}) b->Args({units, 1, solver});
+  }
+  b->Unit(benchmark::kMicrosecond);
+});
 BENCHMARK(BM_RoofAssembly)->Apply([](auto* b) { roof_sizes(b, {kKlu}); });
 BENCHMARK(BM_RoofResidual)->Apply([](auto* b) { roof_sizes(b, {kKlu}); });
 BENCHMARK(BM_RoofFactor)->Apply([](auto* b) { roof_sizes(b, {kKlu, kUmfpack}); });

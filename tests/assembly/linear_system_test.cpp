@@ -187,15 +187,14 @@ TEST(LinearSystem, NonFiniteValuesAreReported) {
   }
 }
 
-TEST(LinearSystem, AutomaticChoiceIsDenseForSmallAndKluForLargeModels) {
-  EXPECT_EQ(choose_linear_solver(LinearSolverKind::automatic, kLargestDenseSystem),
-            LinearSolverKind::dense);
-  EXPECT_EQ(choose_linear_solver(LinearSolverKind::automatic, kLargestDenseSystem + 1),
-            LinearSolverKind::klu);
+TEST(LinearSystem, AutomaticChoiceIsKluAndExplicitChoicesAreKept) {
+  EXPECT_EQ(choose_linear_solver(LinearSolverKind::automatic, 13), LinearSolverKind::klu);
+  EXPECT_EQ(choose_linear_solver(LinearSolverKind::dense, 100000), LinearSolverKind::dense);
   EXPECT_EQ(choose_linear_solver(LinearSolverKind::umfpack, 5), LinearSolverKind::umfpack);
-  const Model model = warren_truss(30);  // 124 coordinates + 3 constraint rows
+  const Model model = warren_truss(3);
   const Assembler assembler(model);
   EXPECT_STREQ(make_linear_system(assembler)->name(), "KLU");
+  EXPECT_STREQ(make_linear_system(assembler, LinearSolverKind::dense)->name(), "dense LU");
 }
 
 // The general linkage of the paper run with each back end: the same motion and forces.

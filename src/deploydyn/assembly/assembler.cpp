@@ -208,28 +208,38 @@ void Assembler::mass_times(const Eigen::VectorXd& a, Eigen::VectorXd& out) const
 }
 
 void Assembler::constraints(const Eigen::VectorXd& q, double t, Eigen::VectorXd& phi) const {
-  phi.resize(n_equations());
-  LocalJacobian jacobian;
-  for (std::size_t c = 0; c < constraints_.size(); ++c) {
-    const Constraint& con = *constraints_[c];
-    jacobian.resize(con.n_equations(), static_cast<Eigen::Index>(con.dofs().size()));
-    con.evaluate(q, t, phi.segment(first_row_[c], con.n_equations()), jacobian);
-  }
+  evaluate_constraints(q, t, nullptr, &phi, nullptr);
 }
 
 void Assembler::constraint_force(const Eigen::VectorXd& q, double t, const Eigen::VectorXd& lambda,
                                  Eigen::VectorXd& f) const {
-  f.setZero(n_dofs());
-  LocalVector phi;
+  evaluate_constraints(q, t, &lambda, nullptr, &f);
+}
+
+void Assembler::constraints_and_force(const Eigen::VectorXd& q, double t,
+                                      const Eigen::VectorXd& lambda, Eigen::VectorXd& phi,
+                                      Eigen::VectorXd& f) const {
+  evaluate_constraints(q, t, &lambda, &phi, &f);
+}
+
+void Assembler::evaluate_constraints(const Eigen::VectorXd& q, double t,
+                                     const Eigen::VectorXd* lambda, Eigen::VectorXd* phi,
+                                     Eigen::VectorXd* f) const {
+  if (phi != nullptr) phi->resize(n_equations());
+  if (f != nullptr) f->setZero(n_dofs());
+  LocalVector local_phi;
   LocalJacobian jacobian;
   for (std::size_t c = 0; c < constraints_.size(); ++c) {
     const Constraint& con = *constraints_[c];
     const std::span<const int> dofs = con.dofs();
-    phi.resize(con.n_equations());
+    local_phi.resize(con.n_equations());
     jacobian.resize(con.n_equations(), static_cast<Eigen::Index>(dofs.size()));
-    con.evaluate(q, t, phi, jacobian);
-    const auto multipliers = lambda.segment(first_row_[c], con.n_equations());
-    for (std::size_t i = 0; i < dofs.size(); ++i) f[dofs[i]] += jacobian.col(i).dot(multipliers);
+    con.evaluate(q, t, local_phi, jacobian);
+    if (phi != nullptr) phi->segment(first_row_[c], con.n_equations()) = local_phi;
+    if (f != nullptr) {
+      const auto multipliers = lambda->segment(first_row_[c], con.n_equations());
+      for (std::size_t i = 0; i < dofs.size(); ++i) (*f)[dofs[i]] += jacobian.col(i).dot(multipliers);
+    }
   }
 }
 

@@ -53,6 +53,9 @@ class Assembler {
   void constraints(const Eigen::VectorXd& q, double t, Eigen::VectorXd& phi) const;
   void constraint_force(const Eigen::VectorXd& q, double t, const Eigen::VectorXd& lambda,
                         Eigen::VectorXd& f) const;  // Bᵀλ
+  // Both in one pass over the constraints (what a residual needs).
+  void constraints_and_force(const Eigen::VectorXd& q, double t, const Eigen::VectorXd& lambda,
+                             Eigen::VectorXd& phi, Eigen::VectorXd& f) const;
   void constraint_rates(const Eigen::VectorXd& q, const Eigen::VectorXd& v, double t,
                         Eigen::VectorXd& phi_t, Eigen::VectorXd& bias) const;
 
@@ -86,6 +89,9 @@ class Assembler {
   std::string describe_equation(int row) const;
 
  private:
+  // Φ and/or Bᵀλ (null: not wanted), one evaluation per constraint.
+  void evaluate_constraints(const Eigen::VectorXd& q, double t, const Eigen::VectorXd* lambda,
+                            Eigen::VectorXd* phi, Eigen::VectorXd* f) const;
   template <class Emit>
   void for_each_matrix_block(const Eigen::VectorXd& q, double t, double thermal_factor,
                              const Eigen::VectorXd& lambda, const MatrixWeights& weights,

@@ -6,9 +6,8 @@
 
 namespace deploydyn {
 
-LinearSolverKind choose_linear_solver(LinearSolverKind requested, int n_unknowns) {
-  if (requested != LinearSolverKind::automatic) return requested;
-  return n_unknowns <= kLargestDenseSystem ? LinearSolverKind::dense : LinearSolverKind::klu;
+LinearSolverKind choose_linear_solver(LinearSolverKind requested, int /*n_unknowns*/) {
+  return requested == LinearSolverKind::automatic ? LinearSolverKind::klu : requested;
 }
 
 std::unique_ptr<LinearSystem> make_linear_system(const Assembler& assembler, LinearSolverKind kind) {

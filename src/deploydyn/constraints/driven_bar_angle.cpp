@@ -1,5 +1,6 @@
 #include "deploydyn/constraints/driven_bar_angle.hpp"
 
+#include <cmath>
 #include <stdexcept>
 
 namespace deploydyn {
@@ -29,6 +30,10 @@ DrivenBarAngle::DrivenBarAngle(std::vector<int> pivot_dofs, std::vector<int> tip
   }
   initial_normals_.push_back(n1.normalized());
   if (n_equations() == 2) initial_normals_.push_back(u.cross(initial_normals_[0]).normalized());
+  for (const Eigen::Vector3d& n : initial_normals_) {
+    turned_normals_.push_back(axis_.cross(n));
+    axial_normals_.push_back(axis_.dot(n) * axis_);
+  }
 }
 
 Eigen::Vector3d DrivenBarAngle::bar_vector(const Eigen::VectorXd& x) const {
@@ -39,7 +44,12 @@ Eigen::Vector3d DrivenBarAngle::bar_vector(const Eigen::VectorXd& x) const {
 }
 
 Eigen::Vector3d DrivenBarAngle::normal(int k, double t) const {
-  return Eigen::AngleAxisd(motion_.position(t), axis_) * initial_normals_[k];
+  // Rodrigues' rotation of n_k(0) about the axis a by s(t):
+  //   n = cos s n_k(0) + sin s (a × n_k(0)) + (1 − cos s)(a · n_k(0)) a
+  const double angle = motion_.position(t);
+  const double cosine = std::cos(angle);
+  return cosine * initial_normals_[k] + std::sin(angle) * turned_normals_[k] +
+         (1.0 - cosine) * axial_normals_[k];
 }
 
 void DrivenBarAngle::evaluate(const Eigen::VectorXd& q, double t, Eigen::Ref<Eigen::VectorXd> phi,

@@ -41,6 +41,8 @@ class DrivenBarAngle final : public Constraint {
 
   Eigen::Vector3d axis_;
   std::vector<Eigen::Vector3d> initial_normals_;
+  std::vector<Eigen::Vector3d> turned_normals_;  // a × n_k(0) and (a · n_k(0)) a: the parts
+  std::vector<Eigen::Vector3d> axial_normals_;   // of Rodrigues' formula that do not turn
   DriverMotion motion_;
   std::string label_;
 };

@@ -112,7 +112,7 @@ struct AdaptiveOptions {
 };
 
 // Back end of the Newton iteration matrix (assembly/linear_system_factory.hpp). `automatic`
-// takes dense LU for small models and KLU above a size where sparse wins (measured: bench/).
+// takes the fastest measured for the model's size (bench/roof_benchmark.cpp): KLU.
 enum class LinearSolverKind { automatic, dense, klu, umfpack };
 // As model files spell them: "automatic", "dense", "klu", "umfpack".
 inline const char* to_string(LinearSolverKind kind) {

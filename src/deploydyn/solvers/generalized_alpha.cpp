@@ -39,8 +39,7 @@ class GeneralizedAlphaEquations final : public DiscreteEquations {
     acceleration(q, acceleration_);
     assembler_.mass_times(acceleration_, inertia_);
     assembler_.internal_force(q, t_, 1.0, internal_);
-    assembler_.constraint_force(q, t_, lambda, reaction_);
-    assembler_.constraints(q, t_, phi);
+    assembler_.constraints_and_force(q, t_, lambda, phi, reaction_);
     r = inertia_ + internal_ - external_ + reaction_;
     return std::max({inertia_.lpNorm<Eigen::Infinity>(), internal_.lpNorm<Eigen::Infinity>(),
                      external_.lpNorm<Eigen::Infinity>(), reaction_.lpNorm<Eigen::Infinity>()});

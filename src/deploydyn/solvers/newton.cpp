@@ -40,9 +40,13 @@ NewtonResult NewtonSolver::solve(DiscreteEquations& equations, LinearSystem& sys
     }
     // Round-off floor: the force left by moving the coordinates by a few units in their last
     // place through the stiffest spring. Without it a model with nothing loaded (force_scale
-    // itself round-off) would never count as converged.
+    // itself round-off) would never count as converged. Only after a correction: accepting
+    // an uncorrected predictor within the floor lets its error build up step after step
+    // (a 1 µm oscillator drifted by 4e-6 of its period over 20 000 steps).
     const double force_floor =
-        equations.constraint_scale() * kRoundOffShare * std::max(q.lpNorm<Eigen::Infinity>(), 1.0);
+        result.iterations == 0 ? 0.0
+                               : equations.constraint_scale() * kRoundOffShare *
+                                     std::max(q.lpNorm<Eigen::Infinity>(), 1.0);
     const bool forces_balanced =
         result.force_residual_N <= options.force_tolerance * force_scale + force_floor ||
         last_correction <= options.displacement_tolerance_m;

@@ -36,8 +36,7 @@ class StaticEquations final : public DiscreteEquations {
     } else {
       external_.setZero(q.size());
     }
-    assembler_.constraint_force(q, t_, lambda, reaction_);
-    assembler_.constraints(q, t_, phi);
+    assembler_.constraints_and_force(q, t_, lambda, phi, reaction_);
     r = internal_ - external_ + reaction_;
     return std::max({internal_.lpNorm<Eigen::Infinity>(), external_.lpNorm<Eigen::Infinity>(),
                      reaction_.lpNorm<Eigen::Infinity>()});
