@@ -4,6 +4,7 @@
 #include <utility>
 #include <vector>
 
+#include "deploydyn/output/background_sink.hpp"
 #include "deploydyn/output/envelope.hpp"
 #include "deploydyn/output/history_writer.hpp"
 #include "deploydyn/output/summary_writer.hpp"
@@ -53,7 +54,10 @@ RunReport run_to_folder(const Model& model, const std::filesystem::path& folder,
   std::optional<VtkWriter> vtk;
   if (model.output.vtk) sinks.push_back(&vtk.emplace(folder / kVtkFolderName, model));
   FanOut sink(std::move(sinks));
-  const RunReport report = run_analysis(assembler, sink, control);
+  // Writing overlaps solving: the records reach the files from a thread of their own.
+  BackgroundSink background(sink);
+  const RunReport report = run_analysis(assembler, background, control);
+  background.finish();
   history.flush();
   write_summary(folder / model.output.summary_file, model, envelope, report);
   return report;

@@ -1,0 +1,45 @@
+#pragma once
+// Hands records to another sink on a thread of its own, so that formatting and writing the
+// results (history.csv, VTK frames) overlap the solver instead of adding to it. Records keep
+// their order; finish() waits until all are written and rethrows what the sink threw.
+// The queue is bounded: a solver faster than the disk waits rather than filling memory.
+
+#include <chrono>
+#include <condition_variable>
+#include <deque>
+#include <exception>
+#include <mutex>
+#include <thread>
+#include <utility>
+
+#include "deploydyn/output/step_record.hpp"
+
+namespace deploydyn {
+
+class BackgroundSink final : public RecordSink {
+ public:
+  explicit BackgroundSink(RecordSink& sink);
+  ~BackgroundSink() override;  // finishes, dropping any exception: call finish() to see it
+  BackgroundSink(const BackgroundSink&) = delete;
+  BackgroundSink& operator=(const BackgroundSink&) = delete;
+
+  void record(const StepRecord& record) override;
+  // Waits until every record has reached the sink; rethrows the first exception it threw.
+  void finish();
+
+ private:
+  void work();
+
+  static constexpr std::size_t kBatch = 64;        // records per wake-up of the writer
+  static constexpr std::size_t kMaxQueued = 1024;  // the solver waits beyond this
+  static constexpr std::chrono::milliseconds kLongestWait{100};
+  RecordSink& sink_;
+  std::mutex mutex_;
+  std::condition_variable changed_;
+  std::deque<StepRecord> queue_;
+  bool closing_ = false;
+  std::exception_ptr error_;
+  std::thread worker_;
+};
+
+}  // namespace deploydyn
