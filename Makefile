@@ -7,7 +7,7 @@ PYTHON := /usr/bin/python3
 SHELL  := /bin/bash
 FUZZ_SECONDS ?= 60
 
-.PHONY: all deps configure build demo test sanitize fuzz verification clean
+.PHONY: all deps configure build demo test bench sanitize fuzz verification clean
 
 all: build
 
@@ -25,6 +25,11 @@ demo: build
 
 test: build
 	@ctest --preset $(PRESET) -j2
+
+# Speed and memory (bench/, Google Benchmark): medians of BENCH_REPETITIONS runs as a table.
+BENCH_REPETITIONS ?= 3
+bench: build
+	@$(PYTHON) scripts/bench_table.py --binary $(BUILD)/bench/deploydyn_bench --repetitions $(BENCH_REPETITIONS)
 
 # The whole test suite built with AddressSanitizer and UndefinedBehaviorSanitizer.
 sanitize: deps
