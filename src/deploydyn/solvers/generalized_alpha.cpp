@@ -17,9 +17,10 @@ class GeneralizedAlphaEquations final : public DiscreteEquations {
     t_ = start.time_s + h;
     c_pseudo_ = 1.0 / (c.beta * h * h);
     c_true_ = (1.0 - c.alpha_m) / (1.0 - c.alpha_f) * c_pseudo_;
-    // c·M dominates as h → 0 (DESIGN §2's 1/(β h²) scaling); K when h is large.
-    constraint_scale_ =
-        c_true_ * assembler_.mass_scale() + assembler_.stiffness_scale(start.q, start.time_s);
+    // c·M dominates as h → 0 (DESIGN §2's 1/(β h²) scaling); K when h is large. Only its size
+    // matters, so the stiffness part is taken once, at the first step.
+    if (stiffness_scale_ == 0.0) stiffness_scale_ = assembler_.stiffness_scale(start.q, start.time_s);
+    constraint_scale_ = c_true_ * assembler_.mass_scale() + stiffness_scale_;
     predicted_ = start.q + h * start.v + (h * h * (0.5 - c.beta)) * start.pseudo_a;
     // q̈_{n+1} = c_true (q − q̃) + history, from the α recurrence.
     history_ = (c.alpha_m * start.pseudo_a - c.alpha_f * start.a) / (1.0 - c.alpha_f);
@@ -57,6 +58,7 @@ class GeneralizedAlphaEquations final : public DiscreteEquations {
   double c_pseudo_ = 0.0;  // ∂a_{n+1}/∂q = 1/(β h²)
   double c_true_ = 0.0;    // ∂q̈_{n+1}/∂q
   double constraint_scale_ = 1.0;  // s (N/m): the size of the force block's diagonal
+  double stiffness_scale_ = 0.0;   // max diag K at the first step (N/m); 0: not yet known
   Eigen::VectorXd predicted_, history_, external_, acceleration_, inertia_, internal_, reaction_;
 };
 
