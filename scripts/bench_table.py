@@ -69,8 +69,8 @@ def main():
     sizes = [(u, 1) for u in (10, 100, 1000, 10000)] + [(u, 10) for u in (3, 26, 263, 2630)]
     print("| roof | bars | unknowns | step us | Newton/step | per iteration us | KLU refactor us "
           "| iteration / refactor | UMFPACK refactor us | UMFPACK / KLU | assembly us | residual us "
-          "| KLU solve us | heap B/bar |")
-    print("|" + "---|" * 14)
+          "| KLU solve us | heap B/bar | allocations/step |")
+    print("|" + "---|" * 15)
     series = {1: [], 10: []}
     for units, trusses in sizes:
         key = f"units:{units}/trusses:{trusses}/solver:"
@@ -84,7 +84,8 @@ def main():
               f"| {to_us(klu):.1f} | {per_iteration / to_us(klu):.2f} | {to_us(umf):.1f} "
               f"| {to_us(umf) / to_us(klu):.1f} | {to_us(roofs[f'BM_RoofAssembly/{key}2']):.1f} "
               f"| {to_us(roofs[f'BM_RoofResidual/{key}2']):.1f} "
-              f"| {to_us(roofs[f'BM_RoofSolve/{key}2']):.1f} | {step['heap_bytes_per_bar']:.0f} |")
+              f"| {to_us(roofs[f'BM_RoofSolve/{key}2']):.1f} | {step['heap_bytes_per_bar']:.0f} "
+              f"| {step['allocations_per_step']:.3f} |")
 
     print("\nscaling of the time per step in the number of bars (least squares, log-log; target <= 1.2):")
     planar = [p for p in series[1] if p[0] >= 100]
