@@ -13,6 +13,7 @@
 #include <iostream>
 
 #include "deploydyn/assembly/assembler.hpp"
+#include "deploydyn/assembly/linear_system_factory.hpp"
 #include "deploydyn/io/input_error.hpp"
 #include "deploydyn/io/model_loader.hpp"
 #include "deploydyn/output/run_to_folder.hpp"
@@ -129,6 +130,10 @@ int check_command(const std::string& model_file, const std::vector<std::string>&
   fmt::print("analysis    {}, t = 0 → {:g} s, step {:g} s ({:.0f} steps), Newmark β = {:g}, γ = {:g}\n",
              a.type == AnalysisType::dynamic ? "dynamic" : "static", a.end_time_s, a.step_s,
              a.end_time_s / a.step_s, a.integrator.beta, a.integrator.gamma);
+  const LinearSolverKind solver = choose_linear_solver(a.linear_solver, assembler.n_unknowns());
+  fmt::print("linear      {} for {} unknowns{}\n",
+             solver == LinearSolverKind::dense ? "dense LU" : solver == LinearSolverKind::klu ? "KLU (sparse)" : "UMFPACK (sparse)",
+             assembler.n_unknowns(), a.linear_solver == LinearSolverKind::automatic ? " (automatic)" : "");
   return 0;
 }
 
