@@ -104,9 +104,9 @@ TEST(CliFailure, InterruptedRunKeepsAValidHistory) {
   ScratchFolder folder("interrupted");
   std::filesystem::create_directories(folder.path());
   const std::string out = (folder.path() / "out").string();
-  // 5 s at 10 µs: far longer than the half second before the signal.
+  // 5 s at 1 µs (5 million steps, several seconds): far longer than the half second before the signal.
   const std::string command = std::string(DEPLOYDYN_CLI) + " run " + testing::example_path("general.yaml") +
-                              " --quiet --out " + out + " --set analysis.step=1e-5 --set analysis.output_interval=1e-3" +
+                              " --quiet --out " + out + " --set analysis.step=1e-6 --set analysis.output_interval=1e-3" +
                               " & pid=$!; sleep 0.5; kill -TERM $pid; wait $pid; echo exit=$?";
   std::FILE* pipe = popen(command.c_str(), "r");
   std::string output;
