@@ -8,6 +8,8 @@
 
 #include "deploydyn/io/model_loader.hpp"
 #include "deploydyn/output/run_to_folder.hpp"
+#include "deploydyn/study/study_loader.hpp"
+#include "deploydyn/study/study_runner.hpp"
 #include "support/null_sink.hpp"
 
 namespace deploydyn {
@@ -39,6 +41,24 @@ void BM_PaperSixRuns(benchmark::State& state) {
   std::filesystem::remove_all(out);
 }
 BENCHMARK(BM_PaperSixRuns)->Unit(benchmark::kMillisecond)->UseRealTime();
+
+// The same six runs as `make demo` runs them: the two study files (examples/paper/*_study.yaml),
+// each loaded and its three cases run two at a time, with study.csv written.
+void BM_PaperStudies(benchmark::State& state) {
+  const std::filesystem::path out = std::filesystem::temp_directory_path() / "deploydyn_bench_studies";
+  for (auto _ : state) {
+    for (const char* linkage : kLinkages) {
+      Study study = load_study(kExamples / (std::string(linkage) + "_study.yaml"));
+      study.out_folder = out / linkage;
+      study.jobs = 2;
+      for (const CaseOutcome& outcome : run_study(study)) {
+        if (outcome.status != RunStatus::completed) state.SkipWithError(outcome.message.c_str());
+      }
+    }
+  }
+  std::filesystem::remove_all(out);
+}
+BENCHMARK(BM_PaperStudies)->Unit(benchmark::kMillisecond)->UseRealTime();
 
 // One run of the general linkage in memory (no files): the solver's cost per step.
 // Argument: the back end (LinearSolverKind: 1 dense, 2 KLU, 3 UMFPACK).
