@@ -19,9 +19,6 @@ using LocalVector = Eigen::Matrix<double, Eigen::Dynamic, 1, 0, kMaxConstraintEq
 using LocalJacobian = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0,
                                     kMaxConstraintEquations, kMaxConstraintDofs>;
 
-bar::Section section_of(const BarElement& e, const Model& model) {
-  return {model.materials[e.material].youngs_modulus_Pa * e.area_m2, e.reference_length_m};
-}
 
 template <int D>
 bar::Vector<D> node_position(const Eigen::VectorXd& q, std::span<const int> dofs) {
@@ -75,12 +72,19 @@ std::unique_ptr<Constraint> make_driver(const Driver& driver, const Model& model
 }  // namespace
 
 Assembler::Assembler(const Model& model) : model_(model), dofs_(model) {
+  bars_.reserve(model.bars.size());
   for (const BarElement& e : model.bars) {
-    std::vector<int> d;
-    for (int node : {e.node_a, e.node_b}) {
-      for (int axis = 0; axis < model.dimension; ++axis) d.push_back(dofs_.index(node, axis));
+    const Material& material = model.materials[e.material];
+    BarData& bar = bars_.emplace_back();
+    for (int axis = 0; axis < model.dimension; ++axis) {
+      bar.dofs[axis] = dofs_.index(e.node_a, axis);
+      bar.dofs[model.dimension + axis] = dofs_.index(e.node_b, axis);
     }
-    bar_dofs_.push_back(std::move(d));
+    bar.axial_stiffness_N = material.youngs_modulus_Pa * e.area_m2;
+    bar.reference_length_m = e.reference_length_m;
+    bar.mass_kg = e.mass_kg;
+    bar.expansion_per_C = material.expansion_per_C;
+    bar.temperature_change_C = &e.temperature_change_C;
   }
   for (const FixedNode& support : model.supports) {
     constraints_.push_back(make_support(support, model, dofs_));
@@ -121,16 +125,15 @@ Eigen::VectorXd Assembler::initial_coordinates() const {
 }
 
 double Assembler::thermal_strain(int bar, double t) const {
-  const BarElement& e = model_.bars[bar];
-  return model_.materials[e.material].expansion_per_C * e.temperature_change_C.value(t);
+  return bars_[bar].expansion_per_C * bars_[bar].temperature_change_C->value(t);
 }
 
 template <int D>
 void Assembler::for_each_bar(const Eigen::VectorXd& q, double t, double thermal_factor,
                              auto&& visit) const {
   for (int b = 0; b < model_.n_bars(); ++b) {
-    const std::span<const int> d = bar_dofs_[b];
-    const bar::Section section = section_of(model_.bars[b], model_);
+    const std::span<const int> d(bars_[b].dofs.data(), 2 * D);
+    const bar::Section section{bars_[b].axial_stiffness_N, bars_[b].reference_length_m};
     const bar::State<D> state =
         bar::evaluate<D>(node_position<D>(q, d.first(D)), node_position<D>(q, d.last(D)), section,
                          thermal_factor * thermal_strain(b, t));
@@ -169,7 +172,7 @@ void Assembler::external_force(double t, Eigen::VectorXd& f) const {
     // Each bar's weight is shared equally by its two nodes (DESIGN §2).
     for (int b = 0; b < model_.n_bars(); ++b) {
       for (int i = 0; i < 2 * dim; ++i) {
-        f[bar_dofs_[b][i]] += 0.5 * model_.bars[b].mass_kg * model_.gravity_m_s2[i % dim];
+        f[bars_[b].dofs[i]] += 0.5 * bars_[b].mass_kg * model_.gravity_m_s2[i % dim];
       }
     }
     for (int node = 0; node < model_.n_nodes(); ++node) {
@@ -191,8 +194,8 @@ void Assembler::mass_times(const Eigen::VectorXd& a, Eigen::VectorXd& out) const
   with_dimension(model_.dimension, [&](auto dim) {
     constexpr int D = decltype(dim)::value;
     for (int b = 0; b < model_.n_bars(); ++b) {
-      const bar::ElementMatrix<D> m = bar::mass_matrix<D>(model_.bars[b].mass_kg, model_.analysis.mass);
-      const std::vector<int>& d = bar_dofs_[b];
+      const bar::ElementMatrix<D> m = bar::mass_matrix<D>(bars_[b].mass_kg, model_.analysis.mass);
+      const std::array<int, 6>& d = bars_[b].dofs;
       bar::ElementVector<D> ae;
       for (int i = 0; i < 2 * D; ++i) ae[i] = a[d[i]];
       const bar::ElementVector<D> me = m * ae;
@@ -266,7 +269,7 @@ void Assembler::for_each_matrix_block(const Eigen::VectorXd& q, double t, double
     for_each_bar<D>(q, t, thermal_factor, [&](int b, std::span<const int> d, const auto& s,
                                               const bar::Section& section) {
       bar::ElementMatrix<D> k = w.stiffness * bar::tangent<D>(s, section);
-      if (w.mass != 0.0) k += w.mass * bar::mass_matrix<D>(model_.bars[b].mass_kg, model_.analysis.mass);
+      if (w.mass != 0.0) k += w.mass * bar::mass_matrix<D>(bars_[b].mass_kg, model_.analysis.mass);
       emit(d, d, k);
     });
   });
@@ -348,10 +351,10 @@ BarResult Assembler::bar_result(int b, const Eigen::VectorXd& q, double t) const
   BarResult result;
   with_dimension(model_.dimension, [&](auto dim) {
     constexpr int D = decltype(dim)::value;
-    const std::span<const int> d = bar_dofs_[b];
-    const bar::State<D> s =
-        bar::evaluate<D>(node_position<D>(q, d.first(D)), node_position<D>(q, d.last(D)),
-                         section_of(model_.bars[b], model_), thermal_strain(b, t));
+    const std::span<const int> d(bars_[b].dofs.data(), 2 * D);
+    const bar::State<D> s = bar::evaluate<D>(
+        node_position<D>(q, d.first(D)), node_position<D>(q, d.last(D)),
+        {bars_[b].axial_stiffness_N, bars_[b].reference_length_m}, thermal_strain(b, t));
     result = {s.strain, s.mechanical_strain, s.axial_force_N, s.length_m};
   });
   return result;

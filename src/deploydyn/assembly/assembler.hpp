@@ -6,6 +6,7 @@
 // It holds no solution state: q, q̇, λ are always passed in.
 
 #include <Eigen/Core>
+#include <array>
 #include <memory>
 #include <string>
 #include <vector>
@@ -102,7 +103,17 @@ class Assembler {
 
   const Model& model_;
   DofMap dofs_;
-  std::vector<std::vector<int>> bar_dofs_;                // [bar] → 2·D global indices
+  // What the loops over bars read, packed in one small record per bar (the model's BarElement
+  // carries names and more): unknowns and section constants.
+  struct BarData {
+    std::array<int, 6> dofs{};  // node a's D coordinates, then node b's
+    double axial_stiffness_N = 0.0;   // EA
+    double reference_length_m = 0.0;  // L0
+    double mass_kg = 0.0;
+    double expansion_per_C = 0.0;     // α
+    const TimeFunction* temperature_change_C = nullptr;  // ΔT(t), in the model
+  };
+  std::vector<BarData> bars_;
   std::vector<std::unique_ptr<Constraint>> constraints_;  // supports first, then drivers
   std::vector<int> first_row_;                            // [constraint] → first λ row
   std::vector<int> driver_rows_;                          // [driver] → first λ row
