@@ -26,6 +26,7 @@
 #include <vector>
 
 #include "deploydyn/assembly/assembler.hpp"
+#include "deploydyn/generators/roof.hpp"
 #include "deploydyn/io/input_error.hpp"
 #include "deploydyn/io/model_loader.hpp"
 #include "deploydyn/io/model_writer.hpp"
@@ -313,6 +314,19 @@ PYBIND11_MODULE(_core, m) {
       },
       py::arg("text"), py::arg("source_name"), py::arg("overrides") = OverridePairs{},
       py::arg("with_position") = true);
+  m.def(
+      "roof_yaml",
+      [](int units, int trusses, double delta_t_C) {
+        RoofOptions options;
+        options.n_units = units;
+        options.n_trusses = trusses;
+        options.delta_t_C = delta_t_C;
+        std::ostringstream out;
+        save_model(make_roof(options), out);  // std::invalid_argument → ValueError
+        return out.str();
+      },
+      py::arg("units"), py::arg("trusses"), py::arg("delta_t"),
+      "The model file `deploydyn generate roof` writes (generators/roof.hpp)");
   m.def(
       "parse_override",
       [](const std::string& text) {

@@ -38,7 +38,7 @@ from deploydyn import _core
 InputError = _core.InputError
 
 __all__ = [
-    "InputError", "RunFailed", "Model", "Result", "ModelBuilder", "load", "loads", "from_dict",
+    "InputError", "RunFailed", "Model", "Result", "ModelBuilder", "load", "loads", "from_dict", "roof",
     "read_result", "constant", "smooth_step", "smooth_trapezoid", "paper_eq23", "table",
 ]
 
@@ -244,6 +244,15 @@ def from_dict(spec, source_name=None, overrides=None):
                                   "<model built in Python>")
     text = json.dumps(spec, indent=1, ensure_ascii=False, allow_nan=True)
     return Model(("text", text, source_name, False), _override_pairs(overrides))
+
+
+def roof(units, trusses=1, delta_t=130.0, overrides=None):
+    """A foldable roof of the paper's parallel four-bar units, as `deploydyn generate roof` writes
+    it: trusses=1 a planar truss of `units` units, trusses > 1 a 3D roof; posts deploy from 5° to
+    upright in 5 s; delta_t (°C) is the model-wide temperature change."""
+    text = _core.roof_yaml(int(units), int(trusses), float(delta_t))
+    return Model(("text", text, f"<roof of {trusses} x {units} units>", False),
+                 _override_pairs(overrides))
 
 
 # ---------------------------------------------------------------------------------------------
