@@ -11,6 +11,9 @@
 #include <thread>
 #include <vector>
 
+#include "deploydyn/io/model_loader.hpp"
+#include "support/model_builder.hpp"
+
 namespace deploydyn {
 namespace {
 
@@ -75,6 +78,32 @@ TEST(BackgroundSink, FinishRethrowsWhatTheSinkThrew) {
         }
       },
       std::runtime_error);
+}
+
+// A run whose records are built on the writer thread (record_state) gives the records built on
+// the solver's: same values, same order.
+TEST(BackgroundSink, RecordsBuiltOnTheWriterThreadAreTheSolversOwn) {
+  const Model model = load_model(std::filesystem::path(DEPLOYDYN_SOURCE_DIR) / "examples/paper/general.yaml",
+                                 {parse_override("analysis.end=0.5")});
+  const Assembler assembler(model);
+  testing::RecordCollector direct, through_thread;
+  ASSERT_EQ(run_analysis(assembler, direct).status, RunStatus::completed);
+  {
+    BackgroundSink sink(through_thread);
+    ASSERT_EQ(run_analysis(assembler, sink).status, RunStatus::completed);
+    sink.finish();
+  }
+  ASSERT_EQ(through_thread.records.size(), direct.records.size());
+  for (std::size_t r = 0; r < direct.records.size(); ++r) {
+    const StepRecord& a = direct.records[r];
+    const StepRecord& b = through_thread.records[r];
+    EXPECT_EQ(a.time_s, b.time_s);
+    EXPECT_EQ(a.q, b.q);
+    EXPECT_EQ(a.driver_efforts, b.driver_efforts);
+    EXPECT_EQ(a.external_work_J, b.external_work_J);
+    ASSERT_EQ(a.bars.size(), b.bars.size());
+    for (std::size_t k = 0; k < a.bars.size(); ++k) EXPECT_EQ(a.bars[k].axial_force_N, b.bars[k].axial_force_N);
+  }
 }
 
 }  // namespace

@@ -12,14 +12,27 @@ BackgroundSink::~BackgroundSink() {
   }
 }
 
-void BackgroundSink::record(const StepRecord& record) {
+void BackgroundSink::record(const StepRecord& record) { push(record); }
+
+void BackgroundSink::record_state(const Assembler& assembler, const MotionState& state,
+                                  double external_work_J) {
+  // Only what a record needs: not the accelerations.
+  Snapshot snapshot{&assembler, {}, external_work_J};
+  snapshot.state.time_s = state.time_s;
+  snapshot.state.q = state.q;
+  snapshot.state.v = state.v;
+  snapshot.state.lambda = state.lambda;
+  push(std::move(snapshot));
+}
+
+void BackgroundSink::push(Item item) {
   std::unique_lock lock(mutex_);
   if (queue_.size() >= kMaxQueued) {
     changed_.notify_all();
     changed_.wait(lock, [this] { return queue_.size() < kMaxQueued || error_ != nullptr; });
   }
   if (error_ != nullptr) return;  // the sink failed; finish() reports it
-  queue_.push_back(record);
+  queue_.push_back(std::move(item));
   // Waking the writer costs a context switch: do it once per batch, not per record.
   if (queue_.size() == kBatch) changed_.notify_all();
 }
@@ -35,7 +48,7 @@ void BackgroundSink::finish() {
 }
 
 void BackgroundSink::work() {
-  std::deque<StepRecord> batch;
+  std::deque<Item> batch;
   for (;;) {
     {
       std::unique_lock lock(mutex_);
@@ -46,7 +59,13 @@ void BackgroundSink::work() {
       changed_.notify_all();  // room again for a waiting solver
     }
     try {
-      for (const StepRecord& record : batch) sink_.record(record);
+      for (const Item& item : batch) {
+        if (const auto* s = std::get_if<Snapshot>(&item)) {
+          sink_.record(make_step_record(*s->assembler, s->state, s->external_work_J));
+        } else {
+          sink_.record(std::get<StepRecord>(item));
+        }
+      }
     } catch (...) {
       std::lock_guard lock(mutex_);
       error_ = std::current_exception();

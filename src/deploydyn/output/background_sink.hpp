@@ -1,6 +1,7 @@
 #pragma once
-// Hands records to another sink on a thread of its own, so that formatting and writing the
-// results (history.csv, VTK frames) overlap the solver instead of adding to it. Records keep
+// Hands records to another sink on a thread of its own, so that building, formatting and
+// writing the results (StepRecords, history.csv, VTK frames) overlap the solver instead of
+// adding to it. Records keep
 // their order; finish() waits until all are written and rethrows what the sink threw.
 // The queue is bounded: a solver faster than the disk waits rather than filling memory.
 
@@ -11,6 +12,7 @@
 #include <mutex>
 #include <thread>
 #include <utility>
+#include <variant>
 
 #include "deploydyn/output/step_record.hpp"
 
@@ -24,10 +26,22 @@ class BackgroundSink final : public RecordSink {
   BackgroundSink& operator=(const BackgroundSink&) = delete;
 
   void record(const StepRecord& record) override;
+  // Queues a copy of the state; the record is built on the writer thread.
+  void record_state(const Assembler& assembler, const MotionState& state,
+                    double external_work_J) override;
   // Waits until every record has reached the sink; rethrows the first exception it threw.
   void finish();
 
  private:
+  // A record, or the state to build it from.
+  struct Snapshot {
+    const Assembler* assembler = nullptr;
+    MotionState state;
+    double external_work_J = 0.0;
+  };
+  using Item = std::variant<StepRecord, Snapshot>;
+
+  void push(Item item);
   void work();
 
   static constexpr std::size_t kBatch = 64;        // records per wake-up of the writer
@@ -36,7 +50,7 @@ class BackgroundSink final : public RecordSink {
   RecordSink& sink_;
   std::mutex mutex_;
   std::condition_variable changed_;
-  std::deque<StepRecord> queue_;
+  std::deque<Item> queue_;
   bool closing_ = false;
   std::exception_ptr error_;
   std::thread worker_;

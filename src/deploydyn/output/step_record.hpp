@@ -29,6 +29,12 @@ class RecordSink {
  public:
   virtual ~RecordSink() = default;
   virtual void record(const StepRecord& record) = 0;
+  // The solution at an output time: builds its StepRecord and passes it to record(). A sink may
+  // build it elsewhere (BackgroundSink: on its writer thread); the assembler is only read.
+  virtual void record_state(const Assembler& assembler, const MotionState& state,
+                            double external_work_J) {
+    record(make_step_record(assembler, state, external_work_J));
+  }
 };
 
 }  // namespace deploydyn

@@ -173,7 +173,7 @@ RunReport run_analysis(const Assembler& assembler, RecordSink& sink, const RunCo
 
   WorkCounter work(assembler);
   work.start(state);
-  sink.record(make_step_record(assembler, state, 0.0));
+  sink.record_state(assembler, state, 0.0);
 
   GeneralizedAlphaIntegrator integrator(assembler, options);
   StepController steps(options);
@@ -215,7 +215,7 @@ RunReport run_analysis(const Assembler& assembler, RecordSink& sink, const RunCo
     if (steps.reached_output(state.time_s)) {
       state.time_s = steps.next_output_time();  // exactly, not up to round-off
       work.advance(q_before, state);
-      sink.record(make_step_record(assembler, state, work.work_J()));
+      sink.record_state(assembler, state, work.work_J());
       steps.output_written();
     } else {
       work.advance(q_before, state);
