@@ -5,8 +5,6 @@
 // Rows are written as they come and flushed at least every `flush_interval` of wall time, so
 // a crash or an interrupt loses at most that much.
 
-#include <fmt/format.h>
-
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
@@ -38,7 +36,7 @@ class HistoryWriter final : public RecordSink {
  private:
   std::FILE* file_ = nullptr;
   std::vector<double> values_;
-  fmt::memory_buffer row_;
+  std::vector<char> row_;  // one row's text
   std::chrono::steady_clock::time_point last_flush_;
 };
 
