@@ -25,7 +25,7 @@ CLI::App* add_study_command(CLI::App& app, StudyArguments& arguments) {
                     "Result folder (default: the study file's out, else results/<study name>)");
   study
       ->add_option("--jobs,-j", arguments.jobs,
-                   "Cases run at once (default: the study file's jobs; 0: one per core)")
+                   "Cases run at once (default: the study file's jobs; 0: all, up to 4 per core)")
       ->check(CLI::NonNegativeNumber);
   study->add_flag("--quiet,-q", arguments.quiet, "No line per completed case or closing line");
   return study;

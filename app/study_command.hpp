@@ -11,7 +11,7 @@ namespace deploydyn::cli {
 struct StudyArguments {
   std::string study_file;
   std::string out_dir;  // empty: the study file's `out`, or its default
-  int jobs = -1;        // < 0: the study file's `jobs`; 0: one per hardware thread
+  int jobs = -1;        // < 0: the study file's `jobs`; 0: all cases at once (resolve_jobs)
   bool quiet = false;
 };
 

@@ -43,14 +43,13 @@ void BM_PaperSixRuns(benchmark::State& state) {
 BENCHMARK(BM_PaperSixRuns)->Unit(benchmark::kMillisecond)->UseRealTime();
 
 // The same six runs as `make demo` runs them: the two study files (examples/paper/*_study.yaml),
-// each loaded and its three cases run two at a time, with study.csv written.
+// each loaded and its three cases run at once (the default), with study.csv written.
 void BM_PaperStudies(benchmark::State& state) {
   const std::filesystem::path out = std::filesystem::temp_directory_path() / "deploydyn_bench_studies";
   for (auto _ : state) {
     for (const char* linkage : kLinkages) {
       Study study = load_study(kExamples / (std::string(linkage) + "_study.yaml"));
       study.out_folder = out / linkage;
-      study.jobs = 2;
       for (const CaseOutcome& outcome : run_study(study)) {
         if (outcome.status != RunStatus::completed) state.SkipWithError(outcome.message.c_str());
       }

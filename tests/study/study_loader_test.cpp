@@ -95,10 +95,20 @@ TEST(StudyLoader, ReferenceMustNameACase) {
 
 TEST(StudyLoader, JobsIsACountOfThreads) {
   expect_error("model: general.yaml\njobs: -1\ncases: {a: {}}\n", 2, "jobs", "at least 0");
-  EXPECT_EQ(resolve_jobs(0, 3),
-            std::clamp(static_cast<int>(std::thread::hardware_concurrency()), 1, 3));
   EXPECT_EQ(resolve_jobs(8, 3), 3);
   EXPECT_EQ(resolve_jobs(1, 3), 1);
+  EXPECT_EQ(resolve_jobs(2, 0), 1);
+}
+
+TEST(StudyLoader, ByDefaultAllCasesRunAtOnceUpToFourPerCore) {
+  const int cores = std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
+  EXPECT_EQ(resolve_jobs(0, 1), 1);
+  EXPECT_EQ(resolve_jobs(0, 3), 3);  // more cases than this machine's 2 cores: all at once
+  EXPECT_EQ(resolve_jobs(0, 4 * cores), 4 * cores);
+  // One case more than fit at once: two equal batches, not a full one and a lone case.
+  EXPECT_EQ(resolve_jobs(0, 4 * cores + 1), 2 * cores + 1);
+  EXPECT_EQ(resolve_jobs(0, 8 * cores), 4 * cores);
+  EXPECT_EQ(resolve_jobs(0, 8 * cores + 1), (8 * cores + 1 + 2) / 3);
 }
 
 }  // namespace

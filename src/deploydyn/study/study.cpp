@@ -4,6 +4,11 @@
 #include <thread>
 
 namespace deploydyn {
+namespace {
+
+constexpr std::size_t kCasesPerCore = 4;
+
+}  // namespace
 
 std::filesystem::path Study::case_folder(std::size_t index) const {
   return out_folder / cases.at(index).name;
@@ -12,11 +17,17 @@ std::filesystem::path Study::case_folder(std::size_t index) const {
 std::filesystem::path Study::table_file() const { return out_folder / kStudyTableFileName; }
 
 int resolve_jobs(int jobs, std::size_t n_cases) {
-  // hardware_concurrency() may be 0 when it cannot tell.
-  const int wanted =
-      jobs > 0 ? jobs : std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
-  return static_cast<int>(std::clamp<std::size_t>(static_cast<std::size_t>(wanted), 1,
-                                                  std::max<std::size_t>(n_cases, 1)));
+  const std::size_t n = std::max<std::size_t>(n_cases, 1);
+  if (jobs > 0) return static_cast<int>(std::min(static_cast<std::size_t>(jobs), n));
+  // Every case at once: the operating system shares the cores among them, so that all cores
+  // stay busy until the last case ends. Three equal cases on two cores then take 1.5 case
+  // times; one per core, two and then the third alone take 2. Memory bounds it: beyond
+  // kCasesPerCore cases per core they run in batches of equal size (the last batch too fills
+  // the cores).
+  const std::size_t cores = std::max(1U, std::thread::hardware_concurrency());  // 0: unknown
+  const std::size_t most_at_once = kCasesPerCore * cores;
+  const std::size_t batches = (n + most_at_once - 1) / most_at_once;
+  return static_cast<int>((n + batches - 1) / batches);
 }
 
 }  // namespace deploydyn

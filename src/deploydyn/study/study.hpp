@@ -25,14 +25,15 @@ struct Study {
   std::filesystem::path model_file;
   std::vector<StudyCase> cases;  // at least one; names unique
   std::filesystem::path out_folder;
-  int jobs = 0;               // cases run at once; 0: one per hardware thread
+  int jobs = 0;               // cases run at once; 0: all (resolve_jobs)
   std::size_t reference = 0;  // index into cases: final shapes are compared with this case's
 
   std::filesystem::path case_folder(std::size_t index) const;
   std::filesystem::path table_file() const;  // out_folder/study.csv
 };
 
-// Worker threads for `jobs` (0: one per hardware thread) and `n_cases`: from 1 to n_cases.
+// Worker threads for `jobs` and `n_cases`: `jobs` itself, at most n_cases; for jobs = 0 every
+// case at once, up to 4 per hardware thread (more run in batches of equal size).
 int resolve_jobs(int jobs, std::size_t n_cases);
 
 }  // namespace deploydyn
