@@ -5,7 +5,7 @@ Sections: the paper's six runs (target < 50 ms) and the four-bar's time per step
 the roofs (time per step, Newton iterations, time per Newton iteration against one numeric
 refactorization (target <= 2x), KLU vs UMFPACK, assembly / residual / solve, memory per bar);
 the fitted scaling exponent of the time per step in the number of bars (target <= 1.2); dense
-vs KLU on small roofs; the study speed-up. Medians over --repetitions runs (machines are noisy).
+vs KLU on small roofs; the writer's cost per value; the study speed-ups. Medians over --repetitions runs (machines are noisy).
 """
 import argparse
 import json
@@ -60,7 +60,7 @@ def main():
     print(f"six paper runs end to end (read, run, write), one after another: {to_us(six) / 1e3:.1f} ms "
           f"(target < 50 ms), {six['us_per_step']:.2f} us per step")
     studies = paper["BM_PaperStudies/real_time"]
-    print(f"the same six as make demo runs them (two studies, 3 cases each, 2 at a time): "
+    print(f"the same six as make demo runs them (two studies, 3 cases each, all at once): "
           f"{to_us(studies) / 1e3:.1f} ms")
     for kind, name in ((1, "dense LU"), (2, "KLU"), (3, "UMFPACK")):
         b = paper[f"BM_GeneralLinkageSolverOnly/solver:{kind}/real_time"]
@@ -110,15 +110,24 @@ def main():
         print(f"  {units:2} units ({dense['unknowns']:.0f} unknowns): dense {to_us(dense):.2f} us, "
               f"KLU {to_us(klu):.2f} us, KLU/dense {to_us(klu) / to_us(dense):.2f}")
 
-    print("\n## Load-case study (planar roof, 100 units, 0.5 s per case)\n")
+    print("\n## Output: the writer thread's work per output time (planar roof, 100 units)\n")
+    output = run(binary, "BM_MakeStepRecord|BM_HistoryRow", reps)
+    for name, what in (("BM_MakeStepRecord", "building the record"),
+                       ("BM_HistoryRow", "formatting and writing the history.csv row")):
+        b = output[name]
+        print(f"  {what}: {to_us(b):.1f} us, {b['ns_per_value'] * 1e9:.1f} ns per value")
+
+    print("\n## Load-case studies: one after another, one per core, all at once (the default)\n")
     study = run(binary, "BM_RoofStudy", reps)
-    for cases in (3, 4):
-        one = study[f"BM_RoofStudy/cases:{cases}/jobs:1/real_time"]
-        two = study[f"BM_RoofStudy/cases:{cases}/jobs:2/real_time"]
-        bound = cases / math.ceil(cases / 2)
-        print(f"  {cases} cases: one after another {to_us(one) / 1e3:.0f} ms, two at a time "
-              f"{to_us(two) / 1e3:.0f} ms: speed-up {to_us(one) / to_us(two):.2f} "
-              f"(bound for whole cases on 2 cores: {bound:.2f})")
+    for trusses, roof in ((1, "planar roof, 100 units, 0.5 s"), (10, "3D roof, 10 x 26 units, 0.2 s")):
+        for cases in (3, 4):
+            key = f"BM_RoofStudy/trusses:{trusses}/cases:{cases}"
+            one = to_us(study[f"{key}/jobs:1/real_time"])
+            two = to_us(study[f"{key}/jobs:2/real_time"])
+            every = to_us(study[f"{key}/jobs:{cases}/real_time"])
+            print(f"  {roof}, {cases} cases: one after another {one / 1e3:.0f} ms; two at a time "
+                  f"{two / 1e3:.0f} ms (speed-up {one / two:.2f}); all at once {every / 1e3:.0f} ms "
+                  f"(speed-up {one / every:.2f})")
     return 0
 
 
