@@ -30,9 +30,10 @@ void BM_RoofStudy(benchmark::State& state) {
   options.n_trusses = static_cast<int>(state.range(0));
   options.n_units = planar ? 100 : 26;
   options.end_time_s = planar ? 0.5 : 0.2;
+  const Model roof = make_roof(options);
   {
     std::ofstream file(folder / "roof.yaml");
-    save_model(make_roof(options), file);
+    save_model(roof, file);
   }
   Study study;
   study.model_file = folder / "roof.yaml";
@@ -53,7 +54,7 @@ void BM_RoofStudy(benchmark::State& state) {
       if (outcome.status != RunStatus::completed) state.SkipWithError(outcome.message.c_str());
     }
   }
-  state.counters["bars"] = planar ? 201 : 1007;
+  state.counters["bars"] = roof.n_bars();
   state.counters["cases"] = static_cast<double>(state.range(1));
   state.counters["jobs"] = static_cast<double>(state.range(2));
   std::filesystem::remove_all(folder);

@@ -60,7 +60,7 @@ void HistoryWriter::record(const StepRecord& r) {
   values_.clear();
   append_history_row(r, values_);
   // The shortest text that reads back as the same double (fmt's default, Dragonbox), written
-  // straight into a buffer sized for the longest: 30 ns a value, against 83 through
+  // straight into a buffer sized for the longest: 40 ns a value, against 83 through
   // fmt::join and a back_inserter (bench/output_benchmark.cpp). The row is the writer
   // thread's main work, and in a study it competes with the solvers for the cores.
   row_.resize(values_.size() * kLongestValue);
