@@ -3,16 +3,19 @@
 #include <fmt/format.h>
 
 #include <chrono>
-#include <fstream>
-#include <iostream>
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
+#include <sstream>
 #include <stdexcept>
 
 #include "deploydyn/io/model_writer.hpp"
+#include "deploydyn/output/checked_file.hpp"
+#include "deploydyn/output/output_error.hpp"
+#include "exit_codes.hpp"
 
 namespace deploydyn::cli {
 namespace {
-
-constexpr int kExitBadInput = 2;
 
 // What the file is and how to use it; save_model writes no comments of its own.
 std::string header_comment(const RoofOptions& roof, const Model& model) {
@@ -92,22 +95,25 @@ int generate_command(const GenerateArguments& arguments) {
     fmt::print(stderr, "error: generate {}\n", e.what());
     return kExitBadInput;
   }
-  const std::string header = header_comment(arguments.roof, model);
+  std::ostringstream text;
+  text << header_comment(arguments.roof, model);
+  save_model(model, text);
   if (arguments.out_file.empty()) {
-    std::cout << header;
-    save_model(model, std::cout);
-    std::cout.flush();
-    return 0;
+    // A full or closed stdout (`> /dev/full`) must not pass for a written model.
+    const std::string model_text = std::move(text).str();
+    if (std::fwrite(model_text.data(), 1, model_text.size(), stdout) != model_text.size() ||
+        std::fflush(stdout) != 0) {
+      fmt::print(stderr, "error: generate roof: cannot write the model to standard output: {}\n",
+                 std::strerror(errno));
+      return kExitOutputFailure;
+    }
+    return kExitSuccess;
   }
-  std::ofstream out(arguments.out_file, std::ios::binary);
-  if (out) {
-    out << header;
-    save_model(model, out);
-    out.close();
-  }
-  if (!out) {
-    fmt::print(stderr, "error: generate roof: cannot write '{}'\n", arguments.out_file);
-    return kExitBadInput;
+  try {
+    write_file(arguments.out_file, text.str());
+  } catch (const OutputError& e) {
+    fmt::print(stderr, "error: generate roof: {}\n", e.what());
+    return kExitOutputFailure;
   }
   const double seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

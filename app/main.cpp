@@ -1,6 +1,7 @@
 // deploydyn command-line tool: `run` a model into a result folder, `check` a model file, `study`
 // a list of load cases (app/study_command.hpp).
-// Exit codes: 0 success, 1 solver failure or interruption, 2 bad input.
+// Exit codes: 0 success, 1 solver failure or interruption, 2 bad input, 3 results could not be
+// written (a full disk, no permission, a result folder in use by another run).
 
 #include <CLI/CLI.hpp>
 #include <fmt/format.h>
@@ -10,25 +11,48 @@
 #include <chrono>
 #include <csignal>
 #include <cstdio>
-#include <iostream>
+#include <string>
+#include <system_error>
 
 #include "deploydyn/assembly/assembler.hpp"
 #include "deploydyn/assembly/linear_system_factory.hpp"
 #include "deploydyn/io/input_error.hpp"
 #include "deploydyn/io/model_loader.hpp"
+#include "deploydyn/io/text_file.hpp"
+#include "deploydyn/output/output_error.hpp"
 #include "deploydyn/output/run_to_folder.hpp"
+#include "exit_codes.hpp"
 #include "generate_command.hpp"
 #include "study_command.hpp"
 
 namespace {
 
 using namespace deploydyn;
+using namespace deploydyn::cli;
 
-constexpr int kExitSolverFailure = 1;
-constexpr int kExitBadInput = 2;
 
 std::atomic<bool> g_stop{false};
 extern "C" void request_stop(int) { g_stop.store(true); }
+
+// "error: TEXT" on stderr, control characters escaped; never throws, even when stderr is
+// closed or full (then there is no one left to tell, and the exit code says it).
+void print_error(const std::string& text) noexcept {
+  try {
+    const std::string line = "error: " + io::printable(text) + "\n";
+    std::fputs(line.c_str(), stderr);
+  } catch (...) {
+  }
+}
+
+// Ctrl-C, `kill` and a closed terminal all end a run the same way: at the next step, with
+// what it has written and status "interrupted".
+void stop_on_signals() {
+  struct sigaction action {};
+  action.sa_handler = request_stop;
+  sigemptyset(&action.sa_mask);
+  action.sa_flags = SA_RESTART;
+  for (const int signal : {SIGINT, SIGTERM, SIGHUP}) sigaction(signal, &action, nullptr);
+}
 
 std::vector<Override> parse_overrides(const std::vector<std::string>& texts) {
   std::vector<Override> overrides;
@@ -72,15 +96,15 @@ class ProgressLine {
 
 int run_command(const std::string& model_file, const std::string& out_dir,
                 const std::vector<std::string>& sets, bool quiet) {
+  stop_on_signals();
   const Model model = load_model(model_file, parse_overrides(sets));
-  std::signal(SIGINT, request_stop);
-  std::signal(SIGTERM, request_stop);
   ProgressLine progress(model.analysis.end_time_s, quiet);
   RunControl control;
   control.progress = [&](double t) { progress.update(t); };
   control.stop = &g_stop;
   const RunReport report = run_to_folder(model, out_dir, control);
   progress.clear();
+  for (const std::string& warning : report.warnings) fmt::print(stderr, "warning: {}\n", warning);
   if (report.status == RunStatus::completed) {
     if (!quiet) {
       fmt::print(stderr, "{}: {} in {:.3f} s, {} Newton iterations ({:.2f} per step); results in {}\n",
@@ -140,6 +164,9 @@ int check_command(const std::string& model_file, const std::vector<std::string>&
 }  // namespace
 
 int main(int argc, char** argv) {
+  // Past a file-size limit (ulimit -f) a write then fails with EFBIG, and the command says so
+  // and keeps what it wrote, instead of being killed mid-row.
+  std::signal(SIGXFSZ, SIG_IGN);
   CLI::App app{"deploydyn: deployment dynamics of flexible deployable structures under thermal loading"};
   app.require_subcommand(1);
   app.set_version_flag("--version", "deploydyn 0.1.0");
@@ -180,19 +207,25 @@ int main(int argc, char** argv) {
     if (*run) return run_command(model_file, out_dir, sets, quiet);
     if (*generate) return cli::generate_command(generate_arguments);
     if (*study) {
-      std::signal(SIGINT, request_stop);
-      std::signal(SIGTERM, request_stop);
+      stop_on_signals();
       return cli::study_command(study_arguments, g_stop);
     }
     return check_command(model_file, sets);
   } catch (const InputError& e) {
-    fmt::print(stderr, "error: {}\n", e.what());
+    print_error(e.what());
     return kExitBadInput;
+  } catch (const OutputError& e) {
+    print_error(e.what());
+    return kExitOutputFailure;
   } catch (const std::invalid_argument& e) {
-    fmt::print(stderr, "error: {}: {}\n", model_file, e.what());
+    print_error(model_file + ": " + e.what());
     return kExitBadInput;
+  } catch (const std::system_error& e) {
+    // fmt::print throws this when stderr or stdout cannot be written (closed, /dev/full).
+    print_error(e.what());
+    return kExitOutputFailure;
   } catch (const std::exception& e) {
-    fmt::print(stderr, "error: {}\n", e.what());
+    print_error(e.what());
     return kExitSolverFailure;
   }
 }

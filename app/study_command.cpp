@@ -7,14 +7,9 @@
 
 #include "deploydyn/study/study_loader.hpp"
 #include "deploydyn/study/study_runner.hpp"
+#include "exit_codes.hpp"
 
 namespace deploydyn::cli {
-namespace {
-
-constexpr int kExitSolverFailure = 1;
-
-}  // namespace
-
 CLI::App* add_study_command(CLI::App& app, StudyArguments& arguments) {
   CLI::App* study = app.add_subcommand(
       "study",
@@ -65,7 +60,7 @@ int study_command(const StudyArguments& arguments, const std::atomic<bool>& stop
                arguments.study_file, n_completed, outcomes.size(), wall_s, n_jobs,
                study.table_file().string());
   }
-  return all_completed ? 0 : kExitSolverFailure;
+  return all_completed ? kExitSuccess : kExitSolverFailure;
 }
 
 }  // namespace deploydyn::cli

@@ -374,13 +374,18 @@ TEST(RoofCommand, BadArgumentsExitWithTwo) {
       {"generate", "name a structure"},
       {"generate roof --units 2 extra", "'extra'"},
       {"generate roof --units 2 --bogus", "--bogus"},
-      {"generate roof --units 2 --out /nonexistent/dir/roof.yaml", "cannot write"},
   };
   for (const Case& c : cases) {
     const auto o = testing::run_cli(c.arguments);
     EXPECT_EQ(o.exit_code, 2) << c.arguments << "\n" << o.output;
     EXPECT_NE(o.output.find(c.expected), std::string::npos) << c.arguments << "\n" << o.output;
   }
+  // A file that cannot be written is not bad input: exit 3, with the system's reason.
+  const auto unwritable = testing::run_cli("generate roof --units 2 --out /nonexistent/dir/roof.yaml");
+  EXPECT_EQ(unwritable.exit_code, 3) << unwritable.output;
+  EXPECT_NE(unwritable.output.find("cannot write /nonexistent/dir/roof.yaml: No such file or directory"),
+            std::string::npos)
+      << unwritable.output;
   const auto help = testing::run_cli("generate roof --help");
   EXPECT_EQ(help.exit_code, 0);
   EXPECT_NE(help.output.find("--delta-t"), std::string::npos) << help.output;

@@ -16,9 +16,10 @@ struct CliOutcome {
   std::string output;  // stdout and stderr together
 };
 
-// Runs `deploydyn <arguments>` through the shell (so arguments may hold redirections).
-inline CliOutcome run_cli(const std::string& arguments) {
-  const std::string command = std::string(DEPLOYDYN_CLI) + " " + arguments + " 2>&1";
+// Runs `<prefix> deploydyn <arguments>` through the shell (so arguments may hold
+// redirections); `prefix` is a command that runs deploydyn, such as prlimit, or empty.
+inline CliOutcome run_cli_with_prefix(const std::string& prefix, const std::string& arguments) {
+  const std::string command = prefix + " " + std::string(DEPLOYDYN_CLI) + " " + arguments + " 2>&1";
   CliOutcome outcome;
   std::FILE* pipe = popen(command.c_str(), "r");
   std::array<char, 4096> buffer{};
@@ -27,6 +28,8 @@ inline CliOutcome run_cli(const std::string& arguments) {
   outcome.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
   return outcome;
 }
+
+inline CliOutcome run_cli(const std::string& arguments) { return run_cli_with_prefix("", arguments); }
 
 inline std::string example_path(const std::string& name) {
   return std::string(DEPLOYDYN_SOURCE_DIR) + "/examples/paper/" + name;

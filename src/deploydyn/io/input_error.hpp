@@ -2,9 +2,13 @@
 // Error in user input: names where (file, line, column), which field (dotted path), and what
 // is allowed. what() is the full one-line message, e.g.
 //   model.yaml:17:5: elements.2.area: must be positive (m²), got -1
+// with control characters and bytes that are not UTF-8 escaped (io::printable): a message may
+// quote a binary file or an ANSI escape sequence, and must not play it on the terminal.
 
 #include <stdexcept>
 #include <string>
+
+#include "deploydyn/io/text_file.hpp"
 
 namespace deploydyn {
 
@@ -32,7 +36,7 @@ class InputError : public std::runtime_error {
     if (line > 0 && column > 0) text.append(":").append(std::to_string(column));
     text.append(": ");
     if (!field.empty()) text.append(field).append(": ");
-    return text.append(problem);
+    return io::printable(text.append(problem));
   }
 
   std::string source_;

@@ -12,9 +12,14 @@
 #include <map>
 #include <optional>
 #include <sstream>
+#include <tuple>
 #include <unordered_map>
 
+#include "deploydyn/io/text_file.hpp"
 #include "deploydyn/io/yaml_reader.hpp"
+
+#include "deploydyn/output/result_folder.hpp"
+#include "deploydyn/output/vtk_writer.hpp"
 
 namespace deploydyn {
 namespace {
@@ -27,17 +32,29 @@ constexpr std::size_t kUnbounded = std::numeric_limits<std::size_t>::max();
 // A step below 1 ns or a run of more than 1e8 steps is a typo in the file, not a choice.
 constexpr double kMinStep_s = 1e-9;
 constexpr double kMaxSteps = 1e8;
+// More initial load steps than this is a typo: a millionth of the thermal load is far below
+// what moves a node measurably, and each step costs at least one factorization.
+constexpr int kMaxLoadSteps = 1'000'000;
 // output_interval / step is "whole" up to the rounding of decimal inputs such as 5e-3 / 1e-3.
 constexpr double kWholeMultipleTolerance = 1e-9;
 // Nodes closer than this are at the same position: a bar between them has no direction.
 constexpr double kMinBarLength_m = 1e-12;
+
+// Names head CSV columns and key JSON objects: see io::name_problem.
+void check_name(const std::string& name, const YamlValue& where, std::string_view kind) {
+  if (const std::string problem = io::name_problem(name); !problem.empty()) {
+    where.fail(fmt::format("{} '{}': {}", kind, name, problem));
+  }
+}
 
 // The names of one kind of object (nodes, materials, ...) in file order, to resolve references.
 class NameIndex {
  public:
   explicit NameIndex(std::string kind) : kind_(std::move(kind)) {}
 
-  void add(const std::string& name) {
+  // `where`: the entry, for the message when the name cannot be used.
+  void add(const std::string& name, const YamlValue& where) {
+    check_name(name, where, kind_);
     index_.emplace(name, static_cast<int>(names_.size()));
     names_.push_back(name);
   }
@@ -236,7 +253,7 @@ class ModelReader {
                         coordinates.size(), model_.nodes.front().name, *dimension));
       }
       for (std::size_t i = 0; i < coordinates.size(); ++i) node.position_m[i] = coordinates[i];
-      nodes_.add(name);
+      nodes_.add(name, spec);
       model_.nodes.push_back(node);
     }
     model_.dimension = static_cast<int>(*dimension);
@@ -272,7 +289,7 @@ class ModelReader {
       if (const auto density = spec.find("density")) {
         material.density_kg_m3 = density->number(Sign::positive, "kg/m³");
       }
-      materials_.add(name);
+      materials_.add(name, spec);
       model_.materials.push_back(material);
     }
   }
@@ -321,7 +338,7 @@ class ModelReader {
       const auto dT = spec.find("dT");
       bar.temperature_given = dT.has_value();
       bar.temperature_change_C = dT ? function(*dT) : model_.temperature_change_C;
-      elements_.add(name);
+      elements_.add(name, spec);
       model_.bars.push_back(bar);
     }
   }
@@ -351,6 +368,7 @@ class ModelReader {
 
   void read_drivers(const YamlValue& section) {
     for (const auto& [name, spec] : section.entries()) {
+      check_name(name, spec, "driver");
       Driver driver;
       driver.name = name;
       const bool bar_angle = spec.at("type").choice({"bar_angle", "coordinate"}) == 0;
@@ -438,11 +456,24 @@ class ModelReader {
     }();
     if (!step_problem.empty()) {
       const std::string problem = fmt::format("{}, got {}", step_problem, analysis.step_s);
-      if (const auto step = spec.find("step")) step->fail(problem);
+      const auto step = spec.find("step");
+      // Blame the value that was just changed: an override of end that the file's step cannot
+      // meet names the override, not the file's line.
+      if (const auto end = spec.find("end");
+          end && end->from_override() && !(step && step->from_override())) {
+        end->fail(fmt::format("with step = {} s: step {}; got end = {}", analysis.step_s,
+                              step_problem, analysis.end_time_s));
+      }
+      if (step) step->fail(problem);
       spec.fail_key("step", problem + " (the default)");
     }
     if (const auto load_steps = spec.find("load_steps")) {
       analysis.load_steps = load_steps->integer(1);
+      if (analysis.load_steps > kMaxLoadSteps) {
+        load_steps->fail(fmt::format("must be at most {} (the load steps of the initial "
+                                     "equilibrium; they grow and shrink by themselves), got {}",
+                                     kMaxLoadSteps, analysis.load_steps));
+      }
     }
     if (const auto mass = spec.find("mass")) {
       analysis.mass = mass->choice({"consistent", "lumped"}) == 0 ? MassMatrixKind::consistent
@@ -546,9 +577,26 @@ class ModelReader {
   void read_output(const YamlValue& spec) {
     spec.expect_keys({"history", "summary", "vtk"});
     OutputOptions& output = model_.output;
-    if (const auto history = spec.find("history")) output.history_file = file_name(*history);
-    if (const auto summary = spec.find("summary")) output.summary_file = file_name(*summary);
+    const auto history = spec.find("history");
+    const auto summary = spec.find("summary");
+    if (history) output.history_file = file_name(*history);
+    if (summary) output.summary_file = file_name(*summary);
     if (const auto vtk = spec.find("vtk")) output.vtk = vtk->choice({"false", "true"}) == 1;
+    // Each file of the run's folder must survive the others: a history named summary.json
+    // would be overwritten at the end, one named model.yaml would lose the model as run.
+    for (const auto& [value, name, other] :
+         {std::tuple{history, output.history_file, output.summary_file},
+          std::tuple{summary, output.summary_file, output.history_file}}) {
+      if (!value) continue;
+      const std::vector<std::string> taken{kRunModelFileName, kLockFileName, kVtkFolderName, other,
+                                           other + ".tmp"};
+      if (std::find(taken.begin(), taken.end(), name) != taken.end()) {
+        value->fail(fmt::format("'{}' is taken in the result folder; the run writes {} (model), "
+                                "{} (summary), {} (history), {} (lock) and {}/ (VTK)",
+                                name, kRunModelFileName, output.summary_file, output.history_file,
+                                kLockFileName, kVtkFolderName));
+      }
+    }
   }
 
   // Output goes into the run's output folder, so only a plain name makes sense.
@@ -678,16 +726,7 @@ Override parse_override(const std::string& text) {
 }
 
 Model load_model(const std::filesystem::path& file, const std::vector<Override>& overrides) {
-  const std::string source_name = file.string();
-  std::error_code ignored;
-  std::ifstream in(file, std::ios::binary);
-  if (!in || std::filesystem::is_directory(file, ignored)) {
-    io::throw_input_error(source_name, YAML::Mark::null_mark(), "", "cannot open file");
-  }
-  std::ostringstream text;
-  text << in.rdbuf();
-  if (in.bad()) io::throw_input_error(source_name, YAML::Mark::null_mark(), "", "cannot read file");
-  return load_model_from_string(text.str(), source_name, overrides);
+  return load_model_from_string(io::read_input_file(file), file.string(), overrides);
 }
 
 Model load_model_from_string(const std::string& text, const std::string& source_name,

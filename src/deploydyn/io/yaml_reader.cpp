@@ -215,6 +215,13 @@ double YamlValue::number(Sign sign, std::string_view unit) const {
     fail(fmt::format("expected a number{}, got {}", in_unit, describe(node_)));
   }
   if (!std::isfinite(value)) fail(fmt::format("must be a finite number, got {}", node_.Scalar()));
+  // Beyond these, products in the solver (m·a, EA·ε, K/M) overflow or lose all digits: a
+  // mass of 1e308 kg or an area of 1e-300 m² is a typo, not a structure.
+  constexpr double kLargest = 1e100, kSmallest = 1e-100;
+  if (std::abs(value) > kLargest || (value != 0.0 && std::abs(value) < kSmallest)) {
+    fail(fmt::format("must be 0 or between {:g} and {:g} in magnitude{}, got {}", kSmallest, kLargest,
+                     unit.empty() ? " (SI units)" : in_unit, node_.Scalar()));
+  }
   if (sign == Sign::positive && !(value > 0.0)) {
     fail(fmt::format("must be positive{}, got {}", in_unit, node_.Scalar()));
   }

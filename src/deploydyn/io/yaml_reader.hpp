@@ -57,6 +57,8 @@ class YamlValue {
   const std::string& path() const { return path_; }
   bool is_scalar() const { return node_.IsScalar(); }
   bool is_map() const { return node_.IsMap(); }
+  // Made by a --set override (it has no place in the file).
+  bool from_override() const { return node_.Mark().is_null(); }
   std::string description() const { return describe(node_); }
 
   [[noreturn]] void fail(const std::string& problem) const;

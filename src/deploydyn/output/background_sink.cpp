@@ -69,6 +69,7 @@ void BackgroundSink::work() {
     } catch (...) {
       std::lock_guard lock(mutex_);
       error_ = std::current_exception();
+      failed_.store(true);
       queue_.clear();
       changed_.notify_all();
       return;

@@ -5,6 +5,7 @@
 // their order; finish() waits until all are written and rethrows what the sink threw.
 // The queue is bounded: a solver faster than the disk waits rather than filling memory.
 
+#include <atomic>
 #include <chrono>
 #include <condition_variable>
 #include <deque>
@@ -31,6 +32,8 @@ class BackgroundSink final : public RecordSink {
                     double external_work_J) override;
   // Waits until every record has reached the sink; rethrows the first exception it threw.
   void finish();
+  // True once the sink has thrown: the records since are dropped. Any thread may ask.
+  bool failed() const { return failed_.load(std::memory_order_relaxed); }
 
  private:
   // A record, or the state to build it from.
@@ -53,6 +56,7 @@ class BackgroundSink final : public RecordSink {
   std::deque<Item> queue_;
   bool closing_ = false;
   std::exception_ptr error_;
+  std::atomic<bool> failed_{false};
   std::thread worker_;
 };
 

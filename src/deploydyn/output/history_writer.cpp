@@ -3,7 +3,8 @@
 #include <fmt/compile.h>
 #include <fmt/format.h>
 
-#include <stdexcept>
+#include <string_view>
+#include <utility>
 
 namespace deploydyn {
 namespace {
@@ -11,6 +12,9 @@ namespace {
 // A reader loses nothing between flushes longer than this; writing every row at once would
 // make small runs pay a system call per row.
 constexpr auto kFlushInterval = std::chrono::milliseconds(200);
+
+// Rows gathered before one write: few system calls, little memory.
+constexpr std::size_t kLargestPending = std::size_t{1} << 16;
 
 // Characters of the longest shortest-form double ("-2.2250738585072014e-308": 24) and its comma.
 constexpr std::size_t kLongestValue = 25;
@@ -45,15 +49,8 @@ void append_history_row(const StepRecord& r, std::vector<double>& row) {
 }
 
 HistoryWriter::HistoryWriter(const std::filesystem::path& file, const Model& model)
-    : file_(std::fopen(file.c_str(), "w")), last_flush_(std::chrono::steady_clock::now()) {
-  if (file_ == nullptr) throw std::runtime_error("cannot write " + file.string());
-  const std::vector<std::string> columns = history_columns(model);
-  std::fputs(fmt::format("{}\n", fmt::join(columns, ",")).c_str(), file_);
-  std::fflush(file_);
-}
-
-HistoryWriter::~HistoryWriter() {
-  if (file_ != nullptr) std::fclose(file_);
+    : file_(file), last_flush_(std::chrono::steady_clock::now()) {
+  file_.append(fmt::format("{}\n", fmt::join(history_columns(model), ",")));
 }
 
 void HistoryWriter::record(const StepRecord& r) {
@@ -63,20 +60,25 @@ void HistoryWriter::record(const StepRecord& r) {
   // straight into a buffer sized for the longest: 40 ns a value, against 83 through
   // fmt::join and a back_inserter (bench/output_benchmark.cpp). The row is the writer
   // thread's main work, and in a study it competes with the solvers for the cores.
-  row_.resize(values_.size() * kLongestValue);
-  char* end = row_.data();
+  rows_.resize(n_pending_ + values_.size() * kLongestValue);
+  char* const start = rows_.data() + n_pending_;
+  char* end = start;
   for (const double value : values_) {
     end = fmt::format_to(end, FMT_COMPILE("{}"), value);
     *end++ = ',';
   }
   end[-1] = '\n';
-  std::fwrite(row_.data(), 1, static_cast<std::size_t>(end - row_.data()), file_);
-  if (std::chrono::steady_clock::now() - last_flush_ >= kFlushInterval) flush();
+  n_pending_ += static_cast<std::size_t>(end - start);
+  if (n_pending_ >= kLargestPending || std::chrono::steady_clock::now() - last_flush_ >= kFlushInterval) {
+    flush();
+  }
 }
 
 void HistoryWriter::flush() {
-  std::fflush(file_);
   last_flush_ = std::chrono::steady_clock::now();
+  if (n_pending_ == 0) return;
+  const std::size_t n = std::exchange(n_pending_, 0);  // a failed write is not tried again
+  file_.append(std::string_view(rows_.data(), n));
 }
 
 }  // namespace deploydyn

@@ -2,16 +2,17 @@
 // history.csv (DESIGN §4): one header row, then one row per output time:
 //   t, x.<node>, y.<node>[, z.<node>] ..., strain.<el>, mstrain.<el>, force.<el> ...,
 //   torque.<driver> | force.<driver> ..., kinetic, strain_energy, external_work
-// Rows are written as they come and flushed at least every `flush_interval` of wall time, so
-// a crash or an interrupt loses at most that much.
+// Rows are gathered and written in whole rows at least every 200 ms of wall time, so a crash
+// or an interrupt loses at most that much and never leaves half a row (output/checked_file.hpp);
+// a failed write throws OutputError with the reason and keeps the rows before it.
 
 #include <chrono>
-#include <cstdio>
 #include <filesystem>
 #include <string>
 #include <vector>
 
 #include "deploydyn/model/model.hpp"
+#include "deploydyn/output/checked_file.hpp"
 #include "deploydyn/output/step_record.hpp"
 
 namespace deploydyn {
@@ -24,9 +25,9 @@ void append_history_row(const StepRecord& record, std::vector<double>& row);
 
 class HistoryWriter final : public RecordSink {
  public:
-  // Throws std::runtime_error when the file cannot be opened.
+  // Throws OutputError when the file cannot be written.
   HistoryWriter(const std::filesystem::path& file, const Model& model);
-  ~HistoryWriter() override;
+  ~HistoryWriter() override = default;
   HistoryWriter(const HistoryWriter&) = delete;
   HistoryWriter& operator=(const HistoryWriter&) = delete;
 
@@ -34,9 +35,10 @@ class HistoryWriter final : public RecordSink {
   void flush();
 
  private:
-  std::FILE* file_ = nullptr;
+  AppendFile file_;
   std::vector<double> values_;
-  std::vector<char> row_;  // one row's text
+  std::vector<char> rows_;    // text of the rows not yet written, then room for one more
+  std::size_t n_pending_ = 0;  // bytes of rows_ that hold whole rows
   std::chrono::steady_clock::time_point last_flush_;
 };
 

@@ -1,8 +1,9 @@
 #pragma once
-// One run with its results on disk: model.yaml (the model as run, overrides applied) first,
-// history.csv streamed while it runs, summary.json at the
-// end, whatever the end (completed, failed or interrupted); with `output.vtk`, also a ParaView
-// time series in vtk/ (output/vtk_writer.hpp), streamed. What the CLI's `run` does.
+// One run with its results on disk, in a folder it owns (output/result_folder.hpp):
+// summary.json saying "running" first, then model.yaml (the model as run, overrides applied),
+// history.csv streamed while it runs, and summary.json again at the end, whatever the end
+// (completed, failed or interrupted); with `output.vtk`, also a ParaView time series in vtk/
+// (output/vtk_writer.hpp), streamed. What the CLI's `run` does.
 
 #include <filesystem>
 
@@ -11,8 +12,9 @@
 
 namespace deploydyn {
 
-// Creates `folder` if needed. Throws std::runtime_error only when files cannot be written,
-// and std::invalid_argument when the model's mechanics cannot be built.
+// Creates `folder` if needed. Throws std::invalid_argument when the model's mechanics cannot
+// be built (before any file is touched), and OutputError when the folder is in use or a file
+// cannot be written: then the run stops, and summary.json says "failed" and why, if it can.
 RunReport run_to_folder(const Model& model, const std::filesystem::path& folder,
                         const RunControl& control = {});
 

@@ -1,11 +1,12 @@
 #include "deploydyn/output/summary_writer.hpp"
 
-#include "deploydyn/model/dof_map.hpp"
-#include "deploydyn/solvers/generalized_alpha.hpp"
-
-#include <fstream>
 #include <nlohmann/json.hpp>
-#include <stdexcept>
+
+#include "deploydyn/model/dof_map.hpp"
+#include "deploydyn/output/plausibility.hpp"
+#include "deploydyn/output/result_folder.hpp"
+#include "deploydyn/output/vtk_writer.hpp"
+#include "deploydyn/solvers/generalized_alpha.hpp"
 
 namespace deploydyn {
 namespace {
@@ -49,7 +50,33 @@ ordered_json failure(const FailureReport& f) {
           {"reason", f.reason}};
 }
 
+ordered_json files(const Model& model) {
+  ordered_json j = ordered_json::object();
+  for (const auto& [role, name] : run_files(model)) j[role] = name;
+  return j;
+}
+
+// The longest message a short status keeps: it must fit the room a running status reserves.
+constexpr std::size_t kShortMessageLength = 2000;
+
 }  // namespace
+
+std::vector<std::pair<std::string, std::string>> run_files(const Model& model) {
+  std::vector<std::pair<std::string, std::string>> files{{"model", kRunModelFileName},
+                                                         {"history", model.output.history_file}};
+  if (model.output.vtk) files.emplace_back("vtk", kVtkFolderName);
+  return files;
+}
+
+std::string short_summary_json(const Model& model, const RunReport& report) {
+  ordered_json j;
+  j["model"] = model.name.substr(0, kShortMessageLength / 4);
+  j["status"] = to_string(report.status);
+  j["message"] = report.message.substr(0, kShortMessageLength);
+  j["files"] = files(model);
+  // Cut names and messages may split a UTF-8 sequence: replace rather than throw.
+  return j.dump(-1, ' ', false, ordered_json::error_handler_t::replace);
+}
 
 std::string summary_json(const Model& model, const Envelope& envelope, const RunReport& report) {
   ordered_json j;
@@ -108,20 +135,9 @@ std::string summary_json(const Model& model, const Envelope& envelope, const Run
   j["initial_equilibrium"] = {{"load_steps", report.initial_load_steps},
                               {"newton_iterations", report.initial_iterations}};
   j["wall_time"] = report.wall_time_s;
+  j["warnings"] = plausibility_warnings(model, envelope);
+  j["files"] = files(model);
   return j.dump(2);
-}
-
-void write_summary(const std::filesystem::path& file, const Model& model, const Envelope& envelope,
-                   const RunReport& report) {
-  const std::string text = summary_json(model, envelope, report);
-  const std::filesystem::path temporary = file.string() + ".tmp";
-  {
-    std::ofstream out(temporary);
-    if (!out) throw std::runtime_error("cannot write " + temporary.string());
-    out << text << '\n';
-    if (!out) throw std::runtime_error("cannot write " + temporary.string());
-  }
-  std::filesystem::rename(temporary, file);
 }
 
 }  // namespace deploydyn

@@ -1,11 +1,13 @@
 #pragma once
 // summary.json (DESIGN §4): how the run ended; per element min/max of total and mechanical
 // strain and axial force with their times; per driver the peak effort; final node positions;
-// steps, Newton iterations, rejected steps, wall time. Written whole to a temporary file and
-// renamed, so a reader never sees half of it.
+// steps, Newton iterations, rejected steps, wall time; warnings (output/plausibility.hpp);
+// the folder's files by role. Written by ResultFolder (output/result_folder.hpp): "running" at
+// the start of a run, the final status at its end, atomically.
 
-#include <filesystem>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "deploydyn/model/model.hpp"
 #include "deploydyn/output/envelope.hpp"
@@ -13,11 +15,16 @@
 
 namespace deploydyn {
 
-// The JSON text that write_summary writes (indented, without the final newline): for callers
-// that keep results in memory, such as the Python bindings.
+// The final summary (indented, without the final newline). Also what the Python bindings
+// return for a run in memory.
 std::string summary_json(const Model& model, const Envelope& envelope, const RunReport& report);
 
-void write_summary(const std::filesystem::path& file, const Model& model, const Envelope& envelope,
-                   const RunReport& report);
+// The files of a run's folder by role ("model", "history", "vtk"), as summary.json lists them
+// under "files": what the next run into the folder removes first.
+std::vector<std::pair<std::string, std::string>> run_files(const Model& model);
+
+// Status and message only, on one line of at most about 2.5 kB: what is left to say when the
+// disk is too full for the whole summary.
+std::string short_summary_json(const Model& model, const RunReport& report);
 
 }  // namespace deploydyn

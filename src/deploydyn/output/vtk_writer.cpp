@@ -2,11 +2,15 @@
 
 #include <fmt/format.h>
 
+#include <cerrno>
 #include <cstdio>
 #include <regex>
 #include <stdexcept>
 #include <string_view>
 #include <system_error>
+
+#include "deploydyn/output/checked_file.hpp"
+#include "deploydyn/output/output_error.hpp"
 
 namespace deploydyn {
 namespace {
@@ -15,14 +19,7 @@ constexpr int kVtkLine = 3;  // VTK cell type of a two-node line
 constexpr std::string_view kCollectionFooter = "  </Collection>\n</VTKFile>\n";
 
 [[noreturn]] void cannot_write(const std::filesystem::path& file) {
-  throw std::runtime_error("cannot write " + file.string());
-}
-
-void write_file(const std::filesystem::path& file, const std::string& text) {
-  std::FILE* out = std::fopen(file.c_str(), "wb");
-  if (out == nullptr) cannot_write(file);
-  const bool written = std::fwrite(text.data(), 1, text.size(), out) == text.size();
-  if (std::fclose(out) != 0 || !written) cannot_write(file);
+  throw OutputError("cannot write", file, errno);
 }
 
 using Out = std::back_insert_iterator<std::string>;
@@ -45,21 +42,29 @@ void float_array(Out out, const char* name, int n_tuples, int n_components, Valu
 
 }  // namespace
 
+void remove_vtk_series(const std::filesystem::path& folder) {
+  static const std::regex ours(R"(frame_[0-9]+\.vtu|deploydyn\.pvd)");
+  std::error_code error;
+  for (std::filesystem::directory_iterator entry(folder, error), end; !error && entry != end;
+       entry.increment(error)) {
+    if (entry->is_regular_file() && std::regex_match(entry->path().filename().string(), ours)) {
+      std::filesystem::remove(entry->path(), error);
+      if (error) throw OutputError("cannot remove the earlier run's", entry->path(), error.value());
+    }
+  }
+  if (error && error != std::errc::no_such_file_or_directory) {
+    throw OutputError("cannot read folder", folder, error.value());
+  }
+}
+
 std::string vtk_frame_file_name(int index) { return fmt::format("frame_{:06d}.vtu", index); }
 
 VtkWriter::VtkWriter(const std::filesystem::path& folder, const Model& model)
     : folder_(folder), model_(model), dofs_(model) {
   std::error_code error;
   std::filesystem::create_directories(folder_, error);
-  if (error) {
-    throw std::runtime_error("cannot make folder " + folder_.string() + ": " + error.message());
-  }
-  static const std::regex ours(R"(frame_[0-9]+\.vtu|deploydyn\.pvd)");
-  for (const auto& entry : std::filesystem::directory_iterator(folder_)) {
-    if (entry.is_regular_file() && std::regex_match(entry.path().filename().string(), ours)) {
-      std::filesystem::remove(entry.path());
-    }
-  }
+  if (error) throw OutputError("cannot create folder", folder_, error.value());
+  remove_vtk_series(folder_);
   const std::filesystem::path collection = folder_ / kVtkCollectionFileName;
   collection_ = std::fopen(collection.c_str(), "wb");
   if (collection_ == nullptr) cannot_write(collection);

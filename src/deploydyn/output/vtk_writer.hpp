@@ -32,17 +32,21 @@ std::string vtk_frame_file_name(int index);
 inline constexpr const char* kVtkCollectionFileName = "deploydyn.pvd";
 inline constexpr const char* kVtkFolderName = "vtk";  // in a run's result folder
 
+// Removes the frames and collection that a VtkWriter wrote into `folder`, and nothing else
+// there; nothing to do when `folder` does not exist. Throws OutputError when it cannot.
+void remove_vtk_series(const std::filesystem::path& folder);
+
 class VtkWriter final : public RecordSink {
  public:
   // Creates `folder` if needed, removes the frames and collection of an earlier run there (so a
   // shorter run leaves no stale frames) and starts an empty collection. Keeps a reference to
-  // `model`, which must outlive the writer. Throws std::runtime_error when it cannot write.
+  // `model`, which must outlive the writer. Throws OutputError when it cannot write.
   VtkWriter(const std::filesystem::path& folder, const Model& model);
   ~VtkWriter() override;
   VtkWriter(const VtkWriter&) = delete;
   VtkWriter& operator=(const VtkWriter&) = delete;
 
-  // Throws std::runtime_error when a file cannot be written, std::invalid_argument when the
+  // Throws OutputError when a file cannot be written, std::invalid_argument when the
   // record's sizes do not fit the model (every record of make_step_record fits).
   void record(const StepRecord& record) override;
 

@@ -140,9 +140,15 @@ RunReport run_analysis(const Assembler& assembler, RecordSink& sink, const RunCo
         kFreeMotionRegularization * assembler.stiffness_scale(state.q, 0.0) / assembler.mass_scale();
   }
   const StaticResult initial =
-      solve_static(assembler, options, initial_path, options.load_steps, system, state);
+      solve_static(assembler, options, initial_path, options.load_steps, system, state, control);
   report.initial_load_steps = initial.load_steps;
   report.initial_iterations = initial.total_iterations;
+  if (initial.stopped) {
+    report.status = RunStatus::interrupted;
+    report.message = fmt::format("interrupted in the initial equilibrium (thermal load at {:.1f}%)",
+                                 100.0 * initial.path_factor);
+    return finish(report);
+  }
   if (initial.path_factor < 1.0) {
     FailureReport f = describe_failure(assembler, "initial equilibrium", 0.0, 0, initial.newton);
     f.reason += fmt::format(" (thermal load reached {:.1f}%)", 100.0 * initial.path_factor);
@@ -179,7 +185,7 @@ RunReport run_analysis(const Assembler& assembler, RecordSink& sink, const RunCo
   StepController steps(options);
   MotionState next;  // the step's trial state; swapped with `state` when accepted
   while (state.time_s < options.end_time_s) {
-    if (control.stop != nullptr && control.stop->load()) {
+    if (stop_requested(control)) {
       report.status = RunStatus::interrupted;
       report.message = fmt::format("interrupted at t = {:.6g} s", state.time_s);
       return finish(report);

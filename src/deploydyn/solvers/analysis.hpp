@@ -5,12 +5,12 @@
 //   3. a StepRecord to the sink at t = 0 and at every output interval.
 // How it ended is a RunReport, never an exception: the caller keeps what was written.
 
-#include <atomic>
-#include <functional>
 #include <string>
+#include <vector>
 
 #include "deploydyn/assembly/assembler.hpp"
 #include "deploydyn/output/step_record.hpp"
+#include "deploydyn/solvers/run_control.hpp"
 
 namespace deploydyn {
 
@@ -43,14 +43,9 @@ struct RunReport {
   int initial_load_steps = 0;
   int initial_iterations = 0;
   double wall_time_s = 0.0;
+  std::vector<std::string> warnings;  // implausible states reached (output/plausibility.hpp)
 };
 
-struct RunControl {
-  // Called after every step with the time reached; may be empty.
-  std::function<void(double time_s)> progress;
-  // Set from elsewhere (a signal handler) to stop after the current step.
-  const std::atomic<bool>* stop = nullptr;
-};
 
 RunReport run_analysis(const Assembler& assembler, RecordSink& sink, const RunControl& control = {});
 

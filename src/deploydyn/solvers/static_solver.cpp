@@ -60,7 +60,7 @@ class StaticEquations final : public DiscreteEquations {
 
 StaticResult solve_static(const Assembler& assembler, const AnalysisOptions& options,
                           const LoadPath& path, int load_steps, LinearSystem& system,
-                          MotionState& state) {
+                          MotionState& state, const RunControl& control) {
   StaticResult result;
   // Constraint rows scaled to the stiffness keep the matrix balanced (DESIGN §2).
   const double scale = assembler.stiffness_scale(state.q, state.time_s);
@@ -69,6 +69,10 @@ StaticResult solve_static(const Assembler& assembler, const AnalysisOptions& opt
   const double largest_move_m = kLargestMoveShare * shortest_bar_m(assembler.model());
   NewtonSolver newton(options.newton);
   while (result.path_factor < 1.0) {
+    if (stop_requested(control)) {
+      result.stopped = true;
+      return result;
+    }
     const double target = std::min(1.0, result.path_factor + increment);
     const double t = path.start_time_s + target * (path.end_time_s - path.start_time_s);
     const double thermal = path.start_thermal + target * (path.end_thermal - path.start_thermal);

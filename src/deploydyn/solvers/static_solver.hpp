@@ -12,6 +12,7 @@
 #include "deploydyn/assembly/assembler.hpp"
 #include "deploydyn/solvers/motion_state.hpp"
 #include "deploydyn/solvers/newton.hpp"
+#include "deploydyn/solvers/run_control.hpp"
 
 namespace deploydyn {
 
@@ -35,13 +36,14 @@ struct StaticResult {
   int load_steps = 0;        // solves that converged
   int total_iterations = 0;
   double path_factor = 0.0;  // share of the path followed (1 when converged)
+  bool stopped = false;      // `control` asked to stop before the end of the path
 };
 
 // Follows `path` in at least `load_steps` steps from state.q/state.lambda, updating `state`
-// (time included) as far as it gets.
+// (time included) as far as it gets. Polls `control` before every load step.
 StaticResult solve_static(const Assembler& assembler, const AnalysisOptions& options,
                           const LoadPath& path, int load_steps, LinearSystem& system,
-                          MotionState& state);
+                          MotionState& state, const RunControl& control = {});
 
 // Factorizes the static iteration matrix [K + H(λ), s Bᵀ; s B, 0] at `state`: singular when a
 // motion is resisted by no bar, support or driver (a bifurcation or dead point, or a free

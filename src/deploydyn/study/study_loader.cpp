@@ -9,7 +9,9 @@
 #include <sstream>
 
 #include "deploydyn/io/input_error.hpp"
+#include "deploydyn/io/text_file.hpp"
 #include "deploydyn/io/yaml_reader.hpp"
+#include "deploydyn/output/result_folder.hpp"
 
 namespace deploydyn {
 namespace {
@@ -18,11 +20,14 @@ using io::YamlValue;
 
 // A case's name is also its folder's name, next to study.csv.
 void check_case_name(const std::string& name, const YamlValue& value) {
+  if (const std::string problem = io::name_problem(name); !problem.empty()) {
+    value.fail(fmt::format("case '{}': {}", name, problem));
+  }
   if (name == "." || name == ".." || name.find_first_of("/\\") != std::string::npos) {
     value.fail(fmt::format("'{}' cannot name a folder; use letters, digits, '_', '-', '.'", name));
   }
-  if (name == kStudyTableFileName) {
-    value.fail(fmt::format("'{}' is the name of the study's table", kStudyTableFileName));
+  for (const char* reserved : {kStudyTableFileName, kStudyStatusFileName, kLockFileName}) {
+    if (name == reserved) value.fail(fmt::format("'{}' is a file of the study's folder", name));
   }
 }
 
@@ -153,16 +158,7 @@ Study load_study_from_string(const std::string& text, const std::string& source_
 }
 
 Study load_study(const std::filesystem::path& file) {
-  std::error_code ignored;
-  std::ifstream in(file, std::ios::binary);
-  if (!in || std::filesystem::is_directory(file, ignored)) {
-    io::throw_input_error(file.string(), YAML::Mark::null_mark(), "", "cannot open file");
-  }
-  std::ostringstream text;
-  text << in.rdbuf();
-  if (in.bad())
-    io::throw_input_error(file.string(), YAML::Mark::null_mark(), "", "cannot read file");
-  return load_study_from_string(text.str(), file.string(), file.parent_path());
+  return load_study_from_string(io::read_input_file(file), file.string(), file.parent_path());
 }
 
 }  // namespace deploydyn

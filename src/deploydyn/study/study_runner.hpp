@@ -41,8 +41,9 @@ struct StudyControl {
   const std::atomic<bool>* stop = nullptr;
 };
 
-// Runs every case, resolve_jobs(study.jobs, n) at a time, then writes study.csv. Outcomes are
-// in the study's case order. Throws std::runtime_error only when study.csv cannot be written.
+// Runs every case, resolve_jobs(study.jobs, n) at a time, then writes study.csv, in a folder
+// it owns (output/result_folder.hpp; status in study.json). Outcomes are in the study's case
+// order. Throws OutputError when the folder is in use or study.csv cannot be written.
 std::vector<CaseOutcome> run_study(const Study& study, const StudyControl& control = {});
 
 }  // namespace deploydyn

@@ -1,5 +1,7 @@
 #include "deploydyn/study/study_table.hpp"
 
+#include "deploydyn/output/checked_file.hpp"
+
 #include <fmt/format.h>
 
 #include <algorithm>
@@ -163,16 +165,7 @@ std::string study_table_csv(const Study& study, const std::vector<CaseOutcome>& 
 
 void write_study_table(const std::filesystem::path& file, const Study& study,
                        const std::vector<CaseOutcome>& outcomes) {
-  const std::string text = study_table_csv(study, outcomes);
-  if (!file.parent_path().empty()) std::filesystem::create_directories(file.parent_path());
-  const std::filesystem::path temporary = file.string() + ".tmp";
-  {
-    std::ofstream out(temporary);
-    if (!out) throw std::runtime_error("cannot write " + temporary.string());
-    out << text;
-    if (!out) throw std::runtime_error("cannot write " + temporary.string());
-  }
-  std::filesystem::rename(temporary, file);
+  write_file_atomically(file, study_table_csv(study, outcomes));
 }
 
 }  // namespace deploydyn

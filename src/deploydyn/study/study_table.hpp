@@ -28,7 +28,7 @@ double final_shape_error_m(const CaseOutcome& run, const CaseOutcome& reference)
 // The CSV text (header and one line per case).
 std::string study_table_csv(const Study& study, const std::vector<CaseOutcome>& outcomes);
 
-// Written whole to a temporary file and renamed, as summary.json is.
+// Written whole to a temporary file and renamed, as summary.json is; OutputError if it cannot.
 void write_study_table(const std::filesystem::path& file, const Study& study,
                        const std::vector<CaseOutcome>& outcomes);
 

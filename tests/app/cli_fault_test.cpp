@@ -1,0 +1,278 @@
+// The command line under faults, as a user's machine produces them: runs killed at random
+// moments (SIGKILL, SIGTERM, SIGHUP) and rerun into the same folder, two runs into one folder,
+// a file-size limit, names that would corrupt the results, inputs that are not model files.
+// Every result folder must tell the truth: rows whole, status what happened.
+
+#include <fcntl.h>
+#include <gtest/gtest.h>
+#include <spawn.h>
+#include <sys/file.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <csignal>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <random>
+#include <sstream>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include "support/cli.hpp"
+
+extern char** environ;
+
+namespace deploydyn {
+namespace {
+
+using testing::example_path;
+using testing::read_text;
+using testing::run_cli;
+using testing::ScratchFolder;
+
+// `deploydyn` with `arguments`, started in the background, its output discarded.
+pid_t start_cli(const std::vector<std::string>& arguments) {
+  std::vector<std::string> words{DEPLOYDYN_CLI};
+  words.insert(words.end(), arguments.begin(), arguments.end());
+  std::vector<char*> argv;
+  for (std::string& word : words) argv.push_back(word.data());
+  argv.push_back(nullptr);
+  posix_spawn_file_actions_t actions;
+  posix_spawn_file_actions_init(&actions);
+  posix_spawn_file_actions_addopen(&actions, STDOUT_FILENO, "/dev/null", O_WRONLY, 0);
+  posix_spawn_file_actions_addopen(&actions, STDERR_FILENO, "/dev/null", O_WRONLY, 0);
+  pid_t pid = -1;
+  EXPECT_EQ(posix_spawn(&pid, DEPLOYDYN_CLI, &actions, nullptr, argv.data(), environ), 0);
+  posix_spawn_file_actions_destroy(&actions);
+  return pid;
+}
+
+// What a reader of the folder should conclude: the status in summary.json, or "killed" when it
+// says "running" and no process holds the folder's lock.
+std::string folder_status(const std::filesystem::path& folder) {
+  const nlohmann::json summary = nlohmann::json::parse(read_text(folder / "summary.json"));
+  const std::string status = summary["status"];
+  if (status != "running") return status;
+  const int fd = open((folder / ".deploydyn.lock").c_str(), O_RDWR);
+  const bool owned = fd >= 0 && flock(fd, LOCK_EX | LOCK_NB) != 0;
+  if (fd >= 0) close(fd);  // drops a lock this probe took
+  return owned ? "running" : "killed";
+}
+
+struct History {
+  std::size_t n_rows = 0;
+  double last_time_s = -1.0;
+  bool row_complete = true;
+};
+
+History read_history(const std::filesystem::path& file) {
+  History h;
+  const std::string text = read_text(file);
+  if (text.empty()) return h;
+  h.row_complete = text.back() == '\n';
+  std::istringstream in(text);
+  std::string header, line;
+  std::getline(in, header);
+  const auto n_fields = std::ranges::count(header, ',') + 1;
+  while (std::getline(in, line)) {
+    if (std::ranges::count(line, ',') + 1 != n_fields) h.row_complete = false;
+    ++h.n_rows;
+    h.last_time_s = std::stod(line.substr(0, line.find(',')));
+  }
+  return h;
+}
+
+// A run of a few seconds: the parallel linkage deployed for 1000 s instead of 5 (10⁶ steps, a
+// row every 0.1 s).
+const std::vector<std::string> kLongRun{"run", example_path("parallel.yaml"), "--set", "analysis.end=1000",
+                                        "--set", "analysis.output_interval=0.1", "--quiet", "--out"};
+
+TEST(CliFaults, KilledAtRandomMomentsEveryFolderIsRowCompleteAndTruthful) {
+  const ScratchFolder folder("kills");
+  std::mt19937 random(20261123);
+  std::uniform_int_distribution<int> delay_ms(0, 400);
+  const int signals[] = {SIGKILL, SIGTERM, SIGHUP};
+  int n_tried = 0;
+  // One folder for all: each run is also a rerun into the folder of a killed or finished one.
+  for (int round = 0; round < 8; ++round) {
+    for (const int signal : signals) {
+      std::vector<std::string> arguments = kLongRun;
+      arguments.push_back(folder.path().string());
+      const pid_t pid = start_cli(arguments);
+      std::this_thread::sleep_for(std::chrono::milliseconds(delay_ms(random)));
+      kill(pid, signal);
+      int wait_status = 0;
+      waitpid(pid, &wait_status, 0);
+      ++n_tried;
+      SCOPED_TRACE("run " + std::to_string(n_tried) + ", signal " + std::to_string(signal));
+      if (!std::filesystem::exists(folder.path() / "summary.json")) {
+        ASSERT_EQ(signal, SIGKILL) << "only a kill before the folder was claimed leaves no summary";
+        continue;
+      }
+      const std::string status = folder_status(folder.path());
+      if (WIFEXITED(wait_status)) {
+        // The signal was handled: the run stopped at a step and said so, or had finished.
+        EXPECT_TRUE(status == "interrupted" || status == "completed") << status;
+      } else {
+        // Killed (SIGKILL, or another signal before the handlers were set): the folder says
+        // so, or still holds the earlier run untouched.
+        EXPECT_TRUE(status == "killed" || status == "completed" || status == "interrupted") << status;
+      }
+      if (!std::filesystem::exists(folder.path() / "history.csv")) {
+        EXPECT_EQ(status, "killed");
+        continue;
+      }
+      const History history = read_history(folder.path() / "history.csv");
+      EXPECT_TRUE(history.row_complete);
+      const nlohmann::json summary = nlohmann::json::parse(read_text(folder.path() / "summary.json"));
+      if (status == "completed") {
+        EXPECT_NEAR(history.last_time_s, 1000.0, 1e-9);
+      }
+      if (status == "interrupted") {
+        // No row yet (stopped in the initial equilibrium): no final time either.
+        EXPECT_NEAR(summary.value("final_time", -1.0), history.last_time_s, 1e-12);
+      }
+    }
+  }
+}
+
+TEST(CliFaults, ASecondRunIntoABusyFolderIsRefusedAndTheFirstIsUnharmed) {
+  const ScratchFolder folder("busy");
+  std::vector<std::string> arguments = kLongRun;
+  arguments.push_back(folder.path().string());
+  const pid_t first = start_cli(arguments);
+  // Wait until the first run has claimed the folder.
+  for (int i = 0; i < 500 && !std::filesystem::exists(folder.path() / "history.csv"); ++i) {
+    std::this_thread::sleep_for(std::chrono::milliseconds(2));
+  }
+  const auto second = run_cli("run " + example_path("parallel.yaml") + " --out " + folder.path().string());
+  int wait_status = 0;
+  waitpid(first, &wait_status, 0);
+  EXPECT_EQ(second.exit_code, 3) << second.output;
+  EXPECT_NE(second.output.find("in use by another deploydyn run (pid " + std::to_string(first)),
+            std::string::npos)
+      << second.output;
+  ASSERT_TRUE(WIFEXITED(wait_status));
+  EXPECT_EQ(WEXITSTATUS(wait_status), 0);
+  EXPECT_EQ(folder_status(folder.path()), "completed");
+  const History history = read_history(folder.path() / "history.csv");
+  EXPECT_TRUE(history.row_complete);
+  EXPECT_EQ(history.n_rows, 10001u);  // 1000 s every 0.1 s, and t = 0
+}
+
+TEST(CliFaults, AFullDiskEndsTheRunWithExitCodeThreeAndTheReason) {
+  const ScratchFolder folder("fsize");
+  // prlimit sets the limit for the command alone; deploydyn ignores SIGXFSZ itself.
+  const auto outcome = testing::run_cli_with_prefix(
+      "prlimit --fsize=100000", "run " + example_path("parallel.yaml") + " --out " + folder.path().string());
+  EXPECT_EQ(outcome.exit_code, 3) << outcome.output;
+  EXPECT_NE(outcome.output.find("history.csv: File too large"), std::string::npos) << outcome.output;
+  EXPECT_EQ(folder_status(folder.path()), "failed");
+  EXPECT_TRUE(read_history(folder.path() / "history.csv").row_complete);
+}
+
+TEST(CliFaults, OutputNamesThatWouldOverwriteEachOtherAreRejected) {
+  for (const std::string setting : {"output.history=summary.json", "output.history=model.yaml",
+                                     "output.summary=history.csv", "output.history=.deploydyn.lock",
+                                     "output.history=summary.json.tmp"}) {
+    const auto outcome = run_cli("check " + example_path("parallel.yaml") + " --set " + setting);
+    EXPECT_EQ(outcome.exit_code, 2) << setting << ": " << outcome.output;
+    EXPECT_NE(outcome.output.find("is taken in the result folder"), std::string::npos) << outcome.output;
+  }
+}
+
+TEST(CliFaults, NamesThatWouldBreakTheCsvAreRejected) {
+  const ScratchFolder folder("names");
+  std::filesystem::create_directories(folder.path());
+  const std::string model = read_text(example_path("parallel.yaml"));
+  for (const std::string name : {"\"B,1\"", "'B\"q'", "\"B\\x1b[31m\""}) {
+    std::string text = model;
+    // Renames node B everywhere it appears as a name (its definition and the bars' ends).
+    for (std::size_t at = 0; (at = text.find("B:", at)) != std::string::npos; at += name.size()) {
+      text.replace(at, 1, name);
+    }
+    for (const std::string end : {"[A, B]", "[B, C]"}) {
+      const auto at = text.find(end);
+      ASSERT_NE(at, std::string::npos);
+      std::string renamed = end;
+      renamed.replace(renamed.find('B'), 1, name);
+      text.replace(at, end.size(), renamed);
+    }
+    std::ofstream(folder.path() / "model.yaml") << text;
+    const auto outcome = run_cli("check " + (folder.path() / "model.yaml").string());
+    EXPECT_EQ(outcome.exit_code, 2) << name << ": " << outcome.output;
+    EXPECT_NE(outcome.output.find("a name must not hold"), std::string::npos) << outcome.output;
+    EXPECT_EQ(outcome.output.find('\x1b'), std::string::npos) << "an escape sequence echoed raw";
+  }
+}
+
+TEST(CliFaults, InputsThatAreNotModelFilesAreRefusedBeforeReading) {
+  const ScratchFolder folder("inputs");
+  std::filesystem::create_directories(folder.path());
+  const auto zero = run_cli("run /dev/zero --out " + folder.path().string());
+  EXPECT_EQ(zero.exit_code, 2);
+  EXPECT_NE(zero.output.find("/dev/zero: is not a regular file"), std::string::npos) << zero.output;
+
+  const auto utf16 = folder.path() / "utf16.yaml";
+  std::ofstream(utf16, std::ios::binary) << std::string("\xff\xfen\0o\0d\0e\0s\0:\0", 14);
+  const auto binary = run_cli("check " + utf16.string());
+  EXPECT_EQ(binary.exit_code, 2);
+  EXPECT_NE(binary.output.find("is not a text file"), std::string::npos) << binary.output;
+
+  // An escape sequence in a YAML error is shown, not played.
+  const auto escapes = folder.path() / "escapes.yaml";
+  std::ofstream(escapes) << "nodes: {A: [0, 0]}\nmaterials: \x1b[2J\x1b[31m\n";
+  const auto shown = run_cli("check " + escapes.string());
+  EXPECT_EQ(shown.exit_code, 2);
+  EXPECT_EQ(shown.output.find('\x1b'), std::string::npos) << shown.output;
+  EXPECT_NE(shown.output.find("\\x1B[2J"), std::string::npos) << shown.output;
+}
+
+TEST(CliFaults, OverridesAreNamedInTheirOwnErrors) {
+  const auto huge = run_cli("check " + example_path("parallel.yaml") + " --set analysis.end=1e308");
+  EXPECT_EQ(huge.exit_code, 2);
+  EXPECT_NE(huge.output.find("--set analysis.end=1e308: analysis.end:"), std::string::npos) << huge.output;
+  const auto long_run = run_cli("check " + example_path("parallel.yaml") + " --set analysis.end=1e6");
+  EXPECT_EQ(long_run.exit_code, 2);
+  EXPECT_NE(long_run.output.find("--set analysis.end=1e6: analysis.end:"), std::string::npos) << long_run.output;
+  const auto steps = run_cli("check " + example_path("parallel.yaml") + " --set analysis.load_steps=1000000000");
+  EXPECT_EQ(steps.exit_code, 2);
+  EXPECT_NE(steps.output.find("analysis.load_steps: must be at most 1000000"), std::string::npos) << steps.output;
+  for (const std::string setting : {"elements.1.mass=1e308", "elements.1.area=1e-300"}) {
+    const auto absurd = run_cli("check " + example_path("parallel.yaml") + " --set " + setting);
+    EXPECT_EQ(absurd.exit_code, 2) << setting;
+    EXPECT_NE(absurd.output.find("in magnitude"), std::string::npos) << absurd.output;
+  }
+}
+
+// A bar hanging under a load, so soft that it stretches by about 10 %.
+TEST(CliFaults, StrainsBeyondTheSmallStrainRangeAreFlagged) {
+  const ScratchFolder folder("strain");
+  std::filesystem::create_directories(folder.path());
+  const auto model = folder.path() / "soft.yaml";
+  std::ofstream(model) << R"(
+nodes: {A: [0, 0], B: [0, -1]}
+materials: {rubbery: {E: 1.0e9}}
+elements: {hanger: {nodes: [A, B], area: 1.0e-7, material: rubbery, mass: 0.01}}
+supports: [{node: A}, {node: B, fix: [x]}]
+loads: [{node: B, force: [0, -10], factor: {type: smooth_step, t0: 0, v0: 0, t1: 1, v1: 1}}]
+analysis: {type: static, end: 1.0, step: 0.01}
+)";
+  const auto outcome = run_cli("run " + model.string() + " --out " + (folder.path() / "out").string());
+  EXPECT_EQ(outcome.exit_code, 0) << outcome.output;
+  EXPECT_NE(outcome.output.find("warning: element hanger: strain reaches"), std::string::npos) << outcome.output;
+  const nlohmann::json summary = nlohmann::json::parse(read_text(folder.path() / "out" / "summary.json"));
+  ASSERT_EQ(summary["warnings"].size(), 1u);
+}
+
+TEST(CliFaults, AModelWrittenToAFullOutputIsAnError) {
+  // Only stdout is full: the message goes to stderr, which the braces keep for the test.
+  const auto outcome = testing::run_cli_with_prefix("{", "generate roof --units 2 > /dev/full; }");
+  EXPECT_EQ(outcome.exit_code, 3) << outcome.output;
+  EXPECT_NE(outcome.output.find("No space left on device"), std::string::npos) << outcome.output;
+}
+
+}  // namespace
+}  // namespace deploydyn
