@@ -6,7 +6,7 @@ set -euo pipefail
 packages=(
   build-essential cmake ninja-build pkg-config
   libeigen3-dev libyaml-cpp-dev libcli11-dev libfmt-dev nlohmann-json3-dev
-  libgtest-dev libgmock-dev libbenchmark-dev libsuitesparse-dev
+  libgtest-dev libgmock-dev libbenchmark-dev libsuitesparse-dev libspectra-dev
   clang libclang-rt-14-dev
   python3 python3-numpy python3-matplotlib python3-vtk9
   python3-dev pybind11-dev python3-pytest python3-pil python3-yaml

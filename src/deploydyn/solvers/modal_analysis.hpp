@@ -1,0 +1,57 @@
+#pragma once
+// Natural frequencies and modes of the constrained system linearized about an equilibrium
+// (docs/theory.md, "Natural frequencies and modes"):
+//   (K_T − ω² M) φ + Bᵀ μ = 0,   B φ = 0,
+// K_T the tangent stiffness at (q, λ): material, geometric and thermal-stress parts (a bar's
+// (EA ε_m / L0) block carries both) and the constraints' H(λ); B the constraint Jacobian; M the
+// model's mass matrix. Only motions the constraints allow (B φ = 0) vibrate.
+//
+// Shift-invert on the bordered matrix, which the existing LinearSystem back ends factorize once:
+//   [K_T − σ M, s Bᵀ; s B, 0] [x; y] = [v; 0]   gives   x = G v,
+//   G = Z (Zᵀ (K_T − σ M) Z)⁻¹ Zᵀ   (Z: a basis of null B, never formed).
+// G M φ = ν φ with ν = 1/(ω² − σ) for the modes, ν = 0 for the motions B forbids. Large models
+// use the implicitly restarted Lanczos method on G M in the M inner product (Spectra's
+// SymGEigsShiftSolver), small ones a dense eigensolver of the symmetric pencil (M G M, M).
+// Modes come M-orthonormal: φᵢᵀ M φⱼ = δᵢⱼ. ω² < 0 is an unstable equilibrium (divergence).
+
+#include <Eigen/Core>
+#include <optional>
+#include <string>
+
+#include "deploydyn/assembly/assembler.hpp"
+#include "deploydyn/assembly/linear_system.hpp"
+#include "deploydyn/solvers/motion_state.hpp"
+
+namespace deploydyn {
+
+struct ModalOptions {
+  int n_modes = 10;
+  // σ (rad²/s²): the modes nearest to it are found. Empty: slightly below zero (a millionth of
+  // the largest stiffness-to-mass ratio), so that the lowest modes come first and a free
+  // motion (ω = 0) does not make the matrix singular.
+  std::optional<double> shift_rad2_s2;
+  // Up to this many coordinates the dense path is used (n solves and an O(n³) eigensolver).
+  int dense_up_to = 400;
+};
+
+struct ModalResult {
+  bool ok = false;
+  std::string message;           // why not, when !ok
+  Eigen::VectorXd omega2_rad2_s2;  // ω², ascending
+  Eigen::MatrixXd modes;         // one M-orthonormal mode per column, in the coordinates q
+  int n_factorizations = 0;
+  int n_solves = 0;              // applications of G
+  bool dense = false;            // which path
+
+  // f = ω / 2π (Hz); NaN for ω² < 0.
+  Eigen::VectorXd frequencies_Hz() const;
+};
+
+// `equilibrium`: q, λ and time of a converged static (or initial) state; `system` analysed for
+// the assembler's pattern (linear_system_factory.hpp). Throws std::invalid_argument when more
+// modes are asked for than coordinates − constraint equations (the constrained system's size
+// when no constraint is redundant).
+ModalResult natural_modes(const Assembler& assembler, const MotionState& equilibrium,
+                          LinearSystem& system, const ModalOptions& options = {});
+
+}  // namespace deploydyn

@@ -1,0 +1,191 @@
+// Natural frequencies and modes of the constrained linearized system against closed forms: a
+// bar–mass oscillator, a pendulum (its stiffness is all geometric: the bar's tension), a taut
+// string of n masses (exact discrete frequencies); modes M-orthonormal and compatible with the
+// constraints; the dense and the Lanczos paths agree.
+
+#include "deploydyn/solvers/modal_analysis.hpp"
+
+#include <fmt/format.h>
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+
+#include "deploydyn/assembly/linear_system_factory.hpp"
+#include "deploydyn/solvers/static_solver.hpp"
+#include "support/model_builder.hpp"
+
+namespace deploydyn {
+namespace {
+
+using testing::BarSpec;
+using testing::ModelBuilder;
+
+// Eigenvalues from the shift-inverted problem carry the solver's round-off relative to the
+// largest |ν| kept; 1e-9 leaves room for the conditioning of the stiff (axial) bars.
+constexpr double kRelativeTolerance = 1e-9;
+
+// The static equilibrium at t = 0, as a run starts: thermal strain and loads applied.
+MotionState equilibrium(const Assembler& assembler, LinearSystem& system) {
+  MotionState state;
+  state.q = assembler.initial_coordinates();
+  state.v = state.a = Eigen::VectorXd::Zero(assembler.n_dofs());
+  state.lambda = Eigen::VectorXd::Zero(assembler.n_equations());
+  const StaticResult result = solve_static(assembler, assembler.model().analysis,
+                                           LoadPath::thermal_ramp(0.0), 1, system, state);
+  EXPECT_TRUE(result.newton.converged) << result.newton.failure;
+  return state;
+}
+
+struct Modes {
+  ModalResult result;
+  MotionState state;
+};
+
+Modes modes_of(const Model& model, int n_modes, int dense_up_to = 400) {
+  const Assembler assembler(model);
+  const auto system = make_linear_system(assembler);
+  Modes m;
+  m.state = equilibrium(assembler, *system);
+  ModalOptions options;
+  options.n_modes = n_modes;
+  options.dense_up_to = dense_up_to;
+  m.result = natural_modes(assembler, m.state, *system, options);
+  EXPECT_TRUE(m.result.ok) << m.result.message;
+  return m;
+}
+
+// A bar along x from a pin to a node that only slides along x, carrying a point mass: one
+// motion, ω² = (EA/L) / m_B with m_B the point mass plus the bar's share at B (½ m_bar lumped,
+// ⅓ m_bar consistent: the diagonal entry (m/6)·2 of the consistent matrix).
+TEST(ModalAnalysis, BarMassOscillatorHasItsClosedFormFrequency) {
+  for (const MassMatrixKind mass : {MassMatrixKind::lumped, MassMatrixKind::consistent}) {
+    ModelBuilder m(2);
+    const int a = m.node("A", Eigen::Vector3d::Zero());
+    const int b = m.node("B", Eigen::Vector3d(2.0, 0.0, 0.0));
+    const BarSpec spec{2e11, 1e-4, 3.0, 0.0, {}, TimeFunction::constant(0.0)};
+    m.bar(a, b, spec);
+    m.point_mass(b, 10.0);
+    m.pin(a);
+    m.support(b, {false, true, true});
+    m.analysis().mass = mass;
+    const Modes modes = modes_of(m.model(), 1);
+    const double share = mass == MassMatrixKind::lumped ? 0.5 : 1.0 / 3.0;
+    const double expected = spec.youngs_modulus_Pa * spec.area_m2 / 2.0 / (10.0 + share * spec.mass_kg);
+    EXPECT_NEAR(modes.result.omega2_rad2_s2[0], expected, kRelativeTolerance * expected);
+    EXPECT_TRUE(modes.result.dense);
+  }
+}
+
+// A stiff bar hanging from a pin with a mass at its end: the swing has no material stiffness,
+// only the tension's geometric one S/L0, and ω² = g/l with l the stretched length.
+TEST(ModalAnalysis, PendulumSwingsAtRootOfGOverL) {
+  ModelBuilder m(2);
+  const int a = m.node("A", Eigen::Vector3d::Zero());
+  const int b = m.node("B", Eigen::Vector3d(0.0, -1.5, 0.0));
+  // A little pretension (L0 a millionth short) gives the swing stiffness before the load comes.
+  m.bar(a, b, BarSpec{2e11, 1e-4, 0.2, 0.0, 1.5 / (1.0 + 1e-6), TimeFunction::constant(0.0)});
+  m.point_mass(b, 5.0);
+  m.pin(a);
+  m.gravity(Eigen::Vector3d(0.0, -9.81, 0.0));
+  m.analysis().mass = MassMatrixKind::lumped;  // the whole mass at B: a point pendulum
+  const Modes modes = modes_of(m.model(), 2);
+  const double l = modes.state.q.segment<2>(2).norm();
+  EXPECT_GT(l, 1.5);  // stretched by its load
+  EXPECT_NEAR(modes.result.omega2_rad2_s2[0], 9.81 / l, kRelativeTolerance * 9.81 / l);
+  // The second motion is the bar's axial one, with the tangent's axial stiffness
+  // EA l²/L0³ + S/L0 (docs/theory.md, "Bar element") on the mass at B.
+  const double L0 = 1.5 / (1.0 + 1e-6), m_b = 5.1, tension_over_L0 = m_b * 9.81 / l;
+  const double axial = (2e11 * 1e-4 * l * l / (L0 * L0 * L0) + tension_over_L0) / m_b;
+  EXPECT_NEAR(modes.result.omega2_rad2_s2[1], axial, kRelativeTolerance * axial);
+}
+
+// n equal masses on n + 1 bars between two pins, pretensioned (reference lengths shorter than
+// the spans) so that the tension N is much below EA: the transverse modes of a discrete string,
+//   ω_k² = 4 N / (m l) sin²(kπ / (2 (n + 1))),   k = 1 … n,
+// l the span, m a node's mass (its point mass and half of each neighbouring bar, lumped).
+struct String {
+  Model model;
+  double tension_N = 0.0;
+  double node_mass_kg = 0.0;
+  double span_m = 0.0;
+};
+
+String taut_string(int n_masses) {
+  ModelBuilder m(2);
+  constexpr double kSpan_m = 0.25, kStretch = 1e-3, kEA_N = 2e11 * 1e-6, kBarMass_kg = 0.01;
+  std::vector<int> nodes;
+  for (int i = 0; i <= n_masses + 1; ++i) nodes.push_back(m.node(fmt::format("n{}", i), Eigen::Vector3d(i * kSpan_m, 0.0, 0.0)));
+  BarSpec spec{2e11, 1e-6, kBarMass_kg, 0.0, kSpan_m / (1.0 + kStretch), TimeFunction::constant(0.0)};
+  for (int i = 0; i <= n_masses; ++i) m.bar(nodes[i], nodes[i + 1], spec);
+  for (int i = 1; i <= n_masses; ++i) m.point_mass(nodes[i], 0.5);
+  m.pin(nodes.front());
+  m.pin(nodes.back());
+  m.analysis().mass = MassMatrixKind::lumped;
+  String s;
+  s.model = m.model();
+  const double L0 = *spec.reference_length_m;
+  const double strain = (kSpan_m * kSpan_m - L0 * L0) / (2.0 * L0 * L0);  // Green–Lagrange
+  s.tension_N = kEA_N * strain * kSpan_m / L0;                            // true force N = S l / L0
+  s.node_mass_kg = 0.5 + kBarMass_kg;
+  s.span_m = kSpan_m;
+  return s;
+}
+
+double string_omega2(const String& s, int k, int n_masses) {
+  const double sine = std::sin(k * std::numbers::pi / (2.0 * (n_masses + 1)));
+  return 4.0 * s.tension_N / (s.node_mass_kg * s.span_m) * sine * sine;
+}
+
+TEST(ModalAnalysis, TautStringHasTheDiscreteStringFrequencies) {
+  constexpr int kMasses = 8;
+  const String s = taut_string(kMasses);
+  const Modes modes = modes_of(s.model, kMasses);
+  for (int k = 1; k <= kMasses; ++k) {
+    const double expected = string_omega2(s, k, kMasses);
+    EXPECT_NEAR(modes.result.omega2_rad2_s2[k - 1], expected, kRelativeTolerance * expected) << "mode " << k;
+  }
+}
+
+// The Lanczos path (forced by dense_up_to = 0) finds the same lowest modes of a longer string,
+// and the modes of both paths are M-orthonormal and move no pinned coordinate.
+TEST(ModalAnalysis, LanczosAgreesWithTheClosedFormAndModesAreMOrthonormal) {
+  constexpr int kMasses = 60, kModes = 10;
+  const String s = taut_string(kMasses);
+  const Assembler assembler(s.model);
+  for (const int dense_up_to : {0, 1000}) {
+    const Modes modes = modes_of(s.model, kModes, dense_up_to);
+    EXPECT_EQ(modes.result.dense, dense_up_to > 0);
+    for (int k = 1; k <= kModes; ++k) {
+      const double expected = string_omega2(s, k, kMasses);
+      EXPECT_NEAR(modes.result.omega2_rad2_s2[k - 1], expected, kRelativeTolerance * expected) << "mode " << k;
+    }
+    Eigen::MatrixXd m_phi(assembler.n_dofs(), kModes);
+    Eigen::VectorXd column;
+    for (int k = 0; k < kModes; ++k) {
+      assembler.mass_times(modes.result.modes.col(k), column);
+      m_phi.col(k) = column;
+    }
+    const Eigen::MatrixXd gram = modes.result.modes.transpose() * m_phi;
+    EXPECT_LT((gram - Eigen::MatrixXd::Identity(kModes, kModes)).lpNorm<Eigen::Infinity>(), 1e-9);
+    for (const int pinned : {0, 1, 2 * (kMasses + 1), 2 * (kMasses + 1) + 1}) {
+      EXPECT_LT(modes.result.modes.row(pinned).lpNorm<Eigen::Infinity>(), 1e-12);
+    }
+    if (dense_up_to == 0) {
+      EXPECT_LT(modes.result.n_solves, 40 * kModes) << "Lanczos should need few solves";
+    }
+  }
+}
+
+TEST(ModalAnalysis, MoreModesThanMotionsIsAnError) {
+  const String s = taut_string(3);
+  const Assembler assembler(s.model);
+  const auto system = make_linear_system(assembler);
+  const MotionState state = equilibrium(assembler, *system);
+  ModalOptions options;
+  options.n_modes = 7;  // 10 coordinates − 4 support equations = 6 motions
+  EXPECT_THROW(natural_modes(assembler, state, *system, options), std::invalid_argument);
+}
+
+}  // namespace
+}  // namespace deploydyn
