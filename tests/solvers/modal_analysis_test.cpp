@@ -177,6 +177,55 @@ TEST(ModalAnalysis, LanczosAgreesWithTheClosedFormAndModesAreMOrthonormal) {
   }
 }
 
+// The paper's parallel linkage without its driver, hanging from its pins A and D under gravity
+// and held at crank angle θ (from the downward vertical) by a horizontal load P at B. As a
+// rigid one-degree-of-freedom mechanism (cranks p, mass m_c; coupler mass m_k, translating):
+//   M(θ) = p² (2 m_c / 3 + m_k),   V(θ) = −g p (m_c + m_k) cos θ − P p sin θ,
+//   equilibrium tan θ = P / (g (m_c + m_k)),   ω² = V''(θ) / M = (g (m_c + m_k) cos θ + P sin θ) / (p (2 m_c/3 + m_k)).
+// With steel bars the axial modes are 10⁶ times stiffer, so the lowest mode of the elastic
+// model must agree with the rigid one to about 10⁻⁶.
+TEST(ModalAnalysis, FourBarLinkageSwingsAsItsRigidOneDegreeOfFreedomModel) {
+  constexpr double p = 0.288, g_m = 0.357, m_c = 0.288, m_k = 0.357, g = 9.81;
+  for (const double theta_deg : {15.0, 40.0, 70.0}) {
+    const double theta = theta_deg * std::numbers::pi / 180.0;
+    const double load_N = g * (m_c + m_k) * std::tan(theta);
+    ModelBuilder m(2);
+    const Eigen::Vector3d crank(p * std::sin(theta), -p * std::cos(theta), 0.0);
+    const int a = m.node("A", Eigen::Vector3d::Zero());
+    const int b = m.node("B", crank);
+    const int c = m.node("C", Eigen::Vector3d(g_m, 0.0, 0.0) + crank);
+    const int d = m.node("D", Eigen::Vector3d(g_m, 0.0, 0.0));
+    m.bar(a, b, BarSpec{2e11, 4.64e-5, m_c, 0.0, {}, TimeFunction::constant(0.0)});
+    m.bar(b, c, BarSpec{2e11, 4.64e-5, m_k, 0.0, {}, TimeFunction::constant(0.0)});
+    m.bar(c, d, BarSpec{2e11, 4.64e-5, m_c, 0.0, {}, TimeFunction::constant(0.0)});
+    m.pin(a);
+    m.pin(d);
+    m.gravity(Eigen::Vector3d(0.0, -g, 0.0));
+    m.load(b, Eigen::Vector3d(load_N, 0.0, 0.0), TimeFunction::constant(1.0));
+    const Assembler assembler(m.model());
+    const auto system = make_linear_system(assembler);
+    MotionState state;
+    state.q = assembler.initial_coordinates();
+    state.v = state.a = Eigen::VectorXd::Zero(assembler.n_dofs());
+    state.lambda = Eigen::VectorXd::Zero(assembler.n_equations());
+    // Unstressed, the mechanism's motion has no stiffness yet: a small mass term keeps Newton's
+    // matrix regular while the loads come on (as a run does for a free mechanism).
+    LoadPath path = LoadPath::thermal_ramp(0.0);
+    path.mass_regularization = 1e-6 * assembler.stiffness_scale(state.q, 0.0) / assembler.mass_scale();
+    ASSERT_TRUE(solve_static(assembler, m.model().analysis, path, 1, *system, state).newton.converged);
+    ModalOptions options;
+    options.n_modes = 2;
+    const ModalResult modes = natural_modes(assembler, state, *system, options);
+    ASSERT_TRUE(modes.ok) << modes.message;
+    const double rigid = (g * (m_c + m_k) * std::cos(theta) + load_N * std::sin(theta)) / (p * (2.0 * m_c / 3.0 + m_k));
+    EXPECT_NEAR(modes.omega2_rad2_s2[0], rigid, 1e-5 * rigid) << "θ = " << theta_deg << "°";
+    EXPECT_GT(modes.omega2_rad2_s2[1], 1e5 * rigid);
+    // The mode is the mechanism's motion: B and C move alike (the coupler translates).
+    const Eigen::VectorXd phi = modes.modes.col(0);
+    EXPECT_LT((phi.segment<2>(2) - phi.segment<2>(4)).norm(), 1e-5 * phi.segment<2>(2).norm());
+  }
+}
+
 TEST(ModalAnalysis, MoreModesThanMotionsIsAnError) {
   const String s = taut_string(3);
   const Assembler assembler(s.model);
