@@ -23,6 +23,7 @@
 #include "deploydyn/output/run_to_folder.hpp"
 #include "exit_codes.hpp"
 #include "generate_command.hpp"
+#include "modes_command.hpp"
 #include "study_command.hpp"
 
 namespace {
@@ -189,11 +190,13 @@ int main(int argc, char** argv) {
   CLI::App* generate = cli::add_generate_command(app, generate_arguments);
   cli::StudyArguments study_arguments;
   CLI::App* study = cli::add_study_command(app, study_arguments);
+  cli::ModesArguments modes_arguments;
+  CLI::App* modes = cli::add_modes_command(app, modes_arguments);
 
   // CLI11 would only say "a subcommand is required"; name the word it did not know instead.
   if (const std::string first = argc > 1 ? argv[1] : "-"; first[0] != '-' && first != "run" && first != "check" &&
-                                                            first != "generate" && first != "study") {
-    fmt::print(stderr, "error: unknown command '{}'; commands are run, check, generate and study (see --help)\n", first);
+                                                            first != "generate" && first != "study" && first != "modes") {
+    fmt::print(stderr, "error: unknown command '{}'; commands are run, check, modes, generate and study (see --help)\n", first);
     return kExitBadInput;
   }
   try {
@@ -206,6 +209,7 @@ int main(int argc, char** argv) {
   try {
     if (*run) return run_command(model_file, out_dir, sets, quiet);
     if (*generate) return cli::generate_command(generate_arguments);
+    if (*modes) return cli::modes_command(modes_arguments);
     if (*study) {
       stop_on_signals();
       return cli::study_command(study_arguments, g_stop);

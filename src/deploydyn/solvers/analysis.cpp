@@ -15,7 +15,6 @@
 namespace deploydyn {
 namespace {
 
-constexpr double kFreeMotionRegularization = 1e-6;
 
 // Names the unknowns that carry a singular matrix's null vector: coordinates of a free motion
 // ("y.B") and constraints that are redundant or in conflict.

@@ -110,6 +110,28 @@ StaticResult solve_static(const Assembler& assembler, const AnalysisOptions& opt
   return result;
 }
 
+StaticResult solve_equilibrium_at(const Assembler& assembler, double t, LinearSystem& system,
+                                  MotionState& state, const RunControl& control) {
+  state = MotionState{};
+  state.q = assembler.initial_coordinates();
+  state.v = state.a = Eigen::VectorXd::Zero(assembler.n_dofs());
+  state.lambda = Eigen::VectorXd::Zero(assembler.n_equations());
+  const AnalysisOptions& options = assembler.model().analysis;
+  LoadPath initial = LoadPath::thermal_ramp(0.0);
+  if (assembler.rigid_mobility() > 0) {
+    initial.mass_regularization =
+        kFreeMotionRegularization * assembler.stiffness_scale(state.q, 0.0) / assembler.mass_scale();
+  }
+  StaticResult result = solve_static(assembler, options, initial, options.load_steps, system, state, control);
+  if (result.path_factor < 1.0 || result.stopped || t <= 0.0) return result;
+  LoadPath to_t = LoadPath::time_step(0.0, t);
+  to_t.mass_regularization = initial.mass_regularization;
+  StaticResult moved = solve_static(assembler, options, to_t, 1, system, state, control);
+  moved.load_steps += result.load_steps;
+  moved.total_iterations += result.total_iterations;
+  return moved;
+}
+
 FactorizationStatus check_static_stiffness(const Assembler& assembler, LinearSystem& system,
                                            const MotionState& state) {
   StaticEquations equations(assembler, LoadPath::thermal_ramp(state.time_s), state.time_s, 1.0,

@@ -16,6 +16,10 @@
 
 namespace deploydyn {
 
+// Weight of the mass term (× stiffness scale / mass scale) that keeps a free mechanism's matrix
+// regular: small against the stiffness (a millionth), large enough for the factorization.
+inline constexpr double kFreeMotionRegularization = 1e-6;
+
 // A straight path in (time, share of the thermal strain), followed from start to end.
 struct LoadPath {
   double start_time_s = 0.0, end_time_s = 0.0;
@@ -44,6 +48,13 @@ struct StaticResult {
 StaticResult solve_static(const Assembler& assembler, const AnalysisOptions& options,
                           const LoadPath& path, int load_steps, LinearSystem& system,
                           MotionState& state, const RunControl& control = {});
+
+// The static equilibrium at time `t` from the model's initial state: the thermal strain (and
+// loads) applied at t = 0 in the model's load steps, then the drivers and loads followed from
+// 0 to t (a quasi-static deployment to t). A mechanism with free motions gets the small mass
+// term of LoadPath while it is loaded. `state` is set from the initial coordinates.
+StaticResult solve_equilibrium_at(const Assembler& assembler, double t, LinearSystem& system,
+                                  MotionState& state, const RunControl& control = {});
 
 // Factorizes the static iteration matrix [K + H(λ), s Bᵀ; s B, 0] at `state`: singular when a
 // motion is resisted by no bar, support or driver (a bifurcation or dead point, or a free

@@ -1,0 +1,68 @@
+// `deploydyn modes`: the table, modes.csv and the VTK mode shapes, and its errors.
+
+#include <gtest/gtest.h>
+
+#include <sstream>
+#include <string>
+
+#include "support/cli.hpp"
+
+namespace deploydyn {
+namespace {
+
+using testing::example_path;
+using testing::read_text;
+using testing::run_cli;
+using testing::ScratchFolder;
+
+TEST(ModesCommand, WritesTheTableAndTheShapes) {
+  const ScratchFolder folder("modes_command");
+  const auto outcome = run_cli("modes " + example_path("parallel.yaml") + " --count 3 --at 0 5 --out " +
+                               folder.path().string());
+  ASSERT_EQ(outcome.exit_code, 0) << outcome.output;
+  const std::string csv = read_text(folder.path() / "modes.csv");
+  std::istringstream lines(csv);
+  std::string line;
+  std::getline(lines, line);
+  EXPECT_EQ(line, "frame,t,mode,omega2,frequency");
+  int n_rows = 0;
+  double previous_omega2 = -1.0;
+  while (std::getline(lines, line)) {
+    ++n_rows;
+    std::istringstream fields(line);
+    std::string frame, t, mode, omega2;
+    std::getline(fields, frame, ',');
+    std::getline(fields, t, ',');
+    std::getline(fields, mode, ',');
+    std::getline(fields, omega2, ',');
+    // Ascending within each time; all positive: the driven linkage at ΔT = 0 is stable.
+    if (mode != "1") {
+      EXPECT_GE(std::stod(omega2), previous_omega2) << line;
+    }
+    EXPECT_GT(std::stod(omega2), 0.0) << line;
+    previous_omega2 = std::stod(omega2);
+  }
+  EXPECT_EQ(n_rows, 6);
+  EXPECT_TRUE(std::filesystem::exists(folder.path() / "vtk" / "frame_000005.vtu"));
+  EXPECT_NE(read_text(folder.path() / "vtk" / "deploydyn.pvd").find("frame_000005.vtu"), std::string::npos);
+}
+
+// The cold parallel linkage, moved quasi-statically past its jam, stands on an unstable
+// equilibrium: its lowest ω² is negative and the table says so.
+TEST(ModesCommand, SaysWhenAnEquilibriumIsUnstable) {
+  const auto outcome = run_cli("modes " + example_path("parallel.yaml") + " --count 1 --at 1 --set thermal.dT=-170");
+  ASSERT_EQ(outcome.exit_code, 0) << outcome.output;
+  EXPECT_NE(outcome.output.find("unstable (ω² < 0)"), std::string::npos) << outcome.output;
+}
+
+TEST(ModesCommand, BadRequestsExitWithTwo) {
+  const auto too_many = run_cli("modes " + example_path("parallel.yaml") + " --count 4");
+  EXPECT_EQ(too_many.exit_code, 2) << too_many.output;
+  EXPECT_NE(too_many.output.find("at most 3 modes"), std::string::npos) << too_many.output;
+  const auto late = run_cli("modes " + example_path("parallel.yaml") + " --at 7");
+  EXPECT_EQ(late.exit_code, 2) << late.output;
+  EXPECT_NE(late.output.find("after the analysis end"), std::string::npos) << late.output;
+}
+
+}  // namespace
+}  // namespace deploydyn
