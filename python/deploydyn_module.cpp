@@ -6,9 +6,10 @@
 // append_history_row. The Python package adds the friendly API on top.
 //
 // Errors: InputError → deploydyn.InputError, a subclass of ValueError carrying source, line,
-// column, field and problem; std::invalid_argument (a model whose mechanics cannot be built) →
-// ValueError (pybind11's own translation). A solver failure is not an exception: it is the
-// status of the result.
+// column, field and problem; OutputError (results that cannot be written) →
+// deploydyn.OutputError, a subclass of OSError with errno, strerror and filename;
+// std::invalid_argument (a model whose mechanics cannot be built) → ValueError (pybind11's own
+// translation). A solver failure is not an exception: it is the status of the result.
 
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
@@ -18,6 +19,7 @@
 #include <algorithm>
 #include <atomic>
 #include <chrono>
+#include <cstring>
 #include <filesystem>
 #include <memory>
 #include <sstream>
@@ -32,6 +34,7 @@
 #include "deploydyn/io/model_writer.hpp"
 #include "deploydyn/output/envelope.hpp"
 #include "deploydyn/output/history_writer.hpp"
+#include "deploydyn/output/output_error.hpp"
 #include "deploydyn/output/run_to_folder.hpp"
 #include "deploydyn/output/summary_writer.hpp"
 #include "deploydyn/solvers/analysis.hpp"
@@ -75,26 +78,43 @@ class MemorySink final : public RecordSink {
   Envelope envelope_;
 };
 
-// Lets Ctrl-C stop a run whose thread has released the GIL: a few times a second the progress
-// callback takes the GIL and asks Python whether a signal arrived; if so the run stops after the
-// current step (status "interrupted") and the KeyboardInterrupt is raised when it returns.
+// Lets Ctrl-C stop a run whose thread has released the GIL: every kCheckInterval the solver's
+// poll (called in every phase: each load step of the initial equilibrium, each time step) takes
+// the GIL and asks Python whether a signal arrived; if so the run stops at its next poll
+// (status "interrupted") and the KeyboardInterrupt is raised when it returns. The progress
+// callback (once per time step) checks too, for a solver that does not poll.
 class InterruptWatch {
  public:
+  // Often enough that Ctrl-C acts within a fraction of a second; rarely enough that taking the
+  // GIL costs nothing measurable.
+  static constexpr std::chrono::milliseconds kCheckInterval{50};
+
   RunControl control() {
     RunControl control;
     control.stop = &stop_;
-    control.progress = [this](double) {
-      const auto now = std::chrono::steady_clock::now();
-      if (now - last_check_ < std::chrono::milliseconds(100)) return;
-      last_check_ = now;
-      py::gil_scoped_acquire gil;
-      if (PyErr_CheckSignals() != 0) {
-        error_ = std::make_unique<py::error_already_set>();  // fetches and keeps the exception
-        stop_.store(true);
-      }
-    };
+    control.poll = [this] { check(); };
+    control.progress = [this](double) { check(); };
     return control;
   }
+  // Without the GIL, from the thread that runs the solver (the one that called the run: Python
+  // runs signal handlers only in the main thread, so a run in another thread is not stopped).
+  void check() {
+    using Clock = std::chrono::steady_clock;
+    constexpr Clock::rep kInterval =
+        std::chrono::duration_cast<Clock::duration>(kCheckInterval).count();
+    const Clock::rep now = Clock::now().time_since_epoch().count();
+    Clock::rep last = last_check_.load(std::memory_order_relaxed);
+    if (now - last < kInterval) return;
+    // Another thread's call won the race: it checks.
+    if (!last_check_.compare_exchange_strong(last, now, std::memory_order_relaxed)) return;
+    if (stop_.load()) return;
+    py::gil_scoped_acquire gil;
+    if (PyErr_CheckSignals() != 0) {
+      error_ = std::make_unique<py::error_already_set>();  // fetches and keeps the exception
+      stop_.store(true);
+    }
+  }
+
   // After the run, with the GIL held: re-raises what the signal handler raised, if anything.
   void rethrow() {
     if (error_) {
@@ -106,7 +126,9 @@ class InterruptWatch {
 
  private:
   std::atomic<bool> stop_{false};
-  std::chrono::steady_clock::time_point last_check_ = std::chrono::steady_clock::now();
+  // steady_clock ticks of the last check; atomic, in case poll and progress come from two threads.
+  std::atomic<std::chrono::steady_clock::rep> last_check_{
+      std::chrono::steady_clock::now().time_since_epoch().count()};
   std::unique_ptr<py::error_already_set> error_;
 };
 
@@ -248,6 +270,17 @@ PYBIND11_MODULE(_core, m) {
 
   // deploydyn.InputError(ValueError): the loader's one-line message, plus its parts.
   static py::exception<InputError> input_error(m, "InputError", PyExc_ValueError);
+  // deploydyn.OutputError(OSError): results that cannot be written; errno, strerror, filename.
+  static py::exception<OutputError> output_error(m, "OutputError", PyExc_OSError);
+  // str() is the message as the CLI prints it ("cannot write F: No space left on device"), not
+  // OSError's "[Errno 28] No space left on device: 'F'" that setting `filename` would give.
+  output_error.attr("__str__") = py::cpp_function(
+      [](const py::object& self) -> py::str {
+        const py::tuple args = self.attr("args");
+        if (args.size() == 1) return py::str(args[0]);
+        return py::str(py::handle(PyExc_OSError).attr("__str__")(self));
+      },
+      py::name("__str__"), py::is_method(output_error));
   py::register_exception_translator([](std::exception_ptr thrown) {
     try {
       if (thrown) std::rethrow_exception(thrown);
@@ -260,6 +293,20 @@ PYBIND11_MODULE(_core, m) {
       error.attr("field") = e.field();
       error.attr("problem") = e.problem();
       PyErr_SetObject(input_error.ptr(), error.ptr());
+    } catch (const OutputError& e) {
+      // OSError's attributes set one by one: OSError(errno, strerror, filename) would make
+      // str() "[Errno 28] ...: 'file'" instead of the CLI's message.
+      // Decoded as Python decodes file names: a name that is not UTF-8 cannot fail here.
+      const auto fs_text = [](const char* text) {
+        return py::reinterpret_steal<py::object>(PyUnicode_DecodeFSDefault(text));
+      };
+      py::object error = py::handle(output_error.ptr())(fs_text(e.what()));
+      const int number = e.error_number();
+      error.attr("errno") = number != 0 ? py::object(py::int_(number)) : py::none();
+      error.attr("strerror") =
+          number != 0 ? py::object(py::str(std::strerror(number))) : py::none();
+      error.attr("filename") = fs_text(e.file().c_str());
+      PyErr_SetObject(output_error.ptr(), error.ptr());
     }
   });
 

@@ -12,6 +12,10 @@ Only node and element names and the supports are read from the model, so overrid
 that changed values do not matter. 3D models are drawn in their x–y projection. Colours:
 blue compression, red tension, symmetric about zero; the colour range is the largest |force|
 of the run unless --force-range is given.
+
+The folder's status is printed on stderr; a run that did not complete (failed, interrupted,
+killed, or still going) is animated as far as it got, without the incomplete last row that a
+killed run may leave (histories are read by python/deploydyn/result_folder.py).
 """
 import argparse
 import pathlib
@@ -25,6 +29,11 @@ import numpy as np  # noqa: E402
 import yaml  # noqa: E402
 from matplotlib import animation, colors  # noqa: E402
 from matplotlib.collections import LineCollection  # noqa: E402
+
+# deploydyn's reader of result folders: pure Python, so that the script runs without the built
+# module.
+sys.path.insert(0, str(pathlib.Path(__file__).resolve().parents[1] / "python" / "deploydyn"))
+import result_folder  # noqa: E402
 
 
 def read_topology(model_file):
@@ -55,12 +64,24 @@ def read_topology(model_file):
 
 
 def read_history(result_dir):
-    """{column: array} of RESULT_DIR/history.csv."""
-    history = pathlib.Path(result_dir) / "history.csv"
+    """{column: array} of RESULT_DIR's history, saying the folder's status on stderr; an
+    incomplete last row (a killed run's) is left out with a message."""
+    status, summary = result_folder.read_status(result_dir)
+    note = "" if status == "completed" else f" ({result_folder.status_note(status, summary)})"
+    print(f"animate: {result_dir}: status {status}{note}", file=sys.stderr)
+    history = result_folder.history_file_of(result_dir, summary)
     if not history.exists():
         raise SystemExit(f"deploydyn_animate: {history}: no such file")
-    table = np.genfromtxt(history, delimiter=",", names=True, deletechars="")
-    return {name: np.atleast_1d(table[name]) for name in table.dtype.names}
+    try:
+        table = result_folder.read_history(history, warn=False)
+    except (ValueError, OSError) as error:
+        raise SystemExit(f"deploydyn_animate: {error}") from None
+    if table.n_dropped_rows:
+        print(f"animate: {history}: incomplete last row left out: {table.dropped_reason}",
+              file=sys.stderr)
+    if table.values.shape[0] == 0:
+        raise SystemExit(f"deploydyn_animate: {history}: no rows to draw")
+    return table.as_dict()
 
 
 def check_start(data, positions, model_file, result_dir):

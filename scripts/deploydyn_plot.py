@@ -13,18 +13,20 @@ element or node), each run named by its folder or by --label:
     scripts/deploydyn_plot.py results/hot results/cold --out plots
     scripts/deploydyn_plot.py results/hot results/cold --label "ΔT = +130" --label "ΔT = −170" \\
         --what strain driver --element 2 --format png
-Runs that failed or were interrupted are drawn as far as they got (says so on stderr). The
-plotting core is plot_columns of scripts/plot_paper.py, which draws the paper's figures.
+Each folder's status is printed on stderr (completed, failed, interrupted, running, or killed:
+the run died without finishing). Runs that did not complete are drawn as far as they got; a
+history whose last row a killed run left incomplete is drawn without that row. The plotting
+core is plot_columns of scripts/plot_paper.py, which draws the paper's figures; histories are
+read by deploydyn's reader (python/deploydyn/result_folder.py) through it.
 """
 import argparse
-import json
 import pathlib
 import sys
 
 import numpy as np
 
 sys.path.insert(0, str(pathlib.Path(__file__).resolve().parent))
-from plot_paper import MICRO, Panel, Run, plot_columns  # noqa: E402
+from plot_paper import MICRO, Panel, Run, plot_columns, read_folder  # noqa: E402
 
 QUANTITIES = ("strain", "force", "coordinates", "driver", "energy")
 DEFAULT_QUANTITIES = ("strain", "force", "coordinates", "driver")
@@ -33,13 +35,10 @@ MOVES_M = 1e-9  # m: a node that moves less is not shown among the coordinates
 
 
 def read_header(folder):
-    """history.csv's column names, or None (with a message) when the folder has none."""
-    history = pathlib.Path(folder) / "history.csv"
-    if not history.exists():
-        print(f"plot: {folder}: no history.csv", file=sys.stderr)
-        return None
-    with open(history, encoding="utf-8") as f:
-        return f.readline().strip().split(",")
+    """The history's column names, or None (with a message) when the folder has no readable
+    history. Prints the folder's status."""
+    _, _, data = read_folder(pathlib.Path(folder))
+    return list(data) if data is not None else None
 
 
 def names_after(columns, prefix):
@@ -51,12 +50,11 @@ def moving_nodes(folders, nodes, axes):
     """The nodes that move in some run by more than MOVES_M (supports and fixed nodes left out;
     a support's coordinates wander at round-off level when the solver balances it)."""
     moving = []
+    tables = [read_folder(pathlib.Path(folder))[2] for folder in folders]
     for node in nodes:
-        for folder in folders:
-            table = np.genfromtxt(pathlib.Path(folder) / "history.csv", delimiter=",", names=True,
-                                  deletechars="")
-            if any(f"{a}.{node}" in table.dtype.names and np.ptp(np.atleast_1d(
-                    table[f"{a}.{node}"])) > MOVES_M for a in axes):
+        for table in tables:
+            if any(f"{a}.{node}" in table and table[f"{a}.{node}"].size
+                   and np.ptp(table[f"{a}.{node}"]) > MOVES_M for a in axes):
                 moving.append(node)
                 break
     return moving
@@ -84,9 +82,9 @@ def model_names(folders):
     """The model names the summaries give, in order, once each."""
     names = []
     for folder in folders:
-        summary = pathlib.Path(folder) / "summary.json"
-        if summary.exists():
-            name = json.loads(summary.read_text()).get("model") or "(unnamed model)"
+        _, summary, _ = read_folder(pathlib.Path(folder))
+        if summary is not None:
+            name = summary.get("model") or "(unnamed model)"
             if name not in names:
                 names.append(name)
     return names

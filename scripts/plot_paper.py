@@ -23,7 +23,7 @@ figure left without runs.
 """
 import argparse
 import dataclasses
-import json
+import functools
 import pathlib
 import sys
 import textwrap
@@ -33,9 +33,13 @@ import matplotlib
 
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402  (after choosing the backend)
-import numpy as np  # noqa: E402
 
 ROOT = pathlib.Path(__file__).resolve().parent.parent
+# deploydyn's reader of result folders (python/deploydyn/result_folder.py): pure Python, so that
+# the scripts run without the built module.
+sys.path.insert(0, str(ROOT / "python" / "deploydyn"))
+import result_folder  # noqa: E402
+
 ALPHA = 2.0e-5                                                    # 1/°C, paper §3
 CASES = (("hot", 130.0), ("normal", 0.0), ("cold", -170.0))      # paper Eq. (22)
 CASE_COLOURS = {"hot": "tab:red", "normal": "black", "cold": "tab:blue"}
@@ -80,22 +84,43 @@ class Panel:
     minus: Optional[str] = None
 
 
-def load_run(run):
-    """history.csv of a completed run as {column: array}, or None (with a message) otherwise."""
-    summary_file = pathlib.Path(run.folder) / "summary.json"
-    history_file = pathlib.Path(run.folder) / "history.csv"
-    if not summary_file.exists() or not history_file.exists():
-        print(f"plot: skipping {run.folder}: no result (summary.json or history.csv missing)",
+@functools.lru_cache(maxsize=None)
+def read_folder(folder):
+    """(status, summary dict or None, {column: array} or None) of a result folder, read once
+    per process by deploydyn's reader, which leaves out an incomplete last row (a killed run's).
+    Says on stderr, once, the folder's status (e.g. "killed": the run did not finish) and why
+    rows or the history are missing; a malformed history gives None, not a traceback."""
+    status, summary = result_folder.read_status(folder)
+    note = "" if status == "completed" else f" ({result_folder.status_note(status, summary)})"
+    print(f"plot: {folder}: status {status}{note}", file=sys.stderr)
+    history_file = result_folder.history_file_of(folder, summary)
+    try:
+        history = result_folder.read_history(history_file, warn=False)
+    except FileNotFoundError:
+        print(f"plot: {folder}: no {history_file.name}", file=sys.stderr)
+        return status, summary, None
+    except (ValueError, OSError) as error:
+        print(f"plot: {folder}: cannot read the history: {error}", file=sys.stderr)
+        return status, summary, None
+    if history.n_dropped_rows:
+        print(f"plot: {history_file}: incomplete last row left out: {history.dropped_reason}",
               file=sys.stderr)
+    return status, summary, history.as_dict()
+
+
+def load_run(run):
+    """history.csv of a completed run as {column: array}, or None (with a message) otherwise;
+    with run.incomplete_ok, also of a run that failed, was interrupted, was killed or is still
+    going, as far as it got."""
+    status, summary, data = read_folder(pathlib.Path(run.folder))
+    if summary is None or data is None:
+        print(f"plot: skipping {run.folder}: no result (summary.json or history.csv missing "
+              "or unreadable)", file=sys.stderr)
         return None
-    status = json.loads(summary_file.read_text()).get("status")
     if status != "completed" and not run.incomplete_ok:
         print(f"plot: skipping {run.folder}: run {status}", file=sys.stderr)
         return None
-    if status != "completed":
-        print(f"plot: {run.folder}: run {status}, drawn as far as it got", file=sys.stderr)
-    table = np.genfromtxt(history_file, delimiter=",", names=True, deletechars="")
-    data = {name: np.atleast_1d(table[name]) for name in table.dtype.names}
+    data = dict(data)  # derive adds columns to this run's copy, not to the folder's cache
     if run.derive:
         run.derive(data)
     return data

@@ -6,6 +6,8 @@
     result["mstrain.2"]                         # numpy array, a column of history.csv
     result.values, result.columns               # the whole history as (rows × columns)
     result.summary["drivers"]["motor"]["peak"]  # summary.json as a dict
+    deploydyn.read_result("results/hot")        # a result folder, also one still running
+    deploydyn.folder_status("results/hot")      # "completed", "killed", ...
 
 Models come from a model file (`load`), from text (`loads`), from a dict in the file's layout
 (`from_dict`), or from a `ModelBuilder`. Every model, however made, is read and checked by the
@@ -16,30 +18,52 @@ Errors:
     message is the CLI's one line `SOURCE:LINE:COLUMN: FIELD: PROBLEM`; its attributes `source`,
     `line`, `column` (None when unknown), `field` and `problem` hold the parts. A model whose
     mechanics cannot be built (e.g. a driven bar along its rotation axis) raises ValueError.
+  - an argument of the wrong type raises TypeError, and a count or size out of range
+    ValueError, naming the function, the parameter and what it takes ("roof: units must be
+    an int, not float 1.7"). Counts are ints: a float, even 2.0, or a bool is refused.
+  - results that cannot be written (a full disk, a file-size limit, no permission, a folder
+    that another run owns) raise `OutputError`, an OSError with `errno` (None when the
+    operating system gave no error, e.g. a folder in use), `strerror` and `filename`; the
+    folder's summary.json then says "failed" and why, if it could be written.
   - a solver failure is NOT an exception: `run` returns a Result whose `status` is "failed"
     (`result.ok` is False, `result.summary["failure"]` says where and why), like the CLI's exit
     code 1, and keeps the history up to the failure. `run(check=True)` or
     `result.raise_for_status()` raise `RunFailed` instead.
-  - Ctrl-C during a run stops it after the current step and raises KeyboardInterrupt (a run
-    into a folder keeps what was written, with status "interrupted" in summary.json).
+  - Ctrl-C during a run (in any phase: the initial equilibrium's load steps too) stops it within
+    a fraction of a second and raises KeyboardInterrupt (a run into a folder keeps what was
+    written, with status "interrupted" in summary.json).
+
+Result folders (`read_result`, `folder_status`): a run owns its folder (a lock on
+.deploydyn.lock) and its summary.json says "running" until the run ends, then "completed",
+"failed" or "interrupted". A folder whose summary.json still says "running" but whose lock no
+process holds was left by a killed run: its status reads "killed" (`Result.ok` False), and the
+last row of its history may be cut off; readers leave such a row out with an
+`IncompleteHistoryWarning` (`Result.n_dropped_rows` counts it). Any other malformed row of a
+history raises ValueError naming the file and line.
 
 `run` releases the GIL: runs of different models in threads go in parallel.
 """
 import copy
+import errno
 import json
 import math
 import numbers
+import os
 import pathlib
 
 import numpy as np
 
 from deploydyn import _core
+from deploydyn.result_folder import IncompleteHistoryWarning
+from deploydyn import result_folder as _result_folder
 
 InputError = _core.InputError
+OutputError = _core.OutputError
 
 __all__ = [
-    "InputError", "RunFailed", "Model", "Result", "ModelBuilder", "load", "loads", "from_dict", "roof",
-    "read_result", "constant", "smooth_step", "smooth_trapezoid", "paper_eq23", "table",
+    "InputError", "OutputError", "RunFailed", "IncompleteHistoryWarning", "Model", "Result",
+    "ModelBuilder", "load", "loads", "from_dict", "roof", "read_result", "folder_status",
+    "constant", "smooth_step", "smooth_trapezoid", "paper_eq23", "table",
 ]
 
 
@@ -53,10 +77,123 @@ class RunFailed(RuntimeError):
 
 
 # ---------------------------------------------------------------------------------------------
+# Argument checks: a message that names the function, the parameter and what it takes, before
+# a value reaches pybind11 ("incompatible function arguments") or the loader ("cannot open
+# file").
+
+_INT_MAX = 2**31 - 1  # the C++ side's int
+
+
+def _shown(value):
+    """`value` for a message: its type and a short repr."""
+    text = repr(value)
+    if len(text) > 60:
+        text = text[:57] + "..."
+    return f"{type(value).__name__} {text}"
+
+
+def _is_number(value):
+    return isinstance(value, numbers.Real) and not isinstance(value, bool)
+
+
+def _count(where, name, value, minimum=1):
+    """An int (not a bool, not a float even if whole) of at least `minimum`."""
+    if isinstance(value, bool) or not isinstance(value, numbers.Integral):
+        raise TypeError(f"{where}: {name} must be an int, not {_shown(value)}")
+    value = int(value)
+    if value < minimum:
+        raise ValueError(f"{where}: {name} must be at least {minimum}, got {value}")
+    if value > _INT_MAX:
+        raise ValueError(f"{where}: {name} must be at most {_INT_MAX}, got {value}")
+    return value
+
+
+def _number(where, name, value):
+    """`value`, checked to be a real number (int or float, numpy's too; not a bool)."""
+    if not _is_number(value):
+        raise TypeError(f"{where}: {name} must be a number (int or float), not {_shown(value)}")
+    return value
+
+
+def _numbers(where, name, values):
+    """A sequence of numbers (a list, tuple or 1-D array), checked, as a list."""
+    if isinstance(values, (str, bytes)) or not hasattr(values, "__iter__"):
+        raise TypeError(f"{where}: {name} must be a sequence of numbers, not {_shown(values)}")
+    values = list(values)
+    for i, value in enumerate(values):
+        if not _is_number(value):
+            raise TypeError(f"{where}: {name}[{i}] must be a number, not {_shown(value)}")
+    return values
+
+
+def _text(where, name, value):
+    if not isinstance(value, str):
+        raise TypeError(f"{where}: {name} must be a str, not {_shown(value)}")
+    return value
+
+
+def _name(where, name, value):
+    """A node, element, material, driver or function name: a str, or an int (as `1:` in a file)."""
+    if isinstance(value, str):
+        return value
+    if isinstance(value, numbers.Integral) and not isinstance(value, bool):
+        return str(int(value))
+    raise TypeError(f"{where}: {name} must be a name (str, or int), not {_shown(value)}")
+
+
+def _path(where, name, value):
+    """A file or folder path: a str or an os.PathLike (pathlib.Path), not empty."""
+    if not isinstance(value, (str, os.PathLike)):
+        raise TypeError(f"{where}: {name} must be a path (str or pathlib.Path), "
+                        f"not {_shown(value)}")
+    path = os.fspath(value)
+    if isinstance(path, bytes):
+        path = os.fsdecode(path)
+    if not path:
+        raise ValueError(f"{where}: {name} must not be empty")
+    return pathlib.Path(path)
+
+
+def _time_function(where, name, value):
+    """A function of time as the model file takes it: a number, a function's name, or a dict
+    (constant(...), smooth_step(...), ...)."""
+    if _is_number(value) or isinstance(value, str) or isinstance(value, dict):
+        return value
+    raise TypeError(f"{where}: {name} must be a number, a function's name (str) or a function "
+                    f"(dict, e.g. deploydyn.smooth_step(...)), not {_shown(value)}")
+
+
+def _plain(value, field, where):
+    """`value` (a model file's content) with only what JSON holds: dicts with text keys, lists,
+    text, numbers (numpy's as Python's), booleans, None. TypeError names the field."""
+    if value is None or isinstance(value, (str, bool)):
+        return value
+    if isinstance(value, (np.ndarray, np.bool_)):
+        return _plain(value.tolist(), field, where)
+    if isinstance(value, numbers.Integral):
+        return int(value)
+    if isinstance(value, numbers.Real):
+        return float(value)
+    if isinstance(value, dict):
+        out = {}
+        for key, item in value.items():
+            if isinstance(key, bool) or not isinstance(key, (str, numbers.Integral)):
+                raise TypeError(f"{where}: {field or 'the model'}: keys must be names (str, or "
+                                f"int), not {_shown(key)}")
+            key = str(key) if isinstance(key, str) else str(int(key))
+            out[key] = _plain(item, f"{field}.{key}" if field else key, where)
+        return out
+    if isinstance(value, (list, tuple)):
+        return [_plain(item, f"{field}.{i}", where) for i, item in enumerate(value)]
+    raise TypeError(f"{where}: {field or 'the model'} must be a number, text, list or dict, "
+                    f"not {_shown(value)}")
+
+
+# ---------------------------------------------------------------------------------------------
 # Overrides
 
 
-def _value_text(value):
+def _value_text(where, path, value):
     """An override value as the text --set takes: numbers in their shortest exact form."""
     if isinstance(value, bool):
         return "true" if value else "false"
@@ -66,25 +203,37 @@ def _value_text(value):
         return repr(float(value))
     if isinstance(value, str):
         return value
-    raise TypeError(f"override value {value!r}: give a number or a text, not {type(value).__name__}")
+    raise TypeError(f"{where}: override {path}: the value must be a number, bool or text, "
+                    f"not {_shown(value)}")
 
 
-def _override_pairs(overrides):
+_OVERRIDES_TAKE = ("a dict {path: value}, a 'PATH=VALUE' text, or a list of such texts or "
+                   "(path, value) pairs")
+
+
+def _override_pairs(where, overrides):
     """Overrides as (path, text) pairs, from a dict {path: value}, a "PATH=VALUE" string, or a
     list of such strings or (path, value) pairs."""
     if overrides is None:
         return []
     if isinstance(overrides, str):
         overrides = [overrides]
-    if isinstance(overrides, dict):
+    elif isinstance(overrides, dict):
         overrides = list(overrides.items())
+    elif isinstance(overrides, (list, tuple)):
+        overrides = list(overrides)
+    else:
+        raise TypeError(f"{where}: overrides must be {_OVERRIDES_TAKE}, not {_shown(overrides)}")
     pairs = []
     for item in overrides:
         if isinstance(item, str):
             pairs.append(_core.parse_override(item))
+        elif isinstance(item, (list, tuple)) and len(item) == 2:
+            path = _text(where, "an override's path", item[0])
+            pairs.append((path, _value_text(where, path, item[1])))
         else:
-            path, value = item
-            pairs.append((str(path), _value_text(value)))
+            raise TypeError(f"{where}: overrides must be {_OVERRIDES_TAKE}; "
+                            f"an item is {_shown(item)}")
     return pairs
 
 
@@ -122,15 +271,16 @@ class Model:
         """Override values in place: set("thermal.dT", 130), set({"thermal.dT": 130, ...}) or
         set("thermal.dT=130"). On an error the model is left as it was. Returns the model."""
         if value is not None:
-            path_or_overrides = {path_or_overrides: value}
-        overrides = _merge(self._overrides, _override_pairs(path_or_overrides))
+            path_or_overrides = {_text("Model.set", "path", path_or_overrides): value}
+        overrides = _merge(self._overrides, _override_pairs("Model.set", path_or_overrides))
         self._core = self._load(overrides)
         self._overrides = overrides
         return self
 
     def with_overrides(self, overrides):
         """A new model: this one with `overrides` (dict, list or "PATH=VALUE") applied."""
-        return Model(self._source, _merge(self._overrides, _override_pairs(overrides)))
+        return Model(self._source,
+                     _merge(self._overrides, _override_pairs("Model.with_overrides", overrides)))
 
     @property
     def overrides(self):
@@ -190,6 +340,7 @@ class Model:
 
     def temperature_changes(self, t=0.0):
         """{element: ΔT (°C) at time t}."""
+        t = float(_number("Model.temperature_changes", "t", t))
         return dict(zip(self.elements, self._core.temperature_changes(t)))
 
     def to_yaml(self):
@@ -198,7 +349,7 @@ class Model:
 
     def save(self, path):
         """Write to_yaml() to `path`; load(path) reads back the same model."""
-        pathlib.Path(path).write_text(self.to_yaml(), encoding="utf-8")
+        _path("Model.save", "path", path).write_text(self.to_yaml(), encoding="utf-8")
 
     # -- running --------------------------------------------------------------------------------
     def run(self, out=None, check=False):
@@ -207,14 +358,17 @@ class Model:
         out: a folder to write history.csv and summary.json into, as `deploydyn run --out`
         does (the Result then reads them back: the values are the same to the last bit);
         None keeps everything in memory. check: raise RunFailed unless the run completed.
+        Results that cannot be written raise OutputError (an OSError).
         """
+        if not isinstance(check, bool):
+            raise TypeError(f"Model.run: check must be a bool, not {_shown(check)}")
         if out is None:
             raw = self._core.run_in_memory()
             result = Result(raw["columns"], raw["values"], json.loads(raw["summary_json"]))
         else:
-            raw = self._core.run_into_folder(pathlib.Path(out))
-            result = read_result(out, history_file=raw["history_file"],
-                                 summary_file=raw["summary_file"])
+            out = _path("Model.run", "out", out)
+            raw = self._core.run_into_folder(out)
+            result = _read_result(out, raw["history_file"], raw["summary_file"], stacklevel=3)
         if check:
             result.raise_for_status()
         return result
@@ -228,31 +382,45 @@ class Model:
 def load(path, overrides=None):
     """Read a model file (YAML or JSON), with overrides as --set applies them:
     {"thermal.dT": 130}, ["thermal.dT=130"] or [("thermal.dT", 130)]."""
-    return Model(("file", str(path)), _override_pairs(overrides))
+    path = _path("load", "path", path)
+    return Model(("file", str(path)), _override_pairs("load", overrides))
 
 
 def loads(text, source_name="<string>", overrides=None):
     """Read a model from text in the model-file format; errors name `source_name` and the line."""
-    return Model(("text", text, source_name, True), _override_pairs(overrides))
+    _text("loads", "text", text)
+    _text("loads", "source_name", source_name)
+    return Model(("text", text, source_name, True), _override_pairs("loads", overrides))
 
 
 def from_dict(spec, source_name=None, overrides=None):
     """A model from a dict laid out as a model file ({"nodes": {...}, "elements": {...}, ...}).
-    Errors name the field (e.g. elements.2.area) but no line: there is no file."""
-    name = spec.get("name") if isinstance(spec, dict) else None
+    Errors name the field (e.g. elements.2.area) but no line: there is no file. Values may be
+    numpy numbers or arrays; anything JSON cannot hold is a TypeError naming the field."""
+    if not isinstance(spec, dict):
+        raise TypeError("from_dict: spec must be a dict laid out as a model file, "
+                        f"not {_shown(spec)}")
+    if source_name is not None:
+        _text("from_dict", "source_name", source_name)
+    spec = _plain(spec, "", "from_dict")
+    name = spec.get("name")
     source_name = source_name or (f"<model {name!r} built in Python>" if name else
                                   "<model built in Python>")
     text = json.dumps(spec, indent=1, ensure_ascii=False, allow_nan=True)
-    return Model(("text", text, source_name, False), _override_pairs(overrides))
+    return Model(("text", text, source_name, False), _override_pairs("from_dict", overrides))
 
 
 def roof(units, trusses=1, delta_t=130.0, overrides=None):
     """A foldable roof of the paper's parallel four-bar units, as `deploydyn generate roof` writes
     it: trusses=1 a planar truss of `units` units, trusses > 1 a 3D roof; posts deploy from 5° to
-    upright in 5 s; delta_t (°C) is the model-wide temperature change."""
-    text = _core.roof_yaml(int(units), int(trusses), float(delta_t))
+    upright in 5 s; delta_t (°C) is the model-wide temperature change. units and trusses are
+    ints (a float, even 2.0, is refused: TypeError)."""
+    units = _count("roof", "units", units)
+    trusses = _count("roof", "trusses", trusses)
+    delta_t = float(_number("roof", "delta_t", delta_t))
+    text = _core.roof_yaml(units, trusses, delta_t)
     return Model(("text", text, f"<roof of {trusses} x {units} units>", False),
-                 _override_pairs(overrides))
+                 _override_pairs("roof", overrides))
 
 
 # ---------------------------------------------------------------------------------------------
@@ -260,30 +428,56 @@ def roof(units, trusses=1, delta_t=130.0, overrides=None):
 
 
 def constant(value):
-    return {"type": "constant", "value": value}
+    return {"type": "constant", "value": _number("constant", "value", value)}
 
 
 def smooth_step(t0, v0, t1, v1):
     """v0 until t0, v1 from t1, ADAMS' cubic STEP in between."""
-    return {"type": "smooth_step", "t0": t0, "v0": v0, "t1": t1, "v1": v1}
+    return {"type": "smooth_step", **{name: _number("smooth_step", name, value) for name, value in
+                                      (("t0", t0), ("v0", v0), ("t1", t1), ("v1", v1))}}
+
+
+def _pair(where, name, value):
+    values = _numbers(where, name, value)
+    if len(values) != 2:
+        raise ValueError(f"{where}: {name} must be two numbers (t_start, t_end), got {len(values)}")
+    return values
 
 
 def smooth_trapezoid(amplitude, rise, fall):
     """0 → amplitude over rise = (t0, t1), held, back to 0 over fall = (t2, t3)."""
-    return {"type": "smooth_trapezoid", "amplitude": amplitude, "rise": list(rise),
-            "fall": list(fall)}
+    return {"type": "smooth_trapezoid",
+            "amplitude": _number("smooth_trapezoid", "amplitude", amplitude),
+            "rise": _pair("smooth_trapezoid", "rise", rise),
+            "fall": _pair("smooth_trapezoid", "fall", fall)}
 
 
 def paper_eq23(**changes):
     """The paper's Eq. (23) (amplitude 0.365, rise [0, 1], fall [4, 5]); keywords change parts."""
     spec = {"type": "paper_eq23"}
-    spec.update({k: list(v) if isinstance(v, (tuple, list)) else v for k, v in changes.items()})
+    for key, value in changes.items():
+        if key == "amplitude":
+            spec[key] = _number("paper_eq23", key, value)
+        elif key in ("rise", "fall"):
+            spec[key] = _pair("paper_eq23", key, value)
+        else:
+            spec[key] = value  # the loader names what it does not know
     return spec
 
 
 def table(points):
     """Linear between (t, value) points, held constant outside."""
-    return {"type": "table", "points": [[float(t), float(v)] for t, v in points]}
+    if isinstance(points, (str, bytes)) or not hasattr(points, "__iter__"):
+        raise TypeError("table: points must be a sequence of (t, value) pairs, "
+                        f"not {_shown(points)}")
+    rows = []
+    for i, point in enumerate(points):
+        values = _numbers("table", f"points[{i}]", point)
+        if len(values) != 2:
+            raise ValueError(f"table: points[{i}] must be a (t, value) pair, "
+                             f"got {len(values)} numbers")
+        rows.append([float(v) for v in values])
+    return {"type": "table", "points": rows}
 
 
 class ModelBuilder:
@@ -300,10 +494,13 @@ class ModelBuilder:
 
     Functions of time (driver profiles, ΔT, load factors) are a number, the name of a function
     added with `function`, "paper_eq23", or constant/smooth_step/smooth_trapezoid/paper_eq23/
-    table(...). Nothing is checked until `build`, which checks everything the loader checks.
+    table(...). Each method checks the types of its arguments (TypeError naming the method and
+    parameter); values are checked at `build`, which checks everything the loader checks.
     """
 
     def __init__(self, name="", description=""):
+        name = _text("ModelBuilder", "name", name)
+        description = _text("ModelBuilder", "description", description)
         self._spec = {"name": name} if name else {}
         if description:
             self._spec["description"] = description
@@ -313,33 +510,47 @@ class ModelBuilder:
 
     def node(self, name, x, y, z=None, mass=None):
         """A node at (x, y[, z]) m, with an optional point mass (kg)."""
-        at = [x, y] if z is None else [x, y, z]
-        self._section("nodes")[str(name)] = at if mass is None else {"at": at, "mass": mass}
+        where = "ModelBuilder.node"
+        at = [_number(where, axis, value) for axis, value in (("x", x), ("y", y), ("z", z))
+              if value is not None or axis != "z"]
+        spec = at if mass is None else {"at": at, "mass": _number(where, "mass", mass)}
+        self._section("nodes")[_name(where, "name", name)] = spec
         return self
 
     def material(self, name, E, alpha=0.0, density=None):
         """E (Pa), alpha (1/°C), density (kg/m³, for bars that give no mass)."""
-        spec = {"E": E, "alpha": alpha}
+        where = "ModelBuilder.material"
+        spec = {"E": _number(where, "E", E), "alpha": _number(where, "alpha", alpha)}
         if density is not None:
-            spec["density"] = density
-        self._section("materials")[str(name)] = spec
+            spec["density"] = _number(where, "density", density)
+        self._section("materials")[_name(where, "name", name)] = spec
         return self
 
     def bar(self, name, node_a, node_b, area, material, mass=None, length=None, dT=None):
         """A bar between two nodes: area (m²), mass (kg; default density·area·L0), length
         (m, the reference length L0; default the nodes' distance), dT (its own ΔT(t), °C)."""
-        spec = {"nodes": [str(node_a), str(node_b)], "area": area, "material": str(material)}
-        for key, value in (("mass", mass), ("length", length), ("dT", dT)):
+        where = "ModelBuilder.bar"
+        spec = {"nodes": [_name(where, "node_a", node_a), _name(where, "node_b", node_b)],
+                "area": _number(where, "area", area),
+                "material": _name(where, "material", material)}
+        for key, value in (("mass", mass), ("length", length)):
             if value is not None:
-                spec[key] = value
-        self._section("elements")[str(name)] = spec
+                spec[key] = _number(where, key, value)
+        if dT is not None:
+            spec["dT"] = _time_function(where, "dT", dT)
+        self._section("elements")[_name(where, "name", name)] = spec
         return self
 
     def support(self, node, fix=None):
-        """Fix a node's coordinates: all axes, or those in `fix` (e.g. ["y"])."""
-        spec = {"node": str(node)}
+        """Fix a node's coordinates: all axes, or those in `fix` (e.g. ["y"], or "y")."""
+        where = "ModelBuilder.support"
+        spec = {"node": _name(where, "node", node)}
         if fix is not None:
-            spec["fix"] = list(fix)
+            axes = [fix] if isinstance(fix, str) else fix
+            if not isinstance(axes, (list, tuple)) or not all(isinstance(a, str) for a in axes):
+                raise TypeError(f"{where}: fix must be a list of axis names (\"x\", \"y\", "
+                                f"\"z\"), not {_shown(fix)}")
+            spec["fix"] = list(axes)
         self._section("supports", list).append(spec)
         return self
 
@@ -347,50 +558,59 @@ class ModelBuilder:
                          axis=None):
         """Turn bar `element` about `pivot` (default its first node); reading
         "angular_velocity" (profile ω(t), rad/s) or "angle" (rad)."""
-        spec = {"type": "bar_angle", "element": str(element), "profile": profile,
-                "reading": reading}
+        where = "ModelBuilder.bar_angle_driver"
+        spec = {"type": "bar_angle", "element": _name(where, "element", element),
+                "profile": _time_function(where, "profile", profile),
+                "reading": _text(where, "reading", reading)}
         if pivot is not None:
-            spec["pivot"] = str(pivot)
+            spec["pivot"] = _name(where, "pivot", pivot)
         if axis is not None:
-            spec["axis"] = list(axis)
-        self._section("drivers")[str(name)] = spec
+            spec["axis"] = _numbers(where, "axis", axis)
+        self._section("drivers")[_name(where, "name", name)] = spec
         return self
 
     def coordinate_driver(self, name, node, direction, profile, reading="velocity"):
         """Prescribe coordinate `direction` ("x", "y", "z") of `node`; reading "velocity"
         (m/s) or "displacement" (m)."""
-        self._section("drivers")[str(name)] = {
-            "type": "coordinate", "node": str(node), "direction": direction, "profile": profile,
-            "reading": reading}
+        where = "ModelBuilder.coordinate_driver"
+        self._section("drivers")[_name(where, "name", name)] = {
+            "type": "coordinate", "node": _name(where, "node", node),
+            "direction": _text(where, "direction", direction),
+            "profile": _time_function(where, "profile", profile),
+            "reading": _text(where, "reading", reading)}
         return self
 
     def load(self, node, force, factor=None):
         """A nodal force (N), times factor(t) (default 1)."""
-        spec = {"node": str(node), "force": list(force)}
+        where = "ModelBuilder.load"
+        spec = {"node": _name(where, "node", node), "force": _numbers(where, "force", force)}
         if factor is not None:
-            spec["factor"] = factor
+            spec["factor"] = _time_function(where, "factor", factor)
         self._section("loads", list).append(spec)
         return self
 
     def function(self, name, spec):
         """A named function of time, usable by name in profiles, dT and factors."""
-        self._section("functions")[str(name)] = spec
+        where = "ModelBuilder.function"
+        self._section("functions")[_name(where, "name", name)] = _time_function(where, "spec", spec)
         return self
 
     def thermal(self, dT):
         """ΔT(t) (°C) of every bar without its own."""
-        self._section("thermal")["dT"] = dT
+        self._section("thermal")["dT"] = _time_function("ModelBuilder.thermal", "dT", dT)
         return self
 
     def gravity(self, *g):
-        """Gravity (m/s²), one component per axis."""
-        self._spec["gravity"] = list(g[0]) if len(g) == 1 else list(g)
+        """Gravity (m/s²), one component per axis: gravity(0, -9.81) or gravity([0, -9.81])."""
+        values = g[0] if len(g) == 1 and not _is_number(g[0]) else g
+        self._spec["gravity"] = _numbers("ModelBuilder.gravity", "g", values)
         return self
 
     def analysis(self, **options):
         """Analysis options as in the file: type ("static"/"dynamic"), end, step,
-        output_interval, load_steps, mass, integrator={...}, newton={...}."""
-        self._section("analysis").update(options)
+        output_interval, load_steps, mass, integrator={...}, newton={...}. Their values are
+        checked at `build` (InputError names analysis.<option>)."""
+        self._section("analysis").update(_plain(options, "analysis", "ModelBuilder.analysis"))
         return self
 
     def to_dict(self):
@@ -410,23 +630,31 @@ class Result:
     """The outcome of a run.
 
     columns: history.csv's column names; values: the history, one row per output time, as a
-    2-D float array; history: {column: 1-D array}; summary: summary.json as a dict; status:
-    "completed", "failed" or "interrupted"; folder: the result folder, or None.
+    2-D float array; history: {column: 1-D array}; summary: summary.json as a dict ({} when the
+    folder has none); status: "completed", "failed" or "interrupted", and for a folder read
+    with read_result also "running", "killed" or "unknown" (see folder_status), as it was when
+    read; folder: the result folder, or None; n_dropped_rows: 1 when the history's incomplete
+    last row was left out, else 0.
     """
 
-    def __init__(self, columns, values, summary, folder=None):
+    def __init__(self, columns, values, summary, folder=None, status=None, n_dropped_rows=0):
         self.columns = list(columns)
         self.values = np.asarray(values, dtype=float).reshape(-1, len(self.columns))
         self.history = {name: self.values[:, i].copy() for i, name in enumerate(self.columns)}
         self.summary = summary
         self.folder = pathlib.Path(folder) if folder is not None else None
+        self.n_dropped_rows = n_dropped_rows
+        self._status = status
 
     @property
     def status(self):
-        return self.summary.get("status")
+        return self._status if self._status is not None else self.summary.get("status")
 
     @property
     def message(self):
+        """summary.json's message; for a killed, running or unknown folder, what that means."""
+        if self.status in ("killed", "running", "unknown"):
+            return _result_folder.status_note(self.status)
         return self.summary.get("message", "")
 
     @property
@@ -465,14 +693,60 @@ class Result:
 
 
 def read_result(folder, history_file=None, summary_file=None):
-    """A Result from a result folder written by `deploydyn run` or Model.run(out=...)."""
+    """A Result from a result folder written by `deploydyn run` or Model.run(out=...), also
+    while its run is going or after it was killed.
+
+    Result.status is the folder's status (folder_status): "killed" for a run that died without
+    finishing, "running" for a live one, "unknown" without summary.json. An incomplete last
+    row of the history (cut off by the kill, or not yet written whole) is left out with an
+    IncompleteHistoryWarning (Result.n_dropped_rows = 1); any other malformed row raises
+    ValueError naming the file and line. history_file: default the history file that
+    summary.json lists, else FOLDER/history.csv; summary_file: default FOLDER/summary.json.
+    A missing history file raises FileNotFoundError.
+    """
+    folder = _path("read_result", "folder", folder)
+    if history_file is not None:
+        history_file = _path("read_result", "history_file", history_file)
+    if summary_file is not None:
+        summary_file = _path("read_result", "summary_file", summary_file)
+    return _read_result(folder, history_file, summary_file, stacklevel=3)
+
+
+def _read_result(folder, history_file, summary_file, stacklevel):
     folder = pathlib.Path(folder)
-    history_file = pathlib.Path(history_file or folder / "history.csv")
     summary_file = pathlib.Path(summary_file or folder / "summary.json")
-    with open(history_file, encoding="utf-8") as f:
-        columns = f.readline().strip().split(",")
-        rows = [line for line in f if line.strip()]
-    values = (np.loadtxt(rows, delimiter=",", ndmin=2) if rows
-              else np.empty((0, len(columns))))
-    summary = json.loads(summary_file.read_text(encoding="utf-8"))
-    return Result(columns, values, summary, folder=folder)
+    status, _ = _result_folder.read_status(folder, summary_file)
+    try:
+        summary = json.loads(summary_file.read_text(encoding="utf-8"))
+    except FileNotFoundError:
+        summary = {}
+    except ValueError as error:
+        raise ValueError(f"{summary_file}: not a JSON summary ({error})") from None
+    if not isinstance(summary, dict):
+        raise ValueError(f"{summary_file}: not a JSON summary (a {type(summary).__name__}, "
+                         "not an object)")
+    history_file = pathlib.Path(history_file or _result_folder.history_file_of(folder, summary))
+    try:
+        history = _result_folder.read_history(history_file, status=status,
+                                              _stacklevel=stacklevel + 1)
+    except FileNotFoundError:
+        raise FileNotFoundError(
+            errno.ENOENT, f"no history file (the folder's status: {status})",
+            str(history_file)) from None
+    except ValueError as error:
+        if status == "completed":
+            raise
+        raise ValueError(f"{error} (the folder's status: {status})") from None
+    return Result(history.columns, history.values, summary, folder=folder, status=status,
+                  n_dropped_rows=history.n_dropped_rows)
+
+
+def folder_status(folder, status_file=None):
+    """The status of a result folder (a run's or a study's): "completed", "failed",
+    "interrupted", "running" (a live run owns it), "killed" (its summary.json says "running"
+    but no process holds its lock: the run died) or "unknown" (no status file). Details in
+    deploydyn.result_folder.folder_status."""
+    folder = _path("folder_status", "folder", folder)
+    if status_file is not None:
+        status_file = _path("folder_status", "status_file", status_file)
+    return _result_folder.folder_status(folder, status_file)

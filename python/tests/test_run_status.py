@@ -99,3 +99,36 @@ def test_ctrl_c_stops_a_run_and_keeps_its_results(general_model, tmp_path):
     summary = json.loads((tmp_path / "out" / "summary.json").read_text())
     assert summary["status"] == "interrupted"
     assert 0 < summary["final_time"] < 5.0
+
+
+@pytest.mark.parametrize("into_folder", [False, True], ids=["in_memory", "into_folder"])
+def test_ctrl_c_stops_a_long_initial_equilibrium_at_once(tmp_path, into_folder):
+    """Ctrl-C acts within a fraction of a second in every phase, not only between time steps:
+    here during the initial equilibrium of a roof with a million load steps (~10 s)."""
+    out = tmp_path / "out"
+    script = tmp_path / "long_equilibrium.py"
+    script.write_text(
+        "import os, signal, sys, threading, time, deploydyn\n"
+        "model = deploydyn.roof(20, overrides={'analysis.load_steps': 1000000})\n"
+        "sent = []\n"
+        "def interrupt():\n"
+        "    sent.append(time.perf_counter())\n"
+        "    os.kill(os.getpid(), signal.SIGINT)\n"
+        "threading.Timer(0.3, interrupt).start()\n"
+        "try:\n"
+        f"    model.run(out={str(out)!r}) if {into_folder} else model.run()\n"
+        "except KeyboardInterrupt:\n"
+        "    print(time.perf_counter() - sent[0], flush=True)\n"
+        "    sys.exit(3)\n")
+    process = subprocess.Popen([sys.executable, str(script)], stdout=subprocess.PIPE, text=True)
+    try:
+        output, _ = process.communicate(timeout=60)
+    finally:
+        process.kill()
+    assert process.returncode == 3, f"no KeyboardInterrupt (exit {process.returncode}): {output}"
+    assert float(output) < 1.0, f"KeyboardInterrupt {float(output):.2f} s after the signal"
+    if into_folder:
+        summary = json.loads((out / "summary.json").read_text())
+        assert summary["status"] == "interrupted"
+        assert "initial equilibrium" in summary["message"]
+        assert deploydyn.folder_status(out) == "interrupted"
