@@ -47,12 +47,12 @@ def run_set(cli, out_root, name, model, cases=CASES, case_override="thermal.dT={
 
 
 def history(folder):
-    """{column: array} of a run's history.csv, or None for a failed run."""
+    """{column: array} of a run's history.csv, or None for a failed run (read as the plots
+    read it: plot_paper.read_folder, which leaves out a killed run's incomplete last row)."""
     if folder is None:
         return None
-    table = np.genfromtxt(pathlib.Path(folder) / "history.csv", delimiter=",", names=True,
-                          deletechars="")
-    return {n: np.asarray(table[n]) for n in table.dtype.names}
+    data = plot_paper.read_folder(pathlib.Path(folder))[2]
+    return None if data is None else dict(data)
 
 
 def add_actuator_columns(data, kind):
