@@ -37,7 +37,10 @@
 #include "deploydyn/output/output_error.hpp"
 #include "deploydyn/output/run_to_folder.hpp"
 #include "deploydyn/output/summary_writer.hpp"
+#include "deploydyn/assembly/linear_system_factory.hpp"
 #include "deploydyn/solvers/analysis.hpp"
+#include "deploydyn/solvers/modal_analysis.hpp"
+#include "deploydyn/solvers/static_solver.hpp"
 
 namespace py = pybind11;
 using namespace deploydyn;
@@ -265,6 +268,52 @@ py::dict analysis_info(const Model& model) {
 
 }  // namespace
 
+// Natural modes about the static equilibrium at each time (solvers/modal_analysis.hpp):
+// times, ω² (times × modes), modes (times × coordinates × modes), the coordinates' labels,
+// and per time an empty string or why it failed (its rows are then NaN).
+py::dict modes_at(const LoadedModel& loaded, int n_modes, const std::vector<double>& times) {
+  const Assembler assembler(loaded.model);  // std::invalid_argument → ValueError
+  const auto n_t = static_cast<py::ssize_t>(times.size());
+  const py::ssize_t n_dofs = assembler.n_dofs();
+  py::array_t<double> omega2({n_t, static_cast<py::ssize_t>(n_modes)});
+  py::array_t<double> shapes({n_t, n_dofs, static_cast<py::ssize_t>(n_modes)});
+  std::vector<std::string> failures(times.size());
+  {
+    auto w = omega2.mutable_unchecked<2>();
+    auto phi = shapes.mutable_unchecked<3>();
+    py::gil_scoped_release release;
+    const auto system = make_linear_system(assembler);
+    ModalOptions options;
+    options.n_modes = n_modes;
+    for (py::ssize_t i = 0; i < n_t; ++i) {
+      MotionState state;
+      const StaticResult equilibrium = solve_equilibrium_at(assembler, times[i], *system, state);
+      ModalResult modes;
+      if (!equilibrium.newton.converged || equilibrium.path_factor < 1.0) {
+        modes.message = "no static equilibrium: " + equilibrium.newton.failure;
+      } else {
+        modes = natural_modes(assembler, state, *system, options);  // invalid_argument → ValueError
+      }
+      failures[i] = modes.ok ? "" : modes.message;
+      for (py::ssize_t k = 0; k < n_modes; ++k) {
+        w(i, k) = modes.ok ? modes.omega2_rad2_s2[k] : std::numeric_limits<double>::quiet_NaN();
+        for (py::ssize_t j = 0; j < n_dofs; ++j) {
+          phi(i, j, k) = modes.ok ? modes.modes(j, k) : std::numeric_limits<double>::quiet_NaN();
+        }
+      }
+    }
+  }
+  std::vector<std::string> labels;
+  for (int j = 0; j < assembler.n_dofs(); ++j) labels.push_back(assembler.dof_map().label(j));
+  py::dict out;
+  out["times"] = times;
+  out["omega2"] = omega2;
+  out["modes"] = shapes;
+  out["coordinates"] = labels;
+  out["failures"] = failures;
+  return out;
+}
+
 PYBIND11_MODULE(_core, m) {
   m.doc() = "deploydyn's C++ core; use the package `deploydyn`, not this module";
 
@@ -338,6 +387,7 @@ PYBIND11_MODULE(_core, m) {
              return out.str();
            },
            "The model as a model file with every default explicit (save_model)")
+      .def("modes", &modes_at, py::arg("n_modes"), py::arg("times"))
       .def("run_in_memory", &run_in_memory)
       .def("run_into_folder", &run_into_folder, py::arg("folder"));
 

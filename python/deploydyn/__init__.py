@@ -373,6 +373,23 @@ class Model:
             result.raise_for_status()
         return result
 
+    def modes(self, count=10, at=0.0):
+        """Natural frequencies and modes about the static equilibrium at time(s) `at` (the
+        thermal state at t = 0, then the drivers moved quasi-statically), as `deploydyn modes`
+        computes them. Returns a dict of numpy arrays: "times" (s), "omega2" (rad²/s², times ×
+        count, ascending; < 0: unstable), "frequency" (Hz, NaN where ω² < 0), "modes" (times ×
+        coordinates × count, M-orthonormal), "coordinates" (labels such as "x.B"), "failures"
+        (per time "" or why no modes were found; those rows are NaN)."""
+        count = _count("Model.modes", "count", count)
+        times = [float(t) for t in _numbers("Model.modes", "at", [at] if _is_number(at) else at)]
+        raw = self._core.modes(count, times)
+        omega2 = np.asarray(raw["omega2"])
+        with np.errstate(invalid="ignore"):
+            frequency = np.where(omega2 >= 0, np.sqrt(np.abs(omega2)) / (2 * np.pi), np.nan)
+        return {"times": np.asarray(times), "omega2": omega2, "frequency": frequency,
+                "modes": np.asarray(raw["modes"]), "coordinates": list(raw["coordinates"]),
+                "failures": list(raw["failures"])}
+
     def __repr__(self):
         extra = f", overrides={dict(self._overrides)}" if self._overrides else ""
         return (f"<deploydyn.Model {self.name or '(unnamed)'!r} from {self.source}: "

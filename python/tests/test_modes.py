@@ -1,0 +1,44 @@
+"""Model.modes: natural frequencies from Python, against a closed form and the CLI's table."""
+import math
+
+import numpy as np
+import pytest
+
+import deploydyn
+
+
+def oscillator(mass_kind):
+    """A bar along x from a pin to a node sliding along x, with a 10 kg point mass."""
+    return (deploydyn.ModelBuilder("bar-mass oscillator")
+            .node("A", 0, 0).node("B", 2.0, 0, mass=10.0)
+            .material("steel", E=2e11)
+            .bar("1", "A", "B", area=1e-4, material="steel", mass=3.0)
+            .support("A").support("B", fix=["y"])
+            .analysis(type="static", end=1.0, step=0.5, mass=mass_kind)
+            .build())
+
+
+@pytest.mark.parametrize("mass_kind, share", [("lumped", 0.5), ("consistent", 1.0 / 3.0)])
+def test_bar_mass_oscillator_frequency(mass_kind, share):
+    modes = oscillator(mass_kind).modes(count=1)
+    expected = 2e11 * 1e-4 / 2.0 / (10.0 + share * 3.0)
+    assert modes["omega2"].shape == (1, 1)
+    assert modes["omega2"][0, 0] == pytest.approx(expected, rel=1e-9)
+    assert modes["frequency"][0, 0] == pytest.approx(math.sqrt(expected) / (2 * math.pi), rel=1e-9)
+    # The mode moves x.B only, normalized to φᵀMφ = 1.
+    phi = modes["modes"][0, :, 0]
+    moving = modes["coordinates"].index("x.B")
+    assert abs(phi[moving]) == pytest.approx(1.0 / math.sqrt(10.0 + share * 3.0), rel=1e-9)
+
+
+def test_linkage_modes_at_several_times_and_errors(source_dir):
+    model = deploydyn.load(source_dir / "examples" / "paper" / "parallel.yaml")
+    modes = model.modes(count=3, at=[0.0, 2.5])
+    assert modes["omega2"].shape == (2, 3)
+    assert modes["modes"].shape == (2, 8, 3)
+    assert np.all(np.diff(modes["omega2"], axis=1) >= 0)
+    assert modes["failures"] == ["", ""]
+    with pytest.raises(ValueError, match="at most 3"):
+        model.modes(count=4)
+    with pytest.raises(TypeError, match="count must be an int"):
+        model.modes(count=2.5)
