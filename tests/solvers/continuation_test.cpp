@@ -25,6 +25,8 @@
 #include <cmath>
 
 #include "deploydyn/assembly/linear_system_factory.hpp"
+#include "deploydyn/generators/roof.hpp"
+#include "deploydyn/solvers/static_solver.hpp"
 #include "support/model_builder.hpp"
 
 namespace deploydyn {
@@ -319,6 +321,37 @@ TEST(Continuation, StopFlagEndsThePathBeforeTheNextStep) {
   const ContinuationResult result = trace(assembler, options);
   EXPECT_EQ(result.end, ContinuationEnd::stopped);
   EXPECT_EQ(result.points.size(), 1u);
+}
+
+// A planar roof of 20 units heated by 130 °C (the posts fan out from 5° to about 20°), traced
+// in the ΔT scale with the sparse back end and without the dense stability analysis: it must
+// end on the equilibrium that load stepping finds (StaticSolver tests), with μ rising all the
+// way (no limit point on this stretch).
+TEST(Continuation, HeatedRoofEndsOnTheLoadSteppingEquilibrium) {
+  RoofOptions roof;
+  roof.n_units = 20;
+  roof.delta_t_C = 130.0;
+  const Model model = make_roof(roof);
+  const Assembler assembler(model);
+  ContinuationOptions options;
+  options.parameter = PathParameter::thermal;
+  options.end = 1.0;
+  options.n_eigenvalues = 0;
+  const ContinuationResult result = trace(assembler, options);
+  ASSERT_EQ(result.end, ContinuationEnd::reached_end) << result.message;
+  EXPECT_TRUE(result.events.empty());
+
+  const auto system = make_linear_system(assembler);
+  MotionState state;
+  state.q = assembler.initial_coordinates();
+  state.v = state.a = Eigen::VectorXd::Zero(assembler.n_dofs());
+  state.lambda = Eigen::VectorXd::Zero(assembler.n_equations());
+  const StaticResult stepped =
+      solve_static(assembler, model.analysis, LoadPath::thermal_ramp(0.0), 1024, *system, state);
+  ASSERT_TRUE(stepped.newton.converged) << stepped.newton.failure;
+  // Both solve the same equations to Newton's tolerances (corrections ≤ 1e-12 m).
+  EXPECT_LT((result.points.back().q - state.q).lpNorm<Eigen::Infinity>(), 1e-9);
+  for (const PathPoint& p : result.points) EXPECT_GT(p.parameter_rate, 0.0);
 }
 
 TEST(Continuation, RejectsAnEmptyRange) {
