@@ -165,6 +165,21 @@ void Assembler::internal_force(const Eigen::VectorXd& q, double t, double therma
   });
 }
 
+void Assembler::thermal_force_derivative(const Eigen::VectorXd& q, double t,
+                                         Eigen::VectorXd& f) const {
+  f.setZero(n_dofs());
+  with_dimension(model_.dimension, [&](auto dim) {
+    constexpr int D = decltype(dim)::value;
+    for_each_bar<D>(q, t, 1.0, [&](int b, std::span<const int> d, const auto& s,
+                                   const bar::Section& section) {
+      // The thermal strain of the factor is factor · ε_t: chain rule through ∂f/∂ε_t.
+      const bar::ElementVector<D> fe =
+          thermal_strain(b, t) * bar::internal_force_per_thermal_strain<D>(s, section);
+      for (int i = 0; i < 2 * D; ++i) f[d[i]] += fe[i];
+    });
+  });
+}
+
 void Assembler::external_force(double t, Eigen::VectorXd& f) const {
   f.setZero(n_dofs());
   const int dim = model_.dimension;
@@ -347,14 +362,16 @@ double Assembler::stiffness_scale(const Eigen::VectorXd& q, double t) const {
   return scale > 0.0 ? scale : 1.0;
 }
 
-BarResult Assembler::bar_result(int b, const Eigen::VectorXd& q, double t) const {
+BarResult Assembler::bar_result(int b, const Eigen::VectorXd& q, double t,
+                                double thermal_factor) const {
   BarResult result;
   with_dimension(model_.dimension, [&](auto dim) {
     constexpr int D = decltype(dim)::value;
     const std::span<const int> d(bars_[b].dofs.data(), 2 * D);
     const bar::State<D> s = bar::evaluate<D>(
         node_position<D>(q, d.first(D)), node_position<D>(q, d.last(D)),
-        {bars_[b].axial_stiffness_N, bars_[b].reference_length_m}, thermal_strain(b, t));
+        {bars_[b].axial_stiffness_N, bars_[b].reference_length_m},
+        thermal_factor * thermal_strain(b, t));
     result = {s.strain, s.mechanical_strain, s.axial_force_N, s.length_m};
   });
   return result;

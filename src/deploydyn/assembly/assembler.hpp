@@ -48,6 +48,9 @@ class Assembler {
   // the initial equilibrium is found by load stepping).
   void internal_force(const Eigen::VectorXd& q, double t, double thermal_factor,
                       Eigen::VectorXd& f) const;
+  // ∂f_int/∂(thermal_factor) at q: f_int is linear in the factor, so this is the same at every
+  // factor (theory.md, "Path following and stability").
+  void thermal_force_derivative(const Eigen::VectorXd& q, double t, Eigen::VectorXd& f) const;
   void external_force(double t, Eigen::VectorXd& f) const;
   void mass_times(const Eigen::VectorXd& a, Eigen::VectorXd& out) const;  // M a
 
@@ -78,7 +81,8 @@ class Assembler {
   double stiffness_scale(const Eigen::VectorXd& q, double t) const;
   double mass_scale() const { return mass_scale_; }
 
-  BarResult bar_result(int bar, const Eigen::VectorXd& q, double t) const;
+  // With every ΔT scaled by `thermal_factor`, as in internal_force.
+  BarResult bar_result(int bar, const Eigen::VectorXd& q, double t, double thermal_factor = 1.0) const;
   double strain_energy(const Eigen::VectorXd& q, double t) const;
   // Driver effort: torque (N·m) for bar_angle, force (N) for coordinate drivers.
   double driver_effort(int driver, const Eigen::VectorXd& q, double t,

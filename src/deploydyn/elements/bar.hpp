@@ -73,6 +73,16 @@ ElementVector<D> internal_force(const State<D>& s, const Section& section) {
   return f;
 }
 
+// ∂f/∂ε_t = −(EA/L0) [−d; d]: the internal force per unit thermal strain at a fixed
+// configuration (ε_m = ε − ε_t). Path following in ΔT needs it (theory.md, "Path following").
+template <int D>
+ElementVector<D> internal_force_per_thermal_strain(const State<D>& s, const Section& section) {
+  ElementVector<D> f;
+  const Vector<D> g = (-section.axial_stiffness_N / section.reference_length_m) * s.d;
+  f << -g, g;
+  return f;
+}
+
 template <int D>
 ElementMatrix<D> material_tangent(const State<D>& s, const Section& section) {
   const double l0 = section.reference_length_m;

@@ -1,0 +1,521 @@
+#include "deploydyn/solvers/continuation.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <optional>
+#include <stdexcept>
+
+#include "deploydyn/solvers/constrained_stiffness.hpp"
+#include "deploydyn/solvers/newton.hpp"
+
+namespace deploydyn {
+namespace {
+
+// Same round-off floor as NewtonSolver (solvers/newton.hpp): forces left by moving the
+// coordinates by a few units in their last place through the stiffest spring.
+constexpr double kRoundOffShare = 16.0 * std::numeric_limits<double>::epsilon();
+// An eigenvalue of Zᵀ K_T Z within this share of the largest stiffness diagonal counts as zero
+// when negative ones are counted: round-off of K is ~1e-16 of it, and genuine near-critical
+// values of the tests are ≥ 1e-8 of it one step away from a crossing.
+constexpr double kZeroEigenvalueShare = 1e-12;
+// Regula falsi steps for one event; each halves the bracket at least every other step, so 100
+// covers a bracket shrinking from Δs ≤ 1 to 1e-15.
+constexpr int kMaxLocationIterations = 100;
+
+// Unit tangent of the path at a point (d/ds, s dimensionless).
+struct Tangent {
+  Eigen::VectorXd q_rate;       // dq/ds (m)
+  Eigen::VectorXd lambda_rate;  // dλ/ds
+  double mu_rate = 0.0;         // dμ/ds
+};
+
+struct CorrectorResult {
+  bool converged = false;
+  int iterations = 0;
+  std::string failure;
+};
+
+class PathTracer {
+ public:
+  PathTracer(const Assembler& assembler, const ContinuationOptions& options, LinearSystem& system)
+      : assembler_(assembler),
+        options_(options),
+        system_(system),
+        equilibrium_(assembler, options.parameter, options.time_s),
+        range_(std::abs(options.end - options.start)),
+        direction_(options.end > options.start ? 1.0 : -1.0),
+        reference_q_(assembler.initial_coordinates()),
+        with_stability_(options.n_eigenvalues > 0 &&
+                        assembler.n_dofs() <= options.max_stability_dofs) {
+    length_ = options.length_scale_m > 0.0 ? options.length_scale_m : longest_bar_m();
+    scale_ = assembler.stiffness_scale(reference_q_, options.time_s);
+  }
+
+  ContinuationResult run(const Eigen::VectorXd& q0, const Eigen::VectorXd& lambda0);
+
+ private:
+  double longest_bar_m() const {
+    double longest = 0.0;
+    for (const BarElement& bar : assembler_.model().bars) longest = std::max(longest, bar.reference_length_m);
+    return longest > 0.0 ? longest : 1.0;
+  }
+  // Scalar product of two path directions in the arc-length metric.
+  double dot(const Eigen::VectorXd& q_a, double mu_a, const Eigen::VectorXd& q_b, double mu_b) const {
+    return q_a.dot(q_b) / (length_ * length_) + mu_a * mu_b / (range_ * range_);
+  }
+  bool converged(const NewtonResult& residuals, double force_scale, int iterations,
+                 double last_correction_m, const Eigen::VectorXd& q) const;
+  CorrectorResult correct(const Tangent& normal, const Eigen::VectorXd& q_p, double mu_p,
+                          PathPoint& point);
+  std::optional<Tangent> tangent(const PathPoint& point, const Tangent* previous);
+  void analyse_stability(PathPoint& point, ConstraintNullSpace* null_space = nullptr,
+                         ConstrainedSpectrum* spectrum = nullptr);
+  // A point reached from `from` along `t` by predictor length σ: corrected, with its tangent
+  // (oriented along t) and stability. Empty when the corrector fails.
+  struct Trial {
+    PathPoint point;
+    Tangent tangent;
+  };
+  std::optional<Trial> step_from(const PathPoint& from, const Tangent& t, double sigma);
+  // Locates an event between `from` (σ = 0) and `to` (σ = Δs) and appends it (with its point)
+  // to the result.
+  void locate(const PathPoint& from, const Tangent& t_from, const Trial& to, double ds,
+              PathEventKind kind);
+  void record_event(PathEventKind kind, PathPoint point, const Tangent& t, double error);
+  bool land_on_end(const PathPoint& before, const PathPoint& after);
+
+  const Assembler& assembler_;
+  const ContinuationOptions& options_;
+  LinearSystem& system_;
+  ParametrizedEquilibrium equilibrium_;
+  double range_, direction_;
+  Eigen::VectorXd reference_q_;
+  bool with_stability_;
+  double length_ = 1.0, scale_ = 1.0;
+  ContinuationResult result_;
+  Eigen::VectorXd r_, phi_, dr_, rhs_a_, rhs_b_;
+};
+
+bool PathTracer::converged(const NewtonResult& residuals, double force_scale, int iterations,
+                           double last_correction_m, const Eigen::VectorXd& q) const {
+  const NewtonOptions& tol = options_.newton;
+  const double floor =
+      iterations == 0 ? 0.0 : scale_ * kRoundOffShare * std::max(q.lpNorm<Eigen::Infinity>(), 1.0);
+  const bool balanced = residuals.force_residual_N <= tol.force_tolerance * force_scale + floor ||
+                        last_correction_m <= tol.displacement_tolerance_m;
+  return residuals.constraint_residual <= tol.constraint_tolerance_m && balanced;
+}
+
+CorrectorResult PathTracer::correct(const Tangent& normal, const Eigen::VectorXd& q_p, double mu_p,
+                                    PathPoint& point) {
+  CorrectorResult out;
+  const auto n = assembler_.n_dofs();
+  const auto m = assembler_.n_equations();
+  const double l2 = length_ * length_, rho2 = range_ * range_;
+  double last_correction = std::numeric_limits<double>::infinity();
+  for (;; ++out.iterations) {
+    NewtonResult residuals;
+    const double force_scale = equilibrium_.residual(point.q, point.lambda, point.parameter, r_, phi_);
+    residuals.force_residual_N = r_.lpNorm<Eigen::Infinity>();
+    residuals.constraint_residual = m > 0 ? phi_.lpNorm<Eigen::Infinity>() : 0.0;
+    if (!std::isfinite(residuals.force_residual_N) || !std::isfinite(residuals.constraint_residual)) {
+      out.failure = "the residual is NaN or Inf";
+      return out;
+    }
+    // N is linear in (q, μ): after the first correction it holds to round-off, so the test
+    // is the equilibrium's alone.
+    if (out.iterations > 0 && converged(residuals, force_scale, out.iterations, last_correction, point.q)) {
+      out.converged = true;
+      return out;
+    }
+    if (out.iterations >= options_.max_corrector_iterations) {
+      out.failure = fmt::format("no convergence in {} corrector iterations", options_.max_corrector_iterations);
+      return out;
+    }
+    equilibrium_.matrix(point.q, point.lambda, point.parameter, scale_, system_);
+    const FactorizationStatus status = system_.factorize();
+    if (!status.ok) {
+      out.failure = status.message;
+      return out;
+    }
+    rhs_a_.resize(n + m);
+    rhs_a_.head(n) = -r_;
+    rhs_a_.tail(m) = -scale_ * phi_;
+    system_.solve(rhs_a_);
+    equilibrium_.parameter_derivative(point.q, point.parameter, dr_);
+    rhs_b_.resize(n + m);
+    rhs_b_.head(n) = -dr_;
+    rhs_b_.tail(m).setZero();
+    system_.solve(rhs_b_);
+    const double constraint_value =
+        normal.q_rate.dot(point.q - q_p) / l2 + normal.mu_rate * (point.parameter - mu_p) / rho2;
+    const double denominator = normal.q_rate.dot(rhs_b_.head(n)) / l2 + normal.mu_rate / rho2;
+    if (!std::isfinite(denominator) || denominator == 0.0) {
+      out.failure = "the bordered system is singular (the path is tangent to the arc-length plane)";
+      return out;
+    }
+    const double d_mu = -(constraint_value + normal.q_rate.dot(rhs_a_.head(n)) / l2) / denominator;
+    rhs_a_ += d_mu * rhs_b_;
+    point.q += rhs_a_.head(n);
+    point.lambda += scale_ * rhs_a_.tail(m);
+    point.parameter += d_mu;
+    last_correction = rhs_a_.head(n).lpNorm<Eigen::Infinity>();
+  }
+}
+
+std::optional<Tangent> PathTracer::tangent(const PathPoint& point, const Tangent* previous) {
+  const auto n = assembler_.n_dofs();
+  const auto m = assembler_.n_equations();
+  equilibrium_.matrix(point.q, point.lambda, point.parameter, scale_, system_);
+  if (!system_.factorize().ok) return std::nullopt;
+  equilibrium_.parameter_derivative(point.q, point.parameter, dr_);
+  rhs_b_.resize(n + m);
+  rhs_b_.head(n) = -dr_;
+  rhs_b_.tail(m).setZero();
+  system_.solve(rhs_b_);
+  Tangent t;
+  t.mu_rate = 1.0 / std::sqrt(rhs_b_.head(n).squaredNorm() / (length_ * length_) + 1.0 / (range_ * range_));
+  const double orientation =
+      previous == nullptr ? direction_
+                          : dot(rhs_b_.head(n), 1.0, previous->q_rate, previous->mu_rate);
+  if (orientation < 0.0) t.mu_rate = -t.mu_rate;
+  t.q_rate = t.mu_rate * rhs_b_.head(n);
+  t.lambda_rate = (t.mu_rate * scale_) * rhs_b_.tail(m);
+  return t;
+}
+
+void PathTracer::analyse_stability(PathPoint& point, ConstraintNullSpace* null_space_out,
+                                   ConstrainedSpectrum* spectrum_out) {
+  if (!with_stability_) return;
+  const int n = assembler_.n_dofs();
+  const int m = assembler_.n_equations();
+  equilibrium_.matrix(point.q, point.lambda, point.parameter, 1.0, system_);
+  const Eigen::MatrixXd dense = system_.to_dense();
+  const ConstraintNullSpace null_space = constraint_null_space(dense.bottomLeftCorner(m, n));
+  const Eigen::MatrixXd stiffness = dense.topLeftCorner(n, n);
+  const double zero = kZeroEigenvalueShare * std::max(stiffness.diagonal().cwiseAbs().maxCoeff(), 1.0);
+  ConstrainedSpectrum spectrum = constrained_spectrum(stiffness, null_space.basis, zero);
+  point.constraint_rank = null_space.rank;
+  point.n_negative = spectrum.n_negative;
+  point.lowest_eigenvalues =
+      spectrum.eigenvalues.head(std::min<Eigen::Index>(options_.n_eigenvalues, spectrum.eigenvalues.size()));
+  if (null_space_out != nullptr) *null_space_out = null_space;
+  if (spectrum_out != nullptr) *spectrum_out = std::move(spectrum);
+}
+
+std::optional<PathTracer::Trial> PathTracer::step_from(const PathPoint& from, const Tangent& t,
+                                                      double sigma) {
+  Trial trial;
+  PathPoint& p = trial.point;
+  p.q = from.q + sigma * t.q_rate;
+  p.lambda = from.lambda + sigma * t.lambda_rate;
+  p.parameter = from.parameter + sigma * t.mu_rate;
+  const Eigen::VectorXd q_p = p.q;
+  const CorrectorResult corrector = correct(t, q_p, p.parameter, p);
+  result_.total_iterations += corrector.iterations;
+  if (!corrector.converged) return std::nullopt;
+  p.corrector_iterations = corrector.iterations;
+  p.step = sigma;
+  std::optional<Tangent> next = tangent(p, &t);
+  if (!next) return std::nullopt;
+  trial.tangent = std::move(*next);
+  p.parameter_rate = trial.tangent.mu_rate;
+  p.displacement_norm_m = (p.q - reference_q_).norm();
+  analyse_stability(p);
+  return trial;
+}
+
+void PathTracer::record_event(PathEventKind kind, PathPoint point, const Tangent& t, double error) {
+  PathEvent event;
+  event.kind = kind;
+  event.parameter = point.parameter;
+  event.parameter_error = error;
+  ConstraintNullSpace null_space;
+  ConstrainedSpectrum spectrum;
+  analyse_stability(point, &null_space, &spectrum);
+  if (spectrum.eigenvalues.size() > 0) {
+    // The critical mode: the eigenvalue nearest zero (at a limit point and at a simple
+    // bifurcation it is the one crossing).
+    Eigen::Index critical = 0;
+    spectrum.eigenvalues.cwiseAbs().minCoeff(&critical);
+    event.eigenvalue_N_m = spectrum.eigenvalues[critical];
+    event.mode = spectrum.modes.col(critical);
+  } else if (kind == PathEventKind::limit_point) {
+    // Without the eigen-solve: at a limit point the null vector of K_T is the path's dq/ds.
+    event.mode = t.q_rate.normalized();
+  }
+  event.dependent_rows = null_space.dependent_rows;
+  const double thermal_factor = equilibrium_.thermal_factor(point.parameter);
+  for (int b = 0; b < assembler_.model().n_bars(); ++b) {
+    event.axial_forces_N.push_back(
+        assembler_.bar_result(b, point.q, options_.time_s, thermal_factor).axial_force_N);
+  }
+  std::string where;
+  if (event.mode.size() > 0) {
+    Eigen::Index largest = 0;
+    event.mode.cwiseAbs().maxCoeff(&largest);
+    where = fmt::format("; critical mode mostly {}", assembler_.dof_map().label(static_cast<int>(largest)));
+  }
+  const char* what = kind == PathEventKind::limit_point    ? "limit point (the path turns back in μ)"
+                     : kind == PathEventKind::bifurcation ? "bifurcation (a stability eigenvalue crosses zero while μ goes on)"
+                                                          : "singular constraint Jacobian (dead centre or redundant constraints, not a structural instability)";
+  event.description = fmt::format("{} at {} factor μ = {:.9g} (± {:.2g}){}", what,
+                                  to_string(options_.parameter), point.parameter, error, where);
+  point.event = static_cast<int>(result_.events.size());
+  event.point = static_cast<int>(result_.points.size());
+  result_.points.push_back(std::move(point));
+  result_.events.push_back(std::move(event));
+}
+
+void PathTracer::locate(const PathPoint& from, const Tangent& t_from, const Trial& to, double ds,
+                        PathEventKind kind) {
+  const double tolerance = options_.location_tolerance * range_;
+  // The bracket's ends: the function whose sign change is the event, dμ/dσ and the point.
+  struct End {
+    double sigma, value, mu_slope;
+    const PathPoint* point;
+    const Tangent* tangent;
+  };
+  const int crossing = kind == PathEventKind::bifurcation ? std::min(from.n_negative, to.point.n_negative) : 0;
+  const auto function = [&](const PathPoint& p, const Tangent& t) {
+    if (kind == PathEventKind::limit_point) return t.mu_rate;
+    return crossing < p.lowest_eigenvalues.size() ? p.lowest_eigenvalues[crossing]
+                                                  : std::numeric_limits<double>::quiet_NaN();
+  };
+  const auto mu_slope = [&](const Tangent& t) {
+    return t.mu_rate / dot(t.q_rate, t.mu_rate, t_from.q_rate, t_from.mu_rate);
+  };
+  std::optional<Trial> lo_trial, hi_trial;
+  End lo{0.0, function(from, t_from), t_from.mu_rate, &from, &t_from};
+  End hi{ds, function(to.point, to.tangent), mu_slope(to.tangent), &to.point, &to.tangent};
+  const auto bound = [&] {
+    return kind == PathEventKind::limit_point
+               ? std::max(std::abs(lo.mu_slope), std::abs(hi.mu_slope)) * (hi.sigma - lo.sigma)
+               : std::abs(hi.point->parameter - lo.point->parameter);
+  };
+  double lo_weight = 1.0, hi_weight = 1.0;  // Illinois: halve the end that stays
+  int stays = 0;                           // −1: lo stayed last time, +1: hi stayed
+  for (int iteration = 0; iteration < kMaxLocationIterations && bound() > tolerance; ++iteration) {
+    if (!std::isfinite(lo.value) || !std::isfinite(hi.value)) break;
+    const double f_lo = lo_weight * lo.value, f_hi = hi_weight * hi.value;
+    double sigma = (lo.sigma * f_hi - hi.sigma * f_lo) / (f_hi - f_lo);
+    const double width = hi.sigma - lo.sigma;
+    if (!(sigma > lo.sigma + 1e-3 * width && sigma < hi.sigma - 1e-3 * width)) {
+      sigma = lo.sigma + 0.5 * width;
+    }
+    std::optional<Trial> trial = step_from(from, t_from, sigma);
+    if (!trial) {
+      sigma = lo.sigma + 0.5 * width;
+      trial = step_from(from, t_from, sigma);
+      if (!trial) break;
+    }
+    const double value = function(trial->point, trial->tangent);
+    const bool on_lo_side = std::signbit(value) == std::signbit(lo.value);
+    std::optional<Trial>& slot = on_lo_side ? lo_trial : hi_trial;
+    slot = std::move(trial);
+    End moved{sigma, value, mu_slope(slot->tangent), &slot->point, &slot->tangent};
+    if (on_lo_side) {
+      lo = moved;
+      lo_weight = 1.0;
+      hi_weight = stays == 1 ? 0.5 * hi_weight : 1.0;
+      stays = 1;
+    } else {
+      hi = moved;
+      hi_weight = 1.0;
+      lo_weight = stays == -1 ? 0.5 * lo_weight : 1.0;
+      stays = -1;
+    }
+  }
+  const End& best = std::abs(lo.value) <= std::abs(hi.value) ? lo : hi;
+  PathPoint point = *best.point;
+  point.event = -1;
+  record_event(kind, std::move(point), *best.tangent, bound());
+}
+
+bool PathTracer::land_on_end(const PathPoint& before, const PathPoint& after) {
+  const double share = (options_.end - before.parameter) / (after.parameter - before.parameter);
+  PathPoint p;
+  p.q = before.q + share * (after.q - before.q);
+  p.lambda = before.lambda + share * (after.lambda - before.lambda);
+  p.parameter = options_.end;
+  FixedParameterEquations equations(equilibrium_, options_.end, scale_);
+  NewtonSolver newton(options_.newton);
+  const NewtonResult solved = newton.solve(equations, system_, p.q, p.lambda);
+  result_.total_iterations += solved.iterations;
+  if (!solved.converged) return false;
+  p.corrector_iterations = solved.iterations;
+  p.parameter_rate = after.parameter_rate;
+  p.displacement_norm_m = (p.q - reference_q_).norm();
+  analyse_stability(p);
+  result_.points.push_back(std::move(p));
+  return true;
+}
+
+ContinuationResult PathTracer::run(const Eigen::VectorXd& q0, const Eigen::VectorXd& lambda0) {
+  result_.length_scale_m = length_;
+  PathPoint current;
+  current.q = q0;
+  current.lambda = lambda0;
+  current.parameter = options_.start;
+
+  if (with_stability_) {
+    // Redundant constraints make J singular, so they are named before Newton fails on them.
+    analyse_stability(current);
+    if (current.constraint_rank >= 0 && current.constraint_rank < assembler_.n_equations()) {
+      result_.end = ContinuationEnd::singular_constraints;
+      record_event(PathEventKind::singular_constraints, current, Tangent{}, 0.0);
+      std::string rows;
+      for (const int row : result_.events.back().dependent_rows) {
+        rows += (rows.empty() ? "" : ", ") + assembler_.describe_equation(row);
+      }
+      result_.message = "the constraint Jacobian is singular at the start (rank " +
+                        std::to_string(current.constraint_rank) + " of " +
+                        std::to_string(assembler_.n_equations()) + "); dependent: " + rows;
+      return result_;
+    }
+  }
+  {
+    FixedParameterEquations equations(equilibrium_, options_.start, scale_);
+    NewtonSolver newton(options_.newton);
+    const NewtonResult solved = newton.solve(equations, system_, current.q, current.lambda);
+    result_.total_iterations += solved.iterations;
+    if (!solved.converged) {
+      result_.end = ContinuationEnd::start_failed;
+      result_.message = fmt::format("no equilibrium at the start, μ = {}: {}", options_.start, solved.failure);
+      return result_;
+    }
+  }
+  std::optional<Tangent> t = tangent(current, nullptr);
+  if (!t) {
+    result_.end = ContinuationEnd::start_failed;
+    result_.message = "the static matrix is singular at the start: no tangent to follow";
+    return result_;
+  }
+  current.parameter_rate = t->mu_rate;
+  current.displacement_norm_m = (current.q - reference_q_).norm();
+  analyse_stability(current);
+  result_.points.push_back(current);
+
+  const double cos_max_turn = std::cos(options_.max_turn_rad);
+  double ds = options_.initial_step;
+  for (int step = 0;; ++step) {
+    if (step >= options_.max_steps) {
+      result_.end = ContinuationEnd::max_steps;
+      result_.message = fmt::format("stopped after {} steps at μ = {:.6g}", step, current.parameter);
+      return result_;
+    }
+    if (options_.stop != nullptr && options_.stop->load()) {
+      result_.end = ContinuationEnd::stopped;
+      result_.message = fmt::format("stopped on request at μ = {:.6g}", current.parameter);
+      return result_;
+    }
+    std::optional<Trial> trial = step_from(current, *t, ds);
+    const bool turned_too_much =
+        trial && ds > options_.min_step &&
+        dot(trial->tangent.q_rate, trial->tangent.mu_rate, t->q_rate, t->mu_rate) < cos_max_turn;
+    if (!trial || turned_too_much) {
+      ++result_.rejected_steps;
+      ds *= options_.step_cut;
+      if (ds < options_.min_step) {
+        result_.end = ContinuationEnd::step_too_small;
+        result_.message = fmt::format(
+            "the corrector fails at every step down to {:.2g} beyond μ = {:.6g}", options_.min_step,
+            current.parameter);
+        return result_;
+      }
+      continue;
+    }
+    Trial& next = *trial;
+    // Events between current and next, located before the next point joins the path.
+    const bool turned = std::signbit(next.tangent.mu_rate) != std::signbit(t->mu_rate);
+    if (turned) {
+      locate(current, *t, next, ds, PathEventKind::limit_point);
+    } else if (current.n_negative >= 0 && next.point.n_negative >= 0 &&
+               current.n_negative != next.point.n_negative) {
+      locate(current, *t, next, ds, PathEventKind::bifurcation);
+    }
+    const bool constraints_degenerate = current.constraint_rank >= 0 &&
+                                        next.point.constraint_rank >= 0 &&
+                                        next.point.constraint_rank < current.constraint_rank;
+    const bool crosses_end = direction_ * (next.point.parameter - options_.end) >= 0.0 &&
+                             direction_ * (current.parameter - options_.end) < 0.0;
+    if (crosses_end) {
+      if (land_on_end(current, next.point)) {
+        result_.end = ContinuationEnd::reached_end;
+        result_.message = fmt::format("reached μ = {:.6g} in {} steps", options_.end, step + 1);
+        return result_;
+      }
+      ++result_.rejected_steps;
+      ds *= options_.step_cut;
+      continue;
+    }
+    if (next.point.corrector_iterations <= options_.easy_iterations) {
+      ds = std::min(ds * options_.step_growth, options_.max_step);
+    }
+    current = next.point;
+    *t = next.tangent;
+    if (constraints_degenerate) {
+      record_event(PathEventKind::singular_constraints, std::move(next.point), next.tangent, 0.0);
+    } else {
+      result_.points.push_back(std::move(next.point));
+    }
+  }
+}
+
+}  // namespace
+
+void validate(const ContinuationOptions& o) {
+  const auto fail = [](const std::string& what) {
+    throw std::invalid_argument("continuation: " + what);
+  };
+  if (!std::isfinite(o.start) || !std::isfinite(o.end) || o.start == o.end) {
+    fail(fmt::format("end ({}) must differ from start ({}), both finite", o.end, o.start));
+  }
+  if (!(o.min_step > 0.0 && o.min_step <= o.initial_step && o.initial_step <= o.max_step)) {
+    fail(fmt::format("steps must satisfy 0 < min_step ({}) ≤ initial_step ({}) ≤ max_step ({})",
+                     o.min_step, o.initial_step, o.max_step));
+  }
+  if (o.max_steps < 1) fail(fmt::format("max_steps ({}) must be at least 1", o.max_steps));
+  if (o.max_corrector_iterations < 1) {
+    fail(fmt::format("max_corrector_iterations ({}) must be at least 1", o.max_corrector_iterations));
+  }
+  if (!(o.step_growth >= 1.0)) fail(fmt::format("step_growth ({}) must be ≥ 1", o.step_growth));
+  if (!(o.step_cut > 0.0 && o.step_cut < 1.0)) fail(fmt::format("step_cut ({}) must be in (0, 1)", o.step_cut));
+  if (!(o.max_turn_rad > 0.0 && o.max_turn_rad < 1.5)) {
+    fail(fmt::format("max_turn_rad ({}) must be in (0, 1.5)", o.max_turn_rad));
+  }
+  if (o.length_scale_m < 0.0) fail(fmt::format("length_scale_m ({}) must be ≥ 0", o.length_scale_m));
+  if (o.n_eigenvalues < 0) fail(fmt::format("n_eigenvalues ({}) must be ≥ 0", o.n_eigenvalues));
+  if (!(o.location_tolerance > 0.0)) {
+    fail(fmt::format("location_tolerance ({}) must be > 0", o.location_tolerance));
+  }
+}
+
+const char* to_string(PathEventKind kind) {
+  constexpr const char* kNames[] = {"limit_point", "bifurcation", "singular_constraints"};
+  return kNames[static_cast<int>(kind)];
+}
+
+const char* to_string(ContinuationEnd end) {
+  constexpr const char* kNames[] = {"reached_end",    "max_steps",    "stopped",
+                                    "step_too_small", "start_failed", "singular_constraints"};
+  return kNames[static_cast<int>(end)];
+}
+
+ContinuationResult trace_path(const Assembler& assembler, const ContinuationOptions& options,
+                              LinearSystem& system, const Eigen::VectorXd& q0,
+                              const Eigen::VectorXd& lambda0) {
+  validate(options);
+  if (q0.size() != assembler.n_dofs() || lambda0.size() != assembler.n_equations()) {
+    throw std::invalid_argument(fmt::format(
+        "trace_path: the start state has {} coordinates and {} multipliers, the model {} and {}",
+        q0.size(), lambda0.size(), assembler.n_dofs(), assembler.n_equations()));
+  }
+  PathTracer tracer(assembler, options, system);
+  return tracer.run(q0, lambda0);
+}
+
+}  // namespace deploydyn

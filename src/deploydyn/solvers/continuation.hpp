@@ -1,0 +1,138 @@
+#pragma once
+// Path following (continuation) of the static equilibrium in one parameter μ, through limit
+// points, with the stability of every converged point (theory.md, "Path following and
+// stability").
+//
+// Equations (solvers/parametrized_equilibrium.hpp), unknowns x = (q, λ) and μ:
+//   G(x, μ) = [ f_int(q, μ) − f_ext(μ) + Bᵀλ ;  Φ(q) ] = 0
+// Arc length s in dimensionless coordinates u = q/ℓ, ν = μ/ρ, with ℓ a length of the model
+// (the longest bar unless given) and ρ = |μ_end − μ_start|, so that moving the structure by ℓ
+// weighs as much as crossing the requested range:
+//   ds² = ‖dq‖²/ℓ² + dμ²/ρ²          (the multipliers follow, they are not measured)
+// Pseudo-arclength predictor–corrector (Keller 1977, "Numerical solution of bifurcation and
+// nonlinear eigenvalue problems"; the same hyperplane constraint as Riks 1979, Int. J. Solids
+// Struct. 15, and Crisfield 1981, Comput. Struct. 13, in its linearised form):
+//   predictor  (q, λ, μ)_p = (q, λ, μ)_k + Δs (q̇, λ̇, μ̇)_k       ( ˙ = d/ds, unit tangent)
+//   corrector  Newton on G = 0 and N = q̇_kᵀ(q − q_p)/ℓ² + μ̇_k (μ − μ_p)/ρ² = 0:
+//     [ K + H(λ)   s Bᵀ   ∂r/∂μ ] [Δq ]     [  r  ]
+//     [ s B         0      0    ] [Δλ̂] = − [ s Φ ]          λ = s λ̂ as in Newton
+//     [ q̇ᵀ/ℓ²       0    μ̇/ρ²  ] [Δμ ]     [  N  ]
+// The bordered system is solved by block elimination (two solves with one factorization of the
+// model's own matrix J = [K + H, s Bᵀ; s B, 0]): J a = −[r; sΦ], J b = −[∂r/∂μ; 0], then
+//   Δμ = −(N + q̇ᵀ a_q/ℓ²) / (q̇ᵀ b_q/ℓ² + μ̇/ρ²),   (Δq, Δλ̂) = a + Δμ b.
+// Chosen because J goes through the existing LinearSystem with its fixed sparsity pattern, so
+// KLU, UMFPACK and dense all work unchanged; a bordered row and column would be dense and
+// break the assembler's pattern. Its known weakness, J singular exactly at a limit point
+// (Govaerts 2000, "Numerical methods for bifurcations of dynamical equilibria", §3.6), does
+// not bite: converged points never land exactly on one, and a factorization reported singular
+// cuts the step like any other failure.
+// Tangent: J b = −[∂r/∂μ; 0] gives dq/dμ = b_q; q̇ = μ̇ b_q with μ̇ = ±1/√(‖b_q‖²/ℓ² + 1/ρ²),
+// the sign keeping q̇ᵀq̇_prev/ℓ² + μ̇ μ̇_prev/ρ² > 0 (and μ̇ towards μ_end at the start).
+//
+// Step size: grows by `step_growth` after a corrector that needed at most `easy_iterations`,
+// is cut by `step_cut` on a corrector failure or when the tangent turns by more than
+// `max_turn_rad` in one step (which would risk jumping to another branch); the run stops
+// below `min_step`. It ends when μ crosses μ_end (the last point solved at μ = μ_end exactly),
+// after `max_steps`, or when *stop becomes true (polled before every step).
+//
+// Stability (solvers/constrained_stiffness.hpp), at every point of models with at most
+// `max_stability_dofs` coordinates: the eigenvalues of Zᵀ(K + H(λ))Z. Events between two
+// points, each located by the Illinois variant of regula falsi on the predictor length σ from
+// the earlier point (same tangent, same corrector):
+//   limit point   μ̇ changes sign;        |μ − μ*| ≤ max|dμ/dσ| · (σ_hi − σ_lo) at the bracket
+//   bifurcation   the number of negative eigenvalues changes while μ̇ keeps its sign;
+//                 |μ − μ*| ≤ |μ_hi − μ_lo|
+//   singular constraints   the rank of B drops (a dead centre, redundant constraints):
+//                 not a structural instability, reported at the point, not located.
+// Each located event is a point of the path too, with its kind, critical eigenvalue and mode
+// (the eigenvector through zero, mapped back to q) and the member forces there.
+
+#include <atomic>
+#include <string>
+#include <vector>
+
+#include "deploydyn/assembly/assembler.hpp"
+#include "deploydyn/solvers/parametrized_equilibrium.hpp"
+
+namespace deploydyn {
+
+struct ContinuationOptions {
+  PathParameter parameter = PathParameter::load;
+  double time_s = 0.0;         // at which ΔT(t), load factors and drivers are read
+  double start = 0.0;          // μ of the first point
+  double end = 1.0;            // μ at which the path ends; ≠ start
+  double initial_step = 0.02;  // Δs, dimensionless (see above)
+  double min_step = 1e-7;
+  double max_step = 0.05;
+  int max_steps = 2000;
+  int max_corrector_iterations = 10;
+  int easy_iterations = 4;
+  double step_growth = 1.5;
+  double step_cut = 0.5;
+  double max_turn_rad = 0.5;    // ≈ 29° of tangent turn per step
+  double length_scale_m = 0.0;  // ℓ; 0: the longest bar's reference length
+  int n_eigenvalues = 3;        // lowest ones reported per point; 0: no stability analysis
+  int max_stability_dofs = 2000;  // dense eigen-solve above this is not attempted
+  double location_tolerance = 1e-7;  // of an event's μ, relative to |end − start|
+  NewtonOptions newton;  // tolerances (also of the corrector) and the start/end solves
+  const std::atomic<bool>* stop = nullptr;  // polled before every step: Ctrl-C
+};
+
+// Throws std::invalid_argument naming the option and what is allowed.
+void validate(const ContinuationOptions& options);
+
+enum class PathEventKind { limit_point, bifurcation, singular_constraints };
+const char* to_string(PathEventKind kind);  // "limit_point", …
+
+struct PathEvent {
+  PathEventKind kind = PathEventKind::limit_point;
+  double parameter = 0.0;        // μ at the located point
+  double parameter_error = 0.0;  // bound on |μ − μ*| (0 for singular constraints: not located)
+  int point = -1;                // the located point in ContinuationResult::points
+  double eigenvalue_N_m = 0.0;   // the critical eigenvalue of Zᵀ K_T Z there (N/m)
+  Eigen::VectorXd mode;          // critical mode in q, unit length (empty: none computed)
+  std::vector<double> axial_forces_N;  // true axial force of every bar there, tension positive
+  std::vector<int> dependent_rows;     // singular constraints: the redundant constraint rows
+  std::string description;             // one sentence for reports
+};
+
+struct PathPoint {
+  double parameter = 0.0;            // μ
+  Eigen::VectorXd q, lambda;
+  double displacement_norm_m = 0.0;  // ‖q − q_model‖₂ from the model's initial coordinates
+  double parameter_rate = 0.0;       // dμ/ds (sign: the direction of travel)
+  Eigen::VectorXd lowest_eigenvalues;  // of Zᵀ K_T Z, ascending, N/m (empty: not computed)
+  int n_negative = -1;               // negative eigenvalues (-1: not computed)
+  int constraint_rank = -1;          // rank of B (-1: not computed)
+  int event = -1;                    // index into ContinuationResult::events, -1: none
+  int corrector_iterations = 0;
+  double step = 0.0;                 // Δs that reached it
+};
+
+enum class ContinuationEnd {
+  reached_end,           // μ = μ_end
+  max_steps,             // options.max_steps taken
+  stopped,               // *options.stop
+  step_too_small,        // the corrector failed down to min_step
+  start_failed,          // no equilibrium at μ_start from the given state
+  singular_constraints,  // B has dependent rows at the start
+};
+const char* to_string(ContinuationEnd end);
+
+struct ContinuationResult {
+  std::vector<PathPoint> points;
+  std::vector<PathEvent> events;
+  ContinuationEnd end = ContinuationEnd::start_failed;
+  std::string message;  // how it ended, in words
+  int total_iterations = 0;  // corrector and Newton solves
+  int rejected_steps = 0;
+  double length_scale_m = 0.0;  // ℓ used
+};
+
+// Traces the path from (q0, λ0), first brought to equilibrium at μ = options.start.
+// `system` must have been prepared for `assembler` (assembly/linear_system_factory.hpp).
+ContinuationResult trace_path(const Assembler& assembler, const ContinuationOptions& options,
+                              LinearSystem& system, const Eigen::VectorXd& q0,
+                              const Eigen::VectorXd& lambda0);
+
+}  // namespace deploydyn

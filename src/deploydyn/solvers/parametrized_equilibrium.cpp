@@ -1,0 +1,41 @@
+#include "deploydyn/solvers/parametrized_equilibrium.hpp"
+
+#include <algorithm>
+
+namespace deploydyn {
+
+ParametrizedEquilibrium::ParametrizedEquilibrium(const Assembler& assembler,
+                                                 PathParameter parameter, double time_s)
+    : assembler_(assembler), parameter_(parameter), time_s_(time_s) {
+  assembler_.external_force(time_s_, external_);
+}
+
+double ParametrizedEquilibrium::residual(const Eigen::VectorXd& q, const Eigen::VectorXd& lambda,
+                                         double mu, Eigen::VectorXd& r,
+                                         Eigen::VectorXd& phi) const {
+  assembler_.internal_force(q, time_s_, thermal_factor(mu), internal_);
+  assembler_.constraints_and_force(q, time_s_, lambda, phi, reaction_);
+  const double load = load_factor(mu);
+  r = internal_ - load * external_ + reaction_;
+  return std::max({internal_.lpNorm<Eigen::Infinity>(),
+                   std::abs(load) * external_.lpNorm<Eigen::Infinity>(),
+                   reaction_.lpNorm<Eigen::Infinity>()});
+}
+
+void ParametrizedEquilibrium::parameter_derivative(const Eigen::VectorXd& q, double,
+                                                   Eigen::VectorXd& dr) const {
+  if (parameter_ == PathParameter::thermal) {
+    assembler_.thermal_force_derivative(q, time_s_, dr);
+  } else {
+    dr = -external_;
+  }
+}
+
+void ParametrizedEquilibrium::matrix(const Eigen::VectorXd& q, const Eigen::VectorXd& lambda,
+                                     double mu, double constraint_scale,
+                                     LinearSystem& system) const {
+  assembler_.iteration_matrix(q, time_s_, thermal_factor(mu), lambda, {0.0, 1.0, constraint_scale},
+                              system);
+}
+
+}  // namespace deploydyn

@@ -1,0 +1,77 @@
+#pragma once
+// Static equilibrium as a function of one parameter μ (theory.md, "Path following and
+// stability"):
+//   r(q, λ, μ) = f_int(q, μ) − f_ext(μ) + Bᵀλ = 0,   Φ(q) = 0
+// with μ either
+//   thermal: a scale on every ΔT, f_int(q, μ) = f_int with ε_t → μ ε_t, f_ext fixed;
+//            ∂r/∂μ = Σ_bars ε_t ∂f/∂ε_t = Σ −(EA ε_t/L0)[−d; d]   (elements/bar.hpp)
+//   load:    a factor on nodal loads and gravity, f_ext(μ) = μ f_ext, ΔT fixed;
+//            ∂r/∂μ = −f_ext
+// The time functions (ΔT(t), load factors, drivers) are read at one fixed time t.
+// This is the model side of the continuation: residual, tangent and ∂r/∂μ; the solver is
+// solvers/continuation.hpp.
+
+#include <Eigen/Core>
+
+#include "deploydyn/assembly/assembler.hpp"
+#include "deploydyn/solvers/discrete_equations.hpp"
+
+namespace deploydyn {
+
+enum class PathParameter { thermal, load };
+// As model files spell them: "thermal", "load".
+inline const char* to_string(PathParameter parameter) {
+  return parameter == PathParameter::thermal ? "thermal" : "load";
+}
+
+class ParametrizedEquilibrium {
+ public:
+  // Keeps a reference to `assembler`, which must outlive it.
+  ParametrizedEquilibrium(const Assembler& assembler, PathParameter parameter, double time_s);
+
+  const Assembler& assembler() const { return assembler_; }
+  PathParameter parameter() const { return parameter_; }
+  double time_s() const { return time_s_; }
+  // The scale of every ΔT at μ (μ for thermal, 1 for load).
+  double thermal_factor(double mu) const { return parameter_ == PathParameter::thermal ? mu : 1.0; }
+  // The factor on f_ext at μ (1 for thermal, μ for load).
+  double load_factor(double mu) const { return parameter_ == PathParameter::load ? mu : 1.0; }
+
+  // Fills r and Φ; returns the largest force term (N), the scale of the convergence test.
+  double residual(const Eigen::VectorXd& q, const Eigen::VectorXd& lambda, double mu,
+                  Eigen::VectorXd& r, Eigen::VectorXd& phi) const;
+  // ∂r/∂μ at (q, μ) (N per unit μ); ∂Φ/∂μ = 0.
+  void parameter_derivative(const Eigen::VectorXd& q, double mu, Eigen::VectorXd& dr) const;
+  // [K + H(λ), s Bᵀ; s B, 0] at (q, λ, μ) into `system`.
+  void matrix(const Eigen::VectorXd& q, const Eigen::VectorXd& lambda, double mu,
+              double constraint_scale, LinearSystem& system) const;
+
+ private:
+  const Assembler& assembler_;
+  PathParameter parameter_;
+  double time_s_;
+  Eigen::VectorXd external_;  // f_ext at time_s_, μ = 1
+  mutable Eigen::VectorXd internal_, reaction_;
+};
+
+// The equations at one fixed μ, for NewtonSolver (the start of a path, landing on its end).
+class FixedParameterEquations final : public DiscreteEquations {
+ public:
+  FixedParameterEquations(const ParametrizedEquilibrium& equilibrium, double mu, double scale)
+      : equilibrium_(equilibrium), mu_(mu), scale_(scale) {}
+  double residual(const Eigen::VectorXd& q, const Eigen::VectorXd& lambda, Eigen::VectorXd& r,
+                  Eigen::VectorXd& phi) override {
+    return equilibrium_.residual(q, lambda, mu_, r, phi);
+  }
+  void matrix(const Eigen::VectorXd& q, const Eigen::VectorXd& lambda,
+              LinearSystem& system) override {
+    equilibrium_.matrix(q, lambda, mu_, scale_, system);
+  }
+  double constraint_scale() const override { return scale_; }
+
+ private:
+  const ParametrizedEquilibrium& equilibrium_;
+  double mu_, scale_;
+};
+
+}  // namespace deploydyn
