@@ -58,7 +58,7 @@ ContinuationResult thermal_path(const std::string& linkage, double reach_C, doub
                     Eigen::VectorXd::Zero(assembler.n_equations()));
 }
 
-TEST(Verification9, ColdParallelLinkageJamsAtTheClosedFormTemperature) {
+TEST(VerificationThermalJam, ColdParallelLinkageJamsAtTheClosedFormTemperature) {
   // Steps small against the narrow stress-free branch near its end (its width in y.B goes as
   // √(ΔT − ΔT*)): larger ones pass the limit point onto the stressed branch unseen.
   const ContinuationResult path = thermal_path("parallel.yaml", -kReach_C, 0.002);
@@ -75,7 +75,7 @@ TEST(Verification9, ColdParallelLinkageJamsAtTheClosedFormTemperature) {
   EXPECT_GT(std::abs(jam.mode[3]), 0.9);  // y.B
 }
 
-TEST(Verification9, GeneralLinkageHasNoThermalJamWithin200Degrees) {
+TEST(VerificationThermalJam, GeneralLinkageHasNoThermalJamWithin200Degrees) {
   for (const double reach_C : {-kReach_C, kReach_C}) {
     const ContinuationResult path = thermal_path("general.yaml", reach_C, 0.01);
     ASSERT_EQ(path.end, ContinuationEnd::reached_end) << path.message;
