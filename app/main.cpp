@@ -24,6 +24,7 @@
 #include "exit_codes.hpp"
 #include "generate_command.hpp"
 #include "modes_command.hpp"
+#include "window_command.hpp"
 #include "study_command.hpp"
 
 namespace {
@@ -192,11 +193,13 @@ int main(int argc, char** argv) {
   CLI::App* study = cli::add_study_command(app, study_arguments);
   cli::ModesArguments modes_arguments;
   CLI::App* modes = cli::add_modes_command(app, modes_arguments);
+  cli::WindowArguments window_arguments;
+  CLI::App* window = cli::add_window_command(app, window_arguments);
 
   // CLI11 would only say "a subcommand is required"; name the word it did not know instead.
   if (const std::string first = argc > 1 ? argv[1] : "-"; first[0] != '-' && first != "run" && first != "check" &&
-                                                            first != "generate" && first != "study" && first != "modes") {
-    fmt::print(stderr, "error: unknown command '{}'; commands are run, check, modes, generate and study (see --help)\n", first);
+                                                            first != "generate" && first != "study" && first != "modes" && first != "window") {
+    fmt::print(stderr, "error: unknown command '{}'; commands are run, check, modes, window, generate and study (see --help)\n", first);
     return kExitBadInput;
   }
   try {
@@ -210,6 +213,10 @@ int main(int argc, char** argv) {
     if (*run) return run_command(model_file, out_dir, sets, quiet);
     if (*generate) return cli::generate_command(generate_arguments);
     if (*modes) return cli::modes_command(modes_arguments);
+    if (*window) {
+      stop_on_signals();
+      return cli::window_command(window_arguments, g_stop);
+    }
     if (*study) {
       stop_on_signals();
       return cli::study_command(study_arguments, g_stop);

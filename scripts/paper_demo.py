@@ -7,6 +7,8 @@ results/paper/<linkage>/study.csv; a failed case does not stop the others (the t
 Then prints a table of the peak mechanical strain of each bar and the peak driver torque, and
 draws the paper's Figs. 3-5 and the driver torques into results/paper/*.png
 (scripts/plot_paper.py; a failed or missing case is left out of the plots with a message).
+Then the deployability window of each linkage, −200 … +200 °C, into results/paper/window/
+(`deploydyn window`, drawn by scripts/deploydyn_window.py).
 Exit code 1 when any case failed, after all were tried.
 """
 import argparse
@@ -64,6 +66,21 @@ def run_study(cli, linkage, out_root):
                 # from the normal (ΔT = 0) case's final shape; empty unless both completed
                 "shape": float(row["shape_error"]) if row["shape_error"] else float("nan")})
     return wall, results
+
+
+def run_window(cli, linkage, out_root):
+    """`deploydyn window` of the linkage over ΔT = −200 … +200 °C into out_root/window/<linkage>/,
+    printed, and drawn by scripts/deploydyn_window.py; True when it ran whole."""
+    folder = pathlib.Path(out_root) / "window" / linkage
+    model = ROOT / "examples" / "paper" / f"{linkage}.yaml"
+    completed = subprocess.run([str(cli), "window", str(model), "--dT", "-200:200", "--out", str(folder)],
+                               capture_output=True, text=True)
+    print(f"\n{completed.stdout.rstrip()}")
+    if completed.stderr:
+        print(completed.stderr.rstrip(), file=sys.stderr)
+    drawn = subprocess.run([sys.executable, str(ROOT / "scripts" / "deploydyn_window.py"), str(folder),
+                            "--title", f"deployability window: {linkage} four-bar linkage"])
+    return completed.returncode == 0 and drawn.returncode == 0
 
 
 def peak(extremes):
@@ -125,7 +142,8 @@ def main():
                   "it changed branch (see docs/paper-study.md)")
     print(file=sys.stderr)
     plot_paper.plot_paper_set(out_root)
-    return 1 if any(r["code"] != 0 for r in results) else 0
+    windows_ok = all(run_window(args.cli, linkage, out_root) for linkage in LINKAGES)
+    return 1 if any(r["code"] != 0 for r in results) or not windows_ok else 0
 
 
 if __name__ == "__main__":

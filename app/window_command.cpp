@@ -1,0 +1,90 @@
+#include "window_command.hpp"
+
+#include <fmt/format.h>
+
+#include <charconv>
+#include <cmath>
+#include <stdexcept>
+
+#include "deploydyn/io/input_error.hpp"
+#include "deploydyn/io/model_loader.hpp"
+#include "deploydyn/output/window_writer.hpp"
+#include "deploydyn/solvers/deployability_window.hpp"
+#include "exit_codes.hpp"
+
+namespace deploydyn::cli {
+namespace {
+
+constexpr double kRegimeStep_C = 10.0;  // the table's ΔT interval
+
+// "LO:HI" (°C) with LO ≤ 0 ≤ HI.
+std::pair<double, double> parse_range(const std::string& text) {
+  const auto colon = text.find(':');
+  double lo = 0.0, hi = 0.0;
+  const auto number = [&](std::string_view part, double& value) {
+    const auto [end, error] = std::from_chars(part.data(), part.data() + part.size(), value);
+    return error == std::errc() && end == part.data() + part.size() && std::isfinite(value);
+  };
+  if (colon == std::string::npos || !number(std::string_view(text).substr(0, colon), lo) ||
+      !number(std::string_view(text).substr(colon + 1), hi) || lo > 0.0 || hi < 0.0 || lo == hi) {
+    throw InputError("--dT " + text, 0, 0, "",
+                     "expected LO:HI in °C with LO ≤ 0 ≤ HI, e.g. -200:200 or -170:0");
+  }
+  return {lo, hi};
+}
+
+std::string side_line(const char* name, const WindowSide& side) {
+  const auto threshold = side.threshold();
+  if (side.reach_C == 0.0) return fmt::format("{:4}: not asked for", name);
+  if (!threshold) return fmt::format("{:4}: deploys to ΔT = {:+g} °C: no limit point, bifurcation or dead centre", name, side.reach_C);
+  return fmt::format("{:4}: {} beyond ΔT = {:+.6g} °C (± {:.1e}) at t = {:g} s: {}", name,
+                     threshold->kind == PathEventKind::bifurcation ? "snaps" : "jams",
+                     threshold->delta_t_C, threshold->delta_t_error_C, threshold->time_s, threshold->description);
+}
+
+}  // namespace
+
+CLI::App* add_window_command(CLI::App& app, WindowArguments& arguments) {
+  CLI::App* window = app.add_subcommand(
+      "window",
+      "The deployability window: over a ΔT range, where the deployment stays stress-free, is "
+      "stressed, jams or snaps, with the thresholds located by continuation");
+  window->add_option("model", arguments.model_file, "Model file (YAML or JSON)")->required();
+  window->add_option("--dT", arguments.range_C, "Uniform ΔT range LO:HI (°C), LO ≤ 0 ≤ HI")->capture_default_str();
+  window->add_option("--positions", arguments.n_positions, "Driver positions over the analysis time")
+      ->capture_default_str()
+      ->check(CLI::Range(1, 10000));
+  window->add_option("--set,-s", arguments.sets, "Override a scalar of the model: PATH=VALUE");
+  window->add_option("--out,-o", arguments.out_dir, "Folder for window.csv and window.json");
+  return window;
+}
+
+int window_command(const WindowArguments& arguments, const std::atomic<bool>& stop) {
+  const auto [lo, hi] = parse_range(arguments.range_C);
+  std::vector<Override> overrides;
+  for (const std::string& text : arguments.sets) overrides.push_back(parse_override(text));
+  const Model model = load_model(arguments.model_file, overrides);
+  WindowOptions options;
+  options.coldest_C = lo;
+  options.hottest_C = hi;
+  options.n_positions = arguments.n_positions;
+  options.stop = &stop;
+  const WindowResult window = deployability_window(model, options);
+  fmt::print("{}: deployability window, uniform ΔT {:+g} … {:+g} °C, {} driver positions over {:g} s\n",
+             arguments.model_file, lo, hi, window.times_s.size(), model.analysis.end_time_s);
+  fmt::print("{}\n{}\n", side_line("cold", window.cold), side_line("hot", window.hot));
+  std::string previous;
+  for (double dT = lo; dT <= hi + 1e-9; dT += kRegimeStep_C) {
+    const std::string regime = window_regime(window, dT);
+    if (regime != previous) fmt::print("  from ΔT = {:+g} °C: {}\n", dT, regime);
+    previous = regime;
+  }
+  for (const WindowSide* side : {&window.cold, &window.hot}) {
+    for (const std::string& failure : side->failures) fmt::print(stderr, "warning: {}\n", failure);
+  }
+  if (!arguments.out_dir.empty()) write_window(arguments.out_dir, window, kRegimeStep_C);
+  const bool complete = !window.stopped && window.cold.failures.empty() && window.hot.failures.empty();
+  return complete ? kExitSuccess : kExitSolverFailure;
+}
+
+}  // namespace deploydyn::cli

@@ -1,0 +1,143 @@
+#include "deploydyn/solvers/deployability_window.hpp"
+
+#include <fmt/format.h>
+
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+
+#include "deploydyn/assembly/linear_system_factory.hpp"
+#include "deploydyn/solvers/static_solver.hpp"
+
+namespace deploydyn {
+namespace {
+
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+
+// The model with the same uniform ΔT on every bar: what the path scales.
+Model with_uniform_temperature(const Model& model, double delta_t_C) {
+  Model uniform = model;
+  uniform.temperature_change_C = TimeFunction::constant(delta_t_C);
+  for (BarElement& bar : uniform.bars) bar.temperature_change_C = uniform.temperature_change_C;
+  return uniform;
+}
+
+WindowSample sample(const Assembler& assembler, const PathPoint& point, double time_s, double reach_C) {
+  WindowSample s;
+  s.time_s = time_s;
+  s.delta_t_C = point.parameter * reach_C;
+  s.lowest_eigenvalue_N_m = point.lowest_eigenvalues.size() > 0 ? point.lowest_eigenvalues[0] : kNaN;
+  for (int b = 0; b < assembler.model().n_bars(); ++b) {
+    const BarResult bar = assembler.bar_result(b, point.q, time_s, point.parameter);
+    s.peak_axial_force_N = std::max(s.peak_axial_force_N, std::abs(bar.axial_force_N));
+    s.peak_mechanical_strain = std::max(s.peak_mechanical_strain, std::abs(bar.mechanical_strain));
+  }
+  if (!assembler.model().drivers.empty()) {
+    s.driver_effort = assembler.driver_effort(0, point.q, time_s, point.lambda);
+  }
+  return s;
+}
+
+// One side of the window at one driver position: the path from ΔT = 0 to reach_C.
+void trace_side(const Model& model, double reach_C, double time_s, const WindowOptions& options,
+                WindowSide& side, std::vector<WindowSample>& samples) {
+  const Model heated = with_uniform_temperature(model, reach_C);
+  const Assembler assembler(heated);
+  const auto system = make_linear_system(assembler);
+  // The stress-free state at t: the drivers followed from 0 to t with no thermal strain.
+  MotionState state;
+  state.q = assembler.initial_coordinates();
+  state.v = state.a = Eigen::VectorXd::Zero(assembler.n_dofs());
+  state.lambda = Eigen::VectorXd::Zero(assembler.n_equations());
+  const LoadPath to_position{0.0, time_s, 0.0, 0.0};
+  const StaticResult moved = solve_static(assembler, heated.analysis, to_position, 1, *system, state);
+  if (!moved.newton.converged) {
+    side.failures.push_back(fmt::format("t = {:g} s: no equilibrium at ΔT = 0: {}", time_s, moved.newton.failure));
+    return;
+  }
+  ContinuationOptions path;
+  path.parameter = PathParameter::thermal;
+  path.time_s = time_s;
+  path.start = 0.0;
+  path.end = 1.0;
+  path.initial_step = options.max_step;
+  path.max_step = options.max_step;
+  path.max_steps = options.max_steps;
+  path.newton = heated.analysis.newton;
+  path.stop = options.stop;
+  const ContinuationResult result = trace_path(assembler, path, *system, state.q, state.lambda);
+  // Up to the first event: beyond it the path leaves the branch the deployment is on.
+  const int last = result.events.empty() ? static_cast<int>(result.points.size()) - 1 : result.events.front().point;
+  for (int i = 0; i <= last; ++i) samples.push_back(sample(assembler, result.points[i], time_s, reach_C));
+  if (!result.events.empty()) {
+    const PathEvent& event = result.events.front();
+    side.edges.push_back({time_s, event.parameter * reach_C, event.parameter_error * std::abs(reach_C),
+                          event.kind, event.description});
+  } else if (result.end != ContinuationEnd::reached_end && result.end != ContinuationEnd::stopped) {
+    side.failures.push_back(fmt::format("t = {:g} s: {}", time_s, result.message));
+  }
+}
+
+}  // namespace
+
+void validate(const WindowOptions& options) {
+  if (!(options.coldest_C <= 0.0 && options.hottest_C >= 0.0 && options.hottest_C > options.coldest_C)) {
+    throw std::invalid_argument(fmt::format(
+        "the ΔT range must contain 0 (coldest ≤ 0 ≤ hottest, not both 0), got {} to {} °C",
+        options.coldest_C, options.hottest_C));
+  }
+  if (options.n_positions < 1) {
+    throw std::invalid_argument(fmt::format("positions must be at least 1, got {}", options.n_positions));
+  }
+  if (!(options.max_step > 0.0) || options.max_steps < 1) {
+    throw std::invalid_argument("the continuation's max_step must be positive and max_steps at least 1");
+  }
+}
+
+std::optional<WindowEdge> WindowSide::threshold() const {
+  std::optional<WindowEdge> nearest;
+  for (const WindowEdge& edge : edges) {
+    if (!nearest || std::abs(edge.delta_t_C) < std::abs(nearest->delta_t_C)) nearest = edge;
+  }
+  return nearest;
+}
+
+WindowResult deployability_window(const Model& model, const WindowOptions& options) {
+  validate(options);
+  WindowResult window;
+  window.cold.reach_C = options.coldest_C;
+  window.hot.reach_C = options.hottest_C;
+  const int n = options.n_positions;
+  for (int k = 0; k < n; ++k) {
+    window.times_s.push_back(n == 1 ? 0.0 : model.analysis.end_time_s * k / (n - 1));
+  }
+  for (const double t : window.times_s) {
+    for (WindowSide* side : {&window.cold, &window.hot}) {
+      if (options.stop != nullptr && options.stop->load()) {
+        window.stopped = true;
+        return window;
+      }
+      if (side->reach_C != 0.0) trace_side(model, side->reach_C, t, options, *side, window.samples);
+    }
+  }
+  return window;
+}
+
+std::string window_regime(const WindowResult& window, double delta_t_C, double stress_free_strain) {
+  const WindowSide& side = delta_t_C < 0.0 ? window.cold : window.hot;
+  if (const auto edge = side.threshold(); edge && std::abs(delta_t_C) >= std::abs(edge->delta_t_C)) {
+    return edge->kind == PathEventKind::bifurcation ? "snaps" : "jams";
+  }
+  // Per position, the sample nearest below |ΔT| on the same side says whether it is stressed.
+  for (const double t : window.times_s) {
+    const WindowSample* nearest = nullptr;
+    for (const WindowSample& s : window.samples) {
+      if (s.time_s != t || s.delta_t_C * delta_t_C < 0.0 || std::abs(s.delta_t_C) > std::abs(delta_t_C)) continue;
+      if (nearest == nullptr || std::abs(s.delta_t_C) > std::abs(nearest->delta_t_C)) nearest = &s;
+    }
+    if (nearest != nullptr && nearest->peak_mechanical_strain > stress_free_strain) return "stressed";
+  }
+  return "stress-free";
+}
+
+}  // namespace deploydyn

@@ -1,0 +1,80 @@
+#pragma once
+// The deployability window: over a range of uniform temperature changes, where along its
+// deployment a structure stays stress-free, becomes stressed, jams or snaps
+// (docs/theory.md, "The deployability window").
+//
+// At each of n driver positions (times t_k spread over the analysis, the drivers stopped
+// there), the structure is brought to its stress-free equilibrium at ΔT = 0, then its static
+// equilibrium is followed by continuation (solvers/continuation.hpp) in the ΔT scale μ,
+// ΔT = μ·ΔT_reach, once towards the coldest and once towards the hottest ΔT of the range.
+// The first event of each path is where that side of the window closes at t_k: a limit point
+// (no equilibrium beyond: the deployment jams), a bifurcation (another branch: it snaps), or
+// singular constraints (a dead centre of the mechanism). The thresholds are therefore located
+// by the continuation to its location tolerance, not by a grid of ΔT. Along every path the
+// lowest stability eigenvalue (of Zᵀ K_T Z, N/m), the largest |axial force| and the driver's
+// effort are sampled up to the first event.
+
+#include <atomic>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "deploydyn/model/model.hpp"
+#include "deploydyn/solvers/continuation.hpp"
+
+namespace deploydyn {
+
+struct WindowOptions {
+  double coldest_C = -200.0;  // ΔT range (°C): coldest < 0 < hottest, or one side only
+  double hottest_C = 200.0;
+  int n_positions = 21;       // driver positions t_k = k·end/(n − 1)
+  // Continuation steps small enough not to step over the narrow end of a stress-free branch
+  // (near a jam its width goes as √(ΔT − ΔT*)).
+  double max_step = 0.002;
+  int max_steps = 2000;
+  const std::atomic<bool>* stop = nullptr;
+};
+
+// Throws std::invalid_argument naming the option and what is allowed.
+void validate(const WindowOptions& options);
+
+struct WindowSample {
+  double time_s = 0.0;
+  double delta_t_C = 0.0;
+  double lowest_eigenvalue_N_m = 0.0;  // NaN when not computed (large models)
+  double peak_axial_force_N = 0.0;     // largest |true axial force| over the bars
+  double peak_mechanical_strain = 0.0;
+  double driver_effort = 0.0;          // the first driver's torque (N·m) or force (N); 0: none
+};
+
+struct WindowEdge {
+  double time_s = 0.0;
+  double delta_t_C = 0.0;  // where the path's first event is
+  double delta_t_error_C = 0.0;
+  PathEventKind kind = PathEventKind::limit_point;
+  std::string description;
+};
+
+struct WindowSide {
+  double reach_C = 0.0;             // the end of the range on this side
+  std::vector<WindowEdge> edges;    // first event per driver position (none: open to reach_C)
+  std::vector<std::string> failures;  // positions whose path could not be traced, and why
+  // The edge closest to ΔT = 0: the threshold beyond which the deployment fails somewhere.
+  std::optional<WindowEdge> threshold() const;
+};
+
+struct WindowResult {
+  std::vector<double> times_s;
+  std::vector<WindowSample> samples;
+  WindowSide cold, hot;
+  bool stopped = false;
+};
+
+WindowResult deployability_window(const Model& model, const WindowOptions& options);
+
+// The regime at ΔT: beyond the side's threshold "snaps" (a bifurcation) or "jams" (a limit
+// point or a dead centre); else "stressed" when, at some driver position, the last sample
+// reached before ΔT has a mechanical strain above `stress_free_strain`; else "stress-free".
+std::string window_regime(const WindowResult& window, double delta_t_C, double stress_free_strain = 1e-9);
+
+}  // namespace deploydyn
