@@ -57,7 +57,19 @@
 //   (the far post turns through the ground to −12°, mechanical strain up to 2.5e-3) and for 10
 //   and 20 units ends 3–5° short of upright with strains of 3e-3. 3D, 2 and 3 trusses of 1 to 5
 //   units: +130, 0 and −170 °C all deploy (posts 89.2°–90.6° at the end), heated and cooled
-//   with mechanical strains of αΔT (2.6e-3, 3.4e-3).
+//   with mechanical strains of αΔT (2.6e-3, 3.4e-3). Larger (issue 12): planar 500 units at
+//   +130 °C "run" with posts leaning back to 127°, 1000 have no initial equilibrium; 10 × 26
+//   stops at 64 % of +130 °C.
+// - Measured, sliding (the defaults; initial equilibrium and 0.05 s, README "Generated roofs"):
+//   planar 10, 100, 1000 units and 3D 10 trusses of 3, 26, 263 units run at +130, 0 and
+//   −170 °C, with |ε_m| ≤ 5e-7 (the deployment's inertia, the same at every ΔT); full 5 s runs
+//   of 10 and 100 units deploy at all three (posts 89.95°–90.40° at the end, |ε_m| ≤ 4.6e-5,
+//   the bottom chain's elastic strain: pinned 100 units end at 108.7° heated and 64.6° cooled).
+//   Planar 10 000 units run at 0 °C but not heated or cooled: the static start moves no node
+//   more than 2 % of the shortest bar per load step and takes at most 1024 steps, while b_0
+//   must slide (k − 1)·3570 m = 9.3 m (+130 °C) or 12 m (−170 °C); it stops at t = 0 with
+//   "the load step cannot be made small enough" (a limit of the load stepping, not of the roof,
+//   whose equilibrium is the closed-form homothety).
 //
 // Driver: the paper's Eq. (23) trapezoid read as angular velocity turns 0.365 · 4 = 1.46 rad,
 // 83.65°, which leaves the posts 1.35° short of upright. The roof's profile keeps the shape
