@@ -22,8 +22,9 @@
 //   Every constraint is then satisfied by the homothety about b_N^0 with the free thermal
 //   stretch k = √(1 + 2αΔT) (Green–Lagrange, docs/theory.md): bars stretch by k, no bar or
 //   post turns, the drivers (directions only) and the bearings (lines and planes through the
-//   corner) hold. A uniform ΔT scales the whole roof, stress-free, and the deployment is the
-//   cold one scaled: the roof deploys the same at every ΔT. Mobility with rigid bars
+//   corner) hold. A uniform ΔT scales the whole roof, stress-free, and the deployment is
+//   kinematically the cold one scaled (the masses are not scaled, so the small elastic
+//   deviations of a dynamic run differ a little). Mobility with rigid bars
 //   (coordinates − support and driver equations − bars, as Assembler::rigid_mobility counts
 //   it): planar 4(N+1) − (N + 2) − 1 − (3N + 1) = 0, determinate as before; 3D M + N − 1 − 2MN
 //   (redundant: both grids are fully triangulated and the edges guided, all compatible with
