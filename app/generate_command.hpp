@@ -1,6 +1,6 @@
 #pragma once
-// `deploydyn generate roof --units N [--trusses M] [--delta-t C] [--out FILE]`: writes a
-// generated model file (generators/roof.hpp) to FILE, or to stdout without --out.
+// `deploydyn generate roof --units N [--trusses M] [--delta-t C] [--bearings B] [--out FILE]`:
+// writes a generated model file (generators/roof.hpp) to FILE, or to stdout without --out.
 
 #include <CLI/CLI.hpp>
 #include <string>

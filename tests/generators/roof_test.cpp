@@ -12,6 +12,7 @@
 #include <sstream>
 #include <stdexcept>
 #include <string>
+#include <tuple>
 #include <utility>
 #include <vector>
 
@@ -37,13 +38,32 @@ constexpr double kUprightTolerance_rad = 1e-8;
 // The other trusses follow truss 0 through the roof-plane diagonals (elastic, and stiff only as
 // sin γ): measured 4.2e-7 rad from upright at the end for 3 trusses of 2 units.
 constexpr double kFollowerUprightTolerance_rad = 2e-6;
+// Elastic strain of the deployment's inertia forces on a determinate truss (measured 2.5e-7
+// for 3 units, cold and heated); a thermal strain αΔT would be 2.6e-3 at +130 °C.
+constexpr double kDeploymentStrain = 1e-6;
+// The final shapes of a heated and a cold deployment on sliding bearings differ by the scaling
+// and the small elastic strains left when the driver stops (posts upright to 1e-8 rad).
+constexpr double kScaledDeploymentTolerance_m = 1e-8;  // measured 1.9e-10
+// Sliding bearings: the initial equilibrium against the closed-form free expansion. Newton
+// stops at a force residual of its tolerance, a strain of about 1e-12 here.
+constexpr double kFreeExpansionTolerance_m = 1e-9;
+constexpr double kFreeExpansionStrain = 1e-10;
 
-Model roof(int n_units, int n_trusses, double delta_t_C) {
+Model roof(int n_units, int n_trusses, double delta_t_C,
+           RoofBearings bearings = RoofBearings::sliding) {
   RoofOptions options;
   options.n_units = n_units;
   options.n_trusses = n_trusses;
   options.delta_t_C = delta_t_C;
+  options.bearings = bearings;
   return make_roof(options);
+}
+
+// The model's analysis cut to its initial equilibrium and one step.
+Model first_step_only(Model model) {
+  model.analysis.end_time_s = model.analysis.step_s;
+  model.analysis.output_interval_s = model.analysis.step_s;
+  return model;
 }
 
 Eigen::Vector3d position(const Model& model, int node) { return model.nodes[node].position_m; }
@@ -64,29 +84,52 @@ std::vector<int> bars_named(const Model& model, const std::string& prefix) {
   return bars;
 }
 
+// Axes held by the bearing under node `name`, which must have one.
+std::array<bool, 3> bearing(const Model& model, const std::string& name) {
+  for (const FixedNode& support : model.supports) {
+    if (model.nodes[support.node].name == name) return support.axes;
+  }
+  ADD_FAILURE() << "no bearing under " << name;
+  return {};
+}
+
 TEST(RoofGenerator, PlanarTrussCounts) {
-  for (const int n : {1, 2, 7}) {
-    const Model model = roof(n, 1, 0.0);
-    SCOPED_TRACE(model.name);
-    EXPECT_EQ(model.dimension, 2);
-    EXPECT_EQ(model.n_nodes(), 2 * (n + 1));
-    EXPECT_EQ(model.n_bars(), 2 * n + 1);  // n + 1 posts, n chords
-    EXPECT_EQ(bars_named(model, "post").size(), std::size_t(n + 1));
-    EXPECT_EQ(bars_named(model, "chord").size(), std::size_t(n));
-    EXPECT_EQ(model.supports.size(), std::size_t(n + 1));
-    ASSERT_EQ(model.drivers.size(), 1u);
-    EXPECT_EQ(model.bars[model.drivers[0].element].name, fmt::format("post{}", n));
-    const RoofSize size = roof_size(n, 1);
-    EXPECT_EQ(size.n_nodes, model.n_nodes());
-    EXPECT_EQ(size.n_bars, model.n_bars());
-    // One degree of freedom, taken by the one driver: kinematically determinate.
-    EXPECT_EQ(Assembler(model).rigid_mobility(), 0);
+  for (const RoofBearings bearings : {RoofBearings::pinned, RoofBearings::sliding}) {
+    for (const int n : {1, 2, 7}) {
+      const Model model = roof(n, 1, 0.0, bearings);
+      SCOPED_TRACE(fmt::format("{}, {}", model.name, to_string(bearings)));
+      const bool sliding = bearings == RoofBearings::sliding;
+      EXPECT_EQ(model.dimension, 2);
+      EXPECT_EQ(model.n_nodes(), 2 * (n + 1));
+      // n + 1 posts, n chords (the models before bearings); sliding: n bottom chords more.
+      EXPECT_EQ(model.n_bars(), sliding ? 3 * n + 1 : 2 * n + 1);
+      EXPECT_EQ(bars_named(model, "post").size(), std::size_t(n + 1));
+      EXPECT_EQ(bars_named(model, "chord").size(), std::size_t(n));
+      EXPECT_EQ(bars_named(model, "bottom_chord").size(), std::size_t(sliding ? n : 0));
+      ASSERT_EQ(model.supports.size(), std::size_t(n + 1));
+      for (int i = 0; i <= n; ++i) {
+        const std::array<bool, 3> axes = bearing(model, fmt::format("b{}", i));
+        // Pinned: x and y everywhere. Sliding: y everywhere, x only under the driven post.
+        EXPECT_EQ(axes[0], !sliding || i == n) << i;
+        EXPECT_TRUE(axes[1]) << i;
+      }
+      ASSERT_EQ(model.drivers.size(), 1u);
+      EXPECT_EQ(model.bars[model.drivers[0].element].name, fmt::format("post{}", n));
+      EXPECT_EQ(model.nodes[model.drivers[0].pivot].name, fmt::format("b{}", n));
+      const RoofSize size = roof_size(n, 1, bearings);
+      EXPECT_EQ(size.n_nodes, model.n_nodes());
+      EXPECT_EQ(size.n_bars, model.n_bars());
+      EXPECT_EQ(size.n_supports, static_cast<long long>(model.supports.size()));
+      // One degree of freedom, taken by the one driver: kinematically determinate, with either
+      // bearings (sliding: n + 1 coordinates freed, n bottom chords and the fixed x added).
+      EXPECT_EQ(Assembler(model).rigid_mobility(), 0);
+    }
   }
 }
 
 TEST(RoofGenerator, ThreeDimensionalRoofCounts) {
   for (const auto& [n, m] : {std::pair{1, 2}, std::pair{3, 2}, std::pair{3, 4}}) {
-    const Model model = roof(n, m, 0.0);
+    const Model model = roof(n, m, 0.0, RoofBearings::pinned);
     SCOPED_TRACE(model.name);
     EXPECT_EQ(model.dimension, 3);
     EXPECT_EQ(model.n_nodes(), 2 * m * (n + 1));
@@ -104,7 +147,7 @@ TEST(RoofGenerator, ThreeDimensionalRoofCounts) {
       EXPECT_EQ(d.pivot, model.bars[d.element].node_a);
       EXPECT_EQ(d.axis, Eigen::Vector3d::UnitZ());
     }
-    const RoofSize size = roof_size(n, m);
+    const RoofSize size = roof_size(n, m, RoofBearings::pinned);
     EXPECT_EQ(size.n_bars, model.n_bars());
     EXPECT_EQ(size.n_drivers, static_cast<long long>(model.drivers.size()));
     // Two equations per 3D driver: redundant by M·N + 1 − M with rigid bars (roof.hpp).
@@ -112,8 +155,80 @@ TEST(RoofGenerator, ThreeDimensionalRoofCounts) {
   }
 }
 
+// Sliding 3D: the pinned roof's bars, the same grid again at the bottom, one fixed corner under
+// the driven truss's last post, guided edges through it, every other bearing sliding.
+TEST(RoofGenerator, ThreeDimensionalSlidingRoofCounts) {
+  for (const auto& [n, m] : {std::pair{1, 2}, std::pair{3, 2}, std::pair{3, 4}}) {
+    const Model model = roof(n, m, 0.0, RoofBearings::sliding);
+    SCOPED_TRACE(model.name);
+    const Model pinned = roof(n, m, 0.0, RoofBearings::pinned);
+    EXPECT_EQ(model.n_nodes(), pinned.n_nodes());
+    EXPECT_EQ(bars_named(model, "bottom_chord").size(), std::size_t(m * n));
+    EXPECT_EQ(bars_named(model, "bottom_purlin").size(), std::size_t((m - 1) * (n + 1)));
+    EXPECT_EQ(bars_named(model, "bottom_brace").size(), std::size_t((m - 1) * n));
+    EXPECT_EQ(model.n_bars(), pinned.n_bars() + m * n + (m - 1) * (2 * n + 1));
+    EXPECT_EQ(roof_size(n, m, RoofBearings::sliding).n_bars, model.n_bars());
+    ASSERT_EQ(model.supports.size(), std::size_t(m * (n + 1)));
+    for (int j = 0; j < m; ++j) {
+      for (int i = 0; i <= n; ++i) {
+        const std::array<bool, 3> axes = bearing(model, fmt::format("b{}_{}", j, i));
+        EXPECT_EQ(axes, (std::array{i == n, true, j == 0})) << j << " " << i;
+      }
+    }
+    EXPECT_EQ(model.drivers.size(), pinned.drivers.size());
+    // Redundant by 2MN + 1 − M − N: both grids triangulated, both edges guided (roof.hpp).
+    EXPECT_EQ(Assembler(model).rigid_mobility(), m + n - 1 - 2 * m * n);
+  }
+}
+
+// `pinned` builds the models from before bearings: the counts they had, every bottom node
+// pinned in x, y, z, their description, and the sliding model's nodes and first bars in the
+// same order (sliding adds only bottom members and frees bearing axes).
+TEST(RoofGenerator, PinnedBearingsBuildTheModelsBeforeBearings) {
+  for (const auto& [n, m] : {std::pair{1, 1}, std::pair{5, 1}, std::pair{3, 3}}) {
+    const Model pinned = roof(n, m, 130.0, RoofBearings::pinned);
+    const Model sliding = roof(n, m, 130.0, RoofBearings::sliding);
+    SCOPED_TRACE(pinned.name);
+    EXPECT_EQ(pinned.n_nodes(), 2 * m * (n + 1));
+    EXPECT_EQ(pinned.n_bars(), (2 * m - 1) * (2 * n + 1));
+    ASSERT_EQ(pinned.supports.size(), std::size_t(m * (n + 1)));
+    for (const FixedNode& s : pinned.supports) EXPECT_EQ(s.axes, (std::array{true, true, true}));
+    EXPECT_EQ(pinned.description,
+              m == 1 ? "generated by deploydyn generate roof: parallelogram units sharing posts, "
+                       "bottom nodes pinned, last post driven; bars of the parallel linkage of "
+                       "Cai et al. 2017; posts turned from 5 to 90 degrees by Eq. (23)'s "
+                       "trapezoid scaled to 85 degrees"
+                     : "generated by deploydyn generate roof: trusses joined by purlins and "
+                       "roof-plane diagonals, posts of truss 0 driven; bars of the parallel "
+                       "linkage of Cai et al. 2017; posts turned from 5 to 90 degrees by Eq. "
+                       "(23)'s trapezoid scaled to 85 degrees");
+    EXPECT_NE(sliding.description, pinned.description);
+    ASSERT_EQ(sliding.n_nodes(), pinned.n_nodes());
+    for (int i = 0; i < pinned.n_nodes(); ++i) {
+      EXPECT_EQ(sliding.nodes[i].name, pinned.nodes[i].name);
+      EXPECT_EQ(sliding.nodes[i].position_m, pinned.nodes[i].position_m);
+    }
+    ASSERT_GT(sliding.n_bars(), pinned.n_bars());
+    for (int b = 0; b < sliding.n_bars(); ++b) {
+      if (b >= pinned.n_bars()) {
+        EXPECT_TRUE(sliding.bars[b].name.starts_with("bottom_")) << sliding.bars[b].name;
+        continue;
+      }
+      EXPECT_EQ(sliding.bars[b].name, pinned.bars[b].name);
+      EXPECT_EQ(sliding.bars[b].node_a, pinned.bars[b].node_a);
+      EXPECT_EQ(sliding.bars[b].node_b, pinned.bars[b].node_b);
+      EXPECT_EQ(sliding.bars[b].reference_length_m, pinned.bars[b].reference_length_m);
+    }
+    ASSERT_EQ(sliding.drivers.size(), pinned.drivers.size());
+    for (std::size_t d = 0; d < pinned.drivers.size(); ++d) {
+      EXPECT_EQ(sliding.drivers[d].element, pinned.drivers[d].element);
+      EXPECT_EQ(sliding.drivers[d].pivot, pinned.drivers[d].pivot);
+    }
+  }
+}
+
 TEST(RoofGenerator, GeometryIsTheFoldedParallelLinkage) {
-  const Model model = roof(3, 3, 0.0);
+  const Model model = roof(3, 3, 0.0, RoofBearings::sliding);
   for (const BarElement& bar : model.bars) {
     SCOPED_TRACE(bar.name);
     const Eigen::Vector3d d = position(model, bar.node_b) - position(model, bar.node_a);
@@ -131,11 +246,18 @@ TEST(RoofGenerator, GeometryIsTheFoldedParallelLinkage) {
       EXPECT_NEAR(d.x(), 0.357, kGeometryTolerance_m);
       EXPECT_EQ(d.y(), 0.0);
       EXPECT_EQ(d.z(), 0.0);
-    } else if (bar.name.starts_with("purlin")) {
+    } else if (bar.name.starts_with("purlin") || bar.name.starts_with("bottom_purlin")) {
       EXPECT_NEAR((d - Eigen::Vector3d(0, 0, 0.357)).norm(), 0.0, kGeometryTolerance_m);
+    } else if (bar.name.starts_with("bottom_chord")) {
+      EXPECT_EQ(bar.reference_length_m, 0.357);
+      EXPECT_NEAR((d - Eigen::Vector3d(0.357, 0, 0)).norm(), 0.0, kGeometryTolerance_m);
     } else {
-      ASSERT_TRUE(bar.name.starts_with("brace"));
+      ASSERT_TRUE(bar.name.starts_with("brace") || bar.name.starts_with("bottom_brace"));
       EXPECT_NEAR((d - Eigen::Vector3d(-0.357, 0, 0.357)).norm(), 0.0, kGeometryTolerance_m);
+    }
+    if (bar.name.starts_with("bottom_")) {  // on the ground, between bearings
+      EXPECT_EQ(position(model, bar.node_a).y(), 0.0);
+      EXPECT_EQ(position(model, bar.node_b).y(), 0.0);
     }
   }
   ASSERT_EQ(model.materials.size(), 1u);
@@ -143,10 +265,11 @@ TEST(RoofGenerator, GeometryIsTheFoldedParallelLinkage) {
   EXPECT_EQ(model.materials[0].expansion_per_C, 2.0e-5);
 }
 
-// One unit is examples/paper/parallel.yaml: A, B, C, D = b0, t0, t1, b1, bars 1, 2, 3.
+// One unit on pinned bearings is examples/paper/parallel.yaml: A, B, C, D = b0, t0, t1, b1,
+// bars 1, 2, 3 (the paper pins A and D to rigid ground).
 TEST(RoofGenerator, OneUnitIsThePapersParallelLinkage) {
   const Model paper = load_model(testing::example_path("parallel.yaml"));
-  const Model model = roof(1, 1, 0.0);
+  const Model model = roof(1, 1, 0.0, RoofBearings::pinned);
   const char* names[][2] = {{"A", "b0"}, {"B", "t0"}, {"C", "t1"}, {"D", "b1"}};
   for (const auto& [paper_name, roof_name] : names) {
     const int p = testing::node_index(paper, paper_name), r = testing::node_index(model, roof_name);
@@ -159,6 +282,8 @@ TEST(RoofGenerator, OneUnitIsThePapersParallelLinkage) {
     EXPECT_EQ(model.bars[b].mass_kg, paper.bars[b].mass_kg);
     EXPECT_EQ(model.bars[b].area_m2, paper.bars[b].area_m2);
   }
+  EXPECT_EQ(model.n_bars(), paper.n_bars());
+  EXPECT_EQ(model.supports.size(), paper.supports.size());
   EXPECT_EQ(model.drivers[0].element, 2);
   EXPECT_EQ(model.nodes[model.drivers[0].pivot].name, "b1");  // D
   EXPECT_EQ(model.analysis.end_time_s, paper.analysis.end_time_s);
@@ -212,12 +337,27 @@ TEST(RoofGenerator, RejectsBadOptions) {
   EXPECT_NE(message(with([](RoofOptions& o) { o.step_s = 0; })).find("step"), std::string::npos);
   EXPECT_NE(message(with([](RoofOptions& o) { o.output_interval_s = 1.5e-3; })).find("output"),
             std::string::npos);
+  EXPECT_NE(message(with([](RoofOptions& o) { o.bearings = static_cast<RoofBearings>(7); }))
+                .find("bearings must be one of sliding|pinned, got the value 7"),
+            std::string::npos);
 }
 
-// The full 5 s deployment of a 3-unit truss at ΔT = 0: the driven post ends upright and every
-// post stays parallel to it (a parallelogram chain has one shape per driver angle).
-TEST(RoofDeployment, PlanarTrussDeploysUprightWithParallelPosts) {
-  const Model model = roof(3, 1, 0.0);
+// One table names the bearings both ways; sliding is the default and is listed first.
+TEST(RoofGenerator, BearingNamesRoundTrip) {
+  for (const auto& [name, bearings] : kRoofBearingNames) {
+    EXPECT_EQ(to_string(bearings), name);
+    EXPECT_EQ(parse_roof_bearings(name), bearings);
+  }
+  EXPECT_EQ(RoofOptions{}.bearings, RoofBearings::sliding);
+  EXPECT_EQ(kRoofBearingNames.front().second, RoofOptions{}.bearings);
+  EXPECT_EQ(roof_bearing_choices(), "sliding|pinned");
+  EXPECT_EQ(parse_roof_bearings("Sliding"), std::nullopt);
+  EXPECT_EQ(parse_roof_bearings(""), std::nullopt);
+}
+
+// Runs the model's 5 s deployment: the driven post follows ∫ω, every post stays parallel to it
+// and ends upright, and the bars carry no more than the deployment's elastic strain.
+void expect_upright_with_parallel_posts(const Model& model) {
   const testing::RunResult run = testing::run(model);
   ASSERT_EQ(run.report.status, RunStatus::completed) << run.report.message;
   ASSERT_NEAR(run.records.back().time_s, 5.0, 1e-12);
@@ -241,14 +381,58 @@ TEST(RoofDeployment, PlanarTrussDeploysUprightWithParallelPosts) {
                 kUprightTolerance_rad)
         << model.bars[post].name;
   }
+  double worst_strain = 0.0;
+  for (const StepRecord& r : run.records) {
+    for (const BarResult& bar : r.bars) worst_strain = std::max(worst_strain, std::abs(bar.mechanical_strain));
+  }
+  EXPECT_LT(worst_strain, kDeploymentStrain);
   ::testing::Test::RecordProperty("worst_parallel_rad", fmt::format("{:.3e}", worst_parallel));
+  ::testing::Test::RecordProperty("worst_strain", fmt::format("{:.3e}", worst_strain));
 }
 
-// The hot case (the default) deploys too: the truss is determinate, heating changes its shape
-// (the posts fan out away from the driven one) but the driven post still ends upright.
-TEST(RoofDeployment, HeatedPlanarTrussDeploys) {
-  const Model model = roof(4, 1, RoofOptions{}.delta_t_C);
+// The full 5 s deployment of a 3-unit truss at ΔT = 0: the driven post ends upright and every
+// post stays parallel to it (a parallelogram chain has one shape per driver angle), on either
+// bearings.
+TEST(RoofDeployment, PlanarTrussDeploysUprightWithParallelPosts) {
+  for (const RoofBearings bearings : {RoofBearings::sliding, RoofBearings::pinned}) {
+    SCOPED_TRACE(to_string(bearings));
+    expect_upright_with_parallel_posts(roof(3, 1, 0.0, bearings));
+  }
+}
+
+// Heated by the default +130 °C on sliding bearings the truss only grows by the free thermal
+// stretch k, so it deploys as it does cold: every post parallel to the driven one, all upright
+// at the end, no thermal stress, and its final shape the cold one's scaled by k about b_N.
+TEST(RoofDeployment, HeatedPlanarTrussOnSlidingBearingsDeploysAsItDoesCold) {
+  const Model model = roof(3, 1, RoofOptions{}.delta_t_C);
   ASSERT_EQ(model.temperature_change_C, TimeFunction::constant(130.0));
+  ASSERT_EQ(RoofOptions{}.bearings, RoofBearings::sliding);
+  expect_upright_with_parallel_posts(model);
+
+  const Model cold_model = roof(3, 1, 0.0);
+  const testing::RunResult hot = testing::run(model), cold = testing::run(cold_model);
+  ASSERT_EQ(hot.report.status, RunStatus::completed) << hot.report.message;
+  ASSERT_EQ(cold.report.status, RunStatus::completed) << cold.report.message;
+  const Assembler hot_assembler(model), cold_assembler(cold_model);
+  const double stretch = std::sqrt(1.0 + 2.0 * kRoofExpansion_per_C * 130.0);
+  const Eigen::Vector3d fixed = position(model, model.drivers[0].pivot);
+  double worst_m = 0.0;
+  for (int node = 0; node < model.n_nodes(); ++node) {
+    const Eigen::Vector3d scaled =
+        fixed +
+        stretch * (testing::node_position(cold_assembler, cold.records.back().q, node) - fixed);
+    worst_m = std::max(worst_m, (testing::node_position(hot_assembler, hot.records.back().q, node) -
+                                 scaled).lpNorm<Eigen::Infinity>());
+  }
+  EXPECT_LT(worst_m, kScaledDeploymentTolerance_m);
+  ::testing::Test::RecordProperty("worst_scaled_m", fmt::format("{:.2e}", worst_m));
+}
+
+// On pinned bearings (rigid ground that does not expand) the hot case deploys too: the truss is
+// determinate, heating changes its shape (the posts fan out away from the driven one) but the
+// driven post still ends upright. Pinned on purpose: the fan-out is the point.
+TEST(RoofDeployment, HeatedPlanarTrussOnPinsFansOutAndDeploys) {
+  const Model model = roof(4, 1, 130.0, RoofBearings::pinned);
   const testing::RunResult run = testing::run(model);
   ASSERT_EQ(run.report.status, RunStatus::completed) << run.report.message;
   const Assembler assembler(model);
@@ -277,11 +461,12 @@ TEST(RoofDeployment, ThreeDimensionalRoofRunsToTheEnd) {
   }
 }
 
-// Heated, the 3D roof is strained (redundant) but deploys: the diagonals raise the posts of
-// the trusses they push (roof.cpp); the other diagonal made this roof snap through at +89 °C.
-// Measured: every post within 0.33° of upright at the end.
-TEST(RoofDeployment, HeatedThreeDimensionalRoofDeploys) {
-  const Model model = roof(3, 2, 130.0);
+// Heated on pinned bearings, the 3D roof is strained (redundant) but deploys: the diagonals
+// raise the posts of the trusses they push (roof.cpp); the other diagonal made this roof snap
+// through at +89 °C. Measured: every post within 0.33° of upright at the end. Pinned on
+// purpose: the thermal strain of the redundant bars is the point.
+TEST(RoofDeployment, HeatedThreeDimensionalRoofOnPinsDeploys) {
+  const Model model = roof(3, 2, 130.0, RoofBearings::pinned);
   const testing::RunResult run = testing::run(model);
   ASSERT_EQ(run.report.status, RunStatus::completed) << run.report.message;
   ASSERT_NEAR(run.records.back().time_s, 5.0, 1e-12);
@@ -292,13 +477,87 @@ TEST(RoofDeployment, HeatedThreeDimensionalRoofDeploys) {
   }
 }
 
+// Heated on sliding bearings the 3D roof grows without stress and deploys as it does cold: every
+// post upright at the end to the same tolerance as at ΔT = 0.
+TEST(RoofDeployment, HeatedThreeDimensionalRoofOnSlidingBearingsDeploysAsItDoesCold) {
+  const Model model = roof(3, 2, 130.0, RoofBearings::sliding);
+  const testing::RunResult run = testing::run(model);
+  ASSERT_EQ(run.report.status, RunStatus::completed) << run.report.message;
+  ASSERT_NEAR(run.records.back().time_s, 5.0, 1e-12);
+  const Assembler assembler(model);
+  for (const int post : bars_named(model, "post")) {
+    EXPECT_NEAR(post_angle(assembler, run.records.back().q, post), 90.0 * kDegree,
+                kFollowerUprightTolerance_rad)
+        << model.bars[post].name;
+  }
+  for (const BarResult& bar : run.records.front().bars) {
+    EXPECT_LT(std::abs(bar.mechanical_strain), kFreeExpansionStrain);
+  }
+}
+
+// The closed form of sliding bearings (roof.hpp): at t = 0 a uniform ΔT leaves the roof its
+// cold shape scaled about the fixed bearing b_N^0 by the free stretch k = √(1 + 2αΔT) of a
+// Green–Lagrange bar (docs/theory.md, "Bar element"), with no mechanical strain in any bar.
+// On pinned bearings the same roofs fan out or strain, so every check here would fail.
+void expect_free_thermal_expansion(int n_units, int n_trusses, double delta_t_C) {
+  const Model model = first_step_only(roof(n_units, n_trusses, delta_t_C));
+  SCOPED_TRACE(fmt::format("{}, ΔT = {} °C", model.name, delta_t_C));
+  const testing::RunResult run = testing::run(model);
+  ASSERT_EQ(run.report.status, RunStatus::completed) << run.report.message;
+  ASSERT_EQ(run.records.front().time_s, 0.0);
+  const Assembler assembler(model);
+  const double stretch = std::sqrt(1.0 + 2.0 * kRoofExpansion_per_C * delta_t_C);
+  const Eigen::Vector3d fixed = position(model, model.drivers.back().pivot);  // b_N^0
+  double worst_m = 0.0;
+  for (int node = 0; node < model.n_nodes(); ++node) {
+    const Eigen::Vector3d expected = fixed + stretch * (position(model, node) - fixed);
+    const Eigen::Vector3d actual = testing::node_position(assembler, run.records.front().q, node);
+    worst_m = std::max(worst_m, (actual - expected).lpNorm<Eigen::Infinity>());
+  }
+  EXPECT_LT(worst_m, kFreeExpansionTolerance_m);
+  double worst_strain = 0.0;
+  for (const BarResult& bar : run.records.front().bars) {
+    worst_strain = std::max(worst_strain, std::abs(bar.mechanical_strain));
+  }
+  EXPECT_LT(worst_strain, kFreeExpansionStrain);
+  // The far end really moved: by (k − 1) N s, 24 mm heated, −32 mm cooled for 50 units.
+  const Eigen::Vector3d far = testing::node_position(assembler, run.records.front().q, 0);
+  EXPECT_NEAR(far.x(), fixed.x() - stretch * n_units * kRoofBay_m, kFreeExpansionTolerance_m);
+  ::testing::Test::RecordProperty(fmt::format("worst_m_{}_{}_{}", n_units, n_trusses, delta_t_C),
+                                  fmt::format("{:.2e}", worst_m));
+}
+
+TEST(RoofThermal, HeatedAndCooledPlanarRoofOnSlidingBearingsOnlyScales) {
+  expect_free_thermal_expansion(50, 1, 130.0);
+  expect_free_thermal_expansion(50, 1, -170.0);
+}
+
+TEST(RoofThermal, HeatedAndCooledThreeDimensionalRoofOnSlidingBearingsOnlyScales) {
+  expect_free_thermal_expansion(5, 3, 130.0);
+  expect_free_thermal_expansion(5, 3, -170.0);
+}
+
+// Issue 12: on pinned bearings a heated planar roof of 1000 units has no initial equilibrium
+// ("no convergence ... thermal load reached 0.0%"); on sliding bearings it starts and steps.
+TEST(RoofThermal, ThousandUnitsOnSlidingBearingsStartHeated) {
+  const Model model = first_step_only(roof(1000, 1, 130.0));
+  const testing::RunResult run = testing::run(model);
+  ASSERT_EQ(run.report.status, RunStatus::completed) << run.report.message;
+  ASSERT_EQ(run.records.size(), 2u);
+  for (const BarResult& bar : run.records.front().bars) {
+    EXPECT_LT(std::abs(bar.mechanical_strain), kFreeExpansionStrain);
+  }
+}
+
 TEST(RoofFile, SavedRoofLoadsBackToTheSameModel) {
-  for (const auto& [n, m] : {std::pair{3, 1}, std::pair{2, 3}}) {
-    const Model model = roof(n, m, -170.0);
+  for (const auto& [n, m, bearings] :
+       {std::tuple{3, 1, RoofBearings::sliding}, std::tuple{2, 3, RoofBearings::sliding},
+        std::tuple{3, 1, RoofBearings::pinned}, std::tuple{2, 3, RoofBearings::pinned}}) {
+    const Model model = roof(n, m, -170.0, bearings);
     std::ostringstream text;
     save_model(model, text);
     const Model reloaded = load_model_from_string(text.str(), "generated roof");
-    SCOPED_TRACE(model.name);
+    SCOPED_TRACE(fmt::format("{}, {}", model.name, to_string(bearings)));
     // The writer writes every value exactly, so equal files mean equal models.
     std::ostringstream again;
     save_model(reloaded, again);
@@ -325,6 +584,13 @@ TEST(RoofFile, SavedRoofLoadsBackToTheSameModel) {
     }
     EXPECT_EQ(reloaded.temperature_change_C, model.temperature_change_C);
     EXPECT_EQ(reloaded.analysis.output_interval_s, model.analysis.output_interval_s);
+    ASSERT_EQ(reloaded.supports.size(), model.supports.size());
+    for (std::size_t k = 0; k < model.supports.size(); ++k) {
+      EXPECT_EQ(reloaded.supports[k].node, model.supports[k].node);
+      for (int axis = 0; axis < model.dimension; ++axis) {
+        EXPECT_EQ(reloaded.supports[k].axes[axis], model.supports[k].axes[axis]) << k << axis;
+      }
+    }
   }
 }
 
@@ -334,12 +600,18 @@ TEST(RoofCommand, WritesAModelThatChecksAndRuns) {
   const std::string file = (folder.path() / "roof.yaml").string();
   const auto generated = testing::run_cli("generate roof --units 2 --trusses 2 --out " + file);
   ASSERT_EQ(generated.exit_code, 0) << generated.output;
-  EXPECT_NE(generated.output.find("12 nodes, 15 bars"), std::string::npos) << generated.output;
+  // 15 bars above the bearings, 9 in the bottom grid (sliding bearings, the default).
+  EXPECT_NE(generated.output.find("12 nodes, 24 bars"), std::string::npos) << generated.output;
   const std::string text = testing::read_text(file);
-  EXPECT_EQ(text.rfind("# Generated by: deploydyn generate roof --units 2 --trusses 2", 0), 0u);
+  EXPECT_EQ(text.rfind("# Generated by: deploydyn generate roof --units 2 --trusses 2 --delta-t "
+                       "130 --bearings sliding\n",
+                       0),
+            0u)
+      << text.substr(0, 200);
+  EXPECT_NE(text.find("# Bearings: sliding (expansion bearings)"), std::string::npos);
   EXPECT_NE(text.find("∫ω = 85°"), std::string::npos);
   const Model model = load_model(file);
-  EXPECT_EQ(model.n_bars(), 15);
+  EXPECT_EQ(model.n_bars(), 24);
   EXPECT_EQ(model.temperature_change_C, TimeFunction::constant(130.0));  // the default case
 
   const auto checked = testing::run_cli("check " + file);
@@ -356,8 +628,24 @@ TEST(RoofCommand, WritesToStandardOutputAndTakesTheTemperature) {
   ASSERT_EQ(o.exit_code, 0) << o.output;
   const Model model = load_model_from_string(o.output, "stdout");
   EXPECT_EQ(model.dimension, 2);
-  EXPECT_EQ(model.n_bars(), 3);
+  EXPECT_EQ(model.n_bars(), 4);  // post, chord, post, bottom chord
   EXPECT_EQ(model.temperature_change_C, TimeFunction::constant(-170.0));
+}
+
+// --bearings pinned writes the model make_roof builds with pinned bearings, and says so.
+TEST(RoofCommand, TakesTheBearings) {
+  const auto o = testing::run_cli("generate roof --units 3 --bearings pinned 2>/dev/null");
+  ASSERT_EQ(o.exit_code, 0) << o.output;
+  EXPECT_EQ(o.output.rfind("# Generated by: deploydyn generate roof --units 3 --trusses 1 "
+                           "--delta-t 130 --bearings pinned\n",
+                           0),
+            0u)
+      << o.output.substr(0, 200);
+  EXPECT_NE(o.output.find("Bearings: pinned"), std::string::npos);
+  std::ostringstream expected;
+  save_model(roof(3, 1, 130.0, RoofBearings::pinned), expected);
+  EXPECT_NE(o.output.find(expected.str()), std::string::npos) << "the file after its header";
+  EXPECT_EQ(load_model_from_string(o.output, "stdout").n_bars(), 7);
 }
 
 TEST(RoofCommand, BadArgumentsExitWithTwo) {
@@ -374,6 +662,8 @@ TEST(RoofCommand, BadArgumentsExitWithTwo) {
       {"generate", "name a structure"},
       {"generate roof --units 2 extra", "'extra'"},
       {"generate roof --units 2 --bogus", "--bogus"},
+      {"generate roof --units 2 --bearings hinged", "bearings must be sliding|pinned, got 'hinged'"},
+      {"generate roof --units 2 --bearings", "--bearings"},
   };
   for (const Case& c : cases) {
     const auto o = testing::run_cli(c.arguments);
@@ -389,6 +679,7 @@ TEST(RoofCommand, BadArgumentsExitWithTwo) {
   const auto help = testing::run_cli("generate roof --help");
   EXPECT_EQ(help.exit_code, 0);
   EXPECT_NE(help.output.find("--delta-t"), std::string::npos) << help.output;
+  EXPECT_NE(help.output.find("--bearings"), std::string::npos) << help.output;
 }
 
 }  // namespace

@@ -3,9 +3,12 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <optional>
 #include <stdexcept>
 #include <string>
+#include <string_view>
 #include <utility>
 #include <vector>
 
@@ -48,7 +51,7 @@ class RoofBuilder {
     return model_.n_bars() - 1;
   }
 
-  void pin(int node) { model_.supports.push_back({node, {true, true, true}}); }
+  void support(int node, std::array<bool, 3> axes) { model_.supports.push_back({node, axes}); }
 
   void drive(std::string name, int post, int pivot) {
     Driver driver;
@@ -75,15 +78,50 @@ double output_interval(const RoofOptions& options, long long n_bars) {
   return options.step_s * std::max(1.0, std::round(target / options.step_s));
 }
 
+// Axes (x, y, z) held by the bearing under b_i^j (roof.hpp): pinned all; sliding y everywhere,
+// x on the line of the driven corner's posts (i = N), z on truss 0's line (j = 0), so that
+// the lines and planes they leave free pass through the fixed corner b_N^0. Planar trusses
+// are truss 0; their z is no coordinate.
+std::array<bool, 3> bearing_axes(RoofBearings bearings, int n_units, int j, int i) {
+  if (bearings == RoofBearings::pinned) return {true, true, true};
+  return {i == n_units, true, j == 0};
+}
+
 }  // namespace
 
-RoofSize roof_size(int n_units, int n_trusses) {
+std::string_view to_string(RoofBearings bearings) {
+  for (const auto& [name, value] : kRoofBearingNames) {
+    if (value == bearings) return name;
+  }
+  return "(unnamed bearings)";  // a value cast from a number: validate() rejects it
+}
+
+std::optional<RoofBearings> parse_roof_bearings(std::string_view word) {
+  for (const auto& [name, value] : kRoofBearingNames) {
+    if (name == word) return value;
+  }
+  return std::nullopt;
+}
+
+std::string roof_bearing_choices() {
+  std::string choices;
+  for (const auto& [name, value] : kRoofBearingNames) {
+    if (!choices.empty()) choices += '|';
+    choices += name;
+  }
+  return choices;
+}
+
+RoofSize roof_size(int n_units, int n_trusses, RoofBearings bearings) {
   const long long n = n_units, m = n_trusses, posts = n + 1;
   RoofSize size;
   size.n_nodes = 2 * m * posts;
   size.n_supports = m * posts;
   // Per truss posts + chords; between neighbours purlins + diagonals.
-  size.n_bars = m * (posts + n) + (m - 1) * (posts + n);
+  const long long grid_bars = m * n + (m - 1) * (posts + n);  // chords, purlins, diagonals
+  size.n_bars = m * posts + grid_bars;
+  // Sliding: the bottom grid repeats the top one.
+  if (bearings == RoofBearings::sliding) size.n_bars += grid_bars;
   size.n_drivers = m == 1 ? 1 : posts;
   return size;
 }
@@ -94,7 +132,12 @@ void validate(const RoofOptions& options) {
     reject(
         fmt::format("trusses must be at least 1 (1: a planar truss), got {}", options.n_trusses));
   }
-  const RoofSize size = roof_size(options.n_units, options.n_trusses);
+  if (!std::ranges::any_of(kRoofBearingNames,
+                           [&](const auto& entry) { return entry.second == options.bearings; })) {
+    reject(fmt::format("bearings must be one of {}, got the value {}", roof_bearing_choices(),
+                       static_cast<int>(options.bearings)));
+  }
+  const RoofSize size = roof_size(options.n_units, options.n_trusses, options.bearings);
   if (size.n_bars > kRoofMaxBars) {
     reject(fmt::format("{} units × {} trusses make {} bars; at most {} are allowed",
                        options.n_units, options.n_trusses, size.n_bars, kRoofMaxBars));
@@ -131,7 +174,8 @@ Model make_roof(const RoofOptions& options) {
   validate(options);
   const int n_units = options.n_units, n_trusses = options.n_trusses, n_posts = n_units + 1;
   const bool planar = n_trusses == 1;
-  const RoofSize size = roof_size(n_units, n_trusses);
+  const bool sliding = options.bearings == RoofBearings::sliding;
+  const RoofSize size = roof_size(n_units, n_trusses, options.bearings);
 
   Model model;
   model.dimension = planar ? 2 : 3;
@@ -139,11 +183,19 @@ Model make_roof(const RoofOptions& options) {
   model.name = planar
                    ? fmt::format("foldable roof truss, {} {}", n_units, units)
                    : fmt::format("foldable roof, {} trusses of {} {}", n_trusses, n_units, units);
+  const char* structure =
+      planar ? (sliding ? "parallelogram units sharing posts, bottom chords on expansion bearings "
+                          "(last post's foot fixed, the others sliding), last post driven"
+                        : "parallelogram units sharing posts, bottom nodes pinned, last post driven")
+             : (sliding ? "trusses joined by purlins and roof-plane diagonals above and below, on "
+                          "expansion bearings (one fixed corner, guided edges, the rest sliding), "
+                          "posts of truss 0 driven"
+                        : "trusses joined by purlins and roof-plane diagonals, posts of truss 0 "
+                          "driven");
   model.description = fmt::format(
       "generated by deploydyn generate roof: {}; bars of the parallel linkage of Cai et al. 2017; "
       "posts turned from 5 to 90 degrees by Eq. (23)'s trapezoid scaled to 85 degrees",
-      planar ? "parallelogram units sharing posts, bottom nodes pinned, last post driven"
-             : "trusses joined by purlins and roof-plane diagonals, posts of truss 0 driven");
+      structure);
   model.materials.push_back({"steel", kRoofYoungsModulus_Pa, kRoofExpansion_per_C, {}});
   model.temperature_change_C = TimeFunction::constant(options.delta_t_C);
   model.nodes.reserve(static_cast<std::size_t>(size.n_nodes));
@@ -160,7 +212,7 @@ Model make_roof(const RoofOptions& options) {
   // Truss j: nodes b_i, t_i interleaved (b_i at 2i, t_i at 2i + 1 from the truss's first node),
   // bars post_i, chord_i interleaved. One unit is the paper's linkage: b0, t0, t1, b1 are A, B,
   // C, D and post0, chord0, post1 are bars 1, 2, 3.
-  const auto name = [&](const char* kind, int j, int i) {
+  const auto name = [&](std::string_view kind, int j, int i) {
     return planar ? fmt::format("{}{}", kind, i) : fmt::format("{}{}_{}", kind, j, i);
   };
   const auto bottom = [&](int j, int i) { return 2 * (j * n_posts + i); };
@@ -170,7 +222,8 @@ Model make_roof(const RoofOptions& options) {
   for (int j = 0; j < n_trusses; ++j) {
     for (int i = 0; i < n_posts; ++i) {
       const Eigen::Vector3d base(i * s, 0.0, j * w);
-      build.pin(build.node(name("b", j, i), base));
+      build.support(build.node(name("b", j, i), base),
+                    bearing_axes(options.bearings, n_units, j, i));
       build.node(name("t", j, i), base + post);
       const int post_bar =
           build.bar(name("post", j, i), bottom(j, i), top(j, i), kRoofPostLength_m);
@@ -178,16 +231,31 @@ Model make_roof(const RoofOptions& options) {
       if (i + 1 < n_posts) build.bar(name("chord", j, i), top(j, i), top(j, i) + 2, s);
     }
   }
-  for (int j = 0; j + 1 < n_trusses; ++j) {
-    for (int i = 0; i < n_posts; ++i) {
-      build.bar(name("purlin", j, i), top(j, i), top(j + 1, i), w);
-      // t_{i+1}^j–t_i^{j+1}, not t_i^j–t_{i+1}^{j+1}: heated, it pushes the top nodes of truss
-      // j + 1 towards −x, which raises their posts; the other way it flattens them until they
-      // snap through (2 trusses of 3 units did at +89 °C: the far post's top could move only
-      // L (1 − cos 5°) = 1.1 mm along x before the post lay flat).
-      if (i + 1 < n_posts) build.bar(name("brace", j, i), top(j, i + 1), top(j + 1, i), diagonal_m);
+  // The grid of chords, purlins and diagonals through the nodes `at(j, i)`, bar names prefixed.
+  const auto grid = [&](std::string_view prefix, const auto& at, bool with_chords) {
+    for (int j = 0; with_chords && j < n_trusses; ++j) {
+      for (int i = 0; i + 1 < n_posts; ++i) {
+        build.bar(name(fmt::format("{}chord", prefix), j, i), at(j, i), at(j, i + 1), s);
+      }
     }
-  }
+    for (int j = 0; j + 1 < n_trusses; ++j) {
+      for (int i = 0; i < n_posts; ++i) {
+        build.bar(name(fmt::format("{}purlin", prefix), j, i), at(j, i), at(j + 1, i), w);
+        // t_{i+1}^j–t_i^{j+1}, not t_i^j–t_{i+1}^{j+1}: heated on pinned bearings, it pushes the
+        // top nodes of truss j + 1 towards −x, which raises their posts; the other way it
+        // flattens them until they snap through (2 trusses of 3 units did at +89 °C: the far
+        // post's top could move only L (1 − cos 5°) = 1.1 mm along x before the post lay flat).
+        if (i + 1 < n_posts) {
+          build.bar(name(fmt::format("{}brace", prefix), j, i), at(j, i + 1), at(j + 1, i),
+                    diagonal_m);
+        }
+      }
+    }
+  };
+  // The top chords were built with their trusses, in the order the models before bearings had.
+  grid("", top, false);
+  // Expansion bearings stand on a triangulated bottom grid instead of on rigid ground.
+  if (sliding) grid("bottom_", bottom, true);
   if (planar) {
     build.drive("motor", truss0_posts.back(), bottom(0, n_units));
   } else {
