@@ -413,16 +413,22 @@ PYBIND11_MODULE(_core, m) {
       py::arg("with_position") = true);
   m.def(
       "roof_yaml",
-      [](int units, int trusses, double delta_t_C) {
+      [](int units, int trusses, double delta_t_C, const std::string& bearings) {
         RoofOptions options;
         options.n_units = units;
         options.n_trusses = trusses;
         options.delta_t_C = delta_t_C;
+        const auto kind = parse_roof_bearings(bearings);
+        if (!kind) {
+          throw std::invalid_argument("roof: bearings must be " + roof_bearing_choices() + ", got '" +
+                                      bearings + "'");
+        }
+        options.bearings = *kind;
         std::ostringstream out;
         save_model(make_roof(options), out);  // std::invalid_argument → ValueError
         return out.str();
       },
-      py::arg("units"), py::arg("trusses"), py::arg("delta_t"),
+      py::arg("units"), py::arg("trusses"), py::arg("delta_t"), py::arg("bearings"),
       "The model file `deploydyn generate roof` writes (generators/roof.hpp)");
   m.def(
       "parse_override",

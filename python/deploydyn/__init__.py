@@ -427,15 +427,18 @@ def from_dict(spec, source_name=None, overrides=None):
     return Model(("text", text, source_name, False), _override_pairs("from_dict", overrides))
 
 
-def roof(units, trusses=1, delta_t=130.0, overrides=None):
+def roof(units, trusses=1, delta_t=130.0, bearings="sliding", overrides=None):
     """A foldable roof of the paper's parallel four-bar units, as `deploydyn generate roof` writes
     it: trusses=1 a planar truss of `units` units, trusses > 1 a 3D roof; posts deploy from 5° to
-    upright in 5 s; delta_t (°C) is the model-wide temperature change. units and trusses are
-    ints (a float, even 2.0, is refused: TypeError)."""
+    upright in 5 s; delta_t (°C) is the model-wide temperature change; bearings "sliding"
+    (expansion bearings and bottom members: free to expand, the default) or "pinned" (every foot
+    pinned to a ground that does not expand). units and trusses are ints (a float, even 2.0, is
+    refused: TypeError)."""
     units = _count("roof", "units", units)
     trusses = _count("roof", "trusses", trusses)
     delta_t = float(_number("roof", "delta_t", delta_t))
-    text = _core.roof_yaml(units, trusses, delta_t)
+    bearings = _text("roof", "bearings", bearings)
+    text = _core.roof_yaml(units, trusses, delta_t, bearings)
     return Model(("text", text, f"<roof of {trusses} x {units} units>", False),
                  _override_pairs("roof", overrides))
 

@@ -8,14 +8,21 @@ import deploydyn
 from conftest import CLI
 
 
-def test_planar_roof_is_what_the_command_writes(tmp_path):
-    model = deploydyn.roof(3, delta_t=0)
+@pytest.mark.parametrize("bearings, n_elements", [("sliding", 10), ("pinned", 7)])
+def test_planar_roof_is_what_the_command_writes(tmp_path, bearings, n_elements):
+    # 4 posts and 3 chords; sliding bearings add 3 bottom chords.
+    model = deploydyn.roof(3, delta_t=0, bearings=bearings)
     assert model.dimension == 2
-    assert len(model.nodes) == 8 and len(model.elements) == 7 and len(model.drivers) == 1
+    assert len(model.nodes) == 8 and len(model.elements) == n_elements and len(model.drivers) == 1
     file = tmp_path / "roof.yaml"
-    subprocess.run([str(CLI), "generate", "roof", "--units", "3", "--delta-t", "0", "--out",
-                    str(file)], check=True, capture_output=True)
+    subprocess.run([str(CLI), "generate", "roof", "--units", "3", "--delta-t", "0", "--bearings",
+                    bearings, "--out", str(file)], check=True, capture_output=True)
     assert model.to_yaml() == deploydyn.load(file).to_yaml()
+
+
+def test_unknown_bearings_are_a_value_error():
+    with pytest.raises(ValueError, match="bearings must be sliding"):
+        deploydyn.roof(2, bearings="hinged")
 
 
 def test_three_dimensional_roof_deploys_upright():
