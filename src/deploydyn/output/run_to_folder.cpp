@@ -7,6 +7,7 @@
 #include "deploydyn/output/background_sink.hpp"
 #include "deploydyn/output/envelope.hpp"
 #include "deploydyn/output/history_writer.hpp"
+#include "deploydyn/output/path_to_folder.hpp"
 #include "deploydyn/output/summary_writer.hpp"
 #include "deploydyn/output/vtk_writer.hpp"
 
@@ -41,6 +42,10 @@ RunReport run_to_folder(const Model& model, const std::filesystem::path& folder,
 
 RunReport run_to_folder(const Model& model, const std::filesystem::path& folder,
                         const RunControl& control, Envelope& envelope) {
+  if (model.analysis.type == AnalysisType::continuation) {
+    envelope = Envelope();  // a path has no time history to envelope
+    return run_path_to_folder(model, folder, control);
+  }
   const Assembler assembler(model);  // may throw before any file is touched
   std::filesystem::create_directories(folder);
   // The model as run, --set overrides applied: the folder says how its results were made.
