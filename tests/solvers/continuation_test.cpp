@@ -136,6 +136,7 @@ void expect_limit_points_on_closed_form(const MisesTruss& truss, const Continuat
     const PathEvent& e = *limits[k];
     const double sign = k == 0 ? 1.0 : -1.0;
     EXPECT_LE(e.parameter_error, stated) << "the solver's own bound meets its tolerance";
+    EXPECT_TRUE(e.within_tolerance);
     EXPECT_NEAR(e.parameter, sign * mu_star, e.parameter_error + kEquilibriumMuShare * mu_star);
     // Near y*, |μ − μ*| = ½ |P''(y*)| (y − y*)² / P_ref, P'' = −6 EA y / L0³.
     const double curvature = 6.0 * truss.axial_stiffness_N * truss.limit_height_m() / std::pow(truss.l0(), 3);

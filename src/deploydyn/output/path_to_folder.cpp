@@ -87,6 +87,7 @@ std::string path_summary_json(const Assembler& assembler, const ContinuationResu
     ordered_json event = {{"kind", to_string(e.kind)},
                           {"mu", e.parameter},
                           {"mu_error", e.parameter_error},
+                          {"within_tolerance", e.within_tolerance},
                           {parameter_column(model), e.parameter * unit},
                           {"eigenvalue_N_m", e.eigenvalue_N_m},
                           {"description", e.description},

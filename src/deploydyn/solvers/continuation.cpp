@@ -352,7 +352,10 @@ void PathTracer::locate(const PathPoint& from, const Tangent& t_from, const Tria
   const End& best = std::abs(lo.value) <= std::abs(hi.value) ? lo : hi;
   PathPoint point = *best.point;
   point.event = -1;
-  record_event(kind, std::move(point), *best.tangent, bound());
+  const double reached = bound();
+  record_event(kind, std::move(point), *best.tangent, reached);
+  result_.events.back().within_tolerance = reached <= tolerance;
+  if (reached > tolerance) result_.events.back().description += " (not located to the tolerance)";
 }
 
 bool PathTracer::land_on_end(const PathPoint& before, const PathPoint& after) {

@@ -90,6 +90,9 @@ struct PathEvent {
   PathEventKind kind = PathEventKind::limit_point;
   double parameter = 0.0;        // μ at the located point
   double parameter_error = 0.0;  // bound on |μ − μ*| (0 for singular constraints: not located)
+  // False when the location stopped (corrector failures, iteration limit) before the bound
+  // reached options.location_tolerance; the bound is still the one reached.
+  bool within_tolerance = true;
   int point = -1;                // the located point in ContinuationResult::points
   double eigenvalue_N_m = 0.0;   // the critical eigenvalue of Zᵀ K_T Z there (N/m)
   Eigen::VectorXd mode;          // critical mode in q, unit length (empty: none computed)
