@@ -154,7 +154,7 @@ int check_command(const std::string& model_file, const std::vector<std::string>&
                                              : " (over-constrained with rigid bars: bars will be strained)");
   fmt::print("thermal     ΔT(0) = {:g} °C on bars without their own\n", model.temperature_change_C.value(0.0));
   fmt::print("analysis    {}, t = 0 → {:g} s, step {:g} s ({:.0f} steps), Newmark β = {:g}, γ = {:g}\n",
-             a.type == AnalysisType::dynamic ? "dynamic" : "static", a.end_time_s, a.step_s,
+             to_string(a.type), a.end_time_s, a.step_s,
              a.end_time_s / a.step_s, a.integrator.beta, a.integrator.gamma);
   const LinearSolverKind solver = choose_linear_solver(a.linear_solver, assembler.n_unknowns());
   fmt::print("linear      {} for {} unknowns{}\n",

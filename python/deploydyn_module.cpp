@@ -258,7 +258,7 @@ py::list drivers_info(const Model& model) {
 py::dict analysis_info(const Model& model) {
   const AnalysisOptions& a = model.analysis;
   py::dict d;
-  d["type"] = a.type == AnalysisType::dynamic ? "dynamic" : "static";
+  d["type"] = to_string(a.type);
   d["end"] = a.end_time_s;
   d["step"] = a.step_s;
   d["output_interval"] = a.output_interval_s > 0.0 ? a.output_interval_s : a.step_s;

@@ -122,6 +122,37 @@ TEST(ModelRoundTrip, PaperExamples) {
   }
 }
 
+// analysis.type continuation keeps its own keys (parameter, start, end, eigenvalues, max_steps)
+// and no time-stepping ones.
+TEST(ModelRoundTrip, ContinuationAnalysis) {
+  const Model model = load_model_from_string(R"(
+nodes: {A: [-1, 0], B: [1, 0], C: [0, 0.1]}
+materials: {steel: {E: 2.0e11, alpha: 1.2e-5}}
+elements:
+  1: {nodes: [A, C], area: 1.0e-4, material: steel, mass: 1}
+  2: {nodes: [B, C], area: 1.0e-4, material: steel, mass: 1}
+supports: [{node: A}, {node: B}]
+loads: [{node: C, force: [0, -1.0e+4]}]
+analysis: {type: continuation, parameter: load, start: -0.25, end: 1.1, eigenvalues: 2, max_steps: 300,
+           linear_solver: dense, newton: {tol_force: 1.0e-9}}
+)", "continuation");
+  const ContinuationSettings& c = model.analysis.continuation;
+  EXPECT_EQ(model.analysis.type, AnalysisType::continuation);
+  EXPECT_EQ(c.parameter, PathParameter::load);
+  EXPECT_EQ(c.start, -0.25);
+  EXPECT_EQ(c.end, 1.1);
+  EXPECT_EQ(c.n_eigenvalues, 2);
+  EXPECT_EQ(c.max_steps, 300);
+  EXPECT_EQ(model.analysis.newton.force_tolerance, 1e-9);
+  expect_round_trip(model);
+  const Model reloaded = load_model_from_string(saved(model), "saved");
+  EXPECT_EQ(reloaded.analysis.continuation.parameter, c.parameter);
+  EXPECT_EQ(reloaded.analysis.continuation.start, c.start);
+  EXPECT_EQ(reloaded.analysis.continuation.end, c.end);
+  EXPECT_EQ(reloaded.analysis.continuation.n_eigenvalues, c.n_eigenvalues);
+  EXPECT_EQ(reloaded.analysis.continuation.max_steps, c.max_steps);
+}
+
 // Every kind of function, driver and option, in 3D, with numbers that have no short decimal.
 TEST(ModelRoundTrip, EveryFeature) {
   const Model model = load_model_from_string(R"(

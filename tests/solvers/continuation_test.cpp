@@ -136,6 +136,7 @@ void expect_limit_points_on_closed_form(const MisesTruss& truss, const Continuat
     const PathEvent& e = *limits[k];
     const double sign = k == 0 ? 1.0 : -1.0;
     EXPECT_LE(e.parameter_error, stated) << "the solver's own bound meets its tolerance";
+    EXPECT_TRUE(e.within_tolerance);
     EXPECT_NEAR(e.parameter, sign * mu_star, e.parameter_error + kEquilibriumMuShare * mu_star);
     // Near y*, |μ − μ*| = ½ |P''(y*)| (y − y*)² / P_ref, P'' = −6 EA y / L0³.
     const double curvature = 6.0 * truss.axial_stiffness_N * truss.limit_height_m() / std::pow(truss.l0(), 3);
@@ -156,22 +157,27 @@ void expect_limit_points_on_closed_form(const MisesTruss& truss, const Continuat
   }
 }
 
-ContinuationOptions snap_through_options(const MisesTruss& truss) {
+ContinuationOptions snap_through_options(const MisesTruss& truss, double end_share = 1.5) {
   ContinuationOptions options;
   options.parameter = PathParameter::load;
   options.start = 0.0;
-  options.end = 1.5 * truss.limit_load_N() / truss.reference_load_N;
+  options.end = end_share * truss.limit_load_N() / truss.reference_load_N;
   options.n_eigenvalues = 2;
   return options;
 }
 
 // The whole snap-through: μ rises to P*, falls through zero (the flat truss) to −P*, rises
-// again, and the path ends below the mirrored stress-free position −c.
-TEST(Continuation, MisesTrussSnapThroughFollowsTheClosedForm) {
+// again, and the path ends below the mirrored stress-free position −c. For ends just above P*
+// (where a hyperplane near the limit point also cuts the far branch, a jump to guard against)
+// to far beyond it.
+class MisesSnapThrough : public ::testing::TestWithParam<double> {};
+INSTANTIATE_TEST_SUITE_P(Continuation, MisesSnapThrough, ::testing::Values(1.05, 1.45, 1.5, 3.0));
+
+TEST_P(MisesSnapThrough, FollowsTheClosedForm) {
   const MisesTruss truss;
   const Model model = truss.model();
   const Assembler assembler(model);
-  const ContinuationOptions options = snap_through_options(truss);
+  const ContinuationOptions options = snap_through_options(truss, GetParam());
   const ContinuationResult result = trace(assembler, options);
   ASSERT_EQ(result.end, ContinuationEnd::reached_end) << result.message;
   EXPECT_DOUBLE_EQ(result.points.back().parameter, options.end);
@@ -255,7 +261,11 @@ struct HeatedStrut {
 
 // Thermal continuation to twice the critical heating: one bifurcation at μ* = kL/(2 EA α ΔT),
 // no limit point; the lowest eigenvalue follows k + 2S/L on the way, the mode is lateral.
-TEST(Continuation, HeatedStrutBifurcatesAtTheClosedFormTemperature) {
+// With several largest steps: steps of 0.1 land exactly on μ* = 0.5, where J is singular.
+class HeatedStrutBifurcation : public ::testing::TestWithParam<double> {};
+INSTANTIATE_TEST_SUITE_P(Continuation, HeatedStrutBifurcation, ::testing::Values(0.02, 0.1, 0.25));
+
+TEST_P(HeatedStrutBifurcation, AtTheClosedFormTemperature) {
   const HeatedStrut strut;
   const Model model = strut.model();
   const Assembler assembler(model);
@@ -264,6 +274,8 @@ TEST(Continuation, HeatedStrutBifurcatesAtTheClosedFormTemperature) {
   options.start = 0.0;
   options.end = 2.0 * strut.critical_factor();
   options.n_eigenvalues = 2;
+  options.max_step = GetParam();
+  options.initial_step = std::min(options.initial_step, options.max_step);
   const ContinuationResult result = trace(assembler, options);
   ASSERT_EQ(result.end, ContinuationEnd::reached_end) << result.message;
   EXPECT_TRUE(events_of(result, PathEventKind::limit_point).empty()) << "μ never turns";

@@ -53,7 +53,7 @@ ContinuationResult thermal_path(const std::string& linkage, double reach_C, doub
   options.end = 1.0;
   options.max_step = max_step;
   options.initial_step = max_step;
-  options.max_steps = 400;
+  options.max_steps = 2000;
   return trace_path(assembler, options, *system, assembler.initial_coordinates(),
                     Eigen::VectorXd::Zero(assembler.n_equations()));
 }

@@ -433,13 +433,18 @@ class ModelReader {
   // Analysis and output -----------------------------------------------------------------------
 
   void read_analysis(const YamlValue& spec) {
+    if (const auto type = spec.find("type"); type && type->is_scalar() && type->text() == "continuation") {
+      read_continuation(spec);
+      return;
+    }
     spec.expect_keys(
         {"type", "end", "step", "output_interval", "load_steps", "mass", "integrator", "newton",
          "adaptive", "linear_solver"});
     AnalysisOptions& analysis = model_.analysis;
     if (const auto type = spec.find("type")) {
-      analysis.type = type->choice({"static", "dynamic"}) == 0 ? AnalysisType::quasi_static
-                                                               : AnalysisType::dynamic;
+      analysis.type = type->choice({"static", "dynamic", "continuation"}) == 0
+                          ? AnalysisType::quasi_static
+                          : AnalysisType::dynamic;
     }
     analysis.end_time_s = spec.number_or("end", analysis.end_time_s, Sign::positive, "s");
     analysis.step_s = spec.number_or("step", analysis.step_s, Sign::positive, "s");
@@ -489,6 +494,32 @@ class ModelReader {
     if (const auto adaptive = spec.find("adaptive")) read_adaptive(*adaptive);
     analysis.output_interval_s = analysis.step_s;
     if (const auto interval = spec.find("output_interval")) read_output_interval(*interval);
+  }
+
+  // type: continuation: `end` is the parameter's last value, not a time; time-stepping keys do
+  // not apply and are rejected.
+  void read_continuation(const YamlValue& spec) {
+    spec.expect_keys({"type", "parameter", "start", "end", "eigenvalues", "max_steps", "newton",
+                      "linear_solver"});
+    AnalysisOptions& analysis = model_.analysis;
+    analysis.type = AnalysisType::continuation;
+    ContinuationSettings& c = analysis.continuation;
+    const YamlValue parameter = spec.at("parameter");
+    c.parameter = parameter.choice({"thermal", "load"}) == 0 ? PathParameter::thermal : PathParameter::load;
+    c.start = spec.number_or("start", c.start, Sign::any, "");
+    const YamlValue end = spec.at("end");
+    c.end = end.number(Sign::any, "");
+    if (!std::isfinite(c.start) || !std::isfinite(c.end) || c.end == c.start) {
+      end.fail(fmt::format("must be finite and differ from start = {}, got {}", c.start, c.end));
+    }
+    if (const auto eigenvalues = spec.find("eigenvalues")) c.n_eigenvalues = eigenvalues->integer(0);
+    if (const auto max_steps = spec.find("max_steps")) c.max_steps = max_steps->integer(1);
+    if (const auto solver = spec.find("linear_solver")) {
+      constexpr LinearSolverKind kinds[] = {LinearSolverKind::automatic, LinearSolverKind::dense,
+                                            LinearSolverKind::klu, LinearSolverKind::umfpack};
+      analysis.linear_solver = kinds[solver->choice({"automatic", "dense", "klu", "umfpack"})];
+    }
+    if (const auto newton = spec.find("newton")) read_newton(*newton);
   }
 
   void read_output_interval(const YamlValue& interval) {

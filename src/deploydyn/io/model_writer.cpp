@@ -216,42 +216,57 @@ void emit_analysis(YAML::Emitter& out, const Model& model) {
   emit_key(out, "analysis");
   out << YAML::BeginMap;
   emit_key(out, "type");
-  out << (analysis.type == AnalysisType::quasi_static ? "static" : "dynamic");
-  emit_number(out, "end", analysis.end_time_s);
-  emit_number(out, "step", analysis.step_s);
-  // 0 means "every step", which is also what leaving the key out says.
-  if (analysis.output_interval_s > 0.0) {
-    emit_number(out, "output_interval", analysis.output_interval_s);
+  out << to_string(analysis.type);
+  if (analysis.type == AnalysisType::continuation) {
+    // Only the keys a continuation reads (io/model_loader.cpp, read_continuation).
+    const ContinuationSettings& c = analysis.continuation;
+    emit_key(out, "parameter");
+    out << to_string(c.parameter);
+    emit_number(out, "start", c.start);
+    emit_number(out, "end", c.end);
+    emit_key(out, "eigenvalues");
+    out << c.n_eigenvalues;
+    emit_key(out, "max_steps");
+    out << c.max_steps;
+  } else {
+    emit_number(out, "end", analysis.end_time_s);
+    emit_number(out, "step", analysis.step_s);
+    // 0 means "every step", which is also what leaving the key out says.
+    if (analysis.output_interval_s > 0.0) {
+      emit_number(out, "output_interval", analysis.output_interval_s);
+    }
+    emit_key(out, "load_steps");
+    out << analysis.load_steps;
+    emit_key(out, "mass");
+    out << (analysis.mass == MassMatrixKind::consistent ? "consistent" : "lumped");
   }
-  emit_key(out, "load_steps");
-  out << analysis.load_steps;
-  emit_key(out, "mass");
-  out << (analysis.mass == MassMatrixKind::consistent ? "consistent" : "lumped");
   emit_key(out, "linear_solver");
   out << to_string(analysis.linear_solver);
-  emit_key(out, "integrator");
-  out << YAML::Flow << YAML::BeginMap;
-  emit_key(out, "type");
-  switch (analysis.integrator.kind) {
-    case IntegratorOptions::Kind::newmark:
-      out << "newmark";
-      emit_number(out, "beta", analysis.integrator.beta);
-      emit_number(out, "gamma", analysis.integrator.gamma);
-      break;
-    case IntegratorOptions::Kind::hht:
-    case IntegratorOptions::Kind::generalized_alpha:
-      out << (analysis.integrator.kind == IntegratorOptions::Kind::hht ? "hht" : "generalized_alpha");
-      emit_number(out, "rho_inf", analysis.integrator.rho_infinity);
-      break;
-  }
-  out << YAML::EndMap;
-  if (analysis.adaptive.enabled) {
-    emit_key(out, "adaptive");
+  if (analysis.type != AnalysisType::continuation) {
+    emit_key(out, "integrator");
     out << YAML::Flow << YAML::BeginMap;
-    emit_number(out, "tolerance", analysis.adaptive.tolerance_m);
-    emit_number(out, "min_step", analysis.adaptive.min_step_s);
-    if (analysis.adaptive.max_step_s > 0.0) emit_number(out, "max_step", analysis.adaptive.max_step_s);
+    emit_key(out, "type");
+    switch (analysis.integrator.kind) {
+      case IntegratorOptions::Kind::newmark:
+        out << "newmark";
+        emit_number(out, "beta", analysis.integrator.beta);
+        emit_number(out, "gamma", analysis.integrator.gamma);
+        break;
+      case IntegratorOptions::Kind::hht:
+      case IntegratorOptions::Kind::generalized_alpha:
+        out << (analysis.integrator.kind == IntegratorOptions::Kind::hht ? "hht" : "generalized_alpha");
+        emit_number(out, "rho_inf", analysis.integrator.rho_infinity);
+        break;
+    }
     out << YAML::EndMap;
+    if (analysis.adaptive.enabled) {
+      emit_key(out, "adaptive");
+      out << YAML::Flow << YAML::BeginMap;
+      emit_number(out, "tolerance", analysis.adaptive.tolerance_m);
+      emit_number(out, "min_step", analysis.adaptive.min_step_s);
+      if (analysis.adaptive.max_step_s > 0.0) emit_number(out, "max_step", analysis.adaptive.max_step_s);
+      out << YAML::EndMap;
+    }
   }
   emit_key(out, "newton");
   out << YAML::Flow << YAML::BeginMap;

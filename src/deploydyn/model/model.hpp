@@ -76,7 +76,30 @@ struct NodalLoad {
   TimeFunction factor = TimeFunction::constant(1.0);
 };
 
-enum class AnalysisType { quasi_static, dynamic };
+enum class AnalysisType { quasi_static, dynamic, continuation };
+// As model files spell them: "static", "dynamic", "continuation".
+inline const char* to_string(AnalysisType type) {
+  constexpr const char* kNames[] = {"static", "dynamic", "continuation"};
+  return kNames[static_cast<int>(type)];
+}
+
+// The parameter μ a continuation follows (solvers/parametrized_equilibrium.hpp): a scale on
+// every ΔT, or a factor on nodal loads and gravity.
+enum class PathParameter { thermal, load };
+// As model files spell them: "thermal", "load".
+inline const char* to_string(PathParameter parameter) {
+  return parameter == PathParameter::thermal ? "thermal" : "load";
+}
+
+// analysis.type: continuation (solvers/continuation.hpp): the static equilibrium at t = 0
+// traced in μ from `start` to `end`, through limit points, with its stability.
+struct ContinuationSettings {
+  PathParameter parameter = PathParameter::thermal;
+  double start = 0.0;
+  double end = 1.0;        // ≠ start
+  int n_eigenvalues = 3;   // lowest stability eigenvalues per point in path.csv; 0: none
+  int max_steps = 2000;
+};
 enum class MassMatrixKind { consistent, lumped };
 
 struct NewtonOptions {
@@ -131,6 +154,7 @@ struct AnalysisOptions {
   AdaptiveOptions adaptive;
   MassMatrixKind mass = MassMatrixKind::consistent;
   LinearSolverKind linear_solver = LinearSolverKind::automatic;
+  ContinuationSettings continuation;  // type continuation only
 };
 
 struct OutputOptions {

@@ -14,6 +14,7 @@
 #include "deploydyn/output/output_error.hpp"
 #include "deploydyn/output/plausibility.hpp"
 #include "deploydyn/output/result_folder.hpp"
+#include "deploydyn/output/path_to_folder.hpp"
 #include "deploydyn/output/summary_writer.hpp"
 #include "deploydyn/output/vtk_writer.hpp"
 
@@ -55,6 +56,10 @@ RunReport run_to_folder(const Model& model, const std::filesystem::path& folder,
 
 RunReport run_to_folder(const Model& model, const std::filesystem::path& folder,
                         const RunControl& control, Envelope& envelope) {
+  if (model.analysis.type == AnalysisType::continuation) {
+    envelope = Envelope();  // a path has no time history to envelope
+    return run_path_to_folder(model, folder, control);
+  }
   const Assembler assembler(model);  // may throw before any file is touched
   ResultFolder results(folder, model.output.summary_file);
   results.start("model", model.name, run_files(model));

@@ -4,6 +4,7 @@
 // history.csv streamed while it runs, and summary.json again at the end, whatever the end
 // (completed, failed or interrupted); with `output.vtk`, also a ParaView time series in vtk/
 // (output/vtk_writer.hpp), streamed. What the CLI's `run` does.
+// A model of analysis type continuation writes a path instead (output/path_to_folder.hpp).
 
 #include <filesystem>
 

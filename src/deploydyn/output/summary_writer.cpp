@@ -86,7 +86,7 @@ std::string summary_json(const Model& model, const Envelope& envelope, const Run
   if (report.status == RunStatus::failed) j["failure"] = failure(report.failure);
   j["units"] = {{"length", "m"}, {"force", "N"}, {"torque", "N·m"}, {"time", "s"},
                 {"energy", "J"}, {"temperature_change", "°C"}};
-  j["analysis"] = {{"type", model.analysis.type == AnalysisType::dynamic ? "dynamic" : "static"},
+  j["analysis"] = {{"type", to_string(model.analysis.type)},
                    {"end", model.analysis.end_time_s},
                    {"step", model.analysis.step_s},
                    {"integrator", integrator(model.analysis.integrator)}};

@@ -5,6 +5,7 @@
 
 #include <chrono>
 #include <cmath>
+#include <stdexcept>
 
 #include "deploydyn/assembly/linear_system_factory.hpp"
 #include "deploydyn/solvers/consistent_rates.hpp"
@@ -108,6 +109,11 @@ RunReport run_analysis(const Assembler& assembler, RecordSink& sink, const RunCo
   const auto wall_start = std::chrono::steady_clock::now();
   const AnalysisOptions& options = assembler.model().analysis;
   RunReport report;
+  if (options.type == AnalysisType::continuation) {
+    // A path, not a history: output/path_to_folder.hpp runs it.
+    throw std::invalid_argument(
+        "run_analysis: analysis type continuation writes path.csv; run it with run_to_folder");
+  }
   const std::unique_ptr<LinearSystem> linear_system = make_linear_system(assembler);
   LinearSystem& system = *linear_system;
   auto finish = [&](RunReport& r) -> RunReport {

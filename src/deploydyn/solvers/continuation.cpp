@@ -21,6 +21,12 @@ constexpr double kRoundOffShare = 16.0 * std::numeric_limits<double>::epsilon();
 // when negative ones are counted: round-off of K is ~1e-16 of it, and genuine near-critical
 // values of the tests are ≥ 1e-8 of it one step away from a crossing.
 constexpr double kZeroEigenvalueShare = 1e-12;
+// A corrector that lands farther from its predictor than the step itself has most likely
+// jumped to another stretch of the path (across a limit point, onto the far branch).
+constexpr double kMaxCorrectionPerStep = 1.0;
+// ℓ when the start does not move with μ (dq/dμ = 0, e.g. a straight strut heated between
+// supports): a thousandth of the longest bar, so that μ sets the pace of the path.
+constexpr double kSmallestLengthShare = 1e-3;
 // Regula falsi steps for one event; each halves the bracket at least every other step, so 100
 // covers a bracket shrinking from Δs ≤ 1 to 1e-15.
 constexpr int kMaxLocationIterations = 100;
@@ -50,7 +56,6 @@ class PathTracer {
         reference_q_(assembler.initial_coordinates()),
         with_stability_(options.n_eigenvalues > 0 &&
                         assembler.n_dofs() <= options.max_stability_dofs) {
-    length_ = options.length_scale_m > 0.0 ? options.length_scale_m : longest_bar_m();
     scale_ = assembler.stiffness_scale(reference_q_, options.time_s);
   }
 
@@ -70,6 +75,8 @@ class PathTracer {
                  double last_correction_m, const Eigen::VectorXd& q) const;
   CorrectorResult correct(const Tangent& normal, const Eigen::VectorXd& q_p, double mu_p,
                           PathPoint& point);
+  // Solves J b = −[∂r/∂μ; 0] at the point into rhs_b_ (b_q = dq/dμ); false when J is singular.
+  bool sensitivity(const PathPoint& point);
   std::optional<Tangent> tangent(const PathPoint& point, const Tangent* previous);
   void analyse_stability(PathPoint& point, ConstraintNullSpace* null_space = nullptr,
                          ConstrainedSpectrum* spectrum = nullptr);
@@ -166,16 +173,23 @@ CorrectorResult PathTracer::correct(const Tangent& normal, const Eigen::VectorXd
   }
 }
 
-std::optional<Tangent> PathTracer::tangent(const PathPoint& point, const Tangent* previous) {
+bool PathTracer::sensitivity(const PathPoint& point) {
   const auto n = assembler_.n_dofs();
   const auto m = assembler_.n_equations();
   equilibrium_.matrix(point.q, point.lambda, point.parameter, scale_, system_);
-  if (!system_.factorize().ok) return std::nullopt;
+  if (!system_.factorize().ok) return false;
   equilibrium_.parameter_derivative(point.q, point.parameter, dr_);
   rhs_b_.resize(n + m);
   rhs_b_.head(n) = -dr_;
   rhs_b_.tail(m).setZero();
   system_.solve(rhs_b_);
+  return true;
+}
+
+std::optional<Tangent> PathTracer::tangent(const PathPoint& point, const Tangent* previous) {
+  const auto n = assembler_.n_dofs();
+  const auto m = assembler_.n_equations();
+  if (!sensitivity(point)) return std::nullopt;
   Tangent t;
   t.mu_rate = 1.0 / std::sqrt(rhs_b_.head(n).squaredNorm() / (length_ * length_) + 1.0 / (range_ * range_));
   const double orientation =
@@ -306,12 +320,18 @@ void PathTracer::locate(const PathPoint& from, const Tangent& t_from, const Tria
     if (!(sigma > lo.sigma + 1e-3 * width && sigma < hi.sigma - 1e-3 * width)) {
       sigma = lo.sigma + 0.5 * width;
     }
-    std::optional<Trial> trial = step_from(from, t_from, sigma);
-    if (!trial) {
-      sigma = lo.sigma + 0.5 * width;
-      trial = step_from(from, t_from, sigma);
-      if (!trial) break;
+    // At the critical point itself J is singular (exactly so at a bifurcation, where regula
+    // falsi on a linear eigenvalue lands): then a point 1 % of the bracket aside, or inside it.
+    const double aside = sigma + (sigma < lo.sigma + 0.5 * width ? 0.01 : -0.01) * width;
+    std::optional<Trial> trial;
+    for (const double candidate : {sigma, aside, lo.sigma + 0.37 * width, lo.sigma + 0.63 * width}) {
+      trial = step_from(from, t_from, candidate);
+      if (trial) {
+        sigma = candidate;
+        break;
+      }
     }
+    if (!trial) break;
     const double value = function(trial->point, trial->tangent);
     const bool on_lo_side = std::signbit(value) == std::signbit(lo.value);
     std::optional<Trial>& slot = on_lo_side ? lo_trial : hi_trial;
@@ -332,7 +352,10 @@ void PathTracer::locate(const PathPoint& from, const Tangent& t_from, const Tria
   const End& best = std::abs(lo.value) <= std::abs(hi.value) ? lo : hi;
   PathPoint point = *best.point;
   point.event = -1;
-  record_event(kind, std::move(point), *best.tangent, bound());
+  const double reached = bound();
+  record_event(kind, std::move(point), *best.tangent, reached);
+  result_.events.back().within_tolerance = reached <= tolerance;
+  if (reached > tolerance) result_.events.back().description += " (not located to the tolerance)";
 }
 
 bool PathTracer::land_on_end(const PathPoint& before, const PathPoint& after) {
@@ -355,7 +378,6 @@ bool PathTracer::land_on_end(const PathPoint& before, const PathPoint& after) {
 }
 
 ContinuationResult PathTracer::run(const Eigen::VectorXd& q0, const Eigen::VectorXd& lambda0) {
-  result_.length_scale_m = length_;
   PathPoint current;
   current.q = q0;
   current.lambda = lambda0;
@@ -388,6 +410,15 @@ ContinuationResult PathTracer::run(const Eigen::VectorXd& q0, const Eigen::Vecto
       return result_;
     }
   }
+  if (options_.length_scale_m > 0.0) {
+    length_ = options_.length_scale_m;
+  } else if (sensitivity(current)) {
+    // The motion a linear extrapolation over the whole range would give: the path's first
+    // stretch then weighs q and μ alike (Crisfield's scaling of the load term).
+    length_ = std::max(rhs_b_.head(assembler_.n_dofs()).norm() * range_,
+                       kSmallestLengthShare * longest_bar_m());
+  }
+  result_.length_scale_m = length_;
   std::optional<Tangent> t = tangent(current, nullptr);
   if (!t) {
     result_.end = ContinuationEnd::start_failed;
@@ -413,10 +444,13 @@ ContinuationResult PathTracer::run(const Eigen::VectorXd& q0, const Eigen::Vecto
       return result_;
     }
     std::optional<Trial> trial = step_from(current, *t, ds);
-    const bool turned_too_much =
-        trial && ds > options_.min_step &&
-        dot(trial->tangent.q_rate, trial->tangent.mu_rate, t->q_rate, t->mu_rate) < cos_max_turn;
-    if (!trial || turned_too_much) {
+    const auto jumped = [&] {
+      const Eigen::VectorXd off_q = trial->point.q - (current.q + ds * t->q_rate);
+      const double off_mu = trial->point.parameter - (current.parameter + ds * t->mu_rate);
+      return std::sqrt(dot(off_q, off_mu, off_q, off_mu)) > kMaxCorrectionPerStep * ds ||
+             dot(trial->tangent.q_rate, trial->tangent.mu_rate, t->q_rate, t->mu_rate) < cos_max_turn;
+    };
+    if (!trial || (ds > options_.min_step && jumped())) {
       ++result_.rejected_steps;
       ds *= options_.step_cut;
       if (ds < options_.min_step) {

@@ -5,9 +5,10 @@
 //
 // Equations (solvers/parametrized_equilibrium.hpp), unknowns x = (q, λ) and μ:
 //   G(x, μ) = [ f_int(q, μ) − f_ext(μ) + Bᵀλ ;  Φ(q) ] = 0
-// Arc length s in dimensionless coordinates u = q/ℓ, ν = μ/ρ, with ℓ a length of the model
-// (the longest bar unless given) and ρ = |μ_end − μ_start|, so that moving the structure by ℓ
-// weighs as much as crossing the requested range:
+// Arc length s in dimensionless coordinates u = q/ℓ, ν = μ/ρ, with ρ = |μ_end − μ_start| and
+// ℓ = ‖dq/dμ‖₂ ρ at the start (the motion a linear extrapolation over the whole range would
+// give; 10⁻³ of the longest bar when the start does not move), unless given, so that the
+// first stretch weighs q and μ alike (Crisfield's scaling of the load term):
 //   ds² = ‖dq‖²/ℓ² + dμ²/ρ²          (the multipliers follow, they are not measured)
 // Pseudo-arclength predictor–corrector (Keller 1977, "Numerical solution of bifurcation and
 // nonlinear eigenvalue problems"; the same hyperplane constraint as Riks 1979, Int. J. Solids
@@ -30,9 +31,10 @@
 // the sign keeping q̇ᵀq̇_prev/ℓ² + μ̇ μ̇_prev/ρ² > 0 (and μ̇ towards μ_end at the start).
 //
 // Step size: grows by `step_growth` after a corrector that needed at most `easy_iterations`,
-// is cut by `step_cut` on a corrector failure or when the tangent turns by more than
-// `max_turn_rad` in one step (which would risk jumping to another branch); the run stops
-// below `min_step`. It ends when μ crosses μ_end (the last point solved at μ = μ_end exactly),
+// is cut by `step_cut` on a corrector failure, when the tangent turns by more than
+// `max_turn_rad` in one step, or when the corrected point lies farther from its predictor than
+// Δs (both signs of a jump to another stretch of the path, e.g. across a limit point onto the
+// far branch); the run stops below `min_step`. It ends when μ crosses μ_end (the last point solved at μ = μ_end exactly),
 // after `max_steps`, or when *stop becomes true (polled before every step).
 //
 // Stability (solvers/constrained_stiffness.hpp), at every point of models with at most
@@ -63,14 +65,14 @@ struct ContinuationOptions {
   double end = 1.0;            // μ at which the path ends; ≠ start
   double initial_step = 0.02;  // Δs, dimensionless (see above)
   double min_step = 1e-7;
-  double max_step = 0.05;
+  double max_step = 0.1;
   int max_steps = 2000;
   int max_corrector_iterations = 10;
   int easy_iterations = 4;
   double step_growth = 1.5;
   double step_cut = 0.5;
   double max_turn_rad = 0.5;    // ≈ 29° of tangent turn per step
-  double length_scale_m = 0.0;  // ℓ; 0: the longest bar's reference length
+  double length_scale_m = 0.0;  // ℓ; 0: ‖dq/dμ‖ ρ at the start (see above)
   int n_eigenvalues = 3;        // lowest ones reported per point; 0: no stability analysis
   int max_stability_dofs = 2000;  // dense eigen-solve above this is not attempted
   double location_tolerance = 1e-7;  // of an event's μ, relative to |end − start|
@@ -88,6 +90,9 @@ struct PathEvent {
   PathEventKind kind = PathEventKind::limit_point;
   double parameter = 0.0;        // μ at the located point
   double parameter_error = 0.0;  // bound on |μ − μ*| (0 for singular constraints: not located)
+  // False when the location stopped (corrector failures, iteration limit) before the bound
+  // reached options.location_tolerance; the bound is still the one reached.
+  bool within_tolerance = true;
   int point = -1;                // the located point in ContinuationResult::points
   double eigenvalue_N_m = 0.0;   // the critical eigenvalue of Zᵀ K_T Z there (N/m)
   Eigen::VectorXd mode;          // critical mode in q, unit length (empty: none computed)

@@ -18,11 +18,7 @@
 
 namespace deploydyn {
 
-enum class PathParameter { thermal, load };
-// As model files spell them: "thermal", "load".
-inline const char* to_string(PathParameter parameter) {
-  return parameter == PathParameter::thermal ? "thermal" : "load";
-}
+// PathParameter is in model/model.hpp: a model file names it.
 
 class ParametrizedEquilibrium {
  public:

@@ -1,0 +1,175 @@
+#include "deploydyn/output/path_to_folder.hpp"
+
+#include <fmt/format.h>
+
+#include <chrono>
+#include <optional>
+#include <sstream>
+#include <nlohmann/json.hpp>
+#include <stdexcept>
+
+#include "deploydyn/assembly/linear_system_factory.hpp"
+#include "deploydyn/io/model_writer.hpp"
+#include "deploydyn/output/checked_file.hpp"
+#include "deploydyn/output/output_error.hpp"
+#include "deploydyn/output/result_folder.hpp"
+#include "deploydyn/output/summary_writer.hpp"
+#include "deploydyn/output/vtk_writer.hpp"
+
+namespace deploydyn {
+namespace {
+
+using nlohmann::ordered_json;
+
+constexpr const char* kPathFileName = "path.csv";
+
+// What one unit of μ is in the model's terms: ΔT (°C) or the largest load entry (N).
+double parameter_unit(const Assembler& assembler) {
+  const Model& model = assembler.model();
+  if (model.analysis.continuation.parameter == PathParameter::thermal) {
+    return model.temperature_change_C.value(0.0);
+  }
+  Eigen::VectorXd external;
+  assembler.external_force(0.0, external);
+  return external.size() > 0 ? external.cwiseAbs().maxCoeff() : 0.0;
+}
+
+const char* parameter_column(const Model& model) {
+  return model.analysis.continuation.parameter == PathParameter::thermal ? "dT_C" : "load_N";
+}
+
+
+}  // namespace
+
+void write_path_csv(std::ostream& out, const Assembler& assembler, const ContinuationResult& result,
+                    int n_eigenvalues) {
+  const double unit = parameter_unit(assembler);
+  out << "mu," << parameter_column(assembler.model()) << ",displacement_norm_m";
+  for (int i = 1; i <= n_eigenvalues; ++i) out << ",eigenvalue_" << i << "_N_m";
+  out << ",n_negative,event\n";
+  for (const PathPoint& p : result.points) {
+    out << fmt::format("{:.12g},{:.12g},{:.12g}", p.parameter, p.parameter * unit, p.displacement_norm_m);
+    for (int i = 0; i < n_eigenvalues; ++i) {
+      if (i < p.lowest_eigenvalues.size()) {
+        out << fmt::format(",{:.12g}", p.lowest_eigenvalues[i]);
+      } else {
+        out << ",";
+      }
+    }
+    out << ',' << p.n_negative << ',' << (p.event >= 0 ? to_string(result.events[p.event].kind) : "") << '\n';
+  }
+}
+
+std::string path_summary_json(const Assembler& assembler, const ContinuationResult& result,
+                              const RunReport& report) {
+  const Model& model = assembler.model();
+  const ContinuationSettings& settings = model.analysis.continuation;
+  const double unit = parameter_unit(assembler);
+  ordered_json j;
+  j["model"] = model.name;
+  j["status"] = to_string(report.status);
+  j["message"] = report.message;
+  j["units"] = {{"length", "m"}, {"force", "N"}, {"stiffness", "N/m"}, {"temperature_change", "°C"}};
+  j["analysis"] = {{"type", to_string(model.analysis.type)},
+                   {"parameter", to_string(settings.parameter)},
+                   {"start", settings.start},
+                   {"end", settings.end}};
+  j["path"] = {{"end", to_string(result.end)},
+               {"points", result.points.size()},
+               {"iterations", result.total_iterations},
+               {"rejected_steps", result.rejected_steps},
+               {"length_scale_m", result.length_scale_m},
+               {"wall_time_s", report.wall_time_s}};
+  ordered_json events = ordered_json::array();
+  for (const PathEvent& e : result.events) {
+    ordered_json forces = ordered_json::object();
+    for (std::size_t b = 0; b < e.axial_forces_N.size(); ++b) forces[model.bars[b].name] = e.axial_forces_N[b];
+    ordered_json event = {{"kind", to_string(e.kind)},
+                          {"mu", e.parameter},
+                          {"mu_error", e.parameter_error},
+                          {"within_tolerance", e.within_tolerance},
+                          {parameter_column(model), e.parameter * unit},
+                          {"eigenvalue_N_m", e.eigenvalue_N_m},
+                          {"description", e.description},
+                          {"axial_force_N", forces}};
+    if (e.mode.size() > 0) {
+      ordered_json mode = ordered_json::object();
+      for (Eigen::Index i = 0; i < e.mode.size(); ++i) {
+        mode[assembler.dof_map().label(static_cast<int>(i))] = e.mode[i];
+      }
+      event["mode"] = mode;
+    }
+    if (!e.dependent_rows.empty()) {
+      ordered_json rows = ordered_json::array();
+      for (const int row : e.dependent_rows) rows.push_back(assembler.describe_equation(row));
+      event["dependent_constraints"] = rows;
+    }
+    events.push_back(event);
+  }
+  j["events"] = events;
+  // What the next run into the folder removes first (output/result_folder.hpp).
+  j["files"] = {{"model", kRunModelFileName}, {"path", kPathFileName}};
+  return j.dump(2, ' ', false, ordered_json::error_handler_t::replace);
+}
+
+RunReport run_path_to_folder(const Model& model, const std::filesystem::path& folder,
+                             const RunControl& control) {
+  const auto wall_start = std::chrono::steady_clock::now();
+  const Assembler assembler(model);  // may throw before any file is touched
+  // The same ownership as a time run's folder (output/result_folder.hpp): running first, the
+  // earlier run's files removed, the final status at the end.
+  ResultFolder results(folder, model.output.summary_file);
+  results.start("model", model.name,
+                {{"model", kRunModelFileName}, {"path", kPathFileName}, {"history", model.output.history_file}});
+  remove_vtk_series(folder / kVtkFolderName);
+  {
+    std::ostringstream model_text;
+    save_model(model, model_text);
+    write_file(folder / kRunModelFileName, model_text.str());
+  }
+  const ContinuationSettings& settings = model.analysis.continuation;
+  ContinuationOptions options;
+  options.parameter = settings.parameter;
+  options.start = settings.start;
+  options.end = settings.end;
+  options.n_eigenvalues = settings.n_eigenvalues;
+  options.max_steps = settings.max_steps;
+  options.newton = model.analysis.newton;
+  options.stop = control.stop;
+  const auto system = make_linear_system(assembler);
+  const ContinuationResult result =
+      trace_path(assembler, options, *system, assembler.initial_coordinates(),
+                 Eigen::VectorXd::Zero(assembler.n_equations()));
+
+  RunReport report;
+  report.status = result.end == ContinuationEnd::reached_end ? RunStatus::completed
+                  : result.end == ContinuationEnd::stopped   ? RunStatus::interrupted
+                                                             : RunStatus::failed;
+  report.message = result.message;
+  for (const PathEvent& e : result.events) report.message += "; " + e.description;
+  if (report.status == RunStatus::failed) {
+    report.failure.phase = "continuation";
+    report.failure.reason = result.message;
+  }
+  report.steps = static_cast<int>(result.points.size());
+  report.newton_iterations = result.total_iterations;
+  report.rejected_steps = result.rejected_steps;
+  report.wall_time_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start).count();
+  std::optional<OutputError> output_error;
+  try {
+    std::ostringstream path;
+    write_path_csv(path, assembler, result, settings.n_eigenvalues);
+    write_file(folder / kPathFileName, path.str());
+  } catch (const OutputError& error) {
+    output_error = error;
+    report.status = RunStatus::failed;
+    report.failure.phase = "writing results";
+    report.failure.reason = error.what();
+    report.message = std::string("writing results failed: ") + error.what();
+  }
+  results.finish(path_summary_json(assembler, result, report), short_summary_json(model, report));
+  if (output_error) throw *output_error;
+  return report;
+}
+
+}  // namespace deploydyn

@@ -1,0 +1,36 @@
+#pragma once
+// A continuation run (analysis.type: continuation, solvers/continuation.hpp) with its results
+// on disk: summary.json saying "running", model.yaml (the model as run), path.csv (one row per
+// converged point, written when the path ends) and summary.json again (how it ended, and the
+// events). What run_to_folder does for this type.
+//
+// path.csv columns:
+//   mu                      the parameter μ
+//   dT_C | load_N           thermal: μ × the model-wide ΔT(0); load: μ × the largest nodal
+//                           force entry of the loads and gravity
+//   displacement_norm_m     ‖q − q_initial‖₂
+//   eigenvalue_1_N_m …      lowest eigenvalues of Zᵀ K_T Z (analysis.eigenvalues of them)
+//   n_negative              negative ones: 0 is a stable equilibrium
+//   event                   limit_point, bifurcation, singular_constraints, or empty
+
+#include <filesystem>
+#include <ostream>
+#include <string>
+
+#include "deploydyn/solvers/analysis.hpp"
+#include "deploydyn/solvers/continuation.hpp"
+
+namespace deploydyn {
+
+// In a folder it owns, as run_to_folder (output/result_folder.hpp). Throws
+// std::invalid_argument when the model's mechanics cannot be built (before any file is
+// touched), OutputError when the folder is in use or a file cannot be written.
+RunReport run_path_to_folder(const Model& model, const std::filesystem::path& folder,
+                             const RunControl& control = {});
+
+void write_path_csv(std::ostream& out, const Assembler& assembler, const ContinuationResult& result,
+                    int n_eigenvalues);
+std::string path_summary_json(const Assembler& assembler, const ContinuationResult& result,
+                              const RunReport& report);
+
+}  // namespace deploydyn

@@ -1,0 +1,89 @@
+// `deploydyn run` on a model of analysis type continuation: path.csv and summary.json for the
+// Green–Lagrange von Mises truss, checked against its closed form
+//   μ P_ref = P(y) = (EA / L0³) y (h² − y²)      (tests/solvers/continuation_test.cpp derives it)
+// where the apex height is y = h − displacement_norm (only the apex moves, straight down).
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "support/cli.hpp"
+
+namespace {
+
+using deploydyn::testing::read_text;
+using deploydyn::testing::run_cli;
+using deploydyn::testing::ScratchFolder;
+
+constexpr double kHalfSpan_m = 1.0, kRise_m = 0.1, kAxialStiffness_N = 2e7, kReferenceLoad_N = 1e4;
+
+const char* const kMisesTruss = R"(
+name: von Mises truss
+nodes: {A: [-1, 0], B: [1, 0], C: [0, 0.1]}
+materials: {steel: {E: 2.0e11, alpha: 1.2e-5}}
+elements:
+  1: {nodes: [A, C], area: 1.0e-4, material: steel, mass: 1}
+  2: {nodes: [B, C], area: 1.0e-4, material: steel, mass: 1}
+supports: [{node: A}, {node: B}]
+loads: [{node: C, force: [0, -1.0e+4]}]
+analysis: {type: continuation, parameter: load, end: 1.1, eigenvalues: 2}
+)";
+
+double closed_form_load_N(double y) {
+  const double l0 = std::hypot(kHalfSpan_m, kRise_m);
+  return kAxialStiffness_N / std::pow(l0, 3) * y * (kRise_m * kRise_m - y * y);
+}
+
+std::vector<std::string> split(const std::string& line) {
+  std::vector<std::string> cells;
+  std::stringstream in(line);
+  std::string cell;
+  while (std::getline(in, cell, ',')) cells.push_back(cell);
+  if (!line.empty() && line.back() == ',') cells.emplace_back();
+  return cells;
+}
+
+TEST(CliContinuation, RunWritesThePathOfTheSnapThrough) {
+  const ScratchFolder folder("cli_continuation");
+  std::filesystem::create_directories(folder.path());
+  const auto model_file = folder.path() / "mises.yaml";
+  std::ofstream(model_file) << kMisesTruss;
+  const auto out = folder.path() / "out";
+  const auto outcome = run_cli("run " + model_file.string() + " --quiet --out " + out.string());
+  ASSERT_EQ(outcome.exit_code, 0) << outcome.output;
+
+  std::ifstream path(out / "path.csv");
+  std::string line;
+  ASSERT_TRUE(std::getline(path, line));
+  EXPECT_EQ(line, "mu,load_N,displacement_norm_m,eigenvalue_1_N_m,eigenvalue_2_N_m,n_negative,event");
+  // The limit load P* = 2 EA h³ / (3√3 L0³) ≈ 7584 N; the corrector's tolerance keeps the path
+  // within 1e-7 P* of P(y) (continuation_test.cpp), the CSV's 12 digits add nothing: 1e-6 P*.
+  const double p_star = closed_form_load_N(kRise_m / std::sqrt(3.0));
+  int n_rows = 0, n_limits = 0;
+  for (; std::getline(path, line); ++n_rows) {
+    const std::vector<std::string> cells = split(line);
+    ASSERT_EQ(cells.size(), 7u) << line;
+    const double mu = std::stod(cells[0]), load = std::stod(cells[1]);
+    const double y = kRise_m - std::stod(cells[2]);
+    EXPECT_NEAR(load, mu * kReferenceLoad_N, 1e-9 * kReferenceLoad_N);
+    EXPECT_NEAR(load, closed_form_load_N(y), 1e-6 * p_star) << line;
+    if (cells[6] == "limit_point") ++n_limits;
+  }
+  EXPECT_GT(n_rows, 20);
+  EXPECT_EQ(n_limits, 2) << "snap-through: up to P*, down to −P*, up to 1.1";
+
+  const auto summary = nlohmann::json::parse(read_text(out / "summary.json"));
+  EXPECT_EQ(summary["status"], "completed");
+  EXPECT_EQ(summary["analysis"]["type"], "continuation");
+  ASSERT_EQ(summary["events"].size(), 2u);
+  EXPECT_EQ(summary["events"][0]["kind"], "limit_point");
+  EXPECT_NEAR(summary["events"][0]["load_N"].get<double>(), p_star, 1e-6 * p_star);
+  EXPECT_NEAR(summary["events"][1]["load_N"].get<double>(), -p_star, 1e-6 * p_star);
+  EXPECT_TRUE(std::filesystem::exists(out / "model.yaml"));
+}
+
+}  // namespace
