@@ -5,9 +5,11 @@
 // for a free mechanism in a dynamic run without the loads, see LoadPath)
 // and for quasi-static deployment (time ramped over one step). The ramp, a LoadPath, is
 // followed in load steps; a step is halved (down to 1/1024 of the whole) when its
-// Newton solve fails or when it moves a node by more than 2 % of the shortest bar. The second
-// rule keeps the solution on the branch it started on: near a flat (singular) configuration
-// one large step can land on a self-stressed toggle position or on another assembly.
+// Newton solve fails or when it changes a bar's vector x_b − x_a by more than 2 % of the bar's
+// length (about 1° of rotation). The second rule keeps the solution on the branch it started
+// on: near a flat (singular) configuration one large step can land on a self-stressed toggle
+// position or on another assembly. It measures bars, not nodes, so that a structure that
+// expands freely (a long roof on sliding bearings) is not cut into tiny steps.
 
 #include "deploydyn/assembly/assembler.hpp"
 #include "deploydyn/solvers/motion_state.hpp"
