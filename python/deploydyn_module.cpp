@@ -39,6 +39,7 @@
 #include "deploydyn/output/summary_writer.hpp"
 #include "deploydyn/assembly/linear_system_factory.hpp"
 #include "deploydyn/solvers/analysis.hpp"
+#include "deploydyn/solvers/continuation.hpp"
 #include "deploydyn/solvers/modal_analysis.hpp"
 #include "deploydyn/solvers/static_solver.hpp"
 
@@ -268,6 +269,74 @@ py::dict analysis_info(const Model& model) {
 
 }  // namespace
 
+// A path of static equilibria in one parameter (solvers/continuation.hpp): "thermal" scales
+// every ΔT, "load" the loads and gravity; from the model's initial state at μ = start.
+py::dict continuation_of(const LoadedModel& loaded, const std::string& parameter, double start,
+                         double end, int n_eigenvalues, int max_steps, double time_s) {
+  if (parameter != "thermal" && parameter != "load") {
+    throw std::invalid_argument("continuation: parameter must be 'thermal' or 'load', got '" + parameter + "'");
+  }
+  const Assembler assembler(loaded.model);  // std::invalid_argument → ValueError
+  ContinuationOptions options;
+  options.parameter = parameter == "thermal" ? PathParameter::thermal : PathParameter::load;
+  options.start = start;
+  options.end = end;
+  options.n_eigenvalues = n_eigenvalues;
+  options.max_steps = max_steps;
+  options.time_s = time_s;
+  options.newton = loaded.model.analysis.newton;
+  validate(options);  // std::invalid_argument → ValueError
+  ContinuationResult result;
+  {
+    py::gil_scoped_release release;
+    const auto system = make_linear_system(assembler);
+    result = trace_path(assembler, options, *system, assembler.initial_coordinates(),
+                        Eigen::VectorXd::Zero(assembler.n_equations()));
+  }
+  const auto n_points = static_cast<py::ssize_t>(result.points.size());
+  py::array_t<double> mu(n_points), norm(n_points), q({n_points, static_cast<py::ssize_t>(assembler.n_dofs())});
+  py::array_t<double> eigenvalues({n_points, static_cast<py::ssize_t>(std::max(n_eigenvalues, 0))});
+  py::array_t<int> n_negative(n_points);
+  auto m = mu.mutable_unchecked<1>();
+  auto d = norm.mutable_unchecked<1>();
+  auto x = q.mutable_unchecked<2>();
+  auto e = eigenvalues.mutable_unchecked<2>();
+  auto neg = n_negative.mutable_unchecked<1>();
+  for (py::ssize_t i = 0; i < n_points; ++i) {
+    const PathPoint& p = result.points[static_cast<std::size_t>(i)];
+    m(i) = p.parameter;
+    d(i) = p.displacement_norm_m;
+    neg(i) = p.n_negative;
+    for (py::ssize_t j = 0; j < x.shape(1); ++j) x(i, j) = p.q[j];
+    for (py::ssize_t k = 0; k < e.shape(1); ++k) {
+      e(i, k) = k < p.lowest_eigenvalues.size() ? p.lowest_eigenvalues[k] : std::numeric_limits<double>::quiet_NaN();
+    }
+  }
+  py::list events;
+  for (const PathEvent& event : result.events) {
+    py::dict entry;
+    entry["kind"] = to_string(event.kind);
+    entry["mu"] = event.parameter;
+    entry["mu_error"] = event.parameter_error;
+    entry["point"] = event.point;
+    entry["eigenvalue"] = event.eigenvalue_N_m;
+    entry["mode"] = std::vector<double>(event.mode.data(), event.mode.data() + event.mode.size());
+    entry["axial_forces"] = event.axial_forces_N;
+    entry["description"] = event.description;
+    events.append(entry);
+  }
+  py::dict out;
+  out["mu"] = mu;
+  out["displacement_norm"] = norm;
+  out["eigenvalues"] = eigenvalues;
+  out["n_negative"] = n_negative;
+  out["q"] = q;
+  out["events"] = events;
+  out["end"] = to_string(result.end);
+  out["message"] = result.message;
+  return out;
+}
+
 // Natural modes about the static equilibrium at each time (solvers/modal_analysis.hpp):
 // times, ω² (times × modes), modes (times × coordinates × modes), the coordinates' labels,
 // and per time an empty string or why it failed (its rows are then NaN).
@@ -388,6 +457,8 @@ PYBIND11_MODULE(_core, m) {
            },
            "The model as a model file with every default explicit (save_model)")
       .def("modes", &modes_at, py::arg("n_modes"), py::arg("times"))
+      .def("continuation", &continuation_of, py::arg("parameter"), py::arg("start"), py::arg("end"),
+           py::arg("eigenvalues"), py::arg("max_steps"), py::arg("time"))
       .def("run_in_memory", &run_in_memory)
       .def("run_into_folder", &run_into_folder, py::arg("folder"));
 

@@ -373,6 +373,31 @@ class Model:
             result.raise_for_status()
         return result
 
+    def continuation(self, parameter, end, start=0.0, eigenvalues=3, max_steps=2000, time=0.0):
+        """Trace the static equilibrium as `parameter` goes from `start` to `end`, through limit
+        points (arc-length continuation, docs/theory.md "Path following and stability"), as a
+        model of `analysis: {type: continuation}` does: "thermal" scales every ΔT (μ = 1: the
+        model's own), "load" scales the loads and gravity; drivers and ΔT(t) are read at `time`
+        (s). Returns a dict: "mu", "displacement_norm" (m), "eigenvalues" (points × eigenvalues,
+        N/m, of the tangent stiffness on the constraint-compatible motions; NaN when not
+        computed), "n_negative", "q" (points × coordinates), "events" (dicts with "kind"
+        limit_point | bifurcation | singular_constraints, "mu", "mu_error", "point", "mode",
+        "axial_forces", "description"), "end" and "message" (how it ended)."""
+        where = "Model.continuation"
+        parameter = _text(where, "parameter", parameter)
+        end = float(_number(where, "end", end))
+        start = float(_number(where, "start", start))
+        eigenvalues = _count(where, "eigenvalues", eigenvalues, minimum=0)
+        max_steps = _count(where, "max_steps", max_steps)
+        time = float(_number(where, "time", time))
+        raw = self._core.continuation(parameter, start, end, eigenvalues, max_steps, time)
+        out = dict(raw)
+        for key in ("mu", "displacement_norm", "eigenvalues", "n_negative", "q"):
+            out[key] = np.asarray(raw[key])
+        out["events"] = [dict(e, mode=np.asarray(e["mode"]), axial_forces=np.asarray(e["axial_forces"]))
+                         for e in raw["events"]]
+        return out
+
     def modes(self, count=10, at=0.0):
         """Natural frequencies and modes about the static equilibrium at time(s) `at` (the
         thermal state at t = 0, then the drivers moved quasi-statically), as `deploydyn modes`

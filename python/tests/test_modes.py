@@ -42,3 +42,18 @@ def test_linkage_modes_at_several_times_and_errors(source_dir):
         model.modes(count=4)
     with pytest.raises(TypeError, match="count must be an int"):
         model.modes(count=2.5)
+
+
+def test_continuation_finds_the_cold_parallel_jam(source_dir):
+    """The thermal path of the parallel linkage towards −200 °C turns back at the closed-form
+    −84.8435 °C (tests/verification/thermal_jam_verification_test.cpp derives it)."""
+    model = deploydyn.load(source_dir / "examples" / "paper" / "parallel.yaml",
+                           overrides={"thermal.dT": -200})
+    path = model.continuation("thermal", end=1.0, max_steps=3000)
+    assert path["q"].shape[1] == 8 and path["mu"].shape == path["displacement_norm"].shape
+    assert path["eigenvalues"].shape[1] == 3
+    limit = [e for e in path["events"] if e["kind"] == "limit_point"]
+    assert limit, path["message"]
+    assert limit[0]["mu"] * -200 == pytest.approx(-84.8434928418712, abs=1e-3)
+    with pytest.raises(ValueError, match="parameter must be 'thermal' or 'load'"):
+        model.continuation("driver", end=1.0)
