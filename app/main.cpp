@@ -56,11 +56,6 @@ void stop_on_signals() {
   for (const int signal : {SIGINT, SIGTERM, SIGHUP}) sigaction(signal, &action, nullptr);
 }
 
-std::vector<Override> parse_overrides(const std::vector<std::string>& texts) {
-  std::vector<Override> overrides;
-  for (const std::string& text : texts) overrides.push_back(parse_override(text));
-  return overrides;
-}
 
 // A one-line progress display on stderr, refreshed a few times a second, for runs longer
 // than about a second; silent when stderr is not a terminal or with --quiet.

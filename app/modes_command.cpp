@@ -24,12 +24,6 @@ namespace {
 // this share of the shortest bar: visible, and still small enough to read as a linear mode.
 constexpr double kDrawnAmplitudeShare = 0.1;
 
-std::vector<Override> overrides_of(const std::vector<std::string>& texts) {
-  std::vector<Override> overrides;
-  for (const std::string& text : texts) overrides.push_back(parse_override(text));
-  return overrides;
-}
-
 // The equilibrium displaced along `mode`, as a VTK frame whose time field is `frame` (modes.csv
 // row `frame` says which time and mode it is).
 StepRecord mode_frame(const Assembler& assembler, const MotionState& equilibrium,
@@ -64,7 +58,7 @@ CLI::App* add_modes_command(CLI::App& app, ModesArguments& arguments) {
 }
 
 int modes_command(const ModesArguments& arguments) {
-  const Model model = load_model(arguments.model_file, overrides_of(arguments.sets));
+  const Model model = load_model(arguments.model_file, parse_overrides(arguments.sets));
   for (const double t : arguments.times_s) {
     if (t > model.analysis.end_time_s) {
       throw InputError("--at", 0, 0, "", fmt::format("{} s is after the analysis end, {} s", t, model.analysis.end_time_s));

@@ -61,9 +61,7 @@ CLI::App* add_window_command(CLI::App& app, WindowArguments& arguments) {
 
 int window_command(const WindowArguments& arguments, const std::atomic<bool>& stop) {
   const auto [lo, hi] = parse_range(arguments.range_C);
-  std::vector<Override> overrides;
-  for (const std::string& text : arguments.sets) overrides.push_back(parse_override(text));
-  const Model model = load_model(arguments.model_file, overrides);
+  const Model model = load_model(arguments.model_file, parse_overrides(arguments.sets));
   WindowOptions options;
   options.coldest_C = lo;
   options.hottest_C = hi;

@@ -756,6 +756,12 @@ Override parse_override(const std::string& text) {
   return {text.substr(0, equals), text.substr(equals + 1)};
 }
 
+std::vector<Override> parse_overrides(const std::vector<std::string>& texts) {
+  std::vector<Override> overrides;
+  for (const std::string& text : texts) overrides.push_back(parse_override(text));
+  return overrides;
+}
+
 Model load_model(const std::filesystem::path& file, const std::vector<Override>& overrides) {
   return load_model_from_string(io::read_input_file(file), file.string(), overrides);
 }

@@ -20,6 +20,8 @@ struct Override {
 
 // Parses "PATH=VALUE"; throws InputError when there is no '=' or PATH is empty.
 Override parse_override(const std::string& text);
+// Each of `texts` ("PATH=VALUE", as --set takes them) parsed, in order.
+std::vector<Override> parse_overrides(const std::vector<std::string>& texts);
 
 Model load_model(const std::filesystem::path& file, const std::vector<Override>& overrides = {});
 
