@@ -148,9 +148,16 @@ int check_command(const std::string& model_file, const std::vector<std::string>&
              : free_motion - driver_rows > 0 ? " (free motion left: a dynamic run is needed)"
                                              : " (over-constrained with rigid bars: bars will be strained)");
   fmt::print("thermal     ΔT(0) = {:g} °C on bars without their own\n", model.temperature_change_C.value(0.0));
-  fmt::print("analysis    {}, t = 0 → {:g} s, step {:g} s ({:.0f} steps), Newmark β = {:g}, γ = {:g}\n",
-             to_string(a.type), a.end_time_s, a.step_s,
-             a.end_time_s / a.step_s, a.integrator.beta, a.integrator.gamma);
+  if (a.type == AnalysisType::continuation) {
+    const ContinuationSettings& c = a.continuation;
+    fmt::print("analysis    continuation in the {} parameter μ from {:g} to {:g}, at most {} steps, {} "
+               "lowest stability eigenvalues per point (path.csv)\n",
+               to_string(c.parameter), c.start, c.end, c.max_steps, c.n_eigenvalues);
+  } else {
+    fmt::print("analysis    {}, t = 0 → {:g} s, step {:g} s ({:.0f} steps), Newmark β = {:g}, γ = {:g}\n",
+               to_string(a.type), a.end_time_s, a.step_s,
+               a.end_time_s / a.step_s, a.integrator.beta, a.integrator.gamma);
+  }
   const LinearSolverKind solver = choose_linear_solver(a.linear_solver, assembler.n_unknowns());
   fmt::print("linear      {} for {} unknowns{}\n",
              solver == LinearSolverKind::dense ? "dense LU" : solver == LinearSolverKind::klu ? "KLU (sparse)" : "UMFPACK (sparse)",

@@ -47,6 +47,18 @@ std::vector<std::string> split(const std::string& line) {
   return cells;
 }
 
+TEST(CliContinuation, CheckDescribesThePathNotATimeStepping) {
+  const ScratchFolder folder("cli_continuation_check");
+  std::filesystem::create_directories(folder.path());
+  const auto model_file = folder.path() / "mises.yaml";
+  std::ofstream(model_file) << kMisesTruss;
+  const auto outcome = run_cli("check " + model_file.string());
+  ASSERT_EQ(outcome.exit_code, 0) << outcome.output;
+  EXPECT_NE(outcome.output.find("analysis    continuation in the load parameter"), std::string::npos)
+      << outcome.output;
+  EXPECT_EQ(outcome.output.find("Newmark"), std::string::npos) << outcome.output;
+}
+
 TEST(CliContinuation, RunWritesThePathOfTheSnapThrough) {
   const ScratchFolder folder("cli_continuation");
   std::filesystem::create_directories(folder.path());

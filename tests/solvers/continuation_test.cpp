@@ -335,7 +335,27 @@ TEST(Continuation, StopFlagEndsThePathBeforeTheNextStep) {
   EXPECT_EQ(result.points.size(), 1u);
 }
 
-// A planar roof of 20 units heated by 130 °C (the posts fan out from 5° to about 20°), traced
+// The poll hook (where the Python module looks for Ctrl-C) runs before every step and can stop
+// the path there.
+TEST(Continuation, PollCanStopThePath) {
+  const MisesTruss truss;
+  const Model model = truss.model();
+  const Assembler assembler(model);
+  std::atomic<bool> stop{false};
+  int n_polls = 0;
+  ContinuationOptions options = snap_through_options(truss);
+  options.stop = &stop;
+  options.poll = [&] {
+    if (++n_polls == 3) stop.store(true);
+  };
+  const ContinuationResult result = trace(assembler, options);
+  EXPECT_EQ(result.end, ContinuationEnd::stopped);
+  EXPECT_EQ(n_polls, 3);
+  EXPECT_EQ(result.points.size(), 3u);
+}
+
+// A planar roof of 20 units on pinned bearings heated by 130 °C (the posts fan out from 5° to
+// about 20°), traced
 // in the ΔT scale with the sparse back end and without the dense stability analysis: it must
 // end on the equilibrium that load stepping finds (StaticSolver tests), with μ rising all the
 // way (no limit point on this stretch).
@@ -343,6 +363,7 @@ TEST(Continuation, HeatedRoofEndsOnTheLoadSteppingEquilibrium) {
   RoofOptions roof;
   roof.n_units = 20;
   roof.delta_t_C = 130.0;
+  roof.bearings = RoofBearings::pinned;
   const Model model = make_roof(roof);
   const Assembler assembler(model);
   ContinuationOptions options;

@@ -136,6 +136,7 @@ RunReport run_path_to_folder(const Model& model, const std::filesystem::path& fo
   options.max_steps = settings.max_steps;
   options.newton = model.analysis.newton;
   options.stop = control.stop;
+  options.poll = control.poll;  // the Python module looks for Ctrl-C there
   const auto system = make_linear_system(assembler);
   const ContinuationResult result =
       trace_path(assembler, options, *system, assembler.initial_coordinates(),

@@ -438,6 +438,7 @@ ContinuationResult PathTracer::run(const Eigen::VectorXd& q0, const Eigen::Vecto
       result_.message = fmt::format("stopped after {} steps at μ = {:.6g}", step, current.parameter);
       return result_;
     }
+    if (options_.poll) options_.poll();
     if (options_.stop != nullptr && options_.stop->load()) {
       result_.end = ContinuationEnd::stopped;
       result_.message = fmt::format("stopped on request at μ = {:.6g}", current.parameter);

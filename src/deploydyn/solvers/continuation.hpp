@@ -50,6 +50,7 @@
 // (the eigenvector through zero, mapped back to q) and the member forces there.
 
 #include <atomic>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -78,6 +79,7 @@ struct ContinuationOptions {
   double location_tolerance = 1e-7;  // of an event's μ, relative to |end − start|
   NewtonOptions newton;  // tolerances (also of the corrector) and the start/end solves
   const std::atomic<bool>* stop = nullptr;  // polled before every step: Ctrl-C
+  std::function<void()> poll;               // called before every step; may set *stop
 };
 
 // Throws std::invalid_argument naming the option and what is allowed.
