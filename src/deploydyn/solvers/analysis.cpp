@@ -9,6 +9,7 @@
 
 #include "deploydyn/assembly/linear_system_factory.hpp"
 #include "deploydyn/solvers/consistent_rates.hpp"
+#include "deploydyn/solvers/continuation.hpp"
 #include "deploydyn/solvers/generalized_alpha.hpp"
 #include "deploydyn/solvers/static_solver.hpp"
 #include "deploydyn/solvers/step_controller.hpp"
@@ -94,6 +95,62 @@ class WorkCounter {
   double work_J_ = 0.0;
 };
 
+// The initial equilibrium finished by arc-length continuation in the ΔT scale (solvers/
+// continuation.hpp) from where load stepping stalled, at `reached` of the thermal load.
+struct ContinuedStart {
+  bool reached = false;  // at the full thermal load: `state` holds it
+  bool stopped = false;
+  bool met_event = false;  // a limit point, bifurcation or dead centre ended it
+  int iterations = 0;
+  std::string reason;    // why not: what the path met, in physical terms
+};
+
+// Dense stability eigenvalues are computed up to this many coordinates (limit points are
+// found at any size, bifurcations only with them).
+constexpr int kStartStabilityDofs = 2000;
+
+ContinuedStart continue_thermal_start(const Assembler& assembler, const AnalysisOptions& analysis,
+                                      const RunControl& control, LinearSystem& system, double reached,
+                                      MotionState& state) {
+  ContinuationOptions options;
+  options.parameter = PathParameter::thermal;
+  options.time_s = 0.0;
+  options.start = reached;
+  options.end = 1.0;
+  options.n_eigenvalues = assembler.n_dofs() <= kStartStabilityDofs ? 1 : 0;
+  options.newton = analysis.newton;
+  options.stop = control.stop;
+  options.poll = control.poll;
+  const ContinuationResult path = trace_path(assembler, options, system, state.q, state.lambda);
+  ContinuedStart out;
+  out.iterations = path.total_iterations;
+  out.stopped = path.end == ContinuationEnd::stopped;
+  if (path.end == ContinuationEnd::reached_end) {
+    state.q = path.points.back().q;
+    state.lambda = path.points.back().lambda;
+    out.reached = true;
+    return out;
+  }
+  const double dT0_C = assembler.model().temperature_change_C.value(0.0);
+  if (!path.events.empty()) {
+    out.met_event = true;
+    const PathEvent& event = path.events.front();
+    out.reason = fmt::format(
+        "load stepping stalled at {:.1f}% of the thermal load, and its continuation meets {} at {:.6g}% "
+        "(ΔT = {:.6g} °C on bars with the model's ΔT): the structure has no equilibrium on this branch "
+        "beyond it. {}",
+        100.0 * reached, event.kind == PathEventKind::limit_point ? "a limit point (it would snap)"
+                         : event.kind == PathEventKind::bifurcation ? "a bifurcation (it would buckle)"
+                                                                      : "singular constraints (a dead centre)",
+        100.0 * event.parameter, event.parameter * dT0_C, event.description);
+  } else {
+    out.reason = fmt::format("load stepping stalled at {:.1f}% of the thermal load, and its continuation "
+                             "did not reach it either: {}",
+                             100.0 * reached, path.message);
+  }
+  return out;
+}
+
 }  // namespace
 
 const char* to_string(RunStatus status) {
@@ -154,7 +211,24 @@ RunReport run_analysis(const Assembler& assembler, RecordSink& sink, const RunCo
                                  100.0 * initial.path_factor);
     return finish(report);
   }
-  if (initial.path_factor < 1.0) {
+  if (initial.path_factor > 0.0 && initial.path_factor < 1.0 && !free_mechanism) {
+    // Load stepping stalled on the way: follow the thermal path by continuation, through limit
+    // points, to tell a structure that has no equilibrium at this temperature from a solver
+    // that gave up. (Stalled at 0 %, the start itself is singular: its diagnosis says why.)
+    const ContinuedStart continued = continue_thermal_start(assembler, options, control, system,
+                                                            initial.path_factor, state);
+    report.initial_iterations += continued.iterations;
+    if (continued.stopped) {
+      report.status = RunStatus::interrupted;
+      report.message = "interrupted in the initial equilibrium (continuation of the thermal load)";
+      return finish(report);
+    }
+    if (!continued.reached) {
+      FailureReport f = describe_failure(assembler, "initial equilibrium", 0.0, 0, initial.newton);
+      f.reason = continued.met_event ? continued.reason : f.reason + "; " + continued.reason;
+      return fail(f);
+    }
+  } else if (initial.path_factor < 1.0) {
     FailureReport f = describe_failure(assembler, "initial equilibrium", 0.0, 0, initial.newton);
     f.reason += fmt::format(" (thermal load reached {:.1f}%)", 100.0 * initial.path_factor);
     return fail(f);

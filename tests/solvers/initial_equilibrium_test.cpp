@@ -1,0 +1,76 @@
+// The initial equilibrium where load stepping stalls: the continuation takes over and either
+// reaches the full thermal load or names what the structure meets, located against a closed
+// form. A shallow two-bar (von Mises) truss of Green–Lagrange bars with a fixed apex load P,
+// cooled: with k = EA/L0³ and c² = h² + 2αΔT L0², the apex height y satisfies
+//   P = k y (c² − y²)   ⇒   c²(y) = y² + P/(k y),
+// whose upper branch ends where dc²/dy = 0: y* = (P/(2k))^(1/3), c*² = 3 y*². Cooled beyond
+//   ΔT* = (3 y*² − h²) / (2 α L0²)
+// the loaded truss has no equilibrium near its start: it snaps through.
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "deploydyn/solvers/analysis.hpp"
+#include "support/model_builder.hpp"
+
+namespace deploydyn {
+namespace {
+
+using testing::BarSpec;
+using testing::ModelBuilder;
+
+constexpr double kHalfSpan_m = 1.0, kRise_m = 0.1, kEA_N = 2e7, kAlpha_per_C = 1.2e-5;
+
+double l0() { return std::hypot(kHalfSpan_m, kRise_m); }
+double k_N_m3() { return kEA_N / std::pow(l0(), 3); }
+// Half the limit load at ΔT = 0: k h³ · 2/(3√3) / 2.
+double apex_load_N() { return 0.5 * k_N_m3() * std::pow(kRise_m, 3) * 2.0 / (3.0 * std::sqrt(3.0)); }
+double snap_temperature_C() {
+  const double y_star = std::cbrt(apex_load_N() / (2.0 * k_N_m3()));
+  return (3.0 * y_star * y_star - kRise_m * kRise_m) / (2.0 * kAlpha_per_C * l0() * l0());
+}
+
+Model cooled_truss(double delta_t_C) {
+  ModelBuilder m(2);
+  const int a = m.node("A", Eigen::Vector3d(-kHalfSpan_m, 0.0, 0.0));
+  const int b = m.node("B", Eigen::Vector3d(kHalfSpan_m, 0.0, 0.0));
+  const int c = m.node("C", Eigen::Vector3d(0.0, kRise_m, 0.0));
+  const BarSpec spec{2e11, 1e-4, 1.0, kAlpha_per_C, {}, TimeFunction::constant(delta_t_C)};
+  m.bar(a, c, spec);
+  m.bar(b, c, spec);
+  m.pin(a);
+  m.pin(b);
+  m.load(c, Eigen::Vector3d(0.0, -apex_load_N(), 0.0), TimeFunction::constant(1.0));
+  m.analysis().type = AnalysisType::quasi_static;
+  m.analysis().end_time_s = 0.1;
+  m.analysis().step_s = 0.1;
+  m.analysis().output_interval_s = 0.1;
+  Model model = m.model();
+  model.temperature_change_C = TimeFunction::constant(delta_t_C);
+  return model;
+}
+
+TEST(InitialEquilibrium, ACooledLoadedTrussBeyondItsSnapIsReportedAsALimitPoint) {
+  const double snap_C = snap_temperature_C();
+  ASSERT_LT(snap_C, 0.0);
+  const double cooled_C = 1.5 * snap_C;
+  const testing::RunResult run = testing::run(cooled_truss(cooled_C));
+  ASSERT_EQ(run.report.status, RunStatus::failed);
+  const std::string& reason = run.report.failure.reason;
+  EXPECT_NE(reason.find("a limit point (it would snap)"), std::string::npos) << reason;
+  EXPECT_NE(reason.find("no equilibrium on this branch"), std::string::npos) << reason;
+  // The share of the thermal load where it happens, as printed (6 digits): ΔT*/ΔT.
+  const std::size_t at = reason.find("meets a limit point (it would snap) at ");
+  ASSERT_NE(at, std::string::npos) << reason;
+  const double percent = std::stod(reason.substr(at + std::string("meets a limit point (it would snap) at ").size()));
+  EXPECT_NEAR(percent / 100.0, snap_C / cooled_C, 1e-5) << reason;
+}
+
+TEST(InitialEquilibrium, ACooledLoadedTrussShortOfItsSnapStarts) {
+  const testing::RunResult run = testing::run(cooled_truss(0.9 * snap_temperature_C()));
+  ASSERT_EQ(run.report.status, RunStatus::completed) << run.report.message;
+}
+
+}  // namespace
+}  // namespace deploydyn
