@@ -27,12 +27,14 @@
 #include "deploydyn/assembly/linear_system_factory.hpp"
 #include "deploydyn/generators/roof.hpp"
 #include "deploydyn/solvers/static_solver.hpp"
+#include "support/mises_truss.hpp"
 #include "support/model_builder.hpp"
 
 namespace deploydyn {
 namespace {
 
 using testing::BarSpec;
+using testing::MisesTruss;
 using testing::ModelBuilder;
 
 // The corrector stops at ‖r‖∞ ≤ 1e-8 × the largest force term; the bar forces are at most
@@ -45,49 +47,6 @@ constexpr double kEigenvalueShareOfEA_L0 = 1e-6;
 // An event's μ: within the bound the solver states (at most location_tolerance × range) plus
 // the equilibrium error, 1e-7 P* (see kPathForceShare) with margin.
 constexpr double kEquilibriumMuShare = 1e-6;
-
-struct MisesTruss {
-  double half_span_m = 1.0;     // a
-  double rise_m = 0.1;          // h
-  double axial_stiffness_N = 2e7;  // EA = 2e11 Pa × 1e-4 m²
-  double expansion_per_C = 1.2e-5;
-  double temperature_change_C = 0.0;
-  double reference_load_N = 1e4;  // P_ref
-
-  double l0() const { return std::hypot(half_span_m, rise_m); }
-  double c() const {
-    return std::sqrt(rise_m * rise_m + 2.0 * expansion_per_C * temperature_change_C * l0() * l0());
-  }
-  double load(double y) const {  // P(y), N
-    return axial_stiffness_N / std::pow(l0(), 3) * y * (c() * c() - y * y);
-  }
-  double limit_height_m() const { return c() / std::sqrt(3.0); }
-  double limit_load_N() const { return load(limit_height_m()); }
-  double pk2_force(double y) const {
-    return axial_stiffness_N * ((y * y - rise_m * rise_m) / (2.0 * l0() * l0()) -
-                                expansion_per_C * temperature_change_C);
-  }
-  double vertical_stiffness(double y) const {
-    return 2.0 * (pk2_force(y) / l0() + axial_stiffness_N * y * y / std::pow(l0(), 3));
-  }
-  double horizontal_stiffness(double y) const {
-    return 2.0 * (pk2_force(y) / l0() + axial_stiffness_N * half_span_m * half_span_m / std::pow(l0(), 3));
-  }
-
-  Model model() const {
-    ModelBuilder m(2);
-    const int a = m.node("A", Eigen::Vector3d(-half_span_m, 0.0, 0.0));
-    const int b = m.node("B", Eigen::Vector3d(half_span_m, 0.0, 0.0));
-    const int c = m.node("C", Eigen::Vector3d(0.0, rise_m, 0.0));
-    const BarSpec spec{2e11, 1e-4, 1.0, expansion_per_C, {}, TimeFunction::constant(temperature_change_C)};
-    m.bar(a, c, spec);
-    m.bar(b, c, spec);
-    m.pin(a);
-    m.pin(b);
-    m.load(c, Eigen::Vector3d(0.0, -reference_load_N, 0.0), TimeFunction::constant(1.0));
-    return m.model();
-  }
-};
 
 constexpr int kApexX = 4, kApexY = 5;  // C is the third node
 

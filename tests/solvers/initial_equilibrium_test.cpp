@@ -12,41 +12,32 @@
 #include <cmath>
 
 #include "deploydyn/solvers/analysis.hpp"
+#include "support/mises_truss.hpp"
 #include "support/model_builder.hpp"
 
 namespace deploydyn {
 namespace {
 
-using testing::BarSpec;
-using testing::ModelBuilder;
+using testing::MisesTruss;
 
-constexpr double kHalfSpan_m = 1.0, kRise_m = 0.1, kEA_N = 2e7, kAlpha_per_C = 1.2e-5;
+const MisesTruss kTruss;  // a = 1 m, h = 0.1 m, EA = 2e7 N, α = 1.2e-5 /°C
 
-double l0() { return std::hypot(kHalfSpan_m, kRise_m); }
-double k_N_m3() { return kEA_N / std::pow(l0(), 3); }
+double k_N_m3() { return kTruss.axial_stiffness_N / std::pow(kTruss.l0(), 3); }
 // Half the limit load at ΔT = 0: k h³ · 2/(3√3) / 2.
-double apex_load_N() { return 0.5 * k_N_m3() * std::pow(kRise_m, 3) * 2.0 / (3.0 * std::sqrt(3.0)); }
+double apex_load_N() { return 0.5 * k_N_m3() * std::pow(kTruss.rise_m, 3) * 2.0 / (3.0 * std::sqrt(3.0)); }
 double snap_temperature_C() {
   const double y_star = std::cbrt(apex_load_N() / (2.0 * k_N_m3()));
-  return (3.0 * y_star * y_star - kRise_m * kRise_m) / (2.0 * kAlpha_per_C * l0() * l0());
+  return (3.0 * y_star * y_star - kTruss.rise_m * kTruss.rise_m) /
+         (2.0 * kTruss.expansion_per_C * kTruss.l0() * kTruss.l0());
 }
 
 Model cooled_truss(double delta_t_C) {
-  ModelBuilder m(2);
-  const int a = m.node("A", Eigen::Vector3d(-kHalfSpan_m, 0.0, 0.0));
-  const int b = m.node("B", Eigen::Vector3d(kHalfSpan_m, 0.0, 0.0));
-  const int c = m.node("C", Eigen::Vector3d(0.0, kRise_m, 0.0));
-  const BarSpec spec{2e11, 1e-4, 1.0, kAlpha_per_C, {}, TimeFunction::constant(delta_t_C)};
-  m.bar(a, c, spec);
-  m.bar(b, c, spec);
-  m.pin(a);
-  m.pin(b);
-  m.load(c, Eigen::Vector3d(0.0, -apex_load_N(), 0.0), TimeFunction::constant(1.0));
-  m.analysis().type = AnalysisType::quasi_static;
-  m.analysis().end_time_s = 0.1;
-  m.analysis().step_s = 0.1;
-  m.analysis().output_interval_s = 0.1;
-  Model model = m.model();
+  MisesTruss truss = kTruss;
+  truss.temperature_change_C = delta_t_C;
+  truss.reference_load_N = apex_load_N();
+  Model model = truss.model();
+  model.analysis.type = AnalysisType::quasi_static;
+  model.analysis.end_time_s = model.analysis.step_s = model.analysis.output_interval_s = 0.1;
   model.temperature_change_C = TimeFunction::constant(delta_t_C);
   return model;
 }
