@@ -39,7 +39,7 @@ TEST_F(Cli, RunWritesTheContractFiles) {
   const auto o = run_cli("run " + example("parallel.yaml") + " --quiet --out " + folder_.string() +
                             " --set analysis.end=0.05");
   ASSERT_EQ(o.exit_code, 0) << o.output;
-  // Golden header: the column contract of DESIGN §4 for the paper's names.
+  // Golden header: the column contract (README, "The outputs") for the paper's names.
   const std::string history = read_file(folder_ / "history.csv");
   EXPECT_EQ(history.substr(0, history.find('\n')),
             "t,x.A,y.A,x.B,y.B,x.C,y.C,x.D,y.D,strain.1,mstrain.1,force.1,strain.2,mstrain.2,"

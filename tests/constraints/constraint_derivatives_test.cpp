@@ -1,4 +1,4 @@
-// Constraint derivatives by finite differences (DESIGN §5, STYLE practice 9): Jacobian B,
+// Constraint derivatives by finite differences (docs/verification.md, STYLE practice 9): Jacobian B,
 // Hessian term H(λ) = ∂(Bᵀλ)/∂q, Φ_t, and the bias of Φ̈ = B q̈ + bias along a trajectory;
 // and the driver torque against the power of the constraint force.
 #include <gtest/gtest.h>

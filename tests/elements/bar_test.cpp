@@ -1,4 +1,4 @@
-// Bar element (DESIGN §2): derivatives by finite differences, mass by exact kinetic energy,
+// Bar element (docs/theory.md): derivatives by finite differences, mass by exact kinetic energy,
 // and the physical invariants of rigid motion and free thermal expansion.
 #include "deploydyn/elements/bar.hpp"
 

@@ -26,7 +26,7 @@ TEST(TimeFunction, PaperEq23MatchesTheFormula) {
     if (t >= 4.0) expected = 0.365 - 0.365 * (t - 4.0) * (t - 4.0) * (11.0 - 2.0 * t);
     EXPECT_NEAR(f.value(t), expected, 1e-14) << "t = " << t;
   }
-  // The total rotation when read as an angular velocity (DESIGN §2): 0.1825 + 3·0.365 + 0.1825.
+  // The total rotation when read as an angular velocity (docs/theory.md): 0.1825 + 3·0.365 + 0.1825.
   EXPECT_NEAR(f.integral(5.0), 1.46, 1e-13);
   EXPECT_NEAR(f.integral(7.0), 1.46, 1e-13);
 }

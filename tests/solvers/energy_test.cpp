@@ -1,4 +1,4 @@
-// Energy balance of Newmark runs (DESIGN §5): external_work = Δ(kinetic + strain_energy).
+// Energy balance of Newmark runs (docs/verification.md): external_work = Δ(kinetic + strain_energy).
 // For β = ¼, γ = ½, q_{n+1} − q_n = h (q̇_n + q̇_{n+1})/2, so the kinetic energy changes by
 // exactly the trapezoidal work of (f_ext − f_int − Bᵀλ) — the rule the runner's work counter
 // uses for f_ext − Bᵀλ. What is left is the trapezoidal error of the internal-force work,

@@ -1,4 +1,4 @@
-// Bar–mass oscillator (DESIGN §5): one bar, A pinned, B free along the bar only. Its axial
+// Bar–mass oscillator (docs/verification.md): one bar, A pinned, B free along the bar only. Its axial
 // mode has ω² = EA / (L0 m_eff), m_eff = m/3 for the consistent mass and m/2 for the lumped
 // one. Newmark's trapezoidal rule (β = ¼, γ = ½) keeps the amplitude and stretches the
 // period: the discrete frequency Ω solves tan(Ω h / 2) = ω h / 2.

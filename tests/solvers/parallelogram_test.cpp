@@ -1,4 +1,4 @@
-// The paper's parallel linkage at ΔT = 0 (DESIGN §3) against closed-form rigid kinematics:
+// The paper's parallel linkage at ΔT = 0 (docs/paper-study.md) against closed-form rigid kinematics:
 // the posts stay parallel at θ(t) = 5° + ∫ω (Eq. 23 read as an angular velocity), so
 //   B = A + L1 (cos θ, sin θ),   C = D + L3 (cos θ, sin θ).
 // With no gravity the actuator only accelerates the mechanism, whose kinetic energy is

@@ -1,5 +1,5 @@
 // Verification 5: an independent dynamic cross-check of the flexible general linkage (real E,
-// DESIGN §3) at ΔT = 0 and +130 °C, over the whole deployment. The second formulation
+// docs/paper-study.md) at ΔT = 0 and +130 °C, over the whole deployment. The second formulation
 // (four_bar.hpp, FlexibleGeneralLinkage) has three unknowns — the crank's length along the
 // driven direction and C's x, y — no constraints and no multipliers; its Lagrange equations are
 // derived by hand and integrated by classical Runge–Kutta at 10 µs. deploydyn integrates the

@@ -1,4 +1,4 @@
-// Verification 2: the bar–mass axial oscillator (DESIGN §5). A bar A–B (EA, L0, mass m,
+// Verification 2: the bar–mass axial oscillator (docs/verification.md). A bar A–B (EA, L0, mass m,
 // consistent mass), A pinned, B on a roller along the bar and carrying a point mass M. B's
 // axial motion u obeys (M + m/3) ü + (EA/L0) u = 0 to first order in u/L0 (the consistent mass
 // puts m/3 on B), so from rest at u0:   u(t) = u0 cos ωt,   ω² = EA / (L0 (M + m/3)).

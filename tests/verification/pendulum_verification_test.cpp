@@ -1,4 +1,4 @@
-// Verification 3: a rigid-body pendulum made of one stiff bar (DESIGN §5). Bar A–B of length L
+// Verification 3: a rigid-body pendulum made of one stiff bar (docs/verification.md). Bar A–B of length L
 // and mass m, A pinned, gravity g. deploydyn's consistent mass puts m/3 on B (A is fixed), so
 // the bar's moment of inertia about the pin is I = m L²/3 — the uniform rod's; gravity puts
 // m g/2 on each node, a torque (m g/2) L sin θ about A — the rod's m g (L/2) sin θ. Hence

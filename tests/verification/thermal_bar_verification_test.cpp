@@ -1,4 +1,4 @@
-// Verification 1: heated bars with closed-form answers (DESIGN §5, docs/theory.md "Bar element").
+// Verification 1: heated bars with closed-form answers (docs/verification.md, docs/theory.md "Bar element").
 //   Between two fixed pins the bar keeps l = L0, so ε = 0, ε_m = −αΔT and S = −EA α ΔT.
 //   Free to lengthen (one end on a roller along the bar) it settles where ε_m = 0:
 //   (l² − L0²)/(2 L0²) = αΔT, i.e. l = L0 √(1 + 2αΔT), and carries no force.

@@ -184,7 +184,7 @@ void Assembler::external_force(double t, Eigen::VectorXd& f) const {
   f.setZero(n_dofs());
   const int dim = model_.dimension;
   if (!model_.gravity_m_s2.isZero()) {
-    // Each bar's weight is shared equally by its two nodes (DESIGN §2).
+    // Each bar's weight is shared equally by its two nodes (docs/theory.md).
     for (int b = 0; b < model_.n_bars(); ++b) {
       for (int i = 0; i < 2 * dim; ++i) {
         f[bars_[b].dofs[i]] += 0.5 * bars_[b].mass_kg * model_.gravity_m_s2[i % dim];

@@ -1,7 +1,7 @@
 #pragma once
 // Builds the mechanics of a Model (bars, constraints, loads) and evaluates the global
 // quantities the solvers need, for
-//   M q̈ + f_int(q, t) + Bᵀλ = f_ext(t),   Φ(q, t) = 0          (DESIGN §2, paper Eq. 8)
+//   M q̈ + f_int(q, t) + Bᵀλ = f_ext(t),   Φ(q, t) = 0          (docs/theory.md, paper Eq. 8)
 // Elements and constraints return local vectors and matrices; this class scatters them.
 // It holds no solution state: q, q̇, λ are always passed in.
 

@@ -21,7 +21,7 @@ struct KluLinearSystem::Handles {
   Handles() {
     klu_defaults(&common);
     // No row scaling and no input check (-1): the assembler already sizes the constraint rows
-    // like the force block (DESIGN §2), and the pattern is valid by construction (sorted, no
+    // like the force block (docs/theory.md), and the pattern is valid by construction (sorted, no
     // repeats: SparseLinearSystem::build_storage). Scaling and checking at every
     // refactorization cost 9 % of a roof's time step.
     common.scale = -1;

@@ -1,5 +1,5 @@
 #pragma once
-// A holonomic constraint Φ(q, t) = 0 with its derivatives (DESIGN §2):
+// A holonomic constraint Φ(q, t) = 0 with its derivatives (docs/theory.md):
 //   B = ∂Φ/∂q                         Jacobian, on the few unknowns it touches
 //   H(λ) = ∂(Bᵀλ)/∂q                  Hessian contracted with the multipliers (corrects the
 //                                      paper's B₂ in Eqs. 12, 15, 19: it belongs to the Δq column)

@@ -1,5 +1,5 @@
 #pragma once
-// Driver that turns a bar's direction about its pivot node (DESIGN §2):
+// Driver that turns a bar's direction about its pivot node (docs/theory.md):
 //   Φ_k = n_k(t) · (x_b − x_a),   n_k(t) = R(axis, s(t)) n_k(0)
 // where the n_k are unit normals to the bar's initial direction: one in 2D (axis = z, so
 // Φ = −sin θ Δx + cos θ Δy), two in 3D. Only the direction is prescribed, the bar stays free

@@ -1,5 +1,5 @@
 #pragma once
-// The motion s(t) a driver imposes, from its profile f(t) and how f is read (DESIGN §2):
+// The motion s(t) a driver imposes, from its profile f(t) and how f is read (docs/theory.md):
 //   rate:  s = ∫₀ᵗ f,  ṡ = f,  s̈ = ḟ     (the paper's ω of Eq. 23 as an angular velocity)
 //   value: s = f,      ṡ = ḟ,  s̈ = f̈
 // s is a rotation (rad) for a bar-angle driver, a displacement (m) for a coordinate driver.

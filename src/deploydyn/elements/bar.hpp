@@ -1,6 +1,6 @@
 #pragma once
 // Two-node bar in absolute nodal coordinates (Géradin & Cardona 2000; Cai et al. 2017 Eqs. 1,
-// 16–18; DESIGN §2, with the paper's errata corrected).
+// 16–18; docs/theory.md, with the paper's errata corrected).
 //
 //   d = x_b − x_a,  ε = (d·d − L0²) / (2 L0²)        Green–Lagrange strain, Eq. (1)
 //   ε_m = ε − ε_t,  ε_t = α ΔT                        mechanical strain, Eq. (18)

@@ -3,8 +3,8 @@
 // Planar truss (n_trusses = 1, a 2D model): a chain of n_units parallelogram four-bar units
 // that share their posts. Post i stands on the bottom node b_i = (i·s, 0) and its top is
 // t_i = b_i + L (cos γ, sin γ); the top chord t_i–t_{i+1} is as long as the bay s, so every unit
-// is the paper's parallel linkage (DESIGN §3). The last post (b_N–t_N) is driven about b_N, as
-// the paper drives D–C.
+// is the paper's parallel linkage (docs/paper-study.md). The last post (b_N–t_N) is driven about
+// b_N, as the paper drives D–C.
 //
 // 3D roof (n_trusses = M > 1): M such trusses in the planes z = j·w, j = 0 … M−1, joined at
 // their top nodes by purlins t_i^j–t_i^{j+1} and braced in the roof plane by diagonals

@@ -26,7 +26,7 @@ struct Material {
   std::optional<double> density_kg_m3;  // used when an element gives no mass
 };
 
-// Two-node bar (truss) element, DESIGN §2. Material values are copied in at load time.
+// Two-node bar (truss) element, docs/theory.md. Material values are copied in at load time.
 struct BarElement {
   std::string name;
   int node_a = 0, node_b = 0;  // indices into Model::nodes
@@ -55,7 +55,7 @@ enum class DriverReading {
 // Rheonomic constraint that moves the mechanism and reports the effort it needs.
 struct Driver {
   enum class Kind {
-    bar_angle,   // turns a bar's direction about its pivot node; the bar stays elastic (DESIGN §2)
+    bar_angle,   // turns a bar's direction about its pivot node; the bar stays elastic (docs/theory.md)
     coordinate,  // prescribes one coordinate of a node
   };
   std::string name;

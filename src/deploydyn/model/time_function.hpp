@@ -3,7 +3,7 @@
 //
 // Every kind gives the value, the first two derivatives (needed for consistent initial
 // velocities and accelerations of rheonomic constraints) and the integral from 0 to t (needed
-// when a driver's profile is read as an angular velocity, DESIGN §2).
+// when a driver's profile is read as an angular velocity, docs/theory.md).
 
 #include <variant>
 #include <vector>

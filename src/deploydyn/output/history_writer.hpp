@@ -1,5 +1,5 @@
 #pragma once
-// history.csv (DESIGN §4): one header row, then one row per output time:
+// history.csv (README, "The outputs"): one header row, then one row per output time:
 //   t, x.<node>, y.<node>[, z.<node>] ..., strain.<el>, mstrain.<el>, force.<el> ...,
 //   torque.<driver> | force.<driver> ..., kinetic, strain_energy, external_work
 // Rows are gathered and written in whole rows at least every 200 ms of wall time, so a crash

@@ -1,6 +1,6 @@
 #pragma once
-// Velocity and acceleration consistent with the constraints at state.time_s (DESIGN §3:
-// start from rest): q̇ is the smallest motion with B q̇ = −Φ_t, from
+// Velocity and acceleration consistent with the constraints at state.time_s (docs/theory.md,
+// "Static equilibrium": start from rest): q̇ is the smallest motion with B q̇ = −Φ_t, from
 //   [M Bᵀ; B 0] [q̇; μ] = [0; −Φ_t],
 // then q̈ and λ from
 //   [M Bᵀ; B 0] [q̈; λ] = [f_ext − f_int; −bias],   bias = Φ̈ − B q̈.

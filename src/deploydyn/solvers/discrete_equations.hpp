@@ -3,7 +3,7 @@
 //   r(q, λ) = 0   (n_dofs force balance),   Φ(q) = 0   (constraints)
 // A static step and a Newmark step differ only in r and its matrix; Newton is shared.
 // λ enters the linear solve scaled, λ = s λ̂, so that the rows [s B, 0] match the size of the
-// force block (DESIGN §2: s = 1/(β h²) in dynamics).
+// force block (docs/theory.md: s = 1/(β h²) in dynamics).
 
 #include <Eigen/Core>
 

@@ -15,8 +15,8 @@
 // With ρ∞ = 1 the last two are the trapezoidal rule. Newton runs on q_{n+1} with
 //   ∂q̈_{n+1}/∂q_{n+1} = c = (1 − α_m) / ((1 − α_f) β h²)
 // and the iteration matrix [c M + K + H(λ), s Bᵀ; s B, 0]. Constraint rows and λ are scaled by
-// s = c·max diag M + max diag K so that they match the force block: as h → 0 this is DESIGN
-// §2's 1/(β h²) scaling (times a mass), and it stays balanced for large steps too.
+// s = c·max diag M + max diag K so that they match the force block: as h → 0 this is the
+// paper's 1/(β h²) scaling (docs/theory.md, errata) (times a mass), and it stays balanced for large steps too.
 
 #include <memory>
 

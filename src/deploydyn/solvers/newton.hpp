@@ -1,5 +1,5 @@
 #pragma once
-// Newton–Raphson on DiscreteEquations (paper Eqs. 10–15 with the errata of DESIGN §2):
+// Newton–Raphson on DiscreteEquations (paper Eqs. 10–15 with the errata in docs/theory.md):
 //   [∂r/∂q  s Bᵀ] [Δq ]     [ r ]
 //   [ s B    0  ] [Δλ̂] = − [s Φ],   q += Δq,  λ += s Δλ̂
 // Converged when ‖Φ‖∞ ≤ tol_constraint and either ‖r‖∞ ≤ tol_force · (largest force term)

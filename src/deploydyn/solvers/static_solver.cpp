@@ -76,7 +76,7 @@ StaticResult solve_static(const Assembler& assembler, const AnalysisOptions& opt
                           const LoadPath& path, int load_steps, LinearSystem& system,
                           MotionState& state, const RunControl& control) {
   StaticResult result;
-  // Constraint rows scaled to the stiffness keep the matrix balanced (DESIGN §2).
+  // Constraint rows scaled to the stiffness keep the matrix balanced (docs/theory.md).
   const double scale = assembler.stiffness_scale(state.q, state.time_s);
   const double requested_increment = 1.0 / std::max(load_steps, 1);
   double increment = requested_increment;
