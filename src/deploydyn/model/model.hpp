@@ -55,7 +55,8 @@ enum class DriverReading {
 // Rheonomic constraint that moves the mechanism and reports the effort it needs.
 struct Driver {
   enum class Kind {
-    bar_angle,   // turns a bar's direction about its pivot node; the bar stays elastic (docs/theory.md)
+    bar_angle,   // turns a bar's direction about its pivot node; the bar stays elastic
+                 // (docs/theory.md, "Constraints")
     coordinate,  // prescribes one coordinate of a node
   };
   std::string name;

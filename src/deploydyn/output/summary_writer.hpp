@@ -1,6 +1,6 @@
 #pragma once
-// summary.json (README, "The outputs"): how the run ended; per element min/max of total and mechanical
-// strain and axial force with their times; per driver the peak effort; final node positions;
+// summary.json (README, "The outputs"): how the run ended; per element min/max of total and
+// mechanical strain and axial force with their times; per driver the peak effort; final node positions;
 // steps, Newton iterations, rejected steps, wall time; warnings (output/plausibility.hpp);
 // the folder's files by role. Written by ResultFolder (output/result_folder.hpp): "running" at
 // the start of a run, the final status at its end, atomically.

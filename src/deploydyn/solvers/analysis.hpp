@@ -1,6 +1,7 @@
 #pragma once
 // Runs a model's analysis from start to end:
-//   1. static equilibrium at t = 0 with the thermal strain applied (load steps, docs/theory.md "Static equilibrium");
+//   1. static equilibrium at t = 0 with the thermal strain applied (load steps; docs/theory.md,
+//      "Static equilibrium");
 //   2. dynamic: consistent initial rates, then Newmark steps; static: a static solve per step;
 //   3. a StepRecord to the sink at t = 0 and at every output interval.
 // How it ended is a RunReport, never an exception: the caller keeps what was written.

@@ -4,6 +4,7 @@
 
 #include <cmath>
 #include <limits>
+#include <memory>
 #include <stdexcept>
 
 #include "deploydyn/assembly/linear_system_factory.hpp"
@@ -38,19 +39,19 @@ WindowSample sample(const Assembler& assembler, const PathPoint& point, double t
   return s;
 }
 
-// One side of the window at one driver position: the path from ΔT = 0 to reach_C.
-void trace_side(const Model& model, double reach_C, double time_s, const WindowOptions& options,
-                WindowSide& side, std::vector<WindowSample>& samples) {
-  const Model heated = with_uniform_temperature(model, reach_C);
-  const Assembler assembler(heated);
-  const auto system = make_linear_system(assembler);
+// One side of the window at one driver position: the path from ΔT = 0 to the side's reach,
+// on `assembler` (the model with that reach as its uniform ΔT) and its `system`.
+void trace_side(const Assembler& assembler, LinearSystem& system, double time_s,
+                const WindowOptions& options, WindowSide& side, std::vector<WindowSample>& samples) {
+  const Model& heated = assembler.model();
+  const double reach_C = side.reach_C;
   // The stress-free state at t: the drivers followed from 0 to t with no thermal strain.
   MotionState state;
   state.q = assembler.initial_coordinates();
   state.v = state.a = Eigen::VectorXd::Zero(assembler.n_dofs());
   state.lambda = Eigen::VectorXd::Zero(assembler.n_equations());
   const LoadPath to_position{0.0, time_s, 0.0, 0.0};
-  const StaticResult moved = solve_static(assembler, heated.analysis, to_position, 1, *system, state);
+  const StaticResult moved = solve_static(assembler, heated.analysis, to_position, 1, system, state);
   if (!moved.newton.converged) {
     side.failures.push_back(fmt::format("t = {:g} s: no equilibrium at ΔT = 0: {}", time_s, moved.newton.failure));
     return;
@@ -65,7 +66,7 @@ void trace_side(const Model& model, double reach_C, double time_s, const WindowO
   path.max_steps = options.max_steps;
   path.newton = heated.analysis.newton;
   path.stop = options.stop;
-  const ContinuationResult result = trace_path(assembler, path, *system, state.q, state.lambda);
+  const ContinuationResult result = trace_path(assembler, path, system, state.q, state.lambda);
   // Up to the first event: beyond it the path leaves the branch the deployment is on.
   const int last = result.events.empty() ? static_cast<int>(result.points.size()) - 1 : result.events.front().point;
   for (int i = 0; i <= last; ++i) samples.push_back(sample(assembler, result.points[i], time_s, reach_C));
@@ -111,13 +112,31 @@ WindowResult deployability_window(const Model& model, const WindowOptions& optio
   for (int k = 0; k < n; ++k) {
     window.times_s.push_back(n == 1 ? 0.0 : model.analysis.end_time_s * k / (n - 1));
   }
+  // Per side one model, assembler and matrix pattern, shared by all driver positions.
+  // (The Assembler keeps a reference to its model: the model is held by pointer so that it
+  // stays put when `sides` grows.)
+  struct Side {
+    WindowSide* side;
+    std::unique_ptr<const Model> model;
+    std::unique_ptr<Assembler> assembler;
+    std::unique_ptr<LinearSystem> system;
+  };
+  std::vector<Side> sides;
+  for (WindowSide* side : {&window.cold, &window.hot}) {
+    if (side->reach_C == 0.0) continue;
+    Side& s = sides.emplace_back();
+    s.side = side;
+    s.model = std::make_unique<const Model>(with_uniform_temperature(model, side->reach_C));
+    s.assembler = std::make_unique<Assembler>(*s.model);
+    s.system = make_linear_system(*s.assembler);
+  }
   for (const double t : window.times_s) {
-    for (WindowSide* side : {&window.cold, &window.hot}) {
+    for (Side& s : sides) {
       if (options.stop != nullptr && options.stop->load()) {
         window.stopped = true;
         return window;
       }
-      if (side->reach_C != 0.0) trace_side(model, side->reach_C, t, options, *side, window.samples);
+      trace_side(*s.assembler, *s.system, t, options, *s.side, window.samples);
     }
   }
   return window;

@@ -17,8 +17,8 @@ class GeneralizedAlphaEquations final : public DiscreteEquations {
     t_ = start.time_s + h;
     c_pseudo_ = 1.0 / (c.beta * h * h);
     c_true_ = (1.0 - c.alpha_m) / (1.0 - c.alpha_f) * c_pseudo_;
-    // c·M dominates as h → 0 (the paper's 1/(β h²) scaling, docs/theory.md errata); K when h is large. Only its size
-    // matters, so the stiffness part is taken once, at the first step.
+    // c·M dominates as h → 0 (the paper's 1/(β h²) scaling, docs/theory.md errata); K when h
+    // is large. Only its size matters, so the stiffness part is taken once, at the first step.
     if (stiffness_scale_ == 0.0) stiffness_scale_ = assembler_.stiffness_scale(start.q, start.time_s);
     constraint_scale_ = c_true_ * assembler_.mass_scale() + stiffness_scale_;
     predicted_ = start.q + h * start.v + (h * h * (0.5 - c.beta)) * start.pseudo_a;

@@ -16,7 +16,8 @@
 //   ∂q̈_{n+1}/∂q_{n+1} = c = (1 − α_m) / ((1 − α_f) β h²)
 // and the iteration matrix [c M + K + H(λ), s Bᵀ; s B, 0]. Constraint rows and λ are scaled by
 // s = c·max diag M + max diag K so that they match the force block: as h → 0 this is the
-// paper's 1/(β h²) scaling (docs/theory.md, errata) (times a mass), and it stays balanced for large steps too.
+// paper's 1/(β h²) scaling (docs/theory.md, errata) times a mass, and it stays balanced for
+// large steps too.
 
 #include <memory>
 
