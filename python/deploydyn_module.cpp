@@ -270,15 +270,21 @@ py::dict analysis_info(const Model& model) {
 }  // namespace
 
 // A path of static equilibria in one parameter (solvers/continuation.hpp): "thermal" scales
-// every ΔT, "load" the loads and gravity; from the model's initial state at μ = start.
+// every ΔT, "load" the loads and gravity, "driver" is the time of a quasi-static deployment;
+// from the model's initial state at μ = start.
 py::dict continuation_of(const LoadedModel& loaded, const std::string& parameter, double start,
                          double end, int n_eigenvalues, int max_steps, double time_s) {
-  if (parameter != "thermal" && parameter != "load") {
-    throw std::invalid_argument("continuation: parameter must be 'thermal' or 'load', got '" + parameter + "'");
+  constexpr PathParameter kParameters[] = {PathParameter::thermal, PathParameter::load,
+                                           PathParameter::driver};
+  const auto named = std::find_if(std::begin(kParameters), std::end(kParameters),
+                                  [&](PathParameter p) { return parameter == to_string(p); });
+  if (named == std::end(kParameters)) {
+    throw std::invalid_argument("continuation: parameter must be 'thermal', 'load' or 'driver', got '" +
+                                parameter + "'");
   }
   const Assembler assembler(loaded.model);  // std::invalid_argument → ValueError
   ContinuationOptions options;
-  options.parameter = parameter == "thermal" ? PathParameter::thermal : PathParameter::load;
+  options.parameter = *named;
   options.start = start;
   options.end = end;
   options.n_eigenvalues = n_eigenvalues;

@@ -165,19 +165,49 @@ void Assembler::internal_force(const Eigen::VectorXd& q, double t, double therma
   });
 }
 
-void Assembler::thermal_force_derivative(const Eigen::VectorXd& q, double t,
-                                         Eigen::VectorXd& f) const {
-  f.setZero(n_dofs());
+void Assembler::add_thermal_strain_change(const Eigen::VectorXd& q, double t, auto&& change,
+                                          Eigen::VectorXd& f) const {
   with_dimension(model_.dimension, [&](auto dim) {
     constexpr int D = decltype(dim)::value;
     for_each_bar<D>(q, t, 1.0, [&](int b, std::span<const int> d, const auto& s,
                                    const bar::Section& section) {
-      // The thermal strain of the factor is factor · ε_t: chain rule through ∂f/∂ε_t.
-      const bar::ElementVector<D> fe =
-          thermal_strain(b, t) * bar::internal_force_per_thermal_strain<D>(s, section);
+      const bar::ElementVector<D> fe = change(b) * bar::internal_force_per_thermal_strain<D>(s, section);
       for (int i = 0; i < 2 * D; ++i) f[d[i]] += fe[i];
     });
   });
+}
+
+void Assembler::thermal_force_derivative(const Eigen::VectorXd& q, double t,
+                                         Eigen::VectorXd& f) const {
+  f.setZero(n_dofs());
+  // The thermal strain of the factor is factor · ε_t: chain rule through ∂f/∂ε_t.
+  add_thermal_strain_change(q, t, [&](int b) { return thermal_strain(b, t); }, f);
+}
+
+void Assembler::static_residual_time_derivative(const Eigen::VectorXd& q, double t,
+                                                const Eigen::VectorXd& lambda,
+                                                Eigen::VectorXd& dr,
+                                                Eigen::VectorXd& dphi) const {
+  dr.setZero(n_dofs());
+  add_thermal_strain_change(
+      q, t,
+      [&](int b) { return bars_[b].expansion_per_C * bars_[b].temperature_change_C->derivative(t); },
+      dr);
+  const int dim = model_.dimension;
+  for (const NodalLoad& load : model_.loads) {  // gravity does not change with t
+    const double rate = load.factor.derivative(t);
+    for (int axis = 0; axis < dim; ++axis) dr[dofs_.index(load.node, axis)] -= rate * load.force_N[axis];
+  }
+  Eigen::VectorXd local;
+  for (std::size_t c = 0; c < constraints_.size(); ++c) {
+    const Constraint& con = *constraints_[c];
+    const std::span<const int> dofs = con.dofs();
+    local.setZero(static_cast<Eigen::Index>(dofs.size()));
+    con.add_force_time_derivative(q, t, lambda.segment(first_row_[c], con.n_equations()), local);
+    for (std::size_t i = 0; i < dofs.size(); ++i) dr[dofs[i]] += local[static_cast<Eigen::Index>(i)];
+  }
+  Eigen::VectorXd bias;  // of Φ̈; not wanted: a zero velocity keeps it cheap
+  constraint_rates(q, Eigen::VectorXd::Zero(n_dofs()), t, dphi, bias);
 }
 
 void Assembler::external_force(double t, Eigen::VectorXd& f) const {

@@ -505,7 +505,7 @@ class ModelReader {
     analysis.type = AnalysisType::continuation;
     ContinuationSettings& c = analysis.continuation;
     const YamlValue parameter = spec.at("parameter");
-    c.parameter = parameter.choice({"thermal", "load"}) == 0 ? PathParameter::thermal : PathParameter::load;
+    c.parameter = static_cast<PathParameter>(parameter.choice({"thermal", "load", "driver"}));
     c.start = spec.number_or("start", c.start, Sign::any, "");
     const YamlValue end = spec.at("end");
     c.end = end.number(Sign::any, "");
