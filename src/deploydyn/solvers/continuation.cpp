@@ -102,6 +102,11 @@ class PathTracer {
               PathEventKind kind);
   void record_event(PathEventKind kind, PathPoint point, const Tangent& t, double error);
   bool land_on_end(const PathPoint& before, const PathPoint& after);
+  // From the bifurcation just recorded (the path's last point and event), a first point on
+  // the bifurcated branch: predictor along the critical mode φ (q̇ = ℓ φ, μ̇ = 0), corrector on
+  // the plane φᵀ(q − q_p) = 0, which the primary branch crosses only at the bifurcation when
+  // it does not move along φ; tried with Δs, Δs/2, … and both signs of φ. Empty if none.
+  std::optional<Trial> switch_branch(double ds);
 
   const Assembler& assembler_;
   const ContinuationOptions& options_;
@@ -390,6 +395,27 @@ bool PathTracer::land_on_end(const PathPoint& before, const PathPoint& after) {
   return true;
 }
 
+std::optional<PathTracer::Trial> PathTracer::switch_branch(double ds) {
+  PathEvent& event = result_.events.back();
+  if (event.mode.size() != assembler_.n_dofs()) return std::nullopt;
+  const PathPoint bifurcation = result_.points.back();
+  Tangent along;
+  along.lambda_rate = Eigen::VectorXd::Zero(assembler_.n_equations());
+  // Steps near the bifurcation shrank onto it (the eigenvalue rules): step off it afresh.
+  const double first = std::max(ds, options_.initial_step);
+  for (double sigma = first; sigma >= std::max(options_.min_step, 1e-3 * first); sigma *= 0.5) {
+    for (const double sign : {1.0, -1.0}) {
+      along.q_rate = sign * length_ * event.mode;
+      std::optional<Trial> trial = step_from(bifurcation, along, sigma);
+      if (!trial) continue;
+      event.description += fmt::format("; switched to the bifurcated branch (μ = {:.9g} there)",
+                                       trial->point.parameter);
+      return trial;
+    }
+  }
+  return std::nullopt;
+}
+
 ContinuationResult PathTracer::run(const Eigen::VectorXd& q0, const Eigen::VectorXd& lambda0) {
   PathPoint current;
   current.q = q0;
@@ -445,6 +471,7 @@ ContinuationResult PathTracer::run(const Eigen::VectorXd& q0, const Eigen::Vecto
   analyse_stability(current);
   result_.points.push_back(current);
 
+  bool switched = false;  // onto a bifurcated branch (once per path)
   const double cos_max_turn = std::cos(options_.max_turn_rad);
   const auto rushes_to_critical = [&](const PathPoint& from, const PathPoint& to) {
     if (from.lowest_eigenvalues.size() == 0 || to.lowest_eigenvalues.size() == 0) return false;
@@ -505,6 +532,16 @@ ContinuationResult PathTracer::run(const Eigen::VectorXd& q0, const Eigen::Vecto
     } else if (current.n_negative >= 0 && next.point.n_negative >= 0 &&
                current.n_negative != next.point.n_negative) {
       locate(current, *t, next, ds, PathEventKind::bifurcation);
+      if (options_.switch_branch && !switched) {
+        if (std::optional<Trial> branch = switch_branch(ds)) {
+          switched = true;
+          current = branch->point;
+          *t = branch->tangent;
+          result_.points.push_back(std::move(branch->point));
+          continue;
+        }
+        result_.events.back().description += "; no bifurcated branch found along the critical mode";
+      }
     }
     const bool constraints_degenerate = current.constraint_rank >= 0 &&
                                         next.point.constraint_rank >= 0 &&

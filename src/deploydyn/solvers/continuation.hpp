@@ -55,6 +55,9 @@
 //                 not a structural instability, reported at the point, not located.
 // Each located event is a point of the path too, with its kind, critical eigenvalue and mode
 // (the eigenvector through zero, mapped back to q) and the member forces there.
+// Branch switching (`switch_branch`): at the first bifurcation the path steps off along the
+// critical mode φ, predictor (q, λ, μ)* + Δs (ℓ φ, 0, 0), corrector on the plane through the
+// predictor normal to φ, and goes on along the new branch.
 
 #include <atomic>
 #include <functional>
@@ -86,6 +89,10 @@ struct ContinuationOptions {
   int n_eigenvalues = 3;        // lowest ones reported per point; 0: no stability analysis
   int max_stability_dofs = 2000;  // dense eigen-solve above this is not attempted
   double location_tolerance = 1e-7;  // of an event's μ, relative to |end − start|
+  // At the first bifurcation, leave the path it was on and follow the bifurcated branch (the
+  // predictor along the critical mode, first Δs = max(Δs, initial_step); see
+  // PathTracer::switch_branch in continuation.cpp).
+  bool switch_branch = false;
   NewtonOptions newton;  // tolerances (also of the corrector) and the start/end solves
   const std::atomic<bool>* stop = nullptr;  // polled before every step: Ctrl-C
   std::function<void()> poll;               // called before every step; may set *stop
