@@ -92,6 +92,8 @@ class PathTracer {
   void locate(const PathPoint& from, const Tangent& t_from, const Trial& to, double ds,
               PathEventKind kind);
   void record_event(PathEventKind kind, PathPoint point, const Tangent& t, double error);
+  // Appends `point` (and the event located there) to the result and tells options_.on_point.
+  void keep(PathPoint point, std::optional<PathEvent> event = std::nullopt);
   bool land_on_end(const PathPoint& before, const PathPoint& after);
 
   const Assembler& assembler_;
@@ -278,10 +280,19 @@ void PathTracer::record_event(PathEventKind kind, PathPoint point, const Tangent
                                                           : "singular constraint Jacobian (dead centre or redundant constraints, not a structural instability)";
   event.description = fmt::format("{} at {} factor μ = {:.9g} (± {:.2g}){}", what,
                                   to_string(options_.parameter), point.parameter, error, where);
-  point.event = static_cast<int>(result_.events.size());
-  event.point = static_cast<int>(result_.points.size());
+  event.within_tolerance = error <= options_.location_tolerance * range_;
+  if (!event.within_tolerance) event.description += " (not located to the tolerance)";
+  keep(std::move(point), std::move(event));
+}
+
+void PathTracer::keep(PathPoint point, std::optional<PathEvent> event) {
+  if (event) {
+    point.event = static_cast<int>(result_.events.size());
+    event->point = static_cast<int>(result_.points.size());
+    result_.events.push_back(std::move(*event));
+  }
   result_.points.push_back(std::move(point));
-  result_.events.push_back(std::move(event));
+  if (options_.on_point) options_.on_point(result_.points.back(), event ? &result_.events.back() : nullptr);
 }
 
 void PathTracer::locate(const PathPoint& from, const Tangent& t_from, const Trial& to, double ds,
@@ -352,10 +363,7 @@ void PathTracer::locate(const PathPoint& from, const Tangent& t_from, const Tria
   const End& best = std::abs(lo.value) <= std::abs(hi.value) ? lo : hi;
   PathPoint point = *best.point;
   point.event = -1;
-  const double reached = bound();
-  record_event(kind, std::move(point), *best.tangent, reached);
-  result_.events.back().within_tolerance = reached <= tolerance;
-  if (reached > tolerance) result_.events.back().description += " (not located to the tolerance)";
+  record_event(kind, std::move(point), *best.tangent, bound());
 }
 
 bool PathTracer::land_on_end(const PathPoint& before, const PathPoint& after) {
@@ -373,7 +381,7 @@ bool PathTracer::land_on_end(const PathPoint& before, const PathPoint& after) {
   p.parameter_rate = after.parameter_rate;
   p.displacement_norm_m = (p.q - reference_q_).norm();
   analyse_stability(p);
-  result_.points.push_back(std::move(p));
+  keep(std::move(p));
   return true;
 }
 
@@ -428,7 +436,7 @@ ContinuationResult PathTracer::run(const Eigen::VectorXd& q0, const Eigen::Vecto
   current.parameter_rate = t->mu_rate;
   current.displacement_norm_m = (current.q - reference_q_).norm();
   analyse_stability(current);
-  result_.points.push_back(current);
+  keep(current);
 
   const double cos_max_turn = std::cos(options_.max_turn_rad);
   double ds = options_.initial_step;
@@ -495,7 +503,7 @@ ContinuationResult PathTracer::run(const Eigen::VectorXd& q0, const Eigen::Vecto
     if (constraints_degenerate) {
       record_event(PathEventKind::singular_constraints, std::move(next.point), next.tangent, 0.0);
     } else {
-      result_.points.push_back(std::move(next.point));
+      keep(std::move(next.point));
     }
   }
 }
