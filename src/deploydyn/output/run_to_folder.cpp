@@ -8,6 +8,7 @@
 #include "deploydyn/output/background_sink.hpp"
 #include "deploydyn/output/envelope.hpp"
 #include "deploydyn/output/history_writer.hpp"
+#include "deploydyn/output/modes_to_folder.hpp"
 #include "deploydyn/output/output_error.hpp"
 #include "deploydyn/output/plausibility.hpp"
 #include "deploydyn/output/path_to_folder.hpp"
@@ -44,6 +45,10 @@ RunReport run_to_folder(const Model& model, const std::filesystem::path& folder,
   if (model.analysis.type == AnalysisType::continuation) {
     envelope = Envelope();  // a path has no time history to envelope
     return run_path_to_folder(model, folder, control);
+  }
+  if (model.analysis.type == AnalysisType::modal) {
+    envelope = Envelope();  // nor do modes
+    return run_modes_to_folder(model, folder, control);
   }
   const Assembler assembler(model);  // may throw before any file is touched
   ResultFolder results(folder, model.output.summary_file);
