@@ -1,7 +1,8 @@
 #pragma once
-// A modal analysis (analysis.type: modal, solvers/modal_analysis.hpp): the natural frequencies
-// and modes about the static equilibrium at each time of analysis.at (the thermal state at
-// t = 0, then the drivers moved quasi-statically to the time). What run_to_folder does for this
+// A modal analysis (analysis.type: modal, solvers/modal_analysis.hpp; docs/theory.md, "Natural
+// frequencies and modes"): the natural frequencies and modes about the static equilibrium at
+// each time of analysis.at (the thermal state at t = 0, then the drivers moved quasi-statically
+// to the time). What run_to_folder does for this
 // type, and what `deploydyn modes` and the Python module's Model.modes / Model.run compute.
 //
 // In a result folder (output/run_folder.hpp): summary.json saying "running", model.yaml, then
