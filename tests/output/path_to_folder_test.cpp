@@ -114,6 +114,7 @@ TEST(PathToFolder, FailedPathKeepsEveryPointAndSaysWhy) {
   const nlohmann::json summary = nlohmann::json::parse(read_text(folder.path() / "summary.json"));
   EXPECT_EQ(summary["status"], "failed");
   EXPECT_EQ(summary["path"]["end"], "max_steps");
+  EXPECT_EQ(summary["failure"]["phase"], "continuation");
   EXPECT_NE(summary["message"].get<std::string>().find("stopped after 6 steps"), std::string::npos)
       << summary["message"];
 }

@@ -87,6 +87,9 @@ std::string path_summary_json(const Assembler& assembler, const ContinuationResu
   j["model"] = model.name;
   j["status"] = to_string(report.status);
   j["message"] = report.message;
+  if (report.status == RunStatus::failed) {
+    j["failure"] = {{"phase", report.failure.phase}, {"reason", report.failure.reason}};
+  }
   j["units"] = {{"length", "m"}, {"force", "N"}, {"stiffness", "N/m"}, {"temperature_change", "°C"}};
   j["analysis"] = {{"type", to_string(model.analysis.type)},
                    {"parameter", to_string(settings.parameter)},
