@@ -108,13 +108,7 @@ ModalRun compute_modes(const Assembler& assembler, const RunControl& control, co
 std::string modes_summary_json(const Model& model, const ModalRun& run) {
   const ModalSettings& settings = model.analysis.modal;
   const RunReport& report = run.report;
-  ordered_json j;
-  j["model"] = model.name;
-  j["status"] = to_string(report.status);
-  j["message"] = report.message;
-  if (report.status == RunStatus::failed) {
-    j["failure"] = {{"phase", report.failure.phase}, {"reason", report.failure.reason}};
-  }
+  ordered_json j = summary_head(model, report);
   j["units"] = {{"time", "s"}, {"omega2", "rad²/s²"}, {"frequency", "Hz"}, {"temperature_change", "°C"}};
   j["analysis"] = {{"type", to_string(model.analysis.type)}, {"modes", settings.n_modes}, {"at", settings.times_s}};
   if (settings.shift_rad2_s2) j["analysis"]["shift"] = *settings.shift_rad2_s2;

@@ -83,13 +83,7 @@ std::string path_summary_json(const Assembler& assembler, const ContinuationResu
   const Model& model = assembler.model();
   const ContinuationSettings& settings = model.analysis.continuation;
   const double unit = parameter_unit(assembler);
-  ordered_json j;
-  j["model"] = model.name;
-  j["status"] = to_string(report.status);
-  j["message"] = report.message;
-  if (report.status == RunStatus::failed) {
-    j["failure"] = {{"phase", report.failure.phase}, {"reason", report.failure.reason}};
-  }
+  ordered_json j = summary_head(model, report);
   j["units"] = {{"length", "m"}, {"force", "N"}, {"stiffness", "N/m"}, {"temperature_change", "°C"}};
   j["analysis"] = {{"type", to_string(model.analysis.type)},
                    {"parameter", to_string(settings.parameter)},
