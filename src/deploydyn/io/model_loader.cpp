@@ -15,6 +15,7 @@
 #include <tuple>
 #include <unordered_map>
 
+#include "deploydyn/assembly/assembler.hpp"
 #include "deploydyn/io/text_file.hpp"
 #include "deploydyn/io/yaml_reader.hpp"
 
@@ -437,12 +438,16 @@ class ModelReader {
       read_continuation(spec);
       return;
     }
+    if (const auto type = spec.find("type"); type && type->is_scalar() && type->text() == "modal") {
+      read_modal(spec);
+      return;
+    }
     spec.expect_keys(
         {"type", "end", "step", "output_interval", "load_steps", "mass", "integrator", "newton",
          "adaptive", "linear_solver"});
     AnalysisOptions& analysis = model_.analysis;
     if (const auto type = spec.find("type")) {
-      analysis.type = type->choice({"static", "dynamic", "continuation"}) == 0
+      analysis.type = type->choice({"static", "dynamic", "continuation", "modal"}) == 0
                           ? AnalysisType::quasi_static
                           : AnalysisType::dynamic;
     }
@@ -472,23 +477,9 @@ class ModelReader {
       if (step) step->fail(problem);
       spec.fail_key("step", problem + " (the default)");
     }
-    if (const auto load_steps = spec.find("load_steps")) {
-      analysis.load_steps = load_steps->integer(1);
-      if (analysis.load_steps > kMaxLoadSteps) {
-        load_steps->fail(fmt::format("must be at most {} (the load steps of the initial "
-                                     "equilibrium; they grow and shrink by themselves), got {}",
-                                     kMaxLoadSteps, analysis.load_steps));
-      }
-    }
-    if (const auto mass = spec.find("mass")) {
-      analysis.mass = mass->choice({"consistent", "lumped"}) == 0 ? MassMatrixKind::consistent
-                                                                  : MassMatrixKind::lumped;
-    }
-    if (const auto solver = spec.find("linear_solver")) {
-      constexpr LinearSolverKind kinds[] = {LinearSolverKind::automatic, LinearSolverKind::dense,
-                                            LinearSolverKind::klu, LinearSolverKind::umfpack};
-      analysis.linear_solver = kinds[solver->choice({"automatic", "dense", "klu", "umfpack"})];
-    }
+    if (const auto load_steps = spec.find("load_steps")) read_load_steps(*load_steps);
+    if (const auto mass = spec.find("mass")) read_mass(*mass);
+    if (const auto solver = spec.find("linear_solver")) read_linear_solver(*solver);
     if (const auto integrator = spec.find("integrator")) read_integrator(*integrator);
     if (const auto newton = spec.find("newton")) read_newton(*newton);
     if (const auto adaptive = spec.find("adaptive")) read_adaptive(*adaptive);
@@ -514,12 +505,67 @@ class ModelReader {
     }
     if (const auto eigenvalues = spec.find("eigenvalues")) c.n_eigenvalues = eigenvalues->integer(0);
     if (const auto max_steps = spec.find("max_steps")) c.max_steps = max_steps->integer(1);
-    if (const auto solver = spec.find("linear_solver")) {
-      constexpr LinearSolverKind kinds[] = {LinearSolverKind::automatic, LinearSolverKind::dense,
-                                            LinearSolverKind::klu, LinearSolverKind::umfpack};
-      analysis.linear_solver = kinds[solver->choice({"automatic", "dense", "klu", "umfpack"})];
-    }
+    if (const auto solver = spec.find("linear_solver")) read_linear_solver(*solver);
     if (const auto newton = spec.find("newton")) read_newton(*newton);
+  }
+
+  // type: modal: modes about the static equilibrium at the times `at`; time-stepping keys do not
+  // apply and are rejected. Asking for more modes than the constrained system has is an error
+  // here, where the file's line can be named.
+  void read_modal(const YamlValue& spec) {
+    spec.expect_keys({"type", "modes", "at", "shift", "load_steps", "mass", "newton", "linear_solver"});
+    AnalysisOptions& analysis = model_.analysis;
+    analysis.type = AnalysisType::modal;
+    ModalSettings& modal = analysis.modal;
+    if (const auto at = spec.find("at")) {
+      modal.times_s.clear();
+      if (at->is_scalar()) {
+        modal.times_s.push_back(at->number(Sign::non_negative, "s"));
+      } else {
+        for (const YamlValue& t : at->items(1, kUnbounded, "times (s)")) {
+          modal.times_s.push_back(t.number(Sign::non_negative, "s"));
+        }
+      }
+    }
+    if (const auto shift = spec.find("shift")) modal.shift_rad2_s2 = shift->number(Sign::any, "rad²/s²");
+    if (const auto load_steps = spec.find("load_steps")) read_load_steps(*load_steps);
+    if (const auto mass = spec.find("mass")) read_mass(*mass);
+    if (const auto solver = spec.find("linear_solver")) read_linear_solver(*solver);
+    if (const auto newton = spec.find("newton")) read_newton(*newton);
+    // The constrained system's size when no constraint is redundant (solvers/modal_analysis.hpp).
+    const Assembler assembler(model_);
+    const int n_free = assembler.n_dofs() - assembler.n_equations();
+    const std::string size = fmt::format("the model has {} coordinates and {} constraint equations",
+                                         assembler.n_dofs(), assembler.n_equations());
+    if (n_free < 1) spec.fail(size + ": no motion is left to vibrate");
+    if (const auto modes = spec.find("modes")) {
+      modal.n_modes = modes->integer(1);
+      if (modal.n_modes > n_free) {
+        modes->fail(fmt::format("{}: at most {} modes, got {}", size, n_free, modal.n_modes));
+      }
+    } else {
+      modal.n_modes = std::min(modal.n_modes, n_free);  // the default: as many as there are, up to 10
+    }
+  }
+
+  void read_load_steps(const YamlValue& load_steps) {
+    model_.analysis.load_steps = load_steps.integer(1);
+    if (model_.analysis.load_steps > kMaxLoadSteps) {
+      load_steps.fail(fmt::format("must be at most {} (the load steps of the initial "
+                                  "equilibrium; they grow and shrink by themselves), got {}",
+                                  kMaxLoadSteps, model_.analysis.load_steps));
+    }
+  }
+
+  void read_linear_solver(const YamlValue& solver) {
+    constexpr LinearSolverKind kinds[] = {LinearSolverKind::automatic, LinearSolverKind::dense,
+                                          LinearSolverKind::klu, LinearSolverKind::umfpack};
+    model_.analysis.linear_solver = kinds[solver.choice({"automatic", "dense", "klu", "umfpack"})];
+  }
+
+  void read_mass(const YamlValue& mass) {
+    model_.analysis.mass = mass.choice({"consistent", "lumped"}) == 0 ? MassMatrixKind::consistent
+                                                                      : MassMatrixKind::lumped;
   }
 
   void read_output_interval(const YamlValue& interval) {

@@ -77,10 +77,10 @@ struct NodalLoad {
   TimeFunction factor = TimeFunction::constant(1.0);
 };
 
-enum class AnalysisType { quasi_static, dynamic, continuation };
-// As model files spell them: "static", "dynamic", "continuation".
+enum class AnalysisType { quasi_static, dynamic, continuation, modal };
+// As model files spell them: "static", "dynamic", "continuation", "modal".
 inline const char* to_string(AnalysisType type) {
-  constexpr const char* kNames[] = {"static", "dynamic", "continuation"};
+  constexpr const char* kNames[] = {"static", "dynamic", "continuation", "modal"};
   return kNames[static_cast<int>(type)];
 }
 
@@ -104,6 +104,15 @@ struct ContinuationSettings {
   int n_eigenvalues = 3;   // lowest stability eigenvalues per point in path.csv; 0: none
   int max_steps = 2000;
 };
+// analysis.type: modal (solvers/modal_analysis.hpp): natural frequencies and modes about the
+// static equilibrium at each time (the thermal state at t = 0, then the drivers moved
+// quasi-statically to the time).
+struct ModalSettings {
+  int n_modes = 10;                   // the lowest, per time
+  std::vector<double> times_s{0.0};   // ascending, ≥ 0
+  std::optional<double> shift_rad2_s2;  // σ: the modes nearest to it; empty: the lowest
+};
+
 enum class MassMatrixKind { consistent, lumped };
 
 struct NewtonOptions {
@@ -159,6 +168,7 @@ struct AnalysisOptions {
   MassMatrixKind mass = MassMatrixKind::consistent;
   LinearSolverKind linear_solver = LinearSolverKind::automatic;
   ContinuationSettings continuation;  // type continuation only
+  ModalSettings modal;                // type modal only
 };
 
 struct OutputOptions {

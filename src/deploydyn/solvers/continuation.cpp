@@ -101,6 +101,8 @@ class PathTracer {
   void locate(const PathPoint& from, const Tangent& t_from, const Trial& to, double ds,
               PathEventKind kind);
   void record_event(PathEventKind kind, PathPoint point, const Tangent& t, double error);
+  // Appends `point` (and the event located there) to the result and tells options_.on_point.
+  void keep(PathPoint point, std::optional<PathEvent> event = std::nullopt);
   bool land_on_end(const PathPoint& before, const PathPoint& after);
   // From the bifurcation just recorded (the path's last point and event), a first point on
   // the bifurcated branch: predictor along the critical mode φ (q̇ = ℓ φ, μ̇ = 0), corrector on
@@ -296,10 +298,19 @@ void PathTracer::record_event(PathEventKind kind, PathPoint point, const Tangent
                              : fmt::format("{} factor μ = {:.9g} (± {:.2g})",
                                            to_string(options_.parameter), point.parameter, error);
   event.description = fmt::format("{} at {}{}", what, at, where);
-  point.event = static_cast<int>(result_.events.size());
-  event.point = static_cast<int>(result_.points.size());
+  event.within_tolerance = error <= options_.location_tolerance * range_;
+  if (!event.within_tolerance) event.description += " (not located to the tolerance)";
+  keep(std::move(point), std::move(event));
+}
+
+void PathTracer::keep(PathPoint point, std::optional<PathEvent> event) {
+  if (event) {
+    point.event = static_cast<int>(result_.events.size());
+    event->point = static_cast<int>(result_.points.size());
+    result_.events.push_back(std::move(*event));
+  }
   result_.points.push_back(std::move(point));
-  result_.events.push_back(std::move(event));
+  if (options_.on_point) options_.on_point(result_.points.back(), event ? &result_.events.back() : nullptr);
 }
 
 void PathTracer::locate(const PathPoint& from, const Tangent& t_from, const Trial& to, double ds,
@@ -370,10 +381,7 @@ void PathTracer::locate(const PathPoint& from, const Tangent& t_from, const Tria
   const End& best = std::abs(lo.value) <= std::abs(hi.value) ? lo : hi;
   PathPoint point = *best.point;
   point.event = -1;
-  const double reached = bound();
-  record_event(kind, std::move(point), *best.tangent, reached);
-  result_.events.back().within_tolerance = reached <= tolerance;
-  if (reached > tolerance) result_.events.back().description += " (not located to the tolerance)";
+  record_event(kind, std::move(point), *best.tangent, bound());
 }
 
 bool PathTracer::land_on_end(const PathPoint& before, const PathPoint& after) {
@@ -391,7 +399,7 @@ bool PathTracer::land_on_end(const PathPoint& before, const PathPoint& after) {
   p.parameter_rate = after.parameter_rate;
   p.displacement_norm_m = (p.q - reference_q_).norm();
   analyse_stability(p);
-  result_.points.push_back(std::move(p));
+  keep(std::move(p));
   return true;
 }
 
@@ -469,7 +477,7 @@ ContinuationResult PathTracer::run(const Eigen::VectorXd& q0, const Eigen::Vecto
   current.parameter_rate = t->mu_rate;
   current.displacement_norm_m = (current.q - reference_q_).norm();
   analyse_stability(current);
-  result_.points.push_back(current);
+  keep(current);
 
   bool switched = false;  // onto a bifurcated branch (once per path)
   const double cos_max_turn = std::cos(options_.max_turn_rad);
@@ -537,7 +545,7 @@ ContinuationResult PathTracer::run(const Eigen::VectorXd& q0, const Eigen::Vecto
           switched = true;
           current = branch->point;
           *t = branch->tangent;
-          result_.points.push_back(std::move(branch->point));
+          keep(std::move(branch->point));
           continue;
         }
         result_.events.back().description += "; no bifurcated branch found along the critical mode";
@@ -571,7 +579,7 @@ ContinuationResult PathTracer::run(const Eigen::VectorXd& q0, const Eigen::Vecto
     if (constraints_degenerate) {
       record_event(PathEventKind::singular_constraints, std::move(next.point), next.tangent, 0.0);
     } else {
-      result_.points.push_back(std::move(next.point));
+      keep(std::move(next.point));
     }
   }
 }

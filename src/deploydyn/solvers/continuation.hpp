@@ -69,6 +69,9 @@
 
 namespace deploydyn {
 
+struct PathPoint;
+struct PathEvent;
+
 struct ContinuationOptions {
   PathParameter parameter = PathParameter::load;
   double time_s = 0.0;         // at which ΔT(t), load factors and drivers are read (not for
@@ -96,6 +99,9 @@ struct ContinuationOptions {
   NewtonOptions newton;  // tolerances (also of the corrector) and the start/end solves
   const std::atomic<bool>* stop = nullptr;  // polled before every step: Ctrl-C
   std::function<void()> poll;               // called before every step; may set *stop
+  // Called with every point as it joins the path, and the event located there (else null):
+  // results written as they come survive a run that is stopped or killed part-way.
+  std::function<void(const PathPoint&, const PathEvent*)> on_point;
 };
 
 // Throws std::invalid_argument naming the option and what is allowed.
