@@ -113,7 +113,8 @@ void lanczos_pairs(ConstrainedInverse& inverse, const WeightOperator& weight, co
                    ShiftInvertResult& result) {
   const auto n = inverse.rows();
   const int n_pairs = request.n_pairs;
-  const Eigen::Index n_basis = std::min<Eigen::Index>(n, std::max(2 * n_pairs + 1, 20));
+  const int wanted_basis = request.n_basis > 0 ? request.n_basis : std::max(2 * n_pairs + 1, 20);
+  const Eigen::Index n_basis = std::min<Eigen::Index>(n, std::max(wanted_basis, n_pairs + 1));
   Spectra::SymGEigsShiftSolver<ConstrainedInverse, WeightOperator, Spectra::GEigsMode::ShiftInvert> eigs(
       inverse, const_cast<WeightOperator&>(weight), n_pairs, n_basis, request.shift);
   // Start inside the allowed motions (G W r lies there): no Lanczos vector wastes itself on

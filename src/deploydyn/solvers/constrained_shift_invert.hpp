@@ -31,6 +31,9 @@ struct ShiftInvertRequest {
   int n_pairs = 1;
   double shift = 0.0;  // σ, in the units of θ
   bool dense = false;  // the dense route (n_dofs solves) instead of Lanczos
+  // Lanczos basis size (Spectra's ncv, > n_pairs): the solves before the first convergence
+  // test; 0: max(2 n_pairs + 1, 20).
+  int n_basis = 0;
   // Lanczos only: vectors the wanted eigenvectors are expected near (e.g. the previous point's
   // modes on a path); their sum, mapped by G, starts the iteration. Empty: a random start.
   Eigen::MatrixXd start;
