@@ -15,12 +15,6 @@ namespace {
 
 // |ν| below this share of the largest belongs to a motion B forbids (ν = 0 up to round-off).
 constexpr double kForbiddenMotion = 1e-10;
-// Lanczos: relative residual of the Ritz pairs (the eigenvalues' error goes as its square), and
-// its iteration limit. Measured on a 3D roof of 10⁵ bars, whose 10 lowest modes lie within 2 %:
-// 1e-10 took 215 solves, 1e-8 189, 1e-6 164 (bench/modes_benchmark.cpp).
-constexpr double kLanczosTolerance = 1e-8;
-constexpr int kLanczosIterations = 1000;
-
 // x = G v: the bordered solve with v on the coordinates and 0 on the constraints.
 class ConstrainedInverse {
  public:
@@ -130,15 +124,15 @@ void lanczos_pairs(ConstrainedInverse& inverse, const WeightOperator& weight, co
   weight.perform_op(r.data(), w_r.data());
   inverse.perform_op(w_r.data(), start.data());
   eigs.init(start.data());
-  eigs.compute(Spectra::SortRule::LargestMagn, kLanczosIterations, kLanczosTolerance,
+  eigs.compute(Spectra::SortRule::LargestMagn, request.max_restarts, request.tolerance,
                Spectra::SortRule::SmallestAlge);
-  if (eigs.info() != Spectra::CompInfo::Successful) {
-    result.message = "the Lanczos iteration did not converge";
-    return;
-  }
   result.values = eigs.eigenvalues();
   result.vectors = eigs.eigenvectors();
-  result.ok = true;
+  result.ok = eigs.info() == Spectra::CompInfo::Successful;
+  if (!result.ok) {
+    result.message = fmt::format("the Lanczos iteration did not converge in {} restarts ({} of {} pairs did)",
+                                 request.max_restarts, result.values.size(), n_pairs);
+  }
 }
 
 }  // namespace

@@ -34,6 +34,11 @@ struct ShiftInvertRequest {
   // Lanczos basis size (Spectra's ncv, > n_pairs): the solves before the first convergence
   // test; 0: max(2 n_pairs + 1, 20).
   int n_basis = 0;
+  // Lanczos: relative residual of the Ritz pairs at which they count as converged (the
+  // eigenvalues' error goes as its square).
+  double tolerance = 1e-8;
+  // Lanczos restarts allowed before it gives up (ok false, the pairs converged so far kept).
+  int max_restarts = 1000;
   // Lanczos only: vectors the wanted eigenvectors are expected near (e.g. the previous point's
   // modes on a path); their sum, mapped by G, starts the iteration. Empty: a random start.
   Eigen::MatrixXd start;
@@ -42,7 +47,7 @@ struct ShiftInvertRequest {
 struct ShiftInvertResult {
   bool ok = false;
   std::string message;     // why not, when !ok
-  Eigen::VectorXd values;  // θ, ascending
+  Eigen::VectorXd values;  // θ, ascending (when Lanczos gave up: those that converged)
   Eigen::MatrixXd vectors;  // one W-orthonormal eigenvector per column, for values[i]
   int n_solves = 0;        // applications of G
 };

@@ -29,6 +29,9 @@ struct ModalOptions {
   std::optional<double> shift_rad2_s2;
   // Up to this many coordinates the dense path is used (n solves and an O(n³) eigensolver).
   int dense_up_to = 400;
+  // Lanczos at the default σ: restarts before σ moves towards the lowest Ritz value (see
+  // modal_analysis.cpp); for tests and measurements.
+  int restarts_before_shifting = 3;
 };
 
 struct ModalResult {
