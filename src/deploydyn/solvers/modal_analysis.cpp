@@ -23,8 +23,9 @@ constexpr double kLanczosTolerance = 1e-8;
 // modes have not converged by then, σ moves to kShiftMoveShare of the way to the lowest Ritz value (when that is more than
 // kShiftMoveThreshold |σ| away: not a free motion at ω² = 0), and Lanczos starts again from the
 // Ritz vectors found. Measured on 3D roofs of 10 trusses (bench/modes_benchmark.cpp): at 10³ and
-// 10⁴ bars Lanczos converges in 2 restarts (35–36 solves) and nothing changes; at 10⁵ bars, with
-// the 10 lowest within 2 % of each other after an isolated one, XXX.
+// 10⁴ bars Lanczos converges within 3 restarts (35–36 solves) and nothing changes; at 10⁵ bars,
+// with the 10 lowest within 2 % of each other after an isolated one, 136 solves instead of 189
+// and 4.9 s of CPU instead of 8.6 (1 restart: 64 and 60 solves at 10³ and 10⁴; 2: 70 and 71).
 constexpr double kShiftMoveShare = 0.97;
 constexpr double kShiftMoveThreshold = 2.0;
 
