@@ -7,14 +7,11 @@
 
 #include <benchmark/benchmark.h>
 
-#include <algorithm>
-#include <chrono>
-#include <vector>
 #include <memory>
 
 #include "deploydyn/assembly/linear_system_factory.hpp"
-#include "deploydyn/generators/roof.hpp"
 #include "deploydyn/solvers/modal_analysis.hpp"
+#include "support/cold_roof.hpp"
 
 namespace deploydyn {
 namespace {
@@ -23,12 +20,7 @@ constexpr int kModes = 10;
 constexpr int kTrusses = 10;
 
 void BM_RoofModes(benchmark::State& state) {
-  RoofOptions options;
-  options.n_units = static_cast<int>(state.range(0));
-  options.n_trusses = kTrusses;
-  options.delta_t_C = 0.0;  // the initial coordinates are the equilibrium, λ = 0
-  options.bearings = RoofBearings::pinned;  // the roofs of the other benchmarks
-  const Model model = make_roof(options);
+  const Model model = bench::cold_pinned_roof(static_cast<int>(state.range(0)), kTrusses);
   const Assembler assembler(model);
   const std::unique_ptr<LinearSystem> system = make_linear_system(assembler, LinearSolverKind::klu);
   MotionState equilibrium;
@@ -41,14 +33,7 @@ void BM_RoofModes(benchmark::State& state) {
   // One refactorization of the same matrix, for the ratio (the median of a few).
   assembler.iteration_matrix(equilibrium.q, 0.0, 1.0, equilibrium.lambda,
                              {1.0, 1.0, assembler.stiffness_scale(equilibrium.q, 0.0)}, *system);
-  system->factorize();
-  std::vector<double> factor_s;
-  for (int i = 0; i < 5; ++i) {
-    const auto start = std::chrono::steady_clock::now();
-    system->factorize();
-    factor_s.push_back(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
-  }
-  std::ranges::sort(factor_s);
+  const double factorization_s = bench::median_refactorization_s(*system);
 
   ModalResult result;
   for (auto _ : state) {
@@ -58,7 +43,7 @@ void BM_RoofModes(benchmark::State& state) {
   state.counters["bars"] = static_cast<double>(model.n_bars());
   state.counters["solves"] = result.n_solves;
   state.counters["lowest_Hz"] = result.ok ? result.frequencies_Hz()[0] : 0.0;
-  state.counters["factorization_s"] = factor_s[factor_s.size() / 2];
+  state.counters["factorization_s"] = factorization_s;
   state.counters["factorizations"] = result.n_factorizations;
 }
 

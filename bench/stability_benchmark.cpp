@@ -8,15 +8,13 @@
 
 #include <benchmark/benchmark.h>
 
-#include <algorithm>
 #include <chrono>
 #include <memory>
-#include <vector>
 
 #include "deploydyn/assembly/linear_system_factory.hpp"
-#include "deploydyn/generators/roof.hpp"
 #include "deploydyn/solvers/constrained_stiffness.hpp"
 #include "deploydyn/solvers/lowest_constrained_stiffness.hpp"
+#include "support/cold_roof.hpp"
 
 namespace deploydyn {
 namespace {
@@ -31,28 +29,14 @@ struct Roof {
   double scale = 1.0;
   double refactorization_s = 0.0;
 
-  explicit Roof(int units) {
-    RoofOptions options;
-    options.n_units = units;
-    options.n_trusses = kTrusses;
-    options.delta_t_C = 0.0;
-    options.bearings = RoofBearings::pinned;
-    model = make_roof(options);
+  explicit Roof(int units) : model(bench::cold_pinned_roof(units, kTrusses)) {
     assembler = std::make_unique<Assembler>(model);
     system = make_linear_system(*assembler, LinearSolverKind::klu);
     q = assembler->initial_coordinates();
     lambda = Eigen::VectorXd::Zero(assembler->n_equations());
     scale = assembler->stiffness_scale(q, 0.0);
     assemble();
-    system->factorize();
-    std::vector<double> times;
-    for (int i = 0; i < 5; ++i) {
-      const auto start = std::chrono::steady_clock::now();
-      system->factorize();
-      times.push_back(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
-    }
-    std::ranges::sort(times);
-    refactorization_s = times[times.size() / 2];
+    refactorization_s = bench::median_refactorization_s(*system);
   }
   void assemble() { assembler->iteration_matrix(q, 0.0, 1.0, lambda, {0.0, 1.0, scale}, *system); }
 };

@@ -75,36 +75,35 @@ void expect_same_lowest(const Routes& r, int n_values) {
   }
 }
 
-Model roof(double delta_t_C) {
+// Both routes on a 4-truss roof of 3 units on pinned bearings, with every bar at ΔT, at the
+// roof's initial coordinates and λ = 0.
+Routes roof_routes(double delta_t_C, int n_values) {
   RoofOptions options;
   options.n_units = 3;
   options.n_trusses = 4;
   options.bearings = RoofBearings::pinned;
   options.delta_t_C = delta_t_C;
-  return make_roof(options);
+  const Model model = make_roof(options);
+  const Assembler assembler(model);
+  return both_routes(assembler, assembler.initial_coordinates(), Eigen::VectorXd::Zero(assembler.n_equations()),
+                     1.0, n_values);
 }
 
 TEST(LowestConstrainedStiffness, AgreesWithTheDenseRouteOnAColdRoof) {
   constexpr int kValues = 6;
-  const Model model = roof(0.0);
-  const Assembler assembler(model);
-  const Routes r = both_routes(assembler, assembler.initial_coordinates(),
-                               Eigen::VectorXd::Zero(assembler.n_equations()), 1.0, kValues);
+  const Routes r = roof_routes(0.0, kValues);
   EXPECT_EQ(r.dense.n_negative, 0);
   EXPECT_EQ(r.sparse.n_negative, 0);
   expect_same_lowest(r, kValues);
 }
 
 // Heated on pinned bearings without letting the roof move: the bars carry compression
-// −EA α ΔT, enough at +2000 °C (a number for the test, not a temperature) to make some
-// eigenvalues negative (12 of them). Not an equilibrium, but Zᵀ K Z is defined at any state, and the
-// sparse route must find the negative ones, below its first shift, in order.
+// −EA α ΔT, enough at +2000 °C (a number for the test, not a temperature) to make 12
+// eigenvalues negative. Not an equilibrium, but Zᵀ K Z is defined at any state, and the sparse
+// route must find the negative ones, below its first shift, in order.
 TEST(LowestConstrainedStiffness, FindsNegativeEigenvaluesBelowItsFirstShift) {
   constexpr int kValues = 16;
-  const Model model = roof(2000.0);
-  const Assembler assembler(model);
-  const Routes r = both_routes(assembler, assembler.initial_coordinates(),
-                               Eigen::VectorXd::Zero(assembler.n_equations()), 1.0, kValues);
+  const Routes r = roof_routes(2000.0, kValues);
   ASSERT_GE(r.dense.n_negative, 1) << "the test needs an unstable state";
   ASSERT_LT(r.dense.n_negative, kValues) << "the test needs an exact count";
   EXPECT_EQ(r.sparse.n_negative, r.dense.n_negative);
@@ -112,12 +111,11 @@ TEST(LowestConstrainedStiffness, FindsNegativeEigenvaluesBelowItsFirstShift) {
 }
 
 TEST(LowestConstrainedStiffness, RejectsASystemOfAnotherModel) {
-  const Model small = roof(0.0);
-  RoofOptions larger;
-  larger.n_units = 4;
-  larger.n_trusses = 4;
-  larger.bearings = RoofBearings::pinned;
-  const Model other = make_roof(larger);
+  RoofOptions options;
+  options.n_units = 3;
+  const Model small = make_roof(options);
+  options.n_units = 4;
+  const Model other = make_roof(options);
   const Assembler assembler(small), other_assembler(other);
   const auto system = make_linear_system(other_assembler, LinearSolverKind::klu);
   EXPECT_THROW(LowestConstrainedStiffness(assembler, *system), std::invalid_argument);

@@ -87,9 +87,9 @@ struct ContinuationOptions {
   double length_scale_m = 0.0;  // ℓ; 0: ‖dq/dμ‖ ρ at the start (see above)
   int n_eigenvalues = 3;        // lowest ones reported per point; 0: no stability analysis
   // Dense route up to this many coordinates, sparse above (see above). Measured per point on
-  // 3D roofs (bench/stability_benchmark.cpp, medians): dense 21 ms at 240 coordinates, 163 ms
-  // at 540, 2.5 s at 1 620 (O(n³)); sparse (k = 1 or 3, along a path) 0.3, 0.9, 1.2–1.7 ms,
-  // 17–25 ms at 15 840 (2–2.5 refactorizations). The dense route stays for small models for
+  // 3D roofs (bench/stability_benchmark.cpp, medians): dense 19–21 ms at 240 coordinates,
+  // 128–163 ms at 540, 2.5 s at 1 620 (O(n³)); sparse (k = 1 or 3, along a path) 0.2–0.3,
+  // 0.5–0.7, 1.7–1.8 ms, 22–25 ms at 15 840 (2–2.5 refactorizations). The dense route stays for small models for
   // what only it gives: every eigenvalue, and the rank of B (dead centres, redundant
   // constraints); up to 200 coordinates it costs at most ~10 ms a point.
   int dense_stability_up_to = 200;
