@@ -1,7 +1,8 @@
 // The heated start of generated roofs (+130 °C): load stepping (solvers/static_solver.hpp, as
 // every run starts) against arc-length continuation in the ΔT scale (solvers/continuation.hpp,
-// no stability eigenvalues), from the cold state to the same equilibrium. Counters: load steps
-// or path points, Newton/corrector iterations.
+// without stability eigenvalues and with the lowest one at every point, as the continued start
+// of a run asks for), from the cold state to the same equilibrium. Counters: load steps or path
+// points, Newton/corrector iterations.
 //   pinned 100 units:   posts fan out by ≈ 2° per unit: a long curved path
 //   sliding 1000 units: free expansion, one load step
 //   sliding 3D 10 × 26: free expansion in x and z (on pinned bearings neither method reaches
@@ -51,7 +52,7 @@ void BM_HeatedStartContinuation(benchmark::State& state) {
   ContinuationOptions options;
   options.parameter = PathParameter::thermal;
   options.end = 1.0;
-  options.n_eigenvalues = 0;
+  options.n_eigenvalues = static_cast<int>(state.range(3));
   ContinuationResult result;
   for (auto _ : state) {
     result = trace_path(assembler, options, *system, assembler.initial_coordinates(),
@@ -71,8 +72,16 @@ void roofs(benchmark::internal::Benchmark* b) {
   b->Unit(benchmark::kMillisecond);
 }
 
+void roofs_with_eigenvalues(benchmark::internal::Benchmark* b) {
+  b->ArgNames({"units", "trusses", "bearings", "eigenvalues"});
+  for (const int eigenvalues : {0, 1}) {
+    b->Args({100, 1, kPinned, eigenvalues})->Args({1000, 1, kSliding, eigenvalues})->Args({26, 10, kSliding, eigenvalues});
+  }
+  b->Unit(benchmark::kMillisecond);
+}
+
 BENCHMARK(BM_HeatedStartLoadStepping)->Apply(roofs);
-BENCHMARK(BM_HeatedStartContinuation)->Apply(roofs);
+BENCHMARK(BM_HeatedStartContinuation)->Apply(roofs_with_eigenvalues);
 
 }  // namespace
 }  // namespace deploydyn

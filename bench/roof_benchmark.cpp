@@ -22,6 +22,7 @@
 #include "deploydyn/solvers/consistent_rates.hpp"
 #include "deploydyn/solvers/generalized_alpha.hpp"
 #include "support/allocation_counter.hpp"
+#include "support/cold_roof.hpp"
 
 namespace deploydyn {
 namespace {
@@ -43,13 +44,7 @@ struct RoofRun {
   MotionState state;
 
   RoofRun(int units, int trusses, LinearSolverKind solver) {
-    RoofOptions options;
-    options.n_units = units;
-    options.n_trusses = trusses;
-    options.delta_t_C = 0.0;
-    // The models docs/performance.md's per-bar costs were measured on (no bottom members).
-    options.bearings = RoofBearings::pinned;
-    model = make_roof(options);
+    model = bench::cold_pinned_roof(units, trusses);
     for (Driver& driver : model.drivers) driver.profile = TimeFunction::constant(kRoofPeakRate_rad_s);
     model.analysis.linear_solver = solver;
     assembler = std::make_unique<Assembler>(model);

@@ -22,6 +22,7 @@
 #include <gtest/gtest.h>
 
 #include <atomic>
+#include <tuple>
 #include <cmath>
 
 #include "deploydyn/assembly/linear_system_factory.hpp"
@@ -221,8 +222,11 @@ struct HeatedStrut {
 // Thermal continuation to twice the critical heating: one bifurcation at μ* = kL/(2 EA α ΔT),
 // no limit point; the lowest eigenvalue follows k + 2S/L on the way, the mode is lateral.
 // With several largest steps: steps of 0.1 land exactly on μ* = 0.5, where J is singular.
-class HeatedStrutBifurcation : public ::testing::TestWithParam<double> {};
-INSTANTIATE_TEST_SUITE_P(Continuation, HeatedStrutBifurcation, ::testing::Values(0.02, 0.1, 0.25));
+// Both stability routes: dense (Zᵀ K Z from a QR of Bᵀ) and sparse (shift-invert Lanczos on
+// the bordered matrix, forced by dense_stability_up_to = 0).
+class HeatedStrutBifurcation : public ::testing::TestWithParam<std::tuple<double, int>> {};
+INSTANTIATE_TEST_SUITE_P(Continuation, HeatedStrutBifurcation,
+                         ::testing::Combine(::testing::Values(0.02, 0.1, 0.25), ::testing::Values(400, 0)));
 
 TEST_P(HeatedStrutBifurcation, AtTheClosedFormTemperature) {
   const HeatedStrut strut;
@@ -233,7 +237,8 @@ TEST_P(HeatedStrutBifurcation, AtTheClosedFormTemperature) {
   options.start = 0.0;
   options.end = 2.0 * strut.critical_factor();
   options.n_eigenvalues = 2;
-  options.max_step = GetParam();
+  options.max_step = std::get<0>(GetParam());
+  options.dense_stability_up_to = std::get<1>(GetParam());
   options.initial_step = std::min(options.initial_step, options.max_step);
   const ContinuationResult result = trace(assembler, options);
   ASSERT_EQ(result.end, ContinuationEnd::reached_end) << result.message;

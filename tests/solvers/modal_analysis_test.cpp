@@ -12,6 +12,7 @@
 #include <numbers>
 
 #include "deploydyn/assembly/linear_system_factory.hpp"
+#include "deploydyn/generators/roof.hpp"
 #include "deploydyn/solvers/static_solver.hpp"
 #include "support/model_builder.hpp"
 
@@ -175,6 +176,46 @@ TEST(ModalAnalysis, LanczosAgreesWithTheClosedFormAndModesAreMOrthonormal) {
       EXPECT_LT(modes.result.n_solves, 40 * kModes) << "Lanczos should need few solves";
     }
   }
+}
+
+// Lanczos that has not converged after its first restart moves σ towards the lowest Ritz value,
+// refactorizes and starts again: on a cold 3D roof of 10 trusses, whose lowest modes come in
+// near-equal groups (one mode per truss), it must find the dense route's frequencies, with
+// M-orthonormal modes, and count the second factorization.
+TEST(ModalAnalysis, LanczosWithAMovedShiftAgreesWithTheDenseRoute) {
+  constexpr int kModes = 10;
+  RoofOptions roof;
+  roof.n_units = 3;
+  roof.n_trusses = 10;
+  roof.bearings = RoofBearings::pinned;
+  roof.delta_t_C = 0.0;  // the initial coordinates are the equilibrium, λ = 0
+  const Model model = make_roof(roof);
+  const Assembler assembler(model);
+  const auto system = make_linear_system(assembler);
+  MotionState state;
+  state.q = assembler.initial_coordinates();
+  state.lambda = Eigen::VectorXd::Zero(assembler.n_equations());
+  ModalOptions options;
+  options.n_modes = kModes;
+  const ModalResult dense = natural_modes(assembler, state, *system, options);
+  ASSERT_TRUE(dense.ok && dense.dense) << dense.message;
+  options.dense_up_to = 0;
+  options.restarts_before_shifting = 1;
+  const ModalResult moved = natural_modes(assembler, state, *system, options);
+  ASSERT_TRUE(moved.ok) << moved.message;
+  EXPECT_EQ(moved.n_factorizations, 2) << "the test must take the moved-shift path";
+  for (int k = 0; k < kModes; ++k) {
+    EXPECT_NEAR(moved.omega2_rad2_s2[k], dense.omega2_rad2_s2[k], kRelativeTolerance * dense.omega2_rad2_s2[k])
+        << "mode " << k + 1;
+  }
+  Eigen::MatrixXd m_phi(assembler.n_dofs(), kModes);
+  Eigen::VectorXd column;
+  for (int k = 0; k < kModes; ++k) {
+    assembler.mass_times(moved.modes.col(k), column);
+    m_phi.col(k) = column;
+  }
+  const Eigen::MatrixXd gram = moved.modes.transpose() * m_phi;
+  EXPECT_LT((gram - Eigen::MatrixXd::Identity(kModes, kModes)).lpNorm<Eigen::Infinity>(), 1e-9);
 }
 
 // The paper's parallel linkage without its driver, hanging from its pins A and D under gravity

@@ -1,3 +1,4 @@
+#pragma once
 // Foldable roof models built in memory, for `deploydyn generate roof` and for benchmarks.
 //
 // Planar truss (n_trusses = 1, a 2D model): a chain of n_units parallelogram four-bar units

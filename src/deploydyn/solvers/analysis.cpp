@@ -105,10 +105,13 @@ struct ContinuedStart {
   std::string reason;    // why not: what the path met, in physical terms
 };
 
-// Dense stability eigenvalues are computed up to this many coordinates (limit points are
-// found at any size, bifurcations only with them): at every point an O(n³) eigensolve, which
-// at 2 000 coordinates made a stalled start of a 3D roof take over 25 minutes.
-constexpr int kStartStabilityDofs = 300;
+// The lowest stability eigenvalue at every point, so that a bifurcation (its count of negative
+// eigenvalues going from 0 to 1) is found at any size: dense up to the continuation's
+// dense_stability_up_to, sparse above (solvers/continuation.hpp). Measured on pinned heated
+// 3D roofs (`deploydyn run`, both end at a limit point, same report): 10 × 26 (1 620
+// coordinates) 2.68–2.72 s without, 3.23–3.44 s with it; 10 × 263 (15 840) 128 s and 156 s
+// (one run each, a loaded machine): about a quarter more, which a run that stalls can afford.
+constexpr int kStartEigenvalues = 1;
 // A start that needs more continuation steps than this is reported, not followed further.
 constexpr int kStartContinuationSteps = 300;
 
@@ -120,7 +123,7 @@ ContinuedStart continue_thermal_start(const Assembler& assembler, const Analysis
   options.time_s = 0.0;
   options.start = reached;
   options.end = 1.0;
-  options.n_eigenvalues = assembler.n_dofs() <= kStartStabilityDofs ? 1 : 0;
+  options.n_eigenvalues = kStartEigenvalues;
   options.max_steps = kStartContinuationSteps;
   options.newton = analysis.newton;
   options.stop = control.stop;

@@ -9,6 +9,7 @@
 #include <stdexcept>
 
 #include "deploydyn/solvers/constrained_stiffness.hpp"
+#include "deploydyn/solvers/lowest_constrained_stiffness.hpp"
 #include "deploydyn/solvers/newton.hpp"
 
 namespace deploydyn {
@@ -63,6 +64,13 @@ class PathTracer {
         with_stability_(options.n_eigenvalues > 0 &&
                         assembler.n_dofs() <= options.max_stability_dofs) {
     scale_ = assembler.stiffness_scale(reference_q_, equilibrium_.time_s(options.start));
+    if (with_stability_ && assembler.n_dofs() > options.dense_stability_up_to) {
+      try {
+        lowest_.emplace(assembler, system);
+      } catch (const std::invalid_argument&) {
+        with_stability_ = false;  // a coordinate without stiffness: Newton reports it
+      }
+    }
   }
 
   ContinuationResult run(const Eigen::VectorXd& q0, const Eigen::VectorXd& lambda0);
@@ -89,6 +97,9 @@ class PathTracer {
   std::optional<Tangent> tangent(const PathPoint& point, const Tangent* previous);
   void analyse_stability(PathPoint& point, ConstraintNullSpace* null_space = nullptr,
                          ConstrainedSpectrum* spectrum = nullptr);
+  void analyse_dense_stability(PathPoint& point, ConstraintNullSpace* null_space,
+                               ConstrainedSpectrum* spectrum);
+  void analyse_sparse_stability(PathPoint& point, ConstrainedSpectrum* spectrum);
   // A point reached from `from` along `t` by predictor length σ: corrected, with its tangent
   // (oriented along t) and stability. Empty when the corrector fails.
   struct Trial {
@@ -117,6 +128,10 @@ class PathTracer {
   double range_, direction_;
   Eigen::VectorXd reference_q_;
   bool with_stability_;
+  std::optional<LowestConstrainedStiffness> lowest_;  // the sparse route, when taken
+  // The sparse route's last result: where its next shift and start vectors go.
+  std::optional<double> last_lowest_;
+  Eigen::MatrixXd last_modes_;
   double length_ = 1.0, scale_ = 1.0;
   ContinuationResult result_;
   Eigen::VectorXd r_, phi_, dr_, dphi_, rhs_a_, rhs_b_;
@@ -220,6 +235,15 @@ std::optional<Tangent> PathTracer::tangent(const PathPoint& point, const Tangent
 void PathTracer::analyse_stability(PathPoint& point, ConstraintNullSpace* null_space_out,
                                    ConstrainedSpectrum* spectrum_out) {
   if (!with_stability_) return;
+  if (lowest_) {
+    analyse_sparse_stability(point, spectrum_out);
+  } else {
+    analyse_dense_stability(point, null_space_out, spectrum_out);
+  }
+}
+
+void PathTracer::analyse_dense_stability(PathPoint& point, ConstraintNullSpace* null_space_out,
+                                         ConstrainedSpectrum* spectrum_out) {
   const int n = assembler_.n_dofs();
   const int m = assembler_.n_equations();
   equilibrium_.matrix(point.q, point.lambda, point.parameter, 1.0, system_);
@@ -233,6 +257,24 @@ void PathTracer::analyse_stability(PathPoint& point, ConstraintNullSpace* null_s
   point.lowest_eigenvalues =
       spectrum.eigenvalues.head(std::min<Eigen::Index>(options_.n_eigenvalues, spectrum.eigenvalues.size()));
   if (null_space_out != nullptr) *null_space_out = null_space;
+  if (spectrum_out != nullptr) *spectrum_out = std::move(spectrum);
+}
+
+void PathTracer::analyse_sparse_stability(PathPoint& point, ConstrainedSpectrum* spectrum_out) {
+  equilibrium_.matrix(point.q, point.lambda, point.parameter, scale_, system_);
+  LowestStiffnessRequest request;
+  request.n_values = options_.n_eigenvalues;
+  request.stiffness_scale_N_m = scale_;
+  request.zero_tolerance_N_m = kZeroEigenvalueShare * std::max(scale_, 1.0);
+  request.expected_lowest_N_m = last_lowest_;
+  request.expected_modes = last_modes_;
+  ConstrainedSpectrum spectrum = lowest_->compute(system_, request);
+  if (spectrum.eigenvalues.size() == 0) return;  // not computed: n_negative stays −1
+  last_lowest_ = spectrum.eigenvalues[0];
+  last_modes_ = spectrum.modes;
+  point.n_negative = spectrum.n_negative;
+  point.index_complete = spectrum.n_negative < spectrum.eigenvalues.size();
+  point.lowest_eigenvalues = spectrum.eigenvalues;
   if (spectrum_out != nullptr) *spectrum_out = std::move(spectrum);
 }
 
@@ -430,7 +472,7 @@ ContinuationResult PathTracer::run(const Eigen::VectorXd& q0, const Eigen::Vecto
   current.lambda = lambda0;
   current.parameter = options_.start;
 
-  if (with_stability_) {
+  if (with_stability_ && !lowest_) {
     // Redundant constraints make J singular, so they are named before Newton fails on them.
     analyse_stability(current);
     if (current.constraint_rank >= 0 && current.constraint_rank < assembler_.n_equations()) {
@@ -538,7 +580,8 @@ ContinuationResult PathTracer::run(const Eigen::VectorXd& q0, const Eigen::Vecto
     if (turned) {
       locate(current, *t, next, ds, PathEventKind::limit_point);
     } else if (current.n_negative >= 0 && next.point.n_negative >= 0 &&
-               current.n_negative != next.point.n_negative) {
+               current.n_negative != next.point.n_negative &&
+               (current.index_complete || next.point.index_complete)) {
       locate(current, *t, next, ds, PathEventKind::bifurcation);
       if (options_.switch_branch && !switched) {
         if (std::optional<Trial> branch = switch_branch(ds)) {
@@ -611,6 +654,10 @@ void validate(const ContinuationOptions& o) {
   }
   if (o.length_scale_m < 0.0) fail(fmt::format("length_scale_m ({}) must be ≥ 0", o.length_scale_m));
   if (o.n_eigenvalues < 0) fail(fmt::format("n_eigenvalues ({}) must be ≥ 0", o.n_eigenvalues));
+  if (o.dense_stability_up_to < 0 || o.max_stability_dofs < 0) {
+    fail(fmt::format("dense_stability_up_to ({}) and max_stability_dofs ({}) must be ≥ 0",
+                     o.dense_stability_up_to, o.max_stability_dofs));
+  }
   if (!(o.location_tolerance > 0.0)) {
     fail(fmt::format("location_tolerance ({}) must be > 0", o.location_tolerance));
   }

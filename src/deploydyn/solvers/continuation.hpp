@@ -44,15 +44,26 @@
 // step can cross it); the run stops below `min_step`. It ends when μ crosses μ_end (the last point solved at μ = μ_end exactly),
 // after `max_steps`, or when *stop becomes true (polled before every step).
 //
-// Stability (solvers/constrained_stiffness.hpp), at every point of models with at most
-// `max_stability_dofs` coordinates: the eigenvalues of Zᵀ(K + H(λ))Z. Events between two
-// points, each located by the Illinois variant of regula falsi on the predictor length σ from
-// the earlier point (same tangent, same corrector):
+// Stability, at every point of models with at most `max_stability_dofs` coordinates: the
+// eigenvalues of Zᵀ(K + H(λ))Z, Z an orthonormal basis of null B. Two routes:
+//   dense  (up to `dense_stability_up_to` coordinates; solvers/constrained_stiffness.hpp): Z
+//          from a QR of Bᵀ, every eigenvalue, the rank of B; the count of negative ones is
+//          the equilibrium's index.
+//   sparse (above; solvers/lowest_constrained_stiffness.hpp): the lowest n_eigenvalues = k by
+//          shift-invert Lanczos on the bordered matrix, σ following the previous point's
+//          lowest eigenvalue: one more factorization and a few tens of solves per point. The
+//          count of negative ones is taken among the k: exact when below k, a lower bound
+//          when all k are negative (PathPoint::index_complete false); the rank of B is not
+//          computed (singular constraints show as a failed factorization instead).
+// Events between two points, each located by the Illinois variant of regula falsi on the
+// predictor length σ from the earlier point (same tangent, same corrector):
 //   limit point   μ̇ changes sign;        |μ − μ*| ≤ max|dμ/dσ| · (σ_hi − σ_lo) at the bracket
-//   bifurcation   the number of negative eigenvalues changes while μ̇ keeps its sign;
+//   bifurcation   the number of negative eigenvalues changes while μ̇ keeps its sign (seen
+//                 when the count is exact at one of the two points at least);
 //                 |μ − μ*| ≤ |μ_hi − μ_lo|
 //   singular constraints   the rank of B drops (a dead centre, redundant constraints):
-//                 not a structural instability, reported at the point, not located.
+//                 not a structural instability, reported at the point, not located (dense
+//                 route only).
 // Each located event is a point of the path too, with its kind, critical eigenvalue and mode
 // (the eigenvector through zero, mapped back to q) and the member forces there.
 // Branch switching (`switch_branch`): at the first bifurcation the path steps off along the
@@ -90,7 +101,14 @@ struct ContinuationOptions {
   double max_eigenvalue_drop = 3.0;  // > 1; see "Step size" above
   double length_scale_m = 0.0;  // ℓ; 0: ‖dq/dμ‖ ρ at the start (see above)
   int n_eigenvalues = 3;        // lowest ones reported per point; 0: no stability analysis
-  int max_stability_dofs = 2000;  // dense eigen-solve above this is not attempted
+  // Dense route up to this many coordinates, sparse above (see above). Measured per point on
+  // 3D roofs (bench/stability_benchmark.cpp, medians): dense 19–21 ms at 240 coordinates,
+  // 128–163 ms at 540, 2.5 s at 1 620 (O(n³)); sparse (k = 1 or 3, along a path) 0.2–0.3,
+  // 0.5–0.7, 1.7–1.8 ms, 22–25 ms at 15 840 (2–2.5 refactorizations). The dense route stays for small models for
+  // what only it gives: every eigenvalue, and the rank of B (dead centres, redundant
+  // constraints); up to 200 coordinates it costs at most ~10 ms a point.
+  int dense_stability_up_to = 200;
+  int max_stability_dofs = 1'000'000;  // no stability analysis above this
   double location_tolerance = 1e-7;  // of an event's μ, relative to |end − start|
   // At the first bifurcation, leave the path it was on and follow the bifurcated branch (the
   // predictor along the critical mode, first Δs = max(Δs, initial_step); see
@@ -132,6 +150,9 @@ struct PathPoint {
   double parameter_rate = 0.0;       // dμ/ds (sign: the direction of travel)
   Eigen::VectorXd lowest_eigenvalues;  // of Zᵀ K_T Z, ascending, N/m (empty: not computed)
   int n_negative = -1;               // negative eigenvalues (-1: not computed)
+  // False when n_negative is only a lower bound: the sparse route found every one of its k
+  // eigenvalues negative.
+  bool index_complete = true;
   int constraint_rank = -1;          // rank of B (-1: not computed)
   int event = -1;                    // index into ContinuationResult::events, -1: none
   int corrector_iterations = 0;

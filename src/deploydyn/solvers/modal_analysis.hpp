@@ -6,12 +6,9 @@
 // (EA ε_m / L0) block carries both) and the constraints' H(λ); B the constraint Jacobian; M the
 // model's mass matrix. Only motions the constraints allow (B φ = 0) vibrate.
 //
-// Shift-invert on the bordered matrix, which the existing LinearSystem back ends factorize once:
-//   [K_T − σ M, s Bᵀ; s B, 0] [x; y] = [v; 0]   gives   x = G v,
-//   G = Z (Zᵀ (K_T − σ M) Z)⁻¹ Zᵀ   (Z: a basis of null B, never formed).
-// G M φ = ν φ with ν = 1/(ω² − σ) for the modes, ν = 0 for the motions B forbids. Large models
-// use the implicitly restarted Lanczos method on G M in the M inner product (Spectra's
-// SymGEigsShiftSolver), small ones a dense eigensolver of the symmetric pencil (M G M, M).
+// Shift-invert on the bordered matrix [K_T − σ M, s Bᵀ; s B, 0], which the existing
+// LinearSystem back ends factorize once, with W = M (solvers/constrained_shift_invert.hpp):
+// G M φ = ν φ with ν = 1/(ω² − σ). Large models use Lanczos, small ones the dense route.
 // Modes come M-orthonormal: φᵢᵀ M φⱼ = δᵢⱼ. ω² < 0 is an unstable equilibrium (divergence).
 
 #include <Eigen/Core>
@@ -33,6 +30,9 @@ struct ModalOptions {
   std::optional<double> shift_rad2_s2;
   // Up to this many coordinates the dense path is used (n solves and an O(n³) eigensolver).
   int dense_up_to = 400;
+  // Lanczos at the default σ: restarts before σ moves towards the lowest Ritz value (see
+  // modal_analysis.cpp); for tests and measurements.
+  int restarts_before_shifting = 3;
 };
 
 struct ModalResult {
