@@ -28,8 +28,7 @@ constexpr double kDrawnAmplitudeShare = 0.1;
 // row `frame` says which time and mode it is).
 StepRecord mode_frame(const Assembler& assembler, const MotionState& equilibrium,
                       const Eigen::VectorXd& mode, int frame) {
-  double shortest_m = std::numeric_limits<double>::infinity();
-  for (const BarElement& bar : assembler.model().bars) shortest_m = std::min(shortest_m, bar.reference_length_m);
+  const double shortest_m = assembler.shortest_element_m();
   const double largest = mode.lpNorm<Eigen::Infinity>();
   MotionState shown = equilibrium;
   shown.q += (largest > 0.0 ? kDrawnAmplitudeShare * shortest_m / largest : 0.0) * mode;

@@ -4,7 +4,7 @@
 //   r(q, λ, μ) = f_int(q, μ) − f_ext(μ) + Bᵀλ = 0,   Φ(q) = 0
 // with μ either
 //   thermal: a scale on every ΔT, f_int(q, μ) = f_int with ε_t → μ ε_t, f_ext fixed;
-//            ∂r/∂μ = Σ_bars ε_t ∂f/∂ε_t = Σ −(EA ε_t/L0)[−d; d]   (elements/bar.hpp)
+//            ∂r/∂μ = Σ_bars ε_t ∂f/∂ε_t = Σ −(EA ε_t/L0)[−d; d]   (elements/bar/bar.hpp)
 //   load:    a factor on nodal loads and gravity, f_ext(μ) = μ f_ext, ΔT fixed;
 //            ∂r/∂μ = −f_ext
 // The time functions (ΔT(t), load factors, drivers) are read at one fixed time t.
