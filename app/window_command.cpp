@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <charconv>
 #include <cmath>
 #include <stdexcept>
@@ -42,6 +43,18 @@ std::string side_line(const char* name, const WindowSide& side) {
                      threshold->delta_t_C, threshold->delta_t_error_C, threshold->time_s, threshold->description);
 }
 
+std::string deployment_line(const WindowDeployment& d) {
+  const std::string regime = d.regime();
+  std::string line = fmt::format("ΔT = {:+7.4g} °C: {:11}", d.delta_t_C, regime);
+  if (d.stop) {
+    line += d.stop->time_s == 0.0 ? " at the start" : fmt::format(" at t = {:.6g} s", d.stop->time_s);
+  } else if (!d.failure.empty()) {
+    return line + " (" + d.failure + ")";
+  }
+  return line + fmt::format("; peak |axial force| {:.4g} N, peak driver effort {:.4g}", d.peak_axial_force_N,
+                            d.peak_driver_effort);
+}
+
 }  // namespace
 
 CLI::App* add_window_command(CLI::App& app, WindowArguments& arguments) {
@@ -54,6 +67,10 @@ CLI::App* add_window_command(CLI::App& app, WindowArguments& arguments) {
   window->add_option("--positions", arguments.n_positions, "Driver positions over the analysis time")
       ->capture_default_str()
       ->check(CLI::Range(1, 10000));
+  window->add_option("--deployments", arguments.n_deployments,
+                     "Uniform ΔT levels deployed quasi-statically, evenly over the range")
+      ->capture_default_str()
+      ->check(CLI::Range(0, 1000));
   window->add_option("--set,-s", arguments.sets, "Override a scalar of the model: PATH=VALUE");
   window->add_option("--out,-o", arguments.out_dir, "Folder for window.csv and window.json");
   return window;
@@ -66,6 +83,7 @@ int window_command(const WindowArguments& arguments, const std::atomic<bool>& st
   options.coldest_C = lo;
   options.hottest_C = hi;
   options.n_positions = arguments.n_positions;
+  options.n_deployments = arguments.n_deployments;
   options.stop = &stop;
   const WindowResult window = deployability_window(model, options);
   fmt::print("{}: deployability window, uniform ΔT {:+g} … {:+g} °C, {} driver positions over {:g} s\n",
@@ -77,11 +95,18 @@ int window_command(const WindowArguments& arguments, const std::atomic<bool>& st
     if (regime != previous) fmt::print("  from ΔT = {:+g} °C: {}\n", dT, regime);
     previous = regime;
   }
+  if (!window.deployments.empty()) fmt::print("quasi-static deployments (0 → {:g} s):\n", model.analysis.end_time_s);
+  for (const WindowDeployment& d : window.deployments) fmt::print("  {}\n", deployment_line(d));
   for (const WindowSide* side : {&window.cold, &window.hot}) {
     for (const std::string& failure : side->failures) fmt::print(stderr, "warning: {}\n", failure);
   }
+  for (const WindowDeployment& d : window.deployments) {
+    if (!d.failure.empty()) fmt::print(stderr, "warning: ΔT = {:+g} °C: {}\n", d.delta_t_C, d.failure);
+  }
   if (!arguments.out_dir.empty()) write_window(arguments.out_dir, window, kRegimeStep_C);
-  const bool complete = !window.stopped && window.cold.failures.empty() && window.hot.failures.empty();
+  const bool complete = !window.stopped && window.cold.failures.empty() && window.hot.failures.empty() &&
+                        std::all_of(window.deployments.begin(), window.deployments.end(),
+                                    [](const WindowDeployment& d) { return d.failure.empty(); });
   return complete ? kExitSuccess : kExitSolverFailure;
 }
 

@@ -17,6 +17,7 @@ struct WindowArguments {
   std::vector<std::string> sets;
   std::string range_C = "-200:200";
   int n_positions = 21;
+  int n_deployments = 9;
   std::string out_dir;  // empty: print only
 };
 

@@ -292,12 +292,14 @@ py::dict analysis_info(const Model& model) {
 }  // namespace
 
 // A path of static equilibria in one parameter (solvers/continuation.hpp): "thermal" scales
-// every ΔT, "load" the loads and gravity; from the model's initial state at μ = start.
+// every ΔT, "load" the loads and gravity, "driver" is the time of a quasi-static deployment;
+// from the model's initial state at μ = start.
 py::dict continuation_of(const LoadedModel& loaded, const std::string& parameter, double start,
                          double end, int n_eigenvalues, int max_steps, double time_s) {
   const std::optional<PathParameter> path_parameter = kPathParameters.find(parameter);
   if (!path_parameter) {
-    throw std::invalid_argument("continuation: parameter must be 'thermal' or 'load', got '" + parameter + "'");
+    throw std::invalid_argument("continuation: parameter must be 'thermal', 'load' or 'driver', got '" +
+                                parameter + "'");
   }
   const Assembler assembler(loaded.model);  // std::invalid_argument → ValueError
   ContinuationOptions options;

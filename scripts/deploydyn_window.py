@@ -2,9 +2,11 @@
 """Draw a deployability window (`deploydyn window MODEL --out DIR`) as DIR/window.png.
 
 Driver position (time, s) across, uniform ΔT (°C) up; every sample of the continuation paths
+(vertical: ΔT followed at a driver position; horizontal: a quasi-static deployment at one ΔT)
 coloured by the lowest stability eigenvalue (N/m, log scale: dark is near instability); each
-path's first event (limit point: a jam, bifurcation: a snap, dead centre) marked, and the
-threshold of each side drawn as a line, with its ΔT in the legend.
+path's first event (limit point: a jam, bifurcation: a snap, dead centre) marked, where each
+deployment stops circled, and the threshold of each side drawn as a line, with its ΔT in the
+legend.
 
     /usr/bin/python3 scripts/deploydyn_window.py DIR [--title TEXT] [--out FILE.png]
 """
@@ -32,7 +34,7 @@ def draw(folder, title, out):
     except (OSError, ValueError) as error:
         print(f"window: {folder}: cannot read the window: {error}", file=sys.stderr)
         return 1
-    fig, ax = plt.subplots(figsize=(7.5, 5.0), constrained_layout=True)
+    fig, ax = plt.subplots(figsize=(7.5, 5.6), constrained_layout=True)
     if samples.size:
         t, dT, eigen = samples[:, 0], samples[:, 1], samples[:, 2]
         finite = np.isfinite(eigen) & (eigen > 0)
@@ -47,19 +49,23 @@ def draw(folder, title, out):
         shown = set()
         for edge in data["edges"]:
             marker, label = MARKERS.get(edge["kind"], ("o", edge["kind"]))
-            ax.plot(edge["t"], edge["dT"], marker, color="black", ms=6,
+            ax.plot(edge["t"], edge["dT"], marker, color="black", ms=7, zorder=5,
                     label=None if edge["kind"] in shown else label)
             shown.add(edge["kind"])
         threshold = data["threshold"]
         if threshold:
             ax.axhline(threshold["dT"], color="black", ls="--", lw=1,
                        label=f"{side} threshold ΔT = {threshold['dT']:+.4g} °C at t = {threshold['t']:g} s")
+    stops = [d for d in summary.get("deployments", []) if d["stop"]]
+    for i, d in enumerate(stops):
+        ax.plot(d["stop"]["t"], d["dT"], "o", mfc="none", color="crimson", ms=9, zorder=6,
+                label="deployment stops here" if i == 0 else None)
     ax.axhline(0.0, color="grey", lw=0.5)
     ax.set_xlabel("driver position: time t (s)")
     ax.set_ylabel("uniform temperature change ΔT (°C)")
     ax.set_title(title or f"deployability window: {folder.name}")
     if ax.get_legend_handles_labels()[0]:
-        ax.legend(loc="best", fontsize=8)
+        ax.legend(loc="upper center", bbox_to_anchor=(0.5, -0.12), ncol=2, fontsize=8)
     fig.savefig(out, dpi=120)
     plt.close(fig)
     print(f"window: {out}", file=sys.stderr)

@@ -379,7 +379,8 @@ class Model:
         points (arc-length continuation, docs/theory.md "Path following and stability"), as a
         model of `analysis: {type: continuation}` does: "thermal" scales every ΔT (μ = 1: the
         model's own), "load" scales the loads and gravity; drivers and ΔT(t) are read at `time`
-        (s). Returns a dict: "mu", "displacement_norm" (m), "eigenvalues" (points × eigenvalues,
+        (s). "driver" follows a quasi-static deployment: μ is the time (s) at which the drivers'
+        positions, ΔT(t) and the loads are read (`time` is not used). Returns a dict: "mu", "displacement_norm" (m), "eigenvalues" (points × eigenvalues,
         N/m, of the tangent stiffness on the constraint-compatible motions; NaN when not
         computed), "n_negative", "q" (points × coordinates), "events" (dicts with "kind"
         limit_point | bifurcation | singular_constraints, "mu", "mu_error", "point", "mode",

@@ -55,5 +55,20 @@ def test_continuation_finds_the_cold_parallel_jam(source_dir):
     limit = [e for e in path["events"] if e["kind"] == "limit_point"]
     assert limit, path["message"]
     assert limit[0]["mu"] * -200 == pytest.approx(-84.8434928418712, abs=1e-3)
-    with pytest.raises(ValueError, match="parameter must be 'thermal' or 'load'"):
-        model.continuation("driver", end=1.0)
+    with pytest.raises(ValueError, match="parameter must be 'thermal', 'load' or 'driver'"):
+        model.continuation("pressure", end=1.0)
+
+
+def test_continuation_in_the_driver_time_deploys_the_parallelogram(source_dir):
+    """μ = t: the quasi-static deployment at ΔT = 0 ends with the driven bar D–C turned by
+    ∫ω = 0.365 · 4 rad from 5°, and A–B parallel to it (a parallelogram)."""
+    model = deploydyn.load(source_dir / "examples" / "paper" / "parallel.yaml")
+    path = model.continuation("driver", end=5.0)
+    assert path["end"] == "reached_end", path["message"]
+    assert path["mu"][0] == 0.0 and path["mu"][-1] == pytest.approx(5.0, abs=1e-12)
+    names = ["x.A", "y.A", "x.B", "y.B", "x.C", "y.C", "x.D", "y.D"]
+    q = dict(zip(names, path["q"][-1]))
+    driven = math.atan2(q["y.C"] - q["y.D"], q["x.C"] - q["x.D"])
+    crank = math.atan2(q["y.B"] - q["y.A"], q["x.B"] - q["x.A"])
+    assert driven == pytest.approx(math.radians(5.0) + 0.365 * 4.0, abs=1e-10)
+    assert crank == pytest.approx(driven, abs=1e-10)

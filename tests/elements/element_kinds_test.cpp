@@ -36,7 +36,8 @@ TEST(ElementKinds, ModelFormatDocumentsEveryField) {
       const std::string row = fmt::format("| `{}` | {}| {} | {} |", field.key,
                                           field.unit.empty() ? "" : fmt::format("{} ", field.unit),
                                           field.default_value, field.allowed);
-      EXPECT_NE(text.str().find(row), std::string::npos) << kind->name() << " field row missing:\n" << row;
+      EXPECT_NE(text.str().find(row), std::string::npos) << kind->name() << " field row missing:\n"
+                                                         << row;
     }
   }
 }

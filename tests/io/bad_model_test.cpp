@@ -79,7 +79,7 @@ const BadModelCase kBadModels[] = {
     {"step_absurdly_small.yaml", 5, "analysis.step", "must be at least 1e-09 s, got 1e-12"},
     {"does_not_exist.yaml", 0, "", "cannot open file"},
     {"continuation_unknown_parameter.yaml", 6, "analysis.parameter",
-     "must be one of thermal, load, got 'pressure'"},
+     "must be one of thermal, load, driver, got 'pressure'"},
     {"continuation_empty_range.yaml", 8, "analysis.end", "must be finite and differ from start = 1, got 1"},
     {"continuation_with_step.yaml", 8, "analysis.step", "unknown key 'step'"},
 };

@@ -41,6 +41,38 @@ TEST(DeployabilityWindow, ParallelLinkageJamsAtItsStartBelowTheClosedFormTempera
   EXPECT_EQ(window_regime(window, 150.0), "stress-free");
 }
 
+// Deployed quasi-statically at ΔT levels −200, −150, …, +200 °C: below the closed-form jam it
+// cannot start (the thermal path at t = 0 turns at that very temperature), above it the
+// statically determinate linkage deploys to the end stress-free.
+TEST(DeployabilityWindow, ParallelLinkageDeploysStressFreeAboveTheJamAndCannotStartBelow) {
+  const Model model = load_model(example_path("parallel.yaml"));
+  WindowOptions options;
+  options.n_positions = 1;
+  const WindowResult window = deployability_window(model, options);
+  ASSERT_EQ(window.deployments.size(), 9u);
+  for (const WindowDeployment& d : window.deployments) {
+    SCOPED_TRACE(d.delta_t_C);
+    EXPECT_TRUE(d.failure.empty()) << d.failure;
+    if (d.delta_t_C < kColdJamAtStart_C) {
+      ASSERT_TRUE(d.stop.has_value());
+      EXPECT_EQ(d.stop->kind, PathEventKind::limit_point);
+      EXPECT_EQ(d.stop->time_s, 0.0);
+      EXPECT_NEAR(d.stop->delta_t_C, kColdJamAtStart_C, 1e-3);
+      EXPECT_EQ(d.regime(), "jams");
+    } else {
+      EXPECT_TRUE(d.completed);
+      EXPECT_FALSE(d.stop.has_value()) << d.stop->description;
+      EXPECT_EQ(d.regime(), "stress-free");
+      EXPECT_LT(d.peak_axial_force_N, 1e-3);  // of forces of order EA α ΔT ≈ 7 kN per 50 °C
+      EXPECT_GT(d.lowest_eigenvalue_N_m, 0.0);
+    }
+  }
+  // The deployment's samples end at the end of the analysis.
+  double latest = 0.0;
+  for (const WindowSample& s : window.samples) latest = std::max(latest, s.time_s);
+  EXPECT_DOUBLE_EQ(latest, model.analysis.end_time_s);
+}
+
 // A redundant structure is stressed by any ΔT: a bar between two pins.
 TEST(DeployabilityWindow, ARedundantStructureIsStressedAtOnce) {
   const Model model = load_model_from_string(R"(

@@ -20,7 +20,8 @@ struct BarResult {
 
 inline std::vector<BarResult> bar_results(const StepRecord& record) {
   const auto kinds = element_kinds();
-  const auto g = static_cast<std::size_t>(std::find(kinds.begin(), kinds.end(), &bar_kind()) - kinds.begin());
+  const auto g =
+      static_cast<std::size_t>(std::find(kinds.begin(), kinds.end(), &bar_kind()) - kinds.begin());
   const ElementResults& results = record.elements.at(g);
   const ElementKind& bar = bar_kind();
   std::vector<BarResult> bars;

@@ -124,6 +124,29 @@ void Assembler::thermal_force_derivative(const Eigen::VectorXd& q, double t,
   for (const auto& group : groups_) group->add_thermal_force_derivative(q, t, f);
 }
 
+void Assembler::static_residual_time_derivative(const Eigen::VectorXd& q, double t,
+                                                const Eigen::VectorXd& lambda,
+                                                Eigen::VectorXd& dr,
+                                                Eigen::VectorXd& dphi) const {
+  dr.setZero(n_dofs());
+  for (const auto& group : groups_) group->add_thermal_force_rate(q, t, dr);
+  const int dim = model_.dimension;
+  for (const NodalLoad& load : model_.loads) {  // gravity does not change with t
+    const double rate = load.factor.derivative(t);
+    for (int axis = 0; axis < dim; ++axis) dr[dofs_.index(load.node, axis)] -= rate * load.force_N[axis];
+  }
+  Eigen::VectorXd local;
+  for (std::size_t c = 0; c < constraints_.size(); ++c) {
+    const Constraint& con = *constraints_[c];
+    const std::span<const int> dofs = con.dofs();
+    local.setZero(static_cast<Eigen::Index>(dofs.size()));
+    con.add_force_time_derivative(q, t, lambda.segment(first_row_[c], con.n_equations()), local);
+    for (std::size_t i = 0; i < dofs.size(); ++i) dr[dofs[i]] += local[static_cast<Eigen::Index>(i)];
+  }
+  Eigen::VectorXd bias;  // of Φ̈; not wanted: a zero velocity keeps it cheap
+  constraint_rates(q, Eigen::VectorXd::Zero(n_dofs()), t, dphi, bias);
+}
+
 void Assembler::external_force(double t, Eigen::VectorXd& f) const {
   f.setZero(n_dofs());
   const int dim = model_.dimension;

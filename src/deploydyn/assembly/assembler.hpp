@@ -49,6 +49,12 @@ class Assembler {
   // ∂f_int/∂(thermal_factor) at q: f_int is linear in the factor, so this is the same at every
   // factor (theory.md, "Path following and stability").
   void thermal_force_derivative(const Eigen::VectorXd& q, double t, Eigen::VectorXd& f) const;
+  // ∂/∂t at fixed q and λ of the static residual r = f_int − f_ext + Bᵀλ and of Φ: how the
+  // equilibrium equations move with time through ΔT(t), the load factors and the drivers
+  // (the quasi-static deployment a continuation follows, solvers/parametrized_equilibrium.hpp).
+  void static_residual_time_derivative(const Eigen::VectorXd& q, double t,
+                                       const Eigen::VectorXd& lambda, Eigen::VectorXd& dr,
+                                       Eigen::VectorXd& dphi) const;
   void external_force(double t, Eigen::VectorXd& f) const;
   void mass_times(const Eigen::VectorXd& a, Eigen::VectorXd& out) const;  // M a
 

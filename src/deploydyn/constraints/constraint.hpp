@@ -41,6 +41,15 @@ class Constraint {
                                 Eigen::Ref<Eigen::VectorXd> phi_t,
                                 Eigen::Ref<Eigen::VectorXd> bias) const = 0;
 
+  // ∂(Bᵀλ)/∂t at fixed q and λ (local, dofs().size()), added to `force`: how the constraint
+  // forces turn as a driver moves on, needed when a continuation follows the drivers
+  // (solvers/parametrized_equilibrium.hpp). The default adds nothing: B independent of t.
+  virtual void add_force_time_derivative(const Eigen::VectorXd& q, double t,
+                                         Eigen::Ref<const Eigen::VectorXd> lambda,
+                                         Eigen::Ref<Eigen::VectorXd> force) const {
+    (void)q, (void)t, (void)lambda, (void)force;
+  }
+
   // Plain words for equation `row` (local), used when a solve fails: "support A, x".
   virtual std::string describe(int row) const = 0;
 

@@ -83,6 +83,20 @@ void DrivenBarAngle::time_derivatives(const Eigen::VectorXd& q, const Eigen::Vec
   }
 }
 
+void DrivenBarAngle::add_force_time_derivative(const Eigen::VectorXd&, double t,
+                                               Eigen::Ref<const Eigen::VectorXd> lambda,
+                                               Eigen::Ref<Eigen::VectorXd> force) const {
+  const double rate = motion_.velocity(t);
+  const int dim = dimension();
+  for (int k = 0; k < n_equations(); ++k) {
+    const Eigen::Vector3d n_dot = rate * axis_.cross(normal(k, t));
+    for (int i = 0; i < dim; ++i) {
+      force[i] -= lambda[k] * n_dot[i];
+      force[dim + i] += lambda[k] * n_dot[i];
+    }
+  }
+}
+
 double DrivenBarAngle::torque(const Eigen::VectorXd& q, double t,
                               Eigen::Ref<const Eigen::VectorXd> lambda) const {
   Eigen::Vector3d tip_force = Eigen::Vector3d::Zero();

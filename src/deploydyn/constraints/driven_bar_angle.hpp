@@ -28,6 +28,10 @@ class DrivenBarAngle final : public Constraint {
   void time_derivatives(const Eigen::VectorXd& q, const Eigen::VectorXd& v, double t,
                         Eigen::Ref<Eigen::VectorXd> phi_t,
                         Eigen::Ref<Eigen::VectorXd> bias) const override;
+  // B = [−n_kᵀ, n_kᵀ] turns with n_k(t): ∂(Bᵀλ)/∂t = Σ λ_k ṡ (a × n_k) [−1; 1].
+  void add_force_time_derivative(const Eigen::VectorXd& q, double t,
+                                 Eigen::Ref<const Eigen::VectorXd> lambda,
+                                 Eigen::Ref<Eigen::VectorXd> force) const override;
   std::string describe(int row) const override;
 
   // Torque (N·m) the actuator applies to the bar about the axis, from this constraint's

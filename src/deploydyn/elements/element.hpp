@@ -48,7 +48,9 @@ struct ElementResults {
   int n_quantities = 0;
   std::vector<double> values;  // values[element · n_quantities + quantity]
 
-  int n_elements() const { return n_quantities > 0 ? static_cast<int>(values.size()) / n_quantities : 0; }
+  int n_elements() const {
+    return n_quantities > 0 ? static_cast<int>(values.size()) / n_quantities : 0;
+  }
   double at(int element, int quantity) const {
     return values[static_cast<std::size_t>(element * n_quantities + quantity)];
   }
@@ -74,6 +76,9 @@ class ElementGroup {
   // ∂f_int/∂(thermal factor) at q; f_int is linear in the factor.
   virtual void add_thermal_force_derivative(const Eigen::VectorXd& q, double t,
                                             Eigen::VectorXd& f) const = 0;
+  // ∂f_int/∂t at q through the rate of ΔT(t) (a quasi-static deployment in time).
+  virtual void add_thermal_force_rate(const Eigen::VectorXd& q, double t,
+                                      Eigen::VectorXd& f) const = 0;
   virtual void add_mass_times(const Eigen::VectorXd& a, Eigen::VectorXd& out) const = 0;
   // The elements' own weight under gravity g (m/s²).
   virtual void add_weight(const Eigen::Vector3d& gravity_m_s2, Eigen::VectorXd& f) const = 0;
@@ -120,19 +125,22 @@ class ElementKind {
   virtual void set_temperature_change(Model& model, const TimeFunction& change_C) const = 0;
   // Unknowns a node of one of its elements carries beyond its position, appended by name
   // (a rotation "rz", a slope "dx/ds"); the bar adds none.
-  virtual void add_node_unknowns(const Model& model, std::vector<std::vector<std::string>>& per_node) const = 0;
+  virtual void add_node_unknowns(const Model& model,
+                                 std::vector<std::vector<std::string>>& per_node) const = 0;
 
   // The keys of its entries in the model file, and how it reads and writes one. `read` gets an
   // entry whose keys are among fields() and appends the element, named `name`, to `model`,
   // whose nodes, materials and model-wide ΔT are already read.
   virtual std::span<const ElementField> fields() const = 0;
-  virtual void read(const std::string& name, const ElementEntryReader& entry, Model& model) const = 0;
+  virtual void read(const std::string& name, const ElementEntryReader& entry,
+                    Model& model) const = 0;
   // Every key, defaults explicit (mass and length too: a reload needs no recomputation).
   virtual void write(const Model& model, int element, ElementEntryWriter& entry) const = 0;
 
   // Its elements' mechanics, bound to `dofs`. Throws std::invalid_argument for elements whose
   // mechanics cannot be built.
-  virtual std::unique_ptr<ElementGroup> make_group(const Model& model, const DofMap& dofs) const = 0;
+  virtual std::unique_ptr<ElementGroup> make_group(const Model& model,
+                                                   const DofMap& dofs) const = 0;
 };
 
 }  // namespace deploydyn

@@ -36,7 +36,8 @@ class ElementEntryReader {
   virtual TimeFunction function(std::string_view key) const = 0;
   // A rejected value of `key` (at its line), or a problem with a missing `key` (at the entry's).
   [[noreturn]] virtual void fail(std::string_view key, const std::string& problem) const = 0;
-  [[noreturn]] virtual void fail_missing(std::string_view key, const std::string& problem) const = 0;
+  [[noreturn]] virtual void fail_missing(std::string_view key,
+                                         const std::string& problem) const = 0;
 };
 
 class ElementEntryWriter {

@@ -28,7 +28,8 @@ int n_elements(const Model& model) {
 
 std::vector<std::string> element_names(const Model& model) {
   std::vector<std::string> names;
-  for (const ElementRef& e : all_elements(model)) names.push_back(e.kind->element_name(model, e.index));
+  for (const ElementRef& e : all_elements(model))
+    names.push_back(e.kind->element_name(model, e.index));
   return names;
 }
 

@@ -13,6 +13,7 @@
 //   State evaluate(const Vector& q, double t, double thermal_factor) const;
 //   Vector internal_force(const State&) const;
 //   Vector thermal_force_derivative(const State&, double t) const;   at thermal factor 1
+//   Vector thermal_force_rate(const State&, double t) const;         ∂f/∂t through ΔT(t)
 //   Matrix tangent(const State&) const;               material + geometric
 //   Matrix mass(MassMatrixKind) const;
 //   Vector weight(const Eigen::Vector3d& gravity_m_s2) const;
@@ -56,6 +57,13 @@ class LocalElementGroup final : public ElementGroup {
                                     Eigen::VectorXd& f) const override {
     for (const Element& e : elements_) {
       scatter(e, e.thermal_force_derivative(e.evaluate(gather(e, q), t, 1.0), t), f);
+    }
+  }
+
+  void add_thermal_force_rate(const Eigen::VectorXd& q, double t,
+                              Eigen::VectorXd& f) const override {
+    for (const Element& e : elements_) {
+      scatter(e, e.thermal_force_rate(e.evaluate(gather(e, q), t, 1.0), t), f);
     }
   }
 

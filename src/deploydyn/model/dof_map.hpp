@@ -26,15 +26,17 @@ class DofMap {
   int first(int node) const { return first_[node]; }
   int count(int node) const { return static_cast<int>(unknowns(node).size()); }
   // The names of a node's unknowns, in the order of q: x, y(, z), then element-added ones.
-  const std::vector<std::string>& unknowns(int node) const { return unknown_sets_[set_of_node_[node]]; }
+  const std::vector<std::string>& unknowns(int node) const {
+    return unknown_sets_[set_of_node_[node]];
+  }
   // "y.B": the unknown's name as history.csv spells it.
   std::string label(int dof) const;
 
  private:
   int n_dofs_ = 0;
   std::vector<int> first_;
-  std::vector<int> set_of_node_;                         // index into unknown_sets_
-  std::vector<std::vector<std::string>> unknown_sets_;   // distinct lists of unknown names
+  std::vector<int> set_of_node_;                        // index into unknown_sets_
+  std::vector<std::vector<std::string>> unknown_sets_;  // distinct lists of unknown names
   std::vector<std::string> node_names_;
 };
 

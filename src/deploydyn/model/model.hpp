@@ -82,16 +82,19 @@ inline constexpr NameTable kAnalysisTypes{std::array{
 inline const char* to_string(AnalysisType type) { return kAnalysisTypes.name(type).data(); }
 
 // The parameter μ a continuation follows (solvers/parametrized_equilibrium.hpp): a scale on
-// every ΔT, or a factor on nodal loads and gravity.
-enum class PathParameter { thermal, load };
+// every ΔT, a factor on nodal loads and gravity, or the time t (s) of a quasi-static
+// deployment, at which the drivers' positions (and ΔT(t), load factors) are read.
+enum class PathParameter { thermal, load, driver };
 inline constexpr NameTable kPathParameters{std::array{
     NamedValue<PathParameter>{PathParameter::thermal, "thermal"},
     NamedValue<PathParameter>{PathParameter::load, "load"},
+    NamedValue<PathParameter>{PathParameter::driver, "driver"},
 }};
 inline const char* to_string(PathParameter parameter) { return kPathParameters.name(parameter).data(); }
 
-// analysis.type: continuation (solvers/continuation.hpp): the static equilibrium at t = 0
-// traced in μ from `start` to `end`, through limit points, with its stability.
+// analysis.type: continuation (solvers/continuation.hpp): the static equilibrium (at t = 0
+// for the thermal and load parameters) traced in μ from `start` to `end`, through limit
+// points, with its stability.
 struct ContinuationSettings {
   PathParameter parameter = PathParameter::thermal;
   double start = 0.0;

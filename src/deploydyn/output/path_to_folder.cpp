@@ -24,19 +24,22 @@ using nlohmann::ordered_json;
 
 constexpr const char* kPathFileName = "path.csv";
 
-// What one unit of μ is in the model's terms: ΔT (°C) or the largest load entry (N).
+// What one unit of μ is in the model's terms: ΔT (°C), the largest load entry (N), or 1 s of
+// the deployment time.
 double parameter_unit(const Assembler& assembler) {
   const Model& model = assembler.model();
   if (model.analysis.continuation.parameter == PathParameter::thermal) {
     return model.temperature_change_C.value(0.0);
   }
+  if (model.analysis.continuation.parameter == PathParameter::driver) return 1.0;
   Eigen::VectorXd external;
   assembler.external_force(0.0, external);
   return external.size() > 0 ? external.cwiseAbs().maxCoeff() : 0.0;
 }
 
 const char* parameter_column(const Model& model) {
-  return model.analysis.continuation.parameter == PathParameter::thermal ? "dT_C" : "load_N";
+  constexpr const char* kColumns[] = {"dT_C", "load_N", "time_s"};
+  return kColumns[static_cast<int>(model.analysis.continuation.parameter)];
 }
 
 

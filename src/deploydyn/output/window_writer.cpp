@@ -58,6 +58,20 @@ void write_window(const std::filesystem::path& folder, const WindowResult& windo
     regimes.push_back({{"dT", dT}, {"regime", window_regime(window, dT)}});
   }
   j["regimes"] = regimes;
+  ordered_json deployments = ordered_json::array();
+  for (const WindowDeployment& d : window.deployments) {
+    deployments.push_back({{"dT", d.delta_t_C},
+                           {"regime", d.regime()},
+                           {"completed", d.completed},
+                           {"stop", d.stop ? edge_json(*d.stop) : ordered_json(nullptr)},
+                           {"peak_axial_force", d.peak_axial_force_N},
+                           {"peak_mstrain", d.peak_mechanical_strain},
+                           {"peak_driver_effort", d.peak_driver_effort},
+                           {"lowest_eigenvalue", std::isnan(d.lowest_eigenvalue_N_m) ? ordered_json(nullptr)
+                                                                                     : ordered_json(d.lowest_eigenvalue_N_m)},
+                           {"failure", d.failure}});
+  }
+  j["deployments"] = deployments;
   write_file_atomically(folder / "window.json", j.dump(2, ' ', false, ordered_json::error_handler_t::replace) + "\n");
 }
 

@@ -21,12 +21,18 @@ constexpr double kRoundOffShare = 16.0 * std::numeric_limits<double>::epsilon();
 // when negative ones are counted: round-off of K is ~1e-16 of it, and genuine near-critical
 // values of the tests are ≥ 1e-8 of it one step away from a crossing.
 constexpr double kZeroEigenvalueShare = 1e-12;
+// A lowest eigenvalue below this share of the stiffness scale is at the critical point for the
+// step rule on eigenvalue drops: from there a step may cross it.
+constexpr double kCriticalEigenvalueShare = 1e-9;
 // A corrector that lands farther from its predictor than the step itself has most likely
 // jumped to another stretch of the path (across a limit point, onto the far branch).
 constexpr double kMaxCorrectionPerStep = 1.0;
 // ℓ when the start does not move with μ (dq/dμ = 0, e.g. a straight strut heated between
 // supports): a thousandth of the longest bar, so that μ sets the pace of the path.
 constexpr double kSmallestLengthShare = 1e-3;
+// ℓ at least this share of the longest bar when following the drivers: a deployment moves the
+// nodes by bar lengths, while dq/dμ at its start is often 0 (the driver starts from rest).
+constexpr double kDeploymentLengthShare = 1.0;
 // Regula falsi steps for one event; each halves the bracket at least every other step, so 100
 // covers a bracket shrinking from Δs ≤ 1 to 1e-15.
 constexpr int kMaxLocationIterations = 100;
@@ -56,7 +62,7 @@ class PathTracer {
         reference_q_(assembler.initial_coordinates()),
         with_stability_(options.n_eigenvalues > 0 &&
                         assembler.n_dofs() <= options.max_stability_dofs) {
-    scale_ = assembler.stiffness_scale(reference_q_, options.time_s);
+    scale_ = assembler.stiffness_scale(reference_q_, equilibrium_.time_s(options.start));
   }
 
   ContinuationResult run(const Eigen::VectorXd& q0, const Eigen::VectorXd& lambda0);
@@ -73,8 +79,11 @@ class PathTracer {
                  double last_correction_m, const Eigen::VectorXd& q) const;
   CorrectorResult correct(const Tangent& normal, const Eigen::VectorXd& q_p, double mu_p,
                           PathPoint& point);
-  // Solves J b = −[∂r/∂μ; 0] at the point into rhs_b_ (b_q = dq/dμ); false when J is singular.
+  // Solves J b = −[∂r/∂μ; s ∂Φ/∂μ] at the point into rhs_b_ (b_q = dq/dμ); false when J is
+  // singular.
   bool sensitivity(const PathPoint& point);
+  // The same with J already factorized at the point.
+  void solve_parameter_derivative(const PathPoint& point);
   std::optional<Tangent> tangent(const PathPoint& point, const Tangent* previous);
   void analyse_stability(PathPoint& point, ConstraintNullSpace* null_space = nullptr,
                          ConstrainedSpectrum* spectrum = nullptr);
@@ -101,7 +110,7 @@ class PathTracer {
   bool with_stability_;
   double length_ = 1.0, scale_ = 1.0;
   ContinuationResult result_;
-  Eigen::VectorXd r_, phi_, dr_, rhs_a_, rhs_b_;
+  Eigen::VectorXd r_, phi_, dr_, dphi_, rhs_a_, rhs_b_;
 };
 
 bool PathTracer::converged(const NewtonResult& residuals, double force_scale, int iterations,
@@ -150,11 +159,7 @@ CorrectorResult PathTracer::correct(const Tangent& normal, const Eigen::VectorXd
     rhs_a_.head(n) = -r_;
     rhs_a_.tail(m) = -scale_ * phi_;
     system_.solve(rhs_a_);
-    equilibrium_.parameter_derivative(point.q, point.parameter, dr_);
-    rhs_b_.resize(n + m);
-    rhs_b_.head(n) = -dr_;
-    rhs_b_.tail(m).setZero();
-    system_.solve(rhs_b_);
+    solve_parameter_derivative(point);
     const double constraint_value =
         normal.q_rate.dot(point.q - q_p) / l2 + normal.mu_rate * (point.parameter - mu_p) / rho2;
     const double denominator = normal.q_rate.dot(rhs_b_.head(n)) / l2 + normal.mu_rate / rho2;
@@ -172,16 +177,20 @@ CorrectorResult PathTracer::correct(const Tangent& normal, const Eigen::VectorXd
 }
 
 bool PathTracer::sensitivity(const PathPoint& point) {
-  const auto n = assembler_.n_dofs();
-  const auto m = assembler_.n_equations();
   equilibrium_.matrix(point.q, point.lambda, point.parameter, scale_, system_);
   if (!system_.factorize().ok) return false;
-  equilibrium_.parameter_derivative(point.q, point.parameter, dr_);
+  solve_parameter_derivative(point);
+  return true;
+}
+
+void PathTracer::solve_parameter_derivative(const PathPoint& point) {
+  const auto n = assembler_.n_dofs();
+  const auto m = assembler_.n_equations();
+  equilibrium_.parameter_derivative(point.q, point.lambda, point.parameter, dr_, dphi_);
   rhs_b_.resize(n + m);
   rhs_b_.head(n) = -dr_;
-  rhs_b_.tail(m).setZero();
+  rhs_b_.tail(m) = -scale_ * dphi_;
   system_.solve(rhs_b_);
-  return true;
 }
 
 std::optional<Tangent> PathTracer::tangent(const PathPoint& point, const Tangent* previous) {
@@ -261,7 +270,8 @@ void PathTracer::record_event(PathEventKind kind, PathPoint point, const Tangent
   }
   event.dependent_rows = null_space.dependent_rows;
   const double thermal_factor = equilibrium_.thermal_factor(point.parameter);
-  event.axial_forces_N = assembler_.element_quantity("axial_force_N", point.q, options_.time_s, thermal_factor);
+  event.axial_forces_N =
+      assembler_.element_quantity("axial_force_N", point.q, equilibrium_.time_s(point.parameter), thermal_factor);
   std::string where;
   if (event.mode.size() > 0) {
     Eigen::Index largest = 0;
@@ -271,8 +281,11 @@ void PathTracer::record_event(PathEventKind kind, PathPoint point, const Tangent
   const char* what = kind == PathEventKind::limit_point    ? "limit point (the path turns back in μ)"
                      : kind == PathEventKind::bifurcation ? "bifurcation (a stability eigenvalue crosses zero while μ goes on)"
                                                           : "singular constraint Jacobian (dead centre or redundant constraints, not a structural instability)";
-  event.description = fmt::format("{} at {} factor μ = {:.9g} (± {:.2g}){}", what,
-                                  to_string(options_.parameter), point.parameter, error, where);
+  const std::string at = options_.parameter == PathParameter::driver
+                             ? fmt::format("driver time t = {:.9g} s (± {:.2g} s)", point.parameter, error)
+                             : fmt::format("{} factor μ = {:.9g} (± {:.2g})",
+                                           to_string(options_.parameter), point.parameter, error);
+  event.description = fmt::format("{} at {}{}", what, at, where);
   point.event = static_cast<int>(result_.events.size());
   event.point = static_cast<int>(result_.points.size());
   result_.points.push_back(std::move(point));
@@ -411,7 +424,9 @@ ContinuationResult PathTracer::run(const Eigen::VectorXd& q0, const Eigen::Vecto
     // The motion a linear extrapolation over the whole range would give: the path's first
     // stretch then weighs q and μ alike (Crisfield's scaling of the load term).
     length_ = std::max(rhs_b_.head(assembler_.n_dofs()).norm() * range_,
-                       kSmallestLengthShare * longest_bar_m());
+                       (options_.parameter == PathParameter::driver ? kDeploymentLengthShare
+                                                                    : kSmallestLengthShare) *
+                           longest_bar_m());
   }
   result_.length_scale_m = length_;
   std::optional<Tangent> t = tangent(current, nullptr);
@@ -426,6 +441,24 @@ ContinuationResult PathTracer::run(const Eigen::VectorXd& q0, const Eigen::Vecto
   result_.points.push_back(current);
 
   const double cos_max_turn = std::cos(options_.max_turn_rad);
+  const auto rushes_to_critical = [&](const PathPoint& from, const PathPoint& to) {
+    if (from.lowest_eigenvalues.size() == 0 || to.lowest_eigenvalues.size() == 0) return false;
+    const double before = from.lowest_eigenvalues[0], after = to.lowest_eigenvalues[0];
+    return before > 0.0 && after > kCriticalEigenvalueShare * scale_ &&
+           after * options_.max_eigenvalue_drop < before;
+  };
+  // Arc length after `to` at which the lowest eigenvalue, falling as from `from` to `to` over
+  // `ds`, would reach zero; infinite when it does not fall or is (nearly) critical already.
+  const auto critical_distance_ahead = [&](const PathPoint& from, const PathPoint& to, double ds) {
+    if (from.lowest_eigenvalues.size() == 0 || to.lowest_eigenvalues.size() == 0) {
+      return std::numeric_limits<double>::infinity();
+    }
+    const double before = from.lowest_eigenvalues[0], after = to.lowest_eigenvalues[0];
+    if (!(before > after && after > kCriticalEigenvalueShare * scale_)) {
+      return std::numeric_limits<double>::infinity();
+    }
+    return after * ds / (before - after);
+  };
   double ds = options_.initial_step;
   for (int step = 0;; ++step) {
     if (step >= options_.max_steps) {
@@ -444,7 +477,8 @@ ContinuationResult PathTracer::run(const Eigen::VectorXd& q0, const Eigen::Vecto
       const Eigen::VectorXd off_q = trial->point.q - (current.q + ds * t->q_rate);
       const double off_mu = trial->point.parameter - (current.parameter + ds * t->mu_rate);
       return std::sqrt(dot(off_q, off_mu, off_q, off_mu)) > kMaxCorrectionPerStep * ds ||
-             dot(trial->tangent.q_rate, trial->tangent.mu_rate, t->q_rate, t->mu_rate) < cos_max_turn;
+             dot(trial->tangent.q_rate, trial->tangent.mu_rate, t->q_rate, t->mu_rate) < cos_max_turn ||
+             rushes_to_critical(current, trial->point);
     };
     if (!trial || (ds > options_.min_step && jumped())) {
       ++result_.rejected_steps;
@@ -482,8 +516,13 @@ ContinuationResult PathTracer::run(const Eigen::VectorXd& q0, const Eigen::Vecto
       ds *= options_.step_cut;
       continue;
     }
+    const double taken = ds;
     if (next.point.corrector_iterations <= options_.easy_iterations) {
       ds = std::min(ds * options_.step_growth, options_.max_step);
+    }
+    // The lowest eigenvalue falling linearly would reach 0 after `ahead`: step half way there.
+    if (const double ahead = critical_distance_ahead(current, next.point, taken); ahead < 2.0 * ds) {
+      ds = std::max(0.5 * ahead, options_.min_step);
     }
     current = next.point;
     *t = next.tangent;
@@ -516,6 +555,9 @@ void validate(const ContinuationOptions& o) {
   if (!(o.step_cut > 0.0 && o.step_cut < 1.0)) fail(fmt::format("step_cut ({}) must be in (0, 1)", o.step_cut));
   if (!(o.max_turn_rad > 0.0 && o.max_turn_rad < 1.5)) {
     fail(fmt::format("max_turn_rad ({}) must be in (0, 1.5)", o.max_turn_rad));
+  }
+  if (!(o.max_eigenvalue_drop > 1.0)) {
+    fail(fmt::format("max_eigenvalue_drop ({}) must be > 1", o.max_eigenvalue_drop));
   }
   if (o.length_scale_m < 0.0) fail(fmt::format("length_scale_m ({}) must be ≥ 0", o.length_scale_m));
   if (o.n_eigenvalues < 0) fail(fmt::format("n_eigenvalues ({}) must be ≥ 0", o.n_eigenvalues));

@@ -4,10 +4,11 @@
 // stability").
 //
 // Equations (solvers/parametrized_equilibrium.hpp), unknowns x = (q, λ) and μ:
-//   G(x, μ) = [ f_int(q, μ) − f_ext(μ) + Bᵀλ ;  Φ(q) ] = 0
+//   G(x, μ) = [ f_int(q, μ) − f_ext(μ) + B(μ)ᵀλ ;  Φ(q, μ) ] = 0
 // Arc length s in dimensionless coordinates u = q/ℓ, ν = μ/ρ, with ρ = |μ_end − μ_start| and
 // ℓ = ‖dq/dμ‖₂ ρ at the start (the motion a linear extrapolation over the whole range would
-// give; 10⁻³ of the longest bar when the start does not move), unless given, so that the
+// give; at least 10⁻³ of the longest bar, and the longest bar itself for the driver parameter,
+// whose deployment starts from rest but moves the nodes by bar lengths), unless given, so that the
 // first stretch weighs q and μ alike (Crisfield's scaling of the load term):
 //   ds² = ‖dq‖²/ℓ² + dμ²/ρ²          (the multipliers follow, they are not measured)
 // Pseudo-arclength predictor–corrector (Keller 1977, "Numerical solution of bifurcation and
@@ -16,10 +17,10 @@
 //   predictor  (q, λ, μ)_p = (q, λ, μ)_k + Δs (q̇, λ̇, μ̇)_k       ( ˙ = d/ds, unit tangent)
 //   corrector  Newton on G = 0 and N = q̇_kᵀ(q − q_p)/ℓ² + μ̇_k (μ − μ_p)/ρ² = 0:
 //     [ K + H(λ)   s Bᵀ   ∂r/∂μ ] [Δq ]     [  r  ]
-//     [ s B         0      0    ] [Δλ̂] = − [ s Φ ]          λ = s λ̂ as in Newton
+//     [ s B         0    s ∂Φ/∂μ] [Δλ̂] = − [ s Φ ]          λ = s λ̂ as in Newton
 //     [ q̇ᵀ/ℓ²       0    μ̇/ρ²  ] [Δμ ]     [  N  ]
 // The bordered system is solved by block elimination (two solves with one factorization of the
-// model's own matrix J = [K + H, s Bᵀ; s B, 0]): J a = −[r; sΦ], J b = −[∂r/∂μ; 0], then
+// model's own matrix J = [K + H, s Bᵀ; s B, 0]): J a = −[r; sΦ], J b = −[∂r/∂μ; s∂Φ/∂μ], then
 //   Δμ = −(N + q̇ᵀ a_q/ℓ²) / (q̇ᵀ b_q/ℓ² + μ̇/ρ²),   (Δq, Δλ̂) = a + Δμ b.
 // Chosen because J goes through the existing LinearSystem with its fixed sparsity pattern, so
 // KLU, UMFPACK and dense all work unchanged; a bordered row and column would be dense and
@@ -27,14 +28,20 @@
 // (Govaerts 2000, "Numerical methods for bifurcations of dynamical equilibria", §3.6), does
 // not bite: converged points never land exactly on one, and a factorization reported singular
 // cuts the step like any other failure.
-// Tangent: J b = −[∂r/∂μ; 0] gives dq/dμ = b_q; q̇ = μ̇ b_q with μ̇ = ±1/√(‖b_q‖²/ℓ² + 1/ρ²),
+// Tangent: J b = −[∂r/∂μ; s∂Φ/∂μ] gives dq/dμ = b_q; q̇ = μ̇ b_q with μ̇ = ±1/√(‖b_q‖²/ℓ² + 1/ρ²),
 // the sign keeping q̇ᵀq̇_prev/ℓ² + μ̇ μ̇_prev/ρ² > 0 (and μ̇ towards μ_end at the start).
 //
 // Step size: grows by `step_growth` after a corrector that needed at most `easy_iterations`,
 // is cut by `step_cut` on a corrector failure, when the tangent turns by more than
 // `max_turn_rad` in one step, or when the corrected point lies farther from its predictor than
 // Δs (both signs of a jump to another stretch of the path, e.g. across a limit point onto the
-// far branch); the run stops below `min_step`. It ends when μ crosses μ_end (the last point solved at μ = μ_end exactly),
+// far branch), or when the lowest stability eigenvalue falls, still positive, by more than
+// `max_eigenvalue_drop` in one step: a critical point lies ahead, and near a fold whose branch
+// narrows as √(μ − μ*) a long step can land on a neighbouring branch and pass it unseen; and
+// after each accepted step Δs is capped at half the arc length at which that eigenvalue,
+// extrapolated linearly, would reach 0. So steps shrink geometrically onto a critical point
+// (neither rule applies once the eigenvalue is below 1e-9 of the stiffness scale, so that a
+// step can cross it); the run stops below `min_step`. It ends when μ crosses μ_end (the last point solved at μ = μ_end exactly),
 // after `max_steps`, or when *stop becomes true (polled before every step).
 //
 // Stability (solvers/constrained_stiffness.hpp), at every point of models with at most
@@ -61,7 +68,8 @@ namespace deploydyn {
 
 struct ContinuationOptions {
   PathParameter parameter = PathParameter::load;
-  double time_s = 0.0;         // at which ΔT(t), load factors and drivers are read
+  double time_s = 0.0;         // at which ΔT(t), load factors and drivers are read (not for
+                               // the driver parameter: μ is the time)
   double start = 0.0;          // μ of the first point
   double end = 1.0;            // μ at which the path ends; ≠ start
   double initial_step = 0.02;  // Δs, dimensionless (see above)
@@ -73,6 +81,7 @@ struct ContinuationOptions {
   double step_growth = 1.5;
   double step_cut = 0.5;
   double max_turn_rad = 0.5;    // ≈ 29° of tangent turn per step
+  double max_eigenvalue_drop = 3.0;  // > 1; see "Step size" above
   double length_scale_m = 0.0;  // ℓ; 0: ‖dq/dμ‖ ρ at the start (see above)
   int n_eigenvalues = 3;        // lowest ones reported per point; 0: no stability analysis
   int max_stability_dofs = 2000;  // dense eigen-solve above this is not attempted

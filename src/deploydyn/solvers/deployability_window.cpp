@@ -26,15 +26,18 @@ Model with_uniform_temperature(const Model& model, double delta_t_C) {
   return uniform;
 }
 
-WindowSample sample(const Assembler& assembler, const PathPoint& point, double time_s, double reach_C) {
+// A point of a path at driver time `time_s`, with every ΔT of the model scaled by
+// `thermal_factor` (ΔT = thermal_factor × reach_C).
+WindowSample sample(const Assembler& assembler, const PathPoint& point, double time_s,
+                    double thermal_factor, double reach_C) {
   WindowSample s;
   s.time_s = time_s;
-  s.delta_t_C = point.parameter * reach_C;
+  s.delta_t_C = thermal_factor * reach_C;
   s.lowest_eigenvalue_N_m = point.lowest_eigenvalues.size() > 0 ? point.lowest_eigenvalues[0] : kNaN;
-  for (const double force_N : assembler.element_quantity("axial_force_N", point.q, time_s, point.parameter)) {
+  for (const double force_N : assembler.element_quantity("axial_force_N", point.q, time_s, thermal_factor)) {
     s.peak_axial_force_N = std::max(s.peak_axial_force_N, std::abs(force_N));
   }
-  for (const double strain : assembler.element_quantity("mechanical_strain", point.q, time_s, point.parameter)) {
+  for (const double strain : assembler.element_quantity("mechanical_strain", point.q, time_s, thermal_factor)) {
     s.peak_mechanical_strain = std::max(s.peak_mechanical_strain, std::abs(strain));
   }
   if (!assembler.model().drivers.empty()) {
@@ -73,7 +76,9 @@ void trace_side(const Assembler& assembler, LinearSystem& system, double time_s,
   const ContinuationResult result = trace_path(assembler, path, system, state.q, state.lambda);
   // Up to the first event: beyond it the path leaves the branch the deployment is on.
   const int last = result.events.empty() ? static_cast<int>(result.points.size()) - 1 : result.events.front().point;
-  for (int i = 0; i <= last; ++i) samples.push_back(sample(assembler, result.points[i], time_s, reach_C));
+  for (int i = 0; i <= last; ++i) {
+    samples.push_back(sample(assembler, result.points[i], time_s, result.points[i].parameter, reach_C));
+  }
   if (!result.events.empty()) {
     const PathEvent& event = result.events.front();
     side.edges.push_back({time_s, event.parameter * reach_C, event.parameter_error * std::abs(reach_C),
@@ -83,13 +88,84 @@ void trace_side(const Assembler& assembler, LinearSystem& system, double time_s,
   }
 }
 
+// The deployment at the uniform ΔT of `assembler`'s model: ΔT reached at t = 0, then the
+// drivers followed from 0 to `end_s`; the path's samples go to `samples`.
+WindowDeployment deploy(const Assembler& assembler, LinearSystem& system, double delta_t_C,
+                        double end_s, const WindowOptions& options, std::vector<WindowSample>& samples) {
+  WindowDeployment deployment;
+  deployment.delta_t_C = delta_t_C;
+  ContinuationOptions path;
+  path.newton = assembler.model().analysis.newton;
+  path.max_steps = options.max_steps;
+  path.stop = options.stop;
+  Eigen::VectorXd q = assembler.initial_coordinates();
+  Eigen::VectorXd lambda = Eigen::VectorXd::Zero(assembler.n_equations());
+  if (delta_t_C != 0.0) {
+    path.parameter = PathParameter::thermal;
+    path.end = 1.0;
+    path.initial_step = path.max_step = options.max_step;
+    const ContinuationResult heated = trace_path(assembler, path, system, q, lambda);
+    if (!heated.events.empty()) {
+      const PathEvent& event = heated.events.front();
+      deployment.stop = WindowEdge{0.0, event.parameter * delta_t_C, event.parameter_error * std::abs(delta_t_C),
+                                   event.kind, "at the start, heated to ΔT = " +
+                                                   fmt::format("{:+.6g} °C: {}", event.parameter * delta_t_C, event.description)};
+      return deployment;
+    }
+    if (heated.end != ContinuationEnd::reached_end) {
+      deployment.failure = "heating at t = 0: " + heated.message;
+      return deployment;
+    }
+    q = heated.points.back().q;
+    lambda = heated.points.back().lambda;
+  }
+  path.parameter = PathParameter::driver;
+  path.start = 0.0;
+  path.end = end_s;
+  path.initial_step = ContinuationOptions{}.initial_step;
+  path.max_step = ContinuationOptions{}.max_step;
+  const ContinuationResult deployed = trace_path(assembler, path, system, q, lambda);
+  // Up to the first event: beyond it the path leaves the branch the deployment is on.
+  const int last = deployed.events.empty() ? static_cast<int>(deployed.points.size()) - 1
+                                           : deployed.events.front().point;
+  for (int i = 0; i <= last; ++i) {
+    const PathPoint& point = deployed.points[i];
+    const WindowSample s = sample(assembler, point, point.parameter, 1.0, delta_t_C);
+    deployment.peak_axial_force_N = std::max(deployment.peak_axial_force_N, s.peak_axial_force_N);
+    deployment.peak_mechanical_strain = std::max(deployment.peak_mechanical_strain, s.peak_mechanical_strain);
+    deployment.peak_driver_effort = std::max(deployment.peak_driver_effort, std::abs(s.driver_effort));
+    if (!std::isnan(s.lowest_eigenvalue_N_m) && !(s.lowest_eigenvalue_N_m >= deployment.lowest_eigenvalue_N_m)) {
+      deployment.lowest_eigenvalue_N_m = s.lowest_eigenvalue_N_m;
+    }
+    samples.push_back(s);
+  }
+  if (!deployed.events.empty()) {
+    const PathEvent& event = deployed.events.front();
+    deployment.stop = WindowEdge{event.parameter, delta_t_C, 0.0, event.kind, event.description};
+  } else if (deployed.end == ContinuationEnd::reached_end) {
+    deployment.completed = true;
+  } else if (deployed.end != ContinuationEnd::stopped) {
+    deployment.failure = "deploying: " + deployed.message;
+  }
+  return deployment;
+}
+
 }  // namespace
+
+std::string WindowDeployment::regime(double stress_free_strain) const {
+  if (stop) return stop->kind == PathEventKind::bifurcation ? "snaps" : "jams";
+  if (!failure.empty()) return "not traced";
+  return peak_mechanical_strain > stress_free_strain ? "stressed" : "stress-free";
+}
 
 void validate(const WindowOptions& options) {
   if (!(options.coldest_C <= 0.0 && options.hottest_C >= 0.0 && options.hottest_C > options.coldest_C)) {
     throw std::invalid_argument(fmt::format(
         "the ΔT range must contain 0 (coldest ≤ 0 ≤ hottest, not both 0), got {} to {} °C",
         options.coldest_C, options.hottest_C));
+  }
+  if (options.n_deployments < 0) {
+    throw std::invalid_argument(fmt::format("deployments must be at least 0, got {}", options.n_deployments));
   }
   if (options.n_positions < 1) {
     throw std::invalid_argument(fmt::format("positions must be at least 1, got {}", options.n_positions));
@@ -142,6 +218,20 @@ WindowResult deployability_window(const Model& model, const WindowOptions& optio
       }
       trace_side(*s.assembler, *s.system, t, options, *s.side, window.samples);
     }
+  }
+  const int n_levels = options.n_deployments;
+  for (int j = 0; j < n_levels; ++j) {
+    if (options.stop != nullptr && options.stop->load()) {
+      window.stopped = true;
+      return window;
+    }
+    const double delta_t_C = n_levels == 1 ? options.coldest_C
+                                           : options.coldest_C + (options.hottest_C - options.coldest_C) * j / (n_levels - 1);
+    const Model heated = with_uniform_temperature(model, delta_t_C);
+    const Assembler assembler(heated);
+    const auto system = make_linear_system(assembler);
+    window.deployments.push_back(
+        deploy(assembler, *system, delta_t_C, model.analysis.end_time_s, options, window.samples));
   }
   return window;
 }

@@ -13,8 +13,15 @@
 // by the continuation to its location tolerance, not by a grid of ΔT. Along every path the
 // lowest stability eigenvalue (of Zᵀ K_T Z, N/m), the largest |axial force| and the driver's
 // effort are sampled up to the first event.
+//
+// Per ΔT, the deployment itself: at each of `n_deployments` uniform ΔT levels spread over the
+// range, the structure is brought to ΔT at t = 0 (continuation in the ΔT scale) and then
+// deployed quasi-statically by continuation in the driver's time t from 0 to the end of the
+// analysis. Its first event is where this deployment jams or snaps (t = 0: it cannot start);
+// up to it, the peak member force and actuator effort say how stressed it is.
 
 #include <atomic>
+#include <limits>
 #include <optional>
 #include <string>
 #include <vector>
@@ -28,6 +35,7 @@ struct WindowOptions {
   double coldest_C = -200.0;  // ΔT range (°C): coldest < 0 < hottest, or one side only
   double hottest_C = 200.0;
   int n_positions = 21;       // driver positions t_k = k·end/(n − 1)
+  int n_deployments = 9;      // ΔT levels deployed, evenly over [coldest, hottest]; 0: none
   // Continuation steps small enough not to step over the narrow end of a stress-free branch
   // (near a jam its width goes as √(ΔT − ΔT*)).
   double max_step = 0.002;
@@ -55,6 +63,20 @@ struct WindowEdge {
   std::string description;
 };
 
+// One quasi-static deployment at a uniform ΔT (continuation in the driver's time).
+struct WindowDeployment {
+  double delta_t_C = 0.0;
+  bool completed = false;            // reached the end of the deployment with no event
+  std::optional<WindowEdge> stop;    // the first event; time_s = 0: it cannot even start
+  double peak_axial_force_N = 0.0;   // up to the stop: largest |true axial force|
+  double peak_mechanical_strain = 0.0;
+  double peak_driver_effort = 0.0;   // largest |effort| of the first driver (N·m or N)
+  double lowest_eigenvalue_N_m = std::numeric_limits<double>::quiet_NaN();  // NaN: not computed
+  std::string failure;               // why the path could not be traced, if so
+  // "stress-free", "stressed", "jams" or "snaps" (stress-free: mechanical strain ≤ the bound).
+  std::string regime(double stress_free_strain = 1e-9) const;
+};
+
 struct WindowSide {
   double reach_C = 0.0;             // the end of the range on this side
   std::vector<WindowEdge> edges;    // first event per driver position (none: open to reach_C)
@@ -67,6 +89,7 @@ struct WindowResult {
   std::vector<double> times_s;
   std::vector<WindowSample> samples;
   WindowSide cold, hot;
+  std::vector<WindowDeployment> deployments;  // ascending ΔT
   bool stopped = false;
 };
 

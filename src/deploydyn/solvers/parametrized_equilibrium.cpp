@@ -13,8 +13,10 @@ ParametrizedEquilibrium::ParametrizedEquilibrium(const Assembler& assembler,
 double ParametrizedEquilibrium::residual(const Eigen::VectorXd& q, const Eigen::VectorXd& lambda,
                                          double mu, Eigen::VectorXd& r,
                                          Eigen::VectorXd& phi) const {
-  assembler_.internal_force(q, time_s_, thermal_factor(mu), internal_);
-  assembler_.constraints_and_force(q, time_s_, lambda, phi, reaction_);
+  const double t = time_s(mu);
+  if (parameter_ == PathParameter::driver) assembler_.external_force(t, external_);
+  assembler_.internal_force(q, t, thermal_factor(mu), internal_);
+  assembler_.constraints_and_force(q, t, lambda, phi, reaction_);
   const double load = load_factor(mu);
   r = internal_ - load * external_ + reaction_;
   return std::max({internal_.lpNorm<Eigen::Infinity>(),
@@ -22,19 +24,29 @@ double ParametrizedEquilibrium::residual(const Eigen::VectorXd& q, const Eigen::
                    reaction_.lpNorm<Eigen::Infinity>()});
 }
 
-void ParametrizedEquilibrium::parameter_derivative(const Eigen::VectorXd& q, double,
-                                                   Eigen::VectorXd& dr) const {
-  if (parameter_ == PathParameter::thermal) {
-    assembler_.thermal_force_derivative(q, time_s_, dr);
-  } else {
-    dr = -external_;
+void ParametrizedEquilibrium::parameter_derivative(const Eigen::VectorXd& q,
+                                                   const Eigen::VectorXd& lambda, double mu,
+                                                   Eigen::VectorXd& dr, Eigen::VectorXd& dphi) const {
+  switch (parameter_) {
+    case PathParameter::thermal:
+      assembler_.thermal_force_derivative(q, time_s_, dr);
+      dphi.setZero(assembler_.n_equations());
+      return;
+    case PathParameter::load:
+      assembler_.external_force(time_s_, dr);
+      dr = -dr;
+      dphi.setZero(assembler_.n_equations());
+      return;
+    case PathParameter::driver:
+      assembler_.static_residual_time_derivative(q, mu, lambda, dr, dphi);
+      return;
   }
 }
 
 void ParametrizedEquilibrium::matrix(const Eigen::VectorXd& q, const Eigen::VectorXd& lambda,
                                      double mu, double constraint_scale,
                                      LinearSystem& system) const {
-  assembler_.iteration_matrix(q, time_s_, thermal_factor(mu), lambda, {0.0, 1.0, constraint_scale},
+  assembler_.iteration_matrix(q, time_s(mu), thermal_factor(mu), lambda, {0.0, 1.0, constraint_scale},
                               system);
 }
 

@@ -1,13 +1,17 @@
 #pragma once
 // Static equilibrium as a function of one parameter μ (theory.md, "Path following and
 // stability"):
-//   r(q, λ, μ) = f_int(q, μ) − f_ext(μ) + Bᵀλ = 0,   Φ(q) = 0
+//   r(q, λ, μ) = f_int(q, μ) − f_ext(μ) + B(μ)ᵀλ = 0,   Φ(q, μ) = 0
 // with μ either
 //   thermal: a scale on every ΔT, f_int(q, μ) = f_int with ε_t → μ ε_t, f_ext fixed;
-//            ∂r/∂μ = Σ_bars ε_t ∂f/∂ε_t = Σ −(EA ε_t/L0)[−d; d]   (elements/bar/bar.hpp)
+//            ∂r/∂μ = Σ_bars ε_t ∂f/∂ε_t = Σ −(EA ε_t/L0)[−d; d]   (elements/bar/bar.hpp);  ∂Φ/∂μ = 0
 //   load:    a factor on nodal loads and gravity, f_ext(μ) = μ f_ext, ΔT fixed;
-//            ∂r/∂μ = −f_ext
-// The time functions (ΔT(t), load factors, drivers) are read at one fixed time t.
+//            ∂r/∂μ = −f_ext;  ∂Φ/∂μ = 0
+//   driver:  the time t = μ (s) of a quasi-static deployment: the drivers' positions s(t),
+//            ΔT(t) and the load factors are read at t, inertia is left out;
+//            ∂r/∂μ = ∂f_int/∂t − ∂f_ext/∂t + ∂(Bᵀλ)/∂t,  ∂Φ/∂μ = Φ_t
+//            (Assembler::static_residual_time_derivative)
+// For thermal and load the time functions are read at one fixed time t.
 // This is the model side of the continuation: residual, tangent and ∂r/∂μ; the solver is
 // solvers/continuation.hpp.
 
@@ -27,7 +31,8 @@ class ParametrizedEquilibrium {
 
   const Assembler& assembler() const { return assembler_; }
   PathParameter parameter() const { return parameter_; }
-  double time_s() const { return time_s_; }
+  // The time at which the model is read at μ: μ itself for driver, else the fixed time.
+  double time_s(double mu) const { return parameter_ == PathParameter::driver ? mu : time_s_; }
   // The scale of every ΔT at μ (μ for thermal, 1 for load).
   double thermal_factor(double mu) const { return parameter_ == PathParameter::thermal ? mu : 1.0; }
   // The factor on f_ext at μ (1 for thermal, μ for load).
@@ -36,8 +41,9 @@ class ParametrizedEquilibrium {
   // Fills r and Φ; returns the largest force term (N), the scale of the convergence test.
   double residual(const Eigen::VectorXd& q, const Eigen::VectorXd& lambda, double mu,
                   Eigen::VectorXd& r, Eigen::VectorXd& phi) const;
-  // ∂r/∂μ at (q, μ) (N per unit μ); ∂Φ/∂μ = 0.
-  void parameter_derivative(const Eigen::VectorXd& q, double mu, Eigen::VectorXd& dr) const;
+  // ∂r/∂μ (N per unit μ) and ∂Φ/∂μ at (q, λ, μ).
+  void parameter_derivative(const Eigen::VectorXd& q, const Eigen::VectorXd& lambda, double mu,
+                            Eigen::VectorXd& dr, Eigen::VectorXd& dphi) const;
   // [K + H(λ), s Bᵀ; s B, 0] at (q, λ, μ) into `system`.
   void matrix(const Eigen::VectorXd& q, const Eigen::VectorXd& lambda, double mu,
               double constraint_scale, LinearSystem& system) const;
@@ -46,7 +52,7 @@ class ParametrizedEquilibrium {
   const Assembler& assembler_;
   PathParameter parameter_;
   double time_s_;
-  Eigen::VectorXd external_;  // f_ext at time_s_, μ = 1
+  mutable Eigen::VectorXd external_;  // f_ext at time_s_, μ = 1 (driver: at the last μ asked)
   mutable Eigen::VectorXd internal_, reaction_;
 };
 

@@ -14,8 +14,9 @@ class QuasiStaticSteps final : public TimeIntegrator {
       : assembler_(assembler), options_(options) {}
 
   NewtonResult step(double h, LinearSystem& system, MotionState& state) override {
-    const StaticResult r = solve_static(assembler_, options_,
-                                        LoadPath::time_step(state.time_s, state.time_s + h), 1, system, state);
+    const StaticResult r =
+        solve_static(assembler_, options_, LoadPath::time_step(state.time_s, state.time_s + h), 1,
+                     system, state);
     NewtonResult newton = r.newton;
     newton.iterations = r.total_iterations;
     return newton;
@@ -31,7 +32,8 @@ class QuasiStaticSteps final : public TimeIntegrator {
 
 std::unique_ptr<TimeIntegrator> make_time_integrator(const Assembler& assembler,
                                                      const AnalysisOptions& options) {
-  if (options.type == AnalysisType::quasi_static) return std::make_unique<QuasiStaticSteps>(assembler, options);
+  if (options.type == AnalysisType::quasi_static)
+    return std::make_unique<QuasiStaticSteps>(assembler, options);
   return std::make_unique<GeneralizedAlphaIntegrator>(assembler, options);
 }
 

@@ -23,7 +23,8 @@ class TimeIntegrator {
   virtual NewtonResult step(double h, LinearSystem& system, MotionState& state) = 0;
   // Estimate of the local error in q (m) of the step that led to `after` from `before`; 0 for
   // a scheme without one (adaptive stepping then only cuts steps that fail).
-  virtual double local_error(double h, const MotionState& before, const MotionState& after) const = 0;
+  virtual double local_error(double h, const MotionState& before,
+                             const MotionState& after) const = 0;
 };
 
 // The scheme `options` names: generalized-α (with Newmark and HHT) for a dynamic analysis,

@@ -31,17 +31,19 @@ void read_entry(const std::string& name, const ElementEntryReader& entry, Model&
   if (bar.node_a == bar.node_b) {
     entry.fail("nodes", fmt::format("a bar needs two different nodes, got '{}' twice", name_a));
   }
-  const double distance = (model.nodes[bar.node_b].position_m - model.nodes[bar.node_a].position_m).norm();
+  const double distance =
+      (model.nodes[bar.node_b].position_m - model.nodes[bar.node_a].position_m).norm();
   if (distance < kMinBarLength_m) {
-    entry.fail("nodes", fmt::format("zero-length bar: nodes '{}' and '{}' are at the same position", name_a,
-                                    model.nodes[bar.node_b].name));
+    entry.fail("nodes", fmt::format("zero-length bar: nodes '{}' and '{}' are at the same position",
+                                    name_a, model.nodes[bar.node_b].name));
   }
   bar.area_m2 = entry.number("area", ValueSign::positive, "m²");
   bar.material = entry.material("material");
   const Material& material = model.materials[bar.material];
 
   bar.length_given = entry.has("length");
-  bar.reference_length_m = bar.length_given ? entry.number("length", ValueSign::positive, "m") : distance;
+  bar.reference_length_m =
+      bar.length_given ? entry.number("length", ValueSign::positive, "m") : distance;
 
   bar.mass_given = entry.has("mass");
   if (bar.mass_given) {
@@ -55,7 +57,8 @@ void read_entry(const std::string& name, const ElementEntryReader& entry, Model&
   }
 
   bar.temperature_given = entry.has("dT");
-  bar.temperature_change_C = bar.temperature_given ? entry.function("dT") : model.temperature_change_C;
+  bar.temperature_change_C =
+      bar.temperature_given ? entry.function("dT") : model.temperature_change_C;
   model.bars.push_back(std::move(bar));
 }
 

@@ -38,6 +38,11 @@ struct BarRecord {
   Vector thermal_force_derivative(const State& s, double t) const {
     return thermal_strain(t) * bar::internal_force_per_thermal_strain<D>(s, section);
   }
+  // ∂f/∂t through ε_t(t) = α ΔT(t).
+  Vector thermal_force_rate(const State& s, double t) const {
+    return expansion_per_C * temperature_change_C->derivative(t) *
+           bar::internal_force_per_thermal_strain<D>(s, section);
+  }
   Matrix tangent(const State& s) const { return bar::tangent<D>(s, section); }
   Matrix mass(MassMatrixKind kind) const { return bar::mass_matrix<D>(mass_kg, kind); }
   // The bar's weight is shared equally by its two nodes (docs/theory.md).
@@ -67,10 +72,10 @@ struct BarRecord {
 };
 
 constexpr ResultQuantity kQuantities[] = {
-    {"strain", "strain", true},                  // total Green–Lagrange ε
-    {"mstrain", "mechanical_strain", true},      // ε_m = ε − αΔT
-    {"force", "axial_force_N", true},            // true axial force N, tension positive
-    {"length", "length_m", false},               // current length l
+    {"strain", "strain", true},              // total Green–Lagrange ε
+    {"mstrain", "mechanical_strain", true},  // ε_m = ε − αΔT
+    {"force", "axial_force_N", true},        // true axial force N, tension positive
+    {"length", "length_m", false},           // current length l
 };
 
 template <int D>
@@ -105,7 +110,9 @@ class BarKind final : public ElementKind {
     return local_node == 0 ? model.bars[element].node_a : model.bars[element].node_b;
   }
   int vtk_cell_type() const override { return 3; }  // VTK_LINE
-  double mass_kg(const Model& model, int element) const override { return model.bars[element].mass_kg; }
+  double mass_kg(const Model& model, int element) const override {
+    return model.bars[element].mass_kg;
+  }
   double temperature_change_C(const Model& model, int element, double t) const override {
     return model.bars[element].temperature_change_C.value(t);
   }
