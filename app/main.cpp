@@ -105,9 +105,14 @@ int run_command(const std::string& model_file, const std::string& out_dir,
   for (const std::string& warning : report.warnings) fmt::print(stderr, "warning: {}\n", warning);
   if (report.status == RunStatus::completed) {
     if (!quiet) {
-      fmt::print(stderr, "{}: {} in {:.3f} s, {} Newton iterations ({:.2f} per step); results in {}\n",
-                 model_file, report.message, report.wall_time_s, report.newton_iterations,
-                 report.steps > 0 ? double(report.newton_iterations) / report.steps : 0.0, out_dir);
+      // A modal analysis counts no Newton iterations of its own.
+      const std::string iterations =
+          report.newton_iterations == 0
+              ? ""
+              : fmt::format(", {} Newton iterations ({:.2f} per step)", report.newton_iterations,
+                            report.steps > 0 ? double(report.newton_iterations) / report.steps : 0.0);
+      fmt::print(stderr, "{}: {} in {:.3f} s{}; results in {}\n", model_file, report.message,
+                 report.wall_time_s, iterations, out_dir);
     }
     return 0;
   }
@@ -173,6 +178,13 @@ int check_command(const std::string& model_file, const std::vector<std::string>&
     fmt::print("analysis    continuation in the {} parameter μ from {:g} to {:g}, at most {} steps, {} "
                "lowest stability eigenvalues per point (path.csv)\n",
                to_string(c.parameter), c.start, c.end, c.max_steps, c.n_eigenvalues);
+  } else if (a.type == AnalysisType::modal) {
+    const ModalSettings& m = a.modal;
+    fmt::print("analysis    modal: the {} {} about the static equilibrium at t = {} s "
+               "(modes.csv, mode shapes in vtk/)\n",
+               m.n_modes,
+               m.shift_rad2_s2 ? fmt::format("modes nearest ω² = {:g} rad²/s²", *m.shift_rad2_s2) : "lowest modes",
+               fmt::join(m.times_s, ", "));
   } else {
     fmt::print("analysis    {}, t = 0 → {:g} s, step {:g} s ({:.0f} steps), Newmark β = {:g}, γ = {:g}\n",
                to_string(a.type), a.end_time_s, a.step_s,

@@ -36,6 +36,7 @@
 #include "deploydyn/io/model_writer.hpp"
 #include "deploydyn/output/envelope.hpp"
 #include "deploydyn/output/history_writer.hpp"
+#include "deploydyn/output/modes_to_folder.hpp"
 #include "deploydyn/output/output_error.hpp"
 #include "deploydyn/output/run_to_folder.hpp"
 #include "deploydyn/output/summary_writer.hpp"
@@ -145,9 +146,38 @@ py::dict report_dict(const RunReport& report) {
   return out;
 }
 
+// A modal analysis in memory, as run_in_memory: modes.csv's columns and rows
+// (output/modes_to_folder.hpp) in place of the history's.
+py::dict modes_in_memory(const LoadedModel& loaded) {
+  InterruptWatch watch;
+  std::vector<double> rows;
+  ModalRun run;
+  {
+    const RunControl control = watch.control();
+    py::gil_scoped_release release;
+    const Assembler assembler(loaded.model);  // std::invalid_argument → ValueError
+    int n_frames = 0;
+    run = compute_modes(assembler, control, [&](const EquilibriumModes& at) {
+      append_modes_rows(assembler, at, n_frames, rows);
+      n_frames += at.modes.ok ? static_cast<int>(at.modes.omega2_rad2_s2.size()) : 0;
+    });
+  }
+  watch.rethrow();
+  const std::vector<std::string> columns = modes_columns(loaded.model);
+  py::array_t<double> values({static_cast<py::ssize_t>(rows.size() / columns.size()),
+                              static_cast<py::ssize_t>(columns.size())});
+  std::copy(rows.begin(), rows.end(), values.mutable_data());
+  py::dict out = report_dict(run.report);
+  out["columns"] = columns;
+  out["values"] = values;
+  out["summary_json"] = modes_summary_json(loaded.model, run);
+  return out;
+}
+
 // Runs in memory: history columns, the history as a (rows × columns) array, the summary JSON
 // text (exactly what summary.json would hold), status and message.
 py::dict run_in_memory(const LoadedModel& loaded) {
+  if (loaded.model.analysis.type == AnalysisType::modal) return modes_in_memory(loaded);
   const std::vector<std::string> columns = history_columns(loaded.model);
   MemorySink sink(columns.size());
   InterruptWatch watch;
@@ -180,7 +210,9 @@ py::dict run_into_folder(const LoadedModel& loaded, const std::filesystem::path&
   }
   watch.rethrow();
   py::dict out = report_dict(report);
-  out["history_file"] = folder / loaded.model.output.history_file;
+  // A modal run's table is modes.csv (output/modes_to_folder.hpp).
+  out["history_file"] = folder / (loaded.model.analysis.type == AnalysisType::modal ? kModesFileName
+                                                                                    : loaded.model.output.history_file);
   out["summary_file"] = folder / loaded.model.output.summary_file;
   return out;
 }
@@ -286,6 +318,10 @@ py::dict analysis_info(const Model& model) {
   d["step"] = a.step_s;
   d["output_interval"] = a.output_interval_s > 0.0 ? a.output_interval_s : a.step_s;
   d["load_steps"] = a.load_steps;
+  if (a.type == AnalysisType::modal) {
+    d["modes"] = a.modal.n_modes;
+    d["at"] = a.modal.times_s;
+  }
   return d;
 }
 
@@ -380,14 +416,8 @@ py::dict modes_at(const LoadedModel& loaded, int n_modes, const std::vector<doub
     ModalOptions options;
     options.n_modes = n_modes;
     for (py::ssize_t i = 0; i < n_t; ++i) {
-      MotionState state;
-      const StaticResult equilibrium = solve_equilibrium_at(assembler, times[i], *system, state);
-      ModalResult modes;
-      if (!equilibrium.newton.converged || equilibrium.path_factor < 1.0) {
-        modes.message = "no static equilibrium: " + equilibrium.newton.failure;
-      } else {
-        modes = natural_modes(assembler, state, *system, options);  // invalid_argument → ValueError
-      }
+      // invalid_argument (too many modes) → ValueError
+      const ModalResult modes = modes_at_time(assembler, times[i], *system, options).modes;
       failures[i] = modes.ok ? "" : modes.message;
       for (py::ssize_t k = 0; k < n_modes; ++k) {
         w(i, k) = modes.ok ? modes.omega2_rad2_s2[k] : std::numeric_limits<double>::quiet_NaN();

@@ -331,7 +331,8 @@ class Model:
 
     @property
     def analysis(self):
-        """{"type", "end" s, "step" s, "output_interval" s, "load_steps"}."""
+        """{"type", "end" s, "step" s, "output_interval" s, "load_steps"}; for type "modal" also
+        "modes" and "at" (s)."""
         return self._core.analysis
 
     @property
@@ -359,6 +360,8 @@ class Model:
         out: a folder to write history.csv and summary.json into, as `deploydyn run --out`
         does (the Result then reads them back: the values are the same to the last bit);
         None keeps everything in memory. check: raise RunFailed unless the run completed.
+        A model of analysis type "modal" gives modes.csv's table instead of the history (columns
+        frame, t, mode, omega2, frequency, dT_C, position.<driver>; summary["modes"] per time).
         Results that cannot be written raise OutputError (an OSError).
         """
         if not isinstance(check, bool):
@@ -663,7 +666,7 @@ class ModelBuilder:
         return self
 
     def analysis(self, **options):
-        """Analysis options as in the file: type ("static"/"dynamic"), end, step,
+        """Analysis options as in the file: type ("static"/"dynamic"/"modal"), end, step,
         output_interval, load_steps, mass, integrator={...}, newton={...}. Their values are
         checked at `build` (InputError names analysis.<option>)."""
         self._section("analysis").update(_plain(options, "analysis", "ModelBuilder.analysis"))

@@ -271,9 +271,10 @@ def _parse_rows(file, lines, end, columns):
 
 
 def history_file_of(folder, content=None):
-    """The history file of a run's folder: the one its status file lists, else history.csv."""
+    """The history file of a run's folder: the one its status file lists (a modal analysis's
+    table, modes.csv, in its place), else history.csv."""
     files = content.get("files") if isinstance(content, dict) else None
-    name = files.get("history") if isinstance(files, dict) else None
+    name = (files.get("history") or files.get("modes")) if isinstance(files, dict) else None
     if isinstance(name, str) and name and "/" not in name and name not in (".", ".."):
         return pathlib.Path(folder) / name
     return pathlib.Path(folder) / HISTORY_FILE_NAME

@@ -7,14 +7,15 @@ import pytest
 import deploydyn
 
 
-def oscillator(mass_kind):
+def oscillator(mass_kind, **analysis):
     """A bar along x from a pin to a node sliding along x, with a 10 kg point mass."""
+    analysis = analysis or {"type": "static", "end": 1.0, "step": 0.5}
     return (deploydyn.ModelBuilder("bar-mass oscillator")
             .node("A", 0, 0).node("B", 2.0, 0, mass=10.0)
             .material("steel", E=2e11)
             .bar("1", "A", "B", area=1e-4, material="steel", mass=3.0)
             .support("A").support("B", fix=["y"])
-            .analysis(type="static", end=1.0, step=0.5, mass=mass_kind)
+            .analysis(mass=mass_kind, **analysis)
             .build())
 
 
@@ -72,3 +73,21 @@ def test_continuation_in_the_driver_time_deploys_the_parallelogram(source_dir):
     crank = math.atan2(q["y.B"] - q["y.A"], q["x.B"] - q["x.A"])
     assert driven == pytest.approx(math.radians(5.0) + 0.365 * 4.0, abs=1e-10)
     assert crank == pytest.approx(driven, abs=1e-10)
+
+
+@pytest.mark.parametrize("mass_kind, share", [("lumped", 0.5), ("consistent", 1.0 / 3.0)])
+def test_modal_model_runs_in_memory_and_into_a_folder(tmp_path, mass_kind, share):
+    expected = 2e11 * 1e-4 / 2.0 / (10.0 + share * 3.0)
+    model = oscillator(mass_kind, type="modal", modes=1, at=[0, 0.5])  # run() computes its modes
+    assert model.analysis["type"] == "modal"
+    in_memory = model.run(check=True)
+    on_disk = model.run(out=tmp_path / "modes", check=True)
+    for result in (in_memory, on_disk):
+        assert result.columns == ["frame", "t", "mode", "omega2", "frequency", "dT_C"]
+        assert list(result.t) == [0.0, 0.5]
+        assert result["omega2"] == pytest.approx([expected, expected], rel=1e-9)
+        assert result.summary["modes"][1]["omega2"][0] == pytest.approx(expected, rel=1e-9)
+    assert (tmp_path / "modes" / "vtk" / "frame_000001.vtu").exists()
+    assert list(deploydyn.read_result(tmp_path / "modes")["omega2"]) == list(on_disk["omega2"])
+    # Model.modes still returns numpy arrays for the same model.
+    assert isinstance(model.modes(count=1)["omega2"], np.ndarray)

@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include <fstream>
 #include <sstream>
 #include <string>
 
@@ -24,7 +25,7 @@ TEST(ModesCommand, WritesTheTableAndTheShapes) {
   std::istringstream lines(csv);
   std::string line;
   std::getline(lines, line);
-  EXPECT_EQ(line, "frame,t,mode,omega2,frequency");
+  EXPECT_EQ(line, "frame,t,mode,omega2,frequency,dT_C,position.motor");
   int n_rows = 0;
   double previous_omega2 = -1.0;
   while (std::getline(lines, line)) {
@@ -45,6 +46,33 @@ TEST(ModesCommand, WritesTheTableAndTheShapes) {
   EXPECT_EQ(n_rows, 6);
   EXPECT_TRUE(std::filesystem::exists(folder.path() / "vtk" / "frame_000005.vtu"));
   EXPECT_NE(read_text(folder.path() / "vtk" / "deploydyn.pvd").find("frame_000005.vtu"), std::string::npos);
+  // A result folder like a run's: its summary and the model as run, a modal model that
+  // `deploydyn run` computes again to the same table.
+  EXPECT_NE(read_text(folder.path() / "summary.json").find("\"status\": \"completed\""), std::string::npos);
+  const ScratchFolder rerun("modes_command_rerun");
+  const auto again = run_cli("run " + (folder.path() / "model.yaml").string() + " --quiet --out " +
+                             rerun.path().string());
+  ASSERT_EQ(again.exit_code, 0) << again.output;
+  EXPECT_EQ(read_text(rerun.path() / "modes.csv"), csv);
+}
+
+TEST(ModesCommand, CheckDescribesAModalAnalysis) {
+  const ScratchFolder folder("modes_check");
+  std::filesystem::create_directories(folder.path());
+  const auto model_file = folder.path() / "oscillator.yaml";
+  std::ofstream(model_file) << R"(
+nodes: {A: [0, 0], B: {at: [2, 0], mass: 10}}
+materials: {steel: {E: 2.0e11}}
+elements: {1: {nodes: [A, B], area: 1.0e-4, material: steel, mass: 3}}
+supports: [{node: A}, {node: B, fix: [y]}]
+analysis: {type: modal, modes: 1, at: [0, 0.5]}
+)";
+  const auto outcome = run_cli("check " + model_file.string());
+  ASSERT_EQ(outcome.exit_code, 0) << outcome.output;
+  EXPECT_NE(outcome.output.find("analysis    modal: the 1 lowest modes about the static equilibrium at t = 0, 0.5 s"),
+            std::string::npos)
+      << outcome.output;
+  EXPECT_EQ(outcome.output.find("Newmark"), std::string::npos) << outcome.output;
 }
 
 // The cold parallel linkage, moved quasi-statically past its jam, stands on an unstable

@@ -82,6 +82,11 @@ const BadModelCase kBadModels[] = {
      "must be one of thermal, load, driver, got 'pressure'"},
     {"continuation_empty_range.yaml", 8, "analysis.end", "must be finite and differ from start = 1, got 1"},
     {"continuation_with_step.yaml", 8, "analysis.step", "unknown key 'step'"},
+    // 6 coordinates − 2 support equations: 4 modes at most.
+    {"modal_too_many_modes.yaml", 7, "analysis.modes",
+     "the model has 6 coordinates and 2 constraint equations: at most 4 modes, got 5"},
+    {"modal_with_step.yaml", 8, "analysis.step", "unknown key 'step'"},
+    {"modal_negative_time.yaml", 7, "analysis.at.1", "must not be negative (s), got -1"},
 };
 
 class BadModel : public ::testing::TestWithParam<BadModelCase> {};

@@ -22,6 +22,7 @@
 #include "deploydyn/output/result_folder.hpp"
 #include "deploydyn/output/run_to_folder.hpp"
 #include "support/cli.hpp"
+#include "support/mises_truss.hpp"
 
 namespace deploydyn {
 namespace {
@@ -138,6 +139,40 @@ TEST(RunToFolder, AHistoryThatCannotBeWrittenEndsTheRunAsFailed) {
   EXPECT_GT(rows, 10u);
   EXPECT_LT(rows, 1001u);
   EXPECT_FALSE(std::filesystem::exists(folder.path() / "summary.json.tmp"));
+}
+
+// The same for a continuation's path.csv, written point by point (output/path_to_folder.hpp):
+// the path stops at the failed write, and every row it kept is whole and in sequence: along the
+// snap-through the apex only goes down, so displacement_norm_m rises from row to row.
+TEST(RunToFolder, APathThatCannotBeWrittenEndsTheRunAsFailed) {
+  const ScratchFolder folder("path_limit");
+  Model model = testing::MisesTruss{}.model();
+  model.analysis.type = AnalysisType::continuation;
+  model.analysis.continuation = {.parameter = PathParameter::load, .start = 0.0, .end = 1.1,
+                                 .n_eigenvalues = 2, .max_steps = 2000};
+  FileSizeLimit limit(kReservedStatusBytes + 1000);  // the whole path is about 9 kB
+  EXPECT_THROW(run_to_folder(model, folder.path()), OutputError);
+  limit.lift();
+  const nlohmann::json summary = read_json(folder.path() / "summary.json");
+  EXPECT_EQ(summary["status"], "failed");
+  EXPECT_EQ(summary["failure"]["phase"], "writing results");
+  EXPECT_NE(summary["failure"]["reason"].get<std::string>().find("path.csv: File too large"), std::string::npos);
+  const std::string text = read_text(folder.path() / "path.csv");
+  ASSERT_FALSE(text.empty());
+  EXPECT_EQ(text.back(), '\n') << "path.csv ends in the middle of a row";
+  const std::vector<std::string> lines = lines_of(text);
+  EXPECT_GT(lines.size(), 10u);
+  double previous_m = -1.0;
+  for (std::size_t i = 1; i < lines.size(); ++i) {
+    EXPECT_EQ(count(lines[i], ','), count(lines.front(), ',')) << lines[i];
+    std::istringstream cells(lines[i]);
+    std::string mu, load, displacement;
+    std::getline(cells, mu, ',');
+    std::getline(cells, load, ',');
+    std::getline(cells, displacement, ',');
+    EXPECT_GT(std::stod(displacement), previous_m) << lines[i];
+    previous_m = std::stod(displacement);
+  }
 }
 
 // The device stays full: not even the summary fits. The status it reserved at the start says

@@ -25,6 +25,7 @@
 #include "deploydyn/model/dof_map.hpp"
 #include "deploydyn/output/run_to_folder.hpp"
 #include "support/cli.hpp"
+#include "support/csv_table.hpp"
 #include "support/model_builder.hpp"
 
 namespace deploydyn {
@@ -34,6 +35,8 @@ using nlohmann::json;
 using testing::example_path;
 using testing::read_text;
 using testing::run_cli;
+using testing::CsvTable;
+using testing::read_csv_table;
 using testing::ScratchFolder;
 
 // Every number goes out in its shortest exact form (history.csv: 17 digits) and every parser on
@@ -43,42 +46,6 @@ using testing::ScratchFolder;
 // whose ulp is ~2e-18.
 constexpr double kThermalStrainRoundOff = 1e-16;
 constexpr int kVtkLine = 3;
-
-// history.csv as a table of numbers.
-struct History {
-  std::vector<std::string> columns;
-  std::vector<std::vector<double>> rows;
-
-  double at(std::size_t row, const std::string& column) const {
-    for (std::size_t c = 0; c < columns.size(); ++c) {
-      if (columns[c] == column) return rows.at(row).at(c);
-    }
-    ADD_FAILURE() << "history.csv has no column " << column;
-    return std::nan("");
-  }
-};
-
-History read_history(const std::filesystem::path& file) {
-  History history;
-  std::istringstream lines(read_text(file));
-  std::string line;
-  bool header = true;
-  while (std::getline(lines, line)) {
-    std::istringstream cells(line);
-    std::string cell;
-    std::vector<double> row;
-    while (std::getline(cells, cell, ',')) {
-      if (header) {
-        history.columns.push_back(cell);
-      } else {
-        row.push_back(std::stod(cell));
-      }
-    }
-    if (!header) history.rows.push_back(row);
-    header = false;
-  }
-  return history;
-}
 
 // The time series as VTK reads it (read_vtu.py's JSON); null when the reader failed.
 json read_with_vtk(const std::filesystem::path& collection) {
@@ -111,7 +78,7 @@ Eigen::Vector3d vector_of(const json& tuple) {
 }
 
 // Node `node`'s position in history.csv's row `row`; z = 0 in 2D.
-Eigen::Vector3d history_position(const History& history, std::size_t row, const Model& model,
+Eigen::Vector3d history_position(const CsvTable& history, std::size_t row, const Model& model,
                                  int node) {
   Eigen::Vector3d x = Eigen::Vector3d::Zero();
   for (int axis = 0; axis < model.dimension; ++axis) {
@@ -139,7 +106,7 @@ std::vector<double> scalars(const json& data, const std::string& name) {
 }
 
 // Compares the frames VTK read with history.csv and, for the velocity, with the run's records.
-void compare_frames(const json& frames, const History& history, const Model& model,
+void compare_frames(const json& frames, const CsvTable& history, const Model& model,
                     const std::vector<StepRecord>& records) {
   ASSERT_EQ(frames.size(), history.rows.size());
   ASSERT_EQ(frames.size(), records.size());
@@ -211,7 +178,7 @@ json expect_vtk_matches_history(Model model, const std::filesystem::path& folder
   const RunReport report = run_to_folder(model, folder);
   EXPECT_EQ(report.status, RunStatus::completed) << report.message;
   const testing::RunResult in_memory = testing::run(model);
-  const History history = read_history(folder / "history.csv");
+  const CsvTable history = read_csv_table(folder / "history.csv");
   const json vtk = read_with_vtk(folder / kVtkFolderName / kVtkCollectionFileName);
   if (vtk.is_null()) return nullptr;
   compare_frames(vtk.at("frames"), history, model, in_memory.records);

@@ -266,6 +266,58 @@ TEST_P(HeatedStrutBifurcation, AtTheClosedFormTemperature) {
   }
 }
 
+// Switched at the bifurcation onto the buckled branch: C moves laterally by w, and with
+// Green–Lagrange bars the branch is closed-form. Lateral equilibrium of C, strut bars
+// (EA/L)(ε − ε_t)·d each and the spring bar C–D (EA_s = kH, L0 = H) along y:
+//   r = 2 (EA/L)(w²/(2L²) − μαΔT) w + k w (2H − w)(H − w)/(2H²) = 0
+//   ⇒  μ(w) = [w²/(2L²) + s (2H − w)(H − w)/(2H²)] / (αΔT),   s = kL/(2EA)
+// (at w = 0 the critical factor). The spring bar makes the bifurcation asymmetric: towards D
+// (w > 0) μ first falls, to a limit point where μ'(w) = 0, w* = (3s/(2H))/(1/L² + s/H²) with
+// s = kL/(2EA), then rises. Along the branch ∂r/∂w = 2EAαΔT w μ'(w)/L: stable iff w μ'(w) > 0.
+TEST(Continuation, SwitchesOntoTheBuckledBranchOfTheHeatedStrut) {
+  const HeatedStrut strut;
+  const Model model = strut.model();
+  const Assembler assembler(model);
+  ContinuationOptions options;
+  options.parameter = PathParameter::thermal;
+  options.end = 2.0 * strut.critical_factor();
+  options.n_eigenvalues = 2;
+  options.max_step = 0.05;
+  options.switch_branch = true;
+  const ContinuationResult result = trace(assembler, options);
+  ASSERT_EQ(result.end, ContinuationEnd::reached_end) << result.message;
+  const std::vector<const PathEvent*> bifurcations = events_of(result, PathEventKind::bifurcation);
+  ASSERT_EQ(bifurcations.size(), 1u);
+  EXPECT_NE(bifurcations[0]->description.find("switched"), std::string::npos) << bifurcations[0]->description;
+  const double L = strut.bay_m, H = strut.spring_height_m, thermal = strut.expansion_per_C * strut.temperature_change_C;
+  const double s = strut.spring_N_m * L / (2.0 * strut.axial_stiffness_N);
+  const auto mu_of = [&](double w) { return (w * w / (2.0 * L * L) + s * (2.0 * H - w) * (H - w) / (2.0 * H * H)) / thermal; };
+  const auto slope_of = [&](double w) { return (w / (L * L) + s * (2.0 * w - 3.0 * H) / (2.0 * H * H)) / thermal; };
+  constexpr int kMidY = 3;
+  int on_branch = 0, checked_stability = 0;
+  double largest_w = 0.0;
+  for (std::size_t i = bifurcations[0]->point + 1; i < result.points.size(); ++i) {
+    const PathPoint& p = result.points[i];
+    const double w = p.q[kMidY];
+    EXPECT_NEAR(p.parameter, mu_of(w), 1e-9 * options.end) << "w = " << w;
+    // Away from the bifurcation and the limit point, where the eigenvalue is near 0.
+    if (std::abs(w * slope_of(w)) > 1e-3 * s * s / thermal && p.event < 0) {
+      EXPECT_EQ(p.n_negative, w * slope_of(w) > 0.0 ? 0 : 1) << "w = " << w;
+      ++checked_stability;
+    }
+    largest_w = std::max(largest_w, std::abs(w));
+    ++on_branch;
+  }
+  EXPECT_GT(on_branch, 5);
+  EXPECT_GT(checked_stability, 5);
+  EXPECT_GT(largest_w, 0.5 * L * std::sqrt(2.0 * thermal * strut.critical_factor()));
+  // The branch's own limit point, where it turns from falling to rising μ.
+  const std::vector<const PathEvent*> limits = events_of(result, PathEventKind::limit_point);
+  ASSERT_EQ(limits.size(), 1u);
+  const double w_star = (3.0 * s / (2.0 * H)) / (1.0 / (L * L) + s / (H * H));
+  EXPECT_NEAR(limits[0]->parameter, mu_of(w_star), limits[0]->parameter_error + 1e-9 * options.end);
+}
+
 // Two supports on the apex's y: B has a dependent row, which is a property of the constraints,
 // not of the structure's stiffness, and is reported as such, naming the rows.
 TEST(Continuation, RedundantConstraintsAreReportedAsSingularConstraints) {

@@ -5,6 +5,7 @@
 // name the file, line and field, and the writer (io/model_writer.cpp) and the Python module an
 // ElementEntryWriter. So no reader or writer names an element type's keys.
 
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -30,10 +31,14 @@ class ElementEntryReader {
   virtual bool has(std::string_view key) const = 0;
   // A required number; the message names the unit and what `sign` allows.
   virtual double number(std::string_view key, ValueSign sign, std::string_view unit) const = 0;
+  // An optional one: empty when the entry does not give it.
+  virtual std::optional<double> optional_number(std::string_view key, ValueSign sign,
+                                                std::string_view unit) const = 0;
   // Exactly `count` node names, as indices into Model::nodes.
   virtual std::vector<int> nodes(std::string_view key, int count) const = 0;
   virtual int material(std::string_view key) const = 0;  // index into Model::materials
   virtual TimeFunction function(std::string_view key) const = 0;
+  virtual std::optional<TimeFunction> optional_function(std::string_view key) const = 0;
   // A rejected value of `key` (at its line), or a problem with a missing `key` (at the entry's).
   [[noreturn]] virtual void fail(std::string_view key, const std::string& problem) const = 0;
   [[noreturn]] virtual void fail_missing(std::string_view key,

@@ -15,6 +15,7 @@
 #include <tuple>
 #include <unordered_map>
 
+#include "deploydyn/assembly/assembler.hpp"
 #include "deploydyn/elements/element_kinds.hpp"
 #include "deploydyn/io/text_file.hpp"
 #include "deploydyn/io/yaml_reader.hpp"
@@ -298,15 +299,18 @@ class ModelReader {
     if (entries.empty()) section.fail("needs at least one element");
     const auto kinds = element_kinds();
     std::vector<std::string_view> kind_names;
-    for (const ElementKind* kind : kinds) kind_names.push_back(kind->name());
+    std::vector<std::vector<std::string_view>> keys_of_kind;  // its fields' keys and "type"
+    for (const ElementKind* kind : kinds) {
+      kind_names.push_back(kind->name());
+      std::vector<std::string_view>& keys = keys_of_kind.emplace_back();
+      for (const ElementField& field : kind->fields()) keys.push_back(field.key);
+      keys.push_back("type");
+    }
     for (const auto& [name, spec] : entries) {
       const auto type = spec.is_map() ? spec.find("type") : std::nullopt;
-      const ElementKind& kind = *kinds[type ? type->choice(std::span<const std::string_view>(kind_names)) : 0];
-      std::vector<std::string_view> keys;
-      for (const ElementField& field : kind.fields()) keys.push_back(field.key);
-      keys.push_back("type");
-      spec.expect_keys(std::span<const std::string_view>(keys));
-      kind.read(name, ElementEntry(spec, *this), model_);
+      const std::size_t k = type ? type->choice(std::span<const std::string_view>(kind_names)) : 0;
+      spec.expect_keys(std::span<const std::string_view>(keys_of_kind[k]));
+      kinds[k]->read(name, ElementEntry(spec, *this), model_);
       elements_.add(name, spec);
     }
   }
@@ -318,8 +322,12 @@ class ModelReader {
 
     bool has(std::string_view key) const override { return spec_.find(key).has_value(); }
     double number(std::string_view key, ValueSign sign, std::string_view unit) const override {
-      constexpr Sign kSigns[] = {Sign::any, Sign::positive, Sign::non_negative};
-      return spec_.at(key).number(kSigns[static_cast<int>(sign)], unit);
+      return spec_.at(key).number(io_sign(sign), unit);
+    }
+    std::optional<double> optional_number(std::string_view key, ValueSign sign,
+                                          std::string_view unit) const override {
+      const auto value = spec_.find(key);
+      return value ? std::optional<double>(value->number(io_sign(sign), unit)) : std::nullopt;
     }
     std::vector<int> nodes(std::string_view key, int count) const override {
       std::vector<int> indices;
@@ -329,6 +337,10 @@ class ModelReader {
     }
     int material(std::string_view key) const override { return reader_.materials_.find(spec_.at(key)); }
     TimeFunction function(std::string_view key) const override { return reader_.function(spec_.at(key)); }
+    std::optional<TimeFunction> optional_function(std::string_view key) const override {
+      const auto value = spec_.find(key);
+      return value ? std::optional<TimeFunction>(reader_.function(*value)) : std::nullopt;
+    }
     [[noreturn]] void fail(std::string_view key, const std::string& problem) const override {
       spec_.at(key).fail(problem);
     }
@@ -337,6 +349,11 @@ class ModelReader {
     }
 
    private:
+    static Sign io_sign(ValueSign sign) {
+      constexpr Sign kSigns[] = {Sign::any, Sign::positive, Sign::non_negative};
+      return kSigns[static_cast<int>(sign)];
+    }
+
     const YamlValue& spec_;
     const ModelReader& reader_;
   };
@@ -434,6 +451,10 @@ class ModelReader {
       read_continuation(spec);
       return;
     }
+    if (const auto type = spec.find("type"); type && type->is_scalar() && type->text() == "modal") {
+      read_modal(spec);
+      return;
+    }
     spec.expect_keys(
         {"type", "end", "step", "output_interval", "load_steps", "mass", "integrator", "newton",
          "adaptive", "linear_solver"});
@@ -467,18 +488,9 @@ class ModelReader {
       if (step) step->fail(problem);
       spec.fail_key("step", problem + " (the default)");
     }
-    if (const auto load_steps = spec.find("load_steps")) {
-      analysis.load_steps = load_steps->integer(1);
-      if (analysis.load_steps > kMaxLoadSteps) {
-        load_steps->fail(fmt::format("must be at most {} (the load steps of the initial "
-                                     "equilibrium; they grow and shrink by themselves), got {}",
-                                     kMaxLoadSteps, analysis.load_steps));
-      }
-    }
-    if (const auto mass = spec.find("mass")) {
-      analysis.mass = mass->choice(kMassMatrixKinds);
-    }
-    if (const auto solver = spec.find("linear_solver")) analysis.linear_solver = solver->choice(kLinearSolverKinds);
+    if (const auto load_steps = spec.find("load_steps")) read_load_steps(*load_steps);
+    if (const auto mass = spec.find("mass")) read_mass(*mass);
+    if (const auto solver = spec.find("linear_solver")) read_linear_solver(*solver);
     if (const auto integrator = spec.find("integrator")) read_integrator(*integrator);
     if (const auto newton = spec.find("newton")) read_newton(*newton);
     if (const auto adaptive = spec.find("adaptive")) read_adaptive(*adaptive);
@@ -504,9 +516,63 @@ class ModelReader {
     }
     if (const auto eigenvalues = spec.find("eigenvalues")) c.n_eigenvalues = eigenvalues->integer(0);
     if (const auto max_steps = spec.find("max_steps")) c.max_steps = max_steps->integer(1);
-    if (const auto solver = spec.find("linear_solver")) analysis.linear_solver = solver->choice(kLinearSolverKinds);
+    if (const auto solver = spec.find("linear_solver")) read_linear_solver(*solver);
     if (const auto newton = spec.find("newton")) read_newton(*newton);
   }
+
+  // type: modal: modes about the static equilibrium at the times `at`; time-stepping keys do not
+  // apply and are rejected. Asking for more modes than the constrained system has is an error
+  // here, where the file's line can be named.
+  void read_modal(const YamlValue& spec) {
+    spec.expect_keys({"type", "modes", "at", "shift", "load_steps", "mass", "newton", "linear_solver"});
+    AnalysisOptions& analysis = model_.analysis;
+    analysis.type = AnalysisType::modal;
+    ModalSettings& modal = analysis.modal;
+    if (const auto at = spec.find("at")) {
+      modal.times_s.clear();
+      if (at->is_scalar()) {
+        modal.times_s.push_back(at->number(Sign::non_negative, "s"));
+      } else {
+        for (const YamlValue& t : at->items(1, kUnbounded, "times (s)")) {
+          modal.times_s.push_back(t.number(Sign::non_negative, "s"));
+        }
+      }
+    }
+    if (const auto shift = spec.find("shift")) modal.shift_rad2_s2 = shift->number(Sign::any, "rad²/s²");
+    if (const auto load_steps = spec.find("load_steps")) read_load_steps(*load_steps);
+    if (const auto mass = spec.find("mass")) read_mass(*mass);
+    if (const auto solver = spec.find("linear_solver")) read_linear_solver(*solver);
+    if (const auto newton = spec.find("newton")) read_newton(*newton);
+    // The constrained system's size when no constraint is redundant (solvers/modal_analysis.hpp).
+    const Assembler assembler(model_);
+    const int n_free = assembler.n_dofs() - assembler.n_equations();
+    const std::string size = fmt::format("the model has {} coordinates and {} constraint equations",
+                                         assembler.n_dofs(), assembler.n_equations());
+    if (n_free < 1) spec.fail(size + ": no motion is left to vibrate");
+    if (const auto modes = spec.find("modes")) {
+      modal.n_modes = modes->integer(1);
+      if (modal.n_modes > n_free) {
+        modes->fail(fmt::format("{}: at most {} modes, got {}", size, n_free, modal.n_modes));
+      }
+    } else {
+      modal.n_modes = std::min(modal.n_modes, n_free);  // the default: as many as there are, up to 10
+    }
+  }
+
+  void read_load_steps(const YamlValue& load_steps) {
+    model_.analysis.load_steps = load_steps.integer(1);
+    if (model_.analysis.load_steps > kMaxLoadSteps) {
+      load_steps.fail(fmt::format("must be at most {} (the load steps of the initial "
+                                  "equilibrium; they grow and shrink by themselves), got {}",
+                                  kMaxLoadSteps, model_.analysis.load_steps));
+    }
+  }
+
+  void read_linear_solver(const YamlValue& solver) {
+    model_.analysis.linear_solver = solver.choice(kLinearSolverKinds);
+  }
+
+  void read_mass(const YamlValue& mass) { model_.analysis.mass = mass.choice(kMassMatrixKinds); }
 
   void read_output_interval(const YamlValue& interval) {
     const AnalysisOptions& analysis = model_.analysis;

@@ -244,6 +244,20 @@ void emit_analysis(YAML::Emitter& out, const Model& model) {
     out << c.n_eigenvalues;
     emit_key(out, "max_steps");
     out << c.max_steps;
+  } else if (analysis.type == AnalysisType::modal) {
+    // Only the keys a modal analysis reads (io/model_loader.cpp, read_modal).
+    const ModalSettings& modal = analysis.modal;
+    emit_key(out, "modes");
+    out << modal.n_modes;
+    emit_key(out, "at");
+    out << YAML::Flow << YAML::BeginSeq;
+    for (const double t : modal.times_s) out << number_text(t);
+    out << YAML::EndSeq;
+    if (modal.shift_rad2_s2) emit_number(out, "shift", *modal.shift_rad2_s2);
+    emit_key(out, "load_steps");
+    out << analysis.load_steps;
+    emit_key(out, "mass");
+    out << (analysis.mass == MassMatrixKind::consistent ? "consistent" : "lumped");
   } else {
     emit_number(out, "end", analysis.end_time_s);
     emit_number(out, "step", analysis.step_s);
@@ -258,7 +272,7 @@ void emit_analysis(YAML::Emitter& out, const Model& model) {
   }
   emit_key(out, "linear_solver");
   out << to_string(analysis.linear_solver);
-  if (analysis.type != AnalysisType::continuation) {
+  if (analysis.type != AnalysisType::continuation && analysis.type != AnalysisType::modal) {
     emit_key(out, "integrator");
     out << YAML::Flow << YAML::BeginMap;
     emit_key(out, "type");

@@ -73,11 +73,12 @@ struct NodalLoad {
   TimeFunction factor = TimeFunction::constant(1.0);
 };
 
-enum class AnalysisType { quasi_static, dynamic, continuation };
+enum class AnalysisType { quasi_static, dynamic, continuation, modal };
 inline constexpr NameTable kAnalysisTypes{std::array{
     NamedValue<AnalysisType>{AnalysisType::quasi_static, "static"},
     NamedValue<AnalysisType>{AnalysisType::dynamic, "dynamic"},
     NamedValue<AnalysisType>{AnalysisType::continuation, "continuation"},
+    NamedValue<AnalysisType>{AnalysisType::modal, "modal"},
 }};
 inline const char* to_string(AnalysisType type) { return kAnalysisTypes.name(type).data(); }
 
@@ -102,6 +103,15 @@ struct ContinuationSettings {
   int n_eigenvalues = 3;   // lowest stability eigenvalues per point in path.csv; 0: none
   int max_steps = 2000;
 };
+// analysis.type: modal (solvers/modal_analysis.hpp): natural frequencies and modes about the
+// static equilibrium at each time (the thermal state at t = 0, then the drivers moved
+// quasi-statically to the time).
+struct ModalSettings {
+  int n_modes = 10;                   // the lowest, per time
+  std::vector<double> times_s{0.0};   // ascending, ≥ 0
+  std::optional<double> shift_rad2_s2;  // σ: the modes nearest to it; empty: the lowest
+};
+
 enum class MassMatrixKind { consistent, lumped };
 inline constexpr NameTable kMassMatrixKinds{std::array{
     NamedValue<MassMatrixKind>{MassMatrixKind::consistent, "consistent"},
@@ -170,6 +180,7 @@ struct AnalysisOptions {
   MassMatrixKind mass = MassMatrixKind::consistent;
   LinearSolverKind linear_solver = LinearSolverKind::automatic;
   ContinuationSettings continuation;  // type continuation only
+  ModalSettings modal;                // type modal only
 };
 
 struct OutputOptions {

@@ -2,20 +2,19 @@
 
 #include <fmt/format.h>
 
+#include <atomic>
 #include <chrono>
 #include <optional>
-#include <sstream>
 #include <nlohmann/json.hpp>
 #include <stdexcept>
 
 #include "deploydyn/assembly/linear_system_factory.hpp"
 #include "deploydyn/elements/element_kinds.hpp"
-#include "deploydyn/io/model_writer.hpp"
 #include "deploydyn/output/checked_file.hpp"
 #include "deploydyn/output/output_error.hpp"
 #include "deploydyn/output/result_folder.hpp"
+#include "deploydyn/output/run_folder.hpp"
 #include "deploydyn/output/summary_writer.hpp"
-#include "deploydyn/output/vtk_writer.hpp"
 
 namespace deploydyn {
 namespace {
@@ -43,25 +42,44 @@ const char* parameter_column(const Model& model) {
 }
 
 
+// path.csv, one whole row per point as the path reaches it (AppendFile: a failed write keeps
+// the rows before it and throws OutputError).
+class PathCsv {
+ public:
+  PathCsv(const std::filesystem::path& file, const Assembler& assembler, int n_eigenvalues)
+      : file_(file), unit_(parameter_unit(assembler)), n_eigenvalues_(n_eigenvalues) {
+    std::string header = fmt::format("mu,{},displacement_norm_m", parameter_column(assembler.model()));
+    for (int i = 1; i <= n_eigenvalues; ++i) header += fmt::format(",eigenvalue_{}_N_m", i);
+    file_.append(header + ",n_negative,event\n");
+  }
+
+  void add(const PathPoint& p, const PathEvent* event) {
+    std::string row = fmt::format("{:.12g},{:.12g},{:.12g}", p.parameter, p.parameter * unit_, p.displacement_norm_m);
+    for (int i = 0; i < n_eigenvalues_; ++i) {
+      row += i < p.lowest_eigenvalues.size() ? fmt::format(",{:.12g}", p.lowest_eigenvalues[i]) : ",";
+    }
+    row += fmt::format(",{},{}\n", p.n_negative, event != nullptr ? to_string(event->kind) : "");
+    file_.append(row);
+  }
+
+ private:
+  AppendFile file_;
+  double unit_;
+  int n_eigenvalues_;
+};
+
 }  // namespace
 
-void write_path_csv(std::ostream& out, const Assembler& assembler, const ContinuationResult& result,
-                    int n_eigenvalues) {
-  const double unit = parameter_unit(assembler);
-  out << "mu," << parameter_column(assembler.model()) << ",displacement_norm_m";
-  for (int i = 1; i <= n_eigenvalues; ++i) out << ",eigenvalue_" << i << "_N_m";
-  out << ",n_negative,event\n";
-  for (const PathPoint& p : result.points) {
-    out << fmt::format("{:.12g},{:.12g},{:.12g}", p.parameter, p.parameter * unit, p.displacement_norm_m);
-    for (int i = 0; i < n_eigenvalues; ++i) {
-      if (i < p.lowest_eigenvalues.size()) {
-        out << fmt::format(",{:.12g}", p.lowest_eigenvalues[i]);
-      } else {
-        out << ",";
-      }
-    }
-    out << ',' << p.n_negative << ',' << (p.event >= 0 ? to_string(result.events[p.event].kind) : "") << '\n';
-  }
+ContinuationOptions path_options(const Model& model) {
+  const ContinuationSettings& settings = model.analysis.continuation;
+  ContinuationOptions options;
+  options.parameter = settings.parameter;
+  options.start = settings.start;
+  options.end = settings.end;
+  options.n_eigenvalues = settings.n_eigenvalues;
+  options.max_steps = settings.max_steps;
+  options.newton = model.analysis.newton;
+  return options;
 }
 
 std::string path_summary_json(const Assembler& assembler, const ContinuationResult& result,
@@ -69,10 +87,7 @@ std::string path_summary_json(const Assembler& assembler, const ContinuationResu
   const Model& model = assembler.model();
   const ContinuationSettings& settings = model.analysis.continuation;
   const double unit = parameter_unit(assembler);
-  ordered_json j;
-  j["model"] = model.name;
-  j["status"] = to_string(report.status);
-  j["message"] = report.message;
+  ordered_json j = summary_head(model, report);
   j["units"] = {{"length", "m"}, {"force", "N"}, {"stiffness", "N/m"}, {"temperature_change", "°C"}};
   j["analysis"] = {{"type", to_string(model.analysis.type)},
                    {"parameter", to_string(settings.parameter)},
@@ -121,31 +136,32 @@ RunReport run_path_to_folder(const Model& model, const std::filesystem::path& fo
                              const RunControl& control) {
   const auto wall_start = std::chrono::steady_clock::now();
   const Assembler assembler(model);  // may throw before any file is touched
-  // The same ownership as a time run's folder (output/result_folder.hpp): running first, the
-  // earlier run's files removed, the final status at the end.
   ResultFolder results(folder, model.output.summary_file);
-  results.start("model", model.name,
-                {{"model", kRunModelFileName}, {"path", kPathFileName}, {"history", model.output.history_file}});
-  remove_vtk_series(folder / kVtkFolderName);
-  {
-    std::ostringstream model_text;
-    save_model(model, model_text);
-    write_file(folder / kRunModelFileName, model_text.str());
+  std::optional<OutputError> output_error;
+  ContinuationResult result;
+  try {
+    start_run_folder(results, model,
+                     {{"model", kRunModelFileName}, {"path", kPathFileName}, {"history", model.output.history_file}});
+    PathCsv path(folder / kPathFileName, assembler, model.analysis.continuation.n_eigenvalues);
+    std::atomic<bool> stop{false};
+    const RunControl watched = stop_on_write_failure(control, stop, [&] { return output_error.has_value(); });
+    ContinuationOptions options = path_options(model);
+    options.stop = watched.stop;
+    options.poll = watched.poll;  // the Python module looks for Ctrl-C there
+    options.on_point = [&](const PathPoint& point, const PathEvent* event) {
+      if (output_error) return;
+      try {
+        path.add(point, event);
+      } catch (const OutputError& error) {
+        output_error = error;
+      }
+    };
+    const auto system = make_linear_system(assembler);
+    result = trace_path(assembler, options, *system, assembler.initial_coordinates(),
+                        Eigen::VectorXd::Zero(assembler.n_equations()));
+  } catch (const OutputError& error) {
+    output_error = error;
   }
-  const ContinuationSettings& settings = model.analysis.continuation;
-  ContinuationOptions options;
-  options.parameter = settings.parameter;
-  options.start = settings.start;
-  options.end = settings.end;
-  options.n_eigenvalues = settings.n_eigenvalues;
-  options.max_steps = settings.max_steps;
-  options.newton = model.analysis.newton;
-  options.stop = control.stop;
-  options.poll = control.poll;  // the Python module looks for Ctrl-C there
-  const auto system = make_linear_system(assembler);
-  const ContinuationResult result =
-      trace_path(assembler, options, *system, assembler.initial_coordinates(),
-                 Eigen::VectorXd::Zero(assembler.n_equations()));
 
   RunReport report;
   report.status = result.end == ContinuationEnd::reached_end ? RunStatus::completed
@@ -157,22 +173,11 @@ RunReport run_path_to_folder(const Model& model, const std::filesystem::path& fo
     report.failure.phase = "continuation";
     report.failure.reason = result.message;
   }
+  if (output_error) record_output_failure(report, *output_error);
   report.steps = static_cast<int>(result.points.size());
   report.newton_iterations = result.total_iterations;
   report.rejected_steps = result.rejected_steps;
   report.wall_time_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start).count();
-  std::optional<OutputError> output_error;
-  try {
-    std::ostringstream path;
-    write_path_csv(path, assembler, result, settings.n_eigenvalues);
-    write_file(folder / kPathFileName, path.str());
-  } catch (const OutputError& error) {
-    output_error = error;
-    report.status = RunStatus::failed;
-    report.failure.phase = "writing results";
-    report.failure.reason = error.what();
-    report.message = std::string("writing results failed: ") + error.what();
-  }
   results.finish(path_summary_json(assembler, result, report), short_summary_json(model, report));
   if (output_error) throw *output_error;
   return report;

@@ -1,8 +1,9 @@
 #pragma once
 // A continuation run (analysis.type: continuation, solvers/continuation.hpp) with its results
-// on disk: summary.json saying "running", model.yaml (the model as run), path.csv (one row per
-// converged point, written when the path ends) and summary.json again (how it ended, and the
-// events). What run_to_folder does for this type.
+// on disk: summary.json saying "running", model.yaml (the model as run) (output/run_folder.hpp),
+// path.csv (one row per converged point, appended in whole rows as each point is reached, so
+// that a run stopped, failed or killed part-way keeps every point it reached) and summary.json
+// again (how it ended, and the events). What run_to_folder does for this type.
 //
 // path.csv columns:
 //   mu                      the parameter μ
@@ -14,7 +15,6 @@
 //   event                   limit_point, bifurcation, singular_constraints, or empty
 
 #include <filesystem>
-#include <ostream>
 #include <string>
 
 #include "deploydyn/solvers/analysis.hpp"
@@ -24,12 +24,14 @@ namespace deploydyn {
 
 // In a folder it owns, as run_to_folder (output/result_folder.hpp). Throws
 // std::invalid_argument when the model's mechanics cannot be built (before any file is
-// touched), OutputError when the folder is in use or a file cannot be written.
+// touched), OutputError when the folder is in use or a file cannot be written (summary.json
+// then says "failed" and why, and path.csv keeps the rows written before).
 RunReport run_path_to_folder(const Model& model, const std::filesystem::path& folder,
                              const RunControl& control = {});
 
-void write_path_csv(std::ostream& out, const Assembler& assembler, const ContinuationResult& result,
-                    int n_eigenvalues);
+// The continuation that the model's analysis section asks for, from its initial state at t = 0.
+ContinuationOptions path_options(const Model& model);
+
 std::string path_summary_json(const Assembler& assembler, const ContinuationResult& result,
                               const RunReport& report);
 

@@ -2,19 +2,18 @@
 
 #include <atomic>
 #include <optional>
-#include <sstream>
 #include <utility>
 #include <vector>
 
-#include "deploydyn/io/model_writer.hpp"
 #include "deploydyn/output/background_sink.hpp"
-#include "deploydyn/output/checked_file.hpp"
 #include "deploydyn/output/envelope.hpp"
 #include "deploydyn/output/history_writer.hpp"
+#include "deploydyn/output/modes_to_folder.hpp"
 #include "deploydyn/output/output_error.hpp"
 #include "deploydyn/output/plausibility.hpp"
-#include "deploydyn/output/result_folder.hpp"
 #include "deploydyn/output/path_to_folder.hpp"
+#include "deploydyn/output/result_folder.hpp"
+#include "deploydyn/output/run_folder.hpp"
 #include "deploydyn/output/summary_writer.hpp"
 #include "deploydyn/output/vtk_writer.hpp"
 
@@ -33,19 +32,6 @@ class FanOut final : public RecordSink {
   std::vector<RecordSink*> sinks_;
 };
 
-// The run's end as summary.json tells it when writing the results failed: the solver's own
-// failure, if any, stays the reason.
-void record_output_failure(RunReport& report, const OutputError& error) {
-  if (report.status == RunStatus::failed) return;
-  report.status = RunStatus::failed;
-  report.failure = FailureReport{};
-  report.failure.phase = "writing results";
-  report.failure.time_s = report.time_reached_s;
-  report.failure.step = report.steps;
-  report.failure.reason = error.what();
-  report.message = std::string("writing results failed: ") + error.what();
-}
-
 }  // namespace
 
 RunReport run_to_folder(const Model& model, const std::filesystem::path& folder,
@@ -60,19 +46,16 @@ RunReport run_to_folder(const Model& model, const std::filesystem::path& folder,
     envelope = Envelope();  // a path has no time history to envelope
     return run_path_to_folder(model, folder, control);
   }
+  if (model.analysis.type == AnalysisType::modal) {
+    envelope = Envelope();  // nor do modes
+    return run_modes_to_folder(model, folder, control);
+  }
   const Assembler assembler(model);  // may throw before any file is touched
   ResultFolder results(folder, model.output.summary_file);
-  results.start("model", model.name, run_files(model));
-  // Frames of an earlier run go even when this one writes none (and whatever else the user
-  // keeps in vtk/ stays).
-  remove_vtk_series(folder / kVtkFolderName);
   RunReport report;
   std::optional<OutputError> output_error;
   try {
-    // The model as run, --set overrides applied: the folder says how its results were made.
-    std::ostringstream model_text;
-    save_model(model, model_text);
-    write_file(folder / kRunModelFileName, model_text.str());
+    start_run_folder(results, model, run_files(model));
     HistoryWriter history(folder / model.output.history_file, model);
     envelope = Envelope();
     std::vector<RecordSink*> sinks{&history, &envelope};
@@ -81,15 +64,9 @@ RunReport run_to_folder(const Model& model, const std::filesystem::path& folder,
     FanOut sink(std::move(sinks));
     // Writing overlaps solving: the records reach the files from a thread of their own.
     BackgroundSink background(sink);
-    // A failed write stops the solver too: results it could not keep are not worth computing.
     std::atomic<bool> stop{false};
-    RunControl watched = control;
-    watched.stop = &stop;
-    watched.poll = [&] {
-      if (control.poll) control.poll();
-      if ((control.stop != nullptr && control.stop->load()) || background.failed()) stop.store(true);
-    };
-    report = run_analysis(assembler, background, watched);
+    report = run_analysis(assembler, background,
+                          stop_on_write_failure(control, stop, [&] { return background.failed(); }));
     background.finish();
     history.flush();
   } catch (const OutputError& error) {

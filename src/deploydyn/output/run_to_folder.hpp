@@ -4,7 +4,8 @@
 // history.csv streamed while it runs, and summary.json again at the end, whatever the end
 // (completed, failed or interrupted); with `output.vtk`, also a ParaView time series in vtk/
 // (output/vtk_writer.hpp), streamed. What the CLI's `run` does.
-// A model of analysis type continuation writes a path instead (output/path_to_folder.hpp).
+// A model of analysis type continuation writes a path instead (output/path_to_folder.hpp), one
+// of type modal its modes (output/modes_to_folder.hpp).
 
 #include <filesystem>
 

@@ -78,12 +78,22 @@ std::string short_summary_json(const Model& model, const RunReport& report) {
   return j.dump(-1, ' ', false, ordered_json::error_handler_t::replace);
 }
 
-std::string summary_json(const Model& model, const Envelope& envelope, const RunReport& report) {
+ordered_json summary_head(const Model& model, const RunReport& report) {
   ordered_json j;
   j["model"] = model.name;
   j["status"] = to_string(report.status);
   j["message"] = report.message;
-  if (report.status == RunStatus::failed) j["failure"] = failure(report.failure);
+  if (report.status == RunStatus::failed) {
+    const bool time_history = model.analysis.type == AnalysisType::quasi_static ||
+                              model.analysis.type == AnalysisType::dynamic;
+    j["failure"] = time_history ? failure(report.failure)
+                                : ordered_json{{"phase", report.failure.phase}, {"reason", report.failure.reason}};
+  }
+  return j;
+}
+
+std::string summary_json(const Model& model, const Envelope& envelope, const RunReport& report) {
+  ordered_json j = summary_head(model, report);
   j["units"] = {{"length", "m"}, {"force", "N"}, {"torque", "N·m"}, {"time", "s"},
                 {"energy", "J"}, {"temperature_change", "°C"}};
   j["analysis"] = {{"type", to_string(model.analysis.type)},

@@ -5,6 +5,7 @@
 // the folder's files by role. Written by ResultFolder (output/result_folder.hpp): "running" at
 // the start of a run, the final status at its end, atomically.
 
+#include <nlohmann/json.hpp>
 #include <string>
 #include <utility>
 #include <vector>
@@ -14,6 +15,12 @@
 #include "deploydyn/solvers/analysis.hpp"
 
 namespace deploydyn {
+
+// How every summary.json begins: "model", "status", "message" and, for a failed run, "failure":
+// its phase and reason, and for a time history where it stopped (time, step, iteration,
+// residuals). Also the start of the path's and the modes' summaries (output/path_to_folder.hpp,
+// output/modes_to_folder.hpp).
+nlohmann::ordered_json summary_head(const Model& model, const RunReport& report);
 
 // The final summary (indented, without the final newline). Also what the Python bindings
 // return for a run in memory.

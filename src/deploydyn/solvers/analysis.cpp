@@ -171,10 +171,11 @@ RunReport run_analysis(const Assembler& assembler, RecordSink& sink, const RunCo
   const auto wall_start = std::chrono::steady_clock::now();
   const AnalysisOptions& options = assembler.model().analysis;
   RunReport report;
-  if (options.type == AnalysisType::continuation) {
-    // A path, not a history: output/path_to_folder.hpp runs it.
-    throw std::invalid_argument(
-        "run_analysis: analysis type continuation writes path.csv; run it with run_to_folder");
+  if (options.type == AnalysisType::continuation || options.type == AnalysisType::modal) {
+    // A path or modes, not a history: output/path_to_folder.hpp and modes_to_folder.hpp run them.
+    throw std::invalid_argument(fmt::format("run_analysis: analysis type {} writes {}; run it with run_to_folder",
+                                            to_string(options.type),
+                                            options.type == AnalysisType::modal ? "modes.csv" : "path.csv"));
   }
   const std::unique_ptr<LinearSystem> linear_system = make_linear_system(assembler);
   LinearSystem& system = *linear_system;

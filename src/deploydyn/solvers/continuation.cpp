@@ -99,7 +99,14 @@ class PathTracer {
   void locate(const PathPoint& from, const Tangent& t_from, const Trial& to, double ds,
               PathEventKind kind);
   void record_event(PathEventKind kind, PathPoint point, const Tangent& t, double error);
+  // Appends `point` (and the event located there) to the result and tells options_.on_point.
+  void keep(PathPoint point, std::optional<PathEvent> event = std::nullopt);
   bool land_on_end(const PathPoint& before, const PathPoint& after);
+  // From the bifurcation just recorded (the path's last point and event), a first point on
+  // the bifurcated branch: predictor along the critical mode φ (q̇ = ℓ φ, μ̇ = 0), corrector on
+  // the plane φᵀ(q − q_p) = 0, which the primary branch crosses only at the bifurcation when
+  // it does not move along φ; tried with Δs, Δs/2, … and both signs of φ. Empty if none.
+  std::optional<Trial> switch_branch(double ds);
 
   const Assembler& assembler_;
   const ContinuationOptions& options_;
@@ -286,10 +293,19 @@ void PathTracer::record_event(PathEventKind kind, PathPoint point, const Tangent
                              : fmt::format("{} factor μ = {:.9g} (± {:.2g})",
                                            to_string(options_.parameter), point.parameter, error);
   event.description = fmt::format("{} at {}{}", what, at, where);
-  point.event = static_cast<int>(result_.events.size());
-  event.point = static_cast<int>(result_.points.size());
+  event.within_tolerance = error <= options_.location_tolerance * range_;
+  if (!event.within_tolerance) event.description += " (not located to the tolerance)";
+  keep(std::move(point), std::move(event));
+}
+
+void PathTracer::keep(PathPoint point, std::optional<PathEvent> event) {
+  if (event) {
+    point.event = static_cast<int>(result_.events.size());
+    event->point = static_cast<int>(result_.points.size());
+    result_.events.push_back(std::move(*event));
+  }
   result_.points.push_back(std::move(point));
-  result_.events.push_back(std::move(event));
+  if (options_.on_point) options_.on_point(result_.points.back(), event ? &result_.events.back() : nullptr);
 }
 
 void PathTracer::locate(const PathPoint& from, const Tangent& t_from, const Trial& to, double ds,
@@ -360,10 +376,7 @@ void PathTracer::locate(const PathPoint& from, const Tangent& t_from, const Tria
   const End& best = std::abs(lo.value) <= std::abs(hi.value) ? lo : hi;
   PathPoint point = *best.point;
   point.event = -1;
-  const double reached = bound();
-  record_event(kind, std::move(point), *best.tangent, reached);
-  result_.events.back().within_tolerance = reached <= tolerance;
-  if (reached > tolerance) result_.events.back().description += " (not located to the tolerance)";
+  record_event(kind, std::move(point), *best.tangent, bound());
 }
 
 bool PathTracer::land_on_end(const PathPoint& before, const PathPoint& after) {
@@ -381,8 +394,29 @@ bool PathTracer::land_on_end(const PathPoint& before, const PathPoint& after) {
   p.parameter_rate = after.parameter_rate;
   p.displacement_norm_m = (p.q - reference_q_).norm();
   analyse_stability(p);
-  result_.points.push_back(std::move(p));
+  keep(std::move(p));
   return true;
+}
+
+std::optional<PathTracer::Trial> PathTracer::switch_branch(double ds) {
+  PathEvent& event = result_.events.back();
+  if (event.mode.size() != assembler_.n_dofs()) return std::nullopt;
+  const PathPoint bifurcation = result_.points.back();
+  Tangent along;
+  along.lambda_rate = Eigen::VectorXd::Zero(assembler_.n_equations());
+  // Steps near the bifurcation shrank onto it (the eigenvalue rules): step off it afresh.
+  const double first = std::max(ds, options_.initial_step);
+  for (double sigma = first; sigma >= std::max(options_.min_step, 1e-3 * first); sigma *= 0.5) {
+    for (const double sign : {1.0, -1.0}) {
+      along.q_rate = sign * length_ * event.mode;
+      std::optional<Trial> trial = step_from(bifurcation, along, sigma);
+      if (!trial) continue;
+      event.description += fmt::format("; switched to the bifurcated branch (μ = {:.9g} there)",
+                                       trial->point.parameter);
+      return trial;
+    }
+  }
+  return std::nullopt;
 }
 
 ContinuationResult PathTracer::run(const Eigen::VectorXd& q0, const Eigen::VectorXd& lambda0) {
@@ -438,8 +472,9 @@ ContinuationResult PathTracer::run(const Eigen::VectorXd& q0, const Eigen::Vecto
   current.parameter_rate = t->mu_rate;
   current.displacement_norm_m = (current.q - reference_q_).norm();
   analyse_stability(current);
-  result_.points.push_back(current);
+  keep(current);
 
+  bool switched = false;  // onto a bifurcated branch (once per path)
   const double cos_max_turn = std::cos(options_.max_turn_rad);
   const auto rushes_to_critical = [&](const PathPoint& from, const PathPoint& to) {
     if (from.lowest_eigenvalues.size() == 0 || to.lowest_eigenvalues.size() == 0) return false;
@@ -500,6 +535,16 @@ ContinuationResult PathTracer::run(const Eigen::VectorXd& q0, const Eigen::Vecto
     } else if (current.n_negative >= 0 && next.point.n_negative >= 0 &&
                current.n_negative != next.point.n_negative) {
       locate(current, *t, next, ds, PathEventKind::bifurcation);
+      if (options_.switch_branch && !switched) {
+        if (std::optional<Trial> branch = switch_branch(ds)) {
+          switched = true;
+          current = branch->point;
+          *t = branch->tangent;
+          keep(std::move(branch->point));
+          continue;
+        }
+        result_.events.back().description += "; no bifurcated branch found along the critical mode";
+      }
     }
     const bool constraints_degenerate = current.constraint_rank >= 0 &&
                                         next.point.constraint_rank >= 0 &&
@@ -529,7 +574,7 @@ ContinuationResult PathTracer::run(const Eigen::VectorXd& q0, const Eigen::Vecto
     if (constraints_degenerate) {
       record_event(PathEventKind::singular_constraints, std::move(next.point), next.tangent, 0.0);
     } else {
-      result_.points.push_back(std::move(next.point));
+      keep(std::move(next.point));
     }
   }
 }

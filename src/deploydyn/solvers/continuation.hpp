@@ -55,6 +55,9 @@
 //                 not a structural instability, reported at the point, not located.
 // Each located event is a point of the path too, with its kind, critical eigenvalue and mode
 // (the eigenvector through zero, mapped back to q) and the member forces there.
+// Branch switching (`switch_branch`): at the first bifurcation the path steps off along the
+// critical mode φ, predictor (q, λ, μ)* + Δs (ℓ φ, 0, 0), corrector on the plane through the
+// predictor normal to φ, and goes on along the new branch.
 
 #include <atomic>
 #include <functional>
@@ -65,6 +68,9 @@
 #include "deploydyn/solvers/parametrized_equilibrium.hpp"
 
 namespace deploydyn {
+
+struct PathPoint;
+struct PathEvent;
 
 struct ContinuationOptions {
   PathParameter parameter = PathParameter::load;
@@ -86,9 +92,16 @@ struct ContinuationOptions {
   int n_eigenvalues = 3;        // lowest ones reported per point; 0: no stability analysis
   int max_stability_dofs = 2000;  // dense eigen-solve above this is not attempted
   double location_tolerance = 1e-7;  // of an event's μ, relative to |end − start|
+  // At the first bifurcation, leave the path it was on and follow the bifurcated branch (the
+  // predictor along the critical mode, first Δs = max(Δs, initial_step); see
+  // PathTracer::switch_branch in continuation.cpp).
+  bool switch_branch = false;
   NewtonOptions newton;  // tolerances (also of the corrector) and the start/end solves
   const std::atomic<bool>* stop = nullptr;  // polled before every step: Ctrl-C
   std::function<void()> poll;               // called before every step; may set *stop
+  // Called with every point as it joins the path, and the event located there (else null):
+  // results written as they come survive a run that is stopped or killed part-way.
+  std::function<void(const PathPoint&, const PathEvent*)> on_point;
 };
 
 // Throws std::invalid_argument naming the option and what is allowed.

@@ -12,6 +12,8 @@
 #include <stdexcept>
 #include <vector>
 
+#include "deploydyn/solvers/static_solver.hpp"
+
 namespace deploydyn {
 namespace {
 
@@ -177,6 +179,21 @@ ModalResult natural_modes(const Assembler& assembler, const MotionState& equilib
     lanczos_modes(inverse, mass, sigma, options.n_modes, result);
   }
   return result;
+}
+
+EquilibriumModes modes_at_time(const Assembler& assembler, double time_s, LinearSystem& system,
+                               const ModalOptions& options, const RunControl& control) {
+  EquilibriumModes out;
+  out.time_s = time_s;
+  const StaticResult equilibrium = solve_equilibrium_at(assembler, time_s, system, out.equilibrium, control);
+  out.stopped = equilibrium.stopped;
+  if (!equilibrium.newton.converged || equilibrium.path_factor < 1.0) {
+    out.modes.message = equilibrium.stopped ? "stopped before the equilibrium was reached"
+                                            : "no static equilibrium found: " + equilibrium.newton.failure;
+    return out;
+  }
+  out.modes = natural_modes(assembler, out.equilibrium, system, options);
+  return out;
 }
 
 }  // namespace deploydyn

@@ -21,6 +21,7 @@
 #include "deploydyn/assembly/assembler.hpp"
 #include "deploydyn/assembly/linear_system.hpp"
 #include "deploydyn/solvers/motion_state.hpp"
+#include "deploydyn/solvers/run_control.hpp"
 
 namespace deploydyn {
 
@@ -53,5 +54,16 @@ struct ModalResult {
 // when no constraint is redundant).
 ModalResult natural_modes(const Assembler& assembler, const MotionState& equilibrium,
                           LinearSystem& system, const ModalOptions& options = {});
+
+// The modes about the static equilibrium at time `time_s` (solvers/static_solver.hpp,
+// solve_equilibrium_at: the thermal state at t = 0, then the drivers moved quasi-statically).
+struct EquilibriumModes {
+  double time_s = 0.0;
+  MotionState equilibrium;
+  ModalResult modes;     // !modes.ok: modes.message says why, also when no equilibrium was found
+  bool stopped = false;  // `control` asked to stop before the equilibrium was reached
+};
+EquilibriumModes modes_at_time(const Assembler& assembler, double time_s, LinearSystem& system,
+                               const ModalOptions& options = {}, const RunControl& control = {});
 
 }  // namespace deploydyn

@@ -2,6 +2,9 @@
 
 #include <fmt/format.h>
 
+#include <optional>
+#include <utility>
+
 namespace deploydyn::bar {
 namespace {
 
@@ -41,13 +44,14 @@ void read_entry(const std::string& name, const ElementEntryReader& entry, Model&
   bar.material = entry.material("material");
   const Material& material = model.materials[bar.material];
 
-  bar.length_given = entry.has("length");
-  bar.reference_length_m =
-      bar.length_given ? entry.number("length", ValueSign::positive, "m") : distance;
+  const std::optional<double> length_m = entry.optional_number("length", ValueSign::positive, "m");
+  bar.length_given = length_m.has_value();
+  bar.reference_length_m = length_m.value_or(distance);
 
-  bar.mass_given = entry.has("mass");
-  if (bar.mass_given) {
-    bar.mass_kg = entry.number("mass", ValueSign::positive, "kg");
+  const std::optional<double> mass_kg = entry.optional_number("mass", ValueSign::positive, "kg");
+  bar.mass_given = mass_kg.has_value();
+  if (mass_kg) {
+    bar.mass_kg = *mass_kg;
   } else if (material.density_kg_m3) {
     bar.mass_kg = *material.density_kg_m3 * bar.area_m2 * bar.reference_length_m;
   } else {
@@ -56,9 +60,9 @@ void read_entry(const std::string& name, const ElementEntryReader& entry, Model&
                                            material.name));
   }
 
-  bar.temperature_given = entry.has("dT");
-  bar.temperature_change_C =
-      bar.temperature_given ? entry.function("dT") : model.temperature_change_C;
+  std::optional<TimeFunction> own_change_C = entry.optional_function("dT");
+  bar.temperature_given = own_change_C.has_value();
+  bar.temperature_change_C = own_change_C ? std::move(*own_change_C) : model.temperature_change_C;
   model.bars.push_back(std::move(bar));
 }
 

@@ -1,0 +1,182 @@
+#include "deploydyn/output/modes_to_folder.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <atomic>
+#include <chrono>
+#include <cmath>
+#include <limits>
+#include <nlohmann/json.hpp>
+#include <numbers>
+#include <optional>
+
+#include "deploydyn/assembly/linear_system_factory.hpp"
+#include "deploydyn/constraints/driver_motion.hpp"
+#include "deploydyn/output/checked_file.hpp"
+#include "deploydyn/output/output_error.hpp"
+#include "deploydyn/output/result_folder.hpp"
+#include "deploydyn/output/run_folder.hpp"
+#include "deploydyn/output/step_record.hpp"
+#include "deploydyn/output/summary_writer.hpp"
+#include "deploydyn/output/vtk_writer.hpp"
+
+namespace deploydyn {
+namespace {
+
+using nlohmann::ordered_json;
+
+// A mode is drawn as the equilibrium moved along it until its largest nodal displacement is
+// this share of the shortest element: visible, and still small enough to read as a linear mode.
+constexpr double kDrawnAmplitudeShare = 0.1;
+
+// The equilibrium displaced along `mode`, as a VTK frame whose time field is `frame`.
+StepRecord mode_frame(const Assembler& assembler, const MotionState& equilibrium,
+                      const Eigen::VectorXd& mode, int frame) {
+  const double shortest_m = assembler.shortest_element_m();
+  const double largest = mode.lpNorm<Eigen::Infinity>();
+  MotionState shown = equilibrium;
+  shown.q += (largest > 0.0 ? kDrawnAmplitudeShare * shortest_m / largest : 0.0) * mode;
+  shown.time_s = frame;
+  StepRecord record = make_step_record(assembler, shown, 0.0);
+  record.v = mode;  // the mode itself, as the frame's vector field "velocity_m_s"
+  return record;
+}
+
+double driver_position(const Driver& driver, double t) {
+  return DriverMotion(driver.profile, driver.reading).position(t);
+}
+
+}  // namespace
+
+std::vector<std::string> modes_columns(const Model& model) {
+  std::vector<std::string> columns{"frame", "t", "mode", "omega2", "frequency", "dT_C"};
+  for (const Driver& driver : model.drivers) columns.push_back("position." + driver.name);
+  return columns;
+}
+
+void append_modes_rows(const Assembler& assembler, const EquilibriumModes& at, int first_frame,
+                       std::vector<double>& values) {
+  if (!at.modes.ok) return;
+  const Model& model = assembler.model();
+  const Eigen::VectorXd f = at.modes.frequencies_Hz();
+  for (Eigen::Index k = 0; k < f.size(); ++k) {
+    values.insert(values.end(), {static_cast<double>(first_frame + k), at.time_s, static_cast<double>(k + 1),
+                                 at.modes.omega2_rad2_s2[k], f[k], model.temperature_change_C.value(at.time_s)});
+    for (const Driver& driver : model.drivers) values.push_back(driver_position(driver, at.time_s));
+  }
+}
+
+ModalRun compute_modes(const Assembler& assembler, const RunControl& control, const EachModes& each) {
+  const auto wall_start = std::chrono::steady_clock::now();
+  const ModalSettings& settings = assembler.model().analysis.modal;
+  ModalOptions options;
+  options.n_modes = settings.n_modes;
+  options.shift_rad2_s2 = settings.shift_rad2_s2;
+  const auto system = make_linear_system(assembler);
+  ModalRun run;
+  std::vector<std::string> failures;
+  for (const double t : settings.times_s) {
+    if (stop_requested(control)) break;
+    const EquilibriumModes at = modes_at_time(assembler, t, *system, options, control);
+    if (at.stopped) break;
+    run.times.push_back({t, at.modes.omega2_rad2_s2, at.modes.ok ? "" : at.modes.message});
+    if (!at.modes.ok) failures.push_back(fmt::format("t = {} s: {}", t, at.modes.message));
+    if (each) each(at);
+    ++run.report.steps;
+    if (control.progress) control.progress(t);
+  }
+  RunReport& report = run.report;
+  report.time_reached_s = run.times.empty() ? 0.0 : run.times.back().time_s;
+  if (run.times.size() < settings.times_s.size()) {
+    report.status = RunStatus::interrupted;
+    report.message = fmt::format("interrupted after {} of {} times", run.times.size(), settings.times_s.size());
+  } else if (!failures.empty()) {
+    report.status = RunStatus::failed;
+    report.failure.phase = "modal analysis";
+    report.failure.reason = fmt::format("{}", fmt::join(failures, "; "));
+    report.message = fmt::format("no modes at {} of {} times: {}", failures.size(), settings.times_s.size(),
+                                 report.failure.reason);
+  } else {
+    report.message = fmt::format("{} modes at each of {} times", settings.n_modes, settings.times_s.size());
+  }
+  report.wall_time_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start).count();
+  return run;
+}
+
+std::string modes_summary_json(const Model& model, const ModalRun& run) {
+  const ModalSettings& settings = model.analysis.modal;
+  const RunReport& report = run.report;
+  ordered_json j = summary_head(model, report);
+  j["units"] = {{"time", "s"}, {"omega2", "rad²/s²"}, {"frequency", "Hz"}, {"temperature_change", "°C"}};
+  j["analysis"] = {{"type", to_string(model.analysis.type)}, {"modes", settings.n_modes}, {"at", settings.times_s}};
+  if (settings.shift_rad2_s2) j["analysis"]["shift"] = *settings.shift_rad2_s2;
+  ordered_json times = ordered_json::array();
+  for (const ModesSummary& at : run.times) {
+    ordered_json entry = {{"t", at.time_s}, {"dT_C", model.temperature_change_C.value(at.time_s)}};
+    for (const Driver& driver : model.drivers) entry["position"][driver.name] = driver_position(driver, at.time_s);
+    std::vector<double> omega2(at.omega2_rad2_s2.begin(), at.omega2_rad2_s2.end());
+    ordered_json frequency = ordered_json::array();
+    for (const double w2 : omega2) {
+      // JSON has no NaN: an unstable mode has no frequency.
+      frequency.push_back(w2 >= 0.0 ? ordered_json(std::sqrt(w2) / (2.0 * std::numbers::pi)) : ordered_json());
+    }
+    entry["omega2"] = omega2;
+    entry["frequency"] = frequency;
+    entry["unstable"] = std::ranges::count_if(omega2, [](double w2) { return w2 < 0.0; }) > 0;
+    if (!at.failure.empty()) entry["failure"] = at.failure;
+    times.push_back(entry);
+  }
+  j["modes"] = times;
+  j["wall_time_s"] = report.wall_time_s;
+  // What the next run into the folder removes first (output/result_folder.hpp).
+  j["files"] = {{"model", kRunModelFileName}, {"modes", kModesFileName}, {"vtk", kVtkFolderName}};
+  return j.dump(2, ' ', false, ordered_json::error_handler_t::replace);
+}
+
+RunReport run_modes_to_folder(const Model& model, const std::filesystem::path& folder,
+                              const RunControl& control, const EachModes& each) {
+  const Assembler assembler(model);  // may throw before any file is touched
+  ResultFolder results(folder, model.output.summary_file);
+  std::optional<OutputError> output_error;
+  ModalRun run;
+  try {
+    start_run_folder(results, model,
+                     {{"model", kRunModelFileName}, {"modes", kModesFileName}, {"history", model.output.history_file}});
+    AppendFile table(folder / kModesFileName);
+    table.append(fmt::format("{}\n", fmt::join(modes_columns(model), ",")));
+    VtkWriter shapes(folder / kVtkFolderName, model);
+    std::atomic<bool> stop{false};
+    const RunControl watched = stop_on_write_failure(control, stop, [&] { return output_error.has_value(); });
+    int n_frames = 0;
+    std::vector<double> values;
+    run = compute_modes(assembler, watched, [&](const EquilibriumModes& at) {
+      if (each) each(at);
+      if (output_error) return;
+      try {
+        values.clear();
+        append_modes_rows(assembler, at, n_frames, values);
+        const std::size_t n_columns = modes_columns(model).size();
+        std::string rows;
+        for (std::size_t i = 0; i < values.size(); ++i) {
+          rows += fmt::format("{}{}", values[i], (i + 1) % n_columns == 0 ? '\n' : ',');
+        }
+        table.append(rows);
+        if (!at.modes.ok) return;
+        for (Eigen::Index k = 0; k < at.modes.modes.cols(); ++k) {
+          shapes.record(mode_frame(assembler, at.equilibrium, at.modes.modes.col(k), n_frames++));
+        }
+      } catch (const OutputError& error) {
+        output_error = error;
+      }
+    });
+  } catch (const OutputError& error) {
+    output_error = error;
+  }
+  if (output_error) record_output_failure(run.report, *output_error);
+  results.finish(modes_summary_json(model, run), short_summary_json(model, run.report));
+  if (output_error) throw *output_error;
+  return run.report;
+}
+
+}  // namespace deploydyn

@@ -1,0 +1,73 @@
+#pragma once
+// A modal analysis (analysis.type: modal, solvers/modal_analysis.hpp; docs/theory.md, "Natural
+// frequencies and modes"): the natural frequencies and modes about the static equilibrium at
+// each time of analysis.at (the thermal state at t = 0, then the drivers moved quasi-statically
+// to the time). What run_to_folder does for this
+// type, and what `deploydyn modes` and the Python module's Model.modes / Model.run compute.
+//
+// In a result folder (output/run_folder.hpp): summary.json saying "running", model.yaml, then
+// per time, as soon as its modes are found, its rows of modes.csv and its frames of the mode
+// shapes' ParaView series vtk/deploydyn.pvd (a run stopped part-way keeps every time it
+// finished), and summary.json at the end: status, the frequencies per time, the files.
+//
+// modes.csv, one row per time and mode:
+//   frame              the row's frame in vtk/deploydyn.pvd (the frame's "time" field)
+//   t                  s, where the drivers stand
+//   mode               1, 2, … in ascending ω²
+//   omega2             ω² (rad²/s²); < 0: the equilibrium is unstable
+//   frequency          f = ω / 2π (Hz); nan where ω² < 0
+//   dT_C               the model-wide ΔT(t) (°C)
+//   position.<driver>  the driver's motion from the initial state at t: rad (bar_angle) or
+//                      m (coordinate)
+// A time without modes (no equilibrium found) has no rows, and summary.json says why.
+// Frame k is the equilibrium moved along the mode of row k until its largest nodal displacement
+// is a tenth of the shortest bar; its vector field velocity_m_s holds the M-orthonormal mode.
+
+#include <Eigen/Core>
+#include <filesystem>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "deploydyn/assembly/assembler.hpp"
+#include "deploydyn/solvers/analysis.hpp"
+#include "deploydyn/solvers/modal_analysis.hpp"
+
+namespace deploydyn {
+
+inline constexpr const char* kModesFileName = "modes.csv";
+
+// One time's outcome, as summary.json lists it.
+struct ModesSummary {
+  double time_s = 0.0;
+  Eigen::VectorXd omega2_rad2_s2;  // empty when no modes were found
+  std::string failure;             // why not, or empty
+};
+
+struct ModalRun {
+  RunReport report;  // completed; failed when a time has no modes (the others are still done);
+                     // interrupted when `control` stopped it
+  std::vector<ModesSummary> times;
+};
+
+using EachModes = std::function<void(const EquilibriumModes&)>;
+
+// The modes at every time of the model's analysis.modal, handing each time's to `each` as it
+// is found (may be empty). Throws std::invalid_argument when the model's mechanics cannot be
+// built.
+ModalRun compute_modes(const Assembler& assembler, const RunControl& control, const EachModes& each);
+
+// The same in a folder it owns, as run_to_folder. Throws std::invalid_argument as above
+// (before any file is touched), OutputError when the folder is in use or a file cannot be
+// written (summary.json then says "failed" and why, and the files keep what was written).
+RunReport run_modes_to_folder(const Model& model, const std::filesystem::path& folder,
+                              const RunControl& control = {}, const EachModes& each = {});
+
+std::vector<std::string> modes_columns(const Model& model);
+// The rows of one time (none when it has no modes), in the order of modes_columns, the first
+// numbered `first_frame`.
+void append_modes_rows(const Assembler& assembler, const EquilibriumModes& at, int first_frame,
+                       std::vector<double>& values);
+std::string modes_summary_json(const Model& model, const ModalRun& run);
+
+}  // namespace deploydyn

@@ -1,0 +1,42 @@
+#include "deploydyn/output/run_folder.hpp"
+
+#include <sstream>
+#include <utility>
+
+#include "deploydyn/io/model_writer.hpp"
+#include "deploydyn/output/checked_file.hpp"
+#include "deploydyn/output/vtk_writer.hpp"
+
+namespace deploydyn {
+
+void start_run_folder(ResultFolder& results, const Model& model, const ResultFolder::Files& files) {
+  results.start("model", model.name, files);
+  remove_vtk_series(results.path() / kVtkFolderName);
+  std::ostringstream model_text;
+  save_model(model, model_text);
+  write_file(results.path() / kRunModelFileName, model_text.str());
+}
+
+void record_output_failure(RunReport& report, const OutputError& error) {
+  if (report.status == RunStatus::failed) return;
+  report.status = RunStatus::failed;
+  report.failure = FailureReport{};
+  report.failure.phase = "writing results";
+  report.failure.time_s = report.time_reached_s;
+  report.failure.step = report.steps;
+  report.failure.reason = error.what();
+  report.message = std::string("writing results failed: ") + error.what();
+}
+
+RunControl stop_on_write_failure(const RunControl& control, std::atomic<bool>& stop,
+                                 std::function<bool()> write_failed) {
+  RunControl watched = control;
+  watched.stop = &stop;
+  watched.poll = [&stop, control, write_failed = std::move(write_failed)] {
+    if (control.poll) control.poll();
+    if ((control.stop != nullptr && control.stop->load()) || write_failed()) stop.store(true);
+  };
+  return watched;
+}
+
+}  // namespace deploydyn
