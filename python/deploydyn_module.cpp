@@ -331,7 +331,8 @@ py::dict analysis_info(const Model& model) {
 // every ΔT, "load" the loads and gravity, "driver" is the time of a quasi-static deployment;
 // from the model's initial state at μ = start.
 py::dict continuation_of(const LoadedModel& loaded, const std::string& parameter, double start,
-                         double end, int n_eigenvalues, int max_steps, double time_s) {
+                         double end, int n_eigenvalues, int max_steps, double time_s,
+                         bool switch_branch) {
   const std::optional<PathParameter> path_parameter = kPathParameters.find(parameter);
   if (!path_parameter) {
     throw std::invalid_argument("continuation: parameter must be 'thermal', 'load' or 'driver', got '" +
@@ -345,6 +346,7 @@ py::dict continuation_of(const LoadedModel& loaded, const std::string& parameter
   options.n_eigenvalues = n_eigenvalues;
   options.max_steps = max_steps;
   options.time_s = time_s;
+  options.switch_branch = switch_branch;
   options.newton = loaded.model.analysis.newton;
   validate(options);  // std::invalid_argument → ValueError
   ContinuationResult result;
@@ -512,7 +514,7 @@ PYBIND11_MODULE(_core, m) {
            "The model as a model file with every default explicit (save_model)")
       .def("modes", &modes_at, py::arg("n_modes"), py::arg("times"))
       .def("continuation", &continuation_of, py::arg("parameter"), py::arg("start"), py::arg("end"),
-           py::arg("eigenvalues"), py::arg("max_steps"), py::arg("time"))
+           py::arg("eigenvalues"), py::arg("max_steps"), py::arg("time"), py::arg("switch_branch"))
       .def("run_in_memory", &run_in_memory)
       .def("run_into_folder", &run_into_folder, py::arg("folder"));
 

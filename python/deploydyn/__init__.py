@@ -377,13 +377,16 @@ class Model:
             result.raise_for_status()
         return result
 
-    def continuation(self, parameter, end, start=0.0, eigenvalues=3, max_steps=2000, time=0.0):
+    def continuation(self, parameter, end, start=0.0, eigenvalues=3, max_steps=2000, time=0.0,
+                     switch_branch=False):
         """Trace the static equilibrium as `parameter` goes from `start` to `end`, through limit
         points (arc-length continuation, docs/theory.md "Path following and stability"), as a
         model of `analysis: {type: continuation}` does: "thermal" scales every ΔT (μ = 1: the
         model's own), "load" scales the loads and gravity; drivers and ΔT(t) are read at `time`
         (s). "driver" follows a quasi-static deployment: μ is the time (s) at which the drivers'
-        positions, ΔT(t) and the loads are read (`time` is not used). Returns a dict: "mu", "displacement_norm" (m), "eigenvalues" (points × eigenvalues,
+        positions, ΔT(t) and the loads are read (`time` is not used). With `switch_branch`, the
+        path leaves at its first bifurcation along the critical mode and follows the bifurcated
+        branch. Returns a dict: "mu", "displacement_norm" (m), "eigenvalues" (points × eigenvalues,
         N/m, of the tangent stiffness on the constraint-compatible motions; NaN when not
         computed), "n_negative", "q" (points × coordinates), "events" (dicts with "kind"
         limit_point | bifurcation | singular_constraints, "mu", "mu_error", "point", "mode",
@@ -395,7 +398,9 @@ class Model:
         eigenvalues = _count(where, "eigenvalues", eigenvalues, minimum=0)
         max_steps = _count(where, "max_steps", max_steps)
         time = float(_number(where, "time", time))
-        raw = self._core.continuation(parameter, start, end, eigenvalues, max_steps, time)
+        if not isinstance(switch_branch, bool):
+            raise TypeError(f"{where}: switch_branch must be a bool, not {_shown(switch_branch)}")
+        raw = self._core.continuation(parameter, start, end, eigenvalues, max_steps, time, switch_branch)
         out = dict(raw)
         for key in ("mu", "displacement_norm", "eigenvalues", "n_negative", "q"):
             out[key] = np.asarray(raw[key])

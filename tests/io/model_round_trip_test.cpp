@@ -134,7 +134,7 @@ elements:
 supports: [{node: A}, {node: B}]
 loads: [{node: C, force: [0, -1.0e+4]}]
 analysis: {type: continuation, parameter: load, start: -0.25, end: 1.1, eigenvalues: 2, max_steps: 300,
-           linear_solver: dense, newton: {tol_force: 1.0e-9}}
+           switch_branch: true, linear_solver: dense, newton: {tol_force: 1.0e-9}}
 )", "continuation");
   const ContinuationSettings& c = model.analysis.continuation;
   EXPECT_EQ(model.analysis.type, AnalysisType::continuation);
@@ -143,11 +143,13 @@ analysis: {type: continuation, parameter: load, start: -0.25, end: 1.1, eigenval
   EXPECT_EQ(c.end, 1.1);
   EXPECT_EQ(c.n_eigenvalues, 2);
   EXPECT_EQ(c.max_steps, 300);
+  EXPECT_TRUE(c.switch_branch);
   EXPECT_EQ(model.analysis.newton.force_tolerance, 1e-9);
   expect_round_trip(model);
   const Model reloaded = load_model_from_string(saved(model), "saved");
   EXPECT_EQ(reloaded.analysis.continuation.parameter, c.parameter);
   EXPECT_EQ(reloaded.analysis.continuation.start, c.start);
+  EXPECT_TRUE(reloaded.analysis.continuation.switch_branch);
   EXPECT_EQ(reloaded.analysis.continuation.end, c.end);
   EXPECT_EQ(reloaded.analysis.continuation.n_eigenvalues, c.n_eigenvalues);
   EXPECT_EQ(reloaded.analysis.continuation.max_steps, c.max_steps);

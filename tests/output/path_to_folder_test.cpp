@@ -84,12 +84,31 @@ void expect_rows_equal_points(const std::filesystem::path& file, const Continuat
   EXPECT_EQ(i, result.points.size());
 }
 
+// The polls (one before every step) after which the full path keeps its first and its second
+// event.
+std::pair<int, int> polls_at_first_two_events(const Model& model) {
+  const Assembler assembler(model);
+  ContinuationOptions options = path_options(model);
+  int polls = 0;
+  std::vector<int> at;
+  options.poll = [&] { ++polls; };
+  options.on_point = [&](const PathPoint&, const PathEvent* event) {
+    if (event != nullptr) at.push_back(polls);
+  };
+  const auto system = make_linear_system(assembler);
+  trace_path(assembler, options, *system, assembler.initial_coordinates(),
+             Eigen::VectorXd::Zero(assembler.n_equations()));
+  return at.size() >= 2 ? std::pair{at[0], at[1]} : std::pair{-1, -1};
+}
+
 TEST(PathToFolder, StoppedPathKeepsEveryPointItReached) {
-  // The full path has 97 points, the first limit point its 22nd: stopping at the 40th poll
-  // leaves it past that one, before the second.
+  // Stopped half way between the snap-through's two limit points: past the first.
   const Model model = mises_path(2000);
+  const auto [first, second] = polls_at_first_two_events(model);
+  ASSERT_GT(second, first + 1) << "the Mises path has two limit points, steps apart";
+  const int stop_at = (first + second) / 2;
   const ScratchFolder folder("path_stopped");
-  StopAfter in_folder(40), in_memory(40);
+  StopAfter in_folder(stop_at), in_memory(stop_at);
   const RunReport report = run_path_to_folder(model, folder.path(), in_folder.control());
   EXPECT_EQ(report.status, RunStatus::interrupted) << report.message;
   const ContinuationResult result = traced(model, in_memory.control());

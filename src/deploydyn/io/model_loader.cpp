@@ -501,8 +501,8 @@ class ModelReader {
   // type: continuation: `end` is the parameter's last value, not a time; time-stepping keys do
   // not apply and are rejected.
   void read_continuation(const YamlValue& spec) {
-    spec.expect_keys({"type", "parameter", "start", "end", "eigenvalues", "max_steps", "newton",
-                      "linear_solver"});
+    spec.expect_keys({"type", "parameter", "start", "end", "eigenvalues", "max_steps", "switch_branch",
+                      "newton", "linear_solver"});
     AnalysisOptions& analysis = model_.analysis;
     analysis.type = AnalysisType::continuation;
     ContinuationSettings& c = analysis.continuation;
@@ -516,6 +516,7 @@ class ModelReader {
     }
     if (const auto eigenvalues = spec.find("eigenvalues")) c.n_eigenvalues = eigenvalues->integer(0);
     if (const auto max_steps = spec.find("max_steps")) c.max_steps = max_steps->integer(1);
+    if (const auto branch = spec.find("switch_branch")) c.switch_branch = branch->choice({"false", "true"}) == 1;
     if (const auto solver = spec.find("linear_solver")) read_linear_solver(*solver);
     if (const auto newton = spec.find("newton")) read_newton(*newton);
   }

@@ -244,6 +244,10 @@ void emit_analysis(YAML::Emitter& out, const Model& model) {
     out << c.n_eigenvalues;
     emit_key(out, "max_steps");
     out << c.max_steps;
+    if (c.switch_branch) {
+      emit_key(out, "switch_branch");
+      out << true;
+    }
   } else if (analysis.type == AnalysisType::modal) {
     // Only the keys a modal analysis reads (io/model_loader.cpp, read_modal).
     const ModalSettings& modal = analysis.modal;

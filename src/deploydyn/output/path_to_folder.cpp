@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include <atomic>
+#include <algorithm>
 #include <chrono>
 #include <optional>
 #include <nlohmann/json.hpp>
@@ -78,6 +79,7 @@ ContinuationOptions path_options(const Model& model) {
   options.end = settings.end;
   options.n_eigenvalues = settings.n_eigenvalues;
   options.max_steps = settings.max_steps;
+  options.switch_branch = settings.switch_branch;
   options.newton = model.analysis.newton;
   return options;
 }
@@ -168,7 +170,14 @@ RunReport run_path_to_folder(const Model& model, const std::filesystem::path& fo
                   : result.end == ContinuationEnd::stopped   ? RunStatus::interrupted
                                                              : RunStatus::failed;
   report.message = result.message;
-  for (const PathEvent& e : result.events) report.message += "; " + e.description;
+  // The first events in words; all of them are in summary.json.
+  constexpr std::size_t kEventsInMessage = 3;
+  for (std::size_t i = 0; i < std::min(result.events.size(), kEventsInMessage); ++i) {
+    report.message += "; " + result.events[i].description;
+  }
+  if (result.events.size() > kEventsInMessage) {
+    report.message += fmt::format("; {} more events in summary.json", result.events.size() - kEventsInMessage);
+  }
   if (report.status == RunStatus::failed) {
     report.failure.phase = "continuation";
     report.failure.reason = result.message;
