@@ -16,6 +16,7 @@
 
 #include "deploydyn/assembly/assembler.hpp"
 #include "deploydyn/assembly/linear_system_factory.hpp"
+#include "deploydyn/elements/element_kinds.hpp"
 #include "deploydyn/io/input_error.hpp"
 #include "deploydyn/io/model_loader.hpp"
 #include "deploydyn/io/text_file.hpp"
@@ -128,31 +129,50 @@ int check_command(const std::string& model_file, const std::vector<std::string>&
   }
   const int driver_rows = assembler.n_equations() - support_rows;
   double mass = 0.0;
-  for (const BarElement& b : model.bars) mass += b.mass_kg;
+  for (const ElementRef& e : all_elements(model)) mass += e.kind->mass_kg(model, e.index);
   for (const Node& n : model.nodes) mass += n.point_mass_kg;
   auto names = [](const auto& items) {
     std::vector<std::string> out;
     for (const auto& item : items) out.push_back(item.name);
     return fmt::format("{}", fmt::join(out, ", "));
   };
+  // Per element type present: "3 bars: 1, 2, 3", the rigid-body conditions "3 bars", its plural.
+  std::vector<std::string> element_lists, rigid_conditions, kinds_present;
+  const auto kinds = element_kinds();
+  for (std::size_t g = 0; g < kinds.size(); ++g) {
+    const int n = kinds[g]->n_elements(model);
+    if (n == 0) continue;
+    const std::string plural = std::string(kinds[g]->name()) + "s";
+    std::vector<std::string> element_names;
+    for (int e = 0; e < n; ++e) element_names.push_back(kinds[g]->element_name(model, e));
+    element_lists.push_back(fmt::format("{} {}: {}", n, plural, fmt::join(element_names, ", ")));
+    const int conditions = assembler.element_groups()[g]->n_rigid_body_conditions();
+    rigid_conditions.push_back(conditions == n ? fmt::format("{} {}", n, plural)
+                                               : fmt::format("{} for {} {}", conditions, n, plural));
+    kinds_present.push_back(plural);
+  }
+  const std::string elements_word = fmt::format("{}", fmt::join(kinds_present, " and "));
   const int free_motion = assembler.rigid_mobility() + driver_rows;  // before the drivers
   const AnalysisOptions& a = model.analysis;
 
   fmt::print("model       {} ({})\n", model.name.empty() ? "(unnamed)" : model.name, model_file);
   fmt::print("dimension   {}D\n", model.dimension);
   fmt::print("nodes       {}: {}\n", model.n_nodes(), names(model.nodes));
-  fmt::print("elements    {} bars: {}; total mass {:.6g} kg\n", model.n_bars(), names(model.bars), mass);
+  fmt::print("elements    {}; total mass {:.6g} kg\n", fmt::join(element_lists, "; "), mass);
   fmt::print("supports    {} ({} equations)\n", model.supports.size(), support_rows);
   fmt::print("drivers     {} ({} equations){}{}\n", model.drivers.size(), driver_rows,
              model.drivers.empty() ? "" : ": ", names(model.drivers));
   fmt::print("unknowns    {} coordinates + {} multipliers\n", assembler.n_dofs(), assembler.n_equations());
-  fmt::print("mobility    {} coordinates − {} support equations − {} bars = {} with rigid bars; "
+  fmt::print("mobility    {} coordinates − {} support equations − {} = {} with rigid {}; "
              "{} after the drivers{}\n",
-             assembler.n_dofs(), support_rows, model.n_bars(), free_motion, free_motion - driver_rows,
-             free_motion - driver_rows == 0   ? " (driven mechanism, kinematically determinate)"
-             : free_motion - driver_rows > 0 ? " (free motion left: a dynamic run is needed)"
-                                             : " (over-constrained with rigid bars: bars will be strained)");
-  fmt::print("thermal     ΔT(0) = {:g} °C on bars without their own\n", model.temperature_change_C.value(0.0));
+             assembler.n_dofs(), support_rows, fmt::join(rigid_conditions, " − "), free_motion, elements_word,
+             free_motion - driver_rows,
+             free_motion - driver_rows == 0 ? " (driven mechanism, kinematically determinate)"
+             : free_motion - driver_rows > 0
+                 ? " (free motion left: a dynamic run is needed)"
+                 : fmt::format(" (over-constrained with rigid {0}: {0} will be strained)", elements_word));
+  fmt::print("thermal     ΔT(0) = {:g} °C on {} without their own\n", model.temperature_change_C.value(0.0),
+             elements_word);
   if (a.type == AnalysisType::continuation) {
     const ContinuationSettings& c = a.continuation;
     fmt::print("analysis    continuation in the {} parameter μ from {:g} to {:g}, at most {} steps, {} "

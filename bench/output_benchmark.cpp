@@ -42,7 +42,7 @@ void BM_MakeStepRecord(benchmark::State& state) {
   const RoofSnapshot roof;
   for (auto _ : state) {
     StepRecord record = make_step_record(*roof.assembler, roof.state, 0.0);
-    benchmark::DoNotOptimize(record.bars.data());
+    benchmark::DoNotOptimize(record.elements.data());
   }
   state.counters["ns_per_value"] = benchmark::Counter(
       roof.n_values(), benchmark::Counter::kIsIterationInvariantRate | benchmark::Counter::kInvert);

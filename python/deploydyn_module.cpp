@@ -22,12 +22,14 @@
 #include <cstring>
 #include <filesystem>
 #include <memory>
+#include <optional>
 #include <sstream>
 #include <string>
 #include <utility>
 #include <vector>
 
 #include "deploydyn/assembly/assembler.hpp"
+#include "deploydyn/elements/element_kinds.hpp"
 #include "deploydyn/generators/roof.hpp"
 #include "deploydyn/io/input_error.hpp"
 #include "deploydyn/io/model_loader.hpp"
@@ -233,18 +235,39 @@ py::list nodes_info(const Model& model) {
   return out;
 }
 
+// An element's entry as a dict (ElementKind::write): names as str, node lists as tuples;
+// functions (a bar's own dT) are left to temperature_changes().
+class DictElementEntry final : public ElementEntryWriter {
+ public:
+  explicit DictElementEntry(py::dict& d) : d_(d) {}
+  void number(std::string_view key, double value) override { d_[py::str(std::string(key))] = value; }
+  void name(std::string_view key, const std::string& value) override { d_[py::str(std::string(key))] = value; }
+  void names(std::string_view key, const std::vector<std::string>& values) override {
+    d_[py::str(std::string(key))] = py::tuple(py::cast(values));
+  }
+  void function(std::string_view, const TimeFunction&) override {}
+
+ private:
+  py::dict& d_;
+};
+
 py::list elements_info(const Model& model) {
   py::list out;
-  for (const BarElement& bar : model.bars) {
+  for (const ElementRef& element : all_elements(model)) {
     py::dict d;
-    d["name"] = bar.name;
-    d["nodes"] = py::make_tuple(model.nodes[bar.node_a].name, model.nodes[bar.node_b].name);
-    d["material"] = model.materials[bar.material].name;
-    d["area"] = bar.area_m2;
-    d["mass"] = bar.mass_kg;
-    d["length"] = bar.reference_length_m;
-    d["E"] = model.materials[bar.material].youngs_modulus_Pa;
-    d["alpha"] = model.materials[bar.material].expansion_per_C;
+    d["name"] = element.kind->element_name(model, element.index);
+    d["type"] = std::string(element.kind->name());
+    DictElementEntry entry(d);
+    element.kind->write(model, element.index, entry);
+    // The material's constants beside its name, for elements made of one.
+    if (d.contains("material")) {
+      const std::string material_name = py::cast<std::string>(d["material"]);
+      for (const Material& material : model.materials) {
+        if (material.name != material_name) continue;
+        d["E"] = material.youngs_modulus_Pa;
+        d["alpha"] = material.expansion_per_C;
+      }
+    }
     out.append(d);
   }
   return out;
@@ -270,14 +293,13 @@ py::list drivers_info(const Model& model) {
   for (const Driver& driver : model.drivers) {
     py::dict d;
     d["name"] = driver.name;
+    d["type"] = std::string(kDriverKinds.name(driver.kind));
     if (driver.kind == Driver::Kind::bar_angle) {
-      d["type"] = "bar_angle";
       d["element"] = model.bars[driver.element].name;
       d["pivot"] = model.nodes[driver.pivot].name;
       d["reading"] = driver.reading == DriverReading::rate ? "angular_velocity" : "angle";
       d["effort"] = "torque";
     } else {
-      d["type"] = "coordinate";
       d["node"] = model.nodes[driver.node].name;
       d["direction"] = std::string(1, "xyz"[driver.direction]);
       d["reading"] = driver.reading == DriverReading::rate ? "velocity" : "displacement";
@@ -311,17 +333,14 @@ py::dict analysis_info(const Model& model) {
 py::dict continuation_of(const LoadedModel& loaded, const std::string& parameter, double start,
                          double end, int n_eigenvalues, int max_steps, double time_s,
                          bool switch_branch) {
-  constexpr PathParameter kParameters[] = {PathParameter::thermal, PathParameter::load,
-                                           PathParameter::driver};
-  const auto named = std::find_if(std::begin(kParameters), std::end(kParameters),
-                                  [&](PathParameter p) { return parameter == to_string(p); });
-  if (named == std::end(kParameters)) {
+  const std::optional<PathParameter> path_parameter = kPathParameters.find(parameter);
+  if (!path_parameter) {
     throw std::invalid_argument("continuation: parameter must be 'thermal', 'load' or 'driver', got '" +
                                 parameter + "'");
   }
   const Assembler assembler(loaded.model);  // std::invalid_argument → ValueError
   ContinuationOptions options;
-  options.parameter = *named;
+  options.parameter = *path_parameter;
   options.start = start;
   options.end = end;
   options.n_eigenvalues = n_eigenvalues;
@@ -480,13 +499,12 @@ PYBIND11_MODULE(_core, m) {
       .def("temperature_changes",
            [](const LoadedModel& l, double t) {
              std::vector<double> dT;
-             for (const BarElement& bar : l.model.bars) {
-               dT.push_back(bar.temperature_given ? bar.temperature_change_C.value(t)
-                                                  : l.model.temperature_change_C.value(t));
+             for (const ElementRef& e : all_elements(l.model)) {
+               dT.push_back(e.kind->temperature_change_C(l.model, e.index, t));
              }
              return dT;
            },
-           py::arg("t") = 0.0, "ΔT (°C) of every bar at time t, in element order")
+           py::arg("t") = 0.0, "ΔT (°C) of every element at time t, in element order")
       .def("to_yaml",
            [](const LoadedModel& l) {
              std::ostringstream out;

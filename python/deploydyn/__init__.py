@@ -313,8 +313,9 @@ class Model:
 
     @property
     def elements(self):
-        """{name: {"nodes": (a, b), "material", "area" m², "mass" kg, "length" m (L0),
-        "E" Pa, "alpha" 1/°C}}."""
+        """{name: {"type", then the keys of its type as the model file spells them (a bar:
+        "nodes": (a, b), "area" m², "material", "mass" kg, "length" m (L0)), and "E" Pa,
+        "alpha" 1/°C of its material}}."""
         return {e["name"]: e for e in self._core.elements}
 
     @property
@@ -592,6 +593,15 @@ class ModelBuilder:
                 spec[key] = _number(where, key, value)
         if dT is not None:
             spec["dT"] = _time_function(where, "dT", dT)
+        self._section("elements")[_name(where, "name", name)] = spec
+        return self
+
+    def element(self, name, type, **fields):
+        """An element of any type (`type`, e.g. "bar"), its keys as the model file spells them
+        (docs/model-format.md); the loader checks them at `build`."""
+        where = "ModelBuilder.element"
+        spec = {"type": _name(where, "type", type)}
+        spec.update(fields)
         self._section("elements")[_name(where, "name", name)] = spec
         return self
 

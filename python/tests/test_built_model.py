@@ -118,3 +118,19 @@ def test_from_dict_is_the_file_layout():
     model = deploydyn.from_dict(spec, overrides={"analysis.end": 2})
     assert model.analysis["end"] == 2.0
     assert model.run(check=True).values.shape[0] == 3
+
+
+def test_an_element_by_type_is_the_same_bar():
+    def heated(add_bar):
+        builder = (deploydyn.ModelBuilder("heated bar")
+                   .node("A", 0, 0).node("B", 1.5, 0)
+                   .material("steel", E=E, alpha=ALPHA))
+        add_bar(builder)
+        return (builder.support("A").support("B").thermal(100)
+                .analysis(type="static", end=1.0, step=0.5).build())
+    by_method = heated(lambda b: b.bar("1", "A", "B", area=AREA, material="steel", mass=1.2))
+    by_type = heated(lambda b: b.element("1", "bar", nodes=["A", "B"], area=AREA,
+                                         material="steel", mass=1.2))
+    assert by_type.elements == by_method.elements
+    assert by_type.elements["1"]["type"] == "bar"
+    assert by_type.to_yaml() == by_method.to_yaml()

@@ -211,9 +211,9 @@ TEST(LinearSystem, PaperRunIsTheSameWithEveryBackEnd) {
     ASSERT_EQ(runs[k].records.size(), runs[0].records.size());
     for (std::size_t r = 0; r < runs[0].records.size(); ++r) {
       EXPECT_LT((runs[k].records[r].q - runs[0].records[r].q).lpNorm<Eigen::Infinity>(), 1e-12);
-      for (std::size_t b = 0; b < runs[0].records[r].bars.size(); ++b) {
-        EXPECT_NEAR(runs[k].records[r].bars[b].axial_force_N, runs[0].records[r].bars[b].axial_force_N,
-                    1e-6 * (1.0 + std::abs(runs[0].records[r].bars[b].axial_force_N)));
+      for (std::size_t b = 0; b < bar_results(runs[0].records[r]).size(); ++b) {
+        EXPECT_NEAR(bar_results(runs[k].records[r])[b].axial_force_N, bar_results(runs[0].records[r])[b].axial_force_N,
+                    1e-6 * (1.0 + std::abs(bar_results(runs[0].records[r])[b].axial_force_N)));
       }
     }
   }

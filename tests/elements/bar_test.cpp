@@ -1,6 +1,6 @@
 // Bar element (docs/theory.md): derivatives by finite differences, mass by exact kinetic energy,
 // and the physical invariants of rigid motion and free thermal expansion.
-#include "deploydyn/elements/bar.hpp"
+#include "deploydyn/elements/bar/bar.hpp"
 
 #include <gtest/gtest.h>
 

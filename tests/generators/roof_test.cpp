@@ -383,7 +383,7 @@ void expect_upright_with_parallel_posts(const Model& model) {
   }
   double worst_strain = 0.0;
   for (const StepRecord& r : run.records) {
-    for (const BarResult& bar : r.bars) worst_strain = std::max(worst_strain, std::abs(bar.mechanical_strain));
+    for (const BarResult& bar : bar_results(r)) worst_strain = std::max(worst_strain, std::abs(bar.mechanical_strain));
   }
   EXPECT_LT(worst_strain, kDeploymentStrain);
   ::testing::Test::RecordProperty("worst_parallel_rad", fmt::format("{:.3e}", worst_parallel));
@@ -442,7 +442,7 @@ TEST(RoofDeployment, HeatedPlanarTrussOnPinsFansOutAndDeploys) {
   // Heated chords are longer than the rigid bays: post0 leans past upright.
   EXPECT_GT(post_angle(assembler, q, 0), 90.0 * kDegree);
   // Statically determinate: no thermal stress.
-  for (const BarResult& bar : run.records.front().bars) {
+  for (const BarResult& bar : bar_results(run.records.front())) {
     EXPECT_NEAR(bar.mechanical_strain, 0.0, 1e-9);
   }
 }
@@ -490,7 +490,7 @@ TEST(RoofDeployment, HeatedThreeDimensionalRoofOnSlidingBearingsDeploysAsItDoesC
                 kFollowerUprightTolerance_rad)
         << model.bars[post].name;
   }
-  for (const BarResult& bar : run.records.front().bars) {
+  for (const BarResult& bar : bar_results(run.records.front())) {
     EXPECT_LT(std::abs(bar.mechanical_strain), kFreeExpansionStrain);
   }
 }
@@ -516,7 +516,7 @@ void expect_free_thermal_expansion(int n_units, int n_trusses, double delta_t_C)
   }
   EXPECT_LT(worst_m, kFreeExpansionTolerance_m);
   double worst_strain = 0.0;
-  for (const BarResult& bar : run.records.front().bars) {
+  for (const BarResult& bar : bar_results(run.records.front())) {
     worst_strain = std::max(worst_strain, std::abs(bar.mechanical_strain));
   }
   EXPECT_LT(worst_strain, kFreeExpansionStrain);
@@ -548,7 +548,7 @@ TEST(RoofThermal, ThousandUnitsOnSlidingBearingsStartHeated) {
   // vectors, so the expansion takes one load step (256 when it measured node movements; a
   // 10⁴-unit roof then could not start at all).
   EXPECT_EQ(run.report.initial_load_steps, 1);
-  for (const BarResult& bar : run.records.front().bars) {
+  for (const BarResult& bar : bar_results(run.records.front())) {
     EXPECT_LT(std::abs(bar.mechanical_strain), kFreeExpansionStrain);
   }
 }

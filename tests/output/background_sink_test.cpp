@@ -101,8 +101,8 @@ TEST(BackgroundSink, RecordsBuiltOnTheWriterThreadAreTheSolversOwn) {
     EXPECT_EQ(a.q, b.q);
     EXPECT_EQ(a.driver_efforts, b.driver_efforts);
     EXPECT_EQ(a.external_work_J, b.external_work_J);
-    ASSERT_EQ(a.bars.size(), b.bars.size());
-    for (std::size_t k = 0; k < a.bars.size(); ++k) EXPECT_EQ(a.bars[k].axial_force_N, b.bars[k].axial_force_N);
+    ASSERT_EQ(bar_results(a).size(), bar_results(b).size());
+    for (std::size_t k = 0; k < bar_results(a).size(); ++k) EXPECT_EQ(bar_results(a)[k].axial_force_N, bar_results(b)[k].axial_force_N);
   }
 }
 

@@ -65,7 +65,7 @@ double pinned_bar_error(int dimension, const Eigen::Vector3d& direction) {
       const double expected_N = -kAxialStiffness_N * kAlpha * dT;
       for (const StepRecord& r : run.records) {
         // l = L0, so the reported true force N = S l/L0 is S itself.
-        worst = std::max(worst, std::abs(r.bars[0].axial_force_N - expected_N) / std::abs(expected_N));
+        worst = std::max(worst, std::abs(bar_results(r)[0].axial_force_N - expected_N) / std::abs(expected_N));
       }
     }
   }
@@ -89,8 +89,8 @@ FreeBarErrors free_bar_errors(int dimension, int axis) {
     if (run.records.empty()) worst = {kNoResult, kNoResult};
     for (const StepRecord& r : run.records) {
       const double expected_m = kLength_m * std::sqrt(1.0 + 2.0 * kAlpha * dT.value(r.time_s));
-      worst.length = std::max(worst.length, std::abs(r.bars[0].length_m - expected_m) / expected_m);
-      worst.force = std::max(worst.force, std::abs(r.bars[0].axial_force_N) /
+      worst.length = std::max(worst.length, std::abs(bar_results(r)[0].length_m - expected_m) / expected_m);
+      worst.force = std::max(worst.force, std::abs(bar_results(r)[0].axial_force_N) /
                                               (kAxialStiffness_N * kAlpha * kLargestChange_C));
     }
   };

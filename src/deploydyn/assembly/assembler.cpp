@@ -1,10 +1,13 @@
 #include "deploydyn/assembly/assembler.hpp"
 
+#include <algorithm>
 #include <array>
+#include <cmath>
+#include <limits>
 #include <stdexcept>
 
 #include "deploydyn/constraints/prescribed_coordinates.hpp"
-#include "deploydyn/elements/bar.hpp"
+#include "deploydyn/elements/element_kinds.hpp"
 
 namespace deploydyn {
 namespace {
@@ -19,13 +22,6 @@ using LocalVector = Eigen::Matrix<double, Eigen::Dynamic, 1, 0, kMaxConstraintEq
 using LocalJacobian = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0,
                                     kMaxConstraintEquations, kMaxConstraintDofs>;
 
-
-template <int D>
-bar::Vector<D> node_position(const Eigen::VectorXd& q, std::span<const int> dofs) {
-  bar::Vector<D> x;
-  for (int i = 0; i < D; ++i) x[i] = q[dofs[i]];
-  return x;
-}
 
 std::unique_ptr<Constraint> make_support(const FixedNode& support, const Model& model,
                                          const DofMap& dofs) {
@@ -72,20 +68,7 @@ std::unique_ptr<Constraint> make_driver(const Driver& driver, const Model& model
 }  // namespace
 
 Assembler::Assembler(const Model& model) : model_(model), dofs_(model) {
-  bars_.reserve(model.bars.size());
-  for (const BarElement& e : model.bars) {
-    const Material& material = model.materials[e.material];
-    BarData& bar = bars_.emplace_back();
-    for (int axis = 0; axis < model.dimension; ++axis) {
-      bar.dofs[axis] = dofs_.index(e.node_a, axis);
-      bar.dofs[model.dimension + axis] = dofs_.index(e.node_b, axis);
-    }
-    bar.axial_stiffness_N = material.youngs_modulus_Pa * e.area_m2;
-    bar.reference_length_m = e.reference_length_m;
-    bar.mass_kg = e.mass_kg;
-    bar.expansion_per_C = material.expansion_per_C;
-    bar.temperature_change_C = &e.temperature_change_C;
-  }
+  for (const ElementKind* kind : element_kinds()) groups_.push_back(kind->make_group(model, dofs_));
   for (const FixedNode& support : model.supports) {
     constraints_.push_back(make_support(support, model, dofs_));
   }
@@ -99,8 +82,7 @@ Assembler::Assembler(const Model& model) : model_(model), dofs_(model) {
   }
   for (int index : driver_constraint_) driver_rows_.push_back(first_row_[index]);
 
-  const int block = 2 * model.dimension;
-  n_matrix_entries_ = model.n_bars() * block * block;
+  for (const auto& group : groups_) n_matrix_entries_ += group->n_matrix_entries();
   for (const Node& node : model.nodes) n_matrix_entries_ += node.point_mass_kg != 0.0 ? model.dimension : 0;
   for (const auto& c : constraints_) {
     const int n_local = static_cast<int>(c->dofs().size());
@@ -115,7 +97,7 @@ Assembler::Assembler(const Model& model) : model_(model), dofs_(model) {
 }
 
 Eigen::VectorXd Assembler::initial_coordinates() const {
-  Eigen::VectorXd q(n_dofs());
+  Eigen::VectorXd q = Eigen::VectorXd::Zero(n_dofs());  // element-added unknowns start at 0
   for (int node = 0; node < model_.n_nodes(); ++node) {
     for (int axis = 0; axis < model_.dimension; ++axis) {
       q[dofs_.index(node, axis)] = model_.nodes[node].position_m[axis];
@@ -124,64 +106,22 @@ Eigen::VectorXd Assembler::initial_coordinates() const {
   return q;
 }
 
-double Assembler::thermal_strain(int bar, double t) const {
-  return bars_[bar].expansion_per_C * bars_[bar].temperature_change_C->value(t);
-}
-
-template <int D>
-void Assembler::for_each_bar(const Eigen::VectorXd& q, double t, double thermal_factor,
-                             auto&& visit) const {
-  for (int b = 0; b < model_.n_bars(); ++b) {
-    const std::span<const int> d(bars_[b].dofs.data(), 2 * D);
-    const bar::Section section{bars_[b].axial_stiffness_N, bars_[b].reference_length_m};
-    const bar::State<D> state =
-        bar::evaluate<D>(node_position<D>(q, d.first(D)), node_position<D>(q, d.last(D)), section,
-                         thermal_factor * thermal_strain(b, t));
-    visit(b, d, state, section);
-  }
-}
-
-// Calls body(std::integral_constant<int, D>) with the model's dimension D = 2 or 3, so that
-// the element kernels run with fixed-size matrices.
-template <class Body>
-void with_dimension(int dimension, Body&& body) {
-  if (dimension == 2) {
-    body(std::integral_constant<int, 2>{});
-  } else {
-    body(std::integral_constant<int, 3>{});
-  }
+int Assembler::n_rigid_body_conditions() const {
+  int n = 0;
+  for (const auto& group : groups_) n += group->n_rigid_body_conditions();
+  return n;
 }
 
 void Assembler::internal_force(const Eigen::VectorXd& q, double t, double thermal_factor,
                                Eigen::VectorXd& f) const {
   f.setZero(n_dofs());
-  with_dimension(model_.dimension, [&](auto dim) {
-    constexpr int D = decltype(dim)::value;
-    for_each_bar<D>(q, t, thermal_factor, [&](int, std::span<const int> d, const auto& s,
-                                              const bar::Section& section) {
-      const bar::ElementVector<D> fe = bar::internal_force<D>(s, section);
-      for (int i = 0; i < 2 * D; ++i) f[d[i]] += fe[i];
-    });
-  });
-}
-
-void Assembler::add_thermal_strain_change(const Eigen::VectorXd& q, double t, auto&& change,
-                                          Eigen::VectorXd& f) const {
-  with_dimension(model_.dimension, [&](auto dim) {
-    constexpr int D = decltype(dim)::value;
-    for_each_bar<D>(q, t, 1.0, [&](int b, std::span<const int> d, const auto& s,
-                                   const bar::Section& section) {
-      const bar::ElementVector<D> fe = change(b) * bar::internal_force_per_thermal_strain<D>(s, section);
-      for (int i = 0; i < 2 * D; ++i) f[d[i]] += fe[i];
-    });
-  });
+  for (const auto& group : groups_) group->add_internal_force(q, t, thermal_factor, f);
 }
 
 void Assembler::thermal_force_derivative(const Eigen::VectorXd& q, double t,
                                          Eigen::VectorXd& f) const {
   f.setZero(n_dofs());
-  // The thermal strain of the factor is factor · ε_t: chain rule through ∂f/∂ε_t.
-  add_thermal_strain_change(q, t, [&](int b) { return thermal_strain(b, t); }, f);
+  for (const auto& group : groups_) group->add_thermal_force_derivative(q, t, f);
 }
 
 void Assembler::static_residual_time_derivative(const Eigen::VectorXd& q, double t,
@@ -189,10 +129,7 @@ void Assembler::static_residual_time_derivative(const Eigen::VectorXd& q, double
                                                 Eigen::VectorXd& dr,
                                                 Eigen::VectorXd& dphi) const {
   dr.setZero(n_dofs());
-  add_thermal_strain_change(
-      q, t,
-      [&](int b) { return bars_[b].expansion_per_C * bars_[b].temperature_change_C->derivative(t); },
-      dr);
+  for (const auto& group : groups_) group->add_thermal_force_rate(q, t, dr);
   const int dim = model_.dimension;
   for (const NodalLoad& load : model_.loads) {  // gravity does not change with t
     const double rate = load.factor.derivative(t);
@@ -214,12 +151,7 @@ void Assembler::external_force(double t, Eigen::VectorXd& f) const {
   f.setZero(n_dofs());
   const int dim = model_.dimension;
   if (!model_.gravity_m_s2.isZero()) {
-    // Each bar's weight is shared equally by its two nodes (docs/theory.md).
-    for (int b = 0; b < model_.n_bars(); ++b) {
-      for (int i = 0; i < 2 * dim; ++i) {
-        f[bars_[b].dofs[i]] += 0.5 * bars_[b].mass_kg * model_.gravity_m_s2[i % dim];
-      }
-    }
+    for (const auto& group : groups_) group->add_weight(model_.gravity_m_s2, f);
     for (int node = 0; node < model_.n_nodes(); ++node) {
       for (int axis = 0; axis < dim; ++axis) {
         f[dofs_.index(node, axis)] += model_.nodes[node].point_mass_kg * model_.gravity_m_s2[axis];
@@ -236,17 +168,7 @@ void Assembler::external_force(double t, Eigen::VectorXd& f) const {
 
 void Assembler::mass_times(const Eigen::VectorXd& a, Eigen::VectorXd& out) const {
   out.setZero(n_dofs());
-  with_dimension(model_.dimension, [&](auto dim) {
-    constexpr int D = decltype(dim)::value;
-    for (int b = 0; b < model_.n_bars(); ++b) {
-      const bar::ElementMatrix<D> m = bar::mass_matrix<D>(bars_[b].mass_kg, model_.analysis.mass);
-      const std::array<int, 6>& d = bars_[b].dofs;
-      bar::ElementVector<D> ae;
-      for (int i = 0; i < 2 * D; ++i) ae[i] = a[d[i]];
-      const bar::ElementVector<D> me = m * ae;
-      for (int i = 0; i < 2 * D; ++i) out[d[i]] += me[i];
-    }
-  });
+  for (const auto& group : groups_) group->add_mass_times(a, out);
   for (int node = 0; node < model_.n_nodes(); ++node) {
     for (int axis = 0; axis < model_.dimension; ++axis) {
       const int i = dofs_.index(node, axis);
@@ -302,22 +224,14 @@ void Assembler::constraint_rates(const Eigen::VectorXd& q, const Eigen::VectorXd
   }
 }
 
-// The one traversal of the iteration matrix's blocks, shared by the pattern (matrix_entries)
-// and the values (iteration_matrix) so that the two cannot disagree on order. Fixed order:
-// bars, point masses, then per constraint s·B, s·Bᵀ and (if nonlinear) H(λ).
+// The one traversal of the iteration matrix's blocks after the elements', shared by the pattern
+// (matrix_entries) and the values (iteration_matrix) so that the two cannot disagree on order.
+// Fixed order: element groups (written by the groups themselves), point masses, then per
+// constraint s·B, s·Bᵀ and (if nonlinear) H(λ).
 template <class Emit>
-void Assembler::for_each_matrix_block(const Eigen::VectorXd& q, double t, double thermal_factor,
+void Assembler::for_each_matrix_block(const Eigen::VectorXd& q, double t,
                                       const Eigen::VectorXd& lambda, const MatrixWeights& w,
                                       Emit&& emit) const {
-  with_dimension(model_.dimension, [&](auto dim) {
-    constexpr int D = decltype(dim)::value;
-    for_each_bar<D>(q, t, thermal_factor, [&](int b, std::span<const int> d, const auto& s,
-                                              const bar::Section& section) {
-      bar::ElementMatrix<D> k = w.stiffness * bar::tangent<D>(s, section);
-      if (w.mass != 0.0) k += w.mass * bar::mass_matrix<D>(bars_[b].mass_kg, model_.analysis.mass);
-      emit(d, d, k);
-    });
-  });
   for (int node = 0; node < model_.n_nodes(); ++node) {
     if (model_.nodes[node].point_mass_kg == 0.0) continue;
     for (int axis = 0; axis < model_.dimension; ++axis) {
@@ -358,7 +272,10 @@ void Assembler::iteration_matrix(const Eigen::VectorXd& q, double t, double ther
   system.set_zero();
   const std::span<double> values = system.values();
   const int* slot = system.slots().data();
-  for_each_matrix_block(q, t, thermal_factor, lambda, w,
+  for (const auto& group : groups_) {
+    group->add_iteration_matrix(q, t, thermal_factor, {w.stiffness, w.mass}, values, slot);
+  }
+  for_each_matrix_block(q, t, lambda, w,
                         [&](std::span<const int> rows, std::span<const int> cols, const auto& block) {
                           for (std::size_t j = 0; j < cols.size(); ++j) {
                             for (std::size_t i = 0; i < rows.size(); ++i) values[*slot++] += block(i, j);
@@ -371,7 +288,8 @@ std::vector<MatrixEntry> Assembler::matrix_entries() const {
   entries.reserve(n_matrix_entries_);
   const Eigen::VectorXd q = initial_coordinates();
   const Eigen::VectorXd lambda = Eigen::VectorXd::Zero(n_equations());
-  for_each_matrix_block(q, 0.0, 1.0, lambda, {1.0, 1.0, 1.0},
+  for (const auto& group : groups_) group->append_matrix_entries(entries);
+  for_each_matrix_block(q, 0.0, lambda, {1.0, 1.0, 1.0},
                         [&](std::span<const int> rows, std::span<const int> cols, const auto&) {
                           for (const int col : cols) {
                             for (const int row : rows) entries.push_back({row, col});
@@ -382,40 +300,53 @@ std::vector<MatrixEntry> Assembler::matrix_entries() const {
 
 double Assembler::stiffness_scale(const Eigen::VectorXd& q, double t) const {
   double scale = 0.0;
-  with_dimension(model_.dimension, [&](auto dim) {
-    constexpr int D = decltype(dim)::value;
-    for_each_bar<D>(q, t, 1.0, [&](int, std::span<const int>, const auto& s,
-                                   const bar::Section& section) {
-      scale = std::max(scale, bar::tangent<D>(s, section).diagonal().cwiseAbs().maxCoeff());
-    });
-  });
+  for (const auto& group : groups_) scale = std::max(scale, group->largest_stiffness_diagonal(q, t));
   return scale > 0.0 ? scale : 1.0;
 }
 
-BarResult Assembler::bar_result(int b, const Eigen::VectorXd& q, double t,
-                                double thermal_factor) const {
-  BarResult result;
-  with_dimension(model_.dimension, [&](auto dim) {
-    constexpr int D = decltype(dim)::value;
-    const std::span<const int> d(bars_[b].dofs.data(), 2 * D);
-    const bar::State<D> s = bar::evaluate<D>(
-        node_position<D>(q, d.first(D)), node_position<D>(q, d.last(D)),
-        {bars_[b].axial_stiffness_N, bars_[b].reference_length_m},
-        thermal_factor * thermal_strain(b, t));
-    result = {s.strain, s.mechanical_strain, s.axial_force_N, s.length_m};
-  });
-  return result;
+std::vector<double> Assembler::element_quantity(std::string_view name, const Eigen::VectorXd& q,
+                                                double t, double thermal_factor) const {
+  std::vector<double> values;
+  std::vector<double> results;
+  const auto kinds = element_kinds();
+  for (std::size_t g = 0; g < groups_.size(); ++g) {
+    const int k = quantity_index(*kinds[g], name);
+    if (k < 0) continue;
+    results.resize(kinds[g]->quantities().size());
+    for (int e = 0; e < groups_[g]->n_elements(); ++e) {
+      groups_[g]->results(e, q, t, thermal_factor, results);
+      values.push_back(results[static_cast<std::size_t>(k)]);
+    }
+  }
+  return values;
+}
+
+double Assembler::shortest_element_m() const {
+  double shortest = std::numeric_limits<double>::infinity();
+  for (const auto& group : groups_) {
+    for (int e = 0; e < group->n_elements(); ++e) shortest = std::min(shortest, group->reference_length_m(e));
+  }
+  return std::isfinite(shortest) ? shortest : 1.0;
+}
+
+double Assembler::longest_element_m() const {
+  double longest = 0.0;
+  for (const auto& group : groups_) {
+    for (int e = 0; e < group->n_elements(); ++e) longest = std::max(longest, group->reference_length_m(e));
+  }
+  return longest > 0.0 ? longest : 1.0;
+}
+
+double Assembler::largest_relative_change(const Eigen::VectorXd& q,
+                                          const Eigen::VectorXd& q_before) const {
+  double largest = 0.0;
+  for (const auto& group : groups_) largest = std::max(largest, group->largest_relative_change(q, q_before));
+  return largest;
 }
 
 double Assembler::strain_energy(const Eigen::VectorXd& q, double t) const {
   double energy = 0.0;
-  with_dimension(model_.dimension, [&](auto dim) {
-    constexpr int D = decltype(dim)::value;
-    for_each_bar<D>(q, t, 1.0, [&](int, std::span<const int>, const auto& s,
-                                   const bar::Section& section) {
-      energy += bar::strain_energy<D>(s, section);
-    });
-  });
+  for (const auto& group : groups_) energy += group->strain_energy(q, t);
   return energy;
 }
 

@@ -1,12 +1,15 @@
 #pragma once
-// Builds the mechanics of a Model (bars, constraints, loads) and evaluates the global
+// Builds the mechanics of a Model (elements of every type, constraints, loads) and evaluates the global
 // quantities the solvers need, for
 //   M q̈ + f_int(q, t) + Bᵀλ = f_ext(t),   Φ(q, t) = 0          (docs/theory.md, paper Eq. 8)
-// Elements and constraints return local vectors and matrices; this class scatters them.
+// Element groups (elements/element.hpp) add their share of each global quantity; constraints
+// return local vectors and matrices, which this class scatters.
 // It holds no solution state: q, q̇, λ are always passed in.
 
 #include <Eigen/Core>
 #include <array>
+#include <span>
+#include <string_view>
 #include <memory>
 #include <string>
 #include <vector>
@@ -14,18 +17,11 @@
 #include "deploydyn/assembly/linear_system.hpp"
 #include "deploydyn/constraints/constraint.hpp"
 #include "deploydyn/constraints/driven_bar_angle.hpp"
+#include "deploydyn/elements/element.hpp"
 #include "deploydyn/model/dof_map.hpp"
 #include "deploydyn/model/model.hpp"
 
 namespace deploydyn {
-
-// What one bar reports at one configuration (history.csv columns).
-struct BarResult {
-  double strain = 0.0;             // total Green–Lagrange
-  double mechanical_strain = 0.0;  // total − thermal
-  double axial_force_N = 0.0;      // true axial force, tension positive
-  double length_m = 0.0;
-};
 
 class Assembler {
  public:
@@ -38,9 +34,11 @@ class Assembler {
   int n_dofs() const { return dofs_.n_dofs(); }
   int n_equations() const { return n_equations_; }  // constraint rows
   int n_unknowns() const { return n_dofs() + n_equations(); }
-  // Grübler count with the bars taken as rigid: coordinates − constraint equations − bars.
-  // Positive: a mechanism with free motions; 0: driven and determinate; negative: redundant.
-  int rigid_mobility() const { return n_dofs() - n_equations() - model_.n_bars(); }
+  // Grübler count with the elements taken as rigid: coordinates − constraint equations − the
+  // elements' rigid-body conditions (1 per bar). Positive: a mechanism with free motions; 0:
+  // driven and determinate; negative: redundant.
+  int rigid_mobility() const { return n_dofs() - n_equations() - n_rigid_body_conditions(); }
+  int n_rigid_body_conditions() const;
 
   Eigen::VectorXd initial_coordinates() const;
 
@@ -87,8 +85,23 @@ class Assembler {
   double stiffness_scale(const Eigen::VectorXd& q, double t) const;
   double mass_scale() const { return mass_scale_; }
 
-  // With every ΔT scaled by `thermal_factor`, as in internal_force.
-  BarResult bar_result(int bar, const Eigen::VectorXd& q, double t, double thermal_factor = 1.0) const;
+  // The element groups, one per type of elements/element_kinds.hpp, in that order.
+  const std::vector<std::unique_ptr<ElementGroup>>& element_groups() const { return groups_; }
+  // The quantities ElementKind::quantities() lists for element `element` of group `group`,
+  // with every ΔT scaled by `thermal_factor` as in internal_force.
+  void element_results(int group, int element, const Eigen::VectorXd& q, double t,
+                       double thermal_factor, std::span<double> out) const {
+    groups_[group]->results(element, q, t, thermal_factor, out);
+  }
+  // The quantity named `name` (e.g. "axial_force_N") of every element whose type reports it,
+  // in the order of elements/element_kinds.hpp.
+  std::vector<double> element_quantity(std::string_view name, const Eigen::VectorXd& q,
+                                       double t, double thermal_factor = 1.0) const;
+  // Shortest and longest element reference length (m); 1 without elements.
+  double shortest_element_m() const;
+  double longest_element_m() const;
+  // How far the elements turn or deform between two configurations, as a share of their size.
+  double largest_relative_change(const Eigen::VectorXd& q, const Eigen::VectorXd& q_before) const;
   double strain_energy(const Eigen::VectorXd& q, double t) const;
   // Driver effort: torque (N·m) for bar_angle, force (N) for coordinate drivers.
   double driver_effort(int driver, const Eigen::VectorXd& q, double t,
@@ -104,30 +117,11 @@ class Assembler {
   void evaluate_constraints(const Eigen::VectorXd& q, double t, const Eigen::VectorXd* lambda,
                             Eigen::VectorXd* phi, Eigen::VectorXd* f) const;
   template <class Emit>
-  void for_each_matrix_block(const Eigen::VectorXd& q, double t, double thermal_factor,
-                             const Eigen::VectorXd& lambda, const MatrixWeights& weights,
-                             Emit&& emit) const;
-  template <int D>
-  void for_each_bar(const Eigen::VectorXd& q, double t, double thermal_factor, auto&& visit) const;
-  double thermal_strain(int bar, double t) const;
-  // Σ_b (∂f_b/∂ε_t) δε_b into f: f_int's change along a change δε_b = change(b) of the
-  // thermal strains.
-  void add_thermal_strain_change(const Eigen::VectorXd& q, double t, auto&& change,
-                                 Eigen::VectorXd& f) const;
-
+  void for_each_matrix_block(const Eigen::VectorXd& q, double t, const Eigen::VectorXd& lambda,
+                             const MatrixWeights& weights, Emit&& emit) const;
   const Model& model_;
   DofMap dofs_;
-  // What the loops over bars read, packed in one small record per bar (the model's BarElement
-  // carries names and more): unknowns and section constants.
-  struct BarData {
-    std::array<int, 6> dofs{};  // node a's D coordinates, then node b's
-    double axial_stiffness_N = 0.0;   // EA
-    double reference_length_m = 0.0;  // L0
-    double mass_kg = 0.0;
-    double expansion_per_C = 0.0;     // α
-    const TimeFunction* temperature_change_C = nullptr;  // ΔT(t), in the model
-  };
-  std::vector<BarData> bars_;
+  std::vector<std::unique_ptr<ElementGroup>> groups_;  // [kind of element_kinds()]
   std::vector<std::unique_ptr<Constraint>> constraints_;  // supports first, then drivers
   std::vector<int> first_row_;                            // [constraint] → first λ row
   std::vector<int> driver_rows_;                          // [driver] → first λ row

@@ -16,6 +16,7 @@
 #include <unordered_map>
 
 #include "deploydyn/assembly/assembler.hpp"
+#include "deploydyn/elements/element_kinds.hpp"
 #include "deploydyn/io/text_file.hpp"
 #include "deploydyn/io/yaml_reader.hpp"
 
@@ -38,8 +39,6 @@ constexpr double kMaxSteps = 1e8;
 constexpr int kMaxLoadSteps = 1'000'000;
 // output_interval / step is "whole" up to the rounding of decimal inputs such as 5e-3 / 1e-3.
 constexpr double kWholeMultipleTolerance = 1e-9;
-// Nodes closer than this are at the same position: a bar between them has no direction.
-constexpr double kMinBarLength_m = 1e-12;
 
 // Names head CSV columns and key JSON objects: see io::name_problem.
 void check_name(const std::string& name, const YamlValue& where, std::string_view kind) {
@@ -298,51 +297,66 @@ class ModelReader {
   void read_elements(const YamlValue& section) {
     const auto entries = section.entries();
     if (entries.empty()) section.fail("needs at least one element");
+    const auto kinds = element_kinds();
+    std::vector<std::string_view> kind_names;
+    std::vector<std::vector<std::string_view>> keys_of_kind;  // its fields' keys and "type"
+    for (const ElementKind* kind : kinds) {
+      kind_names.push_back(kind->name());
+      std::vector<std::string_view>& keys = keys_of_kind.emplace_back();
+      for (const ElementField& field : kind->fields()) keys.push_back(field.key);
+      keys.push_back("type");
+    }
     for (const auto& [name, spec] : entries) {
-      spec.expect_keys({"nodes", "area", "material", "mass", "length", "dT"});
-      BarElement bar;
-      bar.name = name;
-      const YamlValue ends = spec.at("nodes");
-      const auto end_names = ends.items(2, 2, "node names");
-      bar.node_a = nodes_.find(end_names[0]);
-      bar.node_b = nodes_.find(end_names[1]);
-      if (bar.node_a == bar.node_b) {
-        ends.fail(
-            fmt::format("a bar needs two different nodes, got '{}' twice", end_names[0].text()));
-      }
-      const double distance =
-          (model_.nodes[bar.node_b].position_m - model_.nodes[bar.node_a].position_m).norm();
-      if (distance < kMinBarLength_m) {
-        ends.fail(fmt::format("zero-length bar: nodes '{}' and '{}' are at the same position",
-                              end_names[0].text(), end_names[1].text()));
-      }
-      bar.area_m2 = spec.at("area").number(Sign::positive, "m²");
-      bar.material = materials_.find(spec.at("material"));
-      const Material& material = model_.materials[bar.material];
-
-      const auto length = spec.find("length");
-      bar.length_given = length.has_value();
-      bar.reference_length_m = length ? length->number(Sign::positive, "m") : distance;
-
-      const auto mass = spec.find("mass");
-      bar.mass_given = mass.has_value();
-      if (mass) {
-        bar.mass_kg = mass->number(Sign::positive, "kg");
-      } else if (material.density_kg_m3) {
-        bar.mass_kg = *material.density_kg_m3 * bar.area_m2 * bar.reference_length_m;
-      } else {
-        spec.fail_key("mass", fmt::format("needs a mass: give 'mass' (kg) here or a 'density' "
-                                          "(kg/m³) in material '{}'",
-                                          material.name));
-      }
-
-      const auto dT = spec.find("dT");
-      bar.temperature_given = dT.has_value();
-      bar.temperature_change_C = dT ? function(*dT) : model_.temperature_change_C;
+      const auto type = spec.is_map() ? spec.find("type") : std::nullopt;
+      const std::size_t k = type ? type->choice(std::span<const std::string_view>(kind_names)) : 0;
+      spec.expect_keys(std::span<const std::string_view>(keys_of_kind[k]));
+      kinds[k]->read(name, ElementEntry(spec, *this), model_);
       elements_.add(name, spec);
-      model_.bars.push_back(bar);
     }
   }
+
+  // An entry of `elements` as its element type reads it (elements/element_entry.hpp).
+  class ElementEntry final : public ElementEntryReader {
+   public:
+    ElementEntry(const YamlValue& spec, const ModelReader& reader) : spec_(spec), reader_(reader) {}
+
+    bool has(std::string_view key) const override { return spec_.find(key).has_value(); }
+    double number(std::string_view key, ValueSign sign, std::string_view unit) const override {
+      return spec_.at(key).number(io_sign(sign), unit);
+    }
+    std::optional<double> optional_number(std::string_view key, ValueSign sign,
+                                          std::string_view unit) const override {
+      const auto value = spec_.find(key);
+      return value ? std::optional<double>(value->number(io_sign(sign), unit)) : std::nullopt;
+    }
+    std::vector<int> nodes(std::string_view key, int count) const override {
+      std::vector<int> indices;
+      const auto n = static_cast<std::size_t>(count);
+      for (const YamlValue& name : spec_.at(key).items(n, n, "node names")) indices.push_back(reader_.nodes_.find(name));
+      return indices;
+    }
+    int material(std::string_view key) const override { return reader_.materials_.find(spec_.at(key)); }
+    TimeFunction function(std::string_view key) const override { return reader_.function(spec_.at(key)); }
+    std::optional<TimeFunction> optional_function(std::string_view key) const override {
+      const auto value = spec_.find(key);
+      return value ? std::optional<TimeFunction>(reader_.function(*value)) : std::nullopt;
+    }
+    [[noreturn]] void fail(std::string_view key, const std::string& problem) const override {
+      spec_.at(key).fail(problem);
+    }
+    [[noreturn]] void fail_missing(std::string_view key, const std::string& problem) const override {
+      spec_.fail_key(key, problem);
+    }
+
+   private:
+    static Sign io_sign(ValueSign sign) {
+      constexpr Sign kSigns[] = {Sign::any, Sign::positive, Sign::non_negative};
+      return kSigns[static_cast<int>(sign)];
+    }
+
+    const YamlValue& spec_;
+    const ModelReader& reader_;
+  };
 
   // Supports, drivers, loads ------------------------------------------------------------------
 
@@ -372,8 +386,7 @@ class ModelReader {
       check_name(name, spec, "driver");
       Driver driver;
       driver.name = name;
-      const bool bar_angle = spec.at("type").choice({"bar_angle", "coordinate"}) == 0;
-      if (bar_angle) {
+      if (spec.at("type").choice(kDriverKinds) == Driver::Kind::bar_angle) {
         read_bar_angle(spec, driver);
       } else {
         spec.expect_keys({"type", "node", "direction", "profile", "reading"});
@@ -447,9 +460,7 @@ class ModelReader {
          "adaptive", "linear_solver"});
     AnalysisOptions& analysis = model_.analysis;
     if (const auto type = spec.find("type")) {
-      analysis.type = type->choice({"static", "dynamic", "continuation", "modal"}) == 0
-                          ? AnalysisType::quasi_static
-                          : AnalysisType::dynamic;
+      analysis.type = type->choice(kAnalysisTypes);
     }
     analysis.end_time_s = spec.number_or("end", analysis.end_time_s, Sign::positive, "s");
     analysis.step_s = spec.number_or("step", analysis.step_s, Sign::positive, "s");
@@ -496,7 +507,7 @@ class ModelReader {
     analysis.type = AnalysisType::continuation;
     ContinuationSettings& c = analysis.continuation;
     const YamlValue parameter = spec.at("parameter");
-    c.parameter = static_cast<PathParameter>(parameter.choice({"thermal", "load", "driver"}));
+    c.parameter = parameter.choice(kPathParameters);
     c.start = spec.number_or("start", c.start, Sign::any, "");
     const YamlValue end = spec.at("end");
     c.end = end.number(Sign::any, "");
@@ -559,15 +570,10 @@ class ModelReader {
   }
 
   void read_linear_solver(const YamlValue& solver) {
-    constexpr LinearSolverKind kinds[] = {LinearSolverKind::automatic, LinearSolverKind::dense,
-                                          LinearSolverKind::klu, LinearSolverKind::umfpack};
-    model_.analysis.linear_solver = kinds[solver.choice({"automatic", "dense", "klu", "umfpack"})];
+    model_.analysis.linear_solver = solver.choice(kLinearSolverKinds);
   }
 
-  void read_mass(const YamlValue& mass) {
-    model_.analysis.mass = mass.choice({"consistent", "lumped"}) == 0 ? MassMatrixKind::consistent
-                                                                      : MassMatrixKind::lumped;
-  }
+  void read_mass(const YamlValue& mass) { model_.analysis.mass = mass.choice(kMassMatrixKinds); }
 
   void read_output_interval(const YamlValue& interval) {
     const AnalysisOptions& analysis = model_.analysis;
@@ -587,10 +593,7 @@ class ModelReader {
     spec.expect_keys({"type", "beta", "gamma", "rho_inf"});
     IntegratorOptions& integrator = model_.analysis.integrator;
     if (const auto type = spec.find("type")) {
-      constexpr IntegratorOptions::Kind kinds[] = {IntegratorOptions::Kind::newmark,
-                                                   IntegratorOptions::Kind::hht,
-                                                   IntegratorOptions::Kind::generalized_alpha};
-      integrator.kind = kinds[type->choice({"newmark", "hht", "generalized_alpha"})];
+      integrator.kind = type->choice(kIntegratorKinds);
     }
     if (integrator.kind != IntegratorOptions::Kind::newmark) {
       // These schemes take their β and γ from ρ∞; a given β or γ would be silently ignored.

@@ -1,5 +1,6 @@
 #include "deploydyn/io/model_writer.hpp"
 
+#include "deploydyn/elements/element_kinds.hpp"
 #include "deploydyn/util/overloaded.hpp"
 
 #include <fmt/format.h>
@@ -73,6 +74,31 @@ void emit_function(YAML::Emitter& out, const TimeFunction& function) {
              function.kind());
 }
 
+// An entry of `elements` as its element type writes it (elements/element_entry.hpp).
+class YamlElementEntry final : public ElementEntryWriter {
+ public:
+  explicit YamlElementEntry(YAML::Emitter& out) : out_(out) {}
+
+  void number(std::string_view key, double value) override { emit_number(out_, std::string(key), value); }
+  void name(std::string_view key, const std::string& value) override {
+    emit_key(out_, std::string(key));
+    out_ << value;
+  }
+  void names(std::string_view key, const std::vector<std::string>& values) override {
+    emit_key(out_, std::string(key));
+    out_ << YAML::Flow << YAML::BeginSeq;
+    for (const std::string& value : values) out_ << value;
+    out_ << YAML::EndSeq;
+  }
+  void function(std::string_view key, const TimeFunction& value) override {
+    emit_key(out_, std::string(key));
+    emit_function(out_, value);
+  }
+
+ private:
+  YAML::Emitter& out_;
+};
+
 void emit_geometry(YAML::Emitter& out, const Model& model) {
   emit_key(out, "nodes");
   out << YAML::BeginMap;
@@ -108,24 +134,16 @@ void emit_geometry(YAML::Emitter& out, const Model& model) {
   emit_function(out, model.temperature_change_C);
   out << YAML::EndMap;
 
-  // Mass and length always explicit: the reload then needs no recomputation.
+  // Every key explicit (ElementKind::write): the reload then needs no recomputation. The type
+  // is written for all but the first kind, which is the default.
   emit_key(out, "elements");
   out << YAML::BeginMap;
-  for (const BarElement& bar : model.bars) {
-    emit_key(out, bar.name);
+  YamlElementEntry entry(out);
+  for (const ElementRef& element : all_elements(model)) {
+    emit_key(out, element.kind->element_name(model, element.index));
     out << YAML::Flow << YAML::BeginMap;
-    emit_key(out, "nodes");
-    out << YAML::Flow << YAML::BeginSeq << model.nodes[bar.node_a].name
-        << model.nodes[bar.node_b].name << YAML::EndSeq;
-    emit_number(out, "area", bar.area_m2);
-    emit_key(out, "material");
-    out << model.materials[bar.material].name;
-    emit_number(out, "mass", bar.mass_kg);
-    emit_number(out, "length", bar.reference_length_m);
-    if (bar.temperature_given) {
-      emit_key(out, "dT");
-      emit_function(out, bar.temperature_change_C);
-    }
+    if (element.kind != element_kinds().front()) entry.name("type", std::string(element.kind->name()));
+    element.kind->write(model, element.index, entry);
     out << YAML::EndMap;
   }
   out << YAML::EndMap;
@@ -159,9 +177,9 @@ void emit_boundary_conditions(YAML::Emitter& out, const Model& model) {
       emit_key(out, driver.name);
       out << YAML::BeginMap;
       const bool rate = driver.reading == DriverReading::rate;
+      emit_key(out, "type");
+      out << std::string(kDriverKinds.name(driver.kind));
       if (driver.kind == Driver::Kind::bar_angle) {
-        emit_key(out, "type");
-        out << "bar_angle";
         emit_key(out, "element");
         out << model.bars[driver.element].name;
         emit_key(out, "pivot");
@@ -173,8 +191,6 @@ void emit_boundary_conditions(YAML::Emitter& out, const Model& model) {
         emit_key(out, "reading");
         out << (rate ? "angular_velocity" : "angle");
       } else {
-        emit_key(out, "type");
-        out << "coordinate";
         emit_key(out, "node");
         out << model.nodes[driver.node].name;
         emit_key(out, "direction");
@@ -256,7 +272,7 @@ void emit_analysis(YAML::Emitter& out, const Model& model) {
     emit_key(out, "load_steps");
     out << analysis.load_steps;
     emit_key(out, "mass");
-    out << (analysis.mass == MassMatrixKind::consistent ? "consistent" : "lumped");
+    out << to_string(analysis.mass);
   }
   emit_key(out, "linear_solver");
   out << to_string(analysis.linear_solver);
@@ -264,17 +280,12 @@ void emit_analysis(YAML::Emitter& out, const Model& model) {
     emit_key(out, "integrator");
     out << YAML::Flow << YAML::BeginMap;
     emit_key(out, "type");
-    switch (analysis.integrator.kind) {
-      case IntegratorOptions::Kind::newmark:
-        out << "newmark";
-        emit_number(out, "beta", analysis.integrator.beta);
-        emit_number(out, "gamma", analysis.integrator.gamma);
-        break;
-      case IntegratorOptions::Kind::hht:
-      case IntegratorOptions::Kind::generalized_alpha:
-        out << (analysis.integrator.kind == IntegratorOptions::Kind::hht ? "hht" : "generalized_alpha");
-        emit_number(out, "rho_inf", analysis.integrator.rho_infinity);
-        break;
+    out << to_string(analysis.integrator.kind);
+    if (analysis.integrator.kind == IntegratorOptions::Kind::newmark) {
+      emit_number(out, "beta", analysis.integrator.beta);
+      emit_number(out, "gamma", analysis.integrator.gamma);
+    } else {
+      emit_number(out, "rho_inf", analysis.integrator.rho_infinity);
     }
     out << YAML::EndMap;
     if (analysis.adaptive.enabled) {

@@ -52,11 +52,11 @@ std::optional<std::string> closest(std::string_view word,
   return std::nullopt;
 }
 
-std::vector<std::string> to_strings(std::initializer_list<std::string_view> words) {
+std::vector<std::string> to_strings(std::span<const std::string_view> words) {
   return {words.begin(), words.end()};
 }
 
-std::string join_all(std::initializer_list<std::string_view> words) {
+std::string join_all(std::span<const std::string_view> words) {
   return fmt::format("{}", fmt::join(words, ", "));
 }
 
@@ -145,6 +145,10 @@ std::vector<std::pair<std::string, YamlValue>> YamlValue::entries() const {
 }
 
 void YamlValue::expect_keys(std::initializer_list<std::string_view> allowed) const {
+  expect_keys(std::span<const std::string_view>(allowed.begin(), allowed.size()));
+}
+
+void YamlValue::expect_keys(std::span<const std::string_view> allowed) const {
   entries();  // checks that this is a mapping of unique plain names
   for (const auto& entry : node_) {
     const std::string& key = entry.first.Scalar();
@@ -251,6 +255,10 @@ std::vector<double> YamlValue::numbers(std::size_t n_min, std::size_t n_max,
 }
 
 std::size_t YamlValue::choice(std::initializer_list<std::string_view> allowed) const {
+  return choice(std::span<const std::string_view>(allowed.begin(), allowed.size()));
+}
+
+std::size_t YamlValue::choice(std::span<const std::string_view> allowed) const {
   const std::string given = text();
   const auto match = std::find(allowed.begin(), allowed.end(), given);
   if (match == allowed.end()) {

@@ -7,12 +7,14 @@
 #include <cstddef>
 #include <initializer_list>
 #include <optional>
+#include <span>
 #include <string>
 #include <string_view>
 #include <utility>
 #include <vector>
 
 #include "deploydyn/io/model_loader.hpp"
+#include "deploydyn/util/name_table.hpp"
 
 namespace deploydyn::io {
 
@@ -67,6 +69,7 @@ class YamlValue {
 
   // Mappings. Keys must be unique; expect_keys also rejects keys not in `allowed`.
   void expect_keys(std::initializer_list<std::string_view> allowed) const;
+  void expect_keys(std::span<const std::string_view> allowed) const;
   std::vector<std::pair<std::string, YamlValue>> entries() const;
   std::optional<YamlValue> find(std::string_view key) const;
   YamlValue at(std::string_view key) const;  // a required key
@@ -83,6 +86,13 @@ class YamlValue {
   std::vector<double> numbers(std::size_t n_min, std::size_t n_max, std::string_view unit) const;
   // One of `allowed`; returns its position in the list.
   std::size_t choice(std::initializer_list<std::string_view> allowed) const;
+  std::size_t choice(std::span<const std::string_view> allowed) const;
+  // One of the names of `table`, as its value.
+  template <class Enum, std::size_t N>
+  Enum choice(const NameTable<Enum, N>& table) const {
+    const auto names = table.names();
+    return table.value(choice(std::span<const std::string_view>(names)));
+  }
 
  private:
   std::string child_path(std::string_view key) const;

@@ -9,7 +9,9 @@
 #include <string>
 #include <vector>
 
+#include "deploydyn/elements/bar/bar_element.hpp"
 #include "deploydyn/model/time_function.hpp"
+#include "deploydyn/util/name_table.hpp"
 
 namespace deploydyn {
 
@@ -26,20 +28,6 @@ struct Material {
   std::optional<double> density_kg_m3;  // used when an element gives no mass
 };
 
-// Two-node bar (truss) element, docs/theory.md. Material values are copied in at load time.
-struct BarElement {
-  std::string name;
-  int node_a = 0, node_b = 0;  // indices into Model::nodes
-  int material = 0;            // index into Model::materials
-  double area_m2 = 0.0;
-  double mass_kg = 0.0;              // total; given, or density · area · reference length
-  bool mass_given = false;           // true when the model file named the mass
-  double reference_length_m = 0.0;   // L0: given, or the distance of the nodes' initial positions
-  bool length_given = false;
-  TimeFunction temperature_change_C;  // ΔT_e(t), °C
-  bool temperature_given = false;     // per-element ΔT rather than the model-wide one
-};
-
 // Ground support: the chosen coordinates of a node keep their initial values.
 struct FixedNode {
   int node = 0;
@@ -51,6 +39,9 @@ enum class DriverReading {
   rate,   // f is the angular velocity (rad/s) or velocity (m/s); the motion is ∫f (default)
   value,  // f is the rotation (rad) or displacement (m) from the initial state
 };
+
+// Each enumeration a model file names has one NameTable (util/name_table.hpp) with its
+// spellings, read by the loader, the writers and the Python module; to_string gives a name.
 
 // Rheonomic constraint that moves the mechanism and reports the effort it needs.
 struct Driver {
@@ -69,6 +60,11 @@ struct Driver {
   TimeFunction profile;
   DriverReading reading = DriverReading::rate;
 };
+// As model files spell driver types.
+inline constexpr NameTable kDriverKinds{std::array{
+    NamedValue<Driver::Kind>{Driver::Kind::bar_angle, "bar_angle"},
+    NamedValue<Driver::Kind>{Driver::Kind::coordinate, "coordinate"},
+}};
 
 // External force on a node: force_N · factor(t).
 struct NodalLoad {
@@ -78,21 +74,24 @@ struct NodalLoad {
 };
 
 enum class AnalysisType { quasi_static, dynamic, continuation, modal };
-// As model files spell them: "static", "dynamic", "continuation", "modal".
-inline const char* to_string(AnalysisType type) {
-  constexpr const char* kNames[] = {"static", "dynamic", "continuation", "modal"};
-  return kNames[static_cast<int>(type)];
-}
+inline constexpr NameTable kAnalysisTypes{std::array{
+    NamedValue<AnalysisType>{AnalysisType::quasi_static, "static"},
+    NamedValue<AnalysisType>{AnalysisType::dynamic, "dynamic"},
+    NamedValue<AnalysisType>{AnalysisType::continuation, "continuation"},
+    NamedValue<AnalysisType>{AnalysisType::modal, "modal"},
+}};
+inline const char* to_string(AnalysisType type) { return kAnalysisTypes.name(type).data(); }
 
 // The parameter μ a continuation follows (solvers/parametrized_equilibrium.hpp): a scale on
 // every ΔT, a factor on nodal loads and gravity, or the time t (s) of a quasi-static
 // deployment, at which the drivers' positions (and ΔT(t), load factors) are read.
 enum class PathParameter { thermal, load, driver };
-// As model files spell them: "thermal", "load", "driver".
-inline const char* to_string(PathParameter parameter) {
-  constexpr const char* kNames[] = {"thermal", "load", "driver"};
-  return kNames[static_cast<int>(parameter)];
-}
+inline constexpr NameTable kPathParameters{std::array{
+    NamedValue<PathParameter>{PathParameter::thermal, "thermal"},
+    NamedValue<PathParameter>{PathParameter::load, "load"},
+    NamedValue<PathParameter>{PathParameter::driver, "driver"},
+}};
+inline const char* to_string(PathParameter parameter) { return kPathParameters.name(parameter).data(); }
 
 // analysis.type: continuation (solvers/continuation.hpp): the static equilibrium (at t = 0
 // for the thermal and load parameters) traced in μ from `start` to `end`, through limit
@@ -115,6 +114,11 @@ struct ModalSettings {
 };
 
 enum class MassMatrixKind { consistent, lumped };
+inline constexpr NameTable kMassMatrixKinds{std::array{
+    NamedValue<MassMatrixKind>{MassMatrixKind::consistent, "consistent"},
+    NamedValue<MassMatrixKind>{MassMatrixKind::lumped, "lumped"},
+}};
+inline const char* to_string(MassMatrixKind kind) { return kMassMatrixKinds.name(kind).data(); }
 
 struct NewtonOptions {
   int max_iterations = 25;
@@ -137,6 +141,12 @@ struct IntegratorOptions {
   double gamma = 0.5;         // newmark only
   double rho_infinity = 1.0;  // hht and generalized_alpha
 };
+inline constexpr NameTable kIntegratorKinds{std::array{
+    NamedValue<IntegratorOptions::Kind>{IntegratorOptions::Kind::newmark, "newmark"},
+    NamedValue<IntegratorOptions::Kind>{IntegratorOptions::Kind::hht, "hht"},
+    NamedValue<IntegratorOptions::Kind>{IntegratorOptions::Kind::generalized_alpha, "generalized_alpha"},
+}};
+inline const char* to_string(IntegratorOptions::Kind kind) { return kIntegratorKinds.name(kind).data(); }
 
 // Adaptive time stepping (dynamic runs): the step grows and shrinks to keep the local error
 // estimate of the integrator below `tolerance_m`, and is cut when Newton fails. Steps always
@@ -151,11 +161,13 @@ struct AdaptiveOptions {
 // Back end of the Newton iteration matrix (assembly/linear_system_factory.hpp). `automatic`
 // takes the fastest measured for the model's size (bench/roof_benchmark.cpp): KLU.
 enum class LinearSolverKind { automatic, dense, klu, umfpack };
-// As model files spell them: "automatic", "dense", "klu", "umfpack".
-inline const char* to_string(LinearSolverKind kind) {
-  constexpr const char* kNames[] = {"automatic", "dense", "klu", "umfpack"};
-  return kNames[static_cast<int>(kind)];
-}
+inline constexpr NameTable kLinearSolverKinds{std::array{
+    NamedValue<LinearSolverKind>{LinearSolverKind::automatic, "automatic"},
+    NamedValue<LinearSolverKind>{LinearSolverKind::dense, "dense"},
+    NamedValue<LinearSolverKind>{LinearSolverKind::klu, "klu"},
+    NamedValue<LinearSolverKind>{LinearSolverKind::umfpack, "umfpack"},
+}};
+inline const char* to_string(LinearSolverKind kind) { return kLinearSolverKinds.name(kind).data(); }
 
 struct AnalysisOptions {
   AnalysisType type = AnalysisType::dynamic;

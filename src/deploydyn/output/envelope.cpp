@@ -1,5 +1,7 @@
 #include "deploydyn/output/envelope.hpp"
 
+#include "deploydyn/elements/element_kinds.hpp"
+
 namespace deploydyn {
 
 void Extremes::update(double value, double t) {
@@ -14,12 +16,20 @@ void Extremes::update(double value, double t) {
 }
 
 void Envelope::record(const StepRecord& r) {
-  elements_.resize(r.bars.size());
+  elements_.resize(r.elements.size());
   drivers_.resize(r.driver_efforts.size());
-  for (std::size_t b = 0; b < r.bars.size(); ++b) {
-    elements_[b].strain.update(r.bars[b].strain, r.time_s);
-    elements_[b].mechanical_strain.update(r.bars[b].mechanical_strain, r.time_s);
-    elements_[b].axial_force_N.update(r.bars[b].axial_force_N, r.time_s);
+  const auto kinds = element_kinds();
+  for (std::size_t g = 0; g < r.elements.size(); ++g) {
+    const ElementResults& results = r.elements[g];
+    ElementEnvelope& envelope = elements_[g];
+    envelope.n_quantities = results.n_quantities;
+    envelope.extremes.resize(results.values.size());
+    const auto quantities = kinds[g]->quantities();
+    for (std::size_t i = 0; i < results.values.size(); ++i) {
+      if (quantities[i % static_cast<std::size_t>(results.n_quantities)].recorded) {
+        envelope.extremes[i].update(results.values[i], r.time_s);
+      }
+    }
   }
   for (std::size_t d = 0; d < r.driver_efforts.size(); ++d) {
     drivers_[d].update(r.driver_efforts[d], r.time_s);

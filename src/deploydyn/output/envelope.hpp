@@ -1,7 +1,7 @@
 #pragma once
-// Extremes over a run, as the records go by: per element the min and max of total strain,
-// mechanical strain and axial force with their times; per driver the peak effort; the last
-// node positions. summary.json is written from it.
+// Extremes over a run, as the records go by: per element the min and max of each recorded
+// result quantity (the bar's total strain, mechanical strain and axial force) with their times;
+// per driver the peak effort; the last node positions. summary.json is written from it.
 
 #include <limits>
 #include <vector>
@@ -21,8 +21,16 @@ struct Extremes {
   double peak_magnitude() const { return empty() ? 0.0 : std::max(-min, max); }
 };
 
+// The extremes of every element of one type: one Extremes per quantity of its
+// ElementKind::quantities() (those not recorded stay empty), element after element.
 struct ElementEnvelope {
-  Extremes strain, mechanical_strain, axial_force_N;
+  int n_quantities = 0;
+  std::vector<Extremes> extremes;  // extremes[element · n_quantities + quantity]
+
+  int n_elements() const { return n_quantities > 0 ? static_cast<int>(extremes.size()) / n_quantities : 0; }
+  const Extremes& at(int element, int quantity) const {
+    return extremes[static_cast<std::size_t>(element * n_quantities + quantity)];
+  }
 };
 
 class Envelope final : public RecordSink {
@@ -30,6 +38,7 @@ class Envelope final : public RecordSink {
   void record(const StepRecord& record) override;
 
   int n_records() const { return n_records_; }
+  // Per type of elements/element_kinds.hpp.
   const std::vector<ElementEnvelope>& elements() const { return elements_; }
   const std::vector<Extremes>& drivers() const { return drivers_; }
   const StepRecord& last() const { return last_; }

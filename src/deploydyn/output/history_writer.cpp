@@ -6,6 +6,8 @@
 #include <string_view>
 #include <utility>
 
+#include "deploydyn/elements/element_kinds.hpp"
+
 namespace deploydyn {
 namespace {
 
@@ -28,8 +30,12 @@ std::vector<std::string> history_columns(const Model& model) {
       columns.push_back(std::string(1, "xyz"[axis]) + "." + node.name);
     }
   }
-  for (const BarElement& bar : model.bars) {
-    for (const char* quantity : {"strain.", "mstrain.", "force."}) columns.push_back(quantity + bar.name);
+  for (const ElementRef& e : all_elements(model)) {
+    for (const ResultQuantity& quantity : e.kind->quantities()) {
+      if (quantity.recorded) {
+        columns.push_back(std::string(quantity.key) + "." + e.kind->element_name(model, e.index));
+      }
+    }
   }
   for (const Driver& driver : model.drivers) {
     columns.push_back((driver.kind == Driver::Kind::bar_angle ? "torque." : "force.") + driver.name);
@@ -41,8 +47,15 @@ std::vector<std::string> history_columns(const Model& model) {
 void append_history_row(const StepRecord& r, std::vector<double>& row) {
   row.push_back(r.time_s);
   row.insert(row.end(), r.q.begin(), r.q.end());
-  for (const BarResult& bar : r.bars) {
-    row.insert(row.end(), {bar.strain, bar.mechanical_strain, bar.axial_force_N});
+  const auto kinds = element_kinds();
+  for (std::size_t g = 0; g < r.elements.size(); ++g) {
+    const auto quantities = kinds[g]->quantities();
+    const ElementResults& results = r.elements[g];
+    for (int e = 0; e < results.n_elements(); ++e) {
+      for (int k = 0; k < results.n_quantities; ++k) {
+        if (quantities[static_cast<std::size_t>(k)].recorded) row.push_back(results.at(e, k));
+      }
+    }
   }
   row.insert(row.end(), r.driver_efforts.begin(), r.driver_efforts.end());
   row.insert(row.end(), {r.kinetic_energy_J, r.strain_energy_J, r.external_work_J});

@@ -27,14 +27,13 @@ namespace {
 using nlohmann::ordered_json;
 
 // A mode is drawn as the equilibrium moved along it until its largest nodal displacement is
-// this share of the shortest bar: visible, and still small enough to read as a linear mode.
+// this share of the shortest element: visible, and still small enough to read as a linear mode.
 constexpr double kDrawnAmplitudeShare = 0.1;
 
 // The equilibrium displaced along `mode`, as a VTK frame whose time field is `frame`.
 StepRecord mode_frame(const Assembler& assembler, const MotionState& equilibrium,
                       const Eigen::VectorXd& mode, int frame) {
-  double shortest_m = std::numeric_limits<double>::infinity();
-  for (const BarElement& bar : assembler.model().bars) shortest_m = std::min(shortest_m, bar.reference_length_m);
+  const double shortest_m = assembler.shortest_element_m();
   const double largest = mode.lpNorm<Eigen::Infinity>();
   MotionState shown = equilibrium;
   shown.q += (largest > 0.0 ? kDrawnAmplitudeShare * shortest_m / largest : 0.0) * mode;

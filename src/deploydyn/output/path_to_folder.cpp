@@ -10,6 +10,7 @@
 #include <stdexcept>
 
 #include "deploydyn/assembly/linear_system_factory.hpp"
+#include "deploydyn/elements/element_kinds.hpp"
 #include "deploydyn/output/checked_file.hpp"
 #include "deploydyn/output/output_error.hpp"
 #include "deploydyn/output/result_folder.hpp"
@@ -101,9 +102,10 @@ std::string path_summary_json(const Assembler& assembler, const ContinuationResu
                {"length_scale_m", result.length_scale_m},
                {"wall_time_s", report.wall_time_s}};
   ordered_json events = ordered_json::array();
+  const std::vector<std::string> names = element_names(model, "axial_force_N");
   for (const PathEvent& e : result.events) {
     ordered_json forces = ordered_json::object();
-    for (std::size_t b = 0; b < e.axial_forces_N.size(); ++b) forces[model.bars[b].name] = e.axial_forces_N[b];
+    for (std::size_t b = 0; b < e.axial_forces_N.size(); ++b) forces[names[b]] = e.axial_forces_N[b];
     ordered_json event = {{"kind", to_string(e.kind)},
                           {"mu", e.parameter},
                           {"mu_error", e.parameter_error},

@@ -2,7 +2,10 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
+
+#include "deploydyn/elements/element_kinds.hpp"
 
 namespace deploydyn {
 
@@ -10,19 +13,26 @@ std::vector<std::string> plausibility_warnings(const Model& model, const Envelop
                                                std::size_t max_lines) {
   std::vector<std::string> lines;
   std::size_t n_flagged = 0;
-  const std::size_t n = std::min(envelope.elements().size(), model.bars.size());
-  for (std::size_t b = 0; b < n; ++b) {
-    const Extremes& strain = envelope.elements()[b].strain;
-    if (strain.empty()) continue;
-    const bool low = -strain.min > strain.max;
-    const double worst = low ? strain.min : strain.max;
-    // NaN compares false: a NaN strain is flagged too.
-    if (std::abs(worst) <= kSmallStrainLimit) continue;
-    if (++n_flagged > max_lines) continue;
-    lines.push_back(fmt::format("element {}: strain reaches {:.3g} at t = {:.6g} s, beyond the "
-                                "small-strain limit {:g} of a bar model",
-                                model.bars[b].name, worst, low ? strain.time_of_min_s : strain.time_of_max_s,
-                                kSmallStrainLimit));
+  const auto kinds = element_kinds();
+  for (std::size_t g = 0; g < kinds.size() && g < envelope.elements().size(); ++g) {
+    const int k = quantity_index(*kinds[g], "strain");
+    if (k < 0) continue;
+    const ElementEnvelope& extremes = envelope.elements()[g];
+    const int n = std::min(extremes.n_elements(), kinds[g]->n_elements(model));
+    for (int e = 0; e < n; ++e) {
+      const Extremes& strain = extremes.at(e, k);
+      if (strain.empty()) continue;
+      const bool low = -strain.min > strain.max;
+      const double worst = low ? strain.min : strain.max;
+      // NaN compares false: a NaN strain is flagged too.
+      if (std::abs(worst) <= kSmallStrainLimit) continue;
+      if (++n_flagged > max_lines) continue;
+      lines.push_back(fmt::format("element {}: strain reaches {:.3g} at t = {:.6g} s, beyond the "
+                                  "small-strain limit {:g} of a {} model",
+                                  kinds[g]->element_name(model, e), worst,
+                                  low ? strain.time_of_min_s : strain.time_of_max_s, kSmallStrainLimit,
+                                  kinds[g]->name()));
+    }
   }
   if (n_flagged > max_lines) lines.push_back(fmt::format("and {} more elements", n_flagged - max_lines));
   return lines;

@@ -1,5 +1,7 @@
 #include "deploydyn/output/step_record.hpp"
 
+#include "deploydyn/elements/element_kinds.hpp"
+
 namespace deploydyn {
 
 StepRecord make_step_record(const Assembler& assembler, const MotionState& state,
@@ -8,9 +10,20 @@ StepRecord make_step_record(const Assembler& assembler, const MotionState& state
   record.time_s = state.time_s;
   record.q = state.q;
   record.v = state.v;
-  const int n_bars = assembler.model().n_bars();
-  record.bars.reserve(n_bars);
-  for (int b = 0; b < n_bars; ++b) record.bars.push_back(assembler.bar_result(b, state.q, state.time_s));
+  const auto kinds = element_kinds();
+  record.elements.resize(kinds.size());
+  for (std::size_t g = 0; g < kinds.size(); ++g) {
+    ElementResults& results = record.elements[g];
+    const ElementGroup& group = *assembler.element_groups()[g];
+    results.n_quantities = static_cast<int>(kinds[g]->quantities().size());
+    results.values.resize(static_cast<std::size_t>(group.n_elements() * results.n_quantities));
+    for (int e = 0; e < group.n_elements(); ++e) {
+      group.results(e, state.q, state.time_s, 1.0,
+                    std::span<double>(results.values).subspan(
+                        static_cast<std::size_t>(e * results.n_quantities),
+                        static_cast<std::size_t>(results.n_quantities)));
+    }
+  }
   const int n_drivers = static_cast<int>(assembler.model().drivers.size());
   for (int d = 0; d < n_drivers; ++d) {
     record.driver_efforts.push_back(assembler.driver_effort(d, state.q, state.time_s, state.lambda));

@@ -14,10 +14,10 @@ struct StepRecord {
   double time_s = 0.0;
   Eigen::VectorXd q;                   // nodal coordinates (m)
   Eigen::VectorXd v;                   // their rates q̇ (m/s); zero in a static analysis
-  std::vector<BarResult> bars;         // per element, model order
+  std::vector<ElementResults> elements;  // per type of elements/element_kinds.hpp
   std::vector<double> driver_efforts;  // torque (N·m) or force (N), per driver
   double kinetic_energy_J = 0.0;       // ½ q̇ᵀ M q̇
-  double strain_energy_J = 0.0;        // Σ ½ EA L0 ε_m²
+  double strain_energy_J = 0.0;        // Σ of the elements' strain energies
   double external_work_J = 0.0;        // work of loads and drivers since the start
 };
 

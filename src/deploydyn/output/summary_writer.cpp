@@ -2,6 +2,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "deploydyn/elements/element_kinds.hpp"
 #include "deploydyn/model/dof_map.hpp"
 #include "deploydyn/output/plausibility.hpp"
 #include "deploydyn/output/result_folder.hpp"
@@ -27,9 +28,8 @@ ordered_json extremes(const Extremes& e) {
 
 // The scheme as chosen and its generalized-α parameters as used.
 ordered_json integrator(const IntegratorOptions& options) {
-  const char* names[] = {"newmark", "hht", "generalized_alpha"};
   const auto c = GeneralizedAlphaCoefficients::from(options);
-  ordered_json j = {{"type", names[static_cast<int>(options.kind)]}};
+  ordered_json j = {{"type", to_string(options.kind)}};
   if (options.kind != IntegratorOptions::Kind::newmark) j["rho_inf"] = options.rho_infinity;
   j["alpha_m"] = c.alpha_m;
   j["alpha_f"] = c.alpha_f;
@@ -102,12 +102,19 @@ std::string summary_json(const Model& model, const Envelope& envelope, const Run
                    {"integrator", integrator(model.analysis.integrator)}};
 
   ordered_json elements = ordered_json::object();
-  for (int b = 0; b < model.n_bars() && b < static_cast<int>(envelope.elements().size()); ++b) {
-    const ElementEnvelope& e = envelope.elements()[b];
-    append(elements, model.bars[b].name,
-           {{"strain", extremes(e.strain)},
-            {"mstrain", extremes(e.mechanical_strain)},
-            {"force", extremes(e.axial_force_N)}});
+  const auto kinds = element_kinds();
+  for (std::size_t g = 0; g < kinds.size() && g < envelope.elements().size(); ++g) {
+    const ElementEnvelope& envelope_of_kind = envelope.elements()[g];
+    const auto quantities = kinds[g]->quantities();
+    for (int e = 0; e < kinds[g]->n_elements(model) && e < envelope_of_kind.n_elements(); ++e) {
+      ordered_json entry = ordered_json::object();
+      for (std::size_t k = 0; k < quantities.size(); ++k) {
+        if (quantities[k].recorded) {
+          append(entry, std::string(quantities[k].key), extremes(envelope_of_kind.at(e, static_cast<int>(k))));
+        }
+      }
+      append(elements, kinds[g]->element_name(model, e), std::move(entry));
+    }
   }
   j["elements"] = elements;
 

@@ -3,19 +3,21 @@
 #include <fmt/format.h>
 
 #include <cerrno>
+#include <algorithm>
 #include <cstdio>
+#include <limits>
 #include <regex>
 #include <stdexcept>
 #include <string_view>
 #include <system_error>
 
+#include "deploydyn/elements/element_kinds.hpp"
 #include "deploydyn/output/checked_file.hpp"
 #include "deploydyn/output/output_error.hpp"
 
 namespace deploydyn {
 namespace {
 
-constexpr int kVtkLine = 3;  // VTK cell type of a two-node line
 constexpr std::string_view kCollectionFooter = "  </Collection>\n</VTKFile>\n";
 
 [[noreturn]] void cannot_write(const std::filesystem::path& file) {
@@ -87,11 +89,14 @@ VtkWriter::~VtkWriter() {
 
 void VtkWriter::record(const StepRecord& record) {
   const bool whole_state = record.q.size() == dofs_.n_dofs() && record.v.size() == dofs_.n_dofs();
-  if (!whole_state || record.bars.size() != model_.bars.size()) {
+  int n_results = 0;
+  for (const ElementResults& results : record.elements) n_results += results.n_elements();
+  const bool all_kinds = record.elements.size() == element_kinds().size();
+  if (!whole_state || !all_kinds || n_results != n_elements(model_)) {
     throw std::invalid_argument(fmt::format(
         "VtkWriter::record: the record does not fit the model: {} coordinates and {} rates for {}, "
-        "{} bar results for {}",
-        record.q.size(), record.v.size(), dofs_.n_dofs(), record.bars.size(), model_.bars.size()));
+        "{} element results for {}",
+        record.q.size(), record.v.size(), dofs_.n_dofs(), n_results, n_elements(model_)));
   }
   write_frame(record, folder_ / vtk_frame_file_name(n_frames_));
   append_to_collection(n_frames_, record.time_s);
@@ -100,7 +105,8 @@ void VtkWriter::record(const StepRecord& record) {
 
 void VtkWriter::write_frame(const StepRecord& r, const std::filesystem::path& file) {
   const int n_nodes = model_.n_nodes();
-  const int n_bars = model_.n_bars();
+  const std::vector<ElementRef> cells = all_elements(model_);
+  const int n_cells = static_cast<int>(cells.size());
   const int dimension = model_.dimension;
   // Component k of node i in a 3-vector (z = 0 in 2D) of the global vector x.
   auto nodal = [&](const Eigen::VectorXd& x, int i, int k) {
@@ -120,34 +126,64 @@ void VtkWriter::write_frame(const StepRecord& r, const std::filesystem::path& fi
                  "    </FieldData>\n"
                  "    <Piece NumberOfPoints=\"{}\" NumberOfCells=\"{}\">\n"
                  "      <PointData Vectors=\"displacement_m\">\n",
-                 r.time_s, n_nodes, n_bars);
+                 r.time_s, n_nodes, n_cells);
   float_array(out, "displacement_m", n_nodes, 3,
               [&](int i, int k) { return nodal(r.q, i, k) - model_.nodes[i].position_m[k]; });
   float_array(out, "velocity_m_s", n_nodes, 3, [&](int i, int k) { return nodal(r.v, i, k); });
   fmt::format_to(out, "      </PointData>\n      <CellData Scalars=\"axial_force_N\">\n");
-  float_array(out, "strain", n_bars, 1, [&](int b, int) { return r.bars[b].strain; });
-  float_array(out, "mechanical_strain", n_bars, 1,
-              [&](int b, int) { return r.bars[b].mechanical_strain; });
-  float_array(out, "axial_force_N", n_bars, 1, [&](int b, int) { return r.bars[b].axial_force_N; });
-  float_array(out, "temperature_change_C", n_bars, 1,
-              [&](int b, int) { return model_.bars[b].temperature_change_C.value(r.time_s); });
+  // One array per recorded quantity of every element type (first of its name: types that share
+  // a quantity, such as the axial force, share the array; others get NaN there).
+  const auto kinds = element_kinds();
+  std::vector<std::string_view> arrays;
+  for (const ElementKind* kind : kinds) {
+    for (const ResultQuantity& quantity : kind->quantities()) {
+      if (quantity.recorded && std::find(arrays.begin(), arrays.end(), quantity.name) == arrays.end()) {
+        arrays.push_back(quantity.name);
+      }
+    }
+  }
+  std::vector<int> group_of_cell;  // its type's place in element_kinds(): r.elements[group]
+  group_of_cell.reserve(cells.size());
+  for (const ElementRef& cell : cells) {
+    group_of_cell.push_back(static_cast<int>(std::find(kinds.begin(), kinds.end(), cell.kind) - kinds.begin()));
+  }
+  for (const std::string_view array : arrays) {
+    std::vector<int> index_in_kind;
+    for (const ElementKind* kind : kinds) index_in_kind.push_back(quantity_index(*kind, array));
+    float_array(out, std::string(array).c_str(), n_cells, 1, [&](int c, int) {
+      const int k = index_in_kind[static_cast<std::size_t>(group_of_cell[c])];
+      return k < 0 ? std::numeric_limits<double>::quiet_NaN()
+                   : r.elements[static_cast<std::size_t>(group_of_cell[c])].at(cells[c].index, k);
+    });
+  }
+  float_array(out, "temperature_change_C", n_cells, 1, [&](int c, int) {
+    return cells[c].kind->temperature_change_C(model_, cells[c].index, r.time_s);
+  });
   fmt::format_to(out, "      </CellData>\n      <Points>\n");
   float_array(out, "Points", n_nodes, 3, [&](int i, int k) { return nodal(r.q, i, k); });
   fmt::format_to(out,
                  "      </Points>\n"
                  "      <Cells>\n"
                  "        <DataArray type=\"Int64\" Name=\"connectivity\" format=\"ascii\">\n");
-  for (const BarElement& bar : model_.bars) {
-    fmt::format_to(out, "          {} {}\n", bar.node_a, bar.node_b);
+  for (const ElementRef& cell : cells) {
+    fmt::format_to(out, "         ");
+    for (int i = 0; i < cell.kind->n_element_nodes(); ++i) {
+      fmt::format_to(out, " {}", cell.kind->element_node(model_, cell.index, i));
+    }
+    fmt::format_to(out, "\n");
   }
   fmt::format_to(out,
                  "        </DataArray>\n"
                  "        <DataArray type=\"Int64\" Name=\"offsets\" format=\"ascii\">\n");
-  for (int b = 0; b < n_bars; ++b) fmt::format_to(out, "          {}\n", 2 * (b + 1));
+  int offset = 0;
+  for (const ElementRef& cell : cells) {
+    offset += cell.kind->n_element_nodes();
+    fmt::format_to(out, "          {}\n", offset);
+  }
   fmt::format_to(out,
                  "        </DataArray>\n"
                  "        <DataArray type=\"UInt8\" Name=\"types\" format=\"ascii\">\n");
-  for (int b = 0; b < n_bars; ++b) fmt::format_to(out, "          {}\n", kVtkLine);
+  for (const ElementRef& cell : cells) fmt::format_to(out, "          {}\n", cell.kind->vtk_cell_type());
   fmt::format_to(out,
                  "        </DataArray>\n"
                  "      </Cells>\n"

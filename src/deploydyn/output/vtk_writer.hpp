@@ -5,11 +5,13 @@
 //   deploydyn.pvd                              the Collection: each frame's file and time
 // File format: https://docs.vtk.org/en/latest/design_documents/VTKFileFormats.html (XML).
 //
-// A frame holds the bars as VTK_LINE cells (cell i is element i in model order) between the
-// nodes' current positions (point i is node i; z = 0 in 2D), and as data
+// A frame holds the elements as cells (cell i is element i in the order of
+// elements/element_kinds.hpp; bars are VTK_LINEs) between the nodes' current positions (point i
+// is node i; z = 0 in 2D), and as data
 //   points: displacement_m (current − initial position), velocity_m_s (q̇; 0 in a static run)
-//   cells:  strain (total Green–Lagrange), mechanical_strain (total − thermal),
-//           axial_force_N (tension positive), temperature_change_C (the bar's ΔT at that time)
+//   cells:  one array per recorded result quantity of the element types, by its name (the bar's
+//           strain, mechanical_strain, axial_force_N), and temperature_change_C (the element's
+//           ΔT at that time)
 // plus the time in the field data TimeValue. Numbers are written in the shortest form that
 // reads back to the same double, so the files carry exactly what history.csv does.
 //

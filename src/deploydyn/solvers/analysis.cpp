@@ -13,6 +13,7 @@
 #include "deploydyn/solvers/generalized_alpha.hpp"
 #include "deploydyn/solvers/static_solver.hpp"
 #include "deploydyn/solvers/step_controller.hpp"
+#include "deploydyn/solvers/time_integrator.hpp"
 
 namespace deploydyn {
 namespace {
@@ -268,7 +269,7 @@ RunReport run_analysis(const Assembler& assembler, RecordSink& sink, const RunCo
   work.start(state);
   sink.record_state(assembler, state, 0.0);
 
-  GeneralizedAlphaIntegrator integrator(assembler, options);
+  const std::unique_ptr<TimeIntegrator> integrator = make_time_integrator(assembler, options);
   StepController steps(options);
   MotionState next;  // the step's trial state; swapped with `state` when accepted
   while (state.time_s < options.end_time_s) {
@@ -279,15 +280,7 @@ RunReport run_analysis(const Assembler& assembler, RecordSink& sink, const RunCo
     }
     const double step = steps.next_step(state.time_s);
     next = state;  // copies into next's storage: no allocation after the first step
-    NewtonResult newton;
-    if (dynamic) {
-      newton = integrator.step(step, system, next);
-    } else {
-      const StaticResult r = solve_static(
-          assembler, options, LoadPath::time_step(state.time_s, state.time_s + step), 1, system, next);
-      newton = r.newton;
-      newton.iterations = r.total_iterations;  // q̇ stays 0: inertia is ignored
-    }
+    const NewtonResult newton = integrator->step(step, system, next);
     report.newton_iterations += newton.iterations;
     report.max_iterations_per_step = std::max(report.max_iterations_per_step, newton.iterations);
     if (!newton.converged) {
@@ -297,7 +290,7 @@ RunReport run_analysis(const Assembler& assembler, RecordSink& sink, const RunCo
       }
       return fail(describe_failure(assembler, "time step", state.time_s + step, report.steps + 1, newton));
     }
-    const double error_m = dynamic ? integrator.local_error(step, state, next) : 0.0;
+    const double error_m = integrator->local_error(step, state, next);
     if (!steps.accept(step, error_m)) {
       ++report.rejected_steps;
       continue;

@@ -77,9 +77,7 @@ class PathTracer {
 
  private:
   double longest_bar_m() const {
-    double longest = 0.0;
-    for (const BarElement& bar : assembler_.model().bars) longest = std::max(longest, bar.reference_length_m);
-    return longest > 0.0 ? longest : 1.0;
+    return assembler_.longest_element_m();
   }
   // Scalar product of two path directions in the arc-length metric.
   double dot(const Eigen::VectorXd& q_a, double mu_a, const Eigen::VectorXd& q_b, double mu_b) const {
@@ -321,11 +319,8 @@ void PathTracer::record_event(PathEventKind kind, PathPoint point, const Tangent
   }
   event.dependent_rows = null_space.dependent_rows;
   const double thermal_factor = equilibrium_.thermal_factor(point.parameter);
-  for (int b = 0; b < assembler_.model().n_bars(); ++b) {
-    event.axial_forces_N.push_back(
-        assembler_.bar_result(b, point.q, equilibrium_.time_s(point.parameter), thermal_factor)
-            .axial_force_N);
-  }
+  event.axial_forces_N =
+      assembler_.element_quantity("axial_force_N", point.q, equilibrium_.time_s(point.parameter), thermal_factor);
   std::string where;
   if (event.mode.size() > 0) {
     Eigen::Index largest = 0;

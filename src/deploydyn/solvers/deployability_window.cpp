@@ -8,6 +8,7 @@
 #include <stdexcept>
 
 #include "deploydyn/assembly/linear_system_factory.hpp"
+#include "deploydyn/elements/element_kinds.hpp"
 #include "deploydyn/solvers/static_solver.hpp"
 
 namespace deploydyn {
@@ -19,7 +20,9 @@ constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 Model with_uniform_temperature(const Model& model, double delta_t_C) {
   Model uniform = model;
   uniform.temperature_change_C = TimeFunction::constant(delta_t_C);
-  for (BarElement& bar : uniform.bars) bar.temperature_change_C = uniform.temperature_change_C;
+  for (const ElementKind* kind : element_kinds()) {
+    kind->set_temperature_change(uniform, uniform.temperature_change_C);
+  }
   return uniform;
 }
 
@@ -31,10 +34,11 @@ WindowSample sample(const Assembler& assembler, const PathPoint& point, double t
   s.time_s = time_s;
   s.delta_t_C = thermal_factor * reach_C;
   s.lowest_eigenvalue_N_m = point.lowest_eigenvalues.size() > 0 ? point.lowest_eigenvalues[0] : kNaN;
-  for (int b = 0; b < assembler.model().n_bars(); ++b) {
-    const BarResult bar = assembler.bar_result(b, point.q, time_s, thermal_factor);
-    s.peak_axial_force_N = std::max(s.peak_axial_force_N, std::abs(bar.axial_force_N));
-    s.peak_mechanical_strain = std::max(s.peak_mechanical_strain, std::abs(bar.mechanical_strain));
+  for (const double force_N : assembler.element_quantity("axial_force_N", point.q, time_s, thermal_factor)) {
+    s.peak_axial_force_N = std::max(s.peak_axial_force_N, std::abs(force_N));
+  }
+  for (const double strain : assembler.element_quantity("mechanical_strain", point.q, time_s, thermal_factor)) {
+    s.peak_mechanical_strain = std::max(s.peak_mechanical_strain, std::abs(strain));
   }
   if (!assembler.model().drivers.empty()) {
     s.driver_effort = assembler.driver_effort(0, point.q, time_s, point.lambda);

@@ -24,6 +24,7 @@
 #include "deploydyn/assembly/assembler.hpp"
 #include "deploydyn/solvers/motion_state.hpp"
 #include "deploydyn/solvers/newton.hpp"
+#include "deploydyn/solvers/time_integrator.hpp"
 
 namespace deploydyn {
 
@@ -35,19 +36,19 @@ struct GeneralizedAlphaCoefficients {
 
 class GeneralizedAlphaEquations;
 
-class GeneralizedAlphaIntegrator {
+class GeneralizedAlphaIntegrator final : public TimeIntegrator {
  public:
   GeneralizedAlphaIntegrator(const Assembler& assembler, const AnalysisOptions& options);
-  ~GeneralizedAlphaIntegrator();
+  ~GeneralizedAlphaIntegrator() override;
 
   // Advances `state` by h. On failure `state` is left at the start of the step. Reuses its
   // work vectors: after the first step, a step allocates nothing.
-  NewtonResult step(double h, LinearSystem& system, MotionState& state);
+  NewtonResult step(double h, LinearSystem& system, MotionState& state) override;
 
   // Estimate of the local error in q of the step that led to `state` from `before`:
   // ‖h² (β − 1/6) (a_{n+1} − a_n)‖∞ (m), the gap to a third-order Taylor step
   // (Zienkiewicz & Xie, Earthq. Eng. Struct. Dyn. 20, 1991).
-  double local_error(double h, const MotionState& before, const MotionState& after) const;
+  double local_error(double h, const MotionState& before, const MotionState& after) const override;
 
   const GeneralizedAlphaCoefficients& coefficients() const { return coefficients_; }
 

@@ -4,7 +4,7 @@
 //   r(q, λ, μ) = f_int(q, μ) − f_ext(μ) + B(μ)ᵀλ = 0,   Φ(q, μ) = 0
 // with μ either
 //   thermal: a scale on every ΔT, f_int(q, μ) = f_int with ε_t → μ ε_t, f_ext fixed;
-//            ∂r/∂μ = Σ_bars ε_t ∂f/∂ε_t = Σ −(EA ε_t/L0)[−d; d]   (elements/bar.hpp);  ∂Φ/∂μ = 0
+//            ∂r/∂μ = Σ_bars ε_t ∂f/∂ε_t = Σ −(EA ε_t/L0)[−d; d]   (elements/bar/bar.hpp);  ∂Φ/∂μ = 0
 //   load:    a factor on nodal loads and gravity, f_ext(μ) = μ f_ext, ΔT fixed;
 //            ∂r/∂μ = −f_ext;  ∂Φ/∂μ = 0
 //   driver:  the time t = μ (s) of a quasi-static deployment: the drivers' positions s(t),

@@ -14,23 +14,6 @@ constexpr double kSmallestLoadStep = 1.0 / 1024.0;  // of the full thermal load
 // end while no bar turns, and that must not cut the load into 1024 steps.
 constexpr double kLargestMoveShare = 0.02;
 
-// max over the bars of |Δ(x_b − x_a)| / L0 between two configurations.
-double largest_bar_change(const Assembler& assembler, const Eigen::VectorXd& q, const Eigen::VectorXd& q_before) {
-  const Model& model = assembler.model();
-  const DofMap& dofs = assembler.dof_map();
-  double largest = 0.0;
-  for (const BarElement& bar : model.bars) {
-    double change2 = 0.0;
-    for (int axis = 0; axis < model.dimension; ++axis) {
-      const int a = dofs.index(bar.node_a, axis), b = dofs.index(bar.node_b, axis);
-      const double change = (q[b] - q[a]) - (q_before[b] - q_before[a]);
-      change2 += change * change;
-    }
-    largest = std::max(largest, std::sqrt(change2) / bar.reference_length_m);
-  }
-  return largest;
-}
-
 class StaticEquations final : public DiscreteEquations {
  public:
   StaticEquations(const Assembler& assembler, const LoadPath& path, double t,
@@ -94,7 +77,7 @@ StaticResult solve_static(const Assembler& assembler, const AnalysisOptions& opt
     Eigen::VectorXd lambda = state.lambda;
     result.newton = newton.solve(equations, system, q, lambda);
     result.total_iterations += result.newton.iterations;
-    const double moved = largest_bar_change(assembler, q, state.q);
+    const double moved = assembler.largest_relative_change(q, state.q);
     const bool jumped = moved > kLargestMoveShare;
     if (!result.newton.converged || jumped) {
       increment *= 0.5;

@@ -11,6 +11,7 @@
 #include <map>
 #include <stdexcept>
 
+#include "deploydyn/elements/element_kinds.hpp"
 #include "deploydyn/model/dof_map.hpp"
 
 namespace deploydyn {
@@ -51,16 +52,20 @@ struct Peak {
   std::string element;
 };
 
-// Largest peak magnitude over the bars of a field of ElementEnvelope.
-template <typename Field>
-Peak largest(const CaseOutcome& outcome, Field field) {
+// Largest peak magnitude of the result quantity `name` over the elements that report it.
+Peak largest(const CaseOutcome& outcome, std::string_view name) {
   Peak peak;
-  const auto& elements = outcome.envelope.elements();
-  for (std::size_t b = 0; b < elements.size(); ++b) {
-    const Extremes& e = elements[b].*field;
-    if (e.empty()) continue;
-    if (std::isnan(peak.value) || e.peak_magnitude() > peak.value) {
-      peak = {e.peak_magnitude(), outcome.model->bars[b].name};
+  const auto kinds = element_kinds();
+  const auto& envelopes = outcome.envelope.elements();
+  for (std::size_t g = 0; g < kinds.size() && g < envelopes.size(); ++g) {
+    const int k = quantity_index(*kinds[g], name);
+    if (k < 0) continue;
+    for (int e = 0; e < envelopes[g].n_elements(); ++e) {
+      const Extremes& extremes = envelopes[g].at(e, k);
+      if (extremes.empty()) continue;
+      if (std::isnan(peak.value) || extremes.peak_magnitude() > peak.value) {
+        peak = {extremes.peak_magnitude(), kinds[g]->element_name(*outcome.model, e)};
+      }
     }
   }
   return peak;
@@ -133,8 +138,8 @@ std::string study_table_csv(const Study& study, const std::vector<CaseOutcome>& 
                                     [&](const Override& o) { return o.path == path; });
       row.push_back(set == c.overrides.end() ? "" : csv_field(set->value));
     }
-    const Peak strain = completed ? largest(outcome, &ElementEnvelope::mechanical_strain) : Peak{};
-    const Peak force = completed ? largest(outcome, &ElementEnvelope::axial_force_N) : Peak{};
+    const Peak strain = completed ? largest(outcome, "mechanical_strain") : Peak{};
+    const Peak force = completed ? largest(outcome, "axial_force_N") : Peak{};
     row.insert(row.end(), {number(strain.value), csv_field(strain.element), number(force.value),
                            csv_field(force.element)});
     for (const DriverColumn& column : drivers) {

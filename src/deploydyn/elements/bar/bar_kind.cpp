@@ -1,0 +1,142 @@
+#include "deploydyn/elements/bar/bar_kind.hpp"
+
+#include <array>
+#include <cmath>
+
+#include "deploydyn/elements/bar/bar.hpp"
+#include "deploydyn/elements/bar/bar_entry.hpp"
+#include "deploydyn/elements/local_element_group.hpp"
+#include "deploydyn/model/dof_map.hpp"
+#include "deploydyn/model/model.hpp"
+
+namespace deploydyn {
+namespace {
+
+// One bar for LocalElementGroup: node a's D coordinates, then node b's, and its constants.
+template <int D>
+struct BarRecord {
+  static constexpr int kDofs = 2 * D;
+  static constexpr int kRigidBodyConditions = 1;  // its length
+  using Vector = bar::ElementVector<D>;
+  using Matrix = bar::ElementMatrix<D>;
+  using State = bar::State<D>;
+
+  std::array<int, kDofs> dofs{};
+  bar::Section section;
+  double mass_kg = 0.0;
+  double expansion_per_C = 0.0;                        // α
+  const TimeFunction* temperature_change_C = nullptr;  // ΔT(t), in the model
+
+  double thermal_strain(double t) const { return expansion_per_C * temperature_change_C->value(t); }
+
+  State evaluate(const Vector& q, double t, double thermal_factor) const {
+    return bar::evaluate<D>(q.template head<D>(), q.template tail<D>(), section,
+                            thermal_factor * thermal_strain(t));
+  }
+  Vector internal_force(const State& s) const { return bar::internal_force<D>(s, section); }
+  // The thermal strain of the factor is factor · ε_t: chain rule through ∂f/∂ε_t.
+  Vector thermal_force_derivative(const State& s, double t) const {
+    return thermal_strain(t) * bar::internal_force_per_thermal_strain<D>(s, section);
+  }
+  // ∂f/∂t through ε_t(t) = α ΔT(t).
+  Vector thermal_force_rate(const State& s, double t) const {
+    return expansion_per_C * temperature_change_C->derivative(t) *
+           bar::internal_force_per_thermal_strain<D>(s, section);
+  }
+  Matrix tangent(const State& s) const { return bar::tangent<D>(s, section); }
+  Matrix mass(MassMatrixKind kind) const { return bar::mass_matrix<D>(mass_kg, kind); }
+  // The bar's weight is shared equally by its two nodes (docs/theory.md).
+  Vector weight(const Eigen::Vector3d& gravity_m_s2) const {
+    Vector f;
+    for (int i = 0; i < kDofs; ++i) f[i] = 0.5 * mass_kg * gravity_m_s2[i % D];
+    return f;
+  }
+  double strain_energy(const State& s) const { return bar::strain_energy<D>(s, section); }
+  // |Δ(x_b − x_a)| / L0: how far the bar turned or stretched.
+  double relative_change(const Vector& q, const Vector& q_before) const {
+    double change2 = 0.0;
+    for (int axis = 0; axis < D; ++axis) {
+      const double change = (q[D + axis] - q[axis]) - (q_before[D + axis] - q_before[axis]);
+      change2 += change * change;
+    }
+    return std::sqrt(change2) / section.reference_length_m;
+  }
+  // In the order of kQuantities.
+  void results(const State& s, std::span<double> out) const {
+    out[0] = s.strain;
+    out[1] = s.mechanical_strain;
+    out[2] = s.axial_force_N;
+    out[3] = s.length_m;
+  }
+  double reference_length_m() const { return section.reference_length_m; }
+};
+
+constexpr ResultQuantity kQuantities[] = {
+    {"strain", "strain", true},              // total Green–Lagrange ε
+    {"mstrain", "mechanical_strain", true},  // ε_m = ε − αΔT
+    {"force", "axial_force_N", true},        // true axial force N, tension positive
+    {"length", "length_m", false},           // current length l
+};
+
+template <int D>
+std::unique_ptr<ElementGroup> make_bars(const Model& model, const DofMap& dofs) {
+  std::vector<BarRecord<D>> records;
+  records.reserve(model.bars.size());
+  for (const BarElement& e : model.bars) {
+    const Material& material = model.materials[e.material];
+    BarRecord<D>& bar = records.emplace_back();
+    for (int axis = 0; axis < D; ++axis) {
+      bar.dofs[axis] = dofs.index(e.node_a, axis);
+      bar.dofs[D + axis] = dofs.index(e.node_b, axis);
+    }
+    bar.section = {material.youngs_modulus_Pa * e.area_m2, e.reference_length_m};
+    bar.mass_kg = e.mass_kg;
+    bar.expansion_per_C = material.expansion_per_C;
+    bar.temperature_change_C = &e.temperature_change_C;
+  }
+  return std::make_unique<LocalElementGroup<BarRecord<D>>>(std::move(records), model.analysis.mass);
+}
+
+class BarKind final : public ElementKind {
+ public:
+  std::string_view name() const override { return "bar"; }
+  std::span<const ResultQuantity> quantities() const override { return kQuantities; }
+  int n_elements(const Model& model) const override { return model.n_bars(); }
+  const std::string& element_name(const Model& model, int element) const override {
+    return model.bars[element].name;
+  }
+  int n_element_nodes() const override { return 2; }
+  int element_node(const Model& model, int element, int local_node) const override {
+    return local_node == 0 ? model.bars[element].node_a : model.bars[element].node_b;
+  }
+  int vtk_cell_type() const override { return 3; }  // VTK_LINE
+  double mass_kg(const Model& model, int element) const override {
+    return model.bars[element].mass_kg;
+  }
+  double temperature_change_C(const Model& model, int element, double t) const override {
+    return model.bars[element].temperature_change_C.value(t);
+  }
+  void set_temperature_change(Model& model, const TimeFunction& change_C) const override {
+    for (BarElement& bar : model.bars) bar.temperature_change_C = change_C;
+  }
+  void add_node_unknowns(const Model&, std::vector<std::vector<std::string>>&) const override {}
+  std::span<const ElementField> fields() const override { return bar::entry_fields(); }
+  void read(const std::string& name, const ElementEntryReader& entry, Model& model) const override {
+    bar::read_entry(name, entry, model);
+  }
+  void write(const Model& model, int element, ElementEntryWriter& entry) const override {
+    bar::write_entry(model, element, entry);
+  }
+  std::unique_ptr<ElementGroup> make_group(const Model& model, const DofMap& dofs) const override {
+    return model.dimension == 2 ? make_bars<2>(model, dofs) : make_bars<3>(model, dofs);
+  }
+};
+
+}  // namespace
+
+const ElementKind& bar_kind() {
+  static const BarKind kind;
+  return kind;
+}
+
+}  // namespace deploydyn

@@ -1,0 +1,146 @@
+#pragma once
+// The element interface: what every element type (the bar, later beams) gives the rest of the
+// program. Two halves, after the multibody and FE codes we take as models:
+//
+//  - ElementKind describes a type over a Model (names, nodes, result quantities, ΔT): what the
+//    writers, `check` and the Python module need without building any mechanics.
+//  - ElementGroup is the mechanics of all elements of one type in a model, bound to the
+//    global unknowns (built by ElementKind::make_group). Like MFEM's integrator lists, the
+//    assembler makes one virtual call per type and pass; the group loops over its elements
+//    with fixed-size kernels (elements/local_element_group.hpp). The iteration-matrix block
+//    is c_K K + c_M M, Chrono's ChElementBase::ComputeKRMmatrices(Kfactor, Rfactor, Mfactor)
+//    without R (no element damping yet); each group reports its own strain energy, as Drake's
+//    force elements do.
+//
+// An element contributes, for  M q̈ + f_int(q, t) + Bᵀλ = f_ext(t)  (docs/theory.md):
+// f_int and its tangent K = ∂f_int/∂q (material + geometric), M, its weight, its strain
+// energy U with f_int = ∂U/∂q, and ∂f_int/∂(thermal factor) for path following in ΔT.
+// Every thermal strain is scaled by a `thermal_factor` (1 in a run).
+//
+// Adding a type: its folder elements/<type>/ with a kind and a group, one line in
+// elements/element_kinds.cpp, and its storage in Model (docs/adding-an-element.md).
+
+#include <Eigen/Core>
+#include <memory>
+#include <span>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "deploydyn/assembly/linear_system.hpp"
+#include "deploydyn/elements/element_entry.hpp"
+
+namespace deploydyn {
+
+struct Model;
+class DofMap;
+
+// One quantity an element reports at a configuration, e.g. the bar's axial force.
+struct ResultQuantity {
+  std::string_view key;   // history.csv column prefix ("force.<element>"), summary.json key
+  std::string_view name;  // with its unit: VTK cell array, Python ("axial_force_N")
+  bool recorded = true;   // written to history, summary and VTK; false: computed on request
+};
+
+// The results of every element of one type at one configuration: the quantities of its
+// ElementKind::quantities(), element after element.
+struct ElementResults {
+  int n_quantities = 0;
+  std::vector<double> values;  // values[element · n_quantities + quantity]
+
+  int n_elements() const {
+    return n_quantities > 0 ? static_cast<int>(values.size()) / n_quantities : 0;
+  }
+  double at(int element, int quantity) const {
+    return values[static_cast<std::size_t>(element * n_quantities + quantity)];
+  }
+};
+
+// Weights of an element's iteration-matrix block c_K K + c_M M.
+struct TangentWeights {
+  double stiffness = 1.0;  // c_K
+  double mass = 0.0;       // c_M
+};
+
+class ElementGroup {
+ public:
+  virtual ~ElementGroup() = default;
+
+  virtual int n_elements() const = 0;
+  // Equations that taking every element as rigid would add (Grübler count): 1 per bar.
+  virtual int n_rigid_body_conditions() const = 0;
+
+  // Each adds its elements' share into the global vector (which the caller has sized).
+  virtual void add_internal_force(const Eigen::VectorXd& q, double t, double thermal_factor,
+                                  Eigen::VectorXd& f) const = 0;
+  // ∂f_int/∂(thermal factor) at q; f_int is linear in the factor.
+  virtual void add_thermal_force_derivative(const Eigen::VectorXd& q, double t,
+                                            Eigen::VectorXd& f) const = 0;
+  // ∂f_int/∂t at q through the rate of ΔT(t) (a quasi-static deployment in time).
+  virtual void add_thermal_force_rate(const Eigen::VectorXd& q, double t,
+                                      Eigen::VectorXd& f) const = 0;
+  virtual void add_mass_times(const Eigen::VectorXd& a, Eigen::VectorXd& out) const = 0;
+  // The elements' own weight under gravity g (m/s²).
+  virtual void add_weight(const Eigen::Vector3d& gravity_m_s2, Eigen::VectorXd& f) const = 0;
+  virtual double strain_energy(const Eigen::VectorXd& q, double t) const = 0;
+  // Largest |diagonal entry| of the elements' K at q (thermal factor 1): a scale, not a norm.
+  virtual double largest_stiffness_diagonal(const Eigen::VectorXd& q, double t) const = 0;
+  // How far the elements turn or deform between two configurations, as a share of their size
+  // (the bar: max |Δ(x_b − x_a)| / L0): the static solver's load-step rule.
+  virtual double largest_relative_change(const Eigen::VectorXd& q,
+                                         const Eigen::VectorXd& q_before) const = 0;
+
+  // The iteration-matrix block: its (row, col) pattern, appended in the order in which
+  // add_iteration_matrix writes the values, one value per entry at values[*slot++].
+  virtual int n_matrix_entries() const = 0;
+  virtual void append_matrix_entries(std::vector<MatrixEntry>& entries) const = 0;
+  virtual void add_iteration_matrix(const Eigen::VectorXd& q, double t, double thermal_factor,
+                                    const TangentWeights& weights, std::span<double> values,
+                                    const int*& slot) const = 0;
+
+  // The quantities of ElementKind::quantities() of element `element`, in that order.
+  virtual void results(int element, const Eigen::VectorXd& q, double t, double thermal_factor,
+                       std::span<double> out) const = 0;
+  // Reference length (m) of element `element`: a length scale for step rules and plots.
+  virtual double reference_length_m(int element) const = 0;
+};
+
+class ElementKind {
+ public:
+  virtual ~ElementKind() = default;
+
+  // As model files and messages spell the type: "bar".
+  virtual std::string_view name() const = 0;
+  virtual std::span<const ResultQuantity> quantities() const = 0;
+
+  virtual int n_elements(const Model& model) const = 0;
+  virtual const std::string& element_name(const Model& model, int element) const = 0;
+  virtual int n_element_nodes() const = 0;
+  virtual int element_node(const Model& model, int element, int local_node) const = 0;
+  // VTK cell type of an element (3: a two-node line).
+  virtual int vtk_cell_type() const = 0;
+  virtual double mass_kg(const Model& model, int element) const = 0;
+  virtual double temperature_change_C(const Model& model, int element, double t) const = 0;
+  // Gives every element of this type the temperature change ΔT(t) (°C), as its own.
+  virtual void set_temperature_change(Model& model, const TimeFunction& change_C) const = 0;
+  // Unknowns a node of one of its elements carries beyond its position, appended by name
+  // (a rotation "rz", a slope "dx/ds"); the bar adds none.
+  virtual void add_node_unknowns(const Model& model,
+                                 std::vector<std::vector<std::string>>& per_node) const = 0;
+
+  // The keys of its entries in the model file, and how it reads and writes one. `read` gets an
+  // entry whose keys are among fields() and appends the element, named `name`, to `model`,
+  // whose nodes, materials and model-wide ΔT are already read.
+  virtual std::span<const ElementField> fields() const = 0;
+  virtual void read(const std::string& name, const ElementEntryReader& entry,
+                    Model& model) const = 0;
+  // Every key, defaults explicit (mass and length too: a reload needs no recomputation).
+  virtual void write(const Model& model, int element, ElementEntryWriter& entry) const = 0;
+
+  // Its elements' mechanics, bound to `dofs`. Throws std::invalid_argument for elements whose
+  // mechanics cannot be built.
+  virtual std::unique_ptr<ElementGroup> make_group(const Model& model,
+                                                   const DofMap& dofs) const = 0;
+};
+
+}  // namespace deploydyn

@@ -1,0 +1,151 @@
+#pragma once
+// ElementGroup for any element whose kernels work on fixed-size local vectors: this template
+// gathers each element's unknowns from q, calls the kernel, and scatters the local result into
+// the global vector or matrix. An element type writes only the kernel (practice 3 of
+// STYLE.md: elements return local vectors and matrices), with no heap work per element.
+//
+// `Element` is one element's record with its global unknowns and constants:
+//   static constexpr int kDofs;                       local unknowns
+//   static constexpr int kRigidBodyConditions;        see ElementGroup::n_rigid_body_conditions
+//   using Vector = Eigen::Matrix<double, kDofs, 1>;   using Matrix = ... kDofs × kDofs
+//   using State;                                      what one evaluation shares among kernels
+//   std::array<int, kDofs> dofs;
+//   State evaluate(const Vector& q, double t, double thermal_factor) const;
+//   Vector internal_force(const State&) const;
+//   Vector thermal_force_derivative(const State&, double t) const;   at thermal factor 1
+//   Vector thermal_force_rate(const State&, double t) const;         ∂f/∂t through ΔT(t)
+//   Matrix tangent(const State&) const;               material + geometric
+//   Matrix mass(MassMatrixKind) const;
+//   Vector weight(const Eigen::Vector3d& gravity_m_s2) const;
+//   double strain_energy(const State&) const;
+//   double relative_change(const Vector& q, const Vector& q_before) const;
+//   void results(const State&, std::span<double> out) const;
+//   double reference_length_m() const;
+
+#include <algorithm>
+#include <utility>
+#include <vector>
+
+#include "deploydyn/elements/element.hpp"
+#include "deploydyn/model/model.hpp"
+
+namespace deploydyn {
+
+template <class Element>
+class LocalElementGroup final : public ElementGroup {
+ public:
+  using Vector = typename Element::Vector;
+  using Matrix = typename Element::Matrix;
+  static constexpr int kDofs = Element::kDofs;
+
+  LocalElementGroup(std::vector<Element> elements, MassMatrixKind mass_kind)
+      : elements_(std::move(elements)), mass_kind_(mass_kind) {}
+
+  int n_elements() const override { return static_cast<int>(elements_.size()); }
+  int n_rigid_body_conditions() const override {
+    return Element::kRigidBodyConditions * n_elements();
+  }
+
+  void add_internal_force(const Eigen::VectorXd& q, double t, double thermal_factor,
+                          Eigen::VectorXd& f) const override {
+    for (const Element& e : elements_) {
+      scatter(e, e.internal_force(e.evaluate(gather(e, q), t, thermal_factor)), f);
+    }
+  }
+
+  void add_thermal_force_derivative(const Eigen::VectorXd& q, double t,
+                                    Eigen::VectorXd& f) const override {
+    for (const Element& e : elements_) {
+      scatter(e, e.thermal_force_derivative(e.evaluate(gather(e, q), t, 1.0), t), f);
+    }
+  }
+
+  void add_thermal_force_rate(const Eigen::VectorXd& q, double t,
+                              Eigen::VectorXd& f) const override {
+    for (const Element& e : elements_) {
+      scatter(e, e.thermal_force_rate(e.evaluate(gather(e, q), t, 1.0), t), f);
+    }
+  }
+
+  void add_mass_times(const Eigen::VectorXd& a, Eigen::VectorXd& out) const override {
+    for (const Element& e : elements_) {
+      const Vector me = e.mass(mass_kind_) * gather(e, a);
+      scatter(e, me, out);
+    }
+  }
+
+  void add_weight(const Eigen::Vector3d& gravity_m_s2, Eigen::VectorXd& f) const override {
+    for (const Element& e : elements_) scatter(e, e.weight(gravity_m_s2), f);
+  }
+
+  double strain_energy(const Eigen::VectorXd& q, double t) const override {
+    double energy = 0.0;
+    for (const Element& e : elements_) energy += e.strain_energy(e.evaluate(gather(e, q), t, 1.0));
+    return energy;
+  }
+
+  double largest_stiffness_diagonal(const Eigen::VectorXd& q, double t) const override {
+    double largest = 0.0;
+    for (const Element& e : elements_) {
+      const Matrix k = e.tangent(e.evaluate(gather(e, q), t, 1.0));
+      largest = std::max(largest, k.diagonal().cwiseAbs().maxCoeff());
+    }
+    return largest;
+  }
+
+  double largest_relative_change(const Eigen::VectorXd& q,
+                                 const Eigen::VectorXd& q_before) const override {
+    double largest = 0.0;
+    for (const Element& e : elements_) {
+      largest = std::max(largest, e.relative_change(gather(e, q), gather(e, q_before)));
+    }
+    return largest;
+  }
+
+  int n_matrix_entries() const override { return n_elements() * kDofs * kDofs; }
+
+  void append_matrix_entries(std::vector<MatrixEntry>& entries) const override {
+    for (const Element& e : elements_) {
+      for (const int col : e.dofs) {
+        for (const int row : e.dofs) entries.push_back({row, col});
+      }
+    }
+  }
+
+  void add_iteration_matrix(const Eigen::VectorXd& q, double t, double thermal_factor,
+                            const TangentWeights& w, std::span<double> values,
+                            const int*& slot) const override {
+    for (const Element& e : elements_) {
+      Matrix k = w.stiffness * e.tangent(e.evaluate(gather(e, q), t, thermal_factor));
+      if (w.mass != 0.0) k += w.mass * e.mass(mass_kind_);
+      for (int j = 0; j < kDofs; ++j) {
+        for (int i = 0; i < kDofs; ++i) values[*slot++] += k(i, j);
+      }
+    }
+  }
+
+  void results(int element, const Eigen::VectorXd& q, double t, double thermal_factor,
+               std::span<double> out) const override {
+    const Element& e = elements_[element];
+    e.results(e.evaluate(gather(e, q), t, thermal_factor), out);
+  }
+
+  double reference_length_m(int element) const override {
+    return elements_[element].reference_length_m();
+  }
+
+ private:
+  static Vector gather(const Element& e, const Eigen::VectorXd& x) {
+    Vector local;
+    for (int i = 0; i < kDofs; ++i) local[i] = x[e.dofs[i]];
+    return local;
+  }
+  static void scatter(const Element& e, const Vector& local, Eigen::VectorXd& x) {
+    for (int i = 0; i < kDofs; ++i) x[e.dofs[i]] += local[i];
+  }
+
+  std::vector<Element> elements_;
+  MassMatrixKind mass_kind_;
+};
+
+}  // namespace deploydyn

@@ -1,0 +1,46 @@
+// The list of element types (elements/element_kinds.hpp): names and result quantities that the
+// writers can key on, and model-format.md documenting every key of every type's entry.
+#include "deploydyn/elements/element_kinds.hpp"
+
+#include <fmt/format.h>
+#include <gtest/gtest.h>
+
+#include <fstream>
+#include <set>
+#include <sstream>
+#include <string>
+
+namespace deploydyn {
+namespace {
+
+TEST(ElementKinds, NamesAndQuantitiesAreUnique) {
+  std::set<std::string_view> kinds;
+  for (const ElementKind* kind : element_kinds()) {
+    EXPECT_TRUE(kinds.insert(kind->name()).second) << kind->name();
+    std::set<std::string_view> keys, names;
+    for (const ResultQuantity& quantity : kind->quantities()) {
+      EXPECT_TRUE(keys.insert(quantity.key).second) << kind->name() << ": " << quantity.key;
+      EXPECT_TRUE(names.insert(quantity.name).second) << kind->name() << ": " << quantity.name;
+    }
+  }
+}
+
+// The model format's tables are the types' field tables (ElementField), row by row.
+TEST(ElementKinds, ModelFormatDocumentsEveryField) {
+  std::ifstream file(std::string(DEPLOYDYN_SOURCE_DIR) + "/docs/model-format.md");
+  ASSERT_TRUE(file) << "docs/model-format.md";
+  std::stringstream text;
+  text << file.rdbuf();
+  for (const ElementKind* kind : element_kinds()) {
+    for (const ElementField& field : kind->fields()) {
+      const std::string row = fmt::format("| `{}` | {}| {} | {} |", field.key,
+                                          field.unit.empty() ? "" : fmt::format("{} ", field.unit),
+                                          field.default_value, field.allowed);
+      EXPECT_NE(text.str().find(row), std::string::npos) << kind->name() << " field row missing:\n"
+                                                         << row;
+    }
+  }
+}
+
+}  // namespace
+}  // namespace deploydyn
