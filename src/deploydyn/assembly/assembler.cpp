@@ -130,11 +130,8 @@ void Assembler::static_residual_time_derivative(const Eigen::VectorXd& q, double
                                                 Eigen::VectorXd& dphi) const {
   dr.setZero(n_dofs());
   for (const auto& group : groups_) group->add_thermal_force_rate(q, t, dr);
-  const int dim = model_.dimension;
-  for (const NodalLoad& load : model_.loads) {  // gravity does not change with t
-    const double rate = load.factor.derivative(t);
-    for (int axis = 0; axis < dim; ++axis) dr[dofs_.index(load.node, axis)] -= rate * load.force_N[axis];
-  }
+  // Gravity does not change with t; the nodal loads change with their factors.
+  add_nodal_loads([&](const NodalLoad& load) { return -load.factor.derivative(t); }, dr);
   Eigen::VectorXd local;
   for (std::size_t c = 0; c < constraints_.size(); ++c) {
     const Constraint& con = *constraints_[c];
@@ -158,9 +155,13 @@ void Assembler::external_force(double t, Eigen::VectorXd& f) const {
       }
     }
   }
+  add_nodal_loads([&](const NodalLoad& load) { return load.factor.value(t); }, f);
+}
+
+void Assembler::add_nodal_loads(auto&& factor_of, Eigen::VectorXd& f) const {
   for (const NodalLoad& load : model_.loads) {
-    const double factor = load.factor.value(t);
-    for (int axis = 0; axis < dim; ++axis) {
+    const double factor = factor_of(load);
+    for (int axis = 0; axis < model_.dimension; ++axis) {
       f[dofs_.index(load.node, axis)] += factor * load.force_N[axis];
     }
   }

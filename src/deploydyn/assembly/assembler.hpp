@@ -113,6 +113,8 @@ class Assembler {
   std::string describe_equation(int row) const;
 
  private:
+  // Σ factor_of(load) · force_N of every nodal load into f.
+  void add_nodal_loads(auto&& factor_of, Eigen::VectorXd& f) const;
   // Φ and/or Bᵀλ (null: not wanted), one evaluation per constraint.
   void evaluate_constraints(const Eigen::VectorXd& q, double t, const Eigen::VectorXd* lambda,
                             Eigen::VectorXd* phi, Eigen::VectorXd* f) const;

@@ -29,10 +29,10 @@ constexpr double kCriticalEigenvalueShare = 1e-9;
 // jumped to another stretch of the path (across a limit point, onto the far branch).
 constexpr double kMaxCorrectionPerStep = 1.0;
 // ℓ when the start does not move with μ (dq/dμ = 0, e.g. a straight strut heated between
-// supports): a thousandth of the longest bar, so that μ sets the pace of the path.
+// supports): a thousandth of the longest element, so that μ sets the pace of the path.
 constexpr double kSmallestLengthShare = 1e-3;
-// ℓ at least this share of the longest bar when following the drivers: a deployment moves the
-// nodes by bar lengths, while dq/dμ at its start is often 0 (the driver starts from rest).
+// ℓ at least this share of the longest element when following the drivers: a deployment moves
+// the nodes by element lengths, while dq/dμ at its start is often 0 (the driver starts from rest).
 constexpr double kDeploymentLengthShare = 1.0;
 // Regula falsi steps for one event; each halves the bracket at least every other step, so 100
 // covers a bracket shrinking from Δs ≤ 1 to 1e-15.
@@ -76,9 +76,6 @@ class PathTracer {
   ContinuationResult run(const Eigen::VectorXd& q0, const Eigen::VectorXd& lambda0);
 
  private:
-  double longest_bar_m() const {
-    return assembler_.longest_element_m();
-  }
   // Scalar product of two path directions in the arc-length metric.
   double dot(const Eigen::VectorXd& q_a, double mu_a, const Eigen::VectorXd& q_b, double mu_b) const {
     return q_a.dot(q_b) / (length_ * length_) + mu_a * mu_b / (range_ * range_);
@@ -502,7 +499,7 @@ ContinuationResult PathTracer::run(const Eigen::VectorXd& q0, const Eigen::Vecto
     length_ = std::max(rhs_b_.head(assembler_.n_dofs()).norm() * range_,
                        (options_.parameter == PathParameter::driver ? kDeploymentLengthShare
                                                                     : kSmallestLengthShare) *
-                           longest_bar_m());
+                           assembler_.longest_element_m());
   }
   result_.length_scale_m = length_;
   std::optional<Tangent> t = tangent(current, nullptr);

@@ -46,6 +46,12 @@ WindowSample sample(const Assembler& assembler, const PathPoint& point, double t
   return s;
 }
 
+// The last point of `path` on the branch it started on: its first event, or its end (beyond
+// an event the path leaves the branch the deployment is on).
+int last_on_first_branch(const ContinuationResult& path) {
+  return path.events.empty() ? static_cast<int>(path.points.size()) - 1 : path.events.front().point;
+}
+
 // One side of the window at one driver position: the path from ΔT = 0 to the side's reach,
 // on `assembler` (the model with that reach as its uniform ΔT) and its `system`.
 void trace_side(const Assembler& assembler, LinearSystem& system, double time_s,
@@ -74,9 +80,7 @@ void trace_side(const Assembler& assembler, LinearSystem& system, double time_s,
   path.newton = heated.analysis.newton;
   path.stop = options.stop;
   const ContinuationResult result = trace_path(assembler, path, system, state.q, state.lambda);
-  // Up to the first event: beyond it the path leaves the branch the deployment is on.
-  const int last = result.events.empty() ? static_cast<int>(result.points.size()) - 1 : result.events.front().point;
-  for (int i = 0; i <= last; ++i) {
+  for (int i = 0; i <= last_on_first_branch(result); ++i) {
     samples.push_back(sample(assembler, result.points[i], time_s, result.points[i].parameter, reach_C));
   }
   if (!result.events.empty()) {
@@ -94,17 +98,21 @@ WindowDeployment deploy(const Assembler& assembler, LinearSystem& system, double
                         double end_s, const WindowOptions& options, std::vector<WindowSample>& samples) {
   WindowDeployment deployment;
   deployment.delta_t_C = delta_t_C;
-  ContinuationOptions path;
-  path.newton = assembler.model().analysis.newton;
-  path.max_steps = options.max_steps;
-  path.stop = options.stop;
+  ContinuationOptions heat, drive;
+  for (ContinuationOptions* path : {&heat, &drive}) {
+    path->newton = assembler.model().analysis.newton;
+    path->max_steps = options.max_steps;
+    path->stop = options.stop;
+  }
+  heat.parameter = PathParameter::thermal;  // ΔT scaled from 0 to the level, at t = 0
+  heat.end = 1.0;
+  heat.initial_step = heat.max_step = options.max_step;
+  drive.parameter = PathParameter::driver;  // default steps: the eigenvalue rules guard folds
+  drive.end = end_s;
   Eigen::VectorXd q = assembler.initial_coordinates();
   Eigen::VectorXd lambda = Eigen::VectorXd::Zero(assembler.n_equations());
   if (delta_t_C != 0.0) {
-    path.parameter = PathParameter::thermal;
-    path.end = 1.0;
-    path.initial_step = path.max_step = options.max_step;
-    const ContinuationResult heated = trace_path(assembler, path, system, q, lambda);
+    const ContinuationResult heated = trace_path(assembler, heat, system, q, lambda);
     if (!heated.events.empty()) {
       const PathEvent& event = heated.events.front();
       deployment.stop = WindowEdge{0.0, event.parameter * delta_t_C, event.parameter_error * std::abs(delta_t_C),
@@ -119,16 +127,8 @@ WindowDeployment deploy(const Assembler& assembler, LinearSystem& system, double
     q = heated.points.back().q;
     lambda = heated.points.back().lambda;
   }
-  path.parameter = PathParameter::driver;
-  path.start = 0.0;
-  path.end = end_s;
-  path.initial_step = ContinuationOptions{}.initial_step;
-  path.max_step = ContinuationOptions{}.max_step;
-  const ContinuationResult deployed = trace_path(assembler, path, system, q, lambda);
-  // Up to the first event: beyond it the path leaves the branch the deployment is on.
-  const int last = deployed.events.empty() ? static_cast<int>(deployed.points.size()) - 1
-                                           : deployed.events.front().point;
-  for (int i = 0; i <= last; ++i) {
+  const ContinuationResult deployed = trace_path(assembler, drive, system, q, lambda);
+  for (int i = 0; i <= last_on_first_branch(deployed); ++i) {
     const PathPoint& point = deployed.points[i];
     const WindowSample s = sample(assembler, point, point.parameter, 1.0, delta_t_C);
     deployment.peak_axial_force_N = std::max(deployment.peak_axial_force_N, s.peak_axial_force_N);
