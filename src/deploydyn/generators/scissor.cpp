@@ -1,0 +1,162 @@
+#include "deploydyn/generators/scissor.hpp"
+
+#include <fmt/format.h>
+
+#include <Eigen/Geometry>
+#include <cmath>
+#include <numbers>
+#include <stdexcept>
+#include <string>
+
+namespace deploydyn {
+namespace {
+
+constexpr double kPi = std::numbers::pi;
+constexpr double kDegree = kPi / 180.0;
+// Default opening angles of the arches: members 10° from upright folded, 35° above the chord
+// deployed (ψ = π − 2α).
+constexpr double kArchFolded_rad = 20.0 * kDegree;
+constexpr double kArchDeployed_rad = 110.0 * kDegree;
+// Ring: δ from 10° short of the folded limit π/2 − π/n to 10° before the extended dead point.
+constexpr double kRingMargin_rad = 10.0 * kDegree;
+constexpr int kMaxUnits = 100'000;
+
+[[noreturn]] void reject(const std::string& what) {
+  throw std::invalid_argument("scissor: " + what);
+}
+
+Eigen::Vector2d direction(double angle_rad) { return {std::cos(angle_rad), std::sin(angle_rad)}; }
+
+// Arch: the unit template about H = 0 at member angle α (scissor.hpp), then every unit placed by
+// the rigid motion that takes its first unit line onto the previous unit's last one.
+ScissorShape arch_shape(int n_units, double a, double b, double alpha) {
+  const double c = std::cos(alpha), s = std::sin(alpha);
+  const Eigen::Vector2d inner0(-a * c, -a * s), outer0(-b * c, b * s);
+  const Eigen::Vector2d inner1(a * c, -a * s), outer1(b * c, b * s);
+  const double line_angle = std::atan2((outer0 - inner0).y(), (outer0 - inner0).x());
+
+  ScissorShape shape;
+  shape.inner.push_back(Eigen::Vector2d::Zero());
+  shape.outer.push_back(outer0 - inner0);
+  for (int k = 0; k < n_units; ++k) {
+    const Eigen::Vector2d line = shape.outer[k] - shape.inner[k];
+    const Eigen::Rotation2Dd turn(std::atan2(line.y(), line.x()) - line_angle);
+    const auto place = [&](const Eigen::Vector2d& p) {
+      return Eigen::Vector2d(shape.inner[k] + turn * (p - inner0));
+    };
+    shape.hinge.push_back(place(Eigen::Vector2d::Zero()));
+    shape.inner.push_back(place(inner1));
+    shape.outer.push_back(place(outer1));
+  }
+  // Feet on the x axis, inner[0] at the origin, arch above.
+  const Eigen::Vector2d chord = shape.inner.back() - shape.inner.front();
+  const Eigen::Rotation2Dd level(-std::atan2(chord.y(), chord.x()));
+  for (auto* points : {&shape.inner, &shape.outer, &shape.hinge}) {
+    for (Eigen::Vector2d& p : *points) p = level * p;
+  }
+  shape.span_m = chord.norm();
+  return shape;
+}
+
+// Ring: opening ψ = π + 2π/n − 2δ; H_k at radius ρ = l cos δ / sin(π/n) on the bisector of the
+// radial lines k and k+1; P_k, Q_k at radii ρ cos(π/n) ∓ l sin δ (scissor.hpp).
+ScissorShape ring_shape(int n_units, double arm, double opening) {
+  const double half = kPi / n_units;
+  const double delta = 0.5 * (kPi + 2.0 * half - opening);
+  const double rho = arm * std::cos(delta) / std::sin(half);
+  const double middle = rho * std::cos(half), reach = arm * std::sin(delta);
+  ScissorShape shape;
+  for (int k = 0; k < n_units; ++k) {
+    const Eigen::Vector2d radial = direction(2.0 * half * k);
+    shape.inner.push_back((middle - reach) * radial);
+    shape.outer.push_back((middle + reach) * radial);
+    shape.hinge.push_back(rho * direction(2.0 * half * k + half));
+  }
+  shape.span_m = 2.0 * (middle + reach);
+  return shape;
+}
+
+bool is_ring(const ScissorOptions& options) { return options.form == ScissorForm::ring; }
+
+}  // namespace
+
+double folded_opening_rad(const ScissorOptions& options) {
+  if (options.folded_angle_deg != 0.0) return options.folded_angle_deg * kDegree;
+  // Ring: δ_f = π/2 − π/n − margin.
+  return is_ring(options) ? 4.0 * kPi / options.n_units + 2.0 * kRingMargin_rad : kArchFolded_rad;
+}
+
+double deployed_opening_rad(const ScissorOptions& options) {
+  if (options.deployed_angle_deg != 0.0) return options.deployed_angle_deg * kDegree;
+  return is_ring(options) ? kPi + 2.0 * kPi / options.n_units - 2.0 * kRingMargin_rad
+                          : kArchDeployed_rad;
+}
+
+void validate(const ScissorOptions& o) {
+  if (is_ring(o)) {
+    if (o.n_units < 8 || o.n_units % 4 != 0 || o.n_units > kMaxUnits) {
+      reject(fmt::format("units must be a multiple of 4 from 8 to {} for a ring (its supports "
+                         "guide nodes on the x and y axes), got {}",
+                         kMaxUnits, o.n_units));
+    }
+  } else if (o.n_units < 1 || o.n_units > kMaxUnits) {
+    reject(fmt::format("units must be from 1 to {}, got {}", kMaxUnits, o.n_units));
+  }
+  if (!(o.span_m > 0.0) || !std::isfinite(o.span_m)) {
+    reject(fmt::format("span must be > 0 m, got {}", o.span_m));
+  }
+  if (o.form == ScissorForm::polar) {
+    if (!(o.hinge_offset > 0.0 && o.hinge_offset <= 0.9)) {
+      reject(fmt::format("hinge offset of polar units must be in (0, 0.9], got {}",
+                         o.hinge_offset));
+    }
+  }
+  if (o.elements_per_arm < 1 || o.elements_per_arm > 100) {
+    reject(fmt::format("elements per arm must be from 1 to 100, got {}", o.elements_per_arm));
+  }
+  for (const auto& [name, value] : {std::pair{"area", o.area_m2}, std::pair{"inertia", o.inertia_m4},
+                                    std::pair{"depth", o.depth_m},
+                                    std::pair{"deploy time", o.deploy_time_s},
+                                    std::pair{"step", o.step_s}}) {
+    if (!(value > 0.0) || !std::isfinite(value)) {
+      reject(fmt::format("{} must be > 0, got {}", name, value));
+    }
+  }
+  if (!(o.end_time_s >= o.deploy_time_s)) {
+    reject(fmt::format("end time must be at least the deploy time {} s, got {} s",
+                       o.deploy_time_s, o.end_time_s));
+  }
+  if (!std::isfinite(o.delta_t_C) || !std::isfinite(o.gradient_C)) {
+    reject("delta-t and gradient must be finite numbers");
+  }
+  const double folded = folded_opening_rad(o), deployed = deployed_opening_rad(o);
+  // The mechanism's range: arches 0 < ψ < π (members not crossing the chord), ring
+  // 4π/n < ψ < π + 2π/n (P inside the centre, P = Q at the extended dead point).
+  const double lowest = is_ring(o) ? 4.0 * kPi / o.n_units : 0.0;
+  const double highest = is_ring(o) ? kPi + 2.0 * kPi / o.n_units : kPi;
+  for (const auto& [name, value] : {std::pair{"folded angle", folded},
+                                    std::pair{"deployed angle", deployed}}) {
+    if (!(value > lowest && value < highest)) {
+      reject(fmt::format("{} must be between {:.6g} and {:.6g} degrees for this form, got {:.6g}",
+                         name, lowest / kDegree, highest / kDegree, value / kDegree));
+    }
+  }
+  if (!(deployed > folded)) {
+    reject(fmt::format("deployed angle ({:.6g}°) must be larger than the folded one ({:.6g}°)",
+                       deployed / kDegree, folded / kDegree));
+  }
+}
+
+ScissorShape scissor_shape(const ScissorOptions& options, double arm_m, double opening_rad) {
+  if (is_ring(options)) return ring_shape(options.n_units, arm_m, opening_rad);
+  const double e = options.form == ScissorForm::polar ? options.hinge_offset : 0.0;
+  return arch_shape(options.n_units, arm_m * (1.0 - e), arm_m * (1.0 + e),
+                    0.5 * (kPi - opening_rad));
+}
+
+double scissor_arm_length_m(const ScissorOptions& options) {
+  // Every length scales with the arm: one evaluation at arm 1 gives the factor.
+  return options.span_m / scissor_shape(options, 1.0, deployed_opening_rad(options)).span_m;
+}
+
+}  // namespace deploydyn
