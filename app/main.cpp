@@ -128,7 +128,13 @@ int check_command(const std::string& model_file, const std::vector<std::string>&
     for (int axis = 0; axis < model.dimension; ++axis) support_rows += s.axes[axis] ? 1 : 0;
     if (s.rotation) support_rows += model.dimension == 2 ? 1 : 3;
   }
-  const int driver_rows = assembler.n_equations() - support_rows;
+  int joint_rows = 0;
+  for (const Joint& joint : model.joints) {
+    const bool keeps_axis = model.dimension == 3 && assembler.dof_map().index(joint.nodes[0], "R11") >= 0 &&
+                            assembler.dof_map().index(joint.nodes[1], "R11") >= 0;
+    joint_rows += model.dimension + (keeps_axis ? 2 : 0);
+  }
+  const int driver_rows = assembler.n_equations() - support_rows - joint_rows;
   double mass = 0.0;
   for (const ElementRef& e : all_elements(model)) mass += e.kind->mass_kg(model, e.index);
   for (const Node& n : model.nodes) mass += n.point_mass_kg;
@@ -154,6 +160,11 @@ int check_command(const std::string& model_file, const std::vector<std::string>&
   }
   const std::string elements_word = fmt::format("{}", fmt::join(kinds_present, " and "));
   const int free_motion = assembler.rigid_mobility() + driver_rows;  // before the drivers
+  const auto driver_list = [&] {
+    std::vector<std::string> out;
+    for (const Driver& d : model.drivers) out.push_back(fmt::format("{} ({})", d.name, kDriverKinds.name(d.kind)));
+    return fmt::format("{}", fmt::join(out, ", "));
+  };
   const AnalysisOptions& a = model.analysis;
 
   fmt::print("model       {} ({})\n", model.name.empty() ? "(unnamed)" : model.name, model_file);
@@ -161,12 +172,17 @@ int check_command(const std::string& model_file, const std::vector<std::string>&
   fmt::print("nodes       {}: {}\n", model.n_nodes(), names(model.nodes));
   fmt::print("elements    {}; total mass {:.6g} kg\n", fmt::join(element_lists, "; "), mass);
   fmt::print("supports    {} ({} equations)\n", model.supports.size(), support_rows);
+  if (!model.joints.empty()) {
+    fmt::print("joints      {} ({} equations): {}\n", model.joints.size(), joint_rows, names(model.joints));
+  }
   fmt::print("drivers     {} ({} equations){}{}\n", model.drivers.size(), driver_rows,
-             model.drivers.empty() ? "" : ": ", names(model.drivers));
+             model.drivers.empty() ? "" : ": ", driver_list());
   fmt::print("unknowns    {} coordinates + {} multipliers\n", assembler.n_dofs(), assembler.n_equations());
-  fmt::print("mobility    {} coordinates − {} support equations − {} = {} with rigid {}; "
+  fmt::print("mobility    {} coordinates − {} support equations{} − {} = {} with rigid {}; "
              "{} after the drivers{}\n",
-             assembler.n_dofs(), support_rows, fmt::join(rigid_conditions, " − "), free_motion, elements_word,
+             assembler.n_dofs(), support_rows,
+             joint_rows > 0 ? fmt::format(" − {} joint equations", joint_rows) : "",
+             fmt::join(rigid_conditions, " − "), free_motion, elements_word,
              free_motion - driver_rows,
              free_motion - driver_rows == 0 ? " (driven mechanism, kinematically determinate)"
              : free_motion - driver_rows > 0

@@ -6,6 +6,9 @@
 #include <limits>
 #include <stdexcept>
 
+#include "deploydyn/constraints/driven_hinge_angle.hpp"
+#include "deploydyn/constraints/driven_revolute.hpp"
+#include "deploydyn/constraints/pin_joint.hpp"
 #include "deploydyn/constraints/prescribed_coordinates.hpp"
 #include "deploydyn/elements/element_kinds.hpp"
 
@@ -14,10 +17,12 @@ namespace {
 
 constexpr const char* kAxisNames[] = {"x", "y", "z"};
 
-// Local Φ and Jacobian of one constraint on the stack: at most 3 equations (a support) on
-// 6 unknowns (a 3D driver's two nodes).
-constexpr int kMaxConstraintEquations = 3;
-constexpr int kMaxConstraintDofs = 6;
+// Local Φ and Jacobian of one constraint on the stack: at most 5 equations (a 3D pin joint
+// that keeps its axis) on 24 unknowns (its two nodes' positions and rotation matrices).
+constexpr int kMaxConstraintEquations = 5;
+constexpr int kMaxConstraintDofs = 24;
+constexpr std::array<const char*, 9> kRotationUnknowns{"R11", "R12", "R13", "R21", "R22",
+                                                       "R23", "R31", "R32", "R33"};
 using LocalVector = Eigen::Matrix<double, Eigen::Dynamic, 1, 0, kMaxConstraintEquations, 1>;
 using LocalJacobian = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0,
                                     kMaxConstraintEquations, kMaxConstraintDofs>;
@@ -46,28 +51,80 @@ std::unique_ptr<Constraint> make_support(const FixedNode& support, const Model& 
   return std::make_unique<PrescribedCoordinates>(rows, initial, labels);
 }
 
+std::vector<int> position_dofs(int node, const Model& model, const DofMap& dofs) {
+  std::vector<int> out;
+  for (int axis = 0; axis < model.dimension; ++axis) out.push_back(dofs.index(node, axis));
+  return out;
+}
+
+// The node's rotation unknowns: rz in 2D, R11 … R33 in 3D (beam nodes); empty if it has none.
+std::vector<int> rotation_dofs(int node, const Model& model, const DofMap& dofs) {
+  std::vector<int> out;
+  if (model.dimension == 2) {
+    if (const int rz = dofs.index(node, "rz"); rz >= 0) out.push_back(rz);
+    return out;
+  }
+  for (const char* name : kRotationUnknowns) {
+    const int index = dofs.index(node, name);
+    if (index < 0) return {};
+    out.push_back(index);
+  }
+  return out;
+}
+
+std::unique_ptr<Constraint> make_joint(const Joint& joint, const Model& model, const DofMap& dofs) {
+  const auto [a, b] = joint.nodes;
+  std::vector<int> rotation_a, rotation_b;
+  if (model.dimension == 3) {
+    rotation_a = rotation_dofs(a, model, dofs);
+    rotation_b = rotation_dofs(b, model, dofs);
+    if (rotation_a.empty() || rotation_b.empty()) rotation_a.clear(), rotation_b.clear();
+  }
+  return std::make_unique<PinJoint>(position_dofs(a, model, dofs), position_dofs(b, model, dofs),
+                                    rotation_a, rotation_b, joint.axis, "joint " + joint.name);
+}
+
 std::unique_ptr<Constraint> make_driver(const Driver& driver, const Model& model,
                                         const DofMap& dofs) {
   const DriverMotion motion(driver.profile, driver.reading);
   const std::string label = "driver " + driver.name;
-  if (driver.kind == Driver::Kind::coordinate) {
-    const Node& node = model.nodes[driver.node];
-    return std::make_unique<PrescribedCoordinates>(
-        std::vector<int>{dofs.index(driver.node, driver.direction)},
-        std::vector<double>{node.position_m[driver.direction]},
-        std::vector<std::string>{label + " (" + kAxisNames[driver.direction] + "." + node.name +
-                                 ")"},
-        motion);
+  const Eigen::Vector3d axis = model.dimension == 2 ? Eigen::Vector3d::UnitZ() : driver.axis;
+  switch (driver.kind) {
+    case Driver::Kind::coordinate: {
+      const Node& node = model.nodes[driver.node];
+      return std::make_unique<PrescribedCoordinates>(
+          std::vector<int>{dofs.index(driver.node, driver.direction)},
+          std::vector<double>{node.position_m[driver.direction]},
+          std::vector<std::string>{label + " (" + kAxisNames[driver.direction] + "." + node.name +
+                                   ")"},
+          motion);
+    }
+    case Driver::Kind::revolute: {
+      const Joint& joint = model.joints[driver.joint];
+      const auto [a, b] = joint.nodes;
+      std::vector<int> rotation_a = rotation_dofs(a, model, dofs), rotation_b = rotation_dofs(b, model, dofs);
+      if (rotation_a.empty() || rotation_b.empty()) {
+        throw std::invalid_argument(label + ": revolute on joint " + joint.name +
+                                    ", whose nodes do not both carry rotations");
+      }
+      return std::make_unique<DrivenRevolute>(rotation_a, rotation_b, joint.axis, motion,
+                                              label + " (revolute joint " + joint.name + ")");
+    }
+    case Driver::Kind::hinge_angle: {
+      const auto [a, h, b] = driver.hinge_nodes;
+      return std::make_unique<DrivenHingeAngle>(
+          position_dofs(a, model, dofs), position_dofs(h, model, dofs), position_dofs(b, model, dofs),
+          model.nodes[a].position_m, model.nodes[h].position_m, model.nodes[b].position_m, axis, motion,
+          label + " (hinge angle " + model.nodes[a].name + "–" + model.nodes[h].name + "–" +
+              model.nodes[b].name + ")");
+    }
+    case Driver::Kind::bar_angle:
+      break;
   }
   const BarElement& bar = model.bars[driver.element];
   const int tip = bar.node_a == driver.pivot ? bar.node_b : bar.node_a;
-  std::vector<int> pivot_dofs, tip_dofs;
-  for (int axis = 0; axis < model.dimension; ++axis) {
-    pivot_dofs.push_back(dofs.index(driver.pivot, axis));
-    tip_dofs.push_back(dofs.index(tip, axis));
-  }
-  const Eigen::Vector3d axis = model.dimension == 2 ? Eigen::Vector3d::UnitZ() : driver.axis;
-  return std::make_unique<DrivenBarAngle>(pivot_dofs, tip_dofs,
+  return std::make_unique<DrivenBarAngle>(position_dofs(driver.pivot, model, dofs),
+                                          position_dofs(tip, model, dofs),
                                           model.nodes[driver.pivot].position_m,
                                           model.nodes[tip].position_m, axis, motion,
                                           label + " (angle of element " + bar.name + ")");
@@ -80,6 +137,7 @@ Assembler::Assembler(const Model& model) : model_(model), dofs_(model) {
   for (const FixedNode& support : model.supports) {
     constraints_.push_back(make_support(support, model, dofs_));
   }
+  for (const Joint& joint : model.joints) constraints_.push_back(make_joint(joint, model, dofs_));
   for (const Driver& driver : model.drivers) {
     driver_constraint_.push_back(static_cast<int>(constraints_.size()));
     constraints_.push_back(make_driver(driver, model, dofs_));
@@ -364,8 +422,8 @@ double Assembler::driver_effort(int driver, const Eigen::VectorXd& q, double t,
                                 const Eigen::VectorXd& lambda) const {
   const Constraint& con = *constraints_[driver_constraint_[driver]];
   const auto multipliers = lambda.segment(driver_rows_[driver], con.n_equations());
-  if (const auto* angle = dynamic_cast<const DrivenBarAngle*>(&con)) {
-    return angle->torque(q, t, multipliers);
+  if (const auto* driving = dynamic_cast<const DrivingConstraint*>(&con)) {
+    return driving->effort(q, t, multipliers);
   }
   // Coordinate driver: the force it applies along the coordinate is −λ.
   return -multipliers[0];

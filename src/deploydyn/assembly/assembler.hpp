@@ -103,7 +103,8 @@ class Assembler {
   // How far the elements turn or deform between two configurations, as a share of their size.
   double largest_relative_change(const Eigen::VectorXd& q, const Eigen::VectorXd& q_before) const;
   double strain_energy(const Eigen::VectorXd& q, double t) const;
-  // Driver effort: torque (N·m) for bar_angle, force (N) for coordinate drivers.
+  // Driver effort: torque (N·m) for the drivers that turn (drives_rotation), force (N) for
+  // coordinate drivers.
   double driver_effort(int driver, const Eigen::VectorXd& q, double t,
                        const Eigen::VectorXd& lambda) const;
   // First constraint row of driver `driver` in λ.
@@ -124,7 +125,7 @@ class Assembler {
   const Model& model_;
   DofMap dofs_;
   std::vector<std::unique_ptr<ElementGroup>> groups_;  // [kind of element_kinds()]
-  std::vector<std::unique_ptr<Constraint>> constraints_;  // supports first, then drivers
+  std::vector<std::unique_ptr<Constraint>> constraints_;  // supports, joints, then drivers
   std::vector<int> first_row_;                            // [constraint] → first λ row
   std::vector<int> driver_rows_;                          // [driver] → first λ row
   std::vector<int> driver_constraint_;                    // [driver] → index in constraints_

@@ -17,7 +17,7 @@ DrivenBarAngle::DrivenBarAngle(std::vector<int> pivot_dofs, std::vector<int> tip
                                const Eigen::Vector3d& pivot_position,
                                const Eigen::Vector3d& tip_position, const Eigen::Vector3d& axis,
                                DriverMotion motion, std::string label)
-    : Constraint(pivot_dofs.size() == 2 ? 1 : 2, concatenate(pivot_dofs, tip_dofs)),
+    : DrivingConstraint(pivot_dofs.size() == 2 ? 1 : 2, concatenate(pivot_dofs, tip_dofs)),
       axis_(axis.normalized()),
       motion_(std::move(motion)),
       label_(std::move(label)) {

@@ -19,6 +19,7 @@
 #include "deploydyn/elements/element_kinds.hpp"
 #include "deploydyn/io/text_file.hpp"
 #include "deploydyn/io/yaml_reader.hpp"
+#include "deploydyn/model/dof_map.hpp"
 
 #include "deploydyn/output/result_folder.hpp"
 #include "deploydyn/output/vtk_writer.hpp"
@@ -37,6 +38,11 @@ constexpr double kMaxSteps = 1e8;
 // More initial load steps than this is a typo: a millionth of the thermal load is far below
 // what moves a node measurably, and each step costs at least one factorization.
 constexpr int kMaxLoadSteps = 1'000'000;
+// Nodes of a pin joint are "at the same position" up to round-off of the model's size.
+constexpr double kCoincidentShare = 1e-9;
+// A hinge-angle arm shorter across the axis than this share of its length leaves the angle
+// undefined (as constraints/driven_hinge_angle.cpp decides).
+constexpr double kArmAcrossAxisShare = 1e-8;
 // output_interval / step is "whole" up to the rounding of decimal inputs such as 5e-3 / 1e-3.
 constexpr double kWholeMultipleTolerance = 1e-9;
 
@@ -88,7 +94,7 @@ class ModelReader {
                  root_.description());
     }
     root_.expect_keys({"name", "description", "units", "nodes", "materials", "elements", "thermal",
-                       "supports", "drivers", "loads", "gravity", "functions", "analysis",
+                       "supports", "joints", "drivers", "loads", "gravity", "functions", "analysis",
                        "output"});
     if (const auto name = root_.find("name")) model_.name = name->text();
     if (const auto description = root_.find("description")) {
@@ -107,6 +113,7 @@ class ModelReader {
     }
     read_elements(root_.at("elements"));
     if (const auto supports = root_.find("supports")) read_supports(*supports);
+    if (const auto joints = root_.find("joints")) read_joints(*joints);
     if (const auto drivers = root_.find("drivers")) read_drivers(*drivers);
     if (const auto loads = root_.find("loads")) read_loads(*loads);
     if (const auto gravity = root_.find("gravity")) {
@@ -312,7 +319,6 @@ class ModelReader {
       spec.expect_keys(std::span<const std::string_view>(keys_of_kind[k]));
       kinds[k]->read(name, ElementEntry(spec, *this), model_);
       elements_.add(name, spec);
-      element_refs_.push_back({kinds[k], kinds[k]->n_elements(model_) - 1});
     }
   }
 
@@ -407,35 +413,104 @@ class ModelReader {
     }
   }
 
+  // Whether `node` carries rotation unknowns (beam nodes): rz in 2D, R11 … R33 in 3D.
+  bool has_rotations(const DofMap& dofs, int node) const {
+    return dofs.index(node, model_.dimension == 2 ? "rz" : "R11") >= 0;
+  }
+
+  // A unit axis from [ax, ay, az] (3D models only; `what` says what it is for in 2D's error).
+  Eigen::Vector3d axis_vector(const YamlValue& value, std::string_view what) const {
+    if (model_.dimension == 2) value.fail(fmt::format("only allowed in 3D models; in 2D {}", what));
+    const auto components = value.numbers(3, 3, "");
+    const Eigen::Vector3d direction(components[0], components[1], components[2]);
+    if (direction.norm() == 0.0) value.fail("must not be zero, got [0, 0, 0]");
+    return direction.normalized();
+  }
+
+  void read_joints(const YamlValue& section) {
+    const DofMap dofs(model_);
+    double size_m = 1.0;  // coincidence tolerance scale
+    for (const Node& node : model_.nodes) size_m = std::max(size_m, node.position_m.cwiseAbs().maxCoeff());
+    for (const auto& [name, spec] : section.entries()) {
+      joints_.add(name, spec);
+      spec.expect_keys({"type", "nodes", "axis"});
+      Joint joint;
+      joint.name = name;
+      joint.kind = spec.at("type").choice(kJointKinds);
+      const YamlValue nodes = spec.at("nodes");
+      const auto names = nodes.items(2, 2, "node names [A, B]");
+      joint.nodes = {nodes_.find(names[0]), nodes_.find(names[1])};
+      const Node& a = model_.nodes[joint.nodes[0]];
+      const Node& b = model_.nodes[joint.nodes[1]];
+      if (joint.nodes[0] == joint.nodes[1]) {
+        nodes.fail(fmt::format("joins node '{}' to itself; a pin joins two different nodes", a.name));
+      }
+      if (const double gap = (b.position_m - a.position_m).norm(); gap > kCoincidentShare * size_m) {
+        nodes.fail(fmt::format("nodes '{}' and '{}' are {:.6g} m apart; a pin joins two nodes at the "
+                               "same initial position",
+                               a.name, b.name, gap));
+      }
+      const bool keeps_axis = model_.dimension == 3 && has_rotations(dofs, joint.nodes[0]) &&
+                              has_rotations(dofs, joint.nodes[1]);
+      if (const auto axis = spec.find("axis")) {
+        joint.axis = axis_vector(*axis, "a pin turns about z");
+        if (!keeps_axis) {
+          axis->fail(fmt::format("applies only between nodes that both carry rotations (beam nodes); "
+                                 "'{}' and '{}' do not, so the pin only keeps their positions equal",
+                                 a.name, b.name));
+        }
+      } else if (keeps_axis) {
+        spec.fail_key("axis", fmt::format("required: nodes '{}' and '{}' both carry rotations, so the "
+                                          "pin turns about an axis [ax, ay, az]",
+                                          a.name, b.name));
+      }
+      model_.joints.push_back(joint);
+    }
+  }
+
   void read_drivers(const YamlValue& section) {
     for (const auto& [name, spec] : section.entries()) {
       check_name(name, spec, "driver");
       Driver driver;
       driver.name = name;
-      if (spec.at("type").choice(kDriverKinds) == Driver::Kind::bar_angle) {
-        read_bar_angle(spec, driver);
-      } else {
-        spec.expect_keys({"type", "node", "direction", "profile", "reading"});
-        driver.kind = Driver::Kind::coordinate;
-        driver.node = nodes_.find(spec.at("node"));
-        driver.direction = axis(spec.at("direction"));
-        driver.reading = reading(spec, {"velocity", "displacement"});
+      driver.kind = spec.at("type").choice(kDriverKinds);
+      switch (driver.kind) {
+        case Driver::Kind::bar_angle:
+          read_bar_angle(spec, driver);
+          break;
+        case Driver::Kind::coordinate:
+          spec.expect_keys({"type", "node", "direction", "profile", "reading"});
+          driver.node = nodes_.find(spec.at("node"));
+          driver.direction = axis(spec.at("direction"));
+          driver.reading = reading(spec, {"velocity", "displacement"});
+          break;
+        case Driver::Kind::revolute:
+          read_revolute(spec, driver);
+          break;
+        case Driver::Kind::hinge_angle:
+          read_hinge_angle(spec, driver);
+          break;
       }
       driver.profile = function(spec.at("profile"));
       model_.drivers.push_back(driver);
     }
   }
 
+  // bar_angle's `element` names a bar: Driver::element indexes Model::bars.
+  int bar_index(const YamlValue& reference) const {
+    const std::string name = reference.text();
+    for (std::size_t i = 0; i < model_.bars.size(); ++i) {
+      if (model_.bars[i].name == name) return static_cast<int>(i);
+    }
+    elements_.find(reference);  // an unknown name: the list of elements
+    reference.fail(fmt::format("element '{}' is not a bar; bar_angle drives a bar (for a pin "
+                               "between beam nodes use a joint and a revolute driver)",
+                               name));
+  }
+
   void read_bar_angle(const YamlValue& spec, Driver& driver) const {
     spec.expect_keys({"type", "element", "pivot", "axis", "profile", "reading"});
-    driver.kind = Driver::Kind::bar_angle;
-    const YamlValue element = spec.at("element");
-    const ElementRef driven = element_refs_[static_cast<std::size_t>(elements_.find(element))];
-    if (driven.kind->name() != "bar") {
-      element.fail(fmt::format("element '{}' is a {}; a bar_angle driver turns a bar",
-                               element.text(), driven.kind->name()));
-    }
-    driver.element = driven.index;  // into Model::bars
+    driver.element = bar_index(spec.at("element"));
     const BarElement& bar = model_.bars[driver.element];
     driver.pivot = bar.node_a;
     if (const auto pivot = spec.find("pivot")) {
@@ -447,13 +522,55 @@ class ModelReader {
       }
     }
     if (const auto axis_value = spec.find("axis")) {
-      if (model_.dimension == 2) {
-        axis_value->fail("only allowed in 3D models; in 2D bars turn about z");
+      driver.axis = axis_vector(*axis_value, "bars turn about z");
+    }
+    driver.reading = reading(spec, {"angular_velocity", "angle"});
+  }
+
+  void read_revolute(const YamlValue& spec, Driver& driver) const {
+    spec.expect_keys({"type", "joint", "profile", "reading"});
+    const YamlValue joint_name = spec.at("joint");
+    driver.joint = joints_.find(joint_name);
+    const Joint& joint = model_.joints[static_cast<std::size_t>(driver.joint)];
+    const DofMap dofs(model_);
+    for (const int node : joint.nodes) {
+      if (!has_rotations(dofs, node)) {
+        joint_name.fail(fmt::format(
+            "joint '{}' joins node '{}', which carries no rotation (only beam nodes do); a "
+            "revolute driver turns one node's frame relative to the other's. Between bars use "
+            "hinge_angle",
+            joint.name, model_.nodes[node].name));
       }
-      const auto components = axis_value->numbers(3, 3, "");
-      const Eigen::Vector3d direction(components[0], components[1], components[2]);
-      if (direction.norm() == 0.0) axis_value->fail("must not be zero, got [0, 0, 0]");
-      driver.axis = direction.normalized();
+    }
+    driver.reading = reading(spec, {"angular_velocity", "angle"});
+  }
+
+  void read_hinge_angle(const YamlValue& spec, Driver& driver) const {
+    spec.expect_keys({"type", "nodes", "axis", "profile", "reading"});
+    const YamlValue nodes = spec.at("nodes");
+    const auto names = nodes.items(3, 3, "node names [A, H, B]");
+    for (std::size_t k = 0; k < 3; ++k) driver.hinge_nodes[k] = nodes_.find(names[k]);
+    if (const auto axis_value = spec.find("axis")) {
+      driver.axis = axis_vector(*axis_value, "the angle is measured about z");
+    } else if (model_.dimension == 3) {
+      spec.fail_key("axis", "required in 3D: the axis [ax, ay, az] the hinge angle is measured about");
+    }
+    const auto [a, h, b] = driver.hinge_nodes;
+    const Eigen::Vector3d hinge = model_.nodes[h].position_m;
+    const Eigen::Vector3d axis = model_.dimension == 2 ? Eigen::Vector3d::UnitZ() : driver.axis;
+    for (const auto& [node, k] : {std::pair{a, 0}, std::pair{b, 2}}) {
+      const Eigen::Vector3d arm = model_.nodes[node].position_m - hinge;
+      const Eigen::Vector3d across = arm - axis.dot(arm) * axis;
+      if (node == h || arm.norm() == 0.0) {
+        names[k].fail(fmt::format("node '{}' is at the hinge node '{}'; the angle needs arms H→A and "
+                                  "H→B of nonzero length",
+                                  model_.nodes[node].name, model_.nodes[h].name));
+      }
+      if (across.norm() <= kArmAcrossAxisShare * arm.norm()) {
+        names[k].fail(fmt::format("node '{}' lies on the axis through the hinge node '{}'; the angle "
+                                  "about the axis is undefined",
+                                  model_.nodes[node].name, model_.nodes[h].name));
+      }
     }
     driver.reading = reading(spec, {"angular_velocity", "angle"});
   }
@@ -738,8 +855,8 @@ class ModelReader {
   NameIndex nodes_{"node"};
   NameIndex materials_{"material"};
   NameIndex elements_{"element"};
-  std::vector<ElementRef> element_refs_;  // of the elements in file order
   std::vector<std::vector<std::string>> node_unknowns_;  // beyond positions; filled on demand
+  NameIndex joints_{"joint"};
 };
 
 // Overrides ------------------------------------------------------------------------------------

@@ -1,6 +1,7 @@
 #include "deploydyn/io/model_writer.hpp"
 
 #include "deploydyn/elements/element_kinds.hpp"
+#include "deploydyn/model/dof_map.hpp"
 #include "deploydyn/util/overloaded.hpp"
 
 #include <fmt/format.h>
@@ -155,6 +156,14 @@ void emit_geometry(YAML::Emitter& out, const Model& model) {
   out << YAML::EndMap;
 }
 
+// A joint's axis is in the file when the loader requires it: in 3D between nodes that both
+// carry rotations.
+bool has_axis(const Model& model, const Joint& joint) {
+  if (model.dimension != 3) return false;
+  const DofMap dofs(model);
+  return dofs.index(joint.nodes[0], "R11") >= 0 && dofs.index(joint.nodes[1], "R11") >= 0;
+}
+
 void emit_boundary_conditions(YAML::Emitter& out, const Model& model) {
   static constexpr std::array<const char*, 3> kAxisNames{"x", "y", "z"};
   if (!model.supports.empty()) {
@@ -177,6 +186,26 @@ void emit_boundary_conditions(YAML::Emitter& out, const Model& model) {
     out << YAML::EndSeq;
   }
 
+  if (!model.joints.empty()) {
+    emit_key(out, "joints");
+    out << YAML::BeginMap;
+    for (const Joint& joint : model.joints) {
+      emit_key(out, joint.name);
+      out << YAML::Flow << YAML::BeginMap;
+      emit_key(out, "type");
+      out << std::string(kJointKinds.name(joint.kind));
+      emit_key(out, "nodes");
+      out << YAML::Flow << YAML::BeginSeq << model.nodes[joint.nodes[0]].name
+          << model.nodes[joint.nodes[1]].name << YAML::EndSeq;
+      if (has_axis(model, joint)) {
+        emit_key(out, "axis");
+        emit_vector(out, joint.axis, 3);
+      }
+      out << YAML::EndMap;
+    }
+    out << YAML::EndMap;
+  }
+
   if (!model.drivers.empty()) {
     emit_key(out, "drivers");
     out << YAML::BeginMap;
@@ -186,23 +215,42 @@ void emit_boundary_conditions(YAML::Emitter& out, const Model& model) {
       const bool rate = driver.reading == DriverReading::rate;
       emit_key(out, "type");
       out << std::string(kDriverKinds.name(driver.kind));
-      if (driver.kind == Driver::Kind::bar_angle) {
-        emit_key(out, "element");
-        out << model.bars[driver.element].name;
-        emit_key(out, "pivot");
-        out << model.nodes[driver.pivot].name;
-        if (model.dimension == 3) {
-          emit_key(out, "axis");
-          emit_vector(out, driver.axis, 3);
-        }
-        emit_key(out, "reading");
+      switch (driver.kind) {
+        case Driver::Kind::bar_angle:
+          emit_key(out, "element");
+          out << model.bars[driver.element].name;
+          emit_key(out, "pivot");
+          out << model.nodes[driver.pivot].name;
+          if (model.dimension == 3) {
+            emit_key(out, "axis");
+            emit_vector(out, driver.axis, 3);
+          }
+          break;
+        case Driver::Kind::coordinate:
+          emit_key(out, "node");
+          out << model.nodes[driver.node].name;
+          emit_key(out, "direction");
+          out << kAxisNames[static_cast<std::size_t>(driver.direction)];
+          break;
+        case Driver::Kind::revolute:
+          emit_key(out, "joint");
+          out << model.joints[static_cast<std::size_t>(driver.joint)].name;
+          break;
+        case Driver::Kind::hinge_angle:
+          emit_key(out, "nodes");
+          out << YAML::Flow << YAML::BeginSeq;
+          for (const int node : driver.hinge_nodes) out << model.nodes[node].name;
+          out << YAML::EndSeq;
+          if (model.dimension == 3) {
+            emit_key(out, "axis");
+            emit_vector(out, driver.axis, 3);
+          }
+          break;
+      }
+      emit_key(out, "reading");
+      if (drives_rotation(driver.kind)) {
         out << (rate ? "angular_velocity" : "angle");
       } else {
-        emit_key(out, "node");
-        out << model.nodes[driver.node].name;
-        emit_key(out, "direction");
-        out << kAxisNames[static_cast<std::size_t>(driver.direction)];
-        emit_key(out, "reading");
         out << (rate ? "velocity" : "displacement");
       }
       emit_key(out, "profile");

@@ -11,6 +11,7 @@
 
 #include "deploydyn/elements/bar/bar_element.hpp"
 #include "deploydyn/elements/beam/beam_element.hpp"
+#include "deploydyn/model/joint.hpp"
 #include "deploydyn/model/time_function.hpp"
 #include "deploydyn/util/name_table.hpp"
 
@@ -45,20 +46,27 @@ enum class DriverReading {
 // Each enumeration a model file names has one NameTable (util/name_table.hpp) with its
 // spellings, read by the loader, the writers and the Python module; to_string gives a name.
 
-// Rheonomic constraint that moves the mechanism and reports the effort it needs.
+// Rheonomic constraint that moves the mechanism and reports the effort it needs. What each
+// type constrains, exactly: docs/theory.md, "Constraints".
 struct Driver {
   enum class Kind {
-    bar_angle,   // turns a bar's direction about its pivot node; the bar stays elastic
-                 // (docs/theory.md, "Constraints")
-    coordinate,  // prescribes one coordinate of a node
+    bar_angle,    // turns a bar's whole direction about its pivot node (1 equation in 2D, 2 in
+                  // 3D); the bar stays free to stretch
+    coordinate,   // prescribes one coordinate of a node
+    revolute,     // turns node B of a pin joint relative to node A about the joint's axis
+                  // (nodes with rotations: beams); 1 equation
+    hinge_angle,  // the angle from H→A to H→B about an axis (bars); 1 equation
   };
   std::string name;
   Kind kind = Kind::bar_angle;
-  int element = 0;  // bar_angle: the driven bar
+  int element = 0;  // bar_angle: the driven bar, an index into Model::bars
   int pivot = 0;    // bar_angle: the node it turns about (one of the bar's nodes)
-  Eigen::Vector3d axis = Eigen::Vector3d::UnitZ();  // bar_angle in 3D: rotation axis (unit)
+  // bar_angle and hinge_angle in 3D: rotation axis (unit); z in 2D.
+  Eigen::Vector3d axis = Eigen::Vector3d::UnitZ();
   int node = 0;     // coordinate: the node
   int direction = 0;  // coordinate: 0 = x, 1 = y, 2 = z
+  int joint = 0;    // revolute: index into Model::joints
+  std::array<int, 3> hinge_nodes{};  // hinge_angle: A, H, B
   TimeFunction profile;
   DriverReading reading = DriverReading::rate;
 };
@@ -66,7 +74,12 @@ struct Driver {
 inline constexpr NameTable kDriverKinds{std::array{
     NamedValue<Driver::Kind>{Driver::Kind::bar_angle, "bar_angle"},
     NamedValue<Driver::Kind>{Driver::Kind::coordinate, "coordinate"},
+    NamedValue<Driver::Kind>{Driver::Kind::revolute, "revolute"},
+    NamedValue<Driver::Kind>{Driver::Kind::hinge_angle, "hinge_angle"},
 }};
+// Whether a driver of this type turns something (its effort is a torque, N·m, and its profile
+// an angle or angular velocity) rather than moving a coordinate (a force, N).
+constexpr bool drives_rotation(Driver::Kind kind) { return kind != Driver::Kind::coordinate; }
 
 // External force on a node: force_N · factor(t); in 2D also a moment on a beam's node.
 struct NodalLoad {
@@ -202,6 +215,7 @@ struct Model {
   std::vector<BarElement> bars;
   std::vector<BeamElement> beams;
   std::vector<FixedNode> supports;
+  std::vector<Joint> joints;
   std::vector<Driver> drivers;
   std::vector<NodalLoad> loads;
   Eigen::Vector3d gravity_m_s2 = Eigen::Vector3d::Zero();

@@ -37,7 +37,7 @@ std::vector<std::string> history_columns(const Model& model) {
     }
   }
   for (const Driver& driver : model.drivers) {
-    columns.push_back((driver.kind == Driver::Kind::bar_angle ? "torque." : "force.") + driver.name);
+    columns.push_back((drives_rotation(driver.kind) ? "torque." : "force.") + driver.name);
   }
   for (const char* energy : {"kinetic", "strain_energy", "external_work"}) columns.push_back(energy);
   return columns;

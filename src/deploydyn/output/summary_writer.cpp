@@ -121,7 +121,7 @@ std::string summary_json(const Model& model, const Envelope& envelope, const Run
   ordered_json drivers = ordered_json::object();
   for (std::size_t d = 0; d < model.drivers.size() && d < envelope.drivers().size(); ++d) {
     const Extremes& e = envelope.drivers()[d];
-    const bool torque = model.drivers[d].kind == Driver::Kind::bar_angle;
+    const bool torque = drives_rotation(model.drivers[d].kind);
     ordered_json entry = extremes(e);
     entry["quantity"] = torque ? "torque" : "force";
     entry["unit"] = torque ? "N·m" : "N";

@@ -112,7 +112,7 @@ std::string study_table_csv(const Study& study, const std::vector<CaseOutcome>& 
     for (const Driver& d : outcome.model->drivers) {
       if (std::none_of(drivers.begin(), drivers.end(),
                        [&](const DriverColumn& column) { return column.name == d.name; })) {
-        drivers.push_back({d.name, d.kind == Driver::Kind::bar_angle});
+        drivers.push_back({d.name, drives_rotation(d.kind)});
       }
     }
   }
