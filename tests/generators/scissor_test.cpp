@@ -8,9 +8,18 @@
 
 #include <Eigen/Dense>
 
+#include <fmt/format.h>
+
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 #include <stdexcept>
+#include <string>
+
+#include "deploydyn/io/model_loader.hpp"
+#include "deploydyn/io/model_writer.hpp"
+#include "support/cli.hpp"
+#include "support/model_builder.hpp"
 
 namespace deploydyn {
 namespace {
@@ -143,6 +152,120 @@ TEST(ScissorOptionsValidation, NamesTheOptionAndWhatIsAllowed) {
   span.span_m = -1.0;
   EXPECT_NE(message(span).find("span must be > 0"), std::string::npos);
   EXPECT_EQ(message(ScissorOptions{}), "");
+}
+
+// The generated models, deployed --------------------------------------------------------------
+
+// Quasi-static deployment at ΔT = 0: the beams carry no load, so the nodes must follow the
+// rigid-link closed form to the Newton tolerance. Measured: at most 4.2e-12 m (girder, arch,
+// ring of 3–4 m).
+constexpr double kRigidLinkTolerance_m = 1e-9;
+
+Model quasi_static(ScissorOptions options, int n_outputs) {
+  options.delta_t_C = 0.0;
+  Model model = make_scissor(options);
+  model.analysis.type = AnalysisType::quasi_static;
+  model.analysis.step_s = options.deploy_time_s / 40.0;
+  model.analysis.end_time_s = options.deploy_time_s;
+  model.analysis.output_interval_s = options.deploy_time_s / n_outputs;
+  return model;
+}
+
+// Opening angle ψ(t) the actuator prescribes: the smooth step from folded to deployed.
+double opening_at(const ScissorOptions& options, double t) {
+  const double s = std::clamp(t / options.deploy_time_s, 0.0, 1.0);
+  const double folded = folded_opening_rad(options);
+  return folded + (deployed_opening_rad(options) - folded) * s * s * (3.0 - 2.0 * s);
+}
+
+// Every node against the closed-form shape at ψ(t): arch nodes m<k>a_0 = inner[k],
+// m<k>b_0 = outer[k], the hinge node m<k>a_<arm> = hinge[k].
+void expect_rigid_link_motion(const ScissorOptions& options) {
+  const Model model = quasi_static(options, 8);
+  const testing::RunResult run = testing::run(model);
+  ASSERT_EQ(run.report.status, RunStatus::completed) << run.report.message;
+  ASSERT_EQ(run.records.size(), 9u);
+  const Assembler assembler(model);
+  const double arm = scissor_arm_length_m(options);
+  for (const StepRecord& record : run.records) {
+    const ScissorShape shape = scissor_shape(options, arm, opening_at(options, record.time_s));
+    const auto at = [&](const std::string& name) {
+      return testing::node_position(assembler, record.q, testing::node_index(model, name))
+          .head<2>()
+          .eval();
+    };
+    double worst = 0.0;
+    for (int k = 0; k < options.n_units; ++k) {
+      worst = std::max(worst, (at(fmt::format("m{}a_0", k)) - shape.inner[k]).norm());
+      worst = std::max(worst, (at(fmt::format("m{}b_0", k)) - shape.outer[k]).norm());
+      worst = std::max(worst, (at(fmt::format("m{}a_{}", k, options.elements_per_arm)) -
+                               shape.hinge[k]).norm());
+    }
+    EXPECT_LT(worst, kRigidLinkTolerance_m) << "t = " << record.time_s;
+  }
+}
+
+TEST(ScissorDeployment, TranslationalGirderFollowsTheRigidLinkKinematics) {
+  ScissorOptions options = arch(ScissorForm::translational, 3);
+  options.span_m = 4.0;
+  expect_rigid_link_motion(options);
+}
+
+TEST(ScissorDeployment, PolarArchFollowsTheRigidLinkKinematics) {
+  ScissorOptions options = arch(ScissorForm::polar, 4);
+  expect_rigid_link_motion(options);
+}
+
+TEST(ScissorDeployment, RingFollowsTheRigidLinkKinematics) {
+  ScissorOptions options;
+  options.form = ScissorForm::ring;
+  options.n_units = 8;
+  options.span_m = 3.0;
+  options.elements_per_arm = 1;
+  expect_rigid_link_motion(options);
+}
+
+// Uniform ΔT on a statically determinate mechanism: the structure scales freely by the beams'
+// thermal stretch 1 + αΔT (the beam's axial strain is the stretch of its axis, docs/theory.md,
+// "Beams"), with no force in any member and no actuator torque.
+TEST(ScissorDeployment, UniformHeatingScalesTheDeployedArchWithoutStress) {
+  ScissorOptions options = arch(ScissorForm::polar, 3);
+  Model model = quasi_static(options, 1);
+  model.temperature_change_C = TimeFunction::constant(130.0);
+  for (BeamElement& beam : model.beams) beam.temperature_change_C = model.temperature_change_C;
+  const testing::RunResult run = testing::run(model);
+  ASSERT_EQ(run.report.status, RunStatus::completed) << run.report.message;
+  const Assembler assembler(model);
+  const StepRecord& end = run.records.back();
+  const auto at = [&](const std::string& name) {
+    return testing::node_position(assembler, end.q, testing::node_index(model, name));
+  };
+  const double span = (at("m2b_4") - at("m0a_0")).norm();
+  EXPECT_NEAR(span, options.span_m * (1.0 + kScissorExpansion_per_C * 130.0), 1e-9);
+  EXPECT_NEAR(end.driver_efforts[0], 0.0, 1e-6);  // N·m
+}
+
+TEST(ScissorGenerateCommand, WritesAModelThatLoadsBackEqual) {
+  const std::string file = ::testing::TempDir() + "scissor_ring.yaml";
+  const auto generated = testing::run_cli("generate scissor --form ring --units 8 --span 2 --out " + file);
+  ASSERT_EQ(generated.exit_code, 0) << generated.output;
+  const Model loaded = load_model(file);
+  const Model built = [] {
+    ScissorOptions options;
+    options.form = ScissorForm::ring;
+    options.n_units = 8;
+    options.span_m = 2.0;
+    return make_scissor(options);
+  }();
+  EXPECT_EQ(loaded.beams.size(), built.beams.size());
+  EXPECT_EQ(loaded.joints.size(), built.joints.size());
+  ASSERT_EQ(loaded.n_nodes(), built.n_nodes());
+  for (int i = 0; i < built.n_nodes(); ++i) {
+    EXPECT_EQ(loaded.nodes[i].position_m, built.nodes[i].position_m) << built.nodes[i].name;
+  }
+  const auto refused = testing::run_cli("generate scissor --form ring --units 10");
+  EXPECT_EQ(refused.exit_code, 2);
+  EXPECT_NE(refused.output.find("multiple of 4"), std::string::npos) << refused.output;
 }
 
 }  // namespace

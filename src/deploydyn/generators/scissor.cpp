@@ -287,8 +287,9 @@ Model make_scissor(const ScissorOptions& options) {
   motor.name = "motor";
   motor.kind = Driver::Kind::revolute;
   motor.joint = ring ? 0 : n / 2;  // joints start with the central hinges, unit by unit
-  motor.profile = TimeFunction(
-      TimeFunction::SmoothStep{0.0, 0.0, options.deploy_time_s, deployed - folded});
+  // Opening turns an arch's member 2 counterclockwise relative to member 1, a ring's clockwise.
+  const double turn_rad = (ring ? -1.0 : 1.0) * (deployed - folded);
+  motor.profile = TimeFunction(TimeFunction::SmoothStep{0.0, 0.0, options.deploy_time_s, turn_rad});
   motor.reading = DriverReading::value;
   model.drivers.push_back(std::move(motor));
 

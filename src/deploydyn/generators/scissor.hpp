@@ -29,7 +29,7 @@
 // One deployment parameter for all forms: the opening angle ψ at a central hinge between the
 // two arms pointing away from the centre (up, for a girder): ψ = π − 2α for the arches,
 // ψ = π + 2π/n − 2δ for the ring. The actuator drives member 2's rotation relative to member 1
-// by ψ_deployed − ψ_folded.
+// by ψ_deployed − ψ_folded (counterclockwise) in an arch, by its negative in a ring.
 //
 // Units SI (m, kg, s, N, Pa; °C for temperature changes; angles in rad unless named _deg).
 
