@@ -38,6 +38,17 @@ constexpr double kPi = std::numbers::pi;
 constexpr double kLength_m = 1.0;
 constexpr double kNoResult = std::numeric_limits<double>::infinity();
 constexpr double kRequiredOrder = 1.9;  // order p = 2, less 0.1 (STYLE practice 11)
+// Newton stops at ‖Δq‖ ≤ 1e-12 m or ‖r‖∞ ≤ 1e-8 of the largest force term: configurations
+// that are exact in the discrete model (the thermal polygon, the circle) hold to 1e-12 m and
+// round-off; 1e-10 L leaves a margin, while a wrong sign or term errs by 1e-3 L or more.
+constexpr double kExactShapeShare = 1e-10;
+// Resultants of a stress-free state: the residual 1e-8 of the largest force term, against EI|κ_t|.
+constexpr double kStressFreeShare = 1e-7;
+// The straight clamped states are exact: round-off of the assembly only.
+constexpr double kClosedFormShare = 1e-9;
+constexpr double kNoRotation_rad = 1e-12;
+// Mattiasson's table has 5 decimals: half a unit of the last one.
+constexpr double kTableRounding = 5e-6;
 
 // A steel section; each case changes what it needs.
 struct Section {
@@ -174,16 +185,14 @@ TEST(VerificationBeam2dThermal, FreeBeamTakesTheArcAwayFromTheHotFace) {
     tip_y = tip[1];
   }
   const Orders o = orders(arc_errors);
-  // Newton stops at ‖Δq‖ ≤ 1e-12 m or ‖r‖ ≤ 1e-8 of the largest force: the polygon holds to
-  // round-off of the 32 chord sums, the resultants to 1e-8 of EI|κ|.
   check({"10.1",
          "cantilever under ΔT_gy = +500 °C (κ_t = −0.6 1/m), 4–32 elements: tip against the "
          "stress-free mid-point polygon, |Δx|/L",
          "polygon of chords L0 at angles κ_t (i + ½) L0 (exact discrete solution)", polygon_error,
-         1e-10, ""});
+         kExactShapeShare, ""});
   check({"10.2", "same: largest |M_z| / (EI|κ_t|) and |N| / (EI|κ_t|/L): stress-free",
          "0 (a determinate beam under a free thermal curvature)",
-         std::max(largest_moment, largest_axial), 1e-7, ""});
+         std::max(largest_moment, largest_axial), kStressFreeShare, ""});
   check({"10.3",
          fmt::format("same: order of the tip's distance to the arc (errors {} of L; orders {})",
                      listed(arc_errors), o.each),
@@ -231,12 +240,12 @@ TEST(VerificationBeam2dThermal, ClampedBeamCarriesTheThermalMomentAndAxialForce)
   check(
       {"10.4",
        "clamped–clamped beam, 8 elements, ΔT_gy = 50 °C: largest |M_z − EIαΔT_gy/h| / (EIαΔT_gy/h)",
-       "M = −EIκ_t = EIαΔT_gy/h = 87.5 N·m (closed form)", moment_error, 1e-9, ""});
+       "M = −EIκ_t = EIαΔT_gy/h = 87.5 N·m (closed form)", moment_error, kClosedFormShare, ""});
   check({"10.5", "same: largest nodal rotation |θ| (rad)",
-         "0: the clamped straight beam does not turn", rotation, 1e-12, "rad"});
+         "0: the clamped straight beam does not turn", rotation, kNoRotation_rad, "rad"});
   check({"10.6",
          "clamped–clamped beam, 8 elements, uniform ΔT = 100 °C: largest |N + EAαΔT| / (EAαΔT)",
-         "N = −EAαΔT = −25.2 kN (closed form)", axial_error, 1e-9, ""});
+         "N = −EAαΔT = −25.2 kN (closed form)", axial_error, kClosedFormShare, ""});
 }
 
 // 10.7–10.9: Reissner's beam equations for a cantilever with a tip force F, clamped at s = 0
@@ -304,13 +313,12 @@ TEST(VerificationBeam2dElastica, ShootingReferenceReproducesMattiassonsTable) {
                       std::abs(1.0 - r.tip[0] - row.horizontal),
                       std::abs(-r.tip[2] - row.rotation_rad)});
   }
-  // The table has 5 decimals: half a unit of the last one.
   check({"10.7",
          "inextensible elastica by shooting (RK4, 20 000 steps), k = PL²/EI = 1, 2, 5: largest "
          "|tip − table| (v/L, u/L, θ)",
          "Mattiasson (1981), Table 1: v/L = 0.30172, 0.49346, 0.71379; u/L = 0.05643, 0.16064, "
          "0.38763; θ = 0.46135, 0.78175, 1.21537",
-         worst, 5e-6, ""});
+         worst, kTableRounding, ""});
 }
 
 TEST(VerificationBeam2dElastica, CantileverTipLoadConvergesAtSecondOrder) {
@@ -369,11 +377,10 @@ TEST(VerificationBeam2dElastica, EndMomentCurlsTheCantileverIntoACircle) {
     distance = tip.head<2>().norm() / kLength_m;
     rotation_error = std::abs(tip[2] - 2.0 * kPi);
   }
-  // Newton's last correction ≤ 1e-12 m: the closure holds to that and round-off.
   check({"10.10",
          "cantilever, 8 elements, end moment M = 2πEI/L: distance of the tip from the root / L",
-         "0: a full circle (κ = M/EI = 2π/L)", distance, 1e-10, ""});
-  check({"10.11", "same: |θ_tip − 2π| (rad)", "2π", rotation_error, 1e-10, "rad"});
+         "0: a full circle (κ = M/EI = 2π/L)", distance, kExactShapeShare, ""});
+  check({"10.11", "same: |θ_tip − 2π| (rad)", "2π", rotation_error, kExactShapeShare, "rad"});
 }
 
 // 10.12–10.13: natural frequencies of a slender beam (r/L = 1e-4: shear and rotary inertia
