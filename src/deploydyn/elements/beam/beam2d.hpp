@@ -1,6 +1,6 @@
 #pragma once
 // Two-node geometrically exact plane beam (Reissner 1972; Simo & Vu-Quoc 1986; Géradin &
-// Cardona 2000, ch. 7) in absolute coordinates: each node has its position x, y and the
+// Cardona 2000) in absolute coordinates: each node has its position x, y and the
 // rotation θ (`rz`) of its cross-section from its initial orientation. One-point (mid-point)
 // quadrature, free of shear locking (docs/theory.md, "Beams", Eqs. B1–B8):
 //
