@@ -388,9 +388,11 @@ class ModelReader {
     }
   }
 
-  // Whether `node` carries rotation unknowns (beam nodes): rz in 2D, R11 … R33 in 3D.
-  bool has_rotations(const DofMap& dofs, int node) const {
-    return dofs.index(node, model_.dimension == 2 ? "rz" : "R11") >= 0;
+  // Whether `node` carries rotation unknowns (beam nodes): rz in 2D, R11 … R33 in 3D. The
+  // elements decide (ElementKind::add_node_unknowns), so this is asked after they are read.
+  bool has_rotations(int node) const {
+    if (!dofs_) dofs_.emplace(model_);
+    return dofs_->index(node, model_.dimension == 2 ? "rz" : "R11") >= 0;
   }
 
   // A unit axis from [ax, ay, az] (3D models only; `what` says what it is for in 2D's error).
@@ -403,7 +405,6 @@ class ModelReader {
   }
 
   void read_joints(const YamlValue& section) {
-    const DofMap dofs(model_);
     double size_m = 1.0;  // coincidence tolerance scale
     for (const Node& node : model_.nodes) size_m = std::max(size_m, node.position_m.cwiseAbs().maxCoeff());
     for (const auto& [name, spec] : section.entries()) {
@@ -425,8 +426,8 @@ class ModelReader {
                                "same initial position",
                                a.name, b.name, gap));
       }
-      const bool keeps_axis = model_.dimension == 3 && has_rotations(dofs, joint.nodes[0]) &&
-                              has_rotations(dofs, joint.nodes[1]);
+      const bool keeps_axis =
+          model_.dimension == 3 && has_rotations(joint.nodes[0]) && has_rotations(joint.nodes[1]);
       if (const auto axis = spec.find("axis")) {
         joint.axis = axis_vector(*axis, "a pin turns about z");
         if (!keeps_axis) {
@@ -507,9 +508,8 @@ class ModelReader {
     const YamlValue joint_name = spec.at("joint");
     driver.joint = joints_.find(joint_name);
     const Joint& joint = model_.joints[static_cast<std::size_t>(driver.joint)];
-    const DofMap dofs(model_);
     for (const int node : joint.nodes) {
-      if (!has_rotations(dofs, node)) {
+      if (!has_rotations(node)) {
         joint_name.fail(fmt::format(
             "joint '{}' joins node '{}', which carries no rotation (only beam nodes do); a "
             "revolute driver turns one node's frame relative to the other's. Between bars use "
@@ -821,6 +821,7 @@ class ModelReader {
   NameIndex materials_{"material"};
   NameIndex elements_{"element"};
   NameIndex joints_{"joint"};
+  mutable std::optional<DofMap> dofs_;  // built on first use, once the elements are read
 };
 
 // Overrides ------------------------------------------------------------------------------------
