@@ -76,6 +76,56 @@ TEST(RevoluteDriver, ZeroAtThePrescribedRelativeRotationAboutTheAxisOnly) {
   EXPECT_NEAR(driver.effort(frames(kFrameA, r_b), t, lambda), -2.5, kRoundOff);
 }
 
+// With A's frame held, B's nine unknowns are fixed by orthonormality RᵀR = I (6 equations, as
+// the 3D beam adds them), the pin's axis (2) and the revolute driver (1): a square system
+// whose Newton iteration must land on R_B = R_A Rot(a, s), i.e. the three constraints of the
+// pin and driver are independent of each other and of orthonormality.
+TEST(RevoluteDriver, WithThePinAndOrthonormalityDeterminesTheRelativeRotation) {
+  constexpr double s = 0.7;
+  const DriverMotion motion(TimeFunction::constant(s), DriverReading::value);
+  const PinJoint pin(range(0, 3), range(3, 3), range(6, 9), range(15, 9), kAxis, "pin");
+  const DrivenRevolute driver(range(6, 9), range(15, 9), kAxis, motion, "r");
+  Eigen::VectorXd q = Eigen::VectorXd::Zero(24);
+  q.tail(18) = frames(kFrameA, kFrameA);  // start with ψ = 0
+  const auto residual_and_jacobian = [&](Eigen::VectorXd& r, Eigen::MatrixXd& j) {
+    r.setZero(9);
+    j.setZero(9, 9);
+    Eigen::VectorXd value(5);
+    Eigen::MatrixXd local(5, 24);
+    pin.evaluate(q, 0.0, value, local);
+    r.head(2) = value.tail(2);
+    j.topRows(2) = local.block(3, 15, 2, 9);  // columns of R_B
+    Eigen::VectorXd one(1);
+    Eigen::MatrixXd row(1, 18);
+    driver.evaluate(q, 0.0, one, row);
+    r[2] = one[0];
+    j.row(2) = row.rightCols(9);
+    int k = 3;
+    for (int a = 0; a < 3; ++a) {
+      for (int b = a; b < 3; ++b, ++k) {  // Σ_m R[m][a] R[m][b] − δ_ab
+        r[k] = (a == b) ? -1.0 : 0.0;
+        for (int m = 0; m < 3; ++m) {
+          r[k] += q[15 + 3 * m + a] * q[15 + 3 * m + b];
+          j(k, 3 * m + a) += q[15 + 3 * m + b];
+          j(k, 3 * m + b) += q[15 + 3 * m + a];
+        }
+      }
+    }
+  };
+  Eigen::VectorXd r;
+  Eigen::MatrixXd j;
+  for (int iteration = 0; iteration < 20; ++iteration) {
+    residual_and_jacobian(r, j);
+    if (r.cwiseAbs().maxCoeff() < 1e-14) break;
+    q.tail(9) -= j.fullPivLu().solve(r);
+  }
+  residual_and_jacobian(r, j);
+  EXPECT_LT(r.cwiseAbs().maxCoeff(), 1e-14);
+  EXPECT_GT(std::abs(j.determinant()), 1e-3) << "the nine conditions are independent";
+  const Eigen::Matrix3d expected = kFrameA * Eigen::AngleAxisd(s, kAxis).toRotationMatrix();
+  EXPECT_LT((frames(kFrameA, expected).tail(9) - q.tail(9)).cwiseAbs().maxCoeff(), 1e-12);
+}
+
 TEST(RevoluteDriver, In2DIsTheDifferenceOfTheNodeRotations) {
   const DrivenRevolute driver({0}, {1}, Eigen::Vector3d::UnitZ(), angle_equal_to_time(), "r");
   Eigen::VectorXd q(2);
