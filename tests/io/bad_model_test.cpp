@@ -57,6 +57,7 @@ const BadModelCase kBadModels[] = {
      "joint 'hinge' joins node 'B', which carries no rotation"},
     {"revolute_unknown_joint.yaml", 7, "drivers.motor.joint", "unknown joint 'hinj'; joints are hinge"},
     {"hinge_angle_h_equals_a.yaml", 7, "drivers.motor.nodes.0", "node 'H' is at the hinge node 'H'"},
+    {"hinge_angle_b_equals_a.yaml", 4, "drivers.motor.nodes.2", "node 'A' is also A"},
     {"hinge_angle_missing_axis_3d.yaml", 5, "drivers.motor.axis", "required in 3D"},
     {"hinge_angle_arm_on_axis.yaml", 7, "drivers.motor.nodes.2",
      "node 'B' lies on the axis through the hinge node 'H'"},

@@ -531,6 +531,11 @@ class ModelReader {
       spec.fail_key("axis", "required in 3D: the axis [ax, ay, az] the hinge angle is measured about");
     }
     const auto [a, h, b] = driver.hinge_nodes;
+    if (a == b) {
+      names[2].fail(fmt::format("node '{}' is also A; the angle is between two different arms H→A "
+                                "and H→B",
+                                model_.nodes[b].name));
+    }
     const Eigen::Vector3d hinge = model_.nodes[h].position_m;
     const Eigen::Vector3d axis = model_.dimension == 2 ? Eigen::Vector3d::UnitZ() : driver.axis;
     for (const auto& [node, k] : {std::pair{a, 0}, std::pair{b, 2}}) {
