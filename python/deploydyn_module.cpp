@@ -292,21 +292,63 @@ py::list supports_info(const Model& model) {
   return out;
 }
 
+py::list vector_info(const Eigen::Vector3d& v) {
+  py::list out;
+  for (int i = 0; i < 3; ++i) out.append(v[i]);
+  return out;
+}
+
+py::list joints_info(const Model& model) {
+  py::list out;
+  const DofMap dofs(model);
+  for (const Joint& joint : model.joints) {
+    py::dict d;
+    d["name"] = joint.name;
+    d["type"] = std::string(kJointKinds.name(joint.kind));
+    py::list nodes;
+    for (const int node : joint.nodes) nodes.append(model.nodes[node].name);
+    d["nodes"] = nodes;
+    if (model.dimension == 3 && dofs.index(joint.nodes[0], "R11") >= 0 && dofs.index(joint.nodes[1], "R11") >= 0) {
+      d["axis"] = vector_info(joint.axis);
+    }
+    out.append(d);
+  }
+  return out;
+}
+
 py::list drivers_info(const Model& model) {
   py::list out;
   for (const Driver& driver : model.drivers) {
     py::dict d;
     d["name"] = driver.name;
     d["type"] = std::string(kDriverKinds.name(driver.kind));
-    if (driver.kind == Driver::Kind::bar_angle) {
-      d["element"] = model.bars[driver.element].name;
-      d["pivot"] = model.nodes[driver.pivot].name;
-      d["reading"] = driver.reading == DriverReading::rate ? "angular_velocity" : "angle";
+    switch (driver.kind) {
+      case Driver::Kind::bar_angle:
+        d["element"] = model.bars[driver.element].name;
+        d["pivot"] = model.nodes[driver.pivot].name;
+        if (model.dimension == 3) d["axis"] = vector_info(driver.axis);
+        break;
+      case Driver::Kind::coordinate:
+        d["node"] = model.nodes[driver.node].name;
+        d["direction"] = std::string(1, "xyz"[driver.direction]);
+        break;
+      case Driver::Kind::revolute:
+        d["joint"] = model.joints[static_cast<std::size_t>(driver.joint)].name;
+        break;
+      case Driver::Kind::hinge_angle: {
+        py::list nodes;
+        for (const int node : driver.hinge_nodes) nodes.append(model.nodes[node].name);
+        d["nodes"] = nodes;
+        if (model.dimension == 3) d["axis"] = vector_info(driver.axis);
+        break;
+      }
+    }
+    const bool rate = driver.reading == DriverReading::rate;
+    if (drives_rotation(driver.kind)) {
+      d["reading"] = rate ? "angular_velocity" : "angle";
       d["effort"] = "torque";
     } else {
-      d["node"] = model.nodes[driver.node].name;
-      d["direction"] = std::string(1, "xyz"[driver.direction]);
-      d["reading"] = driver.reading == DriverReading::rate ? "velocity" : "displacement";
+      d["reading"] = rate ? "velocity" : "displacement";
       d["effort"] = "force";
     }
     out.append(d);
@@ -496,6 +538,7 @@ PYBIND11_MODULE(_core, m) {
       .def_property_readonly("nodes", [](const LoadedModel& l) { return nodes_info(l.model); })
       .def_property_readonly("elements", [](const LoadedModel& l) { return elements_info(l.model); })
       .def_property_readonly("supports", [](const LoadedModel& l) { return supports_info(l.model); })
+      .def_property_readonly("joints", [](const LoadedModel& l) { return joints_info(l.model); })
       .def_property_readonly("drivers", [](const LoadedModel& l) { return drivers_info(l.model); })
       .def_property_readonly("analysis", [](const LoadedModel& l) { return analysis_info(l.model); })
       .def_property_readonly("history_columns",

@@ -324,9 +324,15 @@ class Model:
         return self._core.supports
 
     @property
+    def joints(self):
+        """{name: {"type": "pin", "nodes": [A, B], and "axis" (3D, between beam nodes)}}."""
+        return {j["name"]: j for j in self._core.joints}
+
+    @property
     def drivers(self):
-        """{name: {"type", "element"/"pivot" or "node"/"direction", "reading",
-        "effort": "torque" | "force"}}."""
+        """{name: {"type", then by type: bar_angle "element", "pivot" (3D "axis"); coordinate
+        "node", "direction"; revolute "joint"; hinge_angle "nodes" [A, H, B] (3D "axis");
+        "reading", "effort": "torque" | "force"}}."""
         return {d["name"]: d for d in self._core.drivers}
 
     @property
@@ -663,6 +669,43 @@ class ModelBuilder:
                 "reading": _text(where, "reading", reading)}
         if pivot is not None:
             spec["pivot"] = _name(where, "pivot", pivot)
+        if axis is not None:
+            spec["axis"] = _numbers(where, "axis", axis)
+        self._section("drivers")[_name(where, "name", name)] = spec
+        return self
+
+    def joint(self, name, node_a, node_b, type="pin", axis=None):
+        """A pin joint: nodes `node_a` and `node_b` (at one initial position) keep one position;
+        in 3D between beam nodes `axis` [ax, ay, az] is required and stays common."""
+        where = "ModelBuilder.joint"
+        spec = {"type": _text(where, "type", type),
+                "nodes": [_name(where, "node_a", node_a), _name(where, "node_b", node_b)]}
+        if axis is not None:
+            spec["axis"] = _numbers(where, "axis", axis)
+        self._section("joints")[_name(where, "name", name)] = spec
+        return self
+
+    def revolute_driver(self, name, joint, profile, reading="angular_velocity"):
+        """Turn node B of pin `joint` relative to node A about the joint's axis (nodes with
+        rotations: beams); reading "angular_velocity" (rad/s) or "angle" (rad)."""
+        where = "ModelBuilder.revolute_driver"
+        self._section("drivers")[_name(where, "name", name)] = {
+            "type": "revolute", "joint": _name(where, "joint", joint),
+            "profile": _time_function(where, "profile", profile),
+            "reading": _text(where, "reading", reading)}
+        return self
+
+    def hinge_angle_driver(self, name, node_a, hinge, node_b, profile, axis=None,
+                           reading="angular_velocity"):
+        """Drive the angle at `hinge` from hinge→`node_a` to hinge→`node_b`, about `axis`
+        (required in 3D; z in 2D), from its initial value; reading "angular_velocity" (rad/s)
+        or "angle" (rad). Fixes that one angle only."""
+        where = "ModelBuilder.hinge_angle_driver"
+        spec = {"type": "hinge_angle",
+                "nodes": [_name(where, "node_a", node_a), _name(where, "hinge", hinge),
+                          _name(where, "node_b", node_b)],
+                "profile": _time_function(where, "profile", profile),
+                "reading": _text(where, "reading", reading)}
         if axis is not None:
             spec["axis"] = _numbers(where, "axis", axis)
         self._section("drivers")[_name(where, "name", name)] = spec

@@ -168,3 +168,32 @@ def test_end_moment_on_a_beam_node_is_read_and_a_bar_node_rejects_it():
     assert builder.build().to_yaml().count("moment: 1.5") == 1
     with pytest.raises(ValueError, match="has no rotation for a moment to act on"):
         builder.load("C", moment=2.0).build()
+
+
+def test_pin_joint_and_hinge_angle_driver_move_a_two_bar_chain():
+    # Crank H–B turned by 0.3 rad about H by a hinge_angle driver measured from H→A; bar C–D is
+    # pinned to the crank's tip (C at B) and slides with D along y = 1.
+    turn = 0.3
+    model = (deploydyn.ModelBuilder("knee")
+             .node("A", 0, 0).node("H", 1, 0).node("B", 1, 1).node("C", 1, 1).node("D", 2, 1)
+             .material("steel", E=E, alpha=ALPHA, density=7850)
+             .bar("crank", "H", "B", area=AREA, material="steel")
+             .bar("link", "C", "D", area=AREA, material="steel")
+             .support("A").support("H").support("D", fix=["y"])
+             .joint("knee", "B", "C")
+             .hinge_angle_driver("arm", "A", "H", "B", deploydyn.smooth_step(0, 0, 1, turn),
+                                 reading="angle")
+             .analysis(type="static", end=1.0, step=0.1)
+             .build())
+    assert model.joints == {"knee": {"name": "knee", "type": "pin", "nodes": ["B", "C"]}}
+    assert model.drivers["arm"]["nodes"] == ["A", "H", "B"]
+    assert model.drivers["arm"]["effort"] == "torque"
+    assert "joints:" in model.to_yaml()
+    result = model.run(check=True)
+    assert result["x.B"][-1] == pytest.approx(1 - math.sin(turn), abs=1e-9)
+    assert result["y.B"][-1] == pytest.approx(math.cos(turn), abs=1e-9)
+    assert result["x.C"][-1] == pytest.approx(result["x.B"][-1], abs=1e-12)
+    assert result["y.C"][-1] == pytest.approx(result["y.B"][-1], abs=1e-12)
+    rise = 1 - math.cos(turn)
+    assert result["x.D"][-1] == pytest.approx(result["x.C"][-1] + math.sqrt(1 - rise**2), abs=1e-9)
+    assert "torque.arm" in result.columns

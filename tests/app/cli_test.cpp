@@ -79,6 +79,16 @@ TEST_F(Cli, CheckPrintsTheSummary) {
   EXPECT_NE(dense.output.find("dense LU for 13 unknowns\n"), std::string::npos) << dense.output;
 }
 
+// Drivers are listed with their types; the petal's two hinge_angle drivers make it determinate.
+TEST_F(Cli, CheckListsDriverTypes) {
+  const auto o = run_cli("check " + std::string(DEPLOYDYN_SOURCE_DIR) + "/examples/petal/petal.yaml");
+  ASSERT_EQ(o.exit_code, 0) << o.output;
+  EXPECT_NE(o.output.find("drivers     2 (2 equations): open_p1 (hinge_angle), open_p2 (hinge_angle)"),
+            std::string::npos)
+      << o.output;
+  EXPECT_NE(o.output.find("kinematically determinate"), std::string::npos) << o.output;
+}
+
 TEST_F(Cli, HelpExitsCleanly) {
   struct Case {
     const char* arguments;

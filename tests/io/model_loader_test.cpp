@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <string>
 
+#include "deploydyn/assembly/assembler.hpp"
 #include "deploydyn/io/input_error.hpp"
 
 namespace deploydyn {
@@ -242,6 +243,53 @@ TEST(Override, BadOverrideNamesItself) {
       EXPECT_NE(error.problem().find(bad.problem), std::string::npos) << error.what();
     }
   }
+}
+
+}  // namespace
+}  // namespace deploydyn
+
+namespace deploydyn {
+namespace {
+
+// The petal example: its hinge_angle drivers read with their nodes and unit axes.
+TEST(ModelLoader, PetalExampleLoadsHingeAngleDrivers) {
+  const Model model = load_model(std::string(DEPLOYDYN_SOURCE_DIR) + "/examples/petal/petal.yaml");
+  ASSERT_EQ(model.drivers.size(), 2u);
+  const Driver& open = model.drivers[0];
+  EXPECT_EQ(open.kind, Driver::Kind::hinge_angle);
+  const auto index = [&](const char* name) {
+    for (int i = 0; i < model.n_nodes(); ++i) {
+      if (model.nodes[i].name == name) return i;
+    }
+    return -1;
+  };
+  EXPECT_EQ(open.hinge_nodes, (std::array<int, 3>{index("B4"), index("B1"), index("P1")}));
+  EXPECT_EQ(open.axis, Eigen::Vector3d::UnitX());
+  EXPECT_EQ(model.drivers[1].axis, -Eigen::Vector3d::UnitX());
+  EXPECT_EQ(open.reading, DriverReading::value);
+  EXPECT_TRUE(drives_rotation(open.kind));
+}
+
+// A 2D pin joint between bar nodes, and a hinge_angle whose axis (z) is implied; the joints'
+// equations join the constraint count.
+TEST(ModelLoader, PinJointIn2DKeepsPositionsOnly) {
+  const Model model = load_model_from_string(R"(
+nodes: {A: [0, 0], H: [1, 0], B: [1, 1], C: [1, 1], D: [2, 1]}
+materials: {steel: {E: 2.0e11}}
+elements:
+  crank: {nodes: [H, B], area: 1.0e-4, material: steel, mass: 1}
+  link: {nodes: [C, D], area: 1.0e-4, material: steel, mass: 1}
+supports: [{node: A}, {node: H}, {node: D, fix: [y]}]
+joints: {knee: {type: pin, nodes: [B, C]}}
+drivers: {arm: {type: hinge_angle, nodes: [A, H, B], profile: 0.1}}
+)",
+                                             "knee");
+  ASSERT_EQ(model.joints.size(), 1u);
+  EXPECT_EQ(model.joints[0].nodes, (std::array<int, 2>{2, 3}));
+  EXPECT_EQ(model.drivers[0].hinge_nodes, (std::array<int, 3>{0, 1, 2}));
+  const Assembler assembler(model);
+  EXPECT_EQ(assembler.n_equations(), 2 + 2 + 1 + 2 + 1);  // supports, joint, driver
+  EXPECT_EQ(assembler.rigid_mobility(), 0);
 }
 
 }  // namespace

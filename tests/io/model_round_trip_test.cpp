@@ -91,14 +91,32 @@ void expect_equal_models(const Model& a, const Model& b) {
     EXPECT_EQ(x.kind, y.kind);
     EXPECT_EQ(x.reading, y.reading);
     EXPECT_EQ(x.profile, y.profile);
-    if (x.kind == Driver::Kind::bar_angle) {
-      EXPECT_EQ(x.element, y.element);
-      EXPECT_EQ(x.pivot, y.pivot);
-      EXPECT_EQ(x.axis, y.axis);
-    } else {
-      EXPECT_EQ(x.node, y.node);
-      EXPECT_EQ(x.direction, y.direction);
+    switch (x.kind) {
+      case Driver::Kind::bar_angle:
+        EXPECT_EQ(x.element, y.element);
+        EXPECT_EQ(x.pivot, y.pivot);
+        EXPECT_EQ(x.axis, y.axis);
+        break;
+      case Driver::Kind::coordinate:
+        EXPECT_EQ(x.node, y.node);
+        EXPECT_EQ(x.direction, y.direction);
+        break;
+      case Driver::Kind::revolute:
+        EXPECT_EQ(x.joint, y.joint);
+        break;
+      case Driver::Kind::hinge_angle:
+        EXPECT_EQ(x.hinge_nodes, y.hinge_nodes);
+        EXPECT_EQ(x.axis, y.axis);
+        break;
     }
+  }
+  ASSERT_EQ(a.joints.size(), b.joints.size());
+  for (std::size_t i = 0; i < a.joints.size(); ++i) {
+    SCOPED_TRACE("joint " + a.joints[i].name);
+    EXPECT_EQ(a.joints[i].name, b.joints[i].name);
+    EXPECT_EQ(a.joints[i].kind, b.joints[i].kind);
+    EXPECT_EQ(a.joints[i].nodes, b.joints[i].nodes);
+    EXPECT_EQ(a.joints[i].axis, b.joints[i].axis);
   }
   ASSERT_EQ(a.loads.size(), b.loads.size());
   for (std::size_t i = 0; i < a.loads.size(); ++i) {
@@ -150,6 +168,23 @@ TEST(ModelRoundTrip, PaperExamples) {
         load_model(fmt::format("{}/examples/paper/{}.yaml", DEPLOYDYN_SOURCE_DIR, name),
                    {{"thermal.dT", "-170"}}));
   }
+}
+
+// Joints and the drivers that fix one angle, 2D and 3D; the petal example too.
+TEST(ModelRoundTrip, JointsAndHingeAngleDrivers) {
+  expect_round_trip(load_model_from_string(R"(
+nodes: {A: [0, 0], H: [1, 0], B: [1, 1], C: [1, 1], D: [2, 1]}
+materials: {steel: {E: 2.0e11}}
+elements:
+  1: {nodes: [A, H], area: 1.0e-4, material: steel, mass: 1}
+  2: {nodes: [H, B], area: 1.0e-4, material: steel, mass: 1}
+  3: {nodes: [C, D], area: 1.0e-4, material: steel, mass: 1}
+joints: {knee: {type: pin, nodes: [B, C]}}
+drivers:
+  arm: {type: hinge_angle, nodes: [A, H, B], profile: 0.3, reading: angle}
+  push: {type: coordinate, node: D, direction: x, profile: 0.1}
+)", "2D joints"));
+  expect_round_trip(load_model(fmt::format("{}/examples/petal/petal.yaml", DEPLOYDYN_SOURCE_DIR)));
 }
 
 // analysis.type continuation keeps its own keys (parameter, start, end, eigenvalues, max_steps)

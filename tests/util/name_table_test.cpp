@@ -26,6 +26,7 @@ void expect_round_trip(const NameTable<Enum, N>& table) {
 
 TEST(NameTable, EveryNameReadsBackAsItsValue) {
   expect_round_trip(kDriverKinds);
+  expect_round_trip(kJointKinds);
   expect_round_trip(kAnalysisTypes);
   expect_round_trip(kPathParameters);
   expect_round_trip(kMassMatrixKinds);

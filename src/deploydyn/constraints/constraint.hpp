@@ -26,7 +26,7 @@ class Constraint {
                         Eigen::Ref<Eigen::MatrixXd> jacobian) const = 0;
 
   // Whether Φ is nonlinear in q, i.e. has a Hessian term: the iteration matrix reserves room
-  // for H(λ) only then. The constraints we have are linear.
+  // for H(λ) only then (the 3D pin joint and revolute driver, the hinge-angle driver).
   virtual bool nonlinear() const { return false; }
   // Adds H(λ) (local, dofs × dofs). The default adds nothing; a constraint nonlinear in q
   // overrides it together with nonlinear().

@@ -401,21 +401,19 @@ class ModelReader {
 
   // `fix: [..., rotation]` and a load's `moment` need the rotation unknowns a beam gives its
   // nodes; a node of bars only has none.
-  void check_rotation_unknowns(const YamlValue& where, int node, std::string_view problem) {
-    if (node_unknowns_.empty()) {
-      node_unknowns_.resize(model_.nodes.size());
-      for (const ElementKind* kind : element_kinds()) kind->add_node_unknowns(model_, node_unknowns_);
-    }
-    if (node_unknowns_[static_cast<std::size_t>(node)].empty()) {
+  void check_rotation_unknowns(const YamlValue& where, int node, std::string_view problem) const {
+    if (!has_rotations(node)) {
       where.fail(fmt::format("node '{}' has {}: only nodes of beams carry one (bars are pinned "
                              "at their nodes)",
                              model_.nodes[static_cast<std::size_t>(node)].name, problem));
     }
   }
 
-  // Whether `node` carries rotation unknowns (beam nodes): rz in 2D, R11 … R33 in 3D.
-  bool has_rotations(const DofMap& dofs, int node) const {
-    return dofs.index(node, model_.dimension == 2 ? "rz" : "R11") >= 0;
+  // Whether `node` carries rotation unknowns (beam nodes): rz in 2D, R11 … R33 in 3D. The
+  // elements decide (ElementKind::add_node_unknowns), so this is asked after they are read.
+  bool has_rotations(int node) const {
+    if (!dofs_) dofs_.emplace(model_);
+    return dofs_->index(node, model_.dimension == 2 ? "rz" : "R11") >= 0;
   }
 
   // A unit axis from [ax, ay, az] (3D models only; `what` says what it is for in 2D's error).
@@ -428,7 +426,6 @@ class ModelReader {
   }
 
   void read_joints(const YamlValue& section) {
-    const DofMap dofs(model_);
     double size_m = 1.0;  // coincidence tolerance scale
     for (const Node& node : model_.nodes) size_m = std::max(size_m, node.position_m.cwiseAbs().maxCoeff());
     for (const auto& [name, spec] : section.entries()) {
@@ -450,8 +447,8 @@ class ModelReader {
                                "same initial position",
                                a.name, b.name, gap));
       }
-      const bool keeps_axis = model_.dimension == 3 && has_rotations(dofs, joint.nodes[0]) &&
-                              has_rotations(dofs, joint.nodes[1]);
+      const bool keeps_axis =
+          model_.dimension == 3 && has_rotations(joint.nodes[0]) && has_rotations(joint.nodes[1]);
       if (const auto axis = spec.find("axis")) {
         joint.axis = axis_vector(*axis, "a pin turns about z");
         if (!keeps_axis) {
@@ -532,9 +529,8 @@ class ModelReader {
     const YamlValue joint_name = spec.at("joint");
     driver.joint = joints_.find(joint_name);
     const Joint& joint = model_.joints[static_cast<std::size_t>(driver.joint)];
-    const DofMap dofs(model_);
     for (const int node : joint.nodes) {
-      if (!has_rotations(dofs, node)) {
+      if (!has_rotations(node)) {
         joint_name.fail(fmt::format(
             "joint '{}' joins node '{}', which carries no rotation (only beam nodes do); a "
             "revolute driver turns one node's frame relative to the other's. Between bars use "
@@ -556,6 +552,11 @@ class ModelReader {
       spec.fail_key("axis", "required in 3D: the axis [ax, ay, az] the hinge angle is measured about");
     }
     const auto [a, h, b] = driver.hinge_nodes;
+    if (a == b) {
+      names[2].fail(fmt::format("node '{}' is also A; the angle is between two different arms H→A "
+                                "and H→B",
+                                model_.nodes[b].name));
+    }
     const Eigen::Vector3d hinge = model_.nodes[h].position_m;
     const Eigen::Vector3d axis = model_.dimension == 2 ? Eigen::Vector3d::UnitZ() : driver.axis;
     for (const auto& [node, k] : {std::pair{a, 0}, std::pair{b, 2}}) {
@@ -855,8 +856,8 @@ class ModelReader {
   NameIndex nodes_{"node"};
   NameIndex materials_{"material"};
   NameIndex elements_{"element"};
-  std::vector<std::vector<std::string>> node_unknowns_;  // beyond positions; filled on demand
   NameIndex joints_{"joint"};
+  mutable std::optional<DofMap> dofs_;  // built on first use, once the elements are read
 };
 
 // Overrides ------------------------------------------------------------------------------------

@@ -158,10 +158,9 @@ void emit_geometry(YAML::Emitter& out, const Model& model) {
 
 // A joint's axis is in the file when the loader requires it: in 3D between nodes that both
 // carry rotations.
-bool has_axis(const Model& model, const Joint& joint) {
-  if (model.dimension != 3) return false;
-  const DofMap dofs(model);
-  return dofs.index(joint.nodes[0], "R11") >= 0 && dofs.index(joint.nodes[1], "R11") >= 0;
+bool has_axis(const Model& model, const DofMap& dofs, const Joint& joint) {
+  return model.dimension == 3 && dofs.index(joint.nodes[0], "R11") >= 0 &&
+         dofs.index(joint.nodes[1], "R11") >= 0;
 }
 
 void emit_boundary_conditions(YAML::Emitter& out, const Model& model) {
@@ -189,6 +188,7 @@ void emit_boundary_conditions(YAML::Emitter& out, const Model& model) {
   if (!model.joints.empty()) {
     emit_key(out, "joints");
     out << YAML::BeginMap;
+    const DofMap dofs(model);
     for (const Joint& joint : model.joints) {
       emit_key(out, joint.name);
       out << YAML::Flow << YAML::BeginMap;
@@ -197,7 +197,7 @@ void emit_boundary_conditions(YAML::Emitter& out, const Model& model) {
       emit_key(out, "nodes");
       out << YAML::Flow << YAML::BeginSeq << model.nodes[joint.nodes[0]].name
           << model.nodes[joint.nodes[1]].name << YAML::EndSeq;
-      if (has_axis(model, joint)) {
+      if (has_axis(model, dofs, joint)) {
         emit_key(out, "axis");
         emit_vector(out, joint.axis, 3);
       }

@@ -17,8 +17,8 @@
 //   omega2             ω² (rad²/s²); < 0: the equilibrium is unstable
 //   frequency          f = ω / 2π (Hz); nan where ω² < 0
 //   dT_C               the model-wide ΔT(t) (°C)
-//   position.<driver>  the driver's motion from the initial state at t: rad (bar_angle) or
-//                      m (coordinate)
+//   position.<driver>  the driver's motion from the initial state at t: rad (the turning
+//                      drivers: bar_angle, revolute, hinge_angle) or m (coordinate)
 // A time without modes (no equilibrium found) has no rows, and summary.json says why.
 // Frame k is the equilibrium moved along the mode of row k until its largest nodal displacement
 // is a tenth of the shortest bar; its vector field velocity_m_s holds the M-orthonormal mode.
