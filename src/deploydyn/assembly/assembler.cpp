@@ -14,10 +14,10 @@ namespace {
 
 constexpr const char* kAxisNames[] = {"x", "y", "z"};
 
-// Local Φ and Jacobian of one constraint on the stack: at most 3 equations (a support) on
-// 6 unknowns (a 3D driver's two nodes).
-constexpr int kMaxConstraintEquations = 3;
-constexpr int kMaxConstraintDofs = 6;
+// Local Φ and Jacobian of one constraint on the stack: at most 6 equations on 9 unknowns (the
+// orthonormality of a 3D beam node's frame).
+constexpr int kMaxConstraintEquations = 6;
+constexpr int kMaxConstraintDofs = 9;
 using LocalVector = Eigen::Matrix<double, Eigen::Dynamic, 1, 0, kMaxConstraintEquations, 1>;
 using LocalJacobian = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0,
                                     kMaxConstraintEquations, kMaxConstraintDofs>;
@@ -76,6 +76,9 @@ Assembler::Assembler(const Model& model) : model_(model), dofs_(model) {
     driver_constraint_.push_back(static_cast<int>(constraints_.size()));
     constraints_.push_back(make_driver(driver, model, dofs_));
   }
+  for (const ElementKind* kind : element_kinds()) {  // after the drivers: their rows stay put
+    for (auto& c : kind->make_constraints(model, dofs_)) constraints_.push_back(std::move(c));
+  }
   for (const auto& c : constraints_) {
     first_row_.push_back(n_equations_);
     n_equations_ += c->n_equations();
@@ -97,12 +100,13 @@ Assembler::Assembler(const Model& model) : model_(model), dofs_(model) {
 }
 
 Eigen::VectorXd Assembler::initial_coordinates() const {
-  Eigen::VectorXd q = Eigen::VectorXd::Zero(n_dofs());  // element-added unknowns start at 0
+  Eigen::VectorXd q = Eigen::VectorXd::Zero(n_dofs());
   for (int node = 0; node < model_.n_nodes(); ++node) {
     for (int axis = 0; axis < model_.dimension; ++axis) {
       q[dofs_.index(node, axis)] = model_.nodes[node].position_m[axis];
     }
   }
+  for (const ElementKind* kind : element_kinds()) kind->set_initial_node_unknowns(model_, dofs_, q);
   return q;
 }
 

@@ -124,7 +124,7 @@ class Assembler {
   const Model& model_;
   DofMap dofs_;
   std::vector<std::unique_ptr<ElementGroup>> groups_;  // [kind of element_kinds()]
-  std::vector<std::unique_ptr<Constraint>> constraints_;  // supports first, then drivers
+  std::vector<std::unique_ptr<Constraint>> constraints_;  // supports, drivers, then the elements'
   std::vector<int> first_row_;                            // [constraint] → first λ row
   std::vector<int> driver_rows_;                          // [driver] → first λ row
   std::vector<int> driver_constraint_;                    // [driver] → index in constraints_
