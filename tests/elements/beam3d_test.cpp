@@ -160,7 +160,7 @@ TEST(Beam3d, RigidMotionGivesNoStrain) {
 }
 
 // Node b's frame turned by φ about one local axis e_k: the mid-point measures give K_k =
-// sin(φ)/L0 (theory Eq. B3.2: ½(d_j·d_i' − d_i·d_j') of the averaged directors) and no other
+// sin(φ)/L0 (theory D3: ½(d_j·d_i' − d_i·d_j') of the averaged directors) and no other
 // curvature; this fixes which K is torsion and which bends about d2 and d3.
 TEST(Beam3d, CurvaturesOfARotationAboutOneLocalAxis) {
   std::mt19937 rng(9);

@@ -8,15 +8,15 @@
 // Local unknowns (24): q = [x_a (3), R_a (9), x_b (3), R_b (9)].
 // Mid-point quadrature (one point: locking-free, second order):
 //   r' = (x_b − x_a)/L0,  R̄ = ½(R_a + R_b),  R' = (R_b − R_a)/L0,  d_i = R̄ e_i,  d_i' = R' e_i
-//   Γ = (d1·r' − 1, d2·r', d3·r')                       axial and shear strains   (theory Eq. B3.1)
+//   Γ = (d1·r' − 1, d2·r', d3·r')                       axial and shear strains   (theory D3)
 //   K_k = ½(d_j·d_i' − d_i·d_j'),  (k,i,j) = (1,2,3), (2,3,1), (3,1,2)
-//                                                       torsion, bending about d2, d3 (Eq. B3.2)
+//                                                       torsion, bending about d2, d3 (D3)
 //   U = ½ L0 (s − s_t)ᵀ C (s − s_t),  s = (Γ, K),  C = diag(EA, k_sGA, k_sGA, GJ, EI_y, EI_z),
-//   s_t = (αΔT, 0, 0, 0, κ_t2, κ_t3)                   strain energy              (Eq. B3.3)
+//   s_t = (αΔT, 0, 0, 0, κ_t2, κ_t3)                   strain energy              (D4, D5)
 // Every strain is a quadratic form of q (bilinear in (r', R̄) and in (R̄, R')), so with
 // z = T q = (r', R̄, R') and the gradients G = ∂s/∂z and constant Hessians H_k = ∂²s_k/∂z²:
-//   f = L0 Tᵀ Gᵀ C(s − s_t),   K = L0 Tᵀ (Gᵀ C G + Σ_k [C(s − s_t)]_k H_k) T      (Eq. B3.4)
-// Mass (Eq. B3.5), from T = ½∫ρ(A|ṙ|² + I_z|ḋ2|² + I_y|ḋ3|²) with linear interpolation:
+//   f = L0 Tᵀ Gᵀ C(s − s_t),   K = L0 Tᵀ (Gᵀ C G + Σ_k [C(s − s_t)]_k H_k) T      (D6)
+// Mass (D7), from T = ½∫ρ(A|ṙ|² + I_z|ḋ2|² + I_y|ḋ3|²) with linear interpolation:
 // constant, (m/6)[2I I; I 2I] on positions and (L0/6)[2 1; 1 2] ⊗ (I₃ ⊗ J) on the R's with
 // J = ρ(I_z e2e2ᵀ + I_y e3e3ᵀ); lumped: the halves on each node's diagonal blocks.
 
@@ -46,7 +46,7 @@ struct Section {
   Eigen::Matrix3d frame = Eigen::Matrix3d::Identity();  // E = [e1 e2 e3], initial
 };
 
-// Thermal strains s_t (Eq. B3.3): αΔT and the curvatures of the gradients, already scaled.
+// Thermal strains s_t (D4, D5): αΔT and the curvatures of the gradients, already scaled.
 inline StrainVector thermal_strains(double axial, double curvature_y, double curvature_z) {
   StrainVector s = StrainVector::Zero();
   s[0] = axial;
@@ -175,7 +175,7 @@ inline double strain_energy(const State& s, const Section& section) {
   return 0.5 * section.reference_length_m * s.mechanical.dot(s.resultants);
 }
 
-// f = ∂U/∂q (Eq. B3.4).
+// f = ∂U/∂q (D6).
 inline ElementVector internal_force(const State& s, const Section& section) {
   const double l0 = section.reference_length_m;
   return l0 * intermediate_map(l0).transpose() * (s.gradient.transpose() * s.resultants);
@@ -190,7 +190,7 @@ inline ElementVector internal_force_per_thermal_strain(const State& s, const Sec
          (s.gradient.transpose() * section.stiffness.cwiseProduct(thermal));
 }
 
-// K = ∂f/∂q: material + geometric (Eq. B3.4).
+// K = ∂f/∂q: material + geometric (D6).
 inline ElementMatrix tangent(const State& s, const Section& section) {
   const double l0 = section.reference_length_m;
   const Eigen::Matrix<double, kIntermediate, kDofs> t = intermediate_map(l0);
@@ -208,7 +208,7 @@ inline Eigen::Matrix3d rotary_inertia_per_length(double mass_kg, double area_m2,
                     inertia_y_m4 * frame.col(2) * frame.col(2).transpose());
 }
 
-// Eq. B3.5.
+// (D7).
 inline ElementMatrix mass_matrix(double mass_kg, const Eigen::Matrix3d& rotary_per_length, double l0,
                                  MassMatrixKind kind) {
   ElementMatrix m = ElementMatrix::Zero();
