@@ -6,7 +6,9 @@
 #include <limits>
 #include <stdexcept>
 
+#include "deploydyn/constraints/frame_orthonormality.hpp"
 #include "deploydyn/constraints/prescribed_coordinates.hpp"
+#include "deploydyn/elements/beam/beam3d_group.hpp"
 #include "deploydyn/elements/element_kinds.hpp"
 
 namespace deploydyn {
@@ -71,6 +73,14 @@ Assembler::Assembler(const Model& model) : model_(model), dofs_(model) {
   for (const ElementKind* kind : element_kinds()) groups_.push_back(kind->make_group(model, dofs_));
   for (const FixedNode& support : model.supports) {
     constraints_.push_back(make_support(support, model, dofs_));
+    if (support.rotation && model.dimension == 3) {  // a 3D beam's node: R − Rᵀ = 0
+      std::vector<int> frame = frame_dofs(dofs_, support.node);
+      if (frame.empty()) {
+        throw std::invalid_argument("support " + model.nodes[support.node].name +
+                                    ": fixes the rotation of a node that no beam holds");
+      }
+      constraints_.push_back(std::make_unique<FrameClamp>(std::move(frame), model.nodes[support.node].name));
+    }
   }
   for (const Driver& driver : model.drivers) {
     driver_constraint_.push_back(static_cast<int>(constraints_.size()));

@@ -21,6 +21,7 @@
 // J = ρ(I_z e2e2ᵀ + I_y e3e3ᵀ); lumped: the halves on each node's diagonal blocks.
 
 #include <Eigen/Core>
+#include <Eigen/Geometry>
 #include <cmath>
 
 #include "deploydyn/model/model.hpp"
