@@ -126,6 +126,7 @@ int check_command(const std::string& model_file, const std::vector<std::string>&
   int support_rows = 0;
   for (const FixedNode& s : model.supports) {
     for (int axis = 0; axis < model.dimension; ++axis) support_rows += s.axes[axis] ? 1 : 0;
+    if (s.rotation) support_rows += model.dimension == 2 ? 1 : 3;
   }
   const int driver_rows = assembler.n_equations() - support_rows;
   double mass = 0.0;

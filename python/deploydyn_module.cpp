@@ -245,6 +245,9 @@ class DictElementEntry final : public ElementEntryWriter {
   void names(std::string_view key, const std::vector<std::string>& values) override {
     d_[py::str(std::string(key))] = py::tuple(py::cast(values));
   }
+  void numbers(std::string_view key, const std::vector<double>& values) override {
+    d_[py::str(std::string(key))] = py::tuple(py::cast(values));
+  }
   void function(std::string_view, const TimeFunction&) override {}
 
  private:
@@ -280,6 +283,7 @@ py::list supports_info(const Model& model) {
     for (int axis = 0; axis < model.dimension; ++axis) {
       if (support.axes[axis]) axes.append(std::string(1, "xyz"[axis]));
     }
+    if (support.rotation) axes.append("rotation");
     py::dict d;
     d["node"] = model.nodes[support.node].name;
     d["fix"] = axes;

@@ -17,10 +17,12 @@ TEST(ElementKinds, NamesAndQuantitiesAreUnique) {
   std::set<std::string_view> kinds;
   for (const ElementKind* kind : element_kinds()) {
     EXPECT_TRUE(kinds.insert(kind->name()).second) << kind->name();
-    std::set<std::string_view> keys, names;
-    for (const ResultQuantity& quantity : kind->quantities()) {
-      EXPECT_TRUE(keys.insert(quantity.key).second) << kind->name() << ": " << quantity.key;
-      EXPECT_TRUE(names.insert(quantity.name).second) << kind->name() << ": " << quantity.name;
+    for (const int dimension : {2, 3}) {
+      std::set<std::string_view> keys, names;
+      for (const ResultQuantity& quantity : kind->quantities(dimension)) {
+        EXPECT_TRUE(keys.insert(quantity.key).second) << kind->name() << ": " << quantity.key;
+        EXPECT_TRUE(names.insert(quantity.name).second) << kind->name() << ": " << quantity.name;
+      }
     }
   }
 }

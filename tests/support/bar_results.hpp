@@ -26,10 +26,10 @@ inline std::vector<BarResult> bar_results(const StepRecord& record) {
   const ElementKind& bar = bar_kind();
   std::vector<BarResult> bars;
   for (int e = 0; e < results.n_elements(); ++e) {
-    bars.push_back({results.at(e, quantity_index(bar, "strain")),
-                    results.at(e, quantity_index(bar, "mechanical_strain")),
-                    results.at(e, quantity_index(bar, "axial_force_N")),
-                    results.at(e, quantity_index(bar, "length_m"))});
+    bars.push_back({results.at(e, quantity_index(bar, record.dimension, "strain")),
+                    results.at(e, quantity_index(bar, record.dimension, "mechanical_strain")),
+                    results.at(e, quantity_index(bar, record.dimension, "axial_force_N")),
+                    results.at(e, quantity_index(bar, record.dimension, "length_m"))});
   }
   return bars;
 }

@@ -37,6 +37,14 @@ std::unique_ptr<Constraint> make_support(const FixedNode& support, const Model& 
     initial.push_back(node.position_m[axis]);
     labels.push_back("support " + node.name + ", " + kAxisNames[axis]);
   }
+  if (support.rotation) {  // a beam's node: its rotation from the initial frame stays 0
+    if (model.dimension == 3) {
+      throw std::invalid_argument("support " + node.name + ": fixing a 3D rotation is not available yet");
+    }
+    rows.push_back(dofs.index(support.node, "rz"));
+    initial.push_back(0.0);
+    labels.push_back("support " + node.name + ", rotation");
+  }
   return std::make_unique<PrescribedCoordinates>(rows, initial, labels);
 }
 
@@ -178,6 +186,7 @@ void Assembler::add_nodal_loads(auto&& factor_of, Eigen::VectorXd& f) const {
     for (int axis = 0; axis < model_.dimension; ++axis) {
       f[dofs_.index(load.node, axis)] += factor * load.force_N[axis];
     }
+    if (load.moment_Nm != 0.0) f[dofs_.index(load.node, "rz")] += factor * load.moment_Nm;
   }
 }
 
@@ -325,9 +334,9 @@ std::vector<double> Assembler::element_quantity(std::string_view name, const Eig
   std::vector<double> results;
   const auto kinds = element_kinds();
   for (std::size_t g = 0; g < groups_.size(); ++g) {
-    const int k = quantity_index(*kinds[g], name);
+    const int k = quantity_index(*kinds[g], model_.dimension, name);
     if (k < 0) continue;
-    results.resize(kinds[g]->quantities().size());
+    results.resize(kinds[g]->quantities(model_.dimension).size());
     for (int e = 0; e < groups_[g]->n_elements(); ++e) {
       groups_[g]->results(e, q, t, thermal_factor, results);
       values.push_back(results[static_cast<std::size_t>(k)]);

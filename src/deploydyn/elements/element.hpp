@@ -68,7 +68,8 @@ class ElementGroup {
   virtual ~ElementGroup() = default;
 
   virtual int n_elements() const = 0;
-  // Equations that taking every element as rigid would add (Grübler count): 1 per bar.
+  // Equations that taking every element as rigid would add (Grübler count): 1 per bar, 3 per
+  // 2D beam.
   virtual int n_rigid_body_conditions() const = 0;
 
   // Each adds its elements' share into the global vector (which the caller has sized).
@@ -112,7 +113,8 @@ class ElementKind {
 
   // As model files and messages spell the type: "bar".
   virtual std::string_view name() const = 0;
-  virtual std::span<const ResultQuantity> quantities() const = 0;
+  // In a model of `dimension` 2 or 3 (a 3D beam reports more than a 2D one).
+  virtual std::span<const ResultQuantity> quantities(int dimension) const = 0;
 
   virtual int n_elements(const Model& model) const = 0;
   virtual const std::string& element_name(const Model& model, int element) const = 0;

@@ -35,6 +35,9 @@ class ElementEntryReader {
   virtual std::optional<double> optional_number(std::string_view key, ValueSign sign,
                                                 std::string_view unit) const = 0;
   // Exactly `count` node names, as indices into Model::nodes.
+  // Exactly `count` numbers (a direction, say), or empty when the entry does not give the key.
+  virtual std::optional<std::vector<double>> optional_numbers(std::string_view key, int count,
+                                                              std::string_view unit) const = 0;
   virtual std::vector<int> nodes(std::string_view key, int count) const = 0;
   virtual int material(std::string_view key) const = 0;  // index into Model::materials
   virtual TimeFunction function(std::string_view key) const = 0;
@@ -52,6 +55,7 @@ class ElementEntryWriter {
   virtual void number(std::string_view key, double value) = 0;
   virtual void name(std::string_view key, const std::string& value) = 0;
   virtual void names(std::string_view key, const std::vector<std::string>& values) = 0;
+  virtual void numbers(std::string_view key, const std::vector<double>& values) = 0;
   virtual void function(std::string_view key, const TimeFunction& value) = 0;
 };
 

@@ -1,12 +1,15 @@
 #include "deploydyn/elements/element_kinds.hpp"
 
 #include "deploydyn/elements/bar/bar_kind.hpp"
+#include "deploydyn/elements/beam/beam_kind.hpp"
+#include "deploydyn/model/model.hpp"
 
 namespace deploydyn {
 
 std::span<const ElementKind* const> element_kinds() {
   static const ElementKind* const kKinds[] = {
       &bar_kind(),
+      &beam_kind(),
   };
   return kKinds;
 }
@@ -36,14 +39,14 @@ std::vector<std::string> element_names(const Model& model) {
 std::vector<std::string> element_names(const Model& model, std::string_view quantity) {
   std::vector<std::string> names;
   for (const ElementKind* kind : element_kinds()) {
-    if (quantity_index(*kind, quantity) < 0) continue;
+    if (quantity_index(*kind, model.dimension, quantity) < 0) continue;
     for (int e = 0; e < kind->n_elements(model); ++e) names.push_back(kind->element_name(model, e));
   }
   return names;
 }
 
-int quantity_index(const ElementKind& kind, std::string_view name) {
-  const auto quantities = kind.quantities();
+int quantity_index(const ElementKind& kind, int dimension, std::string_view name) {
+  const auto quantities = kind.quantities(dimension);
   for (std::size_t k = 0; k < quantities.size(); ++k) {
     if (quantities[k].name == name) return static_cast<int>(k);
   }

@@ -25,7 +25,8 @@ std::vector<std::string> element_names(const Model& model);
 // Assembler::element_quantity gives its values.
 std::vector<std::string> element_names(const Model& model, std::string_view quantity);
 
-// Index of the recorded quantity named `name` (ResultQuantity::name) of `kind`, or −1.
-int quantity_index(const ElementKind& kind, std::string_view name);
+// Index of the quantity named `name` (ResultQuantity::name) of `kind` in a model of
+// `dimension`, or −1.
+int quantity_index(const ElementKind& kind, int dimension, std::string_view name);
 
 }  // namespace deploydyn

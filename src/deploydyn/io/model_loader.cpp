@@ -312,6 +312,7 @@ class ModelReader {
       spec.expect_keys(std::span<const std::string_view>(keys_of_kind[k]));
       kinds[k]->read(name, ElementEntry(spec, *this), model_);
       elements_.add(name, spec);
+      element_refs_.push_back({kinds[k], kinds[k]->n_elements(model_) - 1});
     }
   }
 
@@ -328,6 +329,12 @@ class ModelReader {
                                           std::string_view unit) const override {
       const auto value = spec_.find(key);
       return value ? std::optional<double>(value->number(io_sign(sign), unit)) : std::nullopt;
+    }
+    std::optional<std::vector<double>> optional_numbers(std::string_view key, int count,
+                                                        std::string_view unit) const override {
+      const auto value = spec_.find(key);
+      const auto n = static_cast<std::size_t>(count);
+      return value ? std::optional<std::vector<double>>(value->numbers(n, n, unit)) : std::nullopt;
     }
     std::vector<int> nodes(std::string_view key, int count) const override {
       std::vector<int> indices;
@@ -373,11 +380,30 @@ class ModelReader {
       }
       if (const auto fix = spec.find("fix")) {
         support.axes = {false, false, false};
-        for (const auto& name : fix->items(1, 3, "axis names (x, y, z)")) {
+        for (const auto& name : fix->items(1, 4, "axis names (x, y, z) and rotation")) {
+          if (name.is_scalar() && name.text() == "rotation") {
+            check_rotation_unknowns(name, support.node, "no rotation to fix");
+            support.rotation = true;
+            continue;
+          }
           support.axes[static_cast<std::size_t>(axis(name))] = true;
         }
       }
       model_.supports.push_back(support);
+    }
+  }
+
+  // `fix: [..., rotation]` and a load's `moment` need the rotation unknowns a beam gives its
+  // nodes; a node of bars only has none.
+  void check_rotation_unknowns(const YamlValue& where, int node, std::string_view problem) {
+    if (node_unknowns_.empty()) {
+      node_unknowns_.resize(model_.nodes.size());
+      for (const ElementKind* kind : element_kinds()) kind->add_node_unknowns(model_, node_unknowns_);
+    }
+    if (node_unknowns_[static_cast<std::size_t>(node)].empty()) {
+      where.fail(fmt::format("node '{}' has {}: only nodes of beams carry one (bars are pinned "
+                             "at their nodes)",
+                             model_.nodes[static_cast<std::size_t>(node)].name, problem));
     }
   }
 
@@ -403,7 +429,13 @@ class ModelReader {
   void read_bar_angle(const YamlValue& spec, Driver& driver) const {
     spec.expect_keys({"type", "element", "pivot", "axis", "profile", "reading"});
     driver.kind = Driver::Kind::bar_angle;
-    driver.element = elements_.find(spec.at("element"));
+    const YamlValue element = spec.at("element");
+    const ElementRef driven = element_refs_[static_cast<std::size_t>(elements_.find(element))];
+    if (driven.kind->name() != "bar") {
+      element.fail(fmt::format("element '{}' is a {}; a bar_angle driver turns a bar",
+                               element.text(), driven.kind->name()));
+    }
+    driver.element = driven.index;  // into Model::bars
     const BarElement& bar = model_.bars[driver.element];
     driver.pivot = bar.node_a;
     if (const auto pivot = spec.find("pivot")) {
@@ -436,9 +468,19 @@ class ModelReader {
 
   void read_loads(const YamlValue& section) {
     for (const auto& spec : section.items(0, kUnbounded, "loads {node: name, force: [fx, fy]}")) {
-      spec.expect_keys({"node", "force", "factor"});
-      NodalLoad load{.node = nodes_.find(spec.at("node")),
-                     .force_N = vector(spec.at("force"), "N")};
+      spec.expect_keys({"node", "force", "moment", "factor"});
+      NodalLoad load{.node = nodes_.find(spec.at("node"))};
+      const auto force = spec.find("force");
+      const auto moment = spec.find("moment");
+      if (!force && !moment) {
+        spec.fail_key("force", "needs a force [fx, fy(, fz)] (N), or a moment (N·m) on a beam's node");
+      }
+      if (force) load.force_N = vector(*force, "N");
+      if (moment) {
+        if (model_.dimension == 3) moment->fail("moments on 3D beam nodes are not available yet");
+        check_rotation_unknowns(*moment, load.node, "no rotation for a moment to act on");
+        load.moment_Nm = moment->number(Sign::any, "N·m");
+      }
       if (const auto factor = spec.find("factor")) load.factor = function(*factor);
       model_.loads.push_back(load);
     }
@@ -696,6 +738,8 @@ class ModelReader {
   NameIndex nodes_{"node"};
   NameIndex materials_{"material"};
   NameIndex elements_{"element"};
+  std::vector<ElementRef> element_refs_;  // of the elements in file order
+  std::vector<std::vector<std::string>> node_unknowns_;  // beyond positions; filled on demand
 };
 
 // Overrides ------------------------------------------------------------------------------------

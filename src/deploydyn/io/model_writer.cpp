@@ -90,6 +90,12 @@ class YamlElementEntry final : public ElementEntryWriter {
     for (const std::string& value : values) out_ << value;
     out_ << YAML::EndSeq;
   }
+  void numbers(std::string_view key, const std::vector<double>& values) override {
+    emit_key(out_, std::string(key));
+    out_ << YAML::Flow << YAML::BeginSeq;
+    for (const double value : values) out_ << number_text(value);
+    out_ << YAML::EndSeq;
+  }
   void function(std::string_view key, const TimeFunction& value) override {
     emit_key(out_, std::string(key));
     emit_function(out_, value);
@@ -165,6 +171,7 @@ void emit_boundary_conditions(YAML::Emitter& out, const Model& model) {
           out << kAxisNames[static_cast<std::size_t>(i)];
         }
       }
+      if (support.rotation) out << "rotation";
       out << YAML::EndSeq << YAML::EndMap;
     }
     out << YAML::EndSeq;
@@ -214,6 +221,7 @@ void emit_boundary_conditions(YAML::Emitter& out, const Model& model) {
       out << model.nodes[load.node].name;
       emit_key(out, "force");
       emit_vector(out, load.force_N, model.dimension);
+      if (load.moment_Nm != 0.0) emit_number(out, "moment", load.moment_Nm);
       emit_key(out, "factor");
       emit_function(out, load.factor);
       out << YAML::EndMap;

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "deploydyn/elements/bar/bar_element.hpp"
+#include "deploydyn/elements/beam/beam_element.hpp"
 #include "deploydyn/model/time_function.hpp"
 #include "deploydyn/util/name_table.hpp"
 
@@ -32,6 +33,7 @@ struct Material {
 struct FixedNode {
   int node = 0;
   std::array<bool, 3> axes{true, true, true};  // x, y, z fixed
+  bool rotation = false;  // the node's rotation unknowns fixed too (2D: rz; a beam's node)
 };
 
 // How a driver's profile f(t) is read.
@@ -66,11 +68,12 @@ inline constexpr NameTable kDriverKinds{std::array{
     NamedValue<Driver::Kind>{Driver::Kind::coordinate, "coordinate"},
 }};
 
-// External force on a node: force_N · factor(t).
+// External force on a node: force_N · factor(t); in 2D also a moment on a beam's node.
 struct NodalLoad {
   int node = 0;
   Eigen::Vector3d force_N = Eigen::Vector3d::Zero();
   TimeFunction factor = TimeFunction::constant(1.0);
+  double moment_Nm = 0.0;  // 2D: about z, counter-clockwise, on the node's rotation rz
 };
 
 enum class AnalysisType { quasi_static, dynamic, continuation, modal };
@@ -197,6 +200,7 @@ struct Model {
   std::vector<Node> nodes;
   std::vector<Material> materials;
   std::vector<BarElement> bars;
+  std::vector<BeamElement> beams;
   std::vector<FixedNode> supports;
   std::vector<Driver> drivers;
   std::vector<NodalLoad> loads;
@@ -207,6 +211,7 @@ struct Model {
 
   int n_nodes() const { return static_cast<int>(nodes.size()); }
   int n_bars() const { return static_cast<int>(bars.size()); }
+  int n_beams() const { return static_cast<int>(beams.size()); }
 };
 
 }  // namespace deploydyn

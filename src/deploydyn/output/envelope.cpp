@@ -24,7 +24,7 @@ void Envelope::record(const StepRecord& r) {
     ElementEnvelope& envelope = elements_[g];
     envelope.n_quantities = results.n_quantities;
     envelope.extremes.resize(results.values.size());
-    const auto quantities = kinds[g]->quantities();
+    const auto quantities = kinds[g]->quantities(r.dimension);
     for (std::size_t i = 0; i < results.values.size(); ++i) {
       if (quantities[i % static_cast<std::size_t>(results.n_quantities)].recorded) {
         envelope.extremes[i].update(results.values[i], r.time_s);

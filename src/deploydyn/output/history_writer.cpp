@@ -7,6 +7,7 @@
 #include <utility>
 
 #include "deploydyn/elements/element_kinds.hpp"
+#include "deploydyn/model/dof_map.hpp"
 
 namespace deploydyn {
 namespace {
@@ -25,13 +26,11 @@ constexpr std::size_t kLongestValue = 25;
 
 std::vector<std::string> history_columns(const Model& model) {
   std::vector<std::string> columns{"t"};
-  for (const Node& node : model.nodes) {
-    for (int axis = 0; axis < model.dimension; ++axis) {
-      columns.push_back(std::string(1, "xyz"[axis]) + "." + node.name);
-    }
-  }
+  // Every unknown of q, in its order: x.A, y.A, then what elements add (rz.A for a beam's node).
+  const DofMap dofs(model);
+  for (int dof = 0; dof < dofs.n_dofs(); ++dof) columns.push_back(dofs.label(dof));
   for (const ElementRef& e : all_elements(model)) {
-    for (const ResultQuantity& quantity : e.kind->quantities()) {
+    for (const ResultQuantity& quantity : e.kind->quantities(model.dimension)) {
       if (quantity.recorded) {
         columns.push_back(std::string(quantity.key) + "." + e.kind->element_name(model, e.index));
       }
@@ -49,7 +48,7 @@ void append_history_row(const StepRecord& r, std::vector<double>& row) {
   row.insert(row.end(), r.q.begin(), r.q.end());
   const auto kinds = element_kinds();
   for (std::size_t g = 0; g < r.elements.size(); ++g) {
-    const auto quantities = kinds[g]->quantities();
+    const auto quantities = kinds[g]->quantities(r.dimension);
     const ElementResults& results = r.elements[g];
     for (int e = 0; e < results.n_elements(); ++e) {
       for (int k = 0; k < results.n_quantities; ++k) {

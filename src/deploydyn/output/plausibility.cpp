@@ -15,7 +15,7 @@ std::vector<std::string> plausibility_warnings(const Model& model, const Envelop
   std::size_t n_flagged = 0;
   const auto kinds = element_kinds();
   for (std::size_t g = 0; g < kinds.size() && g < envelope.elements().size(); ++g) {
-    const int k = quantity_index(*kinds[g], "strain");
+    const int k = quantity_index(*kinds[g], model.dimension, "strain");
     if (k < 0) continue;
     const ElementEnvelope& extremes = envelope.elements()[g];
     const int n = std::min(extremes.n_elements(), kinds[g]->n_elements(model));

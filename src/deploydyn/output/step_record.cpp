@@ -8,6 +8,7 @@ StepRecord make_step_record(const Assembler& assembler, const MotionState& state
                             double external_work_J) {
   StepRecord record;
   record.time_s = state.time_s;
+  record.dimension = assembler.model().dimension;
   record.q = state.q;
   record.v = state.v;
   const auto kinds = element_kinds();
@@ -15,7 +16,7 @@ StepRecord make_step_record(const Assembler& assembler, const MotionState& state
   for (std::size_t g = 0; g < kinds.size(); ++g) {
     ElementResults& results = record.elements[g];
     const ElementGroup& group = *assembler.element_groups()[g];
-    results.n_quantities = static_cast<int>(kinds[g]->quantities().size());
+    results.n_quantities = static_cast<int>(kinds[g]->quantities(record.dimension).size());
     results.values.resize(static_cast<std::size_t>(group.n_elements() * results.n_quantities));
     for (int e = 0; e < group.n_elements(); ++e) {
       group.results(e, state.q, state.time_s, 1.0,

@@ -12,6 +12,7 @@ namespace deploydyn {
 
 struct StepRecord {
   double time_s = 0.0;
+  int dimension = 2;                   // the model's: which quantities its elements report
   Eigen::VectorXd q;                   // nodal coordinates (m)
   Eigen::VectorXd v;                   // their rates q̇ (m/s); zero in a static analysis
   std::vector<ElementResults> elements;  // per type of elements/element_kinds.hpp

@@ -105,7 +105,7 @@ std::string summary_json(const Model& model, const Envelope& envelope, const Run
   const auto kinds = element_kinds();
   for (std::size_t g = 0; g < kinds.size() && g < envelope.elements().size(); ++g) {
     const ElementEnvelope& envelope_of_kind = envelope.elements()[g];
-    const auto quantities = kinds[g]->quantities();
+    const auto quantities = kinds[g]->quantities(model.dimension);
     for (int e = 0; e < kinds[g]->n_elements(model) && e < envelope_of_kind.n_elements(); ++e) {
       ordered_json entry = ordered_json::object();
       for (std::size_t k = 0; k < quantities.size(); ++k) {

@@ -136,7 +136,7 @@ void VtkWriter::write_frame(const StepRecord& r, const std::filesystem::path& fi
   const auto kinds = element_kinds();
   std::vector<std::string_view> arrays;
   for (const ElementKind* kind : kinds) {
-    for (const ResultQuantity& quantity : kind->quantities()) {
+    for (const ResultQuantity& quantity : kind->quantities(model_.dimension)) {
       if (quantity.recorded && std::find(arrays.begin(), arrays.end(), quantity.name) == arrays.end()) {
         arrays.push_back(quantity.name);
       }
@@ -149,7 +149,7 @@ void VtkWriter::write_frame(const StepRecord& r, const std::filesystem::path& fi
   }
   for (const std::string_view array : arrays) {
     std::vector<int> index_in_kind;
-    for (const ElementKind* kind : kinds) index_in_kind.push_back(quantity_index(*kind, array));
+    for (const ElementKind* kind : kinds) index_in_kind.push_back(quantity_index(*kind, model_.dimension, array));
     float_array(out, std::string(array).c_str(), n_cells, 1, [&](int c, int) {
       const int k = index_in_kind[static_cast<std::size_t>(group_of_cell[c])];
       return k < 0 ? std::numeric_limits<double>::quiet_NaN()

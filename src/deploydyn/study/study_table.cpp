@@ -57,8 +57,9 @@ Peak largest(const CaseOutcome& outcome, std::string_view name) {
   Peak peak;
   const auto kinds = element_kinds();
   const auto& envelopes = outcome.envelope.elements();
+  const int dimension = outcome.model ? outcome.model->dimension : 2;  // no model: no envelopes
   for (std::size_t g = 0; g < kinds.size() && g < envelopes.size(); ++g) {
-    const int k = quantity_index(*kinds[g], name);
+    const int k = quantity_index(*kinds[g], dimension, name);
     if (k < 0) continue;
     for (int e = 0; e < envelopes[g].n_elements(); ++e) {
       const Extremes& extremes = envelopes[g].at(e, k);

@@ -100,7 +100,7 @@ std::unique_ptr<ElementGroup> make_bars(const Model& model, const DofMap& dofs) 
 class BarKind final : public ElementKind {
  public:
   std::string_view name() const override { return "bar"; }
-  std::span<const ResultQuantity> quantities() const override { return kQuantities; }
+  std::span<const ResultQuantity> quantities(int) const override { return kQuantities; }
   int n_elements(const Model& model) const override { return model.n_bars(); }
   const std::string& element_name(const Model& model, int element) const override {
     return model.bars[element].name;

@@ -1,0 +1,148 @@
+#pragma once
+// Two-node geometrically exact plane beam (Reissner 1972; Simo & Vu-Quoc 1986; Géradin &
+// Cardona 2000, ch. 7) in absolute coordinates: each node has its position x, y and the
+// rotation θ (`rz`) of its cross-section from its initial orientation. One-point (mid-point)
+// quadrature, free of shear locking (docs/theory.md, "Beams", Eqs. B1–B8):
+//
+//   x' = (x_b − x_a) / L0,  θ̄ = β0 + (θ_a + θ_b)/2                                 (B1)
+//   t = (cos θ̄, sin θ̄),  n = (−sin θ̄, cos θ̄)                                       (B2)
+//   ε = x'·t − 1,  γ = x'·n,  κ = (θ_b − θ_a) / L0                                   (B3)
+//   U = ½ L0 [EA (ε − ε_t)² + k_s G A γ² + EI (κ − κ_t)²]                            (B4)
+//   ε_t = α ΔT,  κ_t = −α ΔT_gy / h_y   (ΔT_gy = T(+y) − T(−y): curves away from it)  (B5)
+//   N = EA (ε − ε_t),  V = k_s G A γ,  M = EI (κ − κ_t)                              (B6)
+//   f = ∂U/∂q = L0 (N ε_q + V γ_q + M κ_q),  K = ∂f/∂q                               (B7)
+//   M = (ρ A L0/6) [2 1; 1 2] on x and on y, (ρ I L0/6) [2 1; 1 2] on θ; lumped: halves (B8)
+//
+// Local unknowns: q = (x_a, y_a, θ_a, x_b, y_b, θ_b). The mass matrix is constant (θ is
+// additive in the plane), which the integrators assume.
+
+#include <Eigen/Core>
+#include <cmath>
+
+#include "deploydyn/model/model.hpp"
+
+namespace deploydyn::beam2d {
+
+inline constexpr int kDofs = 6;
+using Vector = Eigen::Matrix<double, kDofs, 1>;
+using Matrix = Eigen::Matrix<double, kDofs, kDofs>;
+
+// The section and reference constants one evaluation needs.
+struct Section {
+  double axial_stiffness_N = 0.0;    // EA
+  double shear_stiffness_N = 0.0;    // k_s G A
+  double bending_stiffness_Nm2 = 0.0;  // E I_z
+  double reference_length_m = 0.0;   // L0
+  double initial_angle_rad = 0.0;    // β0: initial direction of x_b − x_a
+};
+
+// Thermal strains the configuration is measured against (B5), already scaled.
+struct ThermalStrain {
+  double axial = 0.0;           // ε_t
+  double curvature_1_m = 0.0;   // κ_t
+};
+
+// Strains, resultants and their first derivatives at one configuration.
+struct State {
+  double strain = 0.0;          // ε, total axial
+  double shear_strain = 0.0;    // γ
+  double curvature_1_m = 0.0;   // κ
+  double mechanical_strain = 0.0;  // ε − ε_t
+  double mechanical_curvature_1_m = 0.0;  // κ − κ_t
+  double axial_force_N = 0.0;   // N
+  double shear_force_N = 0.0;   // V
+  double bending_moment_Nm = 0.0;  // M
+  Eigen::Vector2d t, n;         // section frame at the mid-point (B2)
+  Vector d_strain, d_shear, d_curvature;  // ε_q, γ_q, κ_q
+};
+
+inline State evaluate(const Vector& q, const Section& s, const ThermalStrain& thermal) {
+  State st;
+  const double l0 = s.reference_length_m;
+  const Eigen::Vector2d x_prime = Eigen::Vector2d(q[3] - q[0], q[4] - q[1]) / l0;  // (B1)
+  const double angle = s.initial_angle_rad + 0.5 * (q[2] + q[5]);
+  st.t = Eigen::Vector2d(std::cos(angle), std::sin(angle));
+  st.n = Eigen::Vector2d(-st.t[1], st.t[0]);
+  const double stretch = x_prime.dot(st.t);
+  st.strain = stretch - 1.0;  // (B3)
+  st.shear_strain = x_prime.dot(st.n);
+  st.curvature_1_m = (q[5] - q[2]) / l0;
+  st.mechanical_strain = st.strain - thermal.axial;
+  st.axial_force_N = s.axial_stiffness_N * st.mechanical_strain;  // (B6)
+  st.shear_force_N = s.shear_stiffness_N * st.shear_strain;
+  st.mechanical_curvature_1_m = st.curvature_1_m - thermal.curvature_1_m;
+  st.bending_moment_Nm = s.bending_stiffness_Nm2 * st.mechanical_curvature_1_m;
+  // ∂t/∂θ_a = ∂t/∂θ_b = n/2, ∂n/∂θ = −t/2.
+  const double half_shear = 0.5 * st.shear_strain, half_stretch = 0.5 * stretch;
+  st.d_strain << -st.t[0] / l0, -st.t[1] / l0, half_shear, st.t[0] / l0, st.t[1] / l0, half_shear;
+  st.d_shear << -st.n[0] / l0, -st.n[1] / l0, -half_stretch, st.n[0] / l0, st.n[1] / l0,
+      -half_stretch;
+  st.d_curvature << 0.0, 0.0, -1.0 / l0, 0.0, 0.0, 1.0 / l0;
+  return st;
+}
+
+inline double strain_energy(const State& st, const Section& s) {  // (B4)
+  const double l0 = s.reference_length_m;
+  return 0.5 * l0 *
+         (st.axial_force_N * st.mechanical_strain + st.shear_force_N * st.shear_strain +
+          st.bending_moment_Nm * st.mechanical_curvature_1_m);
+}
+
+inline Vector internal_force(const State& st, const Section& s) {  // (B7)
+  return s.reference_length_m * (st.axial_force_N * st.d_strain + st.shear_force_N * st.d_shear +
+                                 st.bending_moment_Nm * st.d_curvature);
+}
+
+// ∂f/∂ε_t and ∂f/∂κ_t at a fixed configuration: N and M fall by EA, EI per unit thermal strain.
+inline Vector force_per_axial_thermal_strain(const State& st, const Section& s) {
+  return -s.reference_length_m * s.axial_stiffness_N * st.d_strain;
+}
+inline Vector force_per_thermal_curvature(const State& st, const Section& s) {
+  return -s.reference_length_m * s.bending_stiffness_Nm2 * st.d_curvature;
+}
+
+// K = L0 (EA ε_q ε_qᵀ + k_sGA γ_q γ_qᵀ + EI κ_q κ_qᵀ + N ε_qq + V γ_qq)   (B7)
+// with the second derivatives (d = x_b − x_a, θ either nodal rotation):
+//   ε_dθ = n / (2 L0),  ε_θθ = −(1 + ε)/4,  γ_dθ = −t / (2 L0),  γ_θθ = −γ/4.
+inline Matrix tangent(const State& st, const Section& s) {
+  const double l0 = s.reference_length_m;
+  Matrix k = s.axial_stiffness_N * st.d_strain * st.d_strain.transpose() +
+             s.shear_stiffness_N * st.d_shear * st.d_shear.transpose() +
+             s.bending_stiffness_Nm2 * st.d_curvature * st.d_curvature.transpose();
+  // Geometric part: N ε_qq + V γ_qq. Per unit d and θ: g_dθ = (N n − V t) / (2 L0).
+  const Eigen::Vector2d g_dtheta = (st.axial_force_N * st.n - st.shear_force_N * st.t) / (2.0 * l0);
+  const double g_thetatheta =
+      -0.25 * (st.axial_force_N * (1.0 + st.strain) + st.shear_force_N * st.shear_strain);
+  constexpr int kPosition[2][2] = {{0, 1}, {3, 4}};
+  constexpr int kRotation[2] = {2, 5};
+  for (int node = 0; node < 2; ++node) {
+    const double sign = node == 0 ? -1.0 : 1.0;  // ∂d/∂x_a = −I, ∂d/∂x_b = I
+    for (int axis = 0; axis < 2; ++axis) {
+      for (const int r : kRotation) {
+        k(kPosition[node][axis], r) += sign * g_dtheta[axis];
+        k(r, kPosition[node][axis]) += sign * g_dtheta[axis];
+      }
+    }
+  }
+  for (const int r : kRotation) {
+    for (const int c : kRotation) k(r, c) += g_thetatheta;
+  }
+  return l0 * k;
+}
+
+// (B8): the translational mass m on x and y, the rotary inertia m_θ = ρ I L0 on θ.
+inline Matrix mass_matrix(double mass_kg, double rotary_inertia_kg_m2, MassMatrixKind kind) {
+  Matrix m = Matrix::Zero();
+  const double per_dof[3] = {mass_kg, mass_kg, rotary_inertia_kg_m2};
+  for (int i = 0; i < 3; ++i) {
+    if (kind == MassMatrixKind::consistent) {
+      m(i, i) = m(i + 3, i + 3) = per_dof[i] / 3.0;
+      m(i, i + 3) = m(i + 3, i) = per_dof[i] / 6.0;
+    } else {
+      m(i, i) = m(i + 3, i + 3) = per_dof[i] / 2.0;
+    }
+  }
+  return m;
+}
+
+}  // namespace deploydyn::beam2d

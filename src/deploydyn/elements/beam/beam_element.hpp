@@ -1,0 +1,42 @@
+#pragma once
+// What a model file says about one beam: the beam element type's storage in Model::beams.
+// 2D beams carry a nodal rotation `rz`; 3D beams a nodal rotation matrix R11…R33
+// (docs/theory.md, "Beams").
+
+#include <Eigen/Core>
+#include <string>
+
+#include "deploydyn/model/time_function.hpp"
+
+namespace deploydyn {
+
+// Two-node geometrically exact beam, docs/theory.md "Beams". Material values are copied in at
+// load time; the local axes are x along the beam, y (2D: the in-plane normal; 3D: from
+// `orientation`) and z = x × y.
+struct BeamElement {
+  std::string name;
+  int node_a = 0, node_b = 0;  // indices into Model::nodes
+  int material = 0;            // index into Model::materials
+  double area_m2 = 0.0;
+  double inertia_z_m4 = 0.0;      // I_z: bending about local z (in-plane bending in 2D)
+  double inertia_y_m4 = 0.0;      // I_y: bending about local y (3D only)
+  double torsion_m4 = 0.0;        // J: torsion constant (3D only)
+  Eigen::Vector3d orientation = Eigen::Vector3d::Zero();  // local y hint (3D only)
+  bool orientation_given = false;
+  double shear_factor = 5.0 / 6.0;  // k_s
+  double shear_modulus_Pa = 0.0;    // G: given, or E / 2.6 (ν = 0.3)
+  double height_y_m = 0.0;          // section depth along local y; 0: not given
+  double height_z_m = 0.0;          // along local z (3D only); 0: not given
+  TimeFunction temperature_gradient_y_C;  // T(+y face) − T(−y face), °C, over time
+  bool gradient_y_given = false;
+  TimeFunction temperature_gradient_z_C;  // T(+z face) − T(−z face) (3D only)
+  bool gradient_z_given = false;
+  double mass_kg = 0.0;             // total; given, or density · area · reference length
+  bool mass_given = false;          // true when the model file named the mass
+  double reference_length_m = 0.0;  // L0: given, or the distance of the nodes' initial positions
+  bool length_given = false;
+  TimeFunction temperature_change_C;  // ΔT_e(t) of the axis, °C
+  bool temperature_given = false;     // per-element ΔT rather than the model-wide one
+};
+
+}  // namespace deploydyn

@@ -1,0 +1,167 @@
+#include "deploydyn/elements/beam/beam_entry.hpp"
+
+#include <fmt/format.h>
+
+#include <Eigen/Geometry>
+#include <cmath>
+#include <optional>
+#include <utility>
+
+namespace deploydyn::beam {
+namespace {
+
+// Nodes closer than this are at the same position: a beam between them has no direction.
+constexpr double kMinBeamLength_m = 1e-12;
+// E / G of an isotropic material with ν = 0.3: G = E / (2 (1 + ν)).
+constexpr double kYoungsToShearModulus = 2.6;
+// |orientation × e1| / |orientation| below this: the orientation is parallel to the beam.
+constexpr double kMinOrientationSine = 1e-6;
+
+constexpr ElementField kFields[] = {
+    {"nodes", "", "required", "two different node names, at different initial positions"},
+    {"area", "m²", "required", "> 0"},
+    {"inertia_z", "m⁴", "required", "> 0: second moment of area about local z (in-plane bending in 2D)"},
+    {"inertia_y", "m⁴", "required in 3D", "> 0: second moment of area about local y; 3D only"},
+    {"torsion", "m⁴", "required in 3D", "> 0: torsion constant J; 3D only"},
+    {"orientation", "", "the global axis least aligned with the beam",
+     "3D only: a vector [x, y, z] not parallel to the beam; its part normal to the beam is local y"},
+    {"material", "", "required", "a name from `materials`"},
+    {"shear_factor", "", "5/6", "> 0: shear correction factor k_s"},
+    {"shear_modulus", "Pa", "`E / 2.6` (ν = 0.3)", "> 0"},
+    {"height_y", "m", "none", "> 0: the section's depth along local y; needed by `dT_gradient_y`"},
+    {"dT_gradient_y", "°C", "0", "a function: T(+y face) − T(−y face); the beam curves away from the hotter face"},
+    {"height_z", "m", "none", "> 0: depth along local z; 3D only; needed by `dT_gradient_z`"},
+    {"dT_gradient_z", "°C", "0", "a function: T(+z face) − T(−z face); 3D only"},
+    {"mass", "kg", "`density · area · L0`",
+     "> 0; an error if neither it nor a density is given; rotary inertia is mass · inertia / area"},
+    {"length", "m", "distance of the nodes' initial positions", "> 0: the reference length L0"},
+    {"dT", "°C", "`thermal.dT`", "a function: this beam's own ΔT(t) of its axis"},
+};
+
+constexpr std::string_view kOnly3D[] = {"inertia_y", "torsion", "orientation", "height_z",
+                                        "dT_gradient_z"};
+
+// A gradient needs the depth it acts over; a depth without a gradient is harmless.
+void read_gradient(const ElementEntryReader& entry, std::string_view gradient_key,
+                   std::string_view height_key, TimeFunction& gradient, bool& given,
+                   double& height_m) {
+  height_m = entry.optional_number(height_key, ValueSign::positive, "m").value_or(0.0);
+  std::optional<TimeFunction> function = entry.optional_function(gradient_key);
+  given = function.has_value();
+  if (!function) return;
+  if (height_m == 0.0) {
+    entry.fail_missing(height_key, fmt::format("needs '{}' (m), the depth over which '{}' acts",
+                                               height_key, gradient_key));
+  }
+  gradient = std::move(*function);
+}
+
+}  // namespace
+
+std::span<const ElementField> entry_fields() { return kFields; }
+
+void read_entry(const std::string& name, const ElementEntryReader& entry, Model& model) {
+  const bool three_d = model.dimension == 3;
+  if (!three_d) {
+    for (const std::string_view key : kOnly3D) {
+      if (entry.has(key)) {
+        entry.fail(key, fmt::format("'{}' is only allowed for beams in 3D models; this model is "
+                                    "2D (in-plane bending takes 'inertia_z')",
+                                    key));
+      }
+    }
+  }
+  BeamElement beam;
+  beam.name = name;
+  const std::vector<int> ends = entry.nodes("nodes", 2);
+  beam.node_a = ends[0];
+  beam.node_b = ends[1];
+  const std::string& name_a = model.nodes[beam.node_a].name;
+  if (beam.node_a == beam.node_b) {
+    entry.fail("nodes", fmt::format("a beam needs two different nodes, got '{}' twice", name_a));
+  }
+  const Eigen::Vector3d chord =
+      model.nodes[beam.node_b].position_m - model.nodes[beam.node_a].position_m;
+  const double distance = chord.norm();
+  if (distance < kMinBeamLength_m) {
+    entry.fail("nodes", fmt::format("zero-length beam: nodes '{}' and '{}' are at the same position",
+                                    name_a, model.nodes[beam.node_b].name));
+  }
+  beam.area_m2 = entry.number("area", ValueSign::positive, "m²");
+  beam.inertia_z_m4 = entry.number("inertia_z", ValueSign::positive, "m⁴");
+  if (three_d) {
+    beam.inertia_y_m4 = entry.number("inertia_y", ValueSign::positive, "m⁴");
+    beam.torsion_m4 = entry.number("torsion", ValueSign::positive, "m⁴");
+    if (const auto orientation = entry.optional_numbers("orientation", 3, "")) {
+      beam.orientation = Eigen::Vector3d((*orientation)[0], (*orientation)[1], (*orientation)[2]);
+      beam.orientation_given = true;
+      const double norm = beam.orientation.norm();
+      if (!(norm > 0.0) || beam.orientation.cross(chord).norm() < kMinOrientationSine * norm * distance) {
+        entry.fail("orientation",
+                   fmt::format("must not be zero or parallel to the beam (from '{}' to '{}')",
+                               name_a, model.nodes[beam.node_b].name));
+      }
+    }
+  }
+  beam.material = entry.material("material");
+  const Material& material = model.materials[beam.material];
+  beam.shear_factor =
+      entry.optional_number("shear_factor", ValueSign::positive, "").value_or(beam.shear_factor);
+  beam.shear_modulus_Pa = entry.optional_number("shear_modulus", ValueSign::positive, "Pa")
+                              .value_or(material.youngs_modulus_Pa / kYoungsToShearModulus);
+  read_gradient(entry, "dT_gradient_y", "height_y", beam.temperature_gradient_y_C,
+                beam.gradient_y_given, beam.height_y_m);
+  if (three_d) {
+    read_gradient(entry, "dT_gradient_z", "height_z", beam.temperature_gradient_z_C,
+                  beam.gradient_z_given, beam.height_z_m);
+  }
+
+  const std::optional<double> length_m = entry.optional_number("length", ValueSign::positive, "m");
+  beam.length_given = length_m.has_value();
+  beam.reference_length_m = length_m.value_or(distance);
+
+  const std::optional<double> mass_kg = entry.optional_number("mass", ValueSign::positive, "kg");
+  beam.mass_given = mass_kg.has_value();
+  if (mass_kg) {
+    beam.mass_kg = *mass_kg;
+  } else if (material.density_kg_m3) {
+    beam.mass_kg = *material.density_kg_m3 * beam.area_m2 * beam.reference_length_m;
+  } else {
+    entry.fail_missing("mass", fmt::format("needs a mass: give 'mass' (kg) here or a 'density' "
+                                           "(kg/m³) in material '{}'",
+                                           material.name));
+  }
+
+  std::optional<TimeFunction> own_change_C = entry.optional_function("dT");
+  beam.temperature_given = own_change_C.has_value();
+  beam.temperature_change_C = own_change_C ? std::move(*own_change_C) : model.temperature_change_C;
+  model.beams.push_back(std::move(beam));
+}
+
+void write_entry(const Model& model, int index, ElementEntryWriter& entry) {
+  const BeamElement& beam = model.beams[static_cast<std::size_t>(index)];
+  entry.names("nodes", {model.nodes[beam.node_a].name, model.nodes[beam.node_b].name});
+  entry.number("area", beam.area_m2);
+  entry.number("inertia_z", beam.inertia_z_m4);
+  if (model.dimension == 3) {
+    entry.number("inertia_y", beam.inertia_y_m4);
+    entry.number("torsion", beam.torsion_m4);
+    if (beam.orientation_given) {
+      entry.numbers("orientation", {beam.orientation[0], beam.orientation[1], beam.orientation[2]});
+    }
+  }
+  entry.name("material", model.materials[beam.material].name);
+  entry.number("shear_factor", beam.shear_factor);
+  entry.number("shear_modulus", beam.shear_modulus_Pa);
+  if (beam.height_y_m > 0.0) entry.number("height_y", beam.height_y_m);
+  if (beam.gradient_y_given) entry.function("dT_gradient_y", beam.temperature_gradient_y_C);
+  if (model.dimension == 3) {
+    if (beam.height_z_m > 0.0) entry.number("height_z", beam.height_z_m);
+    if (beam.gradient_z_given) entry.function("dT_gradient_z", beam.temperature_gradient_z_C);
+  }
+  entry.number("mass", beam.mass_kg);
+  entry.number("length", beam.reference_length_m);
+  if (beam.temperature_given) entry.function("dT", beam.temperature_change_C);
+}
+
+}  // namespace deploydyn::beam

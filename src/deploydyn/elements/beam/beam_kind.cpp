@@ -1,0 +1,193 @@
+#include "deploydyn/elements/beam/beam_kind.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <stdexcept>
+
+#include "deploydyn/elements/beam/beam2d.hpp"
+#include "deploydyn/elements/beam/beam_entry.hpp"
+#include "deploydyn/elements/local_element_group.hpp"
+#include "deploydyn/model/dof_map.hpp"
+#include "deploydyn/model/model.hpp"
+
+namespace deploydyn {
+namespace {
+
+// One 2D beam for LocalElementGroup: (x_a, y_a, θ_a, x_b, y_b, θ_b) and its constants.
+struct Beam2dRecord {
+  static constexpr int kDofs = beam2d::kDofs;
+  static constexpr int kRigidBodyConditions = 3;  // length, and both rotations = the chord's
+  using Vector = beam2d::Vector;
+  using Matrix = beam2d::Matrix;
+  using State = beam2d::State;
+
+  std::array<int, kDofs> dofs{};
+  beam2d::Section section;
+  double mass_kg = 0.0;
+  double rotary_inertia_kg_m2 = 0.0;                    // ρ I_z L0 = m I_z / A
+  double expansion_per_C = 0.0;                         // α
+  double gradient_curvature_per_C_m = 0.0;              // κ_t / ΔT_gy = −α / h_y (B5)
+  const TimeFunction* temperature_change_C = nullptr;   // ΔT(t), in the model
+  const TimeFunction* temperature_gradient_C = nullptr;  // ΔT_gy(t), in the model
+
+  beam2d::ThermalStrain thermal(double t) const {
+    return {expansion_per_C * temperature_change_C->value(t),
+            gradient_curvature_per_C_m * temperature_gradient_C->value(t)};
+  }
+
+  State evaluate(const Vector& q, double t, double thermal_factor) const {
+    const beam2d::ThermalStrain full = thermal(t);
+    return beam2d::evaluate(q, section,
+                            {thermal_factor * full.axial, thermal_factor * full.curvature_1_m});
+  }
+  Vector internal_force(const State& s) const { return beam2d::internal_force(s, section); }
+  // The factor scales ε_t and κ_t alike: chain rule through ∂f/∂ε_t and ∂f/∂κ_t.
+  Vector thermal_force_derivative(const State& s, double t) const {
+    const beam2d::ThermalStrain full = thermal(t);
+    return full.axial * beam2d::force_per_axial_thermal_strain(s, section) +
+           full.curvature_1_m * beam2d::force_per_thermal_curvature(s, section);
+  }
+  Vector thermal_force_rate(const State& s, double t) const {
+    return expansion_per_C * temperature_change_C->derivative(t) *
+               beam2d::force_per_axial_thermal_strain(s, section) +
+           gradient_curvature_per_C_m * temperature_gradient_C->derivative(t) *
+               beam2d::force_per_thermal_curvature(s, section);
+  }
+  Matrix tangent(const State& s) const { return beam2d::tangent(s, section); }
+  Matrix mass(MassMatrixKind kind) const {
+    return beam2d::mass_matrix(mass_kg, rotary_inertia_kg_m2, kind);
+  }
+  // The weight is shared equally by the two nodes' positions (a uniform beam: no moment).
+  Vector weight(const Eigen::Vector3d& gravity_m_s2) const {
+    Vector f = Vector::Zero();
+    for (const int node : {0, 3}) {
+      f[node] = 0.5 * mass_kg * gravity_m_s2[0];
+      f[node + 1] = 0.5 * mass_kg * gravity_m_s2[1];
+    }
+    return f;
+  }
+  double strain_energy(const State& s) const { return beam2d::strain_energy(s, section); }
+  // max(|Δ(x_b − x_a)| / L0, |Δθ_a|, |Δθ_b|): how far the beam turned, stretched or bent.
+  double relative_change(const Vector& q, const Vector& q_before) const {
+    const Vector change = q - q_before;
+    const double chord =
+        std::hypot(change[3] - change[0], change[4] - change[1]) / section.reference_length_m;
+    return std::max({chord, std::abs(change[2]), std::abs(change[5])});
+  }
+  // In the order of kQuantities.
+  void results(const State& s, std::span<double> out) const {
+    out[0] = s.strain;
+    out[1] = s.mechanical_strain;
+    out[2] = s.axial_force_N;
+    out[3] = s.shear_force_N;
+    out[4] = s.bending_moment_Nm;
+  }
+  double reference_length_m() const { return section.reference_length_m; }
+};
+
+// 2D: the first five; 3D: all (the 2D ones first, in the same places).
+constexpr ResultQuantity kQuantities[] = {
+    {"strain", "strain", true},                   // total axial ε at the mid-point
+    {"mstrain", "mechanical_strain", true},       // ε − αΔT
+    {"force", "axial_force_N", true},             // N, tension positive
+    {"shear", "shear_force_y_N", true},           // V along local y
+    {"moment", "bending_moment_z_Nm", true},      // M_z
+    {"shear_z", "shear_force_z_N", true},         // 3D: along local z
+    {"torque", "torque_Nm", true},                // 3D: about the axis
+    {"moment_y", "bending_moment_y_Nm", true},    // 3D: about local y
+};
+constexpr int kQuantities2d = 5;
+
+std::unique_ptr<ElementGroup> make_beam_group_2d(const Model& model, const DofMap& dofs) {
+  std::vector<Beam2dRecord> records;
+  records.reserve(model.beams.size());
+  for (const BeamElement& e : model.beams) {
+    const Material& material = model.materials[e.material];
+    Beam2dRecord& beam = records.emplace_back();
+    int i = 0;
+    for (const int node : {e.node_a, e.node_b}) {
+      beam.dofs[i++] = dofs.index(node, 0);
+      beam.dofs[i++] = dofs.index(node, 1);
+      beam.dofs[i++] = dofs.index(node, "rz");
+    }
+    const Eigen::Vector3d chord = model.nodes[e.node_b].position_m - model.nodes[e.node_a].position_m;
+    beam.section = {.axial_stiffness_N = material.youngs_modulus_Pa * e.area_m2,
+                    .shear_stiffness_N = e.shear_factor * e.shear_modulus_Pa * e.area_m2,
+                    .bending_stiffness_Nm2 = material.youngs_modulus_Pa * e.inertia_z_m4,
+                    .reference_length_m = e.reference_length_m,
+                    .initial_angle_rad = std::atan2(chord[1], chord[0])};
+    beam.mass_kg = e.mass_kg;
+    beam.rotary_inertia_kg_m2 = e.mass_kg * e.inertia_z_m4 / e.area_m2;
+    beam.expansion_per_C = material.expansion_per_C;
+    beam.gradient_curvature_per_C_m = e.height_y_m > 0.0 ? -material.expansion_per_C / e.height_y_m : 0.0;
+    beam.temperature_change_C = &e.temperature_change_C;
+    beam.temperature_gradient_C = &e.temperature_gradient_y_C;
+  }
+  return std::make_unique<LocalElementGroup<Beam2dRecord>>(std::move(records), model.analysis.mass);
+}
+
+class BeamKind final : public ElementKind {
+ public:
+  std::string_view name() const override { return "beam"; }
+  std::span<const ResultQuantity> quantities(int dimension) const override {
+    return std::span<const ResultQuantity>(kQuantities).first(dimension == 2 ? kQuantities2d
+                                                                               : std::size(kQuantities));
+  }
+  int n_elements(const Model& model) const override { return model.n_beams(); }
+  const std::string& element_name(const Model& model, int element) const override {
+    return model.beams[element].name;
+  }
+  int n_element_nodes() const override { return 2; }
+  int element_node(const Model& model, int element, int local_node) const override {
+    return local_node == 0 ? model.beams[element].node_a : model.beams[element].node_b;
+  }
+  int vtk_cell_type() const override { return 3; }  // VTK_LINE
+  double mass_kg(const Model& model, int element) const override {
+    return model.beams[element].mass_kg;
+  }
+  double temperature_change_C(const Model& model, int element, double t) const override {
+    return model.beams[element].temperature_change_C.value(t);
+  }
+  void set_temperature_change(Model& model, const TimeFunction& change_C) const override {
+    for (BeamElement& beam : model.beams) beam.temperature_change_C = change_C;
+  }
+  // 2D: the rotation rz; 3D: the nine entries of the node's rotation matrix, row-major.
+  void add_node_unknowns(const Model& model,
+                         std::vector<std::vector<std::string>>& per_node) const override {
+    static const std::vector<std::string> kRotation2d{"rz"};
+    static const std::vector<std::string> kRotation3d{"R11", "R12", "R13", "R21", "R22",
+                                                      "R23", "R31", "R32", "R33"};
+    const std::vector<std::string>& names = model.dimension == 2 ? kRotation2d : kRotation3d;
+    for (const BeamElement& beam : model.beams) {
+      for (const int node : {beam.node_a, beam.node_b}) {
+        std::vector<std::string>& unknowns = per_node[static_cast<std::size_t>(node)];
+        if (std::find(unknowns.begin(), unknowns.end(), names.front()) == unknowns.end()) {
+          unknowns.insert(unknowns.end(), names.begin(), names.end());
+        }
+      }
+    }
+  }
+  std::span<const ElementField> fields() const override { return beam::entry_fields(); }
+  void read(const std::string& name, const ElementEntryReader& entry, Model& model) const override {
+    beam::read_entry(name, entry, model);
+  }
+  void write(const Model& model, int element, ElementEntryWriter& entry) const override {
+    beam::write_entry(model, element, entry);
+  }
+  std::unique_ptr<ElementGroup> make_group(const Model& model, const DofMap& dofs) const override {
+    if (model.dimension == 3 && !model.beams.empty()) {
+      throw std::invalid_argument("3D beams: not available yet");
+    }
+    return make_beam_group_2d(model, dofs);  // with no beams: an empty group in either dimension
+  }
+};
+
+}  // namespace
+
+const ElementKind& beam_kind() {
+  static const BeamKind kind;
+  return kind;
+}
+
+}  // namespace deploydyn
