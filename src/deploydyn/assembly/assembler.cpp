@@ -37,10 +37,7 @@ std::unique_ptr<Constraint> make_support(const FixedNode& support, const Model& 
     initial.push_back(node.position_m[axis]);
     labels.push_back("support " + node.name + ", " + kAxisNames[axis]);
   }
-  if (support.rotation) {  // a beam's node: its rotation from the initial frame stays 0
-    if (model.dimension == 3) {
-      throw std::invalid_argument("support " + node.name + ": fixing a 3D rotation is not available yet");
-    }
+  if (support.rotation && model.dimension == 2) {  // a beam's node: its rotation stays 0
     rows.push_back(dofs.index(support.node, "rz"));
     initial.push_back(0.0);
     labels.push_back("support " + node.name + ", rotation");
@@ -81,7 +78,7 @@ Assembler::Assembler(const Model& model) : model_(model), dofs_(model) {
   for (const ElementKind* kind : element_kinds()) groups_.push_back(kind->make_group(model, dofs_));
   for (const FixedNode& support : model.supports) {
     constraints_.push_back(make_support(support, model, dofs_));
-    if (support.rotation && model.dimension == 3) {  // a 3D beam's node: R − Rᵀ = 0
+    if (support.rotation && model.dimension == 3) {  // a 3D beam's node: R − Rᵀ = 0 (theory D8)
       std::vector<int> frame = frame_dofs(dofs_, support.node);
       if (frame.empty()) {
         throw std::invalid_argument("support " + model.nodes[support.node].name +
@@ -95,7 +92,10 @@ Assembler::Assembler(const Model& model) : model_(model), dofs_(model) {
     constraints_.push_back(make_driver(driver, model, dofs_));
   }
   for (const ElementKind* kind : element_kinds()) {  // after the drivers: their rows stay put
-    for (auto& c : kind->make_constraints(model, dofs_)) constraints_.push_back(std::move(c));
+    for (auto& c : kind->make_constraints(model, dofs_)) {
+      constraints_.push_back(std::move(c));
+      ++n_element_constraints_;
+    }
   }
   for (const auto& c : constraints_) {
     first_row_.push_back(n_equations_);
@@ -245,6 +245,25 @@ void Assembler::constraint_rates(const Eigen::VectorXd& q, const Eigen::VectorXd
     const Constraint& con = *constraints_[c];
     con.time_derivatives(q, v, t, phi_t.segment(first_row_[c], con.n_equations()),
                          bias.segment(first_row_[c], con.n_equations()));
+  }
+}
+
+void Assembler::constraint_jacobian_times(const Eigen::VectorXd& q, double t, const Eigen::VectorXd& v,
+                                          Eigen::VectorXd& out) const {
+  out.resize(n_equations());
+  LocalVector phi;
+  LocalJacobian jacobian;
+  for (std::size_t c = 0; c < constraints_.size(); ++c) {
+    const Constraint& con = *constraints_[c];
+    const std::span<const int> dofs = con.dofs();
+    phi.resize(con.n_equations());
+    jacobian.resize(con.n_equations(), static_cast<Eigen::Index>(dofs.size()));
+    con.evaluate(q, t, phi, jacobian);
+    for (int k = 0; k < con.n_equations(); ++k) {
+      double sum = 0.0;
+      for (std::size_t i = 0; i < dofs.size(); ++i) sum += jacobian(k, static_cast<Eigen::Index>(i)) * v[dofs[i]];
+      out[first_row_[c] + k] = sum;
+    }
   }
 }
 
