@@ -117,6 +117,57 @@ int beam_group() {
 
 double order(double coarse_error, double fine_error) { return std::log2(coarse_error / fine_error); }
 
+// --- The model's initial state and thermal derivatives ------------------------------------------
+// Frames start at R = I (every constraint holds at q0, the unstrained beam has no force), and the
+// group's ∂f/∂(thermal factor) and ∂f/∂t (through ΔT, ΔT_gy, ΔT_gz rising in time) match central
+// differences of f at a deformed state.
+TEST(Beam3dVerification, InitialStateAndThermalDerivativesOfTheGroup) {
+  BeamSpec spec;
+  spec.expansion_per_C = 1e-3;
+  spec.height_y_m = 0.02;
+  spec.height_z_m = 0.03;
+  Model model = straight_beam(spec, 3, true);
+  for (BeamElement& e : model.beams) {
+    e.temperature_change_C = TimeFunction(TimeFunction::SmoothStep{0.0, 0.0, 1.0, 5.0});
+    e.temperature_gradient_y_C = TimeFunction(TimeFunction::SmoothStep{0.0, 0.0, 1.0, 20.0});
+    e.temperature_gradient_z_C = TimeFunction(TimeFunction::SmoothStep{0.0, 0.0, 1.0, -12.0});
+  }
+  const Assembler assembler(model);
+  const Eigen::VectorXd q0 = assembler.initial_coordinates();
+  Eigen::VectorXd phi, f;
+  assembler.constraints(q0, 0.0, phi);
+  EXPECT_EQ(phi.lpNorm<Eigen::Infinity>(), 0.0);
+  assembler.internal_force(q0, 0.0, 1.0, f);
+  EXPECT_EQ(f.lpNorm<Eigen::Infinity>(), 0.0);
+  for (int node = 0; node < model.n_nodes(); ++node) {
+    EXPECT_EQ((rotation(assembler, q0, node) - Eigen::Matrix3d::Identity()).norm(), 0.0) << node;
+  }
+  EXPECT_EQ(assembler.describe_equation(assembler.n_equations() - 1), "beam node N3, frame orthonormality (3,3)");
+  EXPECT_EQ(assembler.describe_equation(5), "support N0, rotation z");
+
+  Eigen::VectorXd q = q0 + 0.05 * Eigen::VectorXd::Random(q0.size());
+  const double t = 0.4, h = 1e-6;
+  const auto force = [&](double time, double factor) {
+    Eigen::VectorXd out;
+    assembler.internal_force(q, time, factor, out);
+    return out;
+  };
+  Eigen::VectorXd analytic;
+  assembler.thermal_force_derivative(q, t, analytic);
+  const Eigen::VectorXd by_factor = (force(t, 0.7 + h) - force(t, 0.7 - h)) / (2 * h);
+  const double factor_error = (analytic - by_factor).norm() / by_factor.norm();
+  Eigen::VectorXd rate, constraint_rate;
+  assembler.static_residual_time_derivative(q, t, Eigen::VectorXd::Zero(assembler.n_equations()), rate,
+                                            constraint_rate);
+  const Eigen::VectorXd by_time = (force(t + h, 1.0) - force(t - h, 1.0)) / (2 * h);
+  const double time_error = (rate - by_time).norm() / by_time.norm();
+  std::printf("thermal derivative error %.2e, rate error %.2e\n", factor_error, time_error);
+  check({"B3.0.1", "3D beams: ∂f/∂(thermal factor) of the group", "central difference, step 1e-6",
+         factor_error, 1e-7, ""});
+  check({"B3.0.2", "3D beams: ∂f/∂t through ΔT(t), ΔT_gy(t), ΔT_gz(t)", "central difference, step 1e-6 s",
+         time_error, 1e-7, ""});
+}
+
 // --- Free thermal bending ------------------------------------------------------------------
 // A cantilever (statically determinate: nothing resists its free thermal curvature) under a
 // gradient ΔT_gy across its depth h_y takes the arc of curvature κ3 = −αΔT_gy/h_y about e3,
