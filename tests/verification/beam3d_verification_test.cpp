@@ -121,7 +121,7 @@ double order(double coarse_error, double fine_error) { return std::log2(coarse_e
 // Frames start at R = I (every constraint holds at q0, the unstrained beam has no force), and the
 // group's ∂f/∂(thermal factor) and ∂f/∂t (through ΔT, ΔT_gy, ΔT_gz rising in time) match central
 // differences of f at a deformed state.
-TEST(Beam3dVerification, InitialStateAndThermalDerivativesOfTheGroup) {
+TEST(VerificationBeam3d, InitialStateAndThermalDerivativesOfTheGroup) {
   BeamSpec spec;
   spec.expansion_per_C = 1e-3;
   spec.height_y_m = 0.02;
@@ -162,9 +162,9 @@ TEST(Beam3dVerification, InitialStateAndThermalDerivativesOfTheGroup) {
   const Eigen::VectorXd by_time = (force(t + h, 1.0) - force(t - h, 1.0)) / (2 * h);
   const double time_error = (rate - by_time).norm() / by_time.norm();
   std::printf("thermal derivative error %.2e, rate error %.2e\n", factor_error, time_error);
-  check({"B3.0.1", "3D beams: ∂f/∂(thermal factor) of the group", "central difference, step 1e-6",
+  check({"13.0.1", "3D beams: ∂f/∂(thermal factor) of the group", "central difference, step 1e-6",
          factor_error, 1e-7, ""});
-  check({"B3.0.2", "3D beams: ∂f/∂t through ΔT(t), ΔT_gy(t), ΔT_gz(t)", "central difference, step 1e-6 s",
+  check({"13.0.2", "3D beams: ∂f/∂t through ΔT(t), ΔT_gy(t), ΔT_gz(t)", "central difference, step 1e-6 s",
          time_error, 1e-7, ""});
 }
 
@@ -189,7 +189,7 @@ Eigen::Vector3d exact_arc(const Eigen::Vector3d& omega, const Eigen::Vector3d& e
   return e1 * std::sin(kappa * s) / kappa + n.cross(e1) * (1.0 - std::cos(kappa * s)) / kappa;
 }
 
-TEST(Beam3dVerification, FreeThermalGradientsBendArcsWithoutStress) {
+TEST(VerificationBeam3d, FreeThermalGradientsBendArcsWithoutStress) {
   const ArcCase cases[] = {{"y gradient", 20.0, 0.0}, {"z gradient", 0.0, 20.0}, {"both", 15.0, -10.0}};
   int row = 1;
   for (const ArcCase& arc : cases) {
@@ -225,7 +225,7 @@ TEST(Beam3dVerification, FreeThermalGradientsBendArcsWithoutStress) {
       }
     }
     std::printf("%s: position errors %.3e %.3e %.3e, largest resultant %.3e\n", arc.name, errors[0], errors[1], errors[2], largest_resultant);
-    const std::string id = "B3.1." + std::to_string(row++);
+    const std::string id = "13.1." + std::to_string(row++);
     // Restrained, the arc would carry EI κ = 7 N·m (28 N·m about y); what is left is Newton's
     // force tolerance (1e-8 of the largest force, EA Γ with EA = 7e6 N): measured 1.4e-8.
     check({id + "a", std::string("free 3D cantilever, ") + arc.name + ": largest resultant",
@@ -276,7 +276,7 @@ double tip_twist(const BeamSpec& spec, int n, double torque_Nm) {
   return turn.angle() * (turn.axis().dot(e.col(0)) > 0 ? 1.0 : -1.0);
 }
 
-TEST(Beam3dVerification, EndTorqueTwistsTheCantileverByTLOverGJ) {
+TEST(VerificationBeam3d, EndTorqueTwistsTheCantileverByTLOverGJ) {
   BeamSpec spec;
   spec.torsion_m4 = 1e-10;
   const double gj = spec.shear_Pa * spec.torsion_m4;  // 2.7 N·m²
@@ -285,9 +285,9 @@ TEST(Beam3dVerification, EndTorqueTwistsTheCantileverByTLOverGJ) {
   std::vector<double> errors;
   for (const int n : {2, 4, 8, 16}) errors.push_back(std::abs(tip_twist(spec, n, torque) - exact) / exact);
   std::printf("twist errors %.3e %.3e %.3e %.3e\n", errors[0], errors[1], errors[2], errors[3]);
-  check({"B3.2.1", "3D cantilever, end torque: tip twist, 16 elements", "φ = TL/(GJ) = 0.5 rad (St-Venant)",
+  check({"13.2.1", "3D cantilever, end torque: tip twist, 16 elements", "φ = TL/(GJ) = 0.5 rad (St-Venant)",
          errors[3], 1e-3, ""});
-  check({"B3.2.2", "3D cantilever, end torque: order of the twist error (8 → 16 elements)", "2",
+  check({"13.2.2", "3D cantilever, end torque: order of the twist error (8 → 16 elements)", "2",
          order(errors[2], errors[3]), 1.9, "", Bound::at_least});
 }
 
@@ -337,7 +337,7 @@ TipState loaded_tip(int dimension, int n) {
   return tip;
 }
 
-TEST(Beam3dVerification, TipLoadedCantileverFollowsTheElasticaLikeThe2dBeam) {
+TEST(VerificationBeam3d, TipLoadedCantileverFollowsTheElasticaLikeThe2dBeam) {
   const TipState exact{0.05643, 0.30172, 0.46135};
   std::vector<double> errors;
   for (const int n : {8, 16, 32}) {
@@ -348,14 +348,14 @@ TEST(Beam3dVerification, TipLoadedCantileverFollowsTheElasticaLikeThe2dBeam) {
     std::printf("%d elements: 3D (%.5f, %.5f, %.5f), 2D (%.5f, %.5f, %.5f)\n", n, tip.shortening, tip.deflection,
                 tip.rotation_rad, plane.shortening, plane.deflection, plane.rotation_rad);
     if (n == 32) {
-      check({"B3.5.3", "3D cantilever, in-plane tip load PL²/EI = 1, 32 elements: |v_3D − v_2D| / L",
+      check({"13.5.3", "3D cantilever, in-plane tip load PL²/EI = 1, 32 elements: |v_3D − v_2D| / L",
              "the 2D beam (same elastica, both O(L0²))", std::abs(tip.deflection - plane.deflection), 1e-3, ""});
     }
   }
   // The table gives 5 digits: errors below 1e-5 are not resolved.
-  check({"B3.5.1", "3D cantilever, in-plane tip load PL²/EI = 1, 32 elements: largest tip error / L",
+  check({"13.5.1", "3D cantilever, in-plane tip load PL²/EI = 1, 32 elements: largest tip error / L",
          "elastica (Mattiasson 1981): u/L = 0.05643, v/L = 0.30172, θ = 0.46135", errors[2], 2e-4, ""});
-  check({"B3.5.2", "3D cantilever, tip load: order of the tip error (8 → 16 elements)", "2",
+  check({"13.5.2", "3D cantilever, tip load: order of the tip error (8 → 16 elements)", "2",
          order(errors[0], errors[1]), 1.8, "", Bound::at_least});
 }
 
@@ -375,7 +375,7 @@ double tip_twist_of_mode(const Assembler& assembler, const Eigen::VectorXd& mode
   return std::abs(0.5 * omega.dot(e1));
 }
 
-TEST(Beam3dVerification, CantileverFrequenciesConvergeToEulerBernoulliAndStVenant) {
+TEST(VerificationBeam3d, CantileverFrequenciesConvergeToEulerBernoulliAndStVenant) {
   const BeamSpec spec;
   const double rho_a = spec.density_kg_m3 * spec.area_m2;
   const double l = spec.length_m;
@@ -419,7 +419,7 @@ TEST(Beam3dVerification, CantileverFrequenciesConvergeToEulerBernoulliAndStVenan
               {"first torsion", errors_torsion}};
   int row = 1;
   for (const auto& r : rows) {
-    const std::string id = "B3.3." + std::to_string(row++);
+    const std::string id = "13.3." + std::to_string(row++);
     check({id + "a", std::string("3D cantilever, ") + r.what + ": frequency, 32 elements",
            "Euler–Bernoulli / St-Venant", r.errors[3], 1e-3, ""});
     check({id + "b", std::string("3D cantilever, ") + r.what + ": order (16 → 32 elements)", "2",
@@ -493,7 +493,7 @@ double tumbling_energy_error(const IntegratorOptions& integrator, double step_s,
   return largest;
 }
 
-TEST(Beam3dVerification, FreeTumblingBeamConservesEnergyToSecondOrder) {
+TEST(VerificationBeam3d, FreeTumblingBeamConservesEnergyToSecondOrder) {
   const struct {
     const char* name;
     IntegratorOptions integrator;
@@ -510,7 +510,7 @@ TEST(Beam3dVerification, FreeTumblingBeamConservesEnergyToSecondOrder) {
       errors.push_back(tumbling_energy_error(scheme.integrator, step, scheme.end_s));
     }
     std::printf("%s: energy errors %.3e %.3e %.3e\n", scheme.name, errors[0], errors[1], errors[2]);
-    const std::string id = "B3.4." + std::to_string(row++);
+    const std::string id = "13.4." + std::to_string(row++);
     check({id + "a", std::string("free tumbling 3D beam, ") + scheme.name + ": largest energy change, finest step",
            "conserved (no damping, no load)", errors[2], 1e-4, ""});
     check({id + "b", std::string("free tumbling 3D beam, ") + scheme.name + ": order of the energy error in h",
