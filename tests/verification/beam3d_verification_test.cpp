@@ -3,6 +3,7 @@
 // the bending (both planes) and torsional frequencies of a cantilever against Euler–Bernoulli
 // and St-Venant with their measured convergence, and the energy of a free tumbling beam under
 // the trapezoidal rule with its order in the step.
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 
 #include <Eigen/Geometry>
@@ -50,11 +51,11 @@ Model straight_beam(const BeamSpec& spec, int n_elements, bool clamp_start) {
   model.materials.push_back({"metal", spec.youngs_Pa, spec.expansion_per_C, spec.density_kg_m3});
   const double l0 = spec.length_m / n_elements;
   for (int i = 0; i <= n_elements; ++i) {
-    model.nodes.push_back({"N" + std::to_string(i), (i * l0) * spec.axis, 0.0});
+    model.nodes.push_back({fmt::format("N{}", i), (i * l0) * spec.axis, 0.0});
   }
   for (int i = 0; i < n_elements; ++i) {
     BeamElement e;
-    e.name = "b" + std::to_string(i);
+    e.name = fmt::format("b{}", i);
     e.node_a = i;
     e.node_b = i + 1;
     e.area_m2 = spec.area_m2;
