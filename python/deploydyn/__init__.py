@@ -596,6 +596,40 @@ class ModelBuilder:
         self._section("elements")[_name(where, "name", name)] = spec
         return self
 
+    def beam(self, name, node_a, node_b, area, inertia_z, material, shear_factor=None,
+             shear_modulus=None, height_y=None, dT_gradient_y=None, mass=None, length=None,
+             dT=None, **fields_3d):
+        """A geometrically exact beam between two nodes (docs/theory.md, "Beams"): area (m²),
+        inertia_z (m⁴, in-plane bending in 2D), shear_factor (default 5/6), shear_modulus (Pa,
+        default E/2.6), height_y (m) and dT_gradient_y (T(+y) − T(−y), °C, a function of t),
+        mass, length, dT as for `bar`. 3D keys (inertia_y, torsion, orientation, height_z,
+        dT_gradient_z) go by name. Its nodes carry a rotation: clamp one with
+        support(node, fix=["x", "y", "rotation"])."""
+        where = "ModelBuilder.beam"
+        spec = {"type": "beam",
+                "nodes": [_name(where, "node_a", node_a), _name(where, "node_b", node_b)],
+                "area": _number(where, "area", area),
+                "inertia_z": _number(where, "inertia_z", inertia_z),
+                "material": _name(where, "material", material)}
+        for key, value in (("shear_factor", shear_factor), ("shear_modulus", shear_modulus),
+                           ("height_y", height_y), ("mass", mass), ("length", length)):
+            if value is not None:
+                spec[key] = _number(where, key, value)
+        for key, value in (("dT_gradient_y", dT_gradient_y), ("dT", dT)):
+            if value is not None:
+                spec[key] = _time_function(where, key, value)
+        for key, value in fields_3d.items():
+            if key in ("dT_gradient_z",):
+                spec[key] = _time_function(where, key, value)
+            elif key == "orientation":
+                spec[key] = _numbers(where, key, value)
+            elif key in ("inertia_y", "torsion", "height_z"):
+                spec[key] = _number(where, key, value)
+            else:
+                raise TypeError(f"{where}: unexpected keyword argument '{key}'")
+        self._section("elements")[_name(where, "name", name)] = spec
+        return self
+
     def element(self, name, type, **fields):
         """An element of any type (`type`, e.g. "bar"), its keys as the model file spells them
         (docs/model-format.md); the loader checks them at `build`."""
@@ -606,7 +640,8 @@ class ModelBuilder:
         return self
 
     def support(self, node, fix=None):
-        """Fix a node's coordinates: all axes, or those in `fix` (e.g. ["y"], or "y")."""
+        """Fix a node's coordinates: all axes, or those in `fix` (e.g. ["y"], or "y"); "rotation"
+        in `fix` clamps a beam's node."""
         where = "ModelBuilder.support"
         spec = {"node": _name(where, "node", node)}
         if fix is not None:
@@ -644,10 +679,15 @@ class ModelBuilder:
             "reading": _text(where, "reading", reading)}
         return self
 
-    def load(self, node, force, factor=None):
-        """A nodal force (N), times factor(t) (default 1)."""
+    def load(self, node, force=None, factor=None, moment=None):
+        """A nodal force (N) and, in 2D on a beam's node, a moment (N·m, counter-clockwise),
+        times factor(t) (default 1)."""
         where = "ModelBuilder.load"
-        spec = {"node": _name(where, "node", node), "force": _numbers(where, "force", force)}
+        spec = {"node": _name(where, "node", node)}
+        if force is not None:
+            spec["force"] = _numbers(where, "force", force)
+        if moment is not None:
+            spec["moment"] = _number(where, "moment", moment)
         if factor is not None:
             spec["factor"] = _time_function(where, "factor", factor)
         self._section("loads", list).append(spec)

@@ -134,3 +134,37 @@ def test_an_element_by_type_is_the_same_bar():
     assert by_type.elements == by_method.elements
     assert by_type.elements["1"]["type"] == "bar"
     assert by_type.to_yaml() == by_method.to_yaml()
+
+
+def test_clamped_beam_under_a_through_section_gradient_carries_EI_alpha_dTg_over_h():
+    inertia, height, gradient = 8.3e-10, 0.01, 40.0
+    model = (deploydyn.ModelBuilder("clamped beam")
+             .node("A", 0, 0).node("B", 0.5, 0).node("C", 1, 0)
+             .material("steel", E=E, alpha=ALPHA, density=7850)
+             .beam("b1", "A", "B", area=AREA, inertia_z=inertia, material="steel",
+                   height_y=height, dT_gradient_y=gradient)
+             .beam("b2", "B", "C", area=AREA, inertia_z=inertia, material="steel",
+                   height_y=height, dT_gradient_y=gradient)
+             .support("A", fix=["x", "y", "rotation"]).support("C", fix=["x", "y", "rotation"])
+             .analysis(type="static", end=1.0, step=1.0)
+             .build())
+    assert model.elements["b1"]["type"] == "beam"
+    assert model.supports[0]["fix"] == ["x", "y", "rotation"]
+    assert "rz.B" in model.history_columns
+    result = model.run(check=True)
+    # Held straight, the beam carries M = −EIκ_t = EIαΔT_g/h and turns nowhere.
+    assert result["moment.b1"][-1] == pytest.approx(E * inertia * ALPHA * gradient / height, rel=1e-9)
+    assert abs(result["rz.B"][-1]) < 1e-12
+
+
+def test_end_moment_on_a_beam_node_is_read_and_a_bar_node_rejects_it():
+    builder = (deploydyn.ModelBuilder("cantilever")
+               .node("A", 0, 0).node("B", 1, 0).node("C", 2, 0)
+               .material("steel", E=E, density=7850)
+               .beam("b", "A", "B", area=AREA, inertia_z=8.3e-10, material="steel")
+               .bar("r", "B", "C", area=AREA, material="steel")
+               .support("A", fix=["x", "y", "rotation"]).support("C")
+               .load("B", moment=1.5))
+    assert builder.build().to_yaml().count("moment: 1.5") == 1
+    with pytest.raises(ValueError, match="has no rotation for a moment to act on"):
+        builder.load("C", moment=2.0).build()

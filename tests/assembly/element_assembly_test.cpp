@@ -22,9 +22,21 @@ constexpr double kStep_s = 1e-6;
 constexpr double kDerivativeTolerance = 1e-6;  // relative, in the max norm of the analytic value
 constexpr double kExactTolerance = 1e-12;      // same sums in another order: round-off only
 
+// One assembly case: the dimension, and in 2D optionally two beams beside the bars (a mixed
+// model: some nodes carry a rotation rz, others not).
+struct AssemblyCase {
+  int dimension = 2;
+  bool beams = false;
+};
+std::ostream& operator<<(std::ostream& out, const AssemblyCase& c) {
+  return out << c.dimension << "D" << (c.beams ? " with beams" : "");
+}
+
 // A tetrahedron of bars (in 2D a braced square) with different ΔT(t), moved off its
-// reference so that every bar is strained and turned.
-Model heated_truss(int dimension) {
+// reference so that every bar is strained and turned; in the mixed case also beams A–D (with a
+// through-section gradient ΔT_gy(t)) and D–E, so that A and D carry rz, B and C do not.
+Model heated_truss(const AssemblyCase& which) {
+  const int dimension = which.dimension;
   testing::ModelBuilder builder(dimension);
   const int a = builder.node("A", {0.0, 0.0, 0.0});
   const int b = builder.node("B", {1.0, 0.1, 0.0});
@@ -43,7 +55,31 @@ Model heated_truss(int dimension) {
   }
   builder.point_mass(d, 0.3);
   builder.analysis().linear_solver = LinearSolverKind::dense;
-  return builder.model();
+  Model model = builder.model();
+  if (which.beams) {
+    const int e = builder.node("E", {1.6, 1.4, 0.0});
+    model = builder.model();
+    int k = 0;
+    for (const auto& [i, j] : {std::pair{a, d}, {d, e}}) {
+      BeamElement beam;
+      beam.name = "beam" + std::to_string(k);
+      beam.node_a = i;
+      beam.node_b = j;
+      beam.material = 0;
+      beam.area_m2 = 1e-4;
+      beam.inertia_z_m4 = 2e-9 * (1 + k);
+      beam.shear_modulus_Pa = 4e8;
+      beam.height_y_m = 0.02;
+      beam.reference_length_m = (model.nodes[j].position_m - model.nodes[i].position_m).norm() * 1.01;
+      beam.mass_kg = 0.4 + 0.1 * k;
+      beam.temperature_change_C = TimeFunction(TimeFunction::SmoothStep{0.0, 10.0, 1.0, -60.0});
+      beam.temperature_gradient_y_C = TimeFunction(TimeFunction::SmoothStep{0.2, -30.0 * k, 0.9, 50.0});
+      beam.gradient_y_given = true;
+      model.beams.push_back(beam);
+      ++k;
+    }
+  }
+  return model;
 }
 
 Eigen::VectorXd deformed(const Assembler& assembler) {
@@ -58,7 +94,7 @@ double relative_error(const Eigen::MatrixXd& computed, const Eigen::MatrixXd& re
   return (computed - reference).cwiseAbs().maxCoeff() / reference.cwiseAbs().maxCoeff();
 }
 
-class ElementAssembly : public ::testing::TestWithParam<int> {};
+class ElementAssembly : public ::testing::TestWithParam<AssemblyCase> {};
 
 TEST_P(ElementAssembly, ForceTangentAndThermalTermsAreDerivatives) {
   const Model model = heated_truss(GetParam());
@@ -136,7 +172,7 @@ TEST_P(ElementAssembly, ResultsByQuantityName) {
   ASSERT_EQ(assembler.element_groups().size(), element_kinds().size());
   const std::vector<double> forces = assembler.element_quantity("axial_force_N", q, 0.4);
   const std::vector<double> lengths = assembler.element_quantity("length_m", q, 0.4);
-  ASSERT_EQ(forces.size(), model.bars.size());
+  ASSERT_EQ(forces.size(), model.bars.size() + model.beams.size());
   EXPECT_EQ(element_names(model, "axial_force_N").front(), model.bars.front().name);
   for (std::size_t b = 0; b < model.bars.size(); ++b) {
     const BarElement& bar = model.bars[b];
@@ -148,7 +184,13 @@ TEST_P(ElementAssembly, ResultsByQuantityName) {
   EXPECT_TRUE(assembler.element_quantity("no such quantity", q, 0.4).empty());
 }
 
-INSTANTIATE_TEST_SUITE_P(Dimensions, ElementAssembly, ::testing::Values(2, 3));
+INSTANTIATE_TEST_SUITE_P(Dimensions, ElementAssembly,
+                         ::testing::Values(AssemblyCase{2, false}, AssemblyCase{3, false},
+                                           AssemblyCase{2, true}),
+                         [](const ::testing::TestParamInfo<AssemblyCase>& info) {
+                           return std::to_string(info.param.dimension) + "D" +
+                                  (info.param.beams ? "WithBeams" : "");
+                         });
 
 }  // namespace
 }  // namespace deploydyn

@@ -160,10 +160,11 @@ TEST(Beam2d, MassOfRigidMotionIsTheBeamMass) {
 // against finite differences of the assembled internal force.
 class Beam2dGroup : public ::testing::Test {
  protected:
-  Beam2dGroup() {
-    model_.dimension = 2;
-    model_.nodes = {{"A", Eigen::Vector3d(0.1, 0.2, 0.0), 0.0}, {"B", Eigen::Vector3d(0.9, 0.7, 0.0), 0.0}};
-    model_.materials = {{"steel", 2.1e11, 1.2e-5, 7850.0}};
+  static Model one_beam_model() {
+    Model model;
+    model.dimension = 2;
+    model.nodes = {{"A", Eigen::Vector3d(0.1, 0.2, 0.0), 0.0}, {"B", Eigen::Vector3d(0.9, 0.7, 0.0), 0.0}};
+    model.materials = {{"steel", 2.1e11, 1.2e-5, 7850.0}};
     BeamElement beam;
     beam.name = "b";
     beam.node_a = 0;
@@ -172,12 +173,13 @@ class Beam2dGroup : public ::testing::Test {
     beam.inertia_z_m4 = 8.3e-10;
     beam.shear_modulus_Pa = 8.1e10;
     beam.height_y_m = 0.01;
-    beam.reference_length_m = (model_.nodes[1].position_m - model_.nodes[0].position_m).norm();
+    beam.reference_length_m = (model.nodes[1].position_m - model.nodes[0].position_m).norm();
     beam.mass_kg = 7850.0 * beam.area_m2 * beam.reference_length_m;
     beam.temperature_change_C = TimeFunction(TimeFunction::SmoothStep{0.0, 0.0, 2.0, 150.0});
     beam.temperature_gradient_y_C = TimeFunction(TimeFunction::SmoothStep{0.5, -20.0, 1.5, 60.0});
     beam.gradient_y_given = true;
-    model_.beams.push_back(beam);
+    model.beams.push_back(beam);
+    return model;
   }
 
   Eigen::VectorXd force(const Eigen::VectorXd& q, double t, double factor) const {
@@ -186,7 +188,7 @@ class Beam2dGroup : public ::testing::Test {
     return f;
   }
 
-  Model model_;
+  Model model_ = one_beam_model();
   DofMap dofs_{model_};
   std::unique_ptr<ElementGroup> group_ = beam_kind().make_group(model_, dofs_);
 };

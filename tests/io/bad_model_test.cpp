@@ -87,6 +87,11 @@ const BadModelCase kBadModels[] = {
      "the model has 6 coordinates and 2 constraint equations: at most 4 modes, got 5"},
     {"modal_with_step.yaml", 8, "analysis.step", "unknown key 'step'"},
     {"modal_negative_time.yaml", 7, "analysis.at.1", "must not be negative (s), got -1"},
+    {"beam_3d_key_in_2d.yaml", 4, "elements.b.inertia_y", "only allowed for beams in 3D models"},
+    {"beam_gradient_without_height.yaml", 4, "elements.b.height_y", "needs 'height_y' (m)"},
+    {"rotation_fixed_on_bar_node.yaml", 6, "supports.0.fix.2", "node 'A' has no rotation to fix"},
+    {"moment_on_bar_node.yaml", 6, "loads.0.moment", "node 'B' has no rotation for a moment to act on"},
+    {"bar_angle_on_beam.yaml", 7, "drivers.motor.element", "element 'b' is a beam; a bar_angle driver turns a bar"},
 };
 
 class BadModel : public ::testing::TestWithParam<BadModelCase> {};

@@ -172,9 +172,9 @@ TEST(VerificationBeam2dThermal, FreeBeamTakesTheArcAwayFromTheHotFace) {
   // Newton stops at ‖Δq‖ ≤ 1e-12 m or ‖r‖ ≤ 1e-8 of the largest force: the polygon holds to
   // round-off of the 32 chord sums, the resultants to 1e-8 of EI|κ|.
   check({"10.1", "cantilever under ΔT_gy = +500 °C (κ_t = −0.6 1/m), 4–32 elements: tip against the stress-free mid-point polygon, |Δx|/L",
-         "polygon of chords L0 at angles κ_t (i + ½) L0 (exact discrete solution)", polygon_error, 1e-10});
+         "polygon of chords L0 at angles κ_t (i + ½) L0 (exact discrete solution)", polygon_error, 1e-10, ""});
   check({"10.2", "same: largest |M_z| / (EI|κ_t|) and |N| / (EI|κ_t|/L): stress-free",
-         "0 (a determinate beam under a free thermal curvature)", std::max(largest_moment, largest_axial), 1e-7});
+         "0 (a determinate beam under a free thermal curvature)", std::max(largest_moment, largest_axial), 1e-7, ""});
   check({"10.3", fmt::format("same: order of the tip's distance to the arc (errors {} of L; orders {})", listed(arc_errors), o.each),
          "arc of curvature κ_t = −αΔT_gy/h: tip (sin κL/κ, (1 − cos κL)/κ)", o.smallest, kRequiredOrder, "", Bound::at_least});
   // Hot +y face: the beam curls towards −y, away from it.
@@ -215,10 +215,10 @@ TEST(VerificationBeam2dThermal, ClampedBeamCarriesTheThermalMomentAndAxialForce)
   }
   // The straight state is exact: only round-off of the assembly remains.
   check({"10.4", "clamped–clamped beam, 8 elements, ΔT_gy = 50 °C: largest |M_z − EIαΔT_gy/h| / (EIαΔT_gy/h)",
-         "M = −EIκ_t = EIαΔT_gy/h = 87.5 N·m (closed form)", moment_error, 1e-9});
+         "M = −EIκ_t = EIαΔT_gy/h = 87.5 N·m (closed form)", moment_error, 1e-9, ""});
   check({"10.5", "same: largest nodal rotation |θ| (rad)", "0: the clamped straight beam does not turn", rotation, 1e-12, "rad"});
   check({"10.6", "clamped–clamped beam, 8 elements, uniform ΔT = 100 °C: largest |N + EAαΔT| / (EAαΔT)",
-         "N = −EAαΔT = −25.2 kN (closed form)", axial_error, 1e-9});
+         "N = −EAαΔT = −25.2 kN (closed form)", axial_error, 1e-9, ""});
 }
 
 // 10.7–10.9: Reissner's beam equations for a cantilever with a tip force F, clamped at s = 0
@@ -286,7 +286,7 @@ TEST(VerificationBeam2dElastica, ShootingReferenceReproducesMattiassonsTable) {
   // The table has 5 decimals: half a unit of the last one.
   check({"10.7", "inextensible elastica by shooting (RK4, 20 000 steps), k = PL²/EI = 1, 2, 5: largest |tip − table| (v/L, u/L, θ)",
          "Mattiasson (1981), Table 1: v/L = 0.30172, 0.49346, 0.71379; u/L = 0.05643, 0.16064, 0.38763; θ = 0.46135, 0.78175, 1.21537",
-         worst, 5e-6});
+         worst, 5e-6, ""});
 }
 
 TEST(VerificationBeam2dElastica, CantileverTipLoadConvergesAtSecondOrder) {
@@ -338,8 +338,146 @@ TEST(VerificationBeam2dElastica, EndMomentCurlsTheCantileverIntoACircle) {
   }
   // Newton's last correction ≤ 1e-12 m: the closure holds to that and round-off.
   check({"10.10", "cantilever, 8 elements, end moment M = 2πEI/L: distance of the tip from the root / L",
-         "0: a full circle (κ = M/EI = 2π/L)", distance, 1e-10});
+         "0: a full circle (κ = M/EI = 2π/L)", distance, 1e-10, ""});
   check({"10.11", "same: |θ_tip − 2π| (rad)", "2π", rotation_error, 1e-10, "rad"});
+}
+
+// 10.12–10.13: natural frequencies of a slender beam (r/L = 1e-4: shear and rotary inertia
+// shift them by ~1e-7, far below the discretization's error) against Euler–Bernoulli,
+// ω_k = (β_k L)² √(EI / (ρA L⁴)), with 8–64 elements.
+Section slender_section() {
+  Section s;
+  s.inertia_m4 = 1e-12;  // r² = I/A = 1e-8 m²
+  return s;
+}
+
+struct ModesCase {
+  const char* id;
+  const char* name;
+  std::array<double, 3> beta_l;  // β_k L of the first three bending modes
+  bool clamped;                  // else simply supported
+};
+
+TEST(VerificationBeam2dModes, FrequenciesConvergeToEulerBernoulliAtSecondOrder) {
+  const Section s = slender_section();
+  const double scale = std::sqrt(s.bending_stiffness() / (s.density_kg_m3 * s.area_m2)) / (kLength_m * kLength_m);
+  const ModesCase cases[] = {
+      {"10.12", "cantilever", {1.8751040687119611, 4.6940911329741745, 7.8547574382376126}, true},
+      {"10.13", "simply supported beam", {kPi, 2.0 * kPi, 3.0 * kPi}, false},
+  };
+  for (const ModesCase& c : cases) {
+    std::vector<std::vector<double>> errors(3);  // per mode, per mesh
+    for (const int n : {8, 16, 32, 64}) {
+      Model model = straight_beam(n, s);
+      if (c.clamped) {
+        clamp(model, 0);
+      } else {
+        model.supports.push_back({0, {true, true, false}, false});
+        model.supports.push_back({n, {false, true, false}, false});
+      }
+      const Assembler assembler(model);
+      const auto system = make_linear_system(assembler);
+      ModalOptions options;
+      options.n_modes = 3;
+      const EquilibriumModes modes = modes_at_time(assembler, 0.0, *system, options);
+      for (int k = 0; k < 3; ++k) {
+        const double exact = c.beta_l[k] * c.beta_l[k] * scale;
+        errors[k].push_back(modes.modes.ok ? std::abs(std::sqrt(modes.modes.omega2_rad2_s2[k]) - exact) / exact : kNoResult);
+      }
+    }
+    double smallest = std::numeric_limits<double>::infinity();
+    std::string each;
+    for (int k = 0; k < 3; ++k) {
+      const Orders o = orders(errors[k]);
+      smallest = std::min(smallest, o.smallest);
+      each += fmt::format("{}mode {}: errors {}, orders {}", k ? "; " : "", k + 1, listed(errors[k]), o.each);
+    }
+    check({c.id, fmt::format("{}, 8–64 elements, consistent mass: smallest order of the first three frequencies' relative errors ({})", c.name, each),
+           fmt::format("Euler–Bernoulli ω_k = (β_k L)² √(EI/ρAL⁴), β_k L = {:.6f}, {:.6f}, {:.6f}", c.beta_l[0], c.beta_l[1], c.beta_l[2]),
+           smallest, kRequiredOrder, "", Bound::at_least});
+  }
+}
+
+// 10.14: a clamped–clamped beam heated uniformly carries N = −EAαΔT and stays straight; the
+// lowest eigenvalue of the constrained stiffness crosses zero where N reaches the Euler load
+// 4π²EI/L²: ΔT_cr = 4π²I/(αAL²). The continuation in the thermal factor locates the
+// bifurcation; its ΔT converges to ΔT_cr as the mesh is refined.
+TEST(VerificationBeam2dBuckling, HeatedClampedBeamBucklesAtTheEulerTemperature) {
+  const Section s = slender_section();
+  const double critical_C = 4.0 * kPi * kPi * s.inertia_m4 / (s.expansion_per_C * s.area_m2 * kLength_m * kLength_m);
+  const double reference_C = 2.0 * critical_C;  // μ = 1 is twice the critical heating
+  std::vector<double> errors;
+  bool crossed = true;
+  for (const int n : {8, 16, 32, 64}) {
+    Model model = straight_beam(n, s, TimeFunction::constant(reference_C));
+    clamp(model, 0);
+    clamp(model, n);
+    const Assembler assembler(model);
+    const auto system = make_linear_system(assembler);
+    ContinuationOptions options;
+    options.parameter = PathParameter::thermal;
+    options.start = 0.0;
+    options.end = 1.0;
+    options.n_eigenvalues = 2;
+    const ContinuationResult path = trace_path(assembler, options, *system, assembler.initial_coordinates(),
+                                               Eigen::VectorXd::Zero(assembler.n_equations()));
+    const auto found = std::find_if(path.events.begin(), path.events.end(),
+                                    [](const PathEvent& e) { return e.kind == PathEventKind::bifurcation; });
+    if (found == path.events.end()) {
+      errors.push_back(kNoResult);
+      continue;
+    }
+    errors.push_back(std::abs(found->parameter * reference_C - critical_C) / critical_C);
+    // The lowest eigenvalue is positive before and negative after.
+    crossed = crossed && path.points.front().lowest_eigenvalues[0] > 0.0 && path.points.back().lowest_eigenvalues[0] < 0.0;
+  }
+  EXPECT_TRUE(crossed) << "the lowest stability eigenvalue must cross zero";
+  const Orders o = orders(errors);
+  check({"10.14", fmt::format("clamped–clamped beam heated uniformly, 8–64 elements: order of the error of the located bifurcation's ΔT (errors {}; orders {})",
+                              listed(errors), o.each),
+         fmt::format("ΔT_cr = 4π²I/(αAL²) = {:.6g} °C (Euler load 4π²EI/L² of the clamped beam)", critical_C),
+         o.smallest, kRequiredOrder, "", Bound::at_least});
+}
+
+// 10.15: a flexible pendulum (4 beam elements, pinned at one end, released horizontal under
+// gravity; its first bending mode ≈ 3 Hz) under the default integrator, Newmark(¼, ½): the tip's
+// largest deviation from a run at 1/32 of the coarsest step, over 0.5 s, at h = 2, 1, ½, ¼ ms.
+TEST(VerificationBeam2dPendulum, FlexiblePendulumConvergesAtSecondOrderInTheStep) {
+  Section s;
+  s.inertia_m4 = 2e-12;
+  constexpr int kElements = 4;
+  constexpr double kCoarsest_s = 2e-3;
+  constexpr int kHalvings = 3;
+  const auto tip_history = [&](double step_s) {
+    Model model = straight_beam(kElements, s);
+    model.supports.push_back({0, {true, true, false}, false});
+    model.gravity_m_s2 = Eigen::Vector3d(0.0, -9.81, 0.0);
+    model.analysis.type = AnalysisType::dynamic;
+    model.analysis.end_time_s = 0.5;
+    model.analysis.step_s = step_s;
+    model.analysis.output_interval_s = kCoarsest_s;
+    const testing::RunResult run = testing::run(model);
+    std::vector<Eigen::Vector2d> tips;
+    const DofMap dofs(model);
+    for (const StepRecord& r : run.records) {
+      tips.emplace_back(r.q[dofs.index(kElements, 0)], r.q[dofs.index(kElements, 1)]);
+    }
+    return tips;
+  };
+  const std::vector<Eigen::Vector2d> reference = tip_history(kCoarsest_s / 32.0);
+  std::vector<double> errors;
+  for (int k = 0; k <= kHalvings; ++k) {
+    const std::vector<Eigen::Vector2d> tips = tip_history(kCoarsest_s / static_cast<double>(1 << k));
+    double worst = tips.size() == reference.size() ? 0.0 : kNoResult;
+    for (std::size_t i = 0; i < tips.size() && i < reference.size(); ++i) {
+      worst = std::max(worst, (tips[i] - reference[i]).norm());
+    }
+    errors.push_back(worst);
+  }
+  const Orders o = orders(errors);
+  check({"10.15", fmt::format("flexible pendulum (4 beams, pinned, released horizontal), Newmark(¼,½), h = 2, 1, ½, ¼ ms, 0.5 s: order of the tip's largest error (errors {} m; orders {})",
+                              listed(errors), o.each),
+         "the same model at h = 1/16 ms", o.smallest, kRequiredOrder, "", Bound::at_least});
 }
 
 }  // namespace

@@ -136,6 +136,7 @@ void VtkWriter::write_frame(const StepRecord& r, const std::filesystem::path& fi
   const auto kinds = element_kinds();
   std::vector<std::string_view> arrays;
   for (const ElementKind* kind : kinds) {
+    if (kind->n_elements(model_) == 0) continue;  // a bar-only model gets no beam arrays
     for (const ResultQuantity& quantity : kind->quantities(model_.dimension)) {
       if (quantity.recorded && std::find(arrays.begin(), arrays.end(), quantity.name) == arrays.end()) {
         arrays.push_back(quantity.name);
