@@ -69,7 +69,7 @@ class ElementGroup {
 
   virtual int n_elements() const = 0;
   // Equations that taking every element as rigid would add (Grübler count): 1 per bar, 3 per
-  // 2D beam.
+  // 2D beam, 6 per 3D beam (its nodes' frame orthonormality is counted among the constraints).
   virtual int n_rigid_body_conditions() const = 0;
 
   // Each adds its elements' share into the global vector (which the caller has sized).
