@@ -20,7 +20,7 @@ namespace {
 // Step 1e-6 (m and rad, for L0 ~ 1): truncation O(1e-12), round-off O(1e-10) relative.
 constexpr double kStep = 1e-6;
 constexpr double kDerivativeTolerance = 1e-6;  // relative, in the norm of the analytic value
-constexpr double kMassTolerance = 1e-14;        // exact rational multiples: round-off only
+constexpr double kMassTolerance = 1e-14;       // exact rational multiples: round-off only
 // Rigidly moved and stress-free: strains are round-off of cos/sin of angles ~10: ~1e-15.
 constexpr double kStressFreeTolerance = 1e-12;
 constexpr int kConfigurations = 8;
@@ -42,7 +42,8 @@ beam2d::Vector random_state(std::mt19937& rng) {
   const double length = kSection.reference_length_m * (1.0 + 0.2 * unit(rng));
   const double direction = kSection.initial_angle_rad + turn + 0.3 * unit(rng);
   const Eigen::Vector2d x_a(unit(rng), unit(rng));
-  const Eigen::Vector2d x_b = x_a + length * Eigen::Vector2d(std::cos(direction), std::sin(direction));
+  const Eigen::Vector2d x_b =
+      x_a + length * Eigen::Vector2d(std::cos(direction), std::sin(direction));
   beam2d::Vector q;
   q << x_a, turn + 0.8 * unit(rng), x_b, turn + 0.8 * unit(rng);
   return q;
@@ -58,10 +59,13 @@ TEST(Beam2d, InternalForceIsTheGradientOfStrainEnergy) {
   std::mt19937 rng(20261123);
   for (int c = 0; c < kConfigurations; ++c) {
     const beam2d::Vector q = random_state(rng);
-    const auto energy = [](const Eigen::VectorXd& y) { return beam2d::strain_energy(state_at(y), kSection); };
+    const auto energy = [](const Eigen::VectorXd& y) {
+      return beam2d::strain_energy(state_at(y), kSection);
+    };
     const Eigen::VectorXd fd = testing::central_gradient(energy, q, kStep);
     const Eigen::VectorXd f = beam2d::internal_force(state_at(q), kSection);
-    EXPECT_LT(relative_error(f, fd), kDerivativeTolerance) << "state " << c << ": q = " << q.transpose();
+    EXPECT_LT(relative_error(f, fd), kDerivativeTolerance)
+        << "state " << c << ": q = " << q.transpose();
   }
 }
 
@@ -74,7 +78,8 @@ TEST(Beam2d, TangentIsTheJacobianOfInternalForce) {
     };
     const Eigen::MatrixXd fd = testing::central_jacobian(force, q, kStep);
     const beam2d::Matrix k = beam2d::tangent(state_at(q), kSection);
-    EXPECT_LT(relative_error(k, fd), kDerivativeTolerance) << "state " << c << ": q = " << q.transpose();
+    EXPECT_LT(relative_error(k, fd), kDerivativeTolerance)
+        << "state " << c << ": q = " << q.transpose();
     EXPECT_LT((k - k.transpose()).norm(), 1e-12 * k.norm()) << "state " << c;  // a Hessian
   }
 }
@@ -84,8 +89,8 @@ TEST(Beam2d, TangentIsTheJacobianOfInternalForce) {
 TEST(Beam2d, RigidMotionGivesNoStrainAndNoForce) {
   const Eigen::Vector2d x_a(0.3, -0.2);
   const Eigen::Vector2d x_b =
-      x_a + kSection.reference_length_m *
-                Eigen::Vector2d(std::cos(kSection.initial_angle_rad), std::sin(kSection.initial_angle_rad));
+      x_a + kSection.reference_length_m * Eigen::Vector2d(std::cos(kSection.initial_angle_rad),
+                                                          std::sin(kSection.initial_angle_rad));
   const beam2d::ThermalStrain none{};
   for (const double phi : {0.0, 0.7, -2.9, std::numbers::pi, 4.0, -7.5, 13.0}) {
     const Eigen::Rotation2Dd turn(phi);
@@ -96,7 +101,8 @@ TEST(Beam2d, RigidMotionGivesNoStrainAndNoForce) {
     EXPECT_NEAR(s.strain, 0.0, kStressFreeTolerance) << "φ = " << phi;
     EXPECT_NEAR(s.shear_strain, 0.0, kStressFreeTolerance) << "φ = " << phi;
     EXPECT_NEAR(s.curvature_1_m, 0.0, kStressFreeTolerance) << "φ = " << phi;
-    EXPECT_LT(beam2d::internal_force(s, kSection).norm(), kStressFreeTolerance * kSection.axial_stiffness_N)
+    EXPECT_LT(beam2d::internal_force(s, kSection).norm(),
+              kStressFreeTolerance * kSection.axial_stiffness_N)
         << "φ = " << phi;
     EXPECT_NEAR(beam2d::strain_energy(s, kSection), 0.0, kStressFreeTolerance) << "φ = " << phi;
   }
@@ -137,7 +143,8 @@ TEST(Beam2d, ConsistentMassGivesTheExactKineticEnergy) {
       const Eigen::Vector3d at = (1.0 - s) * v.head<3>() + s * v.tail<3>();
       exact += 0.5 * 0.5 * (mass * at.head<2>().squaredNorm() + rotary * at[2] * at[2]);
     }
-    EXPECT_NEAR(0.5 * v.dot(m * v), exact, kMassTolerance * (mass + rotary)) << "velocities " << v.transpose();
+    EXPECT_NEAR(0.5 * v.dot(m * v), exact, kMassTolerance * (mass + rotary))
+        << "velocities " << v.transpose();
   }
 }
 
@@ -163,7 +170,8 @@ class Beam2dGroup : public ::testing::Test {
   static Model one_beam_model() {
     Model model;
     model.dimension = 2;
-    model.nodes = {{"A", Eigen::Vector3d(0.1, 0.2, 0.0), 0.0}, {"B", Eigen::Vector3d(0.9, 0.7, 0.0), 0.0}};
+    model.nodes = {{"A", Eigen::Vector3d(0.1, 0.2, 0.0), 0.0},
+                   {"B", Eigen::Vector3d(0.9, 0.7, 0.0), 0.0}};
     model.materials = {{"steel", 2.1e11, 1.2e-5, 7850.0}};
     BeamElement beam;
     beam.name = "b";

@@ -1,6 +1,6 @@
 #pragma once
 // Two-node geometrically exact plane beam (Reissner 1972; Simo & Vu-Quoc 1986; Géradin &
-// Cardona 2000, ch. 7) in absolute coordinates: each node has its position x, y and the
+// Cardona 2000) in absolute coordinates: each node has its position x, y and the
 // rotation θ (`rz`) of its cross-section from its initial orientation. One-point (mid-point)
 // quadrature, free of shear locking (docs/theory.md, "Beams", Eqs. B1–B8):
 //
@@ -29,30 +29,30 @@ using Matrix = Eigen::Matrix<double, kDofs, kDofs>;
 
 // The section and reference constants one evaluation needs.
 struct Section {
-  double axial_stiffness_N = 0.0;    // EA
-  double shear_stiffness_N = 0.0;    // k_s G A
+  double axial_stiffness_N = 0.0;      // EA
+  double shear_stiffness_N = 0.0;      // k_s G A
   double bending_stiffness_Nm2 = 0.0;  // E I_z
-  double reference_length_m = 0.0;   // L0
-  double initial_angle_rad = 0.0;    // β0: initial direction of x_b − x_a
+  double reference_length_m = 0.0;     // L0
+  double initial_angle_rad = 0.0;      // β0: initial direction of x_b − x_a
 };
 
 // Thermal strains the configuration is measured against (B5), already scaled.
 struct ThermalStrain {
-  double axial = 0.0;           // ε_t
-  double curvature_1_m = 0.0;   // κ_t
+  double axial = 0.0;          // ε_t
+  double curvature_1_m = 0.0;  // κ_t
 };
 
 // Strains, resultants and their first derivatives at one configuration.
 struct State {
-  double strain = 0.0;          // ε, total axial
-  double shear_strain = 0.0;    // γ
-  double curvature_1_m = 0.0;   // κ
-  double mechanical_strain = 0.0;  // ε − ε_t
+  double strain = 0.0;                    // ε, total axial
+  double shear_strain = 0.0;              // γ
+  double curvature_1_m = 0.0;             // κ
+  double mechanical_strain = 0.0;         // ε − ε_t
   double mechanical_curvature_1_m = 0.0;  // κ − κ_t
-  double axial_force_N = 0.0;   // N
-  double shear_force_N = 0.0;   // V
-  double bending_moment_Nm = 0.0;  // M
-  Eigen::Vector2d t, n;         // section frame at the mid-point (B2)
+  double axial_force_N = 0.0;             // N
+  double shear_force_N = 0.0;             // V
+  double bending_moment_Nm = 0.0;         // M
+  Eigen::Vector2d t, n;                   // section frame at the mid-point (B2)
   Vector d_strain, d_shear, d_curvature;  // ε_q, γ_q, κ_q
 };
 
