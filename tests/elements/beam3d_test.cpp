@@ -20,7 +20,7 @@ namespace {
 // round-off O(1e-10) relative to the analytic value.
 constexpr double kStep = 1e-6;
 constexpr double kDerivativeTolerance = 1e-6;  // relative, in the norm of the analytic value
-constexpr double kRoundOff = 1e-12;             // relative: rigid motion, mass, symmetry
+constexpr double kRoundOff = 1e-12;            // relative: rigid motion, mass, symmetry
 constexpr int kConfigurations = 6;
 
 beam3d::Section random_section(std::mt19937& rng, const Eigen::Vector3d& chord) {
@@ -126,7 +126,8 @@ TEST(Beam3d, ThermalForceDerivativeMatchesFiniteDifferences) {
   for (int k = 0; k < kConfigurations; ++k) {
     const Configuration c = random_configuration(rng);
     const auto force_at = [&](double factor) {
-      return Eigen::VectorXd(beam3d::internal_force(state_at(c, c.q, factor * kThermal), c.section));
+      return Eigen::VectorXd(
+          beam3d::internal_force(state_at(c, c.q, factor * kThermal), c.section));
     };
     const Eigen::VectorXd fd = (force_at(1.0 + kStep) - force_at(1.0 - kStep)) / (2.0 * kStep);
     const Eigen::VectorXd analytic =
@@ -146,7 +147,8 @@ TEST(Beam3d, RigidMotionGivesNoStrain) {
     beam3d::Section section = random_section(rng, chord);
     section.reference_length_m = chord.norm();
     const Eigen::Matrix3d rotation = random_rotation(rng, M_PI);
-    const Eigen::Vector3d shift(unit(rng), unit(rng), unit(rng)), x_a(unit(rng), unit(rng), unit(rng));
+    const Eigen::Vector3d shift(unit(rng), unit(rng), unit(rng)),
+        x_a(unit(rng), unit(rng), unit(rng));
     Eigen::VectorXd q(beam3d::kDofs);
     q.segment<3>(beam3d::kPositionA) = rotation * x_a + shift;
     q.segment<3>(beam3d::kPositionB) = rotation * (x_a + chord) + shift;
@@ -194,7 +196,8 @@ TEST(Beam3d, ConsistentMassGivesTheKineticEnergy) {
     beam3d::Section section = random_section(rng, chord);
     const double l0 = section.reference_length_m;
     const Eigen::Matrix3d& e = section.frame;
-    const Eigen::Matrix3d j = beam3d::rotary_inertia_per_length(mass, area, inertia_y, inertia_z, l0, e);
+    const Eigen::Matrix3d j =
+        beam3d::rotary_inertia_per_length(mass, area, inertia_y, inertia_z, l0, e);
     const beam3d::ElementMatrix m = beam3d::mass_matrix(mass, j, l0, MassMatrixKind::consistent);
     Eigen::VectorXd v(beam3d::kDofs);
     for (int i = 0; i < beam3d::kDofs; ++i) v[i] = unit(rng);
@@ -266,7 +269,8 @@ TEST(FrameOrthonormality, DerivativesMatchFiniteDifferences) {
     Eigen::VectorXd local(9);
     for (int i = 0; i < 9; ++i) local[i] = q[dofs[i]];
     const Eigen::MatrixXd b = constraint_jacobian(constraint, q);
-    const double jacobian_error = relative_error(b, testing::central_jacobian(local_phi, local, kStep));
+    const double jacobian_error =
+        relative_error(b, testing::central_jacobian(local_phi, local, kStep));
     EXPECT_LT(jacobian_error, kDerivativeTolerance);
     RecordProperty("jacobian_error_" + std::to_string(k), scientific(jacobian_error));
 
@@ -279,7 +283,8 @@ TEST(FrameOrthonormality, DerivativesMatchFiniteDifferences) {
     };
     Eigen::MatrixXd hessian = Eigen::MatrixXd::Zero(9, 9);
     constraint.add_hessian_term(q, 0.0, lambda, hessian);
-    const double hessian_error = relative_error(hessian, testing::central_jacobian(force, local, kStep));
+    const double hessian_error =
+        relative_error(hessian, testing::central_jacobian(force, local, kStep));
     EXPECT_LT(hessian_error, kDerivativeTolerance);
     RecordProperty("hessian_error_" + std::to_string(k), scientific(hessian_error));
 
@@ -287,7 +292,9 @@ TEST(FrameOrthonormality, DerivativesMatchFiniteDifferences) {
     Eigen::VectorXd v(13), a(13);
     for (int i = 0; i < 13; ++i) v[i] = unit(rng), a[i] = unit(rng);
     const double h = 1e-4;
-    const auto along = [&](double t) { return constraint_values(constraint, q + t * v + 0.5 * t * t * a); };
+    const auto along = [&](double t) {
+      return constraint_values(constraint, q + t * v + 0.5 * t * t * a);
+    };
     const Eigen::VectorXd second = (along(h) - 2.0 * along(0.0) + along(-h)) / (h * h);
     Eigen::VectorXd phi_t(6), bias(6);
     constraint.time_derivatives(q, v, 0.0, phi_t, bias);

@@ -117,9 +117,13 @@ int beam_group() {
   return -1;
 }
 
-const ElementKind& beam_kind_of() { return *element_kinds()[static_cast<std::size_t>(beam_group())]; }
+const ElementKind& beam_kind_of() {
+  return *element_kinds()[static_cast<std::size_t>(beam_group())];
+}
 
-double order(double coarse_error, double fine_error) { return std::log2(coarse_error / fine_error); }
+double order(double coarse_error, double fine_error) {
+  return std::log2(coarse_error / fine_error);
+}
 
 // --- The model's initial state and thermal derivatives ------------------------------------------
 // Frames start at R = I (every constraint holds at q0, the unstrained beam has no force), and the
@@ -146,7 +150,8 @@ TEST(VerificationBeam3d, InitialStateAndThermalDerivativesOfTheGroup) {
   for (int node = 0; node < model.n_nodes(); ++node) {
     EXPECT_EQ((rotation(assembler, q0, node) - Eigen::Matrix3d::Identity()).norm(), 0.0) << node;
   }
-  EXPECT_EQ(assembler.describe_equation(assembler.n_equations() - 1), "beam node N3, frame orthonormality (3,3)");
+  EXPECT_EQ(assembler.describe_equation(assembler.n_equations() - 1),
+            "beam node N3, frame orthonormality (3,3)");
   EXPECT_EQ(assembler.describe_equation(5), "support N0, rotation z");
 
   Eigen::VectorXd q = q0 + 0.05 * Eigen::VectorXd::Random(q0.size());
@@ -161,14 +166,14 @@ TEST(VerificationBeam3d, InitialStateAndThermalDerivativesOfTheGroup) {
   const Eigen::VectorXd by_factor = (force(t, 0.7 + h) - force(t, 0.7 - h)) / (2 * h);
   const double factor_error = (analytic - by_factor).norm() / by_factor.norm();
   Eigen::VectorXd rate, constraint_rate;
-  assembler.static_residual_time_derivative(q, t, Eigen::VectorXd::Zero(assembler.n_equations()), rate,
-                                            constraint_rate);
+  assembler.static_residual_time_derivative(q, t, Eigen::VectorXd::Zero(assembler.n_equations()),
+                                            rate, constraint_rate);
   const Eigen::VectorXd by_time = (force(t + h, 1.0) - force(t - h, 1.0)) / (2 * h);
   const double time_error = (rate - by_time).norm() / by_time.norm();
   check({"13.0.1", "3D beams: ∂f/∂(thermal factor) of the group", "central difference, step 1e-6",
          factor_error, 1e-7, ""});
-  check({"13.0.2", "3D beams: ∂f/∂t through ΔT(t), ΔT_gy(t), ΔT_gz(t)", "central difference, step 1e-6 s",
-         time_error, 1e-7, ""});
+  check({"13.0.2", "3D beams: ∂f/∂t through ΔT(t), ΔT_gy(t), ΔT_gz(t)",
+         "central difference, step 1e-6 s", time_error, 1e-7, ""});
 }
 
 // --- Free thermal bending ------------------------------------------------------------------
@@ -193,7 +198,8 @@ Eigen::Vector3d exact_arc(const Eigen::Vector3d& omega, const Eigen::Vector3d& e
 }
 
 TEST(VerificationBeam3d, FreeThermalGradientsBendArcsWithoutStress) {
-  const ArcCase cases[] = {{"y gradient", 20.0, 0.0}, {"z gradient", 0.0, 20.0}, {"both", 15.0, -10.0}};
+  const ArcCase cases[] = {
+      {"y gradient", 20.0, 0.0}, {"z gradient", 0.0, 20.0}, {"both", 15.0, -10.0}};
   int row = 1;
   for (const ArcCase& arc : cases) {
     BeamSpec spec;
@@ -218,13 +224,15 @@ TEST(VerificationBeam3d, FreeThermalGradientsBendArcsWithoutStress) {
       double error = 0.0;
       for (int node = 0; node <= n; ++node) {
         const double s = node * spec.length_m / n;
-        error = std::max(error, (position(assembler, state.q, node) - exact_arc(omega, e.col(0), s)).norm());
+        error = std::max(
+            error, (position(assembler, state.q, node) - exact_arc(omega, e.col(0), s)).norm());
       }
       errors.push_back(error / spec.length_m);
       std::vector<double> out(8);
       for (int element = 0; element < n; ++element) {
         assembler.element_results(beam_group(), element, state.q, 0.0, 1.0, out);
-        for (int k = 2; k < 8; ++k) largest_resultant = std::max(largest_resultant, std::abs(out[k]));
+        for (int k = 2; k < 8; ++k)
+          largest_resultant = std::max(largest_resultant, std::abs(out[k]));
       }
     }
     const std::string id = "13.1." + std::to_string(row++);
@@ -233,9 +241,11 @@ TEST(VerificationBeam3d, FreeThermalGradientsBendArcsWithoutStress) {
     check({id + "a", std::string("free 3D cantilever, ") + arc.name + ": largest resultant",
            "0 (a statically determinate beam is not stressed by its free thermal curvature)",
            largest_resultant, 1e-6, "N or N·m"});
-    check({id + "b", std::string("free 3D cantilever, ") + arc.name + ": node positions, 16 elements",
+    check({id + "b",
+           std::string("free 3D cantilever, ") + arc.name + ": node positions, 16 elements",
            "arc x(s) = ∫exp(σω̂)e1 dσ, ω = αΔT_gz/h_z e2 − αΔT_gy/h_y e3", errors[2], 2e-3, ""});
-    check({id + "c", std::string("free 3D cantilever, ") + arc.name + ": order in the elements (8 → 16)",
+    check({id + "c",
+           std::string("free 3D cantilever, ") + arc.name + ": order in the elements (8 → 16)",
            "2 (mid-point quadrature)", order(errors[1], errors[2]), 1.9, "", Bound::at_least});
   }
 }
@@ -285,9 +295,10 @@ TEST(VerificationBeam3d, EndTorqueTwistsTheCantileverByTLOverGJ) {
   const double torque = 1.35;                         // φ = TL/GJ = 0.5 rad
   const double exact = torque * spec.length_m / gj;
   std::vector<double> errors;
-  for (const int n : {2, 4, 8, 16}) errors.push_back(std::abs(tip_twist(spec, n, torque) - exact) / exact);
-  check({"13.2.1", "3D cantilever, end torque: tip twist, 16 elements", "φ = TL/(GJ) = 0.5 rad (St-Venant)",
-         errors[3], 1e-3, ""});
+  for (const int n : {2, 4, 8, 16})
+    errors.push_back(std::abs(tip_twist(spec, n, torque) - exact) / exact);
+  check({"13.2.1", "3D cantilever, end torque: tip twist, 16 elements",
+         "φ = TL/(GJ) = 0.5 rad (St-Venant)", errors[3], 1e-3, ""});
   check({"13.2.2", "3D cantilever, end torque: order of the twist error (8 → 16 elements)", "2",
          order(errors[2], errors[3]), 1.9, "", Bound::at_least});
 }
@@ -324,7 +335,8 @@ TipState loaded_tip(int dimension, int n) {
   const auto system = make_linear_system(assembler);
   MotionState state;
   const StaticResult result = solve_equilibrium_at(assembler, 1.0, *system, state);
-  EXPECT_TRUE(result.newton.converged) << dimension << "D, " << n << " elements: " << result.newton.failure;
+  EXPECT_TRUE(result.newton.converged)
+      << dimension << "D, " << n << " elements: " << result.newton.failure;
   const DofMap& dofs = assembler.dof_map();
   TipState tip;
   tip.shortening = spec.length_m - state.q[dofs.index(n, 0)];
@@ -343,18 +355,24 @@ TEST(VerificationBeam3d, TipLoadedCantileverFollowsTheElasticaLikeThe2dBeam) {
   std::vector<double> errors;
   for (const int n : {8, 16, 32}) {
     const TipState tip = loaded_tip(3, n);
-    errors.push_back(std::max({std::abs(tip.shortening - exact.shortening), std::abs(tip.deflection - exact.deflection),
+    errors.push_back(std::max({std::abs(tip.shortening - exact.shortening),
+                               std::abs(tip.deflection - exact.deflection),
                                std::abs(tip.rotation_rad - exact.rotation_rad)}));
     if (n == 32) {
       const TipState plane = loaded_tip(2, n);
-      check({"13.5.3", "3D cantilever, in-plane tip load PL²/EI = 1, 32 elements: |v_3D − v_2D| / L",
-             "the 2D beam (same elastica, both O(L0²))", std::abs(tip.deflection - plane.deflection), 1e-3, ""});
+      check({"13.5.3",
+             "3D cantilever, in-plane tip load PL²/EI = 1, 32 elements: |v_3D − v_2D| / L",
+             "the 2D beam (same elastica, both O(L0²))",
+             std::abs(tip.deflection - plane.deflection), 1e-3, ""});
     }
   }
   // The table gives 5 digits: errors below 1e-5 are not resolved.
   // O(L0²): 2.6e-3 at 8 elements (the rotation's), so ~1.6e-4 at 32.
-  check({"13.5.1", "3D cantilever, in-plane tip load PL²/EI = 1, 32 elements: largest tip error (u/L, v/L, θ in rad)",
-         "elastica (Mattiasson 1981): u/L = 0.05643, v/L = 0.30172, θ = 0.46135", errors[2], 2.5e-4, ""});
+  check({"13.5.1",
+         "3D cantilever, in-plane tip load PL²/EI = 1, 32 elements: largest tip error (u/L, v/L, θ "
+         "in rad)",
+         "elastica (Mattiasson 1981): u/L = 0.05643, v/L = 0.30172, θ = 0.46135", errors[2], 2.5e-4,
+         ""});
   check({"13.5.2", "3D cantilever, tip load: order of the tip error (8 → 16 elements)", "2",
          order(errors[0], errors[1]), 1.8, "", Bound::at_least});
 }
@@ -366,12 +384,14 @@ TEST(VerificationBeam3d, TipLoadedCantileverFollowsTheElasticaLikeThe2dBeam) {
 // shear and rotary inertia shift the bending frequencies by ~1e-5, below the discretisation
 // error measured. The torsional mode lies among high bending modes: it is sought near its
 // frequency (shift-invert) and told from them by its twist at the tip.
-double tip_twist_of_mode(const Assembler& assembler, const Eigen::VectorXd& mode, int tip, const Eigen::Vector3d& e1) {
+double tip_twist_of_mode(const Assembler& assembler, const Eigen::VectorXd& mode, int tip,
+                         const Eigen::Vector3d& e1) {
   const std::vector<int> frame = frame_dofs(assembler.dof_map(), tip);
   Eigen::Matrix3d change;
   for (int k = 0; k < 9; ++k) change(k / 3, k % 3) = mode[frame[k]];
   // δR = ω̂ (R = I): ω from the skew part.
-  const Eigen::Vector3d omega(change(2, 1) - change(1, 2), change(0, 2) - change(2, 0), change(1, 0) - change(0, 1));
+  const Eigen::Vector3d omega(change(2, 1) - change(1, 2), change(0, 2) - change(2, 0),
+                              change(1, 0) - change(0, 1));
   return std::abs(0.5 * omega.dot(e1));
 }
 
@@ -380,8 +400,10 @@ TEST(VerificationBeam3d, CantileverFrequenciesConvergeToEulerBernoulliAndStVenan
   const double rho_a = spec.density_kg_m3 * spec.area_m2;
   const double l = spec.length_m;
   const double beta = 1.875104068711961;
-  const double bending_z = beta * beta * std::sqrt(spec.youngs_Pa * spec.inertia_z_m4 / rho_a) / (l * l);
-  const double bending_y = beta * beta * std::sqrt(spec.youngs_Pa * spec.inertia_y_m4 / rho_a) / (l * l);
+  const double bending_z =
+      beta * beta * std::sqrt(spec.youngs_Pa * spec.inertia_z_m4 / rho_a) / (l * l);
+  const double bending_y =
+      beta * beta * std::sqrt(spec.youngs_Pa * spec.inertia_y_m4 / rho_a) / (l * l);
   const double torsion = std::numbers::pi / (2 * l) *
                          std::sqrt(spec.shear_Pa * spec.torsion_m4 /
                                    (spec.density_kg_m3 * (spec.inertia_y_m4 + spec.inertia_z_m4)));
@@ -406,10 +428,12 @@ TEST(VerificationBeam3d, CantileverFrequenciesConvergeToEulerBernoulliAndStVenan
     Eigen::Index twisting = 0;
     double largest_twist = 0.0;
     for (Eigen::Index k = 0; k < shifted.modes.modes.cols(); ++k) {
-      const double twist = tip_twist_of_mode(assembler, shifted.modes.modes.col(k), n, frame_of(spec).col(0));
+      const double twist =
+          tip_twist_of_mode(assembler, shifted.modes.modes.col(k), n, frame_of(spec).col(0));
       if (twist > largest_twist) largest_twist = twist, twisting = k;
     }
-    errors_torsion.push_back(std::abs(std::sqrt(shifted.modes.omega2_rad2_s2[twisting]) - torsion) / torsion);
+    errors_torsion.push_back(std::abs(std::sqrt(shifted.modes.omega2_rad2_s2[twisting]) - torsion) /
+                             torsion);
   }
   const struct {
     const char* what;
@@ -458,13 +482,15 @@ double tumbling_energy_error(const IntegratorOptions& integrator, double step_s,
   state.q = assembler.initial_coordinates();
   const int n = assembler.n_dofs();
   const Eigen::Vector3d centre = 0.5 * spec.length_m * spec.axis;
-  const Eigen::Vector3d spin = 10.0 * (std::cos(0.6) * spec.axis + std::sin(0.6) * frame_of(spec).col(1));
+  const Eigen::Vector3d spin =
+      10.0 * (std::cos(0.6) * spec.axis + std::sin(0.6) * frame_of(spec).col(1));
   Eigen::Matrix3d spin_hat;
   spin_hat << 0, -spin.z(), spin.y(), spin.z(), 0, -spin.x(), -spin.y(), spin.x(), 0;
   state.v = Eigen::VectorXd::Zero(n);
   for (int node = 0; node < model.n_nodes(); ++node) {
     const Eigen::Vector3d velocity = spin.cross(position(assembler, state.q, node) - centre);
-    for (int axis = 0; axis < 3; ++axis) state.v[assembler.dof_map().index(node, axis)] = velocity[axis];
+    for (int axis = 0; axis < 3; ++axis)
+      state.v[assembler.dof_map().index(node, axis)] = velocity[axis];
     const std::vector<int> frame = frame_dofs(assembler.dof_map(), node);
     for (int k = 0; k < 9; ++k) state.v[frame[k]] = spin_hat(k / 3, k % 3);  // Ṙ = ω̂ R, R = I
   }
@@ -500,19 +526,27 @@ TEST(VerificationBeam3d, FreeTumblingBeamConservesEnergyToSecondOrder) {
     double first_step_s;
   } schemes[] = {
       {"Newmark(¼,½)", {IntegratorOptions::Kind::newmark, 0.25, 0.5, 1.0}, 0.5, 2e-3},
-      {"generalized-α ρ∞ = 0.9", {IntegratorOptions::Kind::generalized_alpha, 0.25, 0.5, 0.9}, 1.0, 4e-3},
+      {"generalized-α ρ∞ = 0.9",
+       {IntegratorOptions::Kind::generalized_alpha, 0.25, 0.5, 0.9},
+       1.0,
+       4e-3},
   };
   int row = 1;
   for (const auto& scheme : schemes) {
     std::vector<double> errors;
-    for (const double step : {scheme.first_step_s, scheme.first_step_s / 2, scheme.first_step_s / 4}) {
+    for (const double step :
+         {scheme.first_step_s, scheme.first_step_s / 2, scheme.first_step_s / 4}) {
       errors.push_back(tumbling_energy_error(scheme.integrator, step, scheme.end_s));
     }
     const std::string id = "13.4." + std::to_string(row++);
-    check({id + "a", std::string("free tumbling 3D beam, ") + scheme.name + ": largest energy change, finest step",
+    check({id + "a",
+           std::string("free tumbling 3D beam, ") + scheme.name +
+               ": largest energy change, finest step",
            "conserved (no damping, no load)", errors[2], 1e-4, ""});
-    check({id + "b", std::string("free tumbling 3D beam, ") + scheme.name + ": order of the energy error in h",
-           "2", order(errors[1], errors[2]), 1.9, "", Bound::at_least});
+    check(
+        {id + "b",
+         std::string("free tumbling 3D beam, ") + scheme.name + ": order of the energy error in h",
+         "2", order(errors[1], errors[2]), 1.9, "", Bound::at_least});
   }
 }
 
@@ -522,15 +556,19 @@ TEST(VerificationBeam3d, FreeTumblingBeamConservesEnergyToSecondOrder) {
 // from C) by P·0.75 m = 37.5 N·m about its local y, up to the change of the levers as the frame
 // deflects (measured 1.3e-4 and 6.6e-5 of them).
 TEST(VerificationBeam3d, ExampleFrameFileRunsAndCarriesTheTipLoad) {
-  const Model model = load_model(DEPLOYDYN_SOURCE_DIR "/examples/beams/frame3d.yaml", {{"analysis.type", "static"}, {"analysis.step", "0.05"}, {"analysis.output_interval", "0.05"}});
+  const Model model = load_model(DEPLOYDYN_SOURCE_DIR "/examples/beams/frame3d.yaml",
+                                 {{"analysis.type", "static"},
+                                  {"analysis.step", "0.05"},
+                                  {"analysis.output_interval", "0.05"}});
   const testing::RunResult run = testing::run(model);
   ASSERT_EQ(run.report.status, RunStatus::completed) << run.report.message;
   const StepRecord& last = run.records.back();
   const ElementResults& beams = last.elements[static_cast<std::size_t>(beam_group())];
   const auto quantity = [&](const char* name) { return quantity_index(beam_kind_of(), 3, name); };
-  const double torque = beams.at(0, quantity("torque_Nm"));      // c1
+  const double torque = beams.at(0, quantity("torque_Nm"));            // c1
   const double moment = beams.at(2, quantity("bending_moment_y_Nm"));  // a1
-  check({"13.6.1", "examples/beams/frame3d.yaml, static at t = 0.5 s: |torque of the column| against P·L",
+  check({"13.6.1",
+         "examples/beams/frame3d.yaml, static at t = 0.5 s: |torque of the column| against P·L",
          "statics: 50 N × 1 m", std::abs(std::abs(torque) - 50.0) / 50.0, 1e-3, ""});
   check({"13.6.2", "same: |M_y of the arm's element a1| against P·0.75 m", "statics: 37.5 N·m",
          std::abs(std::abs(moment) - 37.5) / 37.5, 1e-3, ""});

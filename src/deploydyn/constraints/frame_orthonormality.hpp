@@ -20,7 +20,8 @@ class FrameOrthonormality final : public Constraint {
   void evaluate(const Eigen::VectorXd& q, double t, Eigen::Ref<Eigen::VectorXd> phi,
                 Eigen::Ref<Eigen::MatrixXd> jacobian) const override;
   bool nonlinear() const override { return true; }
-  void add_hessian_term(const Eigen::VectorXd& q, double t, Eigen::Ref<const Eigen::VectorXd> lambda,
+  void add_hessian_term(const Eigen::VectorXd& q, double t,
+                        Eigen::Ref<const Eigen::VectorXd> lambda,
                         Eigen::Ref<Eigen::MatrixXd> hessian) const override;
   void time_derivatives(const Eigen::VectorXd& q, const Eigen::VectorXd& v, double t,
                         Eigen::Ref<Eigen::VectorXd> phi_t,

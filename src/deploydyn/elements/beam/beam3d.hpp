@@ -29,8 +29,8 @@
 namespace deploydyn::beam3d {
 
 constexpr int kDofs = 24;
-constexpr int kStrains = 6;       // Γ1, Γ2, Γ3, K1, K2, K3
-constexpr int kIntermediate = 21; // z = (r', R̄, R')
+constexpr int kStrains = 6;        // Γ1, Γ2, Γ3, K1, K2, K3
+constexpr int kIntermediate = 21;  // z = (r', R̄, R')
 // Offsets in the local unknowns.
 constexpr int kPositionA = 0, kFrameA = 3, kPositionB = 12, kFrameB = 15;
 
@@ -42,8 +42,9 @@ using IntermediateMatrix = Eigen::Matrix<double, kIntermediate, kIntermediate>;
 
 // The section constants one evaluation needs.
 struct Section {
-  StrainVector stiffness = StrainVector::Zero();  // C: EA, k_sGA_y, k_sGA_z (N), GJ, EI_y, EI_z (N·m²)
-  double reference_length_m = 0.0;                // L0
+  StrainVector stiffness =
+      StrainVector::Zero();         // C: EA, k_sGA_y, k_sGA_z (N), GJ, EI_y, EI_z (N·m²)
+  double reference_length_m = 0.0;  // L0
   Eigen::Matrix3d frame = Eigen::Matrix3d::Identity();  // E = [e1 e2 e3], initial
 };
 
@@ -81,13 +82,13 @@ inline bool element_frame(const Eigen::Vector3d& chord, const Eigen::Vector3d& o
 
 // Strain state at one configuration.
 struct State {
-  Eigen::Vector3d tangent;     // r'
-  Eigen::Matrix3d directors;   // [d1 d2 d3] at the mid-point
+  Eigen::Vector3d tangent;               // r'
+  Eigen::Matrix3d directors;             // [d1 d2 d3] at the mid-point
   Eigen::Matrix3d director_derivatives;  // [d1' d2' d3']
-  StrainVector strain;         // s = (Γ, K)
-  StrainVector mechanical;     // s − s_t
-  StrainVector resultants;     // C(s − s_t): N, V_y, V_z (N), T, M_y, M_z (N·m)
-  StrainGradient gradient;     // G = ∂s/∂z
+  StrainVector strain;                   // s = (Γ, K)
+  StrainVector mechanical;               // s − s_t
+  StrainVector resultants;               // C(s − s_t): N, V_y, V_z (N), T, M_y, M_z (N·m)
+  StrainGradient gradient;               // G = ∂s/∂z
 };
 
 // (k, i, j) of K_k = ½(d_j·d_i' − d_i·d_j'), 0-based.
@@ -132,7 +133,8 @@ inline State evaluate(const ElementVector& q, const Section& section, const Stra
 
 // T = ∂z/∂q: r' = (x_b − x_a)/L0, R̄ = ½(R_a + R_b), R' = (R_b − R_a)/L0.
 inline Eigen::Matrix<double, kIntermediate, kDofs> intermediate_map(double l0) {
-  Eigen::Matrix<double, kIntermediate, kDofs> t = Eigen::Matrix<double, kIntermediate, kDofs>::Zero();
+  Eigen::Matrix<double, kIntermediate, kDofs> t =
+      Eigen::Matrix<double, kIntermediate, kDofs>::Zero();
   for (int a = 0; a < 3; ++a) {
     t(a, kPositionA + a) = -1.0 / l0;
     t(a, kPositionB + a) = 1.0 / l0;
@@ -195,23 +197,24 @@ inline ElementVector internal_force_per_thermal_strain(const State& s, const Sec
 inline ElementMatrix tangent(const State& s, const Section& section) {
   const double l0 = section.reference_length_m;
   const Eigen::Matrix<double, kIntermediate, kDofs> t = intermediate_map(l0);
-  const IntermediateMatrix kz = s.gradient.transpose() * section.stiffness.asDiagonal() * s.gradient +
-                                weighted_strain_hessian(s.resultants, section.frame);
+  const IntermediateMatrix kz =
+      s.gradient.transpose() * section.stiffness.asDiagonal() * s.gradient +
+      weighted_strain_hessian(s.resultants, section.frame);
   return l0 * t.transpose() * kz * t;
 }
 
 // Rotary inertia per length J = ρ(I_z e2e2ᵀ + I_y e3e3ᵀ) (kg·m), ρ = m/(A L0).
-inline Eigen::Matrix3d rotary_inertia_per_length(double mass_kg, double area_m2, double inertia_y_m4,
-                                                 double inertia_z_m4, double l0,
-                                                 const Eigen::Matrix3d& frame) {
+inline Eigen::Matrix3d rotary_inertia_per_length(double mass_kg, double area_m2,
+                                                 double inertia_y_m4, double inertia_z_m4,
+                                                 double l0, const Eigen::Matrix3d& frame) {
   const double density = mass_kg / (area_m2 * l0);
   return density * (inertia_z_m4 * frame.col(1) * frame.col(1).transpose() +
                     inertia_y_m4 * frame.col(2) * frame.col(2).transpose());
 }
 
 // (D7).
-inline ElementMatrix mass_matrix(double mass_kg, const Eigen::Matrix3d& rotary_per_length, double l0,
-                                 MassMatrixKind kind) {
+inline ElementMatrix mass_matrix(double mass_kg, const Eigen::Matrix3d& rotary_per_length,
+                                 double l0, MassMatrixKind kind) {
   ElementMatrix m = ElementMatrix::Zero();
   const double own = kind == MassMatrixKind::consistent ? 1.0 / 3.0 : 0.5;
   const double shared = kind == MassMatrixKind::consistent ? 1.0 / 6.0 : 0.0;

@@ -31,12 +31,12 @@ struct Beam3dRecord {
   beam3d::Section section;
   double mass_kg = 0.0;
   Eigen::Matrix3d rotary_per_length = Eigen::Matrix3d::Zero();  // J (kg·m)
-  double expansion_per_C = 0.0;                  // α
-  double curvature_y_per_C_m = 0.0;              // κ_t2 / ΔT_gz = +α / h_z (theory D5)
-  double curvature_z_per_C_m = 0.0;              // κ_t3 / ΔT_gy = −α / h_y
-  const TimeFunction* temperature_change_C = nullptr;   // ΔT(t), in the model
-  const TimeFunction* gradient_y_C = nullptr;           // ΔT_gy(t)
-  const TimeFunction* gradient_z_C = nullptr;           // ΔT_gz(t)
+  double expansion_per_C = 0.0;                                 // α
+  double curvature_y_per_C_m = 0.0;                    // κ_t2 / ΔT_gz = +α / h_z (theory D5)
+  double curvature_z_per_C_m = 0.0;                    // κ_t3 / ΔT_gy = −α / h_y
+  const TimeFunction* temperature_change_C = nullptr;  // ΔT(t), in the model
+  const TimeFunction* gradient_y_C = nullptr;          // ΔT_gy(t)
+  const TimeFunction* gradient_z_C = nullptr;          // ΔT_gz(t)
 
   beam3d::StrainVector thermal(double t) const {
     return beam3d::thermal_strains(expansion_per_C * temperature_change_C->value(t),
@@ -75,8 +75,9 @@ struct Beam3dRecord {
   // max(|Δ(x_b − x_a)| / L0, |ΔR_a|/√2, |ΔR_b|/√2) (Frobenius: ≈ the angle turned).
   double relative_change(const Vector& q, const Vector& q_before) const {
     const Vector change = q - q_before;
-    const double chord = (change.segment<3>(beam3d::kPositionB) - change.segment<3>(beam3d::kPositionA)).norm() /
-                         section.reference_length_m;
+    const double chord =
+        (change.segment<3>(beam3d::kPositionB) - change.segment<3>(beam3d::kPositionA)).norm() /
+        section.reference_length_m;
     return std::max({chord, change.segment<9>(beam3d::kFrameA).norm() / std::sqrt(2.0),
                      change.segment<9>(beam3d::kFrameB).norm() / std::sqrt(2.0)});
   }
@@ -115,7 +116,8 @@ std::unique_ptr<ElementGroup> make_beam_group_3d(const Model& model, const DofMa
       for (int axis = 0; axis < 3; ++axis) beam.dofs[i++] = dofs.index(node, axis);
       for (const int dof : frame_dofs(dofs, node)) beam.dofs[i++] = dof;
     }
-    const Eigen::Vector3d chord = model.nodes[e.node_b].position_m - model.nodes[e.node_a].position_m;
+    const Eigen::Vector3d chord =
+        model.nodes[e.node_b].position_m - model.nodes[e.node_a].position_m;
     if (!beam3d::element_frame(chord, e.orientation, beam.section.frame)) {
       throw std::invalid_argument("beam " + e.name +
                                   ": its nodes coincide or its orientation lies along its axis");
@@ -130,8 +132,9 @@ std::unique_ptr<ElementGroup> make_beam_group_3d(const Model& model, const DofMa
         youngs * e.inertia_z_m4;
     beam.section.reference_length_m = e.reference_length_m;
     beam.mass_kg = e.mass_kg;
-    beam.rotary_per_length = beam3d::rotary_inertia_per_length(
-        e.mass_kg, e.area_m2, e.inertia_y_m4, e.inertia_z_m4, e.reference_length_m, beam.section.frame);
+    beam.rotary_per_length =
+        beam3d::rotary_inertia_per_length(e.mass_kg, e.area_m2, e.inertia_y_m4, e.inertia_z_m4,
+                                          e.reference_length_m, beam.section.frame);
     beam.expansion_per_C = material.expansion_per_C;
     beam.curvature_y_per_C_m = e.height_z_m > 0.0 ? material.expansion_per_C / e.height_z_m : 0.0;
     beam.curvature_z_per_C_m = e.height_y_m > 0.0 ? -material.expansion_per_C / e.height_y_m : 0.0;
@@ -142,12 +145,14 @@ std::unique_ptr<ElementGroup> make_beam_group_3d(const Model& model, const DofMa
   return std::make_unique<LocalElementGroup<Beam3dRecord>>(std::move(records), model.analysis.mass);
 }
 
-std::vector<std::unique_ptr<Constraint>> make_frame_constraints(const Model& model, const DofMap& dofs) {
+std::vector<std::unique_ptr<Constraint>> make_frame_constraints(const Model& model,
+                                                                const DofMap& dofs) {
   std::vector<std::unique_ptr<Constraint>> constraints;
   for (int node = 0; node < model.n_nodes(); ++node) {
     std::vector<int> frame = frame_dofs(dofs, node);
     if (frame.empty()) continue;
-    constraints.push_back(std::make_unique<FrameOrthonormality>(std::move(frame), model.nodes[node].name));
+    constraints.push_back(
+        std::make_unique<FrameOrthonormality>(std::move(frame), model.nodes[node].name));
   }
   return constraints;
 }

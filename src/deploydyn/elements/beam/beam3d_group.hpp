@@ -19,7 +19,8 @@ std::unique_ptr<ElementGroup> make_beam_group_3d(const Model& model, const DofMa
 std::vector<int> frame_dofs(const DofMap& dofs, int node);
 
 // RᵀR = I for every node that carries a frame.
-std::vector<std::unique_ptr<Constraint>> make_frame_constraints(const Model& model, const DofMap& dofs);
+std::vector<std::unique_ptr<Constraint>> make_frame_constraints(const Model& model,
+                                                                const DofMap& dofs);
 
 // R = I for every node that carries a frame (the initial state).
 void set_initial_frames(const Model& model, const DofMap& dofs, Eigen::VectorXd& q);
