@@ -2,7 +2,7 @@
 // Two-node 3D beam with directors (geometrically exact: Simo 1985; Betsch & Steinmann 2002;
 // docs/theory.md, "Beams in 3D"). Each node n carries its position x_n and the rotation
 // matrix R_n (9 unknowns, row-major R11 R12 R13 R21 … R33) that maps the element's initial
-// frame E = [e1 e2 e3] to the current directors d_i^n = R_n e_i; R_n R_nᵀ = I is a constraint
+// frame E = [e1 e2 e3] to the current directors d_i^n = R_n e_i; R_nᵀ R_n = I is a constraint
 // (constraints/frame_orthonormality.hpp), not part of the element.
 //
 // Local unknowns (24): q = [x_a (3), R_a (9), x_b (3), R_b (9)].
