@@ -8,8 +8,10 @@
 
 #include "deploydyn/constraints/driven_hinge_angle.hpp"
 #include "deploydyn/constraints/driven_revolute.hpp"
+#include "deploydyn/constraints/frame_orthonormality.hpp"
 #include "deploydyn/constraints/pin_joint.hpp"
 #include "deploydyn/constraints/prescribed_coordinates.hpp"
+#include "deploydyn/elements/beam/beam3d_group.hpp"
 #include "deploydyn/elements/element_kinds.hpp"
 
 namespace deploydyn {
@@ -17,12 +19,11 @@ namespace {
 
 constexpr const char* kAxisNames[] = {"x", "y", "z"};
 
-// Local Φ and Jacobian of one constraint on the stack: at most 5 equations (a 3D pin joint
-// that keeps its axis) on 24 unknowns (its two nodes' positions and rotation matrices).
-constexpr int kMaxConstraintEquations = 5;
+// Local Φ and Jacobian of one constraint on the stack: at most 6 equations (the orthonormality
+// of a 3D beam node's frame) on 24 unknowns (a 3D pin joint that keeps its axis: its two
+// nodes' positions and rotation matrices).
+constexpr int kMaxConstraintEquations = 6;
 constexpr int kMaxConstraintDofs = 24;
-constexpr std::array<const char*, 9> kRotationUnknowns{"R11", "R12", "R13", "R21", "R22",
-                                                       "R23", "R31", "R32", "R33"};
 using LocalVector = Eigen::Matrix<double, Eigen::Dynamic, 1, 0, kMaxConstraintEquations, 1>;
 using LocalJacobian = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0,
                                     kMaxConstraintEquations, kMaxConstraintDofs>;
@@ -40,10 +41,7 @@ std::unique_ptr<Constraint> make_support(const FixedNode& support, const Model& 
     initial.push_back(node.position_m[axis]);
     labels.push_back("support " + node.name + ", " + kAxisNames[axis]);
   }
-  if (support.rotation) {  // a beam's node: its rotation from the initial frame stays 0
-    if (model.dimension == 3) {
-      throw std::invalid_argument("support " + node.name + ": fixing a 3D rotation is not available yet");
-    }
+  if (support.rotation && model.dimension == 2) {  // a beam's node: its rotation stays 0
     rows.push_back(dofs.index(support.node, "rz"));
     initial.push_back(0.0);
     labels.push_back("support " + node.name + ", rotation");
@@ -64,12 +62,7 @@ std::vector<int> rotation_dofs(int node, const Model& model, const DofMap& dofs)
     if (const int rz = dofs.index(node, "rz"); rz >= 0) out.push_back(rz);
     return out;
   }
-  for (const char* name : kRotationUnknowns) {
-    const int index = dofs.index(node, name);
-    if (index < 0) return {};
-    out.push_back(index);
-  }
-  return out;
+  return frame_dofs(dofs, node);
 }
 
 std::unique_ptr<Constraint> make_joint(const Joint& joint, const Model& model, const DofMap& dofs) {
@@ -136,11 +129,25 @@ Assembler::Assembler(const Model& model) : model_(model), dofs_(model) {
   for (const ElementKind* kind : element_kinds()) groups_.push_back(kind->make_group(model, dofs_));
   for (const FixedNode& support : model.supports) {
     constraints_.push_back(make_support(support, model, dofs_));
+    if (support.rotation && model.dimension == 3) {  // a 3D beam's node: R − Rᵀ = 0 (theory D8)
+      std::vector<int> frame = frame_dofs(dofs_, support.node);
+      if (frame.empty()) {
+        throw std::invalid_argument("support " + model.nodes[support.node].name +
+                                    ": fixes the rotation of a node that no beam holds");
+      }
+      constraints_.push_back(std::make_unique<FrameClamp>(std::move(frame), model.nodes[support.node].name));
+    }
   }
   for (const Joint& joint : model.joints) constraints_.push_back(make_joint(joint, model, dofs_));
   for (const Driver& driver : model.drivers) {
     driver_constraint_.push_back(static_cast<int>(constraints_.size()));
     constraints_.push_back(make_driver(driver, model, dofs_));
+  }
+  for (const ElementKind* kind : element_kinds()) {  // after the drivers: their rows stay put
+    for (auto& c : kind->make_constraints(model, dofs_)) {
+      constraints_.push_back(std::move(c));
+      ++n_element_constraints_;
+    }
   }
   for (const auto& c : constraints_) {
     first_row_.push_back(n_equations_);
@@ -163,12 +170,13 @@ Assembler::Assembler(const Model& model) : model_(model), dofs_(model) {
 }
 
 Eigen::VectorXd Assembler::initial_coordinates() const {
-  Eigen::VectorXd q = Eigen::VectorXd::Zero(n_dofs());  // element-added unknowns start at 0
+  Eigen::VectorXd q = Eigen::VectorXd::Zero(n_dofs());
   for (int node = 0; node < model_.n_nodes(); ++node) {
     for (int axis = 0; axis < model_.dimension; ++axis) {
       q[dofs_.index(node, axis)] = model_.nodes[node].position_m[axis];
     }
   }
+  for (const ElementKind* kind : element_kinds()) kind->set_initial_node_unknowns(model_, dofs_, q);
   return q;
 }
 
@@ -289,6 +297,25 @@ void Assembler::constraint_rates(const Eigen::VectorXd& q, const Eigen::VectorXd
     const Constraint& con = *constraints_[c];
     con.time_derivatives(q, v, t, phi_t.segment(first_row_[c], con.n_equations()),
                          bias.segment(first_row_[c], con.n_equations()));
+  }
+}
+
+void Assembler::constraint_jacobian_times(const Eigen::VectorXd& q, double t, const Eigen::VectorXd& v,
+                                          Eigen::VectorXd& out) const {
+  out.resize(n_equations());
+  LocalVector phi;
+  LocalJacobian jacobian;
+  for (std::size_t c = 0; c < constraints_.size(); ++c) {
+    const Constraint& con = *constraints_[c];
+    const std::span<const int> dofs = con.dofs();
+    phi.resize(con.n_equations());
+    jacobian.resize(con.n_equations(), static_cast<Eigen::Index>(dofs.size()));
+    con.evaluate(q, t, phi, jacobian);
+    for (int k = 0; k < con.n_equations(); ++k) {
+      double sum = 0.0;
+      for (std::size_t i = 0; i < dofs.size(); ++i) sum += jacobian(k, static_cast<Eigen::Index>(i)) * v[dofs[i]];
+      out[first_row_[c] + k] = sum;
+    }
   }
 }
 

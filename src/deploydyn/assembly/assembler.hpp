@@ -66,6 +66,14 @@ class Assembler {
                              Eigen::VectorXd& phi, Eigen::VectorXd& f) const;
   void constraint_rates(const Eigen::VectorXd& q, const Eigen::VectorXd& v, double t,
                         Eigen::VectorXd& phi_t, Eigen::VectorXd& bias) const;
+  // B v: the constraints' first-order change along v.
+  void constraint_jacobian_times(const Eigen::VectorXd& q, double t, const Eigen::VectorXd& v,
+                                 Eigen::VectorXd& out) const;
+  // Whether M is positive definite only on the motions the constraints allow, not on every q̇:
+  // elements brought constraints of their own (a 3D beam node's frame R, whose d1 = R e1 has no
+  // inertia). A solver that needs a definite weight then uses M + c BᵀB, which changes nothing
+  // on the allowed motions (solvers/modal_analysis.cpp).
+  bool mass_definite_on_constraints_only() const { return n_element_constraints_ > 0; }
 
   // Weights of the iteration matrix [c_M M + c_K (K + H(λ)), s Bᵀ; s B, 0].
   struct MatrixWeights {
@@ -125,11 +133,12 @@ class Assembler {
   const Model& model_;
   DofMap dofs_;
   std::vector<std::unique_ptr<ElementGroup>> groups_;  // [kind of element_kinds()]
-  std::vector<std::unique_ptr<Constraint>> constraints_;  // supports, joints, then drivers
+  std::vector<std::unique_ptr<Constraint>> constraints_;  // supports, joints, drivers, then the elements'
   std::vector<int> first_row_;                            // [constraint] → first λ row
   std::vector<int> driver_rows_;                          // [driver] → first λ row
   std::vector<int> driver_constraint_;                    // [driver] → index in constraints_
   int n_equations_ = 0;
+  int n_element_constraints_ = 0;  // constraints the element kinds brought
   int n_matrix_entries_ = 0;
   double mass_scale_ = 1.0;
 };

@@ -28,6 +28,7 @@
 #include <vector>
 
 #include "deploydyn/assembly/linear_system.hpp"
+#include "deploydyn/constraints/constraint.hpp"
 #include "deploydyn/elements/element_entry.hpp"
 
 namespace deploydyn {
@@ -68,7 +69,7 @@ class ElementGroup {
 
   virtual int n_elements() const = 0;
   // Equations that taking every element as rigid would add (Grübler count): 1 per bar, 3 per
-  // 2D beam.
+  // 2D beam, 6 per 3D beam (its nodes' frame orthonormality is counted among the constraints).
   virtual int n_rigid_body_conditions() const = 0;
 
   // Each adds its elements' share into the global vector (which the caller has sized).
@@ -129,6 +130,14 @@ class ElementKind {
   // (a rotation "rz", a slope "dx/ds"); the bar adds none.
   virtual void add_node_unknowns(const Model& model,
                                  std::vector<std::vector<std::string>>& per_node) const = 0;
+  // Writes the initial values of the unknowns it added into q (positions already set; the
+  // rest 0 until a type writes them): the 3D beam's frames R = I. The bar writes none.
+  virtual void set_initial_node_unknowns(const Model& model, const DofMap& dofs,
+                                         Eigen::VectorXd& q) const = 0;
+  // Constraints its elements bring (the 3D beam: the orthonormality of its nodes' frames),
+  // which the assembler appends after the supports and drivers. The bar brings none.
+  virtual std::vector<std::unique_ptr<Constraint>> make_constraints(const Model& model,
+                                                                    const DofMap& dofs) const = 0;
 
   // The keys of its entries in the model file, and how it reads and writes one. `read` gets an
   // entry whose keys are among fields() and appends the element, named `name`, to `model`,

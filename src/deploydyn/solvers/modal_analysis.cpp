@@ -67,7 +67,18 @@ ModalResult natural_modes(const Assembler& assembler, const MotionState& equilib
   request.shift = sigma;
   request.dense = n_dofs <= options.dense_up_to;
   request.tolerance = kLanczosTolerance;
-  const WeightProduct mass = [&](const Eigen::VectorXd& v, Eigen::VectorXd& out) { assembler.mass_times(v, out); };
+  // The shift-invert needs a definite weight. Where M is definite only on the allowed motions
+  // (3D beams), W = M + c BᵀB: G Bᵀ = 0 (G maps into null B), so G W = G M and the modes and
+  // their M-normalisation (Bφ = 0) are unchanged; c = the mass scale keeps W balanced.
+  const bool regularize = assembler.mass_definite_on_constraints_only();
+  Eigen::VectorXd constrained, reaction;
+  const WeightProduct mass = [&](const Eigen::VectorXd& v, Eigen::VectorXd& out) {
+    assembler.mass_times(v, out);
+    if (!regularize) return;
+    assembler.constraint_jacobian_times(equilibrium.q, equilibrium.time_s, v, constrained);
+    assembler.constraint_force(equilibrium.q, equilibrium.time_s, constrained, reaction);
+    out += assembler.mass_scale() * reaction;
+  };
   if (!request.dense && !options.shift_rad2_s2) request.max_restarts = options.restarts_before_shifting;
   ShiftInvertResult pairs = nearest_constrained_eigenpairs(system, n_dofs, mass, request);
   if (!pairs.ok && !request.dense && !options.shift_rad2_s2) {

@@ -120,6 +120,11 @@ class BarKind final : public ElementKind {
     for (BarElement& bar : model.bars) bar.temperature_change_C = change_C;
   }
   void add_node_unknowns(const Model&, std::vector<std::vector<std::string>>&) const override {}
+  void set_initial_node_unknowns(const Model&, const DofMap&, Eigen::VectorXd&) const override {}
+  std::vector<std::unique_ptr<Constraint>> make_constraints(const Model&,
+                                                            const DofMap&) const override {
+    return {};
+  }
   std::span<const ElementField> fields() const override { return bar::entry_fields(); }
   void read(const std::string& name, const ElementEntryReader& entry, Model& model) const override {
     bar::read_entry(name, entry, model);

@@ -6,6 +6,7 @@
 #include <stdexcept>
 
 #include "deploydyn/elements/beam/beam2d.hpp"
+#include "deploydyn/elements/beam/beam3d_group.hpp"
 #include "deploydyn/elements/beam/beam_entry.hpp"
 #include "deploydyn/elements/local_element_group.hpp"
 #include "deploydyn/model/dof_map.hpp"
@@ -168,6 +169,17 @@ class BeamKind final : public ElementKind {
       }
     }
   }
+  // 2D: rz starts at 0 (the default). 3D: every frame starts at R = I.
+  void set_initial_node_unknowns(const Model& model, const DofMap& dofs,
+                                 Eigen::VectorXd& q) const override {
+    if (model.dimension == 3) set_initial_frames(model, dofs, q);
+  }
+  // 3D: the orthonormality RᵀR = I of every beam node's frame (theory D8); 2D: none.
+  std::vector<std::unique_ptr<Constraint>> make_constraints(const Model& model,
+                                                            const DofMap& dofs) const override {
+    if (model.dimension == 3) return make_frame_constraints(model, dofs);
+    return {};
+  }
   std::span<const ElementField> fields() const override { return beam::entry_fields(); }
   void read(const std::string& name, const ElementEntryReader& entry, Model& model) const override {
     beam::read_entry(name, entry, model);
@@ -176,10 +188,7 @@ class BeamKind final : public ElementKind {
     beam::write_entry(model, element, entry);
   }
   std::unique_ptr<ElementGroup> make_group(const Model& model, const DofMap& dofs) const override {
-    if (model.dimension == 3 && !model.beams.empty()) {
-      throw std::invalid_argument("3D beams: not available yet");
-    }
-    return make_beam_group_2d(model, dofs);  // with no beams: an empty group in either dimension
+    return model.dimension == 3 ? make_beam_group_3d(model, dofs) : make_beam_group_2d(model, dofs);
   }
 };
 

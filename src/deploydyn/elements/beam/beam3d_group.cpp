@@ -1,0 +1,168 @@
+#include "deploydyn/elements/beam/beam3d_group.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <stdexcept>
+
+#include "deploydyn/constraints/frame_orthonormality.hpp"
+#include "deploydyn/elements/beam/beam3d.hpp"
+#include "deploydyn/elements/local_element_group.hpp"
+#include "deploydyn/model/dof_map.hpp"
+#include "deploydyn/model/model.hpp"
+
+namespace deploydyn {
+namespace {
+
+constexpr const char* kFrameNames[9] = {"R11", "R12", "R13", "R21", "R22",
+                                        "R23", "R31", "R32", "R33"};
+
+// One 3D beam for LocalElementGroup: (x_a, R_a, x_b, R_b) as in beam3d.hpp, and its constants.
+struct Beam3dRecord {
+  static constexpr int kDofs = beam3d::kDofs;
+  // Taken as rigid, a beam keeps its 6 strains (its nodes' frames are held orthonormal by
+  // their own constraints).
+  static constexpr int kRigidBodyConditions = 6;
+  using Vector = beam3d::ElementVector;
+  using Matrix = beam3d::ElementMatrix;
+  using State = beam3d::State;
+
+  std::array<int, kDofs> dofs{};
+  beam3d::Section section;
+  double mass_kg = 0.0;
+  Eigen::Matrix3d rotary_per_length = Eigen::Matrix3d::Zero();  // J (kg·m)
+  double expansion_per_C = 0.0;                                 // α
+  double curvature_y_per_C_m = 0.0;                    // κ_t2 / ΔT_gz = +α / h_z (theory D5)
+  double curvature_z_per_C_m = 0.0;                    // κ_t3 / ΔT_gy = −α / h_y
+  const TimeFunction* temperature_change_C = nullptr;  // ΔT(t), in the model
+  const TimeFunction* gradient_y_C = nullptr;          // ΔT_gy(t)
+  const TimeFunction* gradient_z_C = nullptr;          // ΔT_gz(t)
+
+  beam3d::StrainVector thermal(double t) const {
+    return beam3d::thermal_strains(expansion_per_C * temperature_change_C->value(t),
+                                   curvature_y_per_C_m * gradient_z_C->value(t),
+                                   curvature_z_per_C_m * gradient_y_C->value(t));
+  }
+  beam3d::StrainVector thermal_rate(double t) const {
+    return beam3d::thermal_strains(expansion_per_C * temperature_change_C->derivative(t),
+                                   curvature_y_per_C_m * gradient_z_C->derivative(t),
+                                   curvature_z_per_C_m * gradient_y_C->derivative(t));
+  }
+
+  State evaluate(const Vector& q, double t, double thermal_factor) const {
+    return beam3d::evaluate(q, section, thermal_factor * thermal(t));
+  }
+  Vector internal_force(const State& s) const { return beam3d::internal_force(s, section); }
+  // The factor scales every thermal strain: ∂f/∂factor = ∂f/∂s_t · s_t.
+  Vector thermal_force_derivative(const State& s, double t) const {
+    return beam3d::internal_force_per_thermal_strain(s, section, thermal(t));
+  }
+  Vector thermal_force_rate(const State& s, double t) const {
+    return beam3d::internal_force_per_thermal_strain(s, section, thermal_rate(t));
+  }
+  Matrix tangent(const State& s) const { return beam3d::tangent(s, section); }
+  Matrix mass(MassMatrixKind kind) const {
+    return beam3d::mass_matrix(mass_kg, rotary_per_length, section.reference_length_m, kind);
+  }
+  // The weight is shared equally by the two nodes' positions (a uniform beam: no moment).
+  Vector weight(const Eigen::Vector3d& gravity_m_s2) const {
+    Vector f = Vector::Zero();
+    f.segment<3>(beam3d::kPositionA) = 0.5 * mass_kg * gravity_m_s2;
+    f.segment<3>(beam3d::kPositionB) = 0.5 * mass_kg * gravity_m_s2;
+    return f;
+  }
+  double strain_energy(const State& s) const { return beam3d::strain_energy(s, section); }
+  // max(|Δ(x_b − x_a)| / L0, |ΔR_a|/√2, |ΔR_b|/√2) (Frobenius: ≈ the angle turned).
+  double relative_change(const Vector& q, const Vector& q_before) const {
+    const Vector change = q - q_before;
+    const double chord =
+        (change.segment<3>(beam3d::kPositionB) - change.segment<3>(beam3d::kPositionA)).norm() /
+        section.reference_length_m;
+    return std::max({chord, change.segment<9>(beam3d::kFrameA).norm() / std::sqrt(2.0),
+                     change.segment<9>(beam3d::kFrameB).norm() / std::sqrt(2.0)});
+  }
+  // In the order of the beam kind's quantities: strain, mstrain, force, shear (y), moment (z),
+  // shear_z, torque, moment_y.
+  void results(const State& s, std::span<double> out) const {
+    out[0] = s.strain[0];
+    out[1] = s.mechanical[0];
+    out[2] = s.resultants[0];
+    out[3] = s.resultants[1];
+    out[4] = s.resultants[5];
+    out[5] = s.resultants[2];
+    out[6] = s.resultants[3];
+    out[7] = s.resultants[4];
+  }
+  double reference_length_m() const { return section.reference_length_m; }
+};
+
+}  // namespace
+
+std::vector<int> frame_dofs(const DofMap& dofs, int node) {
+  std::vector<int> indices;
+  if (dofs.index(node, kFrameNames[0]) < 0) return indices;
+  for (const char* name : kFrameNames) indices.push_back(dofs.index(node, name));
+  return indices;
+}
+
+std::unique_ptr<ElementGroup> make_beam_group_3d(const Model& model, const DofMap& dofs) {
+  std::vector<Beam3dRecord> records;
+  records.reserve(model.beams.size());
+  for (const BeamElement& e : model.beams) {
+    const Material& material = model.materials[e.material];
+    Beam3dRecord& beam = records.emplace_back();
+    int i = 0;
+    for (const int node : {e.node_a, e.node_b}) {
+      for (int axis = 0; axis < 3; ++axis) beam.dofs[i++] = dofs.index(node, axis);
+      for (const int dof : frame_dofs(dofs, node)) beam.dofs[i++] = dof;
+    }
+    const Eigen::Vector3d chord =
+        model.nodes[e.node_b].position_m - model.nodes[e.node_a].position_m;
+    if (!beam3d::element_frame(chord, e.orientation, beam.section.frame)) {
+      throw std::invalid_argument("beam " + e.name +
+                                  ": its nodes coincide or its orientation lies along its axis");
+    }
+    if (!(e.area_m2 > 0.0 && e.inertia_y_m4 > 0.0 && e.inertia_z_m4 > 0.0 && e.torsion_m4 > 0.0)) {
+      throw std::invalid_argument("beam " + e.name +
+                                  ": a 3D beam needs area, inertia_y, inertia_z and torsion > 0");
+    }
+    const double youngs = material.youngs_modulus_Pa, shear = e.shear_modulus_Pa;
+    beam.section.stiffness << youngs * e.area_m2, e.shear_factor * shear * e.area_m2,
+        e.shear_factor * shear * e.area_m2, shear * e.torsion_m4, youngs * e.inertia_y_m4,
+        youngs * e.inertia_z_m4;
+    beam.section.reference_length_m = e.reference_length_m;
+    beam.mass_kg = e.mass_kg;
+    beam.rotary_per_length =
+        beam3d::rotary_inertia_per_length(e.mass_kg, e.area_m2, e.inertia_y_m4, e.inertia_z_m4,
+                                          e.reference_length_m, beam.section.frame);
+    beam.expansion_per_C = material.expansion_per_C;
+    beam.curvature_y_per_C_m = e.height_z_m > 0.0 ? material.expansion_per_C / e.height_z_m : 0.0;
+    beam.curvature_z_per_C_m = e.height_y_m > 0.0 ? -material.expansion_per_C / e.height_y_m : 0.0;
+    beam.temperature_change_C = &e.temperature_change_C;
+    beam.gradient_y_C = &e.temperature_gradient_y_C;
+    beam.gradient_z_C = &e.temperature_gradient_z_C;
+  }
+  return std::make_unique<LocalElementGroup<Beam3dRecord>>(std::move(records), model.analysis.mass);
+}
+
+std::vector<std::unique_ptr<Constraint>> make_frame_constraints(const Model& model,
+                                                                const DofMap& dofs) {
+  std::vector<std::unique_ptr<Constraint>> constraints;
+  for (int node = 0; node < model.n_nodes(); ++node) {
+    std::vector<int> frame = frame_dofs(dofs, node);
+    if (frame.empty()) continue;
+    constraints.push_back(
+        std::make_unique<FrameOrthonormality>(std::move(frame), model.nodes[node].name));
+  }
+  return constraints;
+}
+
+void set_initial_frames(const Model& model, const DofMap& dofs, Eigen::VectorXd& q) {
+  for (int node = 0; node < model.n_nodes(); ++node) {
+    const std::vector<int> frame = frame_dofs(dofs, node);
+    if (frame.empty()) continue;
+    for (int k = 0; k < 9; ++k) q[frame[k]] = k % 4 == 0 ? 1.0 : 0.0;  // R11, R22, R33
+  }
+}
+
+}  // namespace deploydyn
