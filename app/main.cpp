@@ -134,7 +134,11 @@ int check_command(const std::string& model_file, const std::vector<std::string>&
                             assembler.dof_map().index(joint.nodes[1], "R11") >= 0;
     joint_rows += model.dimension + (keeps_axis ? 2 : 0);
   }
-  const int driver_rows = assembler.n_equations() - support_rows - joint_rows;
+  int element_rows = 0;  // constraints the elements bring: a 3D beam node's frame RᵀR = I
+  for (const ElementKind* kind : element_kinds()) {
+    for (const auto& c : kind->make_constraints(model, assembler.dof_map())) element_rows += c->n_equations();
+  }
+  const int driver_rows = assembler.n_equations() - support_rows - joint_rows - element_rows;
   double mass = 0.0;
   for (const ElementRef& e : all_elements(model)) mass += e.kind->mass_kg(model, e.index);
   for (const Node& n : model.nodes) mass += n.point_mass_kg;
@@ -175,13 +179,17 @@ int check_command(const std::string& model_file, const std::vector<std::string>&
   if (!model.joints.empty()) {
     fmt::print("joints      {} ({} equations): {}\n", model.joints.size(), joint_rows, names(model.joints));
   }
+  if (element_rows > 0) {
+    fmt::print("frames      {} equations: the orthonormality of the 3D beam nodes' frames\n", element_rows);
+  }
   fmt::print("drivers     {} ({} equations){}{}\n", model.drivers.size(), driver_rows,
              model.drivers.empty() ? "" : ": ", driver_list());
   fmt::print("unknowns    {} coordinates + {} multipliers\n", assembler.n_dofs(), assembler.n_equations());
-  fmt::print("mobility    {} coordinates − {} support equations{} − {} = {} with rigid {}; "
+  fmt::print("mobility    {} coordinates − {} support equations{}{} − {} = {} with rigid {}; "
              "{} after the drivers{}\n",
              assembler.n_dofs(), support_rows,
-             joint_rows > 0 ? fmt::format(" − {} joint equations", joint_rows) : "",
+             joint_rows > 0 ? fmt::format(" − {} joint equations", joint_rows) : std::string(),
+             element_rows > 0 ? fmt::format(" − {} frame equations", element_rows) : std::string(),
              fmt::join(rigid_conditions, " − "), free_motion, elements_word,
              free_motion - driver_rows,
              free_motion - driver_rows == 0 ? " (driven mechanism, kinematically determinate)"
@@ -203,9 +211,13 @@ int check_command(const std::string& model_file, const std::vector<std::string>&
                m.shift_rad2_s2 ? fmt::format("modes nearest ω² = {:g} rad²/s²", *m.shift_rad2_s2) : "lowest modes",
                fmt::join(m.times_s, ", "));
   } else {
-    fmt::print("analysis    {}, t = 0 → {:g} s, step {:g} s ({:.0f} steps), Newmark β = {:g}, γ = {:g}\n",
-               to_string(a.type), a.end_time_s, a.step_s,
-               a.end_time_s / a.step_s, a.integrator.beta, a.integrator.gamma);
+    const IntegratorOptions& i = a.integrator;
+    const std::string integrator =
+        i.kind == IntegratorOptions::Kind::newmark
+            ? fmt::format("Newmark β = {:g}, γ = {:g}", i.beta, i.gamma)
+            : fmt::format("{} ρ∞ = {:g}", to_string(i.kind), i.rho_infinity);
+    fmt::print("analysis    {}, t = 0 → {:g} s, step {:g} s ({:.0f} steps), {}\n", to_string(a.type),
+               a.end_time_s, a.step_s, a.end_time_s / a.step_s, integrator);
   }
   const LinearSolverKind solver = choose_linear_solver(a.linear_solver, assembler.n_unknowns());
   fmt::print("linear      {} for {} unknowns{}\n",
