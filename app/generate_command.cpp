@@ -1,6 +1,7 @@
 #include "generate_command.hpp"
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include <chrono>
 #include <cerrno>
@@ -106,8 +107,12 @@ int write_generated(std::string_view structure, const std::string& text,
   }
   const double seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  fmt::print(stderr, "{}: {}, {} nodes, {} elements, written in {:.2f} s\n", out_file,
-             model.name, model.n_nodes(), n_elements(model), seconds);
+  std::vector<std::string> counts;  // "24 bars", "64 beams"
+  for (const ElementKind* kind : element_kinds()) {
+    if (const int n = kind->n_elements(model); n > 0) counts.push_back(fmt::format("{} {}s", n, kind->name()));
+  }
+  fmt::print(stderr, "{}: {}, {} nodes, {}, written in {:.2f} s\n", out_file, model.name,
+             model.n_nodes(), fmt::join(counts, ", "), seconds);
   return kExitSuccess;
 }
 

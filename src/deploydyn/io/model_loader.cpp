@@ -500,9 +500,13 @@ class ModelReader {
       if (model_.bars[i].name == name) return static_cast<int>(i);
     }
     elements_.find(reference);  // an unknown name: the list of elements
-    reference.fail(fmt::format("element '{}' is not a bar; bar_angle drives a bar (for a pin "
-                               "between beam nodes use a joint and a revolute driver)",
-                               name));
+    std::string_view type = "element";
+    for (const ElementRef& e : all_elements(model_)) {
+      if (e.kind->element_name(model_, e.index) == name) type = e.kind->name();
+    }
+    reference.fail(fmt::format("element '{}' is a {}; a bar_angle driver turns a bar (to turn "
+                               "beams, pin them with a joint and drive it with a revolute driver)",
+                               name, type));
   }
 
   void read_bar_angle(const YamlValue& spec, Driver& driver) const {
