@@ -5,7 +5,9 @@ Sections: the paper's six runs (target < 50 ms) and the four-bar's time per step
 the roofs (time per step, Newton iterations, time per Newton iteration against one numeric
 refactorization (target <= 2x), KLU vs UMFPACK, assembly / residual / solve, memory per bar);
 the fitted scaling exponent of the time per step in the number of bars (target <= 1.2); dense
-vs KLU on small roofs; the writer's cost per value; the study speed-ups. Medians over --repetitions runs (machines are noisy).
+vs KLU on small roofs; the writer's cost per value; the study speed-ups; each element type's
+work per Newton iteration (bar and beam, 2D and 3D); scissor arches of 10 to 1000 units per step.
+Medians over --repetitions runs (machines are noisy).
 """
 import argparse
 import json
@@ -128,6 +130,26 @@ def main():
             print(f"  {roof}, {cases} cases: one after another {one / 1e3:.0f} ms; two at a time "
                   f"{two / 1e3:.0f} ms (speed-up {one / two:.2f}); all at once {every / 1e3:.0f} ms "
                   f"(speed-up {one / every:.2f})")
+
+    print("\n## Elements: one Newton iteration's work per element (force, iteration-matrix block)\n")
+    elements = run(binary, "BM_Element", reps)
+    print("| element | force ns | matrix ns | sum ns | sum / bar of the same dimension |")
+    print("|---|---|---|---|---|")
+    for dimension in (2, 3):
+        bar_sum = None
+        for kind, name in ((0, "bar"), (1, "beam")):
+            force = elements[f"BM_ElementForce/{kind}/{dimension}"]["per_element"] * 1e9
+            matrix = elements[f"BM_ElementMatrix/{kind}/{dimension}"]["per_element"] * 1e9
+            bar_sum = bar_sum or force + matrix
+            print(f"| {name} {dimension}D | {force:.1f} | {matrix:.1f} | {force + matrix:.1f} | "
+                  f"{(force + matrix) / bar_sum:.1f} |")
+
+    print("\n## Scissor arches (polar units, 2 beams per arm): one generalized-α step\n")
+    scissor = run(binary, "BM_ScissorStep", reps)
+    for units in (10, 100, 1000):
+        b = scissor[f"BM_ScissorStep/units:{units}"]
+        print(f"  {units:4} units ({b['beams']:.0f} beams, {b['unknowns']:.0f} unknowns): "
+              f"{to_us(b):.0f} us per step, {b['newton_per_step']:.2f} Newton iterations per step")
     return 0
 
 
