@@ -21,6 +21,7 @@
 #include "deploydyn/io/model_loader.hpp"
 #include "deploydyn/io/text_file.hpp"
 #include "deploydyn/output/output_error.hpp"
+#include "deploydyn/output/plausibility.hpp"
 #include "deploydyn/output/run_to_folder.hpp"
 #include "exit_codes.hpp"
 #include "generate_command.hpp"
@@ -223,6 +224,9 @@ int check_command(const std::string& model_file, const std::vector<std::string>&
   fmt::print("linear      {} for {} unknowns{}\n",
              solver == LinearSolverKind::dense ? "dense LU" : solver == LinearSolverKind::klu ? "KLU (sparse)" : "UMFPACK (sparse)",
              assembler.n_unknowns(), a.linear_solver == LinearSolverKind::automatic ? " (automatic)" : "");
+  if (const std::string warning = integrator_warning(model); !warning.empty()) {
+    fmt::print("warning     {}\n", warning);
+  }
   return 0;
 }
 

@@ -89,6 +89,21 @@ TEST_F(Cli, CheckListsDriverTypes) {
   EXPECT_NE(o.output.find("kinematically determinate"), std::string::npos) << o.output;
 }
 
+// 3D beams bring the orthonormality of their frames as constraints; the trapezoidal rule can
+// leave their multipliers oscillating (docs/theory.md, "Beams in 3D"): check says so, and says
+// nothing for generalized-α or for models without element constraints.
+TEST_F(Cli, CheckWarnsOfTheTrapezoidalRuleOnlyWhereElementsBringConstraints) {
+  const std::string frame = std::string(DEPLOYDYN_SOURCE_DIR) + "/examples/beams/frame3d.yaml";
+  const auto newmark = run_cli("check " + frame + " --set analysis.integrator.rho_inf=1");
+  ASSERT_EQ(newmark.exit_code, 0) << newmark.output;
+  EXPECT_NE(newmark.output.find("warning     beams bring constraints of their own"), std::string::npos)
+      << newmark.output;
+  const auto alpha = run_cli("check " + frame);
+  EXPECT_EQ(alpha.output.find("warning"), std::string::npos) << alpha.output;
+  const auto bars = run_cli("check " + example("general.yaml") + " --set analysis.integrator.type=newmark");
+  EXPECT_EQ(bars.output.find("warning"), std::string::npos) << bars.output;
+}
+
 TEST_F(Cli, HelpExitsCleanly) {
   struct Case {
     const char* arguments;
