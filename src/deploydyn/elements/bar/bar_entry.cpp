@@ -1,15 +1,13 @@
 #include "deploydyn/elements/bar/bar_entry.hpp"
 
+#include "deploydyn/elements/two_node_entry.hpp"
+
 #include <fmt/format.h>
 
-#include <optional>
 #include <utility>
 
 namespace deploydyn::bar {
 namespace {
-
-// Nodes closer than this are at the same position: a bar between them has no direction.
-constexpr double kMinBarLength_m = 1e-12;
 
 constexpr ElementField kFields[] = {
     {"nodes", "", "required", "two different node names, at different initial positions"},
@@ -27,42 +25,19 @@ std::span<const ElementField> entry_fields() { return kFields; }
 void read_entry(const std::string& name, const ElementEntryReader& entry, Model& model) {
   BarElement bar;
   bar.name = name;
-  const std::vector<int> ends = entry.nodes("nodes", 2);
-  bar.node_a = ends[0];
-  bar.node_b = ends[1];
-  const std::string& name_a = model.nodes[bar.node_a].name;
-  if (bar.node_a == bar.node_b) {
-    entry.fail("nodes", fmt::format("a bar needs two different nodes, got '{}' twice", name_a));
-  }
-  const double distance =
-      (model.nodes[bar.node_b].position_m - model.nodes[bar.node_a].position_m).norm();
-  if (distance < kMinBarLength_m) {
-    entry.fail("nodes", fmt::format("zero-length bar: nodes '{}' and '{}' are at the same position",
-                                    name_a, model.nodes[bar.node_b].name));
-  }
+  const TwoNodeEnds ends = read_two_node_ends(entry, model, "bar");
+  bar.node_a = ends.node_a;
+  bar.node_b = ends.node_b;
   bar.area_m2 = entry.number("area", ValueSign::positive, "m²");
   bar.material = entry.material("material");
-  const Material& material = model.materials[bar.material];
-
-  const std::optional<double> length_m = entry.optional_number("length", ValueSign::positive, "m");
-  bar.length_given = length_m.has_value();
-  bar.reference_length_m = length_m.value_or(distance);
-
-  const std::optional<double> mass_kg = entry.optional_number("mass", ValueSign::positive, "kg");
-  bar.mass_given = mass_kg.has_value();
-  if (mass_kg) {
-    bar.mass_kg = *mass_kg;
-  } else if (material.density_kg_m3) {
-    bar.mass_kg = *material.density_kg_m3 * bar.area_m2 * bar.reference_length_m;
-  } else {
-    entry.fail_missing("mass", fmt::format("needs a mass: give 'mass' (kg) here or a 'density' "
-                                           "(kg/m³) in material '{}'",
-                                           material.name));
-  }
-
-  std::optional<TimeFunction> own_change_C = entry.optional_function("dT");
-  bar.temperature_given = own_change_C.has_value();
-  bar.temperature_change_C = own_change_C ? std::move(*own_change_C) : model.temperature_change_C;
+  LengthMassTemperature rest = read_length_mass_and_temperature(
+      entry, model, model.materials[bar.material], bar.area_m2, ends.distance_m);
+  bar.reference_length_m = rest.reference_length_m;
+  bar.length_given = rest.length_given;
+  bar.mass_kg = rest.mass_kg;
+  bar.mass_given = rest.mass_given;
+  bar.temperature_change_C = std::move(rest.temperature_change_C);
+  bar.temperature_given = rest.temperature_given;
   model.bars.push_back(std::move(bar));
 }
 

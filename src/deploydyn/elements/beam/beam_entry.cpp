@@ -1,5 +1,7 @@
 #include "deploydyn/elements/beam/beam_entry.hpp"
 
+#include "deploydyn/elements/two_node_entry.hpp"
+
 #include <fmt/format.h>
 
 #include <Eigen/Geometry>
@@ -10,8 +12,6 @@
 namespace deploydyn::beam {
 namespace {
 
-// Nodes closer than this are at the same position: a beam between them has no direction.
-constexpr double kMinBeamLength_m = 1e-12;
 // E / G of an isotropic material with ν = 0.3: G = E / (2 (1 + ν)).
 constexpr double kYoungsToShearModulus = 2.6;
 // |orientation × e1| / |orientation| below this: the orientation is parallel to the beam.
@@ -73,20 +73,13 @@ void read_entry(const std::string& name, const ElementEntryReader& entry, Model&
   }
   BeamElement beam;
   beam.name = name;
-  const std::vector<int> ends = entry.nodes("nodes", 2);
-  beam.node_a = ends[0];
-  beam.node_b = ends[1];
+  const TwoNodeEnds ends = read_two_node_ends(entry, model, "beam");
+  beam.node_a = ends.node_a;
+  beam.node_b = ends.node_b;
   const std::string& name_a = model.nodes[beam.node_a].name;
-  if (beam.node_a == beam.node_b) {
-    entry.fail("nodes", fmt::format("a beam needs two different nodes, got '{}' twice", name_a));
-  }
   const Eigen::Vector3d chord =
       model.nodes[beam.node_b].position_m - model.nodes[beam.node_a].position_m;
-  const double distance = chord.norm();
-  if (distance < kMinBeamLength_m) {
-    entry.fail("nodes", fmt::format("zero-length beam: nodes '{}' and '{}' are at the same position",
-                                    name_a, model.nodes[beam.node_b].name));
-  }
+  const double distance = ends.distance_m;
   beam.area_m2 = entry.number("area", ValueSign::positive, "m²");
   beam.inertia_z_m4 = entry.number("inertia_z", ValueSign::positive, "m⁴");
   if (three_d) {
@@ -116,25 +109,14 @@ void read_entry(const std::string& name, const ElementEntryReader& entry, Model&
                   beam.gradient_z_given, beam.height_z_m);
   }
 
-  const std::optional<double> length_m = entry.optional_number("length", ValueSign::positive, "m");
-  beam.length_given = length_m.has_value();
-  beam.reference_length_m = length_m.value_or(distance);
-
-  const std::optional<double> mass_kg = entry.optional_number("mass", ValueSign::positive, "kg");
-  beam.mass_given = mass_kg.has_value();
-  if (mass_kg) {
-    beam.mass_kg = *mass_kg;
-  } else if (material.density_kg_m3) {
-    beam.mass_kg = *material.density_kg_m3 * beam.area_m2 * beam.reference_length_m;
-  } else {
-    entry.fail_missing("mass", fmt::format("needs a mass: give 'mass' (kg) here or a 'density' "
-                                           "(kg/m³) in material '{}'",
-                                           material.name));
-  }
-
-  std::optional<TimeFunction> own_change_C = entry.optional_function("dT");
-  beam.temperature_given = own_change_C.has_value();
-  beam.temperature_change_C = own_change_C ? std::move(*own_change_C) : model.temperature_change_C;
+  LengthMassTemperature rest =
+      read_length_mass_and_temperature(entry, model, material, beam.area_m2, distance);
+  beam.reference_length_m = rest.reference_length_m;
+  beam.length_given = rest.length_given;
+  beam.mass_kg = rest.mass_kg;
+  beam.mass_given = rest.mass_given;
+  beam.temperature_change_C = std::move(rest.temperature_change_C);
+  beam.temperature_given = rest.temperature_given;
   model.beams.push_back(std::move(beam));
 }
 

@@ -1,0 +1,39 @@
+#pragma once
+// What every two-node element's entry (the bar's, the beam's) reads alike: its end nodes, and
+// its reference length, mass and own ΔT(t). A type reads its ends first, then its section and
+// material, then the rest (so the first error a file has is reported first, in key order).
+
+#include <string_view>
+
+#include "deploydyn/elements/element_entry.hpp"
+#include "deploydyn/model/model.hpp"
+
+namespace deploydyn {
+
+struct TwoNodeEnds {
+  int node_a = 0, node_b = 0;  // indices into Model::nodes
+  double distance_m = 0.0;     // of the nodes' initial positions
+};
+
+// `nodes`: two different nodes at different positions; `type` names the element type in the
+// messages ("bar").
+TwoNodeEnds read_two_node_ends(const ElementEntryReader& entry, const Model& model,
+                               std::string_view type);
+
+struct LengthMassTemperature {
+  double reference_length_m = 0.0;  // L0: `length`, or the ends' distance
+  bool length_given = false;
+  double mass_kg = 0.0;             // `mass`, or density · area · L0
+  bool mass_given = false;
+  TimeFunction temperature_change_C;  // `dT`, or the model-wide ΔT
+  bool temperature_given = false;
+};
+
+// `length`, `mass` and `dT`. Without `mass`, the material's density · area_m2 · L0; an error
+// naming both when neither is given.
+LengthMassTemperature read_length_mass_and_temperature(const ElementEntryReader& entry,
+                                                       const Model& model,
+                                                       const Material& material, double area_m2,
+                                                       double distance_m);
+
+}  // namespace deploydyn
