@@ -7,11 +7,20 @@
 // Each constraint owns a small block of equation rows; the assembler places it.
 
 #include <Eigen/Core>
+#include <initializer_list>
 #include <span>
 #include <string>
 #include <vector>
 
 namespace deploydyn {
+
+// Several lists of unknowns (a node's position, its frame, ...) as one, in order: what a
+// constraint on several nodes passes as its dofs().
+inline std::vector<int> concatenate(std::initializer_list<const std::vector<int>*> parts) {
+  std::vector<int> all;
+  for (const std::vector<int>* part : parts) all.insert(all.end(), part->begin(), part->end());
+  return all;
+}
 
 class Constraint {
  public:

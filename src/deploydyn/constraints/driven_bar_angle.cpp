@@ -4,20 +4,11 @@
 #include <stdexcept>
 
 namespace deploydyn {
-namespace {
-
-std::vector<int> concatenate(std::vector<int> a, const std::vector<int>& b) {
-  a.insert(a.end(), b.begin(), b.end());
-  return a;
-}
-
-}  // namespace
-
 DrivenBarAngle::DrivenBarAngle(std::vector<int> pivot_dofs, std::vector<int> tip_dofs,
                                const Eigen::Vector3d& pivot_position,
                                const Eigen::Vector3d& tip_position, const Eigen::Vector3d& axis,
                                DriverMotion motion, std::string label)
-    : DrivingConstraint(pivot_dofs.size() == 2 ? 1 : 2, concatenate(pivot_dofs, tip_dofs)),
+    : DrivingConstraint(pivot_dofs.size() == 2 ? 1 : 2, concatenate({&pivot_dofs, &tip_dofs})),
       axis_(axis.normalized()),
       motion_(std::move(motion)),
       label_(std::move(label)) {

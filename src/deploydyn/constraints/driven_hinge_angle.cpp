@@ -10,12 +10,6 @@ namespace {
 // An arm shorter across the axis than this share of its length leaves the angle undefined.
 constexpr double kSmallestProjectedShare = 1e-8;
 
-std::vector<int> concatenate(std::initializer_list<const std::vector<int>*> parts) {
-  std::vector<int> all;
-  for (const std::vector<int>* part : parts) all.insert(all.end(), part->begin(), part->end());
-  return all;
-}
-
 Eigen::Matrix3d cross_matrix(const Eigen::Vector3d& a) {
   Eigen::Matrix3d m;
   m << 0.0, -a.z(), a.y(), a.z(), 0.0, -a.x(), -a.y(), a.x(), 0.0;

@@ -8,18 +8,9 @@
 #include "deploydyn/constraints/pin_joint.hpp"
 
 namespace deploydyn {
-namespace {
-
-std::vector<int> concatenate(std::vector<int> a, const std::vector<int>& b) {
-  a.insert(a.end(), b.begin(), b.end());
-  return a;
-}
-
-}  // namespace
-
 DrivenRevolute::DrivenRevolute(std::vector<int> rotation_a, std::vector<int> rotation_b,
                                const Eigen::Vector3d& axis, DriverMotion motion, std::string label)
-    : DrivingConstraint(1, concatenate(rotation_a, rotation_b)),
+    : DrivingConstraint(1, concatenate({&rotation_a, &rotation_b})),
       spatial_(rotation_a.size() == 9),
       motion_(std::move(motion)),
       label_(std::move(label)) {

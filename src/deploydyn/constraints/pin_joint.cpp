@@ -6,16 +6,6 @@
 #include "deploydyn/constraints/frame_dot.hpp"
 
 namespace deploydyn {
-namespace {
-
-std::vector<int> concatenate(std::initializer_list<const std::vector<int>*> parts) {
-  std::vector<int> all;
-  for (const std::vector<int>* part : parts) all.insert(all.end(), part->begin(), part->end());
-  return all;
-}
-
-}  // namespace
-
 Eigen::Vector3d normal_to(const Eigen::Vector3d& axis) {
   Eigen::Index least = 0;
   axis.cwiseAbs().minCoeff(&least);
