@@ -23,6 +23,7 @@
 #include "deploydyn/solvers/generalized_alpha.hpp"
 #include "support/allocation_counter.hpp"
 #include "support/cold_roof.hpp"
+#include "support/stepping_run.hpp"
 
 namespace deploydyn {
 namespace {
@@ -35,27 +36,16 @@ double heap_in_use_bytes() {
   return static_cast<double>(info.uordblks + info.hblkhd);
 }
 
-// A roof ready to step: model, assembler, analysed back end, consistent initial state.
-struct RoofRun {
-  Model model;
-  std::unique_ptr<Assembler> assembler;
-  std::unique_ptr<LinearSystem> system;
-  std::unique_ptr<GeneralizedAlphaIntegrator> integrator;
-  MotionState state;
+// A roof ready to step, its drivers turning at the peak rate from t = 0, with back end `solver`.
+struct RoofRun : bench::SteppingRun {
+  RoofRun(int units, int trusses, LinearSolverKind solver)
+      : bench::SteppingRun(roof_model(units, trusses, solver)) {}
 
-  RoofRun(int units, int trusses, LinearSolverKind solver) {
-    model = bench::cold_pinned_roof(units, trusses);
+  static Model roof_model(int units, int trusses, LinearSolverKind solver) {
+    Model model = bench::cold_pinned_roof(units, trusses);
     for (Driver& driver : model.drivers) driver.profile = TimeFunction::constant(kRoofPeakRate_rad_s);
     model.analysis.linear_solver = solver;
-    assembler = std::make_unique<Assembler>(model);
-    system = make_linear_system(*assembler);
-    integrator = std::make_unique<GeneralizedAlphaIntegrator>(*assembler, model.analysis);
-    state.q = assembler->initial_coordinates();
-    state.v = Eigen::VectorXd::Zero(assembler->n_dofs());
-    state.a = state.v;
-    state.pseudo_a = state.v;
-    state.lambda = Eigen::VectorXd::Zero(assembler->n_equations());
-    if (!initialise_rates(*assembler, *system, state).ok) throw std::runtime_error("roof: no initial rates");
+    return model;
   }
   void assemble() const {
     assembler->iteration_matrix(state.q, state.time_s, 1.0, state.lambda, {1e6, 1.0, 1e9}, *system);
