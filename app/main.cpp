@@ -139,7 +139,8 @@ int check_command(const std::string& model_file, const std::vector<std::string>&
   for (const ElementKind* kind : element_kinds()) {
     for (const auto& c : kind->make_constraints(model, assembler.dof_map())) element_rows += c->n_equations();
   }
-  const int driver_rows = assembler.n_equations() - support_rows - joint_rows - element_rows;
+  const int lock_rows = assembler.n_switched_equations();
+  const int driver_rows = assembler.n_equations() - support_rows - joint_rows - element_rows - lock_rows;
   double mass = 0.0;
   for (const ElementRef& e : all_elements(model)) mass += e.kind->mass_kg(model, e.index);
   for (const Node& n : model.nodes) mass += n.point_mass_kg;
@@ -159,6 +160,7 @@ int check_command(const std::string& model_file, const std::vector<std::string>&
     for (int e = 0; e < n; ++e) element_names.push_back(kinds[g]->element_name(model, e));
     element_lists.push_back(fmt::format("{} {}: {}", n, plural, fmt::join(element_names, ", ")));
     const int conditions = assembler.element_groups()[g]->n_rigid_body_conditions();
+    if (conditions == 0) continue;  // hinges: no body of their own
     rigid_conditions.push_back(conditions == n ? fmt::format("{} {}", n, plural)
                                                : fmt::format("{} for {} {}", conditions, n, plural));
     kinds_present.push_back(plural);
@@ -182,6 +184,11 @@ int check_command(const std::string& model_file, const std::vector<std::string>&
   }
   if (element_rows > 0) {
     fmt::print("frames      {} equations: the orthonormality of the 3D beam nodes' frames\n", element_rows);
+  }
+  if (lock_rows > 0) {
+    fmt::print("locks       {} hinge locks, switched on while a hinge is {}\n", lock_rows,
+               model.drivers.empty() ? "held (until released at t = 0), sticking, at a stop or latched"
+                                     : "at a stop or latched (with drivers hinges start free and do not stick)");
   }
   fmt::print("drivers     {} ({} equations){}{}\n", model.drivers.size(), driver_rows,
              model.drivers.empty() ? "" : ": ", driver_list());

@@ -42,6 +42,8 @@ class Assembler {
     return n_dofs() - (n_equations() - n_switched_equations_) - n_rigid_body_conditions();
   }
   int n_rigid_body_conditions() const;
+  // Rows of the switched constraints (hinge locks), the last of the n_equations().
+  int n_switched_equations() const { return n_switched_equations_; }
 
   Eigen::VectorXd initial_coordinates() const;
 
