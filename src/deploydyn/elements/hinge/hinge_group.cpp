@@ -17,6 +17,7 @@ enum HistorySlot : int {
   kLockTorque,   // λ of the lock at the step's end (N·m, resisting θ growing); 0 when free
   kLossTorque,   // damper + friction + lock torque at the step's end (resisting): the trapezoid's
   kLatchedAt,    // time the latch locked (s); −1 before
+  kFrictionSwitched,  // 1 while the step under way is redone after this hinge stuck or slipped
   kHistorySlots
 };
 
@@ -297,12 +298,16 @@ class HingeGroup final : public ElementGroup {
         if (e.stop_min_rad && angle1 < *e.stop_min_rad) return to(HingeMode::stop_min, *e.stop_min_rad, "stop", *e.stop_min_rad);
         if (e.stop_max_rad && angle1 > *e.stop_max_rad) return to(HingeMode::stop_max, *e.stop_max_rad, "stop", *e.stop_max_rad);
         const double slip = before[kSlip];
-        if (e.friction_coefficient > 0.0 && slip != 0.0 && !driven_) {
+        // Once per step: a hinge that broke loose in this step slides to its end (measured on a
+        // falling chain of 100 hinged bars: without it, hinges went back and forth between
+        // sticking and slipping up to the 8 redos of nearly every step, 20 Newton iterations).
+        if (e.friction_coefficient > 0.0 && slip != 0.0 && !driven_ && before[kFrictionSwitched] == 0.0) {
           const double rate0 = r.kinematics(r.gather(ends.q_before)).gradient.dot(r.gather(ends.v_before));
           const double rate1 = k1.gradient.dot(r.gather(ends.v_after));
           if (rate1 * slip < 0.0) {  // came to rest inside the step: stick where θ̇ = 0
             const double share = rate0 != rate1 ? std::clamp(rate0 / (rate0 - rate1), 0.0, 1.0) : 0.0;
             const double rest = angle0 + share * (angle1 - angle0);
+            after[kFrictionSwitched] = 1.0;
             return to(HingeMode::stuck, rest, "stuck", rest);
           }
         }
@@ -310,8 +315,9 @@ class HingeGroup final : public ElementGroup {
       }
       case HingeMode::stuck: {
         const double capacity = e.friction_coefficient * e.pin_radius_m * r.pin_force(q1, t).magnitude_N;
-        if (std::abs(lock) <= capacity) return false;
+        if (std::abs(lock) <= capacity || before[kFrictionSwitched] != 0.0) return false;
         after[kSlip] = sign_of(lock);  // it slides the way the lock was holding it from
+        after[kFrictionSwitched] = 1.0;
         return to(HingeMode::free, before[kLockAngle], "slipping", -lock);
       }
       case HingeMode::stop_min:  // a stop only pushes: λ < 0 resists θ falling
@@ -348,6 +354,7 @@ class HingeGroup final : public ElementGroup {
     after[kDissipated] = before[kDissipated] + 0.5 * (before[kLossTorque] + loss) * (k1.angle_rad - angle0);
     after[kLossTorque] = loss;
     after[kLockTorque] = lock;
+    after[kFrictionSwitched] = 0.0;
     // The direction friction resists in the next step: the hinge's motion now (with drivers,
     // also through a reversal, as no hinge sticks then).
     const double rate1 = k1.gradient.dot(v1);
