@@ -2,6 +2,7 @@
 
 #include "deploydyn/elements/bar/bar_kind.hpp"
 #include "deploydyn/elements/beam/beam_kind.hpp"
+#include "deploydyn/elements/cable/cable_kind.hpp"
 #include "deploydyn/model/model.hpp"
 
 namespace deploydyn {
@@ -10,6 +11,7 @@ std::span<const ElementKind* const> element_kinds() {
   static const ElementKind* const kKinds[] = {
       &bar_kind(),
       &beam_kind(),
+      &cable_kind(),
   };
   return kKinds;
 }

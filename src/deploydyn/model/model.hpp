@@ -11,6 +11,7 @@
 
 #include "deploydyn/elements/bar/bar_element.hpp"
 #include "deploydyn/elements/beam/beam_element.hpp"
+#include "deploydyn/elements/cable/cable_element.hpp"
 #include "deploydyn/model/joint.hpp"
 #include "deploydyn/model/time_function.hpp"
 #include "deploydyn/util/name_table.hpp"
@@ -214,6 +215,7 @@ struct Model {
   std::vector<Material> materials;
   std::vector<BarElement> bars;
   std::vector<BeamElement> beams;
+  std::vector<CableElement> cables;
   std::vector<FixedNode> supports;
   std::vector<Joint> joints;
   std::vector<Driver> drivers;
@@ -226,6 +228,7 @@ struct Model {
   int n_nodes() const { return static_cast<int>(nodes.size()); }
   int n_bars() const { return static_cast<int>(bars.size()); }
   int n_beams() const { return static_cast<int>(beams.size()); }
+  int n_cables() const { return static_cast<int>(cables.size()); }
 };
 
 }  // namespace deploydyn
