@@ -197,3 +197,27 @@ def test_pin_joint_and_hinge_angle_driver_move_a_two_bar_chain():
     rise = 1 - math.cos(turn)
     assert result["x.D"][-1] == pytest.approx(result["x.C"][-1] + math.sqrt(1 - rise**2), abs=1e-9)
     assert "torque.arm" in result.columns
+
+
+def test_a_pretensioned_cable_between_pins_goes_slack_when_heated():
+    """docs/theory.md "Cables" (C7): slack above ΔT* = ε*/α, ε*²(1 + 2ε*) = (T0/EA)²."""
+    tension, area = 2000.0, 1.0e-5
+    tau = tension / (E * area)
+    strain = tau
+    for _ in range(50):  # Newton on ε²(1 + 2ε) − τ², from above the root
+        strain -= (strain * strain * (1 + 2 * strain) - tau * tau) / (2 * strain + 6 * strain * strain)
+    slack_dT = strain / ALPHA
+    model = (deploydyn.ModelBuilder("heated cable")
+             .node("A", 0, 0).node("B", 1.5, 0)
+             .material("steel", E=E, alpha=ALPHA, density=7850)
+             .cable("c", "A", "B", area=area, material="steel", pretension=tension)
+             .support("A").support("B")
+             .thermal(deploydyn.table([(0, 0), (1, 2 * slack_dT)]))
+             .analysis(type="static", end=1.0, step=0.2)
+             .build())
+    result = model.run(check=True)
+    assert result["force.c"][0] == pytest.approx(tension, rel=1e-12)
+    # ε_m = ε − αΔT with the length held: zero at ΔT*. At t = 0.2, ΔT = 0.4 ΔT*.
+    assert result["mstrain.c"][1] / ALPHA + 0.4 * slack_dT == pytest.approx(slack_dT, rel=1e-9)
+    assert list(result["slack.c"]) == [0, 0, 0, 1, 1, 1]
+    assert all(result["force.c"][:3] > 0) and list(result["force.c"][3:]) == [0, 0, 0]
