@@ -41,7 +41,7 @@ struct RoofSnapshot {
 void BM_MakeStepRecord(benchmark::State& state) {
   const RoofSnapshot roof;
   for (auto _ : state) {
-    StepRecord record = make_step_record(*roof.assembler, roof.state, 0.0);
+    StepRecord record = make_step_record(*roof.assembler, roof.state);
     benchmark::DoNotOptimize(record.elements.data());
   }
   state.counters["ns_per_value"] = benchmark::Counter(
@@ -51,7 +51,7 @@ BENCHMARK(BM_MakeStepRecord);
 
 void BM_HistoryRow(benchmark::State& state) {
   const RoofSnapshot roof;
-  const StepRecord record = make_step_record(*roof.assembler, roof.state, 0.0);
+  const StepRecord record = make_step_record(*roof.assembler, roof.state);
   const std::filesystem::path file =
       std::filesystem::temp_directory_path() / "deploydyn_bench_history.csv";
   {

@@ -43,7 +43,7 @@ TEST_F(Cli, RunWritesTheContractFiles) {
   const std::string history = read_file(folder_ / "history.csv");
   EXPECT_EQ(history.substr(0, history.find('\n')),
             "t,x.A,y.A,x.B,y.B,x.C,y.C,x.D,y.D,strain.1,mstrain.1,force.1,strain.2,mstrain.2,"
-            "force.2,strain.3,mstrain.3,force.3,torque.motor,kinetic,strain_energy,external_work");
+            "force.2,strain.3,mstrain.3,force.3,torque.motor,kinetic,strain_energy,external_work,dissipated");
   // t = 0 and every 5 ms to 50 ms.
   EXPECT_EQ(std::count(history.begin(), history.end(), '\n'), 1 + 11);
 

@@ -103,7 +103,7 @@ class OneCable {
   }
   std::vector<double> results(const Eigen::VectorXd& q, double t) const {
     std::vector<double> out(cable_kind().quantities(model_.dimension).size());
-    group_->results(0, q, t, 1.0, out);
+    group_->results(0, ResultPoint{q, t}, out);
     return out;
   }
 

@@ -153,7 +153,19 @@ Assembler::Assembler(const Model& model) : model_(model), dofs_(model) {
     first_row_.push_back(n_equations_);
     n_equations_ += c->n_equations();
   }
+  for (const auto& group : groups_) {  // last: switched on and off between steps
+    for (auto& c : group->make_switched_constraints(n_equations_)) {
+      first_row_.push_back(n_equations_);
+      n_equations_ += c->n_equations();
+      n_switched_equations_ += c->n_equations();
+      constraints_.push_back(std::move(c));
+    }
+  }
   for (int index : driver_constraint_) driver_rows_.push_back(first_row_[index]);
+  for (const auto& group : groups_) {
+    history_offset_.push_back(n_history_);
+    n_history_ += group->n_history();
+  }
 
   for (const auto& group : groups_) n_matrix_entries_ += group->n_matrix_entries();
   for (const Node& node : model.nodes) n_matrix_entries_ += node.point_mass_kg != 0.0 ? model.dimension : 0;
@@ -162,7 +174,8 @@ Assembler::Assembler(const Model& model) : model_(model), dofs_(model) {
     if (c->n_equations() > kMaxConstraintEquations || n_local > kMaxConstraintDofs) {
       throw std::logic_error("a constraint touches more unknowns than the assembler's local buffers hold");
     }
-    n_matrix_entries_ += 2 * c->n_equations() * n_local + (c->nonlinear() ? n_local * n_local : 0);
+    n_matrix_entries_ += 2 * c->n_equations() * n_local + (c->nonlinear() ? n_local * n_local : 0) +
+                         (c->switchable() ? c->n_equations() : 0);
   }
   Eigen::VectorXd unit = Eigen::VectorXd::Ones(n_dofs()), row_sums;
   mass_times(unit, row_sums);  // row sums of M ≥ its diagonal, all entries being ≥ 0
@@ -251,6 +264,79 @@ void Assembler::mass_times(const Eigen::VectorXd& a, Eigen::VectorXd& out) const
       out[i] += model_.nodes[node].point_mass_kg * a[i];
     }
   }
+}
+
+void Assembler::rate_force(const Eigen::VectorXd& q, const Eigen::VectorXd& v, double t,
+                           Eigen::VectorXd& f) const {
+  f.setZero(n_dofs());
+  for (const auto& group : groups_) group->add_rate_force(q, v, t, f);
+}
+
+bool Assembler::has_rate_forces() const {
+  return std::any_of(groups_.begin(), groups_.end(), [](const auto& g) { return g->has_rate_forces(); });
+}
+
+void Assembler::switched_constraint_force(const Eigen::VectorXd& q, double t,
+                                          const Eigen::VectorXd& lambda, Eigen::VectorXd& f) const {
+  f.setZero(n_dofs());
+  LocalVector phi;
+  LocalJacobian jacobian;
+  for (std::size_t c = 0; c < constraints_.size(); ++c) {
+    const Constraint& con = *constraints_[c];
+    if (!con.switchable()) continue;
+    const std::span<const int> dofs = con.dofs();
+    phi.resize(con.n_equations());
+    jacobian.resize(con.n_equations(), static_cast<Eigen::Index>(dofs.size()));
+    con.evaluate(q, t, phi, jacobian);
+    const auto multipliers = lambda.segment(first_row_[c], con.n_equations());
+    for (std::size_t i = 0; i < dofs.size(); ++i) f[dofs[i]] += jacobian.col(i).dot(multipliers);
+  }
+}
+
+Eigen::VectorXd Assembler::initial_history() const {
+  Eigen::VectorXd history = Eigen::VectorXd::Zero(n_history_);
+  for (std::size_t g = 0; g < groups_.size(); ++g) groups_[g]->initial_history(history_slice(history, g));
+  return history;
+}
+
+void Assembler::use_history(const Eigen::VectorXd& history) const {
+  for (std::size_t g = 0; g < groups_.size(); ++g) groups_[g]->use_history(history_slice(history, g));
+}
+
+StepVerdict Assembler::end_step(const StepEnds& ends, const Eigen::VectorXd& history_before,
+                                Eigen::VectorXd& history_after, std::vector<ElementEvent>& events,
+                                std::vector<int>& event_groups) const {
+  history_after.resize(n_history_);
+  std::vector<StepVerdict> verdicts;
+  for (std::size_t g = 0; g < groups_.size(); ++g) {
+    const std::size_t first = events.size();
+    verdicts.push_back(groups_[g]->end_step(ends, history_slice(history_before, g),
+                                            history_slice(history_after, g), events));
+    event_groups.insert(event_groups.end(), events.size() - first, static_cast<int>(g));
+  }
+  if (std::find(verdicts.begin(), verdicts.end(), StepVerdict::redo) == verdicts.end()) {
+    return StepVerdict::accept;
+  }
+  // The step is taken again: the groups that accepted it start again from where they were.
+  for (std::size_t g = 0; g < groups_.size(); ++g) {
+    if (verdicts[g] == StepVerdict::accept) {
+      const std::span<const double> before = history_slice(history_before, g);
+      std::copy(before.begin(), before.end(), history_slice(history_after, g).begin());
+    }
+  }
+  return StepVerdict::redo;
+}
+
+int Assembler::n_latches() const {
+  int n = 0;
+  for (const auto& group : groups_) n += group->n_latches();
+  return n;
+}
+
+int Assembler::n_latched(const Eigen::VectorXd& history) const {
+  int n = 0;
+  for (std::size_t g = 0; g < groups_.size(); ++g) n += groups_[g]->n_latched(history_slice(history, g));
+  return n;
 }
 
 void Assembler::constraints(const Eigen::VectorXd& q, double t, Eigen::VectorXd& phi) const {
@@ -355,6 +441,10 @@ void Assembler::for_each_matrix_block(const Eigen::VectorXd& q, double t,
       con.add_hessian_term(q, t, lambda.segment(first_row_[c], n_eq), hessian);
       emit(con.dofs(), con.dofs(), w.stiffness * hessian);
     }
+    if (con.switchable()) {  // switched off: its rows read s Δλ̂ = 0 (constraint.hpp)
+      const Eigen::Matrix<double, 1, 1> diagonal(con.active() ? 0.0 : w.constraint_scale);
+      for (int k = 0; k < n_eq; ++k) emit(row_span.subspan(k, 1), row_span.subspan(k, 1), diagonal);
+    }
   }
 }
 
@@ -368,7 +458,8 @@ void Assembler::iteration_matrix(const Eigen::VectorXd& q, double t, double ther
   const std::span<double> values = system.values();
   const int* slot = system.slots().data();
   for (const auto& group : groups_) {
-    group->add_iteration_matrix(q, t, thermal_factor, {w.stiffness, w.mass}, values, slot);
+    group->add_iteration_matrix(q, t, thermal_factor, {w.stiffness, w.mass, w.damping, w.rates},
+                                values, slot);
   }
   for_each_matrix_block(q, t, lambda, w,
                         [&](std::span<const int> rows, std::span<const int> cols, const auto& block) {
@@ -384,7 +475,7 @@ std::vector<MatrixEntry> Assembler::matrix_entries() const {
   const Eigen::VectorXd q = initial_coordinates();
   const Eigen::VectorXd lambda = Eigen::VectorXd::Zero(n_equations());
   for (const auto& group : groups_) group->append_matrix_entries(entries);
-  for_each_matrix_block(q, 0.0, lambda, {1.0, 1.0, 1.0},
+  for_each_matrix_block(q, 0.0, lambda, {1.0, 1.0, 1.0, 0.0, nullptr},
                         [&](std::span<const int> rows, std::span<const int> cols, const auto&) {
                           for (const int col : cols) {
                             for (const int row : rows) entries.push_back({row, col});
@@ -409,7 +500,7 @@ std::vector<double> Assembler::element_quantity(std::string_view name, const Eig
     if (k < 0) continue;
     results.resize(kinds[g]->quantities(model_.dimension).size());
     for (int e = 0; e < groups_[g]->n_elements(); ++e) {
-      groups_[g]->results(e, q, t, thermal_factor, results);
+      groups_[g]->results(e, {q, t, thermal_factor}, results);
       values.push_back(results[static_cast<std::size_t>(k)]);
     }
   }
@@ -419,7 +510,9 @@ std::vector<double> Assembler::element_quantity(std::string_view name, const Eig
 double Assembler::shortest_element_m() const {
   double shortest = std::numeric_limits<double>::infinity();
   for (const auto& group : groups_) {
-    for (int e = 0; e < group->n_elements(); ++e) shortest = std::min(shortest, group->reference_length_m(e));
+    for (int e = 0; e < group->n_elements(); ++e) {
+      if (group->reference_length_m(e) > 0.0) shortest = std::min(shortest, group->reference_length_m(e));
+    }
   }
   return std::isfinite(shortest) ? shortest : 1.0;
 }

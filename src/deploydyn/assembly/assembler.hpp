@@ -37,7 +37,10 @@ class Assembler {
   // Grübler count with the elements taken as rigid: coordinates − constraint equations − the
   // elements' rigid-body conditions (1 per bar). Positive: a mechanism with free motions; 0:
   // driven and determinate; negative: redundant.
-  int rigid_mobility() const { return n_dofs() - n_equations() - n_rigid_body_conditions(); }
+  // Switched constraints (hinge locks) do not count: they hold only now and then.
+  int rigid_mobility() const {
+    return n_dofs() - (n_equations() - n_switched_equations_) - n_rigid_body_conditions();
+  }
   int n_rigid_body_conditions() const;
 
   Eigen::VectorXd initial_coordinates() const;
@@ -58,6 +61,39 @@ class Assembler {
   void external_force(double t, Eigen::VectorXd& f) const;
   void mass_times(const Eigen::VectorXd& a, Eigen::VectorXd& out) const;  // M a
 
+  // The forces that depend on the rates (dampers, sliding friction), f_d(q, q̇, t).
+  void rate_force(const Eigen::VectorXd& q, const Eigen::VectorXd& v, double t,
+                  Eigen::VectorXd& f) const;
+  bool has_rate_forces() const;
+  // Bᵀλ of the switched constraints (a latch or end stop engaging, a hinge sticking): their
+  // work is energy lost, like the rate forces', not work done on the structure
+  // (solvers/analysis.cpp: the energy balance).
+  void switched_constraint_force(const Eigen::VectorXd& q, double t, const Eigen::VectorXd& lambda,
+                                 Eigen::VectorXd& f) const;
+
+  // The elements' history (ElementGroup::n_history), each group its slice of
+  // MotionState::history, in the order of element_groups().
+  int n_history() const { return n_history_; }
+  Eigen::VectorXd initial_history() const;
+  // (Empty when `history` is, as in a state no run has stepped: a group then reads its initial.)
+  std::span<const double> history_slice(const Eigen::VectorXd& history, std::size_t group) const {
+    if (history.size() != n_history_) return {};
+    return {history.data() + history_offset_[group], static_cast<std::size_t>(groups_[group]->n_history())};
+  }
+  std::span<double> history_slice(Eigen::VectorXd& history, std::size_t group) const {
+    return {history.data() + history_offset_[group], static_cast<std::size_t>(groups_[group]->n_history())};
+  }
+  // Before every attempt at a step: the modes the step starts from (ElementGroup::use_history).
+  void use_history(const Eigen::VectorXd& history) const;
+  // After a converged step: the history at its end, the events (with the index of the group
+  // each came from), and whether a mode switched so that the step must be redone.
+  StepVerdict end_step(const StepEnds& ends, const Eigen::VectorXd& history_before,
+                       Eigen::VectorXd& history_after, std::vector<ElementEvent>& events,
+                       std::vector<int>& event_groups) const;
+  // Latches in the model, and how many have locked in `history`.
+  int n_latches() const;
+  int n_latched(const Eigen::VectorXd& history) const;
+
   void constraints(const Eigen::VectorXd& q, double t, Eigen::VectorXd& phi) const;
   void constraint_force(const Eigen::VectorXd& q, double t, const Eigen::VectorXd& lambda,
                         Eigen::VectorXd& f) const;  // Bᵀλ
@@ -76,10 +112,13 @@ class Assembler {
   bool mass_definite_on_constraints_only() const { return n_element_constraints_ > 0; }
 
   // Weights of the iteration matrix [c_M M + c_K (K + H(λ)), s Bᵀ; s B, 0].
+  // With rates given, also c_D ∂f_d/∂q̇ of the rate forces (and their c_K ∂f_d/∂q).
   struct MatrixWeights {
     double mass = 0.0;
     double stiffness = 1.0;
     double constraint_scale = 1.0;
+    double damping = 0.0;
+    const Eigen::VectorXd* rates = nullptr;
   };
   // Writes the values into `system`, which must have been analysed with matrix_entries()
   // (assembly/linear_system_factory.hpp does that).
@@ -99,7 +138,12 @@ class Assembler {
   // with every ΔT scaled by `thermal_factor` as in internal_force.
   void element_results(int group, int element, const Eigen::VectorXd& q, double t,
                        double thermal_factor, std::span<double> out) const {
-    groups_[group]->results(element, q, t, thermal_factor, out);
+    groups_[group]->results(element, {q, t, thermal_factor}, out);
+  }
+  // The same at a state of a run: with its rates and the elements' history.
+  void element_results(int group, int element, const Eigen::VectorXd& q, const Eigen::VectorXd& v,
+                       const Eigen::VectorXd& history, double t, std::span<double> out) const {
+    groups_[group]->results(element, {q, t, 1.0, &v, history_slice(history, group)}, out);
   }
   // The quantity named `name` (e.g. "axial_force_N") of every element whose type reports it,
   // in the order of elements/element_kinds.hpp.
@@ -139,7 +183,10 @@ class Assembler {
   std::vector<int> driver_constraint_;                    // [driver] → index in constraints_
   int n_equations_ = 0;
   int n_element_constraints_ = 0;  // constraints the element kinds brought
+  int n_switched_equations_ = 0;   // rows of the groups' switched constraints (hinge locks)
   int n_matrix_entries_ = 0;
+  std::vector<int> history_offset_;  // [group] → first entry in MotionState::history
+  int n_history_ = 0;
   double mass_scale_ = 1.0;
 };
 

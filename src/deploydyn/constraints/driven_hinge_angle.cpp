@@ -10,12 +10,6 @@ namespace {
 // An arm shorter across the axis than this share of its length leaves the angle undefined.
 constexpr double kSmallestProjectedShare = 1e-8;
 
-Eigen::Matrix3d cross_matrix(const Eigen::Vector3d& a) {
-  Eigen::Matrix3d m;
-  m << 0.0, -a.z(), a.y(), a.z(), 0.0, -a.x(), -a.y(), a.x(), 0.0;
-  return m;
-}
-
 }  // namespace
 
 DrivenHingeAngle::DrivenHingeAngle(std::vector<int> a_dofs, std::vector<int> h_dofs,
@@ -24,6 +18,7 @@ DrivenHingeAngle::DrivenHingeAngle(std::vector<int> a_dofs, std::vector<int> h_d
                                    const Eigen::Vector3d& b_position, const Eigen::Vector3d& axis,
                                    DriverMotion motion, std::string label)
     : DrivingConstraint(1, concatenate({&a_dofs, &h_dofs, &b_dofs})),
+      geometry_(h_dofs.size() == 2 || axis.norm() == 0.0 ? Eigen::Vector3d::UnitZ() : axis.normalized()),
       motion_(std::move(motion)),
       label_(std::move(label)) {
   if (a_dofs.size() != h_dofs.size() || b_dofs.size() != h_dofs.size() ||
@@ -31,11 +26,10 @@ DrivenHingeAngle::DrivenHingeAngle(std::vector<int> a_dofs, std::vector<int> h_d
     throw std::invalid_argument(label_ + ": expected 2 or 3 coordinates of each of A, H, B");
   }
   if (axis.norm() == 0.0) throw std::invalid_argument(label_ + ": zero axis");
-  axis_ = h_dofs.size() == 2 ? Eigen::Vector3d::UnitZ() : axis.normalized();
   const char* names[] = {"A", "B"};
   const Eigen::Vector3d arms[] = {a_position - h_position, b_position - h_position};
   for (int k = 0; k < 2; ++k) {
-    if (!(projected(arms[k]).norm() > kSmallestProjectedShare * arms[k].norm()) ||
+    if (!(geometry_.projected(arms[k]).norm() > kSmallestProjectedShare * arms[k].norm()) ||
         arms[k].norm() == 0.0) {
       throw std::invalid_argument(
           label_ + ": node " + names[k] +
@@ -43,8 +37,7 @@ DrivenHingeAngle::DrivenHingeAngle(std::vector<int> a_dofs, std::vector<int> h_d
           "; the angle about the axis is undefined");
     }
   }
-  const Eigen::Vector3d u = arms[0], v = arms[1];
-  initial_angle_ = std::atan2(axis_.dot(u.cross(v)), projected(u).dot(projected(v)));
+  initial_angle_ = geometry_.angle(arms[0], arms[1]);
 }
 
 Eigen::Vector3d DrivenHingeAngle::arm(const Eigen::VectorXd& x, int k) const {
@@ -57,30 +50,16 @@ Eigen::Vector3d DrivenHingeAngle::arm(const Eigen::VectorXd& x, int k) const {
   return w;
 }
 
-double DrivenHingeAngle::angle(const Eigen::VectorXd& q) const {
-  const Eigen::Vector3d u = arm(q, 0), v = arm(q, 1);
-  return std::atan2(axis_.dot(u.cross(v)), projected(u).dot(projected(v)));
-}
-
-Eigen::Vector3d DrivenHingeAngle::direction_gradient(const Eigen::Vector3d& w) const {
-  const Eigen::Vector3d p = projected(w);
-  return axis_.cross(p) / p.squaredNorm();
-}
-
-Eigen::Matrix3d DrivenHingeAngle::direction_hessian(const Eigen::Vector3d& w) const {
-  const Eigen::Vector3d p = projected(w);
-  const double p2 = p.squaredNorm();
-  return cross_matrix(axis_) / p2 - 2.0 * axis_.cross(p) * p.transpose() / (p2 * p2);
-}
+double DrivenHingeAngle::angle(const Eigen::VectorXd& q) const { return geometry_.angle(arm(q, 0), arm(q, 1)); }
 
 void DrivenHingeAngle::evaluate(const Eigen::VectorXd& q, double t, Eigen::Ref<Eigen::VectorXd> phi,
                                 Eigen::Ref<Eigen::MatrixXd> jacobian) const {
   const Eigen::Vector3d u = arm(q, 0), v = arm(q, 1);
-  const double x = projected(u).dot(projected(v)), y = axis_.dot(u.cross(v));
+  const double x = geometry_.projected(u).dot(geometry_.projected(v)), y = geometry_.axis().dot(u.cross(v));
   const double target = initial_angle_ + motion_.position(t);
   const double c = std::cos(target), s = std::sin(target);
   phi[0] = std::atan2(y * c - x * s, x * c + y * s);
-  const Eigen::Vector3d g_u = -direction_gradient(u), g_v = direction_gradient(v);
+  const Eigen::Vector3d g_u = -geometry_.arm_gradient(u), g_v = geometry_.arm_gradient(v);
   const int d = dimension();
   for (int i = 0; i < d; ++i) {
     jacobian(0, i) = g_u[i];
@@ -95,8 +74,8 @@ void DrivenHingeAngle::add_hessian_term(const Eigen::VectorXd& q, double /*t*/,
   // θ = θ_v(v) − θ_u(u), u = x_A − x_H, v = x_B − x_H: blocks [A, H, B] of
   // E_uᵀ (−H_u) E_u + E_vᵀ H_v E_v with E_u = [I, −I, 0], E_v = [0, −I, I].
   const int d = dimension();
-  const Eigen::Matrix3d h_u = -lambda[0] * direction_hessian(arm(q, 0));
-  const Eigen::Matrix3d h_v = lambda[0] * direction_hessian(arm(q, 1));
+  const Eigen::Matrix3d h_u = -lambda[0] * geometry_.arm_hessian(arm(q, 0));
+  const Eigen::Matrix3d h_v = lambda[0] * geometry_.arm_hessian(arm(q, 1));
   const auto block = [&](int row_node, int col_node) { return hessian.block(row_node * d, col_node * d, d, d); };
   const auto top_left = [d](const Eigen::Matrix3d& m) { return m.topLeftCorner(d, d); };
   block(0, 0) += top_left(h_u);
@@ -114,8 +93,8 @@ void DrivenHingeAngle::time_derivatives(const Eigen::VectorXd& q, const Eigen::V
   // Φ = θ(q) − α(t) (mod 2π): Φ_t = −ṡ, Φ̈ − B q̈ = q̇ᵀ ∇²θ q̇ − s̈.
   const Eigen::Vector3d u_dot = arm(v, 0), v_dot = arm(v, 1);
   phi_t[0] = -motion_.velocity(t);
-  bias[0] = v_dot.dot(direction_hessian(arm(q, 1)) * v_dot) -
-            u_dot.dot(direction_hessian(arm(q, 0)) * u_dot) - motion_.acceleration(t);
+  bias[0] = v_dot.dot(geometry_.arm_hessian(arm(q, 1)) * v_dot) -
+            u_dot.dot(geometry_.arm_hessian(arm(q, 0)) * u_dot) - motion_.acceleration(t);
 }
 
 }  // namespace deploydyn

@@ -15,6 +15,7 @@
 
 #include "deploydyn/constraints/driver_motion.hpp"
 #include "deploydyn/constraints/driving_constraint.hpp"
+#include "deploydyn/constraints/hinge_angle.hpp"
 
 namespace deploydyn {
 
@@ -50,12 +51,8 @@ class DrivenHingeAngle final : public DrivingConstraint {
   int dimension() const { return static_cast<int>(dofs().size()) / 3; }
   // Arm `k` (0: u = x_A − x_H, 1: v = x_B − x_H) of x (coordinates or their rates).
   Eigen::Vector3d arm(const Eigen::VectorXd& x, int k) const;
-  Eigen::Vector3d projected(const Eigen::Vector3d& w) const { return w - axis_.dot(w) * axis_; }
-  // ∂θ/∂w and ∂²θ/∂w² of the angle of arm w about the axis.
-  Eigen::Vector3d direction_gradient(const Eigen::Vector3d& w) const;
-  Eigen::Matrix3d direction_hessian(const Eigen::Vector3d& w) const;
 
-  Eigen::Vector3d axis_;
+  HingeAngle geometry_;
   double initial_angle_ = 0.0;
   DriverMotion motion_;
   std::string label_;

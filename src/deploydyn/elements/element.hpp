@@ -21,6 +21,7 @@
 // elements/element_kinds.cpp, and its storage in Model (docs/adding-an-element.md).
 
 #include <Eigen/Core>
+#include <algorithm>
 #include <memory>
 #include <span>
 #include <string>
@@ -57,11 +58,44 @@ struct ElementResults {
   }
 };
 
-// Weights of an element's iteration-matrix block c_K K + c_M M.
+// Weights of an element's iteration-matrix block c_K K + c_D D + c_M M, where D = ∂f_d/∂q̇ is
+// the block of the forces f_d(q, q̇, t) that depend on the rates (dampers, friction).
 struct TangentWeights {
   double stiffness = 1.0;  // c_K
   double mass = 0.0;       // c_M
+  double damping = 0.0;    // c_D = ∂q̇/∂q of the integrator (γ/(β h) for Newmark)
+  const Eigen::VectorXd* rates = nullptr;  // q̇ at the iterate; null: static (no rate forces)
 };
+
+// Where an element's results are evaluated: a configuration, and when known its rates and
+// the group's history (its slice of MotionState::history).
+struct ResultPoint {
+  const Eigen::VectorXd& q;
+  double t = 0.0;
+  double thermal_factor = 1.0;
+  const Eigen::VectorXd* rates = nullptr;
+  std::span<const double> history = {};
+};
+
+// Something that happened to one element in a step: a latch locked, a cable went slack.
+struct ElementEvent {
+  double time_s = 0.0;
+  int element = 0;     // index within its type
+  std::string what;    // "slack", "taut", "latched", "stuck", "slipping", "stop", "released"
+  double value = 0.0;  // worth reporting with it: an angle (rad), a strain
+};
+
+// The two ends of a converged step, which a group with a history looks at.
+struct StepEnds {
+  double time_before_s = 0.0;
+  double time_after_s = 0.0;
+  const Eigen::VectorXd& q_before;
+  const Eigen::VectorXd& v_before;
+  const Eigen::VectorXd& q_after;
+  const Eigen::VectorXd& v_after;
+  const Eigen::VectorXd& lambda_after;
+};
+enum class StepVerdict { accept, redo };
 
 class ElementGroup {
  public:
@@ -101,10 +135,53 @@ class ElementGroup {
                                     const int*& slot) const = 0;
 
   // The quantities of ElementKind::quantities() of element `element`, in that order.
-  virtual void results(int element, const Eigen::VectorXd& q, double t, double thermal_factor,
-                       std::span<double> out) const = 0;
-  // Reference length (m) of element `element`: a length scale for step rules and plots.
+  virtual void results(int element, const ResultPoint& at, std::span<double> out) const = 0;
+  // Reference length (m) of element `element`: a length scale for step rules and plots; 0 for
+  // an element without a length of its own (a hinge between two beam nodes).
   virtual double reference_length_m(int element) const = 0;
+
+  virtual bool has_rate_forces() const { return false; }
+  // Forces that depend on the rates q̇, f_d(q, q̇, t) (dampers, sliding friction): added to f.
+  // Their block c_K ∂f_d/∂q + c_D ∂f_d/∂q̇ goes into add_iteration_matrix when weights.rates is
+  // given. Statics has none (q̇ = 0). Default: none.
+  virtual void add_rate_force(const Eigen::VectorXd& q, const Eigen::VectorXd& v, double t,
+                              Eigen::VectorXd& f) const {
+    (void)q, (void)v, (void)t, (void)f;
+  }
+
+  // Constraints the group switches on and off between steps (a hinge's latch, end stop or
+  // sticking friction: Constraint::switchable), appended by the assembler after every other
+  // constraint, their rows starting at `first_row`. Default: none.
+  virtual std::vector<std::unique_ptr<Constraint>> make_switched_constraints(int first_row) const {
+    (void)first_row;
+    return {};
+  }
+
+  // History: what the elements carry from step to step (a hinge's mode and dissipated energy,
+  // a cable's slack state), doubles in MotionState::history, this group's slice of it.
+  virtual int n_history() const { return 0; }
+  virtual void initial_history(std::span<double> history) const { (void)history; }
+  // Before every attempt at a step: the history it starts from, whose modes the residual and
+  // matrix then use (a group keeps them in mutable members: evaluations are const).
+  virtual void use_history(std::span<const double> history) const { (void)history; }
+  // After a converged step: writes the history at its end into `after` (`before` at its start)
+  // and appends what happened to `events`. Returns redo when a mode switched inside the step
+  // (a latch reached): the step is then taken again from its start with `after` as its
+  // history, which must then differ from `before` only in the modes that switched, and
+  // `events` holds only the switches (so that nothing is counted twice).
+  virtual StepVerdict end_step(const StepEnds& ends, std::span<const double> before,
+                               std::span<double> after, std::vector<ElementEvent>& events) const {
+    (void)ends, (void)before, (void)events;
+    std::copy(before.begin(), before.end(), after.begin());
+    return StepVerdict::accept;
+  }
+  // Latches among its elements, and how many of them have locked in `history`: a run may end
+  // when all have (AnalysisOptions::end_when).
+  virtual int n_latches() const { return 0; }
+  virtual int n_latched(std::span<const double> history) const {
+    (void)history;
+    return 0;
+  }
 };
 
 class ElementKind {

@@ -3,6 +3,7 @@
 #include "deploydyn/elements/bar/bar_kind.hpp"
 #include "deploydyn/elements/beam/beam_kind.hpp"
 #include "deploydyn/elements/cable/cable_kind.hpp"
+#include "deploydyn/elements/hinge/hinge_kind.hpp"
 #include "deploydyn/model/model.hpp"
 
 namespace deploydyn {
@@ -12,6 +13,7 @@ std::span<const ElementKind* const> element_kinds() {
       &bar_kind(),
       &beam_kind(),
       &cable_kind(),
+      &hinge_kind(),
   };
   return kKinds;
 }

@@ -32,7 +32,7 @@
 namespace deploydyn {
 
 template <class Element>
-class LocalElementGroup final : public ElementGroup {
+class LocalElementGroup : public ElementGroup {
  public:
   using Vector = typename Element::Vector;
   using Matrix = typename Element::Matrix;
@@ -124,17 +124,17 @@ class LocalElementGroup final : public ElementGroup {
     }
   }
 
-  void results(int element, const Eigen::VectorXd& q, double t, double thermal_factor,
-               std::span<double> out) const override {
+  void results(int element, const ResultPoint& at, std::span<double> out) const override {
     const Element& e = elements_[element];
-    e.results(e.evaluate(gather(e, q), t, thermal_factor), out);
+    e.results(e.evaluate(gather(e, at.q), at.t, at.thermal_factor), out);
   }
 
   double reference_length_m(int element) const override {
     return elements_[element].reference_length_m();
   }
 
- private:
+ protected:
+  const std::vector<Element>& elements() const { return elements_; }
   static Vector gather(const Element& e, const Eigen::VectorXd& x) {
     Vector local;
     for (int i = 0; i < kDofs; ++i) local[i] = x[e.dofs[i]];
@@ -144,6 +144,7 @@ class LocalElementGroup final : public ElementGroup {
     for (int i = 0; i < kDofs; ++i) x[e.dofs[i]] += local[i];
   }
 
+ private:
   std::vector<Element> elements_;
   MassMatrixKind mass_kind_;
 };

@@ -620,13 +620,14 @@ class ModelReader {
       return;
     }
     spec.expect_keys(
-        {"type", "end", "step", "output_interval", "load_steps", "mass", "integrator", "newton",
-         "adaptive", "linear_solver"});
+        {"type", "end", "end_when", "step", "output_interval", "load_steps", "mass", "integrator",
+         "newton", "adaptive", "linear_solver"});
     AnalysisOptions& analysis = model_.analysis;
     if (const auto type = spec.find("type")) {
       analysis.type = type->choice(kAnalysisTypes);
     }
     analysis.end_time_s = spec.number_or("end", analysis.end_time_s, Sign::positive, "s");
+    if (const auto end_when = spec.find("end_when")) analysis.end_when = end_when->choice(kEndConditions);
     analysis.step_s = spec.number_or("step", analysis.step_s, Sign::positive, "s");
     const auto step_problem = [&]() -> std::string {
       if (analysis.step_s < kMinStep_s) return fmt::format("must be at least {} s", kMinStep_s);

@@ -320,6 +320,10 @@ void emit_analysis(YAML::Emitter& out, const Model& model) {
     out << (analysis.mass == MassMatrixKind::consistent ? "consistent" : "lumped");
   } else {
     emit_number(out, "end", analysis.end_time_s);
+    if (analysis.end_when != EndCondition::end_time) {
+      emit_key(out, "end_when");
+      out << kEndConditions.name(analysis.end_when).data();
+    }
     emit_number(out, "step", analysis.step_s);
     // 0 means "every step", which is also what leaving the key out says.
     if (analysis.output_interval_s > 0.0) {

@@ -12,6 +12,7 @@
 #include "deploydyn/elements/bar/bar_element.hpp"
 #include "deploydyn/elements/beam/beam_element.hpp"
 #include "deploydyn/elements/cable/cable_element.hpp"
+#include "deploydyn/elements/hinge/hinge_element.hpp"
 #include "deploydyn/model/joint.hpp"
 #include "deploydyn/model/time_function.hpp"
 #include "deploydyn/util/name_table.hpp"
@@ -186,9 +187,18 @@ inline constexpr NameTable kLinearSolverKinds{std::array{
 }};
 inline const char* to_string(LinearSolverKind kind) { return kLinearSolverKinds.name(kind).data(); }
 
+// When a dynamic or quasi-static run ends: at end_time, or as soon as every latch of the
+// model's hinges has locked (a spring-driven deployment; end_time is then the limit).
+enum class EndCondition { end_time, all_latched };
+inline constexpr NameTable kEndConditions{std::array{
+    NamedValue<EndCondition>{EndCondition::end_time, "end_time"},
+    NamedValue<EndCondition>{EndCondition::all_latched, "all_latched"},
+}};
+
 struct AnalysisOptions {
   AnalysisType type = AnalysisType::dynamic;
   double end_time_s = 1.0;
+  EndCondition end_when = EndCondition::end_time;
   double step_s = 1e-3;
   double output_interval_s = 0.0;  // 0: every step
   int load_steps = 1;              // initial thermal equilibrium: ΔT applied in this many parts
@@ -216,6 +226,7 @@ struct Model {
   std::vector<BarElement> bars;
   std::vector<BeamElement> beams;
   std::vector<CableElement> cables;
+  std::vector<HingeElement> hinges;
   std::vector<FixedNode> supports;
   std::vector<Joint> joints;
   std::vector<Driver> drivers;

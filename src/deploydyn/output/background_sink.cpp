@@ -15,13 +15,14 @@ BackgroundSink::~BackgroundSink() {
 void BackgroundSink::record(const StepRecord& record) { push(record); }
 
 void BackgroundSink::record_state(const Assembler& assembler, const MotionState& state,
-                                  double external_work_J) {
+                                  const WorkTally& work) {
   // Only what a record needs: not the accelerations.
-  Snapshot snapshot{&assembler, {}, external_work_J};
+  Snapshot snapshot{&assembler, {}, work};
   snapshot.state.time_s = state.time_s;
   snapshot.state.q = state.q;
   snapshot.state.v = state.v;
   snapshot.state.lambda = state.lambda;
+  snapshot.state.history = state.history;
   push(std::move(snapshot));
 }
 
@@ -61,7 +62,7 @@ void BackgroundSink::work() {
     try {
       for (const Item& item : batch) {
         if (const auto* s = std::get_if<Snapshot>(&item)) {
-          sink_.record(make_step_record(*s->assembler, s->state, s->external_work_J));
+          sink_.record(make_step_record(*s->assembler, s->state, s->work));
         } else {
           sink_.record(std::get<StepRecord>(item));
         }

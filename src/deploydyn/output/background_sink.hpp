@@ -29,7 +29,7 @@ class BackgroundSink final : public RecordSink {
   void record(const StepRecord& record) override;
   // Queues a copy of the state; the record is built on the writer thread.
   void record_state(const Assembler& assembler, const MotionState& state,
-                    double external_work_J) override;
+                    const WorkTally& work) override;
   // Waits until every record has reached the sink; rethrows the first exception it threw.
   void finish();
   // True once the sink has thrown: the records since are dropped. Any thread may ask.
@@ -40,7 +40,7 @@ class BackgroundSink final : public RecordSink {
   struct Snapshot {
     const Assembler* assembler = nullptr;
     MotionState state;
-    double external_work_J = 0.0;
+    WorkTally work;
   };
   using Item = std::variant<StepRecord, Snapshot>;
 

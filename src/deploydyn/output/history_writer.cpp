@@ -39,7 +39,7 @@ std::vector<std::string> history_columns(const Model& model) {
   for (const Driver& driver : model.drivers) {
     columns.push_back((drives_rotation(driver.kind) ? "torque." : "force.") + driver.name);
   }
-  for (const char* energy : {"kinetic", "strain_energy", "external_work"}) columns.push_back(energy);
+  for (const char* energy : {"kinetic", "strain_energy", "external_work", "dissipated"}) columns.push_back(energy);
   return columns;
 }
 
@@ -57,7 +57,7 @@ void append_history_row(const StepRecord& r, std::vector<double>& row) {
     }
   }
   row.insert(row.end(), r.driver_efforts.begin(), r.driver_efforts.end());
-  row.insert(row.end(), {r.kinetic_energy_J, r.strain_energy_J, r.external_work_J});
+  row.insert(row.end(), {r.kinetic_energy_J, r.strain_energy_J, r.external_work_J, r.dissipated_J});
 }
 
 HistoryWriter::HistoryWriter(const std::filesystem::path& file, const Model& model)

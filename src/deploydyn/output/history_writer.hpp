@@ -1,7 +1,7 @@
 #pragma once
 // history.csv (README, "The outputs"): one header row, then one row per output time:
 //   t, x.<node>, y.<node>[, z.<node>] ..., strain.<el>, mstrain.<el>, force.<el> ...,
-//   torque.<driver> | force.<driver> ..., kinetic, strain_energy, external_work
+//   torque.<driver> | force.<driver> ..., kinetic, strain_energy, external_work, dissipated
 // Rows are gathered and written in whole rows at least every 200 ms of wall time, so a crash
 // or an interrupt loses at most that much and never leaves half a row (output/checked_file.hpp);
 // a failed write throws OutputError with the reason and keeps the rows before it.

@@ -38,7 +38,7 @@ StepRecord mode_frame(const Assembler& assembler, const MotionState& equilibrium
   MotionState shown = equilibrium;
   shown.q += (largest > 0.0 ? kDrawnAmplitudeShare * shortest_m / largest : 0.0) * mode;
   shown.time_s = frame;
-  StepRecord record = make_step_record(assembler, shown, 0.0);
+  StepRecord record = make_step_record(assembler, shown);
   record.v = mode;  // the mode itself, as the frame's vector field "velocity_m_s"
   return record;
 }

@@ -5,7 +5,7 @@
 namespace deploydyn {
 
 StepRecord make_step_record(const Assembler& assembler, const MotionState& state,
-                            double external_work_J) {
+                            const WorkTally& work) {
   StepRecord record;
   record.time_s = state.time_s;
   record.dimension = assembler.model().dimension;
@@ -19,7 +19,7 @@ StepRecord make_step_record(const Assembler& assembler, const MotionState& state
     results.n_quantities = static_cast<int>(kinds[g]->quantities(record.dimension).size());
     results.values.resize(static_cast<std::size_t>(group.n_elements() * results.n_quantities));
     for (int e = 0; e < group.n_elements(); ++e) {
-      group.results(e, state.q, state.time_s, 1.0,
+      assembler.element_results(static_cast<int>(g), e, state.q, state.v, state.history, state.time_s,
                     std::span<double>(results.values).subspan(
                         static_cast<std::size_t>(e * results.n_quantities),
                         static_cast<std::size_t>(results.n_quantities)));
@@ -33,7 +33,8 @@ StepRecord make_step_record(const Assembler& assembler, const MotionState& state
   assembler.mass_times(state.v, momentum);
   record.kinetic_energy_J = 0.5 * state.v.dot(momentum);
   record.strain_energy_J = assembler.strain_energy(state.q, state.time_s);
-  record.external_work_J = external_work_J;
+  record.external_work_J = work.external_J;
+  record.dissipated_J = work.dissipated_J;
   return record;
 }
 

@@ -10,6 +10,13 @@
 
 namespace deploydyn {
 
+// The work done on the structure since the start of a run, as the run loop sums it step by
+// step (solvers/analysis.cpp).
+struct WorkTally {
+  double external_J = 0.0;     // of the loads and drivers
+  double dissipated_J = 0.0;   // by dampers, friction, and latches and stops engaging
+};
+
 struct StepRecord {
   double time_s = 0.0;
   int dimension = 2;                   // the model's: which quantities its elements report
@@ -20,10 +27,12 @@ struct StepRecord {
   double kinetic_energy_J = 0.0;       // ½ q̇ᵀ M q̇
   double strain_energy_J = 0.0;        // Σ of the elements' strain energies
   double external_work_J = 0.0;        // work of loads and drivers since the start
+  double dissipated_J = 0.0;           // energy dissipated since the start (WorkTally)
+  // Energy balance: kinetic + strain − external_work + dissipated stays at its initial value.
 };
 
 StepRecord make_step_record(const Assembler& assembler, const MotionState& state,
-                            double external_work_J);
+                            const WorkTally& work = {});
 
 // Receives the records of a run as they are computed.
 class RecordSink {
@@ -33,8 +42,8 @@ class RecordSink {
   // The solution at an output time: builds its StepRecord and passes it to record(). A sink may
   // build it elsewhere (BackgroundSink: on its writer thread); the assembler is only read.
   virtual void record_state(const Assembler& assembler, const MotionState& state,
-                            double external_work_J) {
-    record(make_step_record(assembler, state, external_work_J));
+                            const WorkTally& work) {
+    record(make_step_record(assembler, state, work));
   }
 };
 

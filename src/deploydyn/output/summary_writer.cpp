@@ -1,5 +1,6 @@
 #include "deploydyn/output/summary_writer.hpp"
 
+#include <map>
 #include <nlohmann/json.hpp>
 
 #include "deploydyn/elements/element_kinds.hpp"
@@ -58,6 +59,48 @@ ordered_json files(const Model& model) {
 
 // The longest message a short status keeps: it must fit the room a running status reserves.
 constexpr std::size_t kShortMessageLength = 2000;
+
+// Why and when the run ended, and the final angle of every element that reports one (hinges):
+// what a spring-driven deployment is run for.
+ordered_json run_end(const Model& model, const Envelope& envelope, const RunReport& report) {
+  ordered_json end = {{"reason", report.status == RunStatus::completed ? report.end_reason : to_string(report.status)},
+                      {"time_s", report.time_reached_s}};
+  ordered_json angles = ordered_json::object();
+  const auto kinds = element_kinds();
+  if (envelope.n_records() > 0) {
+    const StepRecord& last = envelope.last();
+    for (std::size_t g = 0; g < kinds.size() && g < last.elements.size(); ++g) {
+      const int k = quantity_index(*kinds[g], model.dimension, "angle_rad");
+      if (k < 0) continue;
+      for (int e = 0; e < last.elements[g].n_elements(); ++e) {
+        angles[kinds[g]->element_name(model, e)] = last.elements[g].at(e, k);
+      }
+    }
+  }
+  if (!angles.empty()) end["final_angles_rad"] = angles;
+  return end;
+}
+
+// The run's element events in time order, at most kMaxEvents of them (event_counts has all).
+constexpr std::size_t kMaxEvents = 1000;
+ordered_json events(const std::vector<RunEvent>& events) {
+  ordered_json list = ordered_json::array();
+  for (std::size_t i = 0; i < events.size() && i < kMaxEvents; ++i) {
+    const RunEvent& e = events[i];
+    list.push_back({{"time_s", e.time_s}, {"element", e.element}, {"type", e.type}, {"what", e.what},
+                    {"value", e.value}});
+  }
+  return list;
+}
+
+// How often each kind of event happened: {"cable.slack": 2, "hinge.latched": 3}.
+ordered_json event_counts(const std::vector<RunEvent>& events) {
+  std::map<std::string, int> counts;
+  for (const RunEvent& e : events) ++counts[e.type + "." + e.what];
+  ordered_json out = ordered_json::object();
+  for (const auto& [key, n] : counts) out[key] = n;
+  return out;
+}
 
 }  // namespace
 
@@ -143,6 +186,10 @@ std::string summary_json(const Model& model, const Envelope& envelope, const Run
     j["final_time"] = envelope.last().time_s;
   }
   j["final_positions"] = positions;
+  j["end"] = run_end(model, envelope, report);
+  j["events"] = events(report.events);
+  j["event_counts"] = event_counts(report.events);
+  j["mode_switches"] = report.mode_switches;
   j["steps"] = report.steps;
   j["newton_iterations"] = report.newton_iterations;
   j["newton_iterations_per_step"] =

@@ -8,6 +8,7 @@
 #include <stdexcept>
 
 #include "deploydyn/assembly/linear_system_factory.hpp"
+#include "deploydyn/elements/element_kinds.hpp"
 #include "deploydyn/solvers/consistent_rates.hpp"
 #include "deploydyn/solvers/continuation.hpp"
 #include "deploydyn/solvers/generalized_alpha.hpp"
@@ -72,28 +73,97 @@ std::string failure_message(const FailureReport& f) {
   return message;
 }
 
-// Work of the loads and of the constraint forces −Bᵀλ (only drivers do work: supports do not
-// move) over one step, by the trapezoidal rule: ½ (F_n + F_{n+1})·(q_{n+1} − q_n).
+// Work over one step by the trapezoidal rule, ½ (F_n + F_{n+1})·(q_{n+1} − q_n), of
+//  - the loads and the constraint forces −Bᵀλ (only drivers do work: supports do not move):
+//    the external work;
+//  - the rate forces f_d (dampers, friction) and the switched constraints' Bᵀλ (latches and
+//    stops engaging, sticking hinges): the energy dissipated.
+// So kinetic + strain − external + dissipated stays at its initial value (docs/theory.md,
+// "Energy balance").
 class WorkCounter {
  public:
-  explicit WorkCounter(const Assembler& assembler) : assembler_(assembler) {}
-  void start(const MotionState& s) { applied_force(s, applied_); }
+  explicit WorkCounter(const Assembler& assembler)
+      : assembler_(assembler), dissipative_(assembler.has_rate_forces() || assembler.n_history() > 0) {}
+  void start(const MotionState& s) { forces(s, applied_, lost_); }
   void advance(const Eigen::VectorXd& q_before, const MotionState& s) {
-    applied_force(s, next_);
-    work_J_ += 0.5 * (applied_ + next_).dot(s.q - q_before);
-    applied_.swap(next_);
+    forces(s, applied_next_, lost_next_);
+    tally_.external_J += 0.5 * (applied_ + applied_next_).dot(s.q - q_before);
+    if (dissipative_) tally_.dissipated_J += 0.5 * (lost_ + lost_next_).dot(s.q - q_before);
+    applied_.swap(applied_next_);
+    lost_.swap(lost_next_);
   }
-  double work_J() const { return work_J_; }
+  const WorkTally& tally() const { return tally_; }
 
  private:
-  void applied_force(const MotionState& s, Eigen::VectorXd& out) {
-    assembler_.external_force(s.time_s, out);
+  void forces(const MotionState& s, Eigen::VectorXd& applied, Eigen::VectorXd& lost) {
+    assembler_.external_force(s.time_s, applied);
     assembler_.constraint_force(s.q, s.time_s, s.lambda, reaction_);
-    out -= reaction_;
+    applied -= reaction_;
+    if (!dissipative_) return;
+    assembler_.switched_constraint_force(s.q, s.time_s, s.lambda, switched_);
+    applied += switched_;
+    assembler_.rate_force(s.q, s.v, s.time_s, lost);
+    lost += switched_;
   }
   const Assembler& assembler_;
-  Eigen::VectorXd applied_, next_, reaction_;
-  double work_J_ = 0.0;
+  bool dissipative_;
+  Eigen::VectorXd applied_, applied_next_, lost_, lost_next_, reaction_, switched_;
+  WorkTally tally_;
+};
+
+// One time step of elements with modes (ElementGroup::end_step): a latch, stop or sticking
+// hinge that switched inside the step has the step taken again from its start with the new
+// modes, at most kMaxSwitches times (then the step stands: a hinge chattering between stick
+// and slip). The events of the switches are kept until the step is accepted or dropped.
+class ModeSwitchingStep {
+ public:
+  static constexpr int kMaxSwitches = 8;
+
+  ModeSwitchingStep(const Assembler& assembler, TimeIntegrator& integrator, LinearSystem& system)
+      : assembler_(assembler), integrator_(integrator), system_(system) {}
+
+  // From `state` by h into `next`; Newton iterations summed over the attempts.
+  NewtonResult step(double h, const MotionState& state, MotionState& next, int& switches) {
+    next = state;  // copies into next's storage: no allocation after the first step
+    assembler_.use_history(next.history);
+    NewtonResult result = integrator_.step(h, system_, next);
+    for (int k = 0; result.converged && k < kMaxSwitches; ++k) {
+      used_ = next.history;
+      const StepEnds ends{state.time_s, next.time_s, state.q, state.v, next.q, next.v, next.lambda};
+      if (assembler_.end_step(ends, used_, next.history, events_, groups_) == StepVerdict::accept) break;
+      ++switches;
+      used_ = next.history;
+      next = state;
+      next.history = used_;
+      assembler_.use_history(next.history);
+      const int before = result.iterations;
+      result = integrator_.step(h, system_, next);
+      result.iterations += before;
+    }
+    return result;
+  }
+
+  void drop_events() {
+    events_.clear();
+    groups_.clear();
+  }
+  void keep_events(std::vector<RunEvent>& out) {
+    const auto kinds = element_kinds();
+    for (std::size_t i = 0; i < events_.size(); ++i) {
+      const ElementKind& kind = *kinds[groups_[i]];
+      out.push_back({events_[i].time_s, kind.element_name(assembler_.model(), events_[i].element),
+                     std::string(kind.name()), events_[i].what, events_[i].value});
+    }
+    drop_events();
+  }
+
+ private:
+  const Assembler& assembler_;
+  TimeIntegrator& integrator_;
+  LinearSystem& system_;
+  Eigen::VectorXd used_;  // the modes an attempt ran with
+  std::vector<ElementEvent> events_;
+  std::vector<int> groups_;  // [event] → its group
 };
 
 // The initial equilibrium finished by arc-length continuation in the ΔT scale (solvers/
@@ -200,6 +270,8 @@ RunReport run_analysis(const Assembler& assembler, RecordSink& sink, const RunCo
   state.a = Eigen::VectorXd::Zero(assembler.n_dofs());
   state.pseudo_a = state.a;
   state.lambda = Eigen::VectorXd::Zero(assembler.n_equations());
+  state.history = assembler.initial_history();
+  assembler.use_history(state.history);
 
   const bool dynamic = options.type == AnalysisType::dynamic;
   const bool free_mechanism = dynamic && assembler.rigid_mobility() > 0;
@@ -267,11 +339,13 @@ RunReport run_analysis(const Assembler& assembler, RecordSink& sink, const RunCo
 
   WorkCounter work(assembler);
   work.start(state);
-  sink.record_state(assembler, state, 0.0);
+  sink.record_state(assembler, state, work.tally());
+  const bool end_when_latched = options.end_when == EndCondition::all_latched && assembler.n_latches() > 0;
 
   const std::unique_ptr<TimeIntegrator> integrator = make_time_integrator(assembler, options);
   StepController steps(options);
   MotionState next;  // the step's trial state; swapped with `state` when accepted
+  ModeSwitchingStep switching(assembler, *integrator, system);
   while (state.time_s < options.end_time_s) {
     if (stop_requested(control)) {
       report.status = RunStatus::interrupted;
@@ -279,11 +353,11 @@ RunReport run_analysis(const Assembler& assembler, RecordSink& sink, const RunCo
       return finish(report);
     }
     const double step = steps.next_step(state.time_s);
-    next = state;  // copies into next's storage: no allocation after the first step
-    const NewtonResult newton = integrator->step(step, system, next);
+    const NewtonResult newton = switching.step(step, state, next, report.mode_switches);
     report.newton_iterations += newton.iterations;
     report.max_iterations_per_step = std::max(report.max_iterations_per_step, newton.iterations);
     if (!newton.converged) {
+      switching.drop_events();
       if (steps.cut_after_failure(step)) {
         ++report.rejected_steps;
         continue;
@@ -292,22 +366,32 @@ RunReport run_analysis(const Assembler& assembler, RecordSink& sink, const RunCo
     }
     const double error_m = integrator->local_error(step, state, next);
     if (!steps.accept(step, error_m)) {
+      switching.drop_events();
       ++report.rejected_steps;
       continue;
     }
     std::swap(state, next);
     const Eigen::VectorXd& q_before = next.q;
     ++report.steps;
+    switching.keep_events(report.events);
+    const bool all_latched = end_when_latched && assembler.n_latched(state.history) == assembler.n_latches();
     if (steps.reached_output(state.time_s)) {
       state.time_s = steps.next_output_time();  // exactly, not up to round-off
       work.advance(q_before, state);
-      sink.record_state(assembler, state, work.work_J());
+      sink.record_state(assembler, state, work.tally());
       steps.output_written();
     } else {
       work.advance(q_before, state);
+      if (all_latched) sink.record_state(assembler, state, work.tally());  // the end, between outputs
     }
     report.time_reached_s = state.time_s;
     if (control.progress) control.progress(state.time_s);
+    if (all_latched) {
+      report.end_reason = "all_latched";
+      report.message = fmt::format("completed: every latch ({}) locked at t = {:.6g} s, after {} steps",
+                                   assembler.n_latches(), state.time_s, report.steps);
+      return finish(report);
+    }
   }
   report.message = fmt::format("completed: {} steps to t = {:.6g} s", report.steps, report.time_reached_s);
   return finish(report);

@@ -32,6 +32,15 @@ struct FailureReport {
   std::string reason;
 };
 
+// Something that happened to an element during the run (ElementEvent, with its names).
+struct RunEvent {
+  double time_s = 0.0;
+  std::string element;  // its name
+  std::string type;     // its element type: "hinge", "cable"
+  std::string what;     // "latched", "slack", ...
+  double value = 0.0;   // an angle (rad), a strain
+};
+
 struct RunReport {
   RunStatus status = RunStatus::completed;
   std::string message;            // one line for people
@@ -45,6 +54,10 @@ struct RunReport {
   int initial_iterations = 0;
   double wall_time_s = 0.0;
   std::vector<std::string> warnings;  // implausible states reached (output/plausibility.hpp)
+  std::vector<RunEvent> events;       // in time order
+  int mode_switches = 0;              // steps taken again after a latch, stop or stick switched
+  // Why the run ended when it completed: "end_time", or "all_latched" (AnalysisOptions::end_when).
+  std::string end_reason = "end_time";
 };
 
 

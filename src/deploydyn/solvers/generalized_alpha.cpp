@@ -22,6 +22,9 @@ class GeneralizedAlphaEquations final : public DiscreteEquations {
     if (stiffness_scale_ == 0.0) stiffness_scale_ = assembler_.stiffness_scale(start.q, start.time_s);
     constraint_scale_ = c_true_ * assembler_.mass_scale() + stiffness_scale_;
     predicted_ = start.q + h * start.v + (h * h * (0.5 - c.beta)) * start.pseudo_a;
+    // q̇_{n+1} = q̇_n + h (1 − γ) a_n + h γ a_{n+1} = predicted_rates + c_rate (q − q̃).
+    c_rate_ = c.gamma / (c.beta * h);
+    predicted_rates_ = start.v + (h * (1.0 - c.gamma)) * start.pseudo_a;
     // q̈_{n+1} = c_true (q − q̃) + history, from the α recurrence.
     history_ = (c.alpha_m * start.pseudo_a - c.alpha_f * start.a) / (1.0 - c.alpha_f);
     assembler_.external_force(t_, external_);
@@ -42,24 +45,38 @@ class GeneralizedAlphaEquations final : public DiscreteEquations {
     assembler_.internal_force(q, t_, 1.0, internal_);
     assembler_.constraints_and_force(q, t_, lambda, phi, reaction_);
     r = inertia_ + internal_ - external_ + reaction_;
+    if (rate_forces_) {  // dampers, friction: f_d(q, q̇(q)) at the step's end
+      rates(q);
+      assembler_.rate_force(q, rates_, t_, rate_force_);
+      r += rate_force_;
+    }
     return std::max({inertia_.lpNorm<Eigen::Infinity>(), internal_.lpNorm<Eigen::Infinity>(),
                      external_.lpNorm<Eigen::Infinity>(), reaction_.lpNorm<Eigen::Infinity>()});
   }
   void matrix(const Eigen::VectorXd& q, const Eigen::VectorXd& lambda,
               LinearSystem& system) override {
-    assembler_.iteration_matrix(q, t_, 1.0, lambda, {c_true_, 1.0, constraint_scale_}, system);
+    if (rate_forces_) rates(q);
+    assembler_.iteration_matrix(q, t_, 1.0, lambda,
+                                {c_true_, 1.0, constraint_scale_, rate_forces_ ? c_rate_ : 0.0,
+                                 rate_forces_ ? &rates_ : nullptr},
+                                system);
   }
   double constraint_scale() const override { return constraint_scale_; }
 
  private:
+  void rates(const Eigen::VectorXd& q) { rates_ = predicted_rates_ + c_rate_ * (q - predicted_); }
+
   const Assembler& assembler_;
   GeneralizedAlphaCoefficients coefficients_;
+  bool rate_forces_ = assembler_.has_rate_forces();
+  double c_rate_ = 0.0;  // ∂q̇_{n+1}/∂q = γ/(β h)
   double t_ = 0.0;
   double c_pseudo_ = 0.0;  // ∂a_{n+1}/∂q = 1/(β h²)
   double c_true_ = 0.0;    // ∂q̈_{n+1}/∂q
   double constraint_scale_ = 1.0;  // s (N/m): the size of the force block's diagonal
   double stiffness_scale_ = 0.0;   // max diag K at the first step (N/m); 0: not yet known
   Eigen::VectorXd predicted_, history_, external_, acceleration_, inertia_, internal_, reaction_;
+  Eigen::VectorXd predicted_rates_, rates_, rate_force_;
 };
 
 GeneralizedAlphaCoefficients GeneralizedAlphaCoefficients::from(const IntegratorOptions& o) {

@@ -12,6 +12,7 @@ struct MotionState {
   Eigen::VectorXd a;       // q̈ (m/s²)
   Eigen::VectorXd pseudo_a;  // generalized-α's pseudo-acceleration (= q̈ for Newmark)
   Eigen::VectorXd lambda;  // multipliers: constraint forces are −Bᵀλ
+  Eigen::VectorXd history;  // the elements' history: modes, dissipated energy (Assembler::n_history)
 };
 
 }  // namespace deploydyn

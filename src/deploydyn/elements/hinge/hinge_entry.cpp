@@ -1,0 +1,149 @@
+#include "deploydyn/elements/hinge/hinge_entry.hpp"
+
+#include <fmt/format.h>
+
+#include <cmath>
+#include <numbers>
+
+#include "deploydyn/constraints/hinge_angle.hpp"
+
+namespace deploydyn::hinge {
+namespace {
+
+constexpr ElementField kFields[] = {
+    {"nodes", "", "required (or `rotation_nodes`)",
+     "three node names A, H, B: bars meeting at H; θ is the angle at H from H→A to H→B"},
+    {"rotation_nodes", "", "required (or `nodes`)",
+     "two node names A, B carrying rotations (2D beam nodes, e.g. the two sides of a pin joint); θ = θ_B − θ_A"},
+    {"axis", "", "[0, 0, 1]", "3D `nodes` hinges only: the direction θ turns about (not zero)"},
+    {"stiffness", "N·m/rad", "0", "≥ 0: torsion spring k, torque k (θ_r − θ)"},
+    {"rest_angle", "rad", "the initial angle", "θ_r, where the spring is unloaded; beyond the deployed angle it keeps a preload"},
+    {"damping", "N·m·s/rad", "0", "≥ 0: viscous damper c, torque −c θ̇"},
+    {"friction", "", "0", "≥ 0: Coulomb coefficient μ, torque μ r N against the sliding, N the magnitude of the axial force of the bar A–H"},
+    {"pin_radius", "m", "required with friction", "> 0: r"},
+    {"stop_min", "rad", "none", "lower end stop; below the initial angle"},
+    {"stop_max", "rad", "none", "upper end stop; above the initial angle and stop_min"},
+    {"latch", "rad", "none", "the hinge locks for good when θ reaches it; not the initial angle, within the stops"},
+};
+
+// Angles are continued from the initial one: a value more than π away is never reached.
+void check_reachable(const ElementEntryReader& entry, std::string_view key, double angle, double initial) {
+  if (std::abs(angle - initial) > std::numbers::pi) {
+    entry.fail(key, fmt::format("{} rad lies more than π from the initial angle {:.6g} rad; angles are "
+                                "measured continuously from the initial one, in ({:.6g}, {:.6g}]",
+                                angle, initial, initial - std::numbers::pi, initial + std::numbers::pi));
+  }
+}
+
+}  // namespace
+
+std::span<const ElementField> entry_fields() { return kFields; }
+
+void read_entry(const std::string& name, const ElementEntryReader& entry, Model& model) {
+  HingeElement h;
+  h.name = name;
+  const bool bars = entry.has("nodes"), rotations = entry.has("rotation_nodes");
+  if (bars == rotations) {
+    const std::string problem = "give either `nodes: [A, H, B]` (bars meeting at H) or `rotation_nodes: [A, B]` "
+                                "(2D beam nodes), not both";
+    if (bars) entry.fail("rotation_nodes", problem);
+    entry.fail_missing("nodes", problem);
+  }
+  if (rotations) {
+    if (model.dimension != 2) entry.fail("rotation_nodes", "is for 2D models; in 3D give `nodes: [A, H, B]`");
+    const std::vector<int> nodes = entry.nodes("rotation_nodes", 2);
+    if (nodes[0] == nodes[1]) entry.fail("rotation_nodes", "needs two different nodes");
+    h.form = HingeElement::Form::rotations;
+    h.nodes = {nodes[0], nodes[1], nodes[1]};
+    h.initial_angle_rad = 0.0;
+    if (entry.has("axis")) entry.fail("axis", "is for 3D `nodes` hinges; `rotation_nodes` turn about z");
+  } else {
+    const std::vector<int> nodes = entry.nodes("nodes", 3);
+    if (nodes[0] == nodes[1] || nodes[1] == nodes[2] || nodes[0] == nodes[2]) {
+      entry.fail("nodes", "needs three different nodes A, H, B");
+    }
+    h.nodes = {nodes[0], nodes[1], nodes[2]};
+    if (const auto axis = entry.optional_numbers("axis", 3, "")) {
+      if (model.dimension == 2) entry.fail("axis", "is for 3D models; 2D hinges turn about z");
+      const Eigen::Vector3d a((*axis)[0], (*axis)[1], (*axis)[2]);
+      if (!(a.norm() > 0.0)) entry.fail("axis", "must not be zero");
+      h.axis = a.normalized();
+    }
+    const HingeAngle geometry(h.axis);
+    const Eigen::Vector3d& x_h = model.nodes[h.nodes[1]].position_m;
+    const Eigen::Vector3d u = model.nodes[h.nodes[0]].position_m - x_h, v = model.nodes[h.nodes[2]].position_m - x_h;
+    for (const Eigen::Vector3d& arm : {u, v}) {
+      if (!(geometry.projected(arm).norm() > 1e-8 * arm.norm()) || arm.norm() == 0.0) {
+        entry.fail("nodes", "A or B lies at H or on the axis through H: the angle is undefined");
+      }
+    }
+    h.initial_angle_rad = geometry.angle(u, v);
+  }
+  const double initial = h.initial_angle_rad;
+  h.stiffness_Nm_per_rad = entry.optional_number("stiffness", ValueSign::non_negative, "N·m/rad").value_or(0.0);
+  if (const auto rest = entry.optional_number("rest_angle", ValueSign::any, "rad")) {
+    check_reachable(entry, "rest_angle", *rest, initial);
+    h.rest_angle_rad = *rest;
+    h.rest_angle_given = true;
+  } else {
+    h.rest_angle_rad = initial;
+  }
+  h.damping_Nms_per_rad = entry.optional_number("damping", ValueSign::non_negative, "N·m·s/rad").value_or(0.0);
+  h.friction_coefficient = entry.optional_number("friction", ValueSign::non_negative, "").value_or(0.0);
+  if (const auto radius = entry.optional_number("pin_radius", ValueSign::positive, "m")) h.pin_radius_m = *radius;
+  if (h.friction_coefficient > 0.0) {
+    if (h.form == HingeElement::Form::rotations) {
+      entry.fail("friction", "needs the pin force, which deploydyn takes from the bar A–H: give the hinge as "
+                             "`nodes: [A, H, B]` between bars (friction between beam nodes is not available)");
+    }
+    if (h.pin_radius_m == 0.0) {
+      entry.fail_missing("pin_radius", "friction needs `pin_radius` (m): the friction torque is μ r |N|");
+    }
+  }
+  h.stop_min_rad = entry.optional_number("stop_min", ValueSign::any, "rad");
+  h.stop_max_rad = entry.optional_number("stop_max", ValueSign::any, "rad");
+  if (h.stop_min_rad) {
+    check_reachable(entry, "stop_min", *h.stop_min_rad, initial);
+    if (!(*h.stop_min_rad < initial)) {
+      entry.fail("stop_min", fmt::format("must lie below the initial angle {:.6g} rad, got {}", initial, *h.stop_min_rad));
+    }
+  }
+  if (h.stop_max_rad) {
+    check_reachable(entry, "stop_max", *h.stop_max_rad, initial);
+    if (h.stop_min_rad && !(*h.stop_max_rad > *h.stop_min_rad)) {
+      entry.fail("stop_max", fmt::format("must be greater than stop_min = {}, got {}", *h.stop_min_rad, *h.stop_max_rad));
+    }
+    if (!(*h.stop_max_rad > initial)) {
+      entry.fail("stop_max", fmt::format("must lie above the initial angle {:.6g} rad, got {}", initial, *h.stop_max_rad));
+    }
+  }
+  if ((h.latch_rad = entry.optional_number("latch", ValueSign::any, "rad"))) {
+    check_reachable(entry, "latch", *h.latch_rad, initial);
+    if (*h.latch_rad == initial) entry.fail("latch", "must differ from the initial angle (it would lock at once)");
+    if ((h.stop_min_rad && *h.latch_rad < *h.stop_min_rad) || (h.stop_max_rad && *h.latch_rad > *h.stop_max_rad)) {
+      entry.fail("latch", "lies beyond an end stop: it would never be reached");
+    }
+  }
+  model.hinges.push_back(std::move(h));
+}
+
+void write_entry(const Model& model, int index, ElementEntryWriter& entry) {
+  const HingeElement& h = model.hinges[static_cast<std::size_t>(index)];
+  const auto name = [&](int node) { return model.nodes[static_cast<std::size_t>(node)].name; };
+  if (h.form == HingeElement::Form::rotations) {
+    entry.names("rotation_nodes", {name(h.nodes[0]), name(h.nodes[1])});
+  } else {
+    entry.names("nodes", {name(h.nodes[0]), name(h.nodes[1]), name(h.nodes[2])});
+    if (model.dimension == 3) entry.numbers("axis", {h.axis.x(), h.axis.y(), h.axis.z()});
+  }
+  entry.number("stiffness", h.stiffness_Nm_per_rad);
+  if (h.rest_angle_given) entry.number("rest_angle", h.rest_angle_rad);
+  entry.number("damping", h.damping_Nms_per_rad);
+  entry.number("friction", h.friction_coefficient);
+  if (h.pin_radius_m > 0.0) entry.number("pin_radius", h.pin_radius_m);
+  if (h.stop_min_rad) entry.number("stop_min", *h.stop_min_rad);
+  if (h.stop_max_rad) entry.number("stop_max", *h.stop_max_rad);
+  if (h.latch_rad) entry.number("latch", *h.latch_rad);
+}
+
+}  // namespace deploydyn::hinge

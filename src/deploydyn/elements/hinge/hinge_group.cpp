@@ -1,0 +1,427 @@
+#include "deploydyn/elements/hinge/hinge_group.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "deploydyn/elements/hinge/hinge_lock.hpp"
+
+namespace deploydyn {
+namespace {
+
+// A hinge's history (MotionState::history), kHistorySlots doubles in this order.
+enum HistorySlot : int {
+  kMode,         // HingeMode
+  kLockAngle,    // θ_lock (rad) while locked
+  kSlip,         // direction of sliding friction: ±1, 0 before it first slides
+  kDissipated,   // energy dissipated so far (J): damper, friction, the lock engaging
+  kLockTorque,   // λ of the lock at the step's end (N·m, resisting θ growing); 0 when free
+  kLossTorque,   // damper + friction + lock torque at the step's end (resisting): the trapezoid's
+  kLatchedAt,    // time the latch locked (s); −1 before
+  kHistorySlots
+};
+
+double sign_of(double x) { return x > 0.0 ? 1.0 : (x < 0.0 ? -1.0 : 0.0); }
+
+// Whether θ went from θ0 to θ1 through `angle` (or ended on it).
+bool crossed(double angle0, double angle1, double angle) { return (angle0 - angle) * (angle1 - angle) <= 0.0 && angle0 != angle; }
+
+// Torques of one hinge on θ at one configuration, resisting θ growing (as f = T ∂θ/∂q).
+struct HingeTorques {
+  double spring = 0.0;    // k (θ − θ_r)
+  double damper = 0.0;    // c θ̇
+  double friction = 0.0;  // s μ r |N| while sliding
+};
+
+class HingeGroup final : public ElementGroup {
+ public:
+  // `driven`: the model has drivers, whose prescribed motion a held or sticking hinge would
+  // make redundant. Then hinges start free and friction slides without sticking; without
+  // drivers (a spring-driven deployment) hinges start held, and friction sticks and slips.
+  HingeGroup(std::vector<HingeRecord> records, std::vector<std::string> labels, bool driven)
+      : records_(std::move(records)), labels_(std::move(labels)), driven_(driven), lock_row_(records_.size(), -1) {
+    std::vector<double> history(static_cast<std::size_t>(n_history()));
+    initial_history(history);
+    use_history(history);
+  }
+
+  int n_elements() const override { return static_cast<int>(records_.size()); }
+  int n_rigid_body_conditions() const override { return 0; }
+
+  void add_internal_force(const Eigen::VectorXd& q, double, double, Eigen::VectorXd& f) const override {
+    for (const HingeRecord& r : records_) {
+      if (r.element->stiffness_Nm_per_rad == 0.0) continue;
+      const HingeKinematics k = r.kinematics(r.gather(q));
+      scatter(r, spring_torque(r, k.angle_rad) * k.gradient, f);
+    }
+  }
+  // A hinge has no thermal strain (its pin force does, through its bar: friction, a rate force).
+  void add_thermal_force_derivative(const Eigen::VectorXd&, double, Eigen::VectorXd&) const override {}
+  void add_thermal_force_rate(const Eigen::VectorXd&, double, Eigen::VectorXd&) const override {}
+  void add_mass_times(const Eigen::VectorXd&, Eigen::VectorXd&) const override {}
+  void add_weight(const Eigen::Vector3d&, Eigen::VectorXd&) const override {}
+
+  double strain_energy(const Eigen::VectorXd& q, double) const override {
+    double energy = 0.0;
+    for (const HingeRecord& r : records_) {
+      const double k = r.element->stiffness_Nm_per_rad;
+      if (k == 0.0) continue;
+      const double twist = r.kinematics(r.gather(q)).angle_rad - r.element->rest_angle_rad;
+      energy += 0.5 * k * twist * twist;
+    }
+    return energy;
+  }
+  double largest_stiffness_diagonal(const Eigen::VectorXd& q, double) const override {
+    double largest = 0.0;
+    for (const HingeRecord& r : records_) {
+      const HingeKinematics k = r.kinematics(r.gather(q));
+      largest = std::max(largest, r.element->stiffness_Nm_per_rad * k.gradient.cwiseAbs2().maxCoeff());
+    }
+    return largest;
+  }
+  double largest_relative_change(const Eigen::VectorXd&, const Eigen::VectorXd&) const override { return 0.0; }
+
+  int n_matrix_entries() const override {
+    int n = 0;
+    for (const HingeRecord& r : records_) n += r.n_dofs() * r.n_dofs();
+    return n;
+  }
+  void append_matrix_entries(std::vector<MatrixEntry>& entries) const override {
+    for (const HingeRecord& r : records_) {
+      for (const int col : r.dofs) {
+        for (const int row : r.dofs) entries.push_back({row, col});
+      }
+    }
+  }
+  // c_K (K_spring + ∂f_d/∂q) + c_D ∂f_d/∂q̇ with (docs/theory.md, "Hinges")
+  //   K_spring = k (∇θ ∇θᵀ + (θ − θ_r) ∇²θ)
+  //   damper   f = c θ̇ ∇θ:       ∂f/∂q = c (∇θ (∇²θ q̇)ᵀ + θ̇ ∇²θ),  ∂f/∂q̇ = c ∇θ ∇θᵀ
+  //   friction f = s μ r |N| ∇θ:  ∂f/∂q = s μ r (∇θ ∇|N|ᵀ + |N| ∇²θ)
+  void add_iteration_matrix(const Eigen::VectorXd& q, double t, double, const TangentWeights& w,
+                            std::span<double> values, const int*& slot) const override {
+    for (std::size_t i = 0; i < records_.size(); ++i) {
+      const HingeRecord& r = records_[i];
+      const HingeElement& e = *r.element;
+      const int n = r.n_dofs();
+      const HingeVector q_local = r.gather(q);
+      const HingeKinematics k = r.kinematics(q_local);
+      HingeMatrix m = HingeMatrix::Zero(n, n);
+      if (e.stiffness_Nm_per_rad != 0.0) {
+        m += (w.stiffness * e.stiffness_Nm_per_rad) *
+             (k.gradient * k.gradient.transpose() + (k.angle_rad - e.rest_angle_rad) * k.hessian);
+      }
+      if (w.rates != nullptr && e.damping_Nms_per_rad != 0.0) {
+        const HingeVector rates = r.gather(*w.rates);
+        const double angular_rate = k.gradient.dot(rates);
+        m += (w.stiffness * e.damping_Nms_per_rad) *
+             (k.gradient * (k.hessian * rates).transpose() + angular_rate * k.hessian);
+        m += (w.damping * e.damping_Nms_per_rad) * k.gradient * k.gradient.transpose();
+      }
+      if (w.rates != nullptr && sliding(i)) {
+        const PinForce p = r.pin_force(q_local, t);
+        const double scale = w.stiffness * modes_.slip[i] * e.friction_coefficient * e.pin_radius_m;
+        m += scale * (k.gradient * p.gradient.transpose() + p.magnitude_N * k.hessian);
+      }
+      for (int col = 0; col < n; ++col) {
+        for (int row = 0; row < n; ++row) values[*slot++] += m(row, col);
+      }
+    }
+  }
+
+  bool has_rate_forces() const override {
+    return std::any_of(records_.begin(), records_.end(), [](const HingeRecord& r) {
+      return r.element->damping_Nms_per_rad > 0.0 || r.element->friction_coefficient > 0.0;
+    });
+  }
+  void add_rate_force(const Eigen::VectorXd& q, const Eigen::VectorXd& v, double t,
+                      Eigen::VectorXd& f) const override {
+    for (std::size_t i = 0; i < records_.size(); ++i) {
+      const HingeRecord& r = records_[i];
+      if (r.element->damping_Nms_per_rad == 0.0 && !sliding(i)) continue;
+      const HingeVector q_local = r.gather(q);
+      const HingeKinematics k = r.kinematics(q_local);
+      const HingeTorques torques = rate_torques(r, k, q_local, r.gather(v), t, sliding(i) ? modes_.slip[i] : 0.0);
+      scatter(r, (torques.damper + torques.friction) * k.gradient, f);
+    }
+  }
+
+  // angle, then the torques on θ in its opening direction (ElementKind::quantities).
+  void results(int element, const ResultPoint& at, std::span<double> out) const override {
+    const HingeRecord& r = records_[static_cast<std::size_t>(element)];
+    const std::span<const double> h = history_of(at.history, element);
+    const HingeVector q_local = r.gather(at.q);
+    const HingeKinematics k = r.kinematics(q_local);
+    const auto mode = static_cast<HingeMode>(h.empty() ? initial_mode(r) : static_cast<int>(h[kMode]));
+    const double slip = h.empty() || mode != HingeMode::free || r.element->friction_coefficient == 0.0 ? 0.0 : h[kSlip];
+    const HingeVector rates = at.rates != nullptr ? r.gather(*at.rates) : HingeVector::Zero(r.n_dofs());
+    HingeTorques torques = rate_torques(r, k, q_local, rates, at.t, slip);
+    torques.spring = spring_torque(r, k.angle_rad);
+    const double lock = h.empty() ? 0.0 : h[kLockTorque];
+    out[0] = k.angle_rad;
+    out[1] = -(torques.spring + torques.damper + torques.friction + lock);
+    out[2] = -torques.spring;
+    out[3] = -torques.damper;
+    out[4] = -torques.friction;
+    out[5] = -lock;
+    out[6] = r.pin_force(q_local, at.t).magnitude_N;
+    out[7] = h.empty() ? 0.0 : h[kDissipated];
+    out[8] = static_cast<double>(mode);
+  }
+  double reference_length_m(int element) const override {
+    const HingeElement& e = *records_[static_cast<std::size_t>(element)].element;
+    if (e.form == HingeElement::Form::rotations) return 0.0;
+    return std::min(arm_length_[static_cast<std::size_t>(element)][0], arm_length_[static_cast<std::size_t>(element)][1]);
+  }
+
+  std::vector<std::unique_ptr<Constraint>> make_switched_constraints(int first_row) const override {
+    std::vector<std::unique_ptr<Constraint>> locks;
+    for (std::size_t i = 0; i < records_.size(); ++i) {
+      if (!records_[i].element->has_lock()) continue;
+      lock_row_[i] = first_row + static_cast<int>(locks.size());
+      locks.push_back(std::make_unique<HingeLock>(records_[i], modes_, static_cast<int>(i), labels_[i]));
+    }
+    return locks;
+  }
+
+  int n_history() const override { return kHistorySlots * n_elements(); }
+  void initial_history(std::span<double> history) const override {
+    for (std::size_t i = 0; i < records_.size(); ++i) {
+      const std::span<double> h = history.subspan(i * kHistorySlots, kHistorySlots);
+      std::fill(h.begin(), h.end(), 0.0);
+      h[kMode] = initial_mode(records_[i]);
+      h[kLockAngle] = records_[i].element->initial_angle_rad;
+      h[kLatchedAt] = -1.0;
+    }
+  }
+  void use_history(std::span<const double> history) const override {
+    std::vector<double> initial;
+    if (history.empty()) {  // a state no run has stepped: the initial modes
+      initial.resize(static_cast<std::size_t>(n_history()));
+      initial_history(initial);
+      history = initial;
+    }
+    const std::size_t n = records_.size();
+    modes_.mode.resize(n);
+    modes_.lock_angle_rad.resize(n);
+    modes_.slip.resize(n);
+    for (std::size_t i = 0; i < n; ++i) {
+      modes_.mode[i] = static_cast<HingeMode>(static_cast<int>(history[i * kHistorySlots + kMode]));
+      modes_.lock_angle_rad[i] = history[i * kHistorySlots + kLockAngle];
+      modes_.slip[i] = history[i * kHistorySlots + kSlip];
+    }
+  }
+
+  StepVerdict end_step(const StepEnds& ends, std::span<const double> before, std::span<double> after,
+                       std::vector<ElementEvent>& events) const override {
+    std::copy(before.begin(), before.end(), after.begin());
+    // First the switches: a latch or stop reached, a sliding hinge come to rest, a lock that
+    // lets go. Any of them: the step again with the new modes, nothing else written.
+    bool switched = false;
+    for (std::size_t i = 0; i < records_.size(); ++i) {
+      switched |= switch_mode(i, ends, before.subspan(i * kHistorySlots, kHistorySlots),
+                              after.subspan(i * kHistorySlots, kHistorySlots), events);
+    }
+    if (switched) return StepVerdict::redo;
+    for (std::size_t i = 0; i < records_.size(); ++i) {
+      accumulate(i, ends, before.subspan(i * kHistorySlots, kHistorySlots),
+                 after.subspan(i * kHistorySlots, kHistorySlots));
+    }
+    return StepVerdict::accept;
+  }
+
+  int n_latches() const override {
+    return static_cast<int>(std::count_if(records_.begin(), records_.end(),
+                                          [](const HingeRecord& r) { return r.element->latch_rad.has_value(); }));
+  }
+  int n_latched(std::span<const double> history) const override {
+    int n = 0;
+    for (std::size_t i = 0; i < records_.size() && !history.empty(); ++i) {
+      n += static_cast<HingeMode>(static_cast<int>(history[i * kHistorySlots + kMode])) == HingeMode::latched;
+    }
+    return n;
+  }
+
+  void set_arm_lengths(std::vector<std::array<double, 2>> lengths) { arm_length_ = std::move(lengths); }
+
+ private:
+  // Without drivers a hinge starts held, or sticking when it has friction (static friction
+  // holds it until its torque exceeds μ r |N|); with drivers, free.
+  int initial_mode(const HingeRecord& r) const {
+    if (driven_ || !r.element->has_lock()) return static_cast<int>(HingeMode::free);
+    return static_cast<int>(r.element->friction_coefficient > 0.0 ? HingeMode::stuck : HingeMode::held);
+  }
+  static double spring_torque(const HingeRecord& r, double angle) {
+    return r.element->stiffness_Nm_per_rad * (angle - r.element->rest_angle_rad);
+  }
+  static HingeTorques rate_torques(const HingeRecord& r, const HingeKinematics& k, const HingeVector& q_local,
+                                   const HingeVector& rates, double t, double slip) {
+    HingeTorques torques;
+    torques.damper = r.element->damping_Nms_per_rad * k.gradient.dot(rates);
+    if (slip != 0.0) {
+      torques.friction = slip * r.element->friction_coefficient * r.element->pin_radius_m *
+                         r.pin_force(q_local, t).magnitude_N;
+    }
+    return torques;
+  }
+  // Whether hinge i slides with friction in the step under way.
+  bool sliding(std::size_t i) const {
+    return records_[i].element->friction_coefficient > 0.0 && modes_.mode[i] == HingeMode::free &&
+           modes_.slip[i] != 0.0;
+  }
+  std::span<const double> history_of(std::span<const double> history, int element) const {
+    if (history.empty()) return {};
+    return history.subspan(static_cast<std::size_t>(element) * kHistorySlots, kHistorySlots);
+  }
+  static void scatter(const HingeRecord& r, const HingeVector& local, Eigen::VectorXd& f) {
+    for (int i = 0; i < r.n_dofs(); ++i) f[r.dofs[static_cast<std::size_t>(i)]] += local[i];
+  }
+  double lock_torque(std::size_t i, HingeMode mode, const StepEnds& ends) const {
+    return mode == HingeMode::free || lock_row_[i] < 0 ? 0.0 : ends.lambda_after[lock_row_[i]];
+  }
+
+  // The switch of hinge i at the end of a step, if any, into `after` and `events`.
+  bool switch_mode(std::size_t i, const StepEnds& ends, std::span<const double> before,
+                   std::span<double> after, std::vector<ElementEvent>& events) const {
+    const HingeRecord& r = records_[i];
+    const HingeElement& e = *r.element;
+    const auto mode = static_cast<HingeMode>(static_cast<int>(before[kMode]));
+    const double t = ends.time_after_s;
+    const auto to = [&](HingeMode next, double lock_angle, const char* what, double value) {
+      after[kMode] = static_cast<double>(next);
+      after[kLockAngle] = lock_angle;
+      events.push_back({t, static_cast<int>(i), what, value});
+      return true;
+    };
+    const HingeVector q1 = r.gather(ends.q_after);
+    const HingeKinematics k1 = r.kinematics(q1);
+    const double angle0 = r.kinematics(r.gather(ends.q_before)).angle_rad, angle1 = k1.angle_rad;
+    const double lock = lock_torque(i, mode, ends);
+    switch (mode) {
+      case HingeMode::free: {
+        if (e.latch_rad && crossed(angle0, angle1, *e.latch_rad)) {
+          after[kLatchedAt] = t;
+          return to(HingeMode::latched, *e.latch_rad, "latched", *e.latch_rad);
+        }
+        if (e.stop_min_rad && angle1 < *e.stop_min_rad) return to(HingeMode::stop_min, *e.stop_min_rad, "stop", *e.stop_min_rad);
+        if (e.stop_max_rad && angle1 > *e.stop_max_rad) return to(HingeMode::stop_max, *e.stop_max_rad, "stop", *e.stop_max_rad);
+        const double slip = before[kSlip];
+        if (e.friction_coefficient > 0.0 && slip != 0.0 && !driven_) {
+          const double rate0 = r.kinematics(r.gather(ends.q_before)).gradient.dot(r.gather(ends.v_before));
+          const double rate1 = k1.gradient.dot(r.gather(ends.v_after));
+          if (rate1 * slip < 0.0) {  // came to rest inside the step: stick where θ̇ = 0
+            const double share = rate0 != rate1 ? std::clamp(rate0 / (rate0 - rate1), 0.0, 1.0) : 0.0;
+            const double rest = angle0 + share * (angle1 - angle0);
+            return to(HingeMode::stuck, rest, "stuck", rest);
+          }
+        }
+        return false;
+      }
+      case HingeMode::stuck: {
+        const double capacity = e.friction_coefficient * e.pin_radius_m * r.pin_force(q1, t).magnitude_N;
+        if (std::abs(lock) <= capacity) return false;
+        after[kSlip] = sign_of(lock);  // it slides the way the lock was holding it from
+        return to(HingeMode::free, before[kLockAngle], "slipping", -lock);
+      }
+      case HingeMode::stop_min:  // a stop only pushes: λ < 0 resists θ falling
+        if (lock <= 0.0) return false;
+        after[kSlip] = e.friction_coefficient > 0.0 ? 1.0 : 0.0;
+        return to(HingeMode::free, before[kLockAngle], "released", before[kLockAngle]);
+      case HingeMode::stop_max:
+        if (lock >= 0.0) return false;
+        after[kSlip] = e.friction_coefficient > 0.0 ? -1.0 : 0.0;
+        return to(HingeMode::free, before[kLockAngle], "released", before[kLockAngle]);
+      case HingeMode::held:  // released at t = 0: the first step again, free
+        after[kSlip] = e.friction_coefficient > 0.0 ? sign_of(lock) : 0.0;
+        return to(HingeMode::free, before[kLockAngle], "released", -lock);
+      case HingeMode::latched:
+        return false;
+    }
+    return false;
+  }
+
+  // Dissipated energy by the trapezoidal rule in θ, ½ (T_n + T_{n+1}) (θ_{n+1} − θ_n), of the
+  // resisting damper, friction and lock torques; the lock torque and the sliding direction at
+  // the step's end.
+  void accumulate(std::size_t i, const StepEnds& ends, std::span<const double> before,
+                  std::span<double> after) const {
+    const HingeRecord& r = records_[i];
+    const auto mode = static_cast<HingeMode>(static_cast<int>(before[kMode]));
+    const HingeVector q1 = r.gather(ends.q_after), v1 = r.gather(ends.v_after);
+    const HingeKinematics k1 = r.kinematics(q1);
+    const double angle0 = r.kinematics(r.gather(ends.q_before)).angle_rad;
+    const double slip = mode == HingeMode::free && r.element->friction_coefficient > 0.0 ? before[kSlip] : 0.0;
+    const HingeTorques torques = rate_torques(r, k1, q1, v1, ends.time_after_s, slip);
+    const double lock = lock_torque(i, mode, ends);
+    const double loss = torques.damper + torques.friction + lock;
+    after[kDissipated] = before[kDissipated] + 0.5 * (before[kLossTorque] + loss) * (k1.angle_rad - angle0);
+    after[kLossTorque] = loss;
+    after[kLockTorque] = lock;
+    // The direction friction resists in the next step: the hinge's motion now (with drivers,
+    // also through a reversal, as no hinge sticks then).
+    const double rate1 = k1.gradient.dot(v1);
+    const bool may_turn_over = driven_ || before[kSlip] == 0.0;
+    if (mode == HingeMode::free && r.element->friction_coefficient > 0.0 && rate1 != 0.0 &&
+        (may_turn_over || sign_of(rate1) == before[kSlip])) {
+      after[kSlip] = sign_of(rate1);
+    }
+  }
+
+  std::vector<HingeRecord> records_;
+  std::vector<std::string> labels_;  // "hinge <name>", for messages
+  bool driven_ = false;
+  std::vector<std::array<double, 2>> arm_length_;
+  // Set once, when the assembler takes the locks (make_switched_constraints is const).
+  mutable std::vector<int> lock_row_;  // [hinge] → its lock's row in λ, −1 without a lock
+  // The modes of the step under way (use_history); the locks read them.
+  mutable HingeModes modes_;
+};
+
+}  // namespace
+
+std::unique_ptr<ElementGroup> make_hinge_group(const Model& model, const DofMap& dofs) {
+  std::vector<HingeRecord> records;
+  std::vector<std::string> labels;
+  std::vector<std::array<double, 2>> arm_lengths;
+  const int dimension = model.dimension;
+  for (const HingeElement& e : model.hinges) {
+    const std::string label = "hinge " + e.name;
+    HingeRecord& r = records.emplace_back();
+    r.element = &e;
+    r.dimension = dimension;
+    labels.push_back(label);
+    if (e.form == HingeElement::Form::rotations) {
+      for (const int node : {e.nodes[0], e.nodes[1]}) {
+        const int rz = dofs.index(node, "rz");
+        if (rz < 0) {
+          throw std::invalid_argument(label + ": node " + model.nodes[node].name +
+                                      " carries no rotation (rotation_nodes need beam nodes of a 2D model)");
+        }
+        r.dofs.push_back(rz);
+      }
+      arm_lengths.push_back({0.0, 0.0});
+      continue;
+    }
+    for (const int node : e.nodes) {
+      for (int axis = 0; axis < dimension; ++axis) r.dofs.push_back(dofs.index(node, axis));
+    }
+    r.geometry = HingeAngle(dimension == 2 ? Eigen::Vector3d::UnitZ() : e.axis);
+    const Eigen::Vector3d& h = model.nodes[e.nodes[1]].position_m;
+    arm_lengths.push_back({(model.nodes[e.nodes[0]].position_m - h).norm(), (model.nodes[e.nodes[2]].position_m - h).norm()});
+    if (e.friction_coefficient == 0.0) continue;
+    // Friction presses with the axial force of the bar A–H.
+    const auto member = std::find_if(model.bars.begin(), model.bars.end(), [&](const BarElement& b) {
+      return (b.node_a == e.nodes[0] && b.node_b == e.nodes[1]) || (b.node_a == e.nodes[1] && b.node_b == e.nodes[0]);
+    });
+    if (member == model.bars.end()) {
+      throw std::invalid_argument(label + ": friction needs a bar between its nodes " + model.nodes[e.nodes[0]].name +
+                                  " and " + model.nodes[e.nodes[1]].name + " (A and H): its axial force is the pin force");
+    }
+    const Material& material = model.materials[member->material];
+    r.pin_member = PinMember{{material.youngs_modulus_Pa * member->area_m2, member->reference_length_m},
+                             material.expansion_per_C, &member->temperature_change_C};
+  }
+  auto group = std::make_unique<HingeGroup>(std::move(records), std::move(labels), !model.drivers.empty());
+  group->set_arm_lengths(std::move(arm_lengths));
+  return group;
+}
+
+}  // namespace deploydyn

@@ -1,0 +1,148 @@
+// The hinge element's force and iteration-matrix block against finite differences, in 2D and 3D
+// and between beam nodes (docs/theory.md, "Hinges"), and its result quantities.
+#include <fmt/format.h>
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+#include <vector>
+
+#include "deploydyn/assembly/assembler.hpp"
+#include "deploydyn/elements/element_kinds.hpp"
+#include "deploydyn/elements/hinge/hinge_kind.hpp"
+#include "deploydyn/io/model_loader.hpp"
+#include "support/finite_difference.hpp"
+
+namespace deploydyn {
+namespace {
+
+constexpr double kStep = 1e-6;
+constexpr double kTolerance = 1e-6;  // relative to the block's largest entry
+
+std::size_t hinge_group_index() {
+  const auto kinds = element_kinds();
+  return static_cast<std::size_t>(std::find(kinds.begin(), kinds.end(), &hinge_kind()) - kinds.begin());
+}
+
+// The group's iteration-matrix block c_K ∂f/∂q + c_D ∂f/∂q̇ as a dense matrix.
+Eigen::MatrixXd dense_block(const ElementGroup& group, int n_dofs, const Eigen::VectorXd& q,
+                            const Eigen::VectorXd& v, double stiffness_weight, double damping_weight) {
+  std::vector<MatrixEntry> entries;
+  group.append_matrix_entries(entries);
+  std::vector<double> values(entries.size(), 0.0);
+  std::vector<int> slots(entries.size());
+  for (std::size_t i = 0; i < slots.size(); ++i) slots[i] = static_cast<int>(i);
+  const int* slot = slots.data();
+  group.add_iteration_matrix(q, 0.3, 1.0, {stiffness_weight, 0.0, damping_weight, &v}, values, slot);
+  Eigen::MatrixXd m = Eigen::MatrixXd::Zero(n_dofs, n_dofs);
+  for (std::size_t i = 0; i < entries.size(); ++i) m(entries[i].row, entries[i].col) += values[i];
+  return m;
+}
+
+Eigen::VectorXd hinge_force(const ElementGroup& group, int n_dofs, const Eigen::VectorXd& q, const Eigen::VectorXd& v) {
+  Eigen::VectorXd f = Eigen::VectorXd::Zero(n_dofs);
+  group.add_internal_force(q, 0.3, 1.0, f);
+  group.add_rate_force(q, v, 0.3, f);
+  return f;
+}
+
+// Checks f = ∂U/∂q of the spring, ∂f/∂q and ∂f/∂q̇ against central differences at a turned
+// and stretched configuration, with the hinge sliding (friction on).
+void check_derivatives(const std::string& yaml) {
+  const Model model = load_model_from_string(yaml, "hinge");
+  const Assembler assembler(model);
+  const ElementGroup& group = *assembler.element_groups()[hinge_group_index()];
+  ASSERT_EQ(group.n_elements(), 1);
+  const int n = assembler.n_dofs();
+  Eigen::VectorXd q = assembler.initial_coordinates();
+  const Eigen::VectorXd v = Eigen::VectorXd::LinSpaced(n, 0.3, -0.7);
+  for (int i = 0; i < n; ++i) q[i] += 0.05 * std::sin(1.0 + 3.0 * i);  // off the initial state
+  // Sliding in the + direction: history [mode, lock angle, slip, ...] of the one hinge.
+  std::vector<double> history(static_cast<std::size_t>(group.n_history()));
+  group.initial_history(history);
+  history[0] = 0.0;  // free
+  history[2] = 1.0;  // sliding, friction against θ growing
+  group.use_history(history);
+
+  // f_spring = ∂U/∂q.
+  const Eigen::VectorXd zero = Eigen::VectorXd::Zero(n);
+  Eigen::VectorXd spring = Eigen::VectorXd::Zero(n);
+  group.add_internal_force(q, 0.3, 1.0, spring);
+  const Eigen::VectorXd energy_gradient =
+      testing::central_gradient([&](const Eigen::VectorXd& x) { return group.strain_energy(x, 0.3); }, q, kStep);
+  EXPECT_LT((spring - energy_gradient).lpNorm<Eigen::Infinity>(), kTolerance * spring.lpNorm<Eigen::Infinity>());
+
+  const Eigen::MatrixXd dq = testing::central_jacobian([&](const Eigen::VectorXd& x) { return hinge_force(group, n, x, v); }, q, kStep);
+  const Eigen::MatrixXd block_q = dense_block(group, n, q, v, 1.0, 0.0);
+  EXPECT_LT((block_q - dq).lpNorm<Eigen::Infinity>(), kTolerance * dq.lpNorm<Eigen::Infinity>())
+      << "∂f/∂q\n" << block_q << "\nFD\n" << dq;
+  const Eigen::MatrixXd dv = testing::central_jacobian([&](const Eigen::VectorXd& x) { return hinge_force(group, n, q, x); }, v, kStep);
+  const Eigen::MatrixXd block_v = dense_block(group, n, q, v, 0.0, 1.0);
+  EXPECT_LT((block_v - dv).lpNorm<Eigen::Infinity>(), kTolerance * dv.lpNorm<Eigen::Infinity>())
+      << "∂f/∂q̇\n" << block_v << "\nFD\n" << dv;
+  EXPECT_GT(dv.lpNorm<Eigen::Infinity>(), 0.0);
+  (void)zero;
+}
+
+TEST(Hinge, ForceAndMatrixMatchFiniteDifferencesBetweenBars2D) {
+  check_derivatives(R"(
+nodes: {A: [-1, 0.1], H: [0, 0], B: [0.8, 0.5]}
+materials: {steel: {E: 2.0e11, alpha: 1.2e-5}}
+elements:
+  a: {nodes: [A, H], area: 1.0e-4, material: steel, mass: 1, dT: 40}
+  b: {nodes: [H, B], area: 1.0e-4, material: steel, mass: 1}
+  h: {type: hinge, nodes: [A, H, B], stiffness: 7, rest_angle: -2.0, damping: 0.3, friction: 0.2, pin_radius: 0.01}
+supports: [{node: A}]
+)");
+}
+
+TEST(Hinge, ForceAndMatrixMatchFiniteDifferencesBetweenBars3D) {
+  check_derivatives(R"(
+nodes: {A: [-1, 0.1, 0.2], H: [0, 0, 0], B: [0.8, 0.5, -0.3]}
+materials: {steel: {E: 2.0e11, alpha: 1.2e-5}}
+elements:
+  a: {nodes: [A, H], area: 1.0e-4, material: steel, mass: 1, dT: -60}
+  b: {nodes: [H, B], area: 1.0e-4, material: steel, mass: 1}
+  h: {type: hinge, nodes: [A, H, B], axis: [0.2, 0.3, 1], stiffness: 7, rest_angle: -2.0, damping: 0.3,
+      friction: 0.2, pin_radius: 0.01}
+supports: [{node: A}]
+)");
+}
+
+TEST(Hinge, ForceAndMatrixMatchFiniteDifferencesBetweenBeamNodes) {
+  check_derivatives(R"(
+nodes: {A: [0, 0], B: [1, 0], C: [1, 0], D: [2, 0.3]}
+materials: {steel: {E: 2.0e11, alpha: 1.2e-5}}
+elements:
+  left: {type: beam, nodes: [A, B], area: 1.0e-4, inertia_z: 1.0e-8, material: steel, mass: 1}
+  right: {type: beam, nodes: [C, D], area: 1.0e-4, inertia_z: 1.0e-8, material: steel, mass: 1}
+  h: {type: hinge, rotation_nodes: [B, C], stiffness: 7, rest_angle: 0.4, damping: 0.3}
+joints: {pin: {type: pin, nodes: [B, C]}}
+supports: [{node: A, fix: [x, y, rotation]}]
+)");
+}
+
+// The results: the angle of the geometry, and the spring's torque k (θ_r − θ) in the opening
+// direction.
+TEST(Hinge, ReportsItsAngleAndSpringTorque) {
+  const Model model = load_model_from_string(R"(
+nodes: {A: [1, 0], H: [0, 0], B: [0, 2]}
+materials: {steel: {E: 2.0e11, alpha: 1.2e-5}}
+elements:
+  a: {nodes: [A, H], area: 1.0e-4, material: steel, mass: 1}
+  b: {nodes: [H, B], area: 1.0e-4, material: steel, mass: 1}
+  h: {type: hinge, nodes: [A, H, B], stiffness: 4, rest_angle: 2.0}
+)",
+                                             "hinge");
+  const Assembler assembler(model);
+  std::vector<double> out(hinge_kind().quantities(2).size());
+  assembler.element_results(static_cast<int>(hinge_group_index()), 0, assembler.initial_coordinates(), 0.0, 1.0, out);
+  EXPECT_NEAR(out[static_cast<std::size_t>(quantity_index(hinge_kind(), 2, "angle_rad"))], std::numbers::pi / 2, 1e-15);
+  EXPECT_NEAR(out[static_cast<std::size_t>(quantity_index(hinge_kind(), 2, "spring_torque_Nm"))],
+              4.0 * (2.0 - std::numbers::pi / 2), 1e-14);
+  EXPECT_NEAR(model.hinges[0].initial_angle_rad, std::numbers::pi / 2, 1e-15);
+}
+
+}  // namespace
+}  // namespace deploydyn
