@@ -8,6 +8,7 @@
 #include <gtest/gtest.h>
 
 #include <limits>
+#include <cmath>
 #include <memory>
 #include <random>
 #include <vector>
@@ -173,13 +174,35 @@ TEST_P(CableGroup, ThermalDerivativeAndTimeRateMatchFiniteDifferences) {
     const double t = time_of(c);
     const Eigen::VectorXd q = taut_configuration(dimension, t, rng);
     Eigen::VectorXd by_factor = Eigen::VectorXd::Zero(cable.n()), rate = by_factor;
-    cable.group().add_thermal_force_derivative(q, t, by_factor);
+    cable.group().add_thermal_force_derivative(q, t, 1.0, by_factor);
     cable.group().add_thermal_force_rate(q, t, rate);
     const Eigen::VectorXd fd_factor =
         (cable.force(q, t, 1.0 + kStep) - cable.force(q, t, 1.0 - kStep)) / (2.0 * kStep);
     const Eigen::VectorXd fd_time = (cable.force(q, t + kStep) - cable.force(q, t - kStep)) / (2.0 * kStep);
     EXPECT_LT(relative_error(by_factor, fd_factor), kDerivativeTolerance) << "t = " << t;
     EXPECT_LT(relative_error(rate, fd_time), kDerivativeTolerance) << "t = " << t;
+  }
+}
+
+// Continuation scales ΔT by a factor μ: a cable taut at μ = 0.5 may be slack at μ = 1, so the
+// derivative must be taken at μ (Eq. C4), not at 1.
+TEST_P(CableGroup, ThermalDerivativeIsTakenAtTheThermalFactor) {
+  const int dimension = GetParam();
+  const OneCable cable(dimension);
+  std::mt19937 rng(23);
+  constexpr double kFactor = 0.5;
+  for (int c = 0; c < kConfigurations; ++c) {
+    const double t = time_of(c);
+    const double thermal_strain = kAlpha * kTemperatureChange_C.value(t);
+    // ε = 0.7 ε_t: ε_m = 0.2 ε_t at μ = ½ (taut), −0.3 ε_t at μ = 1 (slack).
+    const Eigen::VectorXd q =
+        configuration(dimension, kRestLength_m.value(t) * std::sqrt(1.0 + 1.4 * thermal_strain), rng);
+    Eigen::VectorXd by_factor = Eigen::VectorXd::Zero(cable.n());
+    cable.group().add_thermal_force_derivative(q, t, kFactor, by_factor);
+    const Eigen::VectorXd fd =
+        (cable.force(q, t, kFactor + kStep) - cable.force(q, t, kFactor - kStep)) / (2.0 * kStep);
+    EXPECT_GT(fd.norm(), 0.0) << "t = " << t;
+    EXPECT_LT(relative_error(by_factor, fd), kDerivativeTolerance) << "t = " << t;
   }
 }
 
@@ -220,7 +243,7 @@ TEST_P(CableGroup, SlackCableHasNoForceStiffnessOrEnergyButItsMass) {
     const double t = time_of(c);
     const Eigen::VectorXd q = configuration(dimension, kRestLength_m.value(t) * shortening(rng), rng);
     Eigen::VectorXd by_factor = Eigen::VectorXd::Zero(cable.n()), rate = by_factor;
-    cable.group().add_thermal_force_derivative(q, t, by_factor);
+    cable.group().add_thermal_force_derivative(q, t, 1.0, by_factor);
     cable.group().add_thermal_force_rate(q, t, rate);
     EXPECT_EQ(cable.force(q, t).norm(), 0.0) << "t = " << t;
     EXPECT_EQ(cable.tangent(q, t).norm(), 0.0) << "t = " << t;
