@@ -283,6 +283,47 @@ TEST_P(CableGroup, TautCableIsTheBar) {
   }
 }
 
+// end_step: the slack state at the end of each step is the history; a flip is an event, with
+// the mechanical strain; before the first step the start's state is read from q_before.
+TEST(CableHistory, SlackAndTautFlipsAreEvents) {
+  const OneCable cable(2);
+  const ElementGroup& group = cable.group();
+  ASSERT_EQ(group.n_history(), 1);
+  std::vector<double> start(1), after(1);
+  group.initial_history(start);
+  Eigen::VectorXd taut(4), slack(4);
+  const double l0 = kRestLength_m.value(0.0);
+  taut << 0.0, 0.0, 1.05 * l0, 0.0;
+  slack << 0.0, 0.0, 0.95 * l0, 0.0;
+  const Eigen::VectorXd v = Eigen::VectorXd::Zero(4), lambda;
+  std::vector<ElementEvent> events;
+  // The first step, taut to taut: nothing happens, the history says taut.
+  EXPECT_EQ(group.end_step({0.0, 0.0, taut, v, taut, v, lambda}, start, after, events), StepVerdict::accept);
+  EXPECT_TRUE(events.empty());
+  EXPECT_EQ(after[0], 0.0);
+  // Taut to slack, then slack to slack, then back to taut.
+  std::vector<double> before = after;
+  group.end_step({0.0, 0.0, taut, v, slack, v, lambda}, before, after, events);
+  ASSERT_EQ(events.size(), 1u);
+  EXPECT_EQ(events[0].what, "slack");
+  EXPECT_LT(events[0].value, 0.0);
+  EXPECT_EQ(after[0], 1.0);
+  before = after;
+  group.end_step({0.0, 0.0, slack, v, slack, v, lambda}, before, after, events);
+  EXPECT_EQ(events.size(), 1u);
+  before = after;
+  group.end_step({0.0, 0.0, slack, v, taut, v, lambda}, before, after, events);
+  ASSERT_EQ(events.size(), 2u);
+  EXPECT_EQ(events[1].what, "taut");
+  EXPECT_GT(events[1].value, 0.0);
+  EXPECT_EQ(after[0], 0.0);
+  // A run that starts slack and stays so reports nothing.
+  events.clear();
+  group.end_step({0.0, 0.0, slack, v, slack, v, lambda}, start, after, events);
+  EXPECT_TRUE(events.empty());
+  EXPECT_EQ(after[0], 1.0);
+}
+
 // The rest length of a pretension T0 (Eq. C6): the cable at its initial length carries the
 // true axial force N = EA ε l/L0 = T0, to round-off; no pretension leaves it at l.
 TEST(CablePretension, RestLengthGivesTheInitialCableItsTension) {

@@ -108,7 +108,8 @@ TEST(CableString, TransverseFrequenciesAreTheDiscreteStrings) {
 }
 
 // ---------------------------------------------------------------------------------------------
-// (C7) A straight cable with pretension T0 between fixed supports, heated through ΔT*.
+// (C7) A straight cable with pretension T0 between fixed supports, heated through ΔT*: taut
+// below, slack above, and one "slack" event in the run.
 
 constexpr double kCableStiffness_N = 2.0e11 * 1.0e-5;  // EA
 constexpr double kPretension_N = 2000.0;               // T0/EA = 1e-3
@@ -170,6 +171,17 @@ TEST(CableSlackTemperature, PretensionedCableGoesSlackWhereThermalStrainCancelsI
     }
     EXPECT_GT(n_taut, 5) << analysis;
     EXPECT_GT(n_slack, 5) << analysis;
+    // Exactly one event: the cable went slack in the step that crossed ΔT*, with ε_m ≤ 0 there.
+    ASSERT_EQ(run.report.events.size(), 1u) << analysis;
+    const RunEvent& event = run.report.events.front();
+    EXPECT_EQ(event.type, "cable");
+    EXPECT_EQ(event.element, "c");
+    EXPECT_EQ(event.what, "slack");
+    EXPECT_LT(event.value, 0.0);
+    const double dT_event = model.cables[0].temperature_change_C.value(event.time_s);
+    const double dT_before = model.cables[0].temperature_change_C.value(event.time_s - model.analysis.step_s);
+    EXPECT_GT(dT_event, exact_C);
+    EXPECT_LE(dT_before, exact_C);
   }
   // The exact temperature is below the first-order one by ~T0/EA = 1e-3 relative: the check
   // above tells them apart.

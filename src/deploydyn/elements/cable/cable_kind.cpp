@@ -1,5 +1,6 @@
 #include "deploydyn/elements/cable/cable_kind.hpp"
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 
@@ -89,6 +90,42 @@ constexpr ResultQuantity kQuantities[] = {
     {"length", "length_m", false},           // current length l
 };
 
+// The cables' history (docs/theory.md, "Cables", Events): per cable 1 if it was slack at the end
+// of the last converged step, 0 if taut, kNotYetSeen before the first step (the state at its
+// start, the initial equilibrium, is then read from q_before). A flip appends a "slack" or
+// "taut" event with the mechanical strain at the step's end. The slack state is not a mode of
+// the residual (the law reads the state), so a step is never redone for it.
+template <int D>
+class CableGroup final : public LocalElementGroup<CableRecord<D>> {
+ public:
+  using LocalElementGroup<CableRecord<D>>::LocalElementGroup;
+
+  int n_history() const override { return this->n_elements(); }
+  void initial_history(std::span<double> history) const override {
+    std::fill(history.begin(), history.end(), kNotYetSeen);
+  }
+  StepVerdict end_step(const StepEnds& ends, std::span<const double> before, std::span<double> after,
+                       std::vector<ElementEvent>& events) const override {
+    for (int e = 0; e < this->n_elements(); ++e) {
+      const CableRecord<D>& cable = this->elements()[static_cast<std::size_t>(e)];
+      const auto i = static_cast<std::size_t>(e);
+      const bool was_slack =
+          before[i] == kNotYetSeen
+              ? cable.evaluate(this->gather(cable, ends.q_before), ends.time_before_s, 1.0).bar.slack
+              : before[i] == kSlack;
+      const bar::State<D> now = cable.evaluate(this->gather(cable, ends.q_after), ends.time_after_s, 1.0).bar;
+      after[i] = now.slack ? kSlack : kTaut;
+      if (now.slack != was_slack) {
+        events.push_back({ends.time_after_s, e, now.slack ? "slack" : "taut", now.mechanical_strain});
+      }
+    }
+    return StepVerdict::accept;
+  }
+
+ private:
+  static constexpr double kTaut = 0.0, kSlack = 1.0, kNotYetSeen = -1.0;
+};
+
 template <int D>
 std::unique_ptr<ElementGroup> make_cables(const Model& model, const DofMap& dofs) {
   std::vector<CableRecord<D>> records;
@@ -107,8 +144,7 @@ std::unique_ptr<ElementGroup> make_cables(const Model& model, const DofMap& dofs
     cable.rest_length_m = &e.rest_length_m;
     cable.temperature_change_C = &e.temperature_change_C;
   }
-  return std::make_unique<LocalElementGroup<CableRecord<D>>>(std::move(records),
-                                                             model.analysis.mass);
+  return std::make_unique<CableGroup<D>>(std::move(records), model.analysis.mass);
 }
 
 class CableKind final : public ElementKind {
