@@ -656,6 +656,30 @@ class ModelBuilder:
         self._section("elements")[_name(where, "name", name)] = spec
         return self
 
+    def hinge(self, name, nodes=None, rotation_nodes=None, stiffness=None, rest_angle=None,
+              damping=None, friction=None, pin_radius=None, stop_min=None, stop_max=None,
+              latch=None, axis=None):
+        """A hinge (docs/theory.md, "Hinges") on the angle at H between bars, nodes [A, H, B],
+        or between two 2D beam nodes, rotation_nodes [A, B]: a torsion spring `stiffness`
+        (N·m/rad) unloaded at `rest_angle` (rad), a damper `damping` (N·m·s/rad), Coulomb
+        `friction` μ with `pin_radius` (m) pressed by the bar A–H's axial force, end stops
+        `stop_min`/`stop_max` and a `latch` angle (rad); `axis` [ax, ay, az] in 3D."""
+        where = "ModelBuilder.hinge"
+        spec = {"type": "hinge"}
+        if nodes is not None:
+            spec["nodes"] = [_name(where, "nodes", n) for n in nodes]
+        if rotation_nodes is not None:
+            spec["rotation_nodes"] = [_name(where, "rotation_nodes", n) for n in rotation_nodes]
+        for key, value in (("stiffness", stiffness), ("rest_angle", rest_angle), ("damping", damping),
+                           ("friction", friction), ("pin_radius", pin_radius), ("stop_min", stop_min),
+                           ("stop_max", stop_max), ("latch", latch)):
+            if value is not None:
+                spec[key] = _number(where, key, value)
+        if axis is not None:
+            spec["axis"] = _numbers(where, "axis", axis)
+        self._section("elements")[_name(where, "name", name)] = spec
+        return self
+
     def element(self, name, type, **fields):
         """An element of any type (`type`, e.g. "bar"), its keys as the model file spells them
         (docs/model-format.md); the loader checks them at `build`."""

@@ -221,3 +221,26 @@ def test_a_pretensioned_cable_between_pins_goes_slack_when_heated():
     assert result["mstrain.c"][1] / ALPHA + 0.4 * slack_dT == pytest.approx(slack_dT, rel=1e-9)
     assert list(result["slack.c"]) == [0, 0, 0, 1, 1, 1]
     assert all(result["force.c"][:3] > 0) and list(result["force.c"][3:]) == [0, 0, 0]
+
+
+def test_spring_driven_hinge_latches_and_the_run_ends_there():
+    # An arm H–B with a 1 kg tip turned by a preloaded torsion spring at H until its latch;
+    # θ is the angle at H from H→A = (−1, 0) to H→B = (1, 0.2).
+    theta0 = math.atan2(0.2, 1.0) - math.pi
+    latch, rest = theta0 + 0.5, theta0 + 0.8
+    model = (deploydyn.ModelBuilder("spring-driven arm")
+             .node("A", -1, 0).node("H", 0, 0).node("B", 1, 0.2, mass=1.0)
+             .material("steel", E=E, alpha=ALPHA)
+             .bar("ground", "A", "H", area=AREA, material="steel", mass=1.0)
+             .bar("arm", "H", "B", area=AREA, material="steel", mass=1e-6)
+             .hinge("spring", nodes=["A", "H", "B"], stiffness=10.0, rest_angle=rest, latch=latch)
+             .support("A").support("H")
+             .analysis(type="dynamic", end=3.0, step=1e-3, end_when="all_latched",
+                       integrator={"type": "generalized_alpha", "rho_inf": 0.9})
+             .build())
+    assert model.elements["spring"]["type"] == "hinge"
+    result = model.run(check=True)
+    assert result["hinge_angle.spring"][-1] == pytest.approx(latch, abs=1e-12)
+    # Released from rest, θ = θ_r − 0.8 cos(ω t) reaches the latch at cos(ω t) = 3/8.
+    omega = math.sqrt(10.0 / (1.0 + 0.2 ** 2))
+    assert result["t"][-1] == pytest.approx(math.acos(0.3 / 0.8) / omega, abs=2e-3)

@@ -52,8 +52,10 @@ std::string dynamic_analysis(double end_s, double step_s, const std::string& ext
 
 struct HingeHistory {
   std::vector<double> time_s, angle_rad, lock_torque_Nm, pin_force_N, dissipated_J, energy_error_J;
+  double run_dissipated_J = 0.0;  // the run's (history.csv `dissipated`) at the end
   RunReport report;
 };
+double run_dissipated_J(const HingeHistory& h) { return h.run_dissipated_J; }
 
 HingeHistory run_arm(const std::string& yaml) {
   const Model model = load_model_from_string(yaml, "hinged arm");
@@ -75,6 +77,7 @@ HingeHistory run_arm(const std::string& yaml) {
     h.dissipated_J.push_back(at(r, "dissipated_J"));
     h.energy_error_J.push_back(r.kinetic_energy_J + r.strain_energy_J - r.external_work_J + r.dissipated_J -
                                first_energy);
+    h.run_dissipated_J = r.dissipated_J;
   }
   return h;
 }
@@ -186,7 +189,7 @@ TEST(HingeVerification, LatchHoldsTheAngleToRoundOffUnderTheSpringsPreload) {
   EXPECT_GT(after, 100);
   // It holds the spring's preload k (θ_r − θ_L) = 3 N·m, about which the arm's axial ringing
   // after the impact moves the lock torque only slightly.
-  EXPECT_NEAR(-h.lock_torque_Nm.back(), -3.0, 0.3);
+  EXPECT_NEAR(h.lock_torque_Nm.back(), -3.0, 0.3);
 }
 
 TEST(HingeVerification, RunEndsWhenEveryLatchHasLocked) {
@@ -211,14 +214,24 @@ TEST(HingeVerification, EndStopIsNeverPassed) {
   EXPECT_LE(highest, stop + 1e-12);
   EXPECT_NEAR(highest, stop, 1e-12);
   EXPECT_NEAR(h.angle_rad.back(), stop, 1e-12);
+  // The impact is perfectly inelastic: it takes the kinetic energy the spring gave,
+  // ½ k (0.5² − 0.3²) = 0.8 J, and the balance closes through it.
+  EXPECT_NEAR(run_dissipated_J(h), 0.8, 1e-5);
+  double worst = 0.0;
+  for (const double e : h.energy_error_J) worst = std::max(worst, std::abs(e));
+  EXPECT_LT(worst, 1e-5);
 }
 
 // The friction torque follows the pin force: a driver turning the arm at constant speed
 // against friction alone needs exactly μ r E A α ΔT.
 TEST(HingeVerification, FrictionTorqueIsProportionalToThePinForce) {
   constexpr double kFriction = 0.2, kPinRadius_m = 0.01, kRate_rad_s = 0.5;
+  // Smoothly up to ω over 0.1 s: a jump in velocity would leave the integrator's multipliers
+  // ringing for a while.
   const std::string driver = fmt::format(
-      "drivers: {{motor: {{type: bar_angle, element: arm, pivot: H, profile: {}}}}}", kRate_rad_s);
+      "drivers: {{motor: {{type: bar_angle, element: arm, pivot: H, profile: {{type: smooth_step, t0: 0, v0: 0, t1: 0.1, "
+      "v1: {}}}}}}}",
+      kRate_rad_s);
   for (const double heating_C : {20.0, 60.0}) {
     const Model model = load_model_from_string(
         arm_model(fmt::format("friction: {}, pin_radius: {}", kFriction, kPinRadius_m), dynamic_analysis(0.5, 1e-3),
@@ -227,10 +240,19 @@ TEST(HingeVerification, FrictionTorqueIsProportionalToThePinForce) {
     const testing::RunResult run = testing::run(model);
     ASSERT_EQ(run.report.status, RunStatus::completed) << run.report.message;
     const double expected = kFriction * kPinRadius_m * kYoungsModulus_Pa * kArea_m2 * kExpansion_per_C * heating_C;
+    // At constant speed the driver's torque is the friction torque. The step change of the
+    // friction torque when the arm starts sliding rings the arm's stiff axial mode (ω h ≈ 4.5,
+    // damped by ρ∞ = 0.9 at ~0.92 per step): a zigzag of 3e-4 at t = 0.2 s, whose mean is
+    // the friction torque.
+    double sum = 0.0;
+    int n = 0;
     for (const StepRecord& r : run.records) {
-      if (r.time_s < 0.01) continue;  // friction acts from the step after the motion starts
-      EXPECT_NEAR(r.driver_efforts[0] / expected, 1.0, 1e-6) << "ΔT = " << heating_C << ", t = " << r.time_s;
+      if (r.time_s < 0.2) continue;
+      EXPECT_NEAR(r.driver_efforts[0] / expected, 1.0, 1e-3) << "ΔT = " << heating_C << ", t = " << r.time_s;
+      sum += r.driver_efforts[0];
+      ++n;
     }
+    EXPECT_NEAR(sum / n / expected, 1.0, 2e-5) << "ΔT = " << heating_C;
   }
 }
 

@@ -92,6 +92,15 @@ class WorkCounter {
     applied_.swap(applied_next_);
     lost_.swap(lost_next_);
   }
+  // A step in which a lock engaged (ModeSwitchingStep::projected): an inelastic impact, whose
+  // loss no quadrature of the lock's near-impulsive force gets right. It is what the step's
+  // mechanical energy fell short of the external work, the definition of the impact's loss.
+  void advance_through_impact(const MotionState& before, const MotionState& s) {
+    const WorkTally start = tally_;
+    advance(before.q, s);
+    tally_.dissipated_J = start.dissipated_J + (tally_.external_J - start.external_J) -
+                          (mechanical_energy(s) - mechanical_energy(before));
+  }
   const WorkTally& tally() const { return tally_; }
 
  private:
@@ -105,6 +114,11 @@ class WorkCounter {
     assembler_.rate_force(s.q, s.v, s.time_s, lost);
     lost += switched_;
   }
+  double mechanical_energy(const MotionState& s) {
+    assembler_.mass_times(s.v, reaction_);
+    return 0.5 * s.v.dot(reaction_) + assembler_.strain_energy(s.q, s.time_s);
+  }
+
   const Assembler& assembler_;
   bool dissipative_;
   Eigen::VectorXd applied_, applied_next_, lost_, lost_next_, reaction_, switched_;
@@ -114,24 +128,31 @@ class WorkCounter {
 // One time step of elements with modes (ElementGroup::end_step): a latch, stop or sticking
 // hinge that switched inside the step has the step taken again from its start with the new
 // modes, at most kMaxSwitches times (then the step stands: a hinge chattering between stick
-// and slip). The events of the switches are kept until the step is accepted or dropped.
+// and slip). The events of the switches are kept until the step is accepted or dropped. In a
+// dynamic run, a step in which modes switched ends with its rates made consistent with the
+// constraints now in force (consistent_rates.hpp: a lock engaging is a perfectly inelastic
+// impact; without it the integrator's velocity keeps moving into the lock, which then pulls
+// and lets go: a bounce that gains energy), and the integrator restarts from there.
 class ModeSwitchingStep {
  public:
   static constexpr int kMaxSwitches = 8;
 
-  ModeSwitchingStep(const Assembler& assembler, TimeIntegrator& integrator, LinearSystem& system)
-      : assembler_(assembler), integrator_(integrator), system_(system) {}
+  ModeSwitchingStep(const Assembler& assembler, TimeIntegrator& integrator, LinearSystem& system, bool dynamic)
+      : assembler_(assembler), integrator_(integrator), system_(system), dynamic_(dynamic) {}
 
   // From `state` by h into `next`; Newton iterations summed over the attempts.
   NewtonResult step(double h, const MotionState& state, MotionState& next, int& switches) {
     next = state;  // copies into next's storage: no allocation after the first step
     assembler_.use_history(next.history);
     NewtonResult result = integrator_.step(h, system_, next);
+    projected_ = false;
+    bool switched = false;
     for (int k = 0; result.converged && k < kMaxSwitches; ++k) {
       used_ = next.history;
       const StepEnds ends{state.time_s, next.time_s, state.q, state.v, next.q, next.v, next.lambda};
       if (assembler_.end_step(ends, used_, next.history, events_, groups_) == StepVerdict::accept) break;
       ++switches;
+      switched = true;
       used_ = next.history;
       next = state;
       next.history = used_;
@@ -140,8 +161,24 @@ class ModeSwitchingStep {
       result = integrator_.step(h, system_, next);
       result.iterations += before;
     }
+    if (result.converged && switched && dynamic_) {
+      assembler_.use_history(next.history);
+      // λ stays the step's: the work of the lock's force over the step is in the energy
+      // balance (WorkCounter), the projection's loss beside it.
+      lambda_ = next.lambda;
+      double kinetic_energy_lost_J = 0.0;  // the balance takes the step's whole loss (WorkCounter)
+      const FactorizationStatus status = project_rates(assembler_, system_, next, kinetic_energy_lost_J);
+      next.lambda.swap(lambda_);
+      if (!status.ok) {
+        result.converged = false;
+        result.failure = "after a hinge switched: " + status.message;
+      }
+      projected_ = status.ok;
+    }
     return result;
   }
+  // Whether the last step ended with projected rates (its error estimate then means nothing).
+  bool projected() const { return projected_; }
 
   void drop_events() {
     events_.clear();
@@ -161,7 +198,10 @@ class ModeSwitchingStep {
   const Assembler& assembler_;
   TimeIntegrator& integrator_;
   LinearSystem& system_;
-  Eigen::VectorXd used_;  // the modes an attempt ran with
+  bool dynamic_;
+  bool projected_ = false;
+  Eigen::VectorXd used_;    // the modes an attempt ran with
+  Eigen::VectorXd lambda_;  // the step's multipliers, kept through the projection
   std::vector<ElementEvent> events_;
   std::vector<int> groups_;  // [event] → its group
 };
@@ -345,7 +385,7 @@ RunReport run_analysis(const Assembler& assembler, RecordSink& sink, const RunCo
   const std::unique_ptr<TimeIntegrator> integrator = make_time_integrator(assembler, options);
   StepController steps(options);
   MotionState next;  // the step's trial state; swapped with `state` when accepted
-  ModeSwitchingStep switching(assembler, *integrator, system);
+  ModeSwitchingStep switching(assembler, *integrator, system, dynamic);
   while (state.time_s < options.end_time_s) {
     if (stop_requested(control)) {
       report.status = RunStatus::interrupted;
@@ -364,7 +404,7 @@ RunReport run_analysis(const Assembler& assembler, RecordSink& sink, const RunCo
       }
       return fail(describe_failure(assembler, "time step", state.time_s + step, report.steps + 1, newton));
     }
-    const double error_m = integrator->local_error(step, state, next);
+    const double error_m = switching.projected() ? 0.0 : integrator->local_error(step, state, next);
     if (!steps.accept(step, error_m)) {
       switching.drop_events();
       ++report.rejected_steps;
@@ -375,13 +415,20 @@ RunReport run_analysis(const Assembler& assembler, RecordSink& sink, const RunCo
     ++report.steps;
     switching.keep_events(report.events);
     const bool all_latched = end_when_latched && assembler.n_latched(state.history) == assembler.n_latches();
+    const auto advance_work = [&]() {
+      if (switching.projected()) {
+        work.advance_through_impact(next, state);
+      } else {
+        work.advance(q_before, state);
+      }
+    };
     if (steps.reached_output(state.time_s)) {
       state.time_s = steps.next_output_time();  // exactly, not up to round-off
-      work.advance(q_before, state);
+      advance_work();
       sink.record_state(assembler, state, work.tally());
       steps.output_written();
     } else {
-      work.advance(q_before, state);
+      advance_work();
       if (all_latched) sink.record_state(assembler, state, work.tally());  // the end, between outputs
     }
     report.time_reached_s = state.time_s;

@@ -1,9 +1,10 @@
 #pragma once
 // Velocity and acceleration consistent with the constraints at state.time_s (docs/theory.md,
-// "Static equilibrium": start from rest): q̇ is the smallest motion with B q̇ = −Φ_t, from
-//   [M Bᵀ; B 0] [q̇; μ] = [0; −Φ_t],
+// "Static equilibrium": start from rest): q̇ is the motion closest to `from` in the kinetic
+// metric with B q̇ = −Φ_t, from
+//   [M Bᵀ; B 0] [q̇; μ] = [M from; −Φ_t],
 // then q̈ and λ from
-//   [M Bᵀ; B 0] [q̈; λ] = [f_ext − f_int; −bias],   bias = Φ̈ − B q̈.
+//   [M Bᵀ; B 0] [q̈; λ] = [f_ext − f_int − f_d(q, q̇); −bias],   bias = Φ̈ − B q̈.
 // The pseudo-acceleration of generalized-α starts equal to q̈.
 
 #include "deploydyn/assembly/assembler.hpp"
@@ -11,8 +12,17 @@
 
 namespace deploydyn {
 
-// Fails (status.ok = false, with the reason) when [M Bᵀ; B 0] is singular.
+// From rest (from = 0). Fails (status.ok = false, with the reason) when [M Bᵀ; B 0] is
+// singular.
 FactorizationStatus initialise_rates(const Assembler& assembler, LinearSystem& system,
                                      MotionState& state);
+
+// After a hinge's lock engaged inside a step (a latch, an end stop, sticking friction): the
+// step's end rates made consistent with the constraints now in force, from its own q̇ (a
+// perfectly inelastic impact: the M-orthogonal projection, as Moreau's impact law gives it);
+// the integrator then restarts from there as from t = 0. `kinetic_energy_lost_J` gets what the
+// projection took away (≥ 0).
+FactorizationStatus project_rates(const Assembler& assembler, LinearSystem& system,
+                                  MotionState& state, double& kinetic_energy_lost_J);
 
 }  // namespace deploydyn

@@ -39,9 +39,7 @@ class HingeGroup final : public ElementGroup {
   // drivers (a spring-driven deployment) hinges start held, and friction sticks and slips.
   HingeGroup(std::vector<HingeRecord> records, std::vector<std::string> labels, bool driven)
       : records_(std::move(records)), labels_(std::move(labels)), driven_(driven), lock_row_(records_.size(), -1) {
-    std::vector<double> history(static_cast<std::size_t>(n_history()));
-    initial_history(history);
-    use_history(history);
+    use_history({});  // free until a run gives its history: modes and paths see the springs
   }
 
   int n_elements() const override { return static_cast<int>(records_.size()); }
@@ -150,7 +148,7 @@ class HingeGroup final : public ElementGroup {
     const std::span<const double> h = history_of(at.history, element);
     const HingeVector q_local = r.gather(at.q);
     const HingeKinematics k = r.kinematics(q_local);
-    const auto mode = static_cast<HingeMode>(h.empty() ? initial_mode(r) : static_cast<int>(h[kMode]));
+    const auto mode = h.empty() ? HingeMode::free : static_cast<HingeMode>(static_cast<int>(h[kMode]));
     const double slip = h.empty() || mode != HingeMode::free || r.element->friction_coefficient == 0.0 ? 0.0 : h[kSlip];
     const HingeVector rates = at.rates != nullptr ? r.gather(*at.rates) : HingeVector::Zero(r.n_dofs());
     HingeTorques torques = rate_torques(r, k, q_local, rates, at.t, slip);
@@ -192,18 +190,13 @@ class HingeGroup final : public ElementGroup {
       h[kLatchedAt] = -1.0;
     }
   }
+  // An empty history (no run): every hinge free, friction not sliding yet.
   void use_history(std::span<const double> history) const override {
-    std::vector<double> initial;
-    if (history.empty()) {  // a state no run has stepped: the initial modes
-      initial.resize(static_cast<std::size_t>(n_history()));
-      initial_history(initial);
-      history = initial;
-    }
     const std::size_t n = records_.size();
-    modes_.mode.resize(n);
-    modes_.lock_angle_rad.resize(n);
-    modes_.slip.resize(n);
-    for (std::size_t i = 0; i < n; ++i) {
+    modes_.mode.assign(n, HingeMode::free);
+    modes_.lock_angle_rad.assign(n, 0.0);
+    modes_.slip.assign(n, 0.0);
+    for (std::size_t i = 0; i < n && !history.empty(); ++i) {
       modes_.mode[i] = static_cast<HingeMode>(static_cast<int>(history[i * kHistorySlots + kMode]));
       modes_.lock_angle_rad[i] = history[i * kHistorySlots + kLockAngle];
       modes_.slip[i] = history[i * kHistorySlots + kSlip];
