@@ -252,6 +252,7 @@ TEST_P(CableGroup, SlackCableHasNoForceStiffnessOrEnergyButItsMass) {
     EXPECT_EQ(rate.norm(), 0.0) << "t = " << t;
     const std::vector<double> r = cable.results(q, t);
     EXPECT_EQ(r[2], 0.0) << "axial force";
+    EXPECT_FALSE(std::signbit(r[2])) << "a slack cable reports +0 N, not −0";
     EXPECT_EQ(r[4], 1.0) << "slack flag";
     EXPECT_LT(r[1], 0.0) << "mechanical strain";
   }

@@ -71,7 +71,7 @@ State<D> evaluate(const Vector<D>& x_a, const Vector<D>& x_b, const Section& sec
   s.mechanical_strain = s.strain - thermal_strain;
   s.slack = section.law == ForceLaw::tension_only && s.mechanical_strain < 0.0;
   s.strain_stiffness_N = s.slack ? 0.0 : section.axial_stiffness_N;
-  s.pk2_force_N = s.strain_stiffness_N * s.mechanical_strain;
+  s.pk2_force_N = s.slack ? 0.0 : s.strain_stiffness_N * s.mechanical_strain;  // +0, not −0
   s.axial_force_N = s.pk2_force_N * s.length_m / l0;
   return s;
 }
