@@ -22,7 +22,8 @@ bar::ElementVector<D> internal_force_per_rest_length(const bar::State<D>& s,
                                                      const bar::Section& section) {
   const double l0 = section.reference_length_m;
   const double length_sq = s.length_m * s.length_m;
-  const double rate = -(s.strain_stiffness_N * length_sq / (l0 * l0 * l0 * l0) + s.pk2_force_N / (l0 * l0));
+  const double rate =
+      -(s.strain_stiffness_N * length_sq / (l0 * l0 * l0 * l0) + s.pk2_force_N / (l0 * l0));
   bar::ElementVector<D> f;
   f << -rate * s.d, rate * s.d;
   return f;

@@ -25,7 +25,7 @@ struct CableElement {
   bool mass_given = false;
   TimeFunction rest_length_m;  // L0(t) > 0, m; for `pretension` and the default a constant
   CableRestLength rest_length_from = CableRestLength::initial_distance;
-  double pretension_N = 0.0;           // when rest_length_from == pretension
+  double pretension_N = 0.0;          // when rest_length_from == pretension
   TimeFunction temperature_change_C;  // ΔT_e(t), °C
   bool temperature_given = false;     // per-element ΔT rather than the model-wide one
 };

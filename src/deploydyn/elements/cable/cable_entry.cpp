@@ -20,8 +20,10 @@ constexpr ElementField kFields[] = {
     {"rest_length", "m", "distance of the nodes' initial positions",
      "a function > 0 at all times: the rest length L0(t) (a winch); not with `pretension`"},
     {"pretension", "N", "none",
-     "≥ 0: the tension of the initial cable at ΔT = 0, which sets a constant L0; not with `rest_length`"},
-    {"mass", "kg", "`density · area · L0(0)`", "> 0; an error if neither it nor a density is given"},
+     "≥ 0: the tension of the initial cable at ΔT = 0, which sets a constant L0; not with "
+     "`rest_length`"},
+    {"mass", "kg", "`density · area · L0(0)`",
+     "> 0; an error if neither it nor a density is given"},
     {"dT", "°C", "`thermal.dT`", "a function: this cable's own ΔT(t)"},
 };
 
@@ -62,8 +64,9 @@ void read_entry(const std::string& name, const ElementEntryReader& entry, Model&
   const std::optional<double> pretension_N =
       entry.optional_number("pretension", ValueSign::non_negative, "N");
   if (rest_length_m && pretension_N) {
-    entry.fail("pretension", "give either 'rest_length' (m) or 'pretension' (N), not both: "
-                             "each sets the cable's rest length");
+    entry.fail("pretension",
+               "give either 'rest_length' (m) or 'pretension' (N), not both: "
+               "each sets the cable's rest length");
   }
   if (rest_length_m) {
     if (const double least = least_value(*rest_length_m); !(least > 0.0)) {

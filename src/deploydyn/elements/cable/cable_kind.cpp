@@ -29,7 +29,7 @@ struct CableRecord {
   };
 
   std::array<int, kDofs> dofs{};
-  double axial_stiffness_N = 0.0;                      // EA
+  double axial_stiffness_N = 0.0;  // EA
   double mass_kg = 0.0;
   double expansion_per_C = 0.0;                        // α
   double initial_rest_length_m = 0.0;                  // L0(0): the length scale
@@ -39,7 +39,8 @@ struct CableRecord {
   double thermal_strain(double t) const { return expansion_per_C * temperature_change_C->value(t); }
 
   State evaluate(const Vector& q, double t, double thermal_factor) const {
-    const bar::Section section{axial_stiffness_N, rest_length_m->value(t), bar::ForceLaw::tension_only};
+    const bar::Section section{axial_stiffness_N, rest_length_m->value(t),
+                               bar::ForceLaw::tension_only};
     return {bar::evaluate<D>(q.template head<D>(), q.template tail<D>(), section,
                              thermal_factor * thermal_strain(t)),
             section};
@@ -53,7 +54,8 @@ struct CableRecord {
   Vector thermal_force_rate(const State& s, double t) const {
     return expansion_per_C * temperature_change_C->derivative(t) *
                bar::internal_force_per_thermal_strain<D>(s.bar, s.section) +
-           rest_length_m->derivative(t) * cable::internal_force_per_rest_length<D>(s.bar, s.section);
+           rest_length_m->derivative(t) *
+               cable::internal_force_per_rest_length<D>(s.bar, s.section);
   }
   Matrix tangent(const State& s) const { return bar::tangent<D>(s.bar, s.section); }
   Matrix mass(MassMatrixKind kind) const { return bar::mass_matrix<D>(mass_kg, kind); }
@@ -104,19 +106,22 @@ class CableGroup final : public LocalElementGroup<CableRecord<D>> {
   void initial_history(std::span<double> history) const override {
     std::fill(history.begin(), history.end(), kNotYetSeen);
   }
-  StepVerdict end_step(const StepEnds& ends, std::span<const double> before, std::span<double> after,
-                       std::vector<ElementEvent>& events) const override {
+  StepVerdict end_step(const StepEnds& ends, std::span<const double> before,
+                       std::span<double> after, std::vector<ElementEvent>& events) const override {
     for (int e = 0; e < this->n_elements(); ++e) {
       const CableRecord<D>& cable = this->elements()[static_cast<std::size_t>(e)];
       const auto i = static_cast<std::size_t>(e);
       const bool was_slack =
           before[i] == kNotYetSeen
-              ? cable.evaluate(this->gather(cable, ends.q_before), ends.time_before_s, 1.0).bar.slack
+              ? cable.evaluate(this->gather(cable, ends.q_before), ends.time_before_s, 1.0)
+                    .bar.slack
               : before[i] == kSlack;
-      const bar::State<D> now = cable.evaluate(this->gather(cable, ends.q_after), ends.time_after_s, 1.0).bar;
+      const bar::State<D> now =
+          cable.evaluate(this->gather(cable, ends.q_after), ends.time_after_s, 1.0).bar;
       after[i] = now.slack ? kSlack : kTaut;
       if (now.slack != was_slack) {
-        events.push_back({ends.time_after_s, e, now.slack ? "slack" : "taut", now.mechanical_strain});
+        events.push_back(
+            {ends.time_after_s, e, now.slack ? "slack" : "taut", now.mechanical_strain});
       }
     }
     return StepVerdict::accept;
