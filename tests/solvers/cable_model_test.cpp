@@ -16,6 +16,7 @@
 #include "deploydyn/elements/cable/cable_kind.hpp"
 #include "deploydyn/elements/element_kinds.hpp"
 #include "deploydyn/io/model_loader.hpp"
+#include "deploydyn/solvers/continuation.hpp"
 #include "deploydyn/solvers/modal_analysis.hpp"
 #include "deploydyn/solvers/static_solver.hpp"
 #include "support/model_builder.hpp"
@@ -186,6 +187,62 @@ TEST(CableSlackTemperature, PretensionedCableGoesSlackWhereThermalStrainCancelsI
   // The exact temperature is below the first-order one by ~T0/EA = 1e-3 relative: the check
   // above tells them apart.
   EXPECT_GT((first_order_C - exact_C) / exact_C, 0.5e-3);
+}
+
+// The same cable in series with an unheated bar, C between them on a roller along the line:
+// continuation in the ΔT scale μ (thermal parameter) through the slack point. Taut, the bar
+// and the cable carry the same force; slack, the bar is back at its length (C at x = 1) and
+// carries none. The slack point is where the bar is unstressed and the cable has its initial
+// length: the ΔT* of (C7). Needs ∂f/∂μ at μ (Eq. C4).
+constexpr double kPathForceTolerance_N = 1e-6;  // corrector: 1e-8 of the largest force, ~2e3 N
+constexpr double kPathPositionTolerance_m = 1e-12;
+
+TEST(CableSlackTemperature, ContinuationInTheTemperatureScaleCrossesTheSlackPoint) {
+  const double exact_C = exact_slack_temperature_C();
+  const double model_dT_C = 1.0;  // μ is ΔT in °C
+  const Model model = load_model_from_string(
+      fmt::format("nodes: {{A: [0, 0], C: [1, 0], B: [2, 0]}}\n"
+                  "materials: {{steel: {{E: 2.0e11, alpha: {}, density: 7850}}}}\n"
+                  "elements:\n"
+                  "  bar: {{nodes: [A, C], area: 1.0e-4, material: steel, dT: 0}}\n"
+                  "  c: {{type: cable, nodes: [C, B], area: 1.0e-5, material: steel, pretension: {}}}\n"
+                  "supports: [{{node: A}}, {{node: B}}, {{node: C, fix: [y]}}]\n"
+                  "thermal: {{dT: {}}}\n",
+                  kAlpha, kPretension_N, model_dT_C),
+      "cable_and_bar.yaml");
+  const Assembler assembler(model);
+  const auto system = make_linear_system(assembler);
+  ContinuationOptions options;
+  options.parameter = PathParameter::thermal;
+  options.start = 0.0;
+  options.end = 2.0 * exact_C;
+  options.n_eigenvalues = 1;
+  const ContinuationResult path = trace_path(assembler, options, *system, assembler.initial_coordinates(),
+                                             Eigen::VectorXd::Zero(assembler.n_equations()));
+  ASSERT_EQ(path.end, ContinuationEnd::reached_end) << path.message;
+  int n_taut = 0, n_slack = 0;
+  for (const PathPoint& p : path.points) {
+    const double mu = p.parameter;
+    // Bars come before cables in element_kinds(): [bar, cable].
+    const std::vector<double> force_N = assembler.element_quantity("axial_force_N", p.q, 0.0, mu);
+    ASSERT_EQ(force_N.size(), 2u);
+    const double x_c = testing::node_position(assembler, p.q, 1).x();
+    if (mu * model_dT_C < exact_C * (1.0 - 1e-9)) {
+      ++n_taut;
+      EXPECT_GT(force_N[1], 0.0) << "μ = " << mu;
+      EXPECT_NEAR(force_N[0], force_N[1], kPathForceTolerance_N) << "μ = " << mu;
+      EXPECT_GT(x_c, 1.0) << "μ = " << mu;
+    } else if (mu * model_dT_C > exact_C * (1.0 + 1e-9)) {
+      ++n_slack;
+      EXPECT_EQ(force_N[1], 0.0) << "μ = " << mu;
+      EXPECT_NEAR(force_N[0], 0.0, kPathForceTolerance_N) << "μ = " << mu;
+      EXPECT_NEAR(x_c, 1.0, kPathPositionTolerance_m) << "μ = " << mu;
+    }
+  }
+  EXPECT_GT(n_taut, 2);
+  EXPECT_GT(n_slack, 2);
+  std::cout << "[ measured ] continuation: " << path.points.size() << " points, " << n_taut << " taut, "
+            << n_slack << " slack, " << path.rejected_steps << " rejected steps\n";
 }
 
 // ---------------------------------------------------------------------------------------------
