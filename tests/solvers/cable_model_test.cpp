@@ -193,7 +193,8 @@ TEST(CableSlackTemperature, PretensionedCableGoesSlackWhereThermalStrainCancelsI
 // continuation in the ΔT scale μ (thermal parameter) through the slack point. Taut, the bar
 // and the cable carry the same force; slack, the bar is back at its length (C at x = 1) and
 // carries none. The slack point is where the bar is unstressed and the cable has its initial
-// length: the ΔT* of (C7). Needs ∂f/∂μ at μ (Eq. C4).
+// length: the ΔT* of (C7). (The corrector converges even with ∂f/∂μ taken at μ = 1; that
+// derivative is checked in cable_test.cpp.)
 constexpr double kPathForceTolerance_N = 1e-6;  // corrector: 1e-8 of the largest force, ~2e3 N
 constexpr double kPathPositionTolerance_m = 1e-12;
 
