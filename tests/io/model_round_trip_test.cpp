@@ -217,6 +217,7 @@ elements:
   loose: {type: cable, nodes: [A, B], area: 2.0e-6, material: steel, mass: 0.3}
 supports: [{node: A}, {node: C}]
 )", "cables"));
+  expect_round_trip(load_model(fmt::format("{}/examples/cables/guyed_mast.yaml", DEPLOYDYN_SOURCE_DIR)));
 }
 
 // analysis.type continuation keeps its own keys (parameter, start, end, eigenvalues, max_steps)

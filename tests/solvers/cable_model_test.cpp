@@ -290,5 +290,28 @@ TEST(CableWinch, RestLengthShrinkingInTimeLiftsTheHangingMass) {
   std::cout << "[ measured ] winch: largest |y_B − (−r L0(t))| = " << worst_position_m << " m\n";
 }
 
+// examples/cables/guyed_mast.yaml: the symmetric stays carry equal tension, which falls while
+// the structure heats (to t = 1 s) and rises while it cools; no stay goes slack in its range.
+TEST(CableExample, GuyedMastStaysLoseTensionHeatedAndGainItCooled) {
+  const Model model = load_model(std::string(DEPLOYDYN_SOURCE_DIR) + "/examples/cables/guyed_mast.yaml");
+  const testing::RunResult run = testing::run(model);
+  ASSERT_EQ(run.report.status, RunStatus::completed) << run.report.message;
+  EXPECT_TRUE(run.report.events.empty());
+  double previous_N = 0.0;
+  for (const StepRecord& r : run.records) {
+    const double left_N = cable_result(r, 0, "axial_force_N");
+    EXPECT_NEAR(cable_result(r, 1, "axial_force_N"), left_N, 1e-9 * left_N) << "t = " << r.time_s;
+    EXPECT_GT(left_N, 0.0) << "t = " << r.time_s;
+    if (r.time_s > 0.0) {
+      if (r.time_s <= 1.0) {
+        EXPECT_LT(left_N, previous_N) << "heating, t = " << r.time_s;
+      } else {
+        EXPECT_GT(left_N, previous_N) << "cooling, t = " << r.time_s;
+      }
+    }
+    previous_N = left_N;
+  }
+}
+
 }  // namespace
 }  // namespace deploydyn
