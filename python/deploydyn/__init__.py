@@ -636,6 +636,26 @@ class ModelBuilder:
         self._section("elements")[_name(where, "name", name)] = spec
         return self
 
+    def cable(self, name, node_a, node_b, area, material, rest_length=None, pretension=None,
+              mass=None, dT=None):
+        """A tension-only cable between two nodes (docs/theory.md, "Cables"): area (m²),
+        rest_length (m, a number or a function of t: a winch; default the nodes' distance) or
+        pretension (N, the initial cable's tension at ΔT = 0; not both), mass (kg; default
+        density·area·L0(0)), dT (its own ΔT(t), °C)."""
+        where = "ModelBuilder.cable"
+        spec = {"type": "cable",
+                "nodes": [_name(where, "node_a", node_a), _name(where, "node_b", node_b)],
+                "area": _number(where, "area", area),
+                "material": _name(where, "material", material)}
+        for key, value in (("pretension", pretension), ("mass", mass)):
+            if value is not None:
+                spec[key] = _number(where, key, value)
+        for key, value in (("rest_length", rest_length), ("dT", dT)):
+            if value is not None:
+                spec[key] = _time_function(where, key, value)
+        self._section("elements")[_name(where, "name", name)] = spec
+        return self
+
     def hinge(self, name, nodes=None, rotation_nodes=None, stiffness=None, rest_angle=None,
               damping=None, friction=None, pin_radius=None, stop_min=None, stop_max=None,
               latch=None, axis=None):

@@ -199,6 +199,30 @@ def test_pin_joint_and_hinge_angle_driver_move_a_two_bar_chain():
     assert "torque.arm" in result.columns
 
 
+def test_a_pretensioned_cable_between_pins_goes_slack_when_heated():
+    """docs/theory.md "Cables" (C7): slack above ΔT* = ε*/α, ε*²(1 + 2ε*) = (T0/EA)²."""
+    tension, area = 2000.0, 1.0e-5
+    tau = tension / (E * area)
+    strain = tau
+    for _ in range(50):  # Newton on ε²(1 + 2ε) − τ², from above the root
+        strain -= (strain * strain * (1 + 2 * strain) - tau * tau) / (2 * strain + 6 * strain * strain)
+    slack_dT = strain / ALPHA
+    model = (deploydyn.ModelBuilder("heated cable")
+             .node("A", 0, 0).node("B", 1.5, 0)
+             .material("steel", E=E, alpha=ALPHA, density=7850)
+             .cable("c", "A", "B", area=area, material="steel", pretension=tension)
+             .support("A").support("B")
+             .thermal(deploydyn.table([(0, 0), (1, 2 * slack_dT)]))
+             .analysis(type="static", end=1.0, step=0.2)
+             .build())
+    result = model.run(check=True)
+    assert result["force.c"][0] == pytest.approx(tension, rel=1e-12)
+    # ε_m = ε − αΔT with the length held: zero at ΔT*. At t = 0.2, ΔT = 0.4 ΔT*.
+    assert result["mstrain.c"][1] / ALPHA + 0.4 * slack_dT == pytest.approx(slack_dT, rel=1e-9)
+    assert list(result["slack.c"]) == [0, 0, 0, 1, 1, 1]
+    assert all(result["force.c"][:3] > 0) and list(result["force.c"][3:]) == [0, 0, 0]
+
+
 def test_spring_driven_hinge_latches_and_the_run_ends_there():
     # An arm H–B with a 1 kg tip turned by a preloaded torsion spring at H until its latch;
     # θ is the angle at H from H→A = (−1, 0) to H→B = (1, 0.2).

@@ -124,7 +124,7 @@ TEST_P(ElementAssembly, ForceTangentAndThermalTermsAreDerivatives) {
   EXPECT_LT(relative_error(k, jacobian), kDerivativeTolerance);
 
   Eigen::VectorXd by_factor;
-  assembler.thermal_force_derivative(q, t, by_factor);
+  assembler.thermal_force_derivative(q, t, 1.0, by_factor);
   const Eigen::MatrixXd factor_difference = testing::central_jacobian(
       [&](const Eigen::VectorXd& factor) {
         Eigen::VectorXd g;

@@ -214,7 +214,7 @@ TEST_F(Beam2dGroup, ThermalForceDerivativeAndRateMatchFiniteDifferences) {
     const Eigen::VectorXd q = random_state(rng) * 0.5;  // any state; the model's L0 is 0.94 m
     const double t = 0.6 + 0.1 * c;
     Eigen::VectorXd derivative = Eigen::VectorXd::Zero(6), rate = Eigen::VectorXd::Zero(6);
-    group_->add_thermal_force_derivative(q, t, derivative);
+    group_->add_thermal_force_derivative(q, t, 1.0, derivative);
     group_->add_thermal_force_rate(q, t, rate);
     const double h = 1e-5;
     const Eigen::VectorXd fd_factor = (force(q, t, 1.0 + h) - force(q, t, 1.0 - h)) / (2.0 * h);

@@ -114,6 +114,13 @@ const BadModelCase kBadModels[] = {
     {"rotation_fixed_on_bar_node.yaml", 6, "supports.0.fix.2", "node 'A' has no rotation to fix"},
     {"moment_on_bar_node.yaml", 6, "loads.0.moment", "node 'B' has no rotation for a moment to act on"},
     {"bar_angle_on_beam.yaml", 7, "drivers.motor.element", "element 'b' is a beam; a bar_angle driver turns a bar"},
+    {"cable_pretension_and_rest_length.yaml", 10, "elements.c.pretension",
+     "give either 'rest_length' (m) or 'pretension' (N), not both"},
+    {"cable_negative_area.yaml", 4, "elements.c.area", "must be positive (m²), got -1"},
+    {"cable_zero_rest_length.yaml", 4, "elements.c.rest_length",
+     "must stay positive (m) at all times, but reaches 0"},
+    {"cable_rest_length_reaches_negative.yaml", 9, "elements.c.rest_length",
+     "must stay positive (m) at all times, but reaches -0.1"},
 };
 
 class BadModel : public ::testing::TestWithParam<BadModelCase> {};

@@ -76,6 +76,22 @@ void expect_equal_models(const Model& a, const Model& b) {
     EXPECT_EQ(x.temperature_change_C, y.temperature_change_C);
     EXPECT_EQ(x.temperature_given, y.temperature_given);
   }
+  ASSERT_EQ(a.n_cables(), b.n_cables());
+  for (int i = 0; i < a.n_cables(); ++i) {
+    SCOPED_TRACE("cable " + a.cables[i].name);
+    const CableElement& x = a.cables[i];
+    const CableElement& y = b.cables[i];
+    EXPECT_EQ(x.name, y.name);
+    EXPECT_EQ(x.node_a, y.node_a);
+    EXPECT_EQ(x.node_b, y.node_b);
+    EXPECT_EQ(x.material, y.material);
+    EXPECT_EQ(x.area_m2, y.area_m2);
+    EXPECT_EQ(x.mass_kg, y.mass_kg);
+    EXPECT_EQ(x.rest_length_m, y.rest_length_m);
+    EXPECT_EQ(x.pretension_N, y.pretension_N);
+    EXPECT_EQ(x.temperature_change_C, y.temperature_change_C);
+    EXPECT_EQ(x.temperature_given, y.temperature_given);
+  }
   ASSERT_EQ(a.supports.size(), b.supports.size());
   for (std::size_t i = 0; i < a.supports.size(); ++i) {
     EXPECT_EQ(a.supports[i].node, b.supports[i].node);
@@ -185,6 +201,23 @@ drivers:
   push: {type: coordinate, node: D, direction: x, profile: 0.1}
 )", "2D joints"));
   expect_round_trip(load_model(fmt::format("{}/examples/petal/petal.yaml", DEPLOYDYN_SOURCE_DIR)));
+}
+
+// Cables: a winch's rest length L0(t), a pretension (written as given, its L0 recomputed to the
+// same bits) and the default rest length.
+TEST(ModelRoundTrip, Cables) {
+  expect_round_trip(load_model_from_string(R"(
+nodes: {A: [0, 0], B: [1.3, 0.4], C: [2, -1]}
+materials: {steel: {E: 2.0e11, alpha: 1.2e-5, density: 7850}}
+elements:
+  1: {nodes: [A, C], area: 1.0e-4, material: steel, mass: 1}
+  winch: {type: cable, nodes: [A, B], area: 1.0e-6, material: steel,
+          rest_length: {type: smooth_step, t0: 0, v0: 1.36, t1: 2, v1: 0.9}}
+  stay: {type: cable, nodes: [B, C], area: 1.0e-6, material: steel, pretension: 350.5, dT: -40}
+  loose: {type: cable, nodes: [A, B], area: 2.0e-6, material: steel, mass: 0.3}
+supports: [{node: A}, {node: C}]
+)", "cables"));
+  expect_round_trip(load_model(fmt::format("{}/examples/cables/guyed_mast.yaml", DEPLOYDYN_SOURCE_DIR)));
 }
 
 // analysis.type continuation keeps its own keys (parameter, start, end, eigenvalues, max_steps)

@@ -162,7 +162,7 @@ TEST(VerificationBeam3d, InitialStateAndThermalDerivativesOfTheGroup) {
     return out;
   };
   Eigen::VectorXd analytic;
-  assembler.thermal_force_derivative(q, t, analytic);
+  assembler.thermal_force_derivative(q, t, 0.7, analytic);
   const Eigen::VectorXd by_factor = (force(t, 0.7 + h) - force(t, 0.7 - h)) / (2 * h);
   const double factor_error = (analytic - by_factor).norm() / by_factor.norm();
   Eigen::VectorXd rate, constraint_rate;

@@ -205,10 +205,10 @@ void Assembler::internal_force(const Eigen::VectorXd& q, double t, double therma
   for (const auto& group : groups_) group->add_internal_force(q, t, thermal_factor, f);
 }
 
-void Assembler::thermal_force_derivative(const Eigen::VectorXd& q, double t,
+void Assembler::thermal_force_derivative(const Eigen::VectorXd& q, double t, double thermal_factor,
                                          Eigen::VectorXd& f) const {
   f.setZero(n_dofs());
-  for (const auto& group : groups_) group->add_thermal_force_derivative(q, t, f);
+  for (const auto& group : groups_) group->add_thermal_force_derivative(q, t, thermal_factor, f);
 }
 
 void Assembler::static_residual_time_derivative(const Eigen::VectorXd& q, double t,

@@ -51,9 +51,10 @@ class Assembler {
   // the initial equilibrium is found by load stepping).
   void internal_force(const Eigen::VectorXd& q, double t, double thermal_factor,
                       Eigen::VectorXd& f) const;
-  // ∂f_int/∂(thermal_factor) at q: f_int is linear in the factor, so this is the same at every
-  // factor (theory.md, "Path following and stability").
-  void thermal_force_derivative(const Eigen::VectorXd& q, double t, Eigen::VectorXd& f) const;
+  // ∂f_int/∂(thermal_factor) at q and that factor (theory.md, "Path following and stability"):
+  // the same at every factor for bars and beams, not for cables ("Cables", Eq. C4).
+  void thermal_force_derivative(const Eigen::VectorXd& q, double t, double thermal_factor,
+                                Eigen::VectorXd& f) const;
   // ∂/∂t at fixed q and λ of the static residual r = f_int − f_ext + Bᵀλ and of Φ: how the
   // equilibrium equations move with time through ΔT(t), the load factors and the drivers
   // (the quasi-static deployment a continuation follows, solvers/parametrized_equilibrium.hpp).

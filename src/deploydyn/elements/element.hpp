@@ -109,9 +109,10 @@ class ElementGroup {
   // Each adds its elements' share into the global vector (which the caller has sized).
   virtual void add_internal_force(const Eigen::VectorXd& q, double t, double thermal_factor,
                                   Eigen::VectorXd& f) const = 0;
-  // ∂f_int/∂(thermal factor) at q; f_int is linear in the factor.
+  // ∂f_int/∂(thermal factor) at q and that factor: the same at every factor where f_int is
+  // linear in it (bars, beams), not for a cable, whose slack state depends on it.
   virtual void add_thermal_force_derivative(const Eigen::VectorXd& q, double t,
-                                            Eigen::VectorXd& f) const = 0;
+                                            double thermal_factor, Eigen::VectorXd& f) const = 0;
   // ∂f_int/∂t at q through the rate of ΔT(t) (a quasi-static deployment in time).
   virtual void add_thermal_force_rate(const Eigen::VectorXd& q, double t,
                                       Eigen::VectorXd& f) const = 0;

@@ -2,6 +2,7 @@
 
 #include "deploydyn/elements/bar/bar_kind.hpp"
 #include "deploydyn/elements/beam/beam_kind.hpp"
+#include "deploydyn/elements/cable/cable_kind.hpp"
 #include "deploydyn/elements/hinge/hinge_kind.hpp"
 #include "deploydyn/model/model.hpp"
 
@@ -11,6 +12,7 @@ std::span<const ElementKind* const> element_kinds() {
   static const ElementKind* const kKinds[] = {
       &bar_kind(),
       &beam_kind(),
+      &cable_kind(),
       &hinge_kind(),
   };
   return kKinds;

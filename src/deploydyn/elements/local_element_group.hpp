@@ -12,7 +12,7 @@
 //   std::array<int, kDofs> dofs;
 //   State evaluate(const Vector& q, double t, double thermal_factor) const;
 //   Vector internal_force(const State&) const;
-//   Vector thermal_force_derivative(const State&, double t) const;   at thermal factor 1
+//   Vector thermal_force_derivative(const State&, double t) const;   ∂f/∂(thermal factor)
 //   Vector thermal_force_rate(const State&, double t) const;         ∂f/∂t through ΔT(t)
 //   Matrix tangent(const State&) const;               material + geometric
 //   Matrix mass(MassMatrixKind) const;
@@ -53,10 +53,10 @@ class LocalElementGroup : public ElementGroup {
     }
   }
 
-  void add_thermal_force_derivative(const Eigen::VectorXd& q, double t,
+  void add_thermal_force_derivative(const Eigen::VectorXd& q, double t, double thermal_factor,
                                     Eigen::VectorXd& f) const override {
     for (const Element& e : elements_) {
-      scatter(e, e.thermal_force_derivative(e.evaluate(gather(e, q), t, 1.0), t), f);
+      scatter(e, e.thermal_force_derivative(e.evaluate(gather(e, q), t, thermal_factor), t), f);
     }
   }
 

@@ -30,6 +30,24 @@ TwoNodeEnds read_two_node_ends(const ElementEntryReader& entry, const Model& mod
   return out;
 }
 
+GivenMass read_mass(const ElementEntryReader& entry, const Material& material, double area_m2,
+                    double length_m) {
+  const std::optional<double> mass_kg = entry.optional_number("mass", ValueSign::positive, "kg");
+  if (mass_kg) return {*mass_kg, true};
+  if (!material.density_kg_m3) {
+    entry.fail_missing("mass", fmt::format("needs a mass: give 'mass' (kg) here or a 'density' "
+                                           "(kg/m³) in material '{}'",
+                                           material.name));
+  }
+  return {*material.density_kg_m3 * area_m2 * length_m, false};
+}
+
+OwnTemperature read_own_temperature(const ElementEntryReader& entry, const Model& model) {
+  std::optional<TimeFunction> own_change_C = entry.optional_function("dT");
+  if (own_change_C) return {std::move(*own_change_C), true};
+  return {model.temperature_change_C, false};
+}
+
 LengthMassTemperature read_length_mass_and_temperature(const ElementEntryReader& entry,
                                                        const Model& model,
                                                        const Material& material, double area_m2,
@@ -38,22 +56,12 @@ LengthMassTemperature read_length_mass_and_temperature(const ElementEntryReader&
   const std::optional<double> length_m = entry.optional_number("length", ValueSign::positive, "m");
   out.length_given = length_m.has_value();
   out.reference_length_m = length_m.value_or(distance_m);
-
-  const std::optional<double> mass_kg = entry.optional_number("mass", ValueSign::positive, "kg");
-  out.mass_given = mass_kg.has_value();
-  if (mass_kg) {
-    out.mass_kg = *mass_kg;
-  } else if (material.density_kg_m3) {
-    out.mass_kg = *material.density_kg_m3 * area_m2 * out.reference_length_m;
-  } else {
-    entry.fail_missing("mass", fmt::format("needs a mass: give 'mass' (kg) here or a 'density' "
-                                           "(kg/m³) in material '{}'",
-                                           material.name));
-  }
-
-  std::optional<TimeFunction> own_change_C = entry.optional_function("dT");
-  out.temperature_given = own_change_C.has_value();
-  out.temperature_change_C = own_change_C ? std::move(*own_change_C) : model.temperature_change_C;
+  const GivenMass mass = read_mass(entry, material, area_m2, out.reference_length_m);
+  out.mass_kg = mass.mass_kg;
+  out.mass_given = mass.given;
+  OwnTemperature own = read_own_temperature(entry, model);
+  out.temperature_change_C = std::move(own.change_C);
+  out.temperature_given = own.given;
   return out;
 }
 

@@ -29,8 +29,22 @@ struct LengthMassTemperature {
   bool temperature_given = false;
 };
 
-// `length`, `mass` and `dT`. Without `mass`, the material's density · area_m2 · L0; an error
-// naming both when neither is given.
+struct GivenMass {
+  double mass_kg = 0.0;  // `mass`, or density · area · length
+  bool given = false;
+};
+// `mass`; without it, the material's density · area_m2 · length_m, and an error naming both
+// when neither is given.
+GivenMass read_mass(const ElementEntryReader& entry, const Material& material, double area_m2,
+                    double length_m);
+
+struct OwnTemperature {
+  TimeFunction change_C;  // `dT`, or the model-wide ΔT
+  bool given = false;
+};
+OwnTemperature read_own_temperature(const ElementEntryReader& entry, const Model& model);
+
+// `length` (default `distance_m`), then read_mass over L0 and read_own_temperature.
 LengthMassTemperature read_length_mass_and_temperature(const ElementEntryReader& entry,
                                                        const Model& model,
                                                        const Material& material, double area_m2,

@@ -11,6 +11,7 @@
 
 #include "deploydyn/elements/bar/bar_element.hpp"
 #include "deploydyn/elements/beam/beam_element.hpp"
+#include "deploydyn/elements/cable/cable_element.hpp"
 #include "deploydyn/elements/hinge/hinge_element.hpp"
 #include "deploydyn/model/joint.hpp"
 #include "deploydyn/model/time_function.hpp"
@@ -224,6 +225,7 @@ struct Model {
   std::vector<Material> materials;
   std::vector<BarElement> bars;
   std::vector<BeamElement> beams;
+  std::vector<CableElement> cables;
   std::vector<HingeElement> hinges;
   std::vector<FixedNode> supports;
   std::vector<Joint> joints;
@@ -237,6 +239,7 @@ struct Model {
   int n_nodes() const { return static_cast<int>(nodes.size()); }
   int n_bars() const { return static_cast<int>(bars.size()); }
   int n_beams() const { return static_cast<int>(beams.size()); }
+  int n_cables() const { return static_cast<int>(cables.size()); }
 };
 
 }  // namespace deploydyn

@@ -29,7 +29,7 @@ void ParametrizedEquilibrium::parameter_derivative(const Eigen::VectorXd& q,
                                                    Eigen::VectorXd& dr, Eigen::VectorXd& dphi) const {
   switch (parameter_) {
     case PathParameter::thermal:
-      assembler_.thermal_force_derivative(q, time_s_, dr);
+      assembler_.thermal_force_derivative(q, time_s_, thermal_factor(mu), dr);
       dphi.setZero(assembler_.n_equations());
       return;
     case PathParameter::load:

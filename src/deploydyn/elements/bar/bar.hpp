@@ -11,6 +11,10 @@
 //   S = EA ε_m (2nd Piola–Kirchhoff),  N = S l / L0   (true axial force, tension positive)
 //   M = (m/6) [2I I; I 2I] consistent, (m/2) I lumped  (constant in absolute coordinates)
 //
+// The force law S(ε_m) is linear (a bar) or tension-only (a cable, elements/cable/cable.hpp:
+// S = EA max(ε_m, 0)). Every kernel reads the law's slope k = dS/dε_m (EA, or 0 when slack) from
+// the State, so U = ½ k L0 ε_m² and the tangents above hold for both with EA replaced by k.
+//
 // Kernels are fixed-size in the space dimension D (2 or 3): no heap work per element.
 
 #include <Eigen/Core>
@@ -27,10 +31,19 @@ using ElementVector = Eigen::Matrix<double, 2 * D, 1>;
 template <int D>
 using ElementMatrix = Eigen::Matrix<double, 2 * D, 2 * D>;
 
+// How the axial force follows the mechanical strain.
+enum class ForceLaw {
+  linear,        // S = EA ε_m: a bar carries tension and compression
+  // S = EA max(ε_m, 0): a cable, slack (S = 0, k = 0) at ε_m < 0. At ε_m = 0 it takes the taut
+  // branch's slope EA, so that Newton from an unstretched cable sees its axial stiffness.
+  tension_only,
+};
+
 // The section constants one evaluation needs.
 struct Section {
   double axial_stiffness_N = 0.0;   // EA
   double reference_length_m = 0.0;  // L0
+  ForceLaw law = ForceLaw::linear;
 };
 
 // Strain state of a bar at one configuration.
@@ -40,8 +53,10 @@ struct State {
   double length_m = 0.0;         // l = |d|
   double strain = 0.0;           // ε, total Green–Lagrange
   double mechanical_strain = 0.0;  // ε_m = ε − ε_t
-  double pk2_force_N = 0.0;      // S = EA ε_m
+  double pk2_force_N = 0.0;      // S = EA ε_m (0 for a slack cable)
   double axial_force_N = 0.0;    // N = S l / L0
+  double strain_stiffness_N = 0.0;  // k = dS/dε_m: EA, or 0 for a slack cable
+  bool slack = false;            // a tension-only member at ε_m < 0
 };
 
 template <int D>
@@ -54,14 +69,16 @@ State<D> evaluate(const Vector<D>& x_a, const Vector<D>& x_b, const Section& sec
   s.length_m = std::sqrt(length_sq);
   s.strain = (length_sq - l0 * l0) / (2.0 * l0 * l0);
   s.mechanical_strain = s.strain - thermal_strain;
-  s.pk2_force_N = section.axial_stiffness_N * s.mechanical_strain;
+  s.slack = section.law == ForceLaw::tension_only && s.mechanical_strain < 0.0;
+  s.strain_stiffness_N = s.slack ? 0.0 : section.axial_stiffness_N;
+  s.pk2_force_N = s.slack ? 0.0 : s.strain_stiffness_N * s.mechanical_strain;  // +0, not −0
   s.axial_force_N = s.pk2_force_N * s.length_m / l0;
   return s;
 }
 
 template <int D>
 double strain_energy(const State<D>& s, const Section& section) {
-  return 0.5 * section.axial_stiffness_N * section.reference_length_m * s.mechanical_strain *
+  return 0.5 * s.strain_stiffness_N * section.reference_length_m * s.mechanical_strain *
          s.mechanical_strain;
 }
 
@@ -73,12 +90,12 @@ ElementVector<D> internal_force(const State<D>& s, const Section& section) {
   return f;
 }
 
-// ∂f/∂ε_t = −(EA/L0) [−d; d]: the internal force per unit thermal strain at a fixed
+// ∂f/∂ε_t = −(k/L0) [−d; d]: the internal force per unit thermal strain at a fixed
 // configuration (ε_m = ε − ε_t). Path following in ΔT needs it (theory.md, "Path following").
 template <int D>
 ElementVector<D> internal_force_per_thermal_strain(const State<D>& s, const Section& section) {
   ElementVector<D> f;
-  const Vector<D> g = (-section.axial_stiffness_N / section.reference_length_m) * s.d;
+  const Vector<D> g = (-s.strain_stiffness_N / section.reference_length_m) * s.d;
   f << -g, g;
   return f;
 }
@@ -86,7 +103,7 @@ ElementVector<D> internal_force_per_thermal_strain(const State<D>& s, const Sect
 template <int D>
 ElementMatrix<D> material_tangent(const State<D>& s, const Section& section) {
   const double l0 = section.reference_length_m;
-  const Eigen::Matrix<double, D, D> k = (section.axial_stiffness_N / (l0 * l0 * l0)) * s.d * s.d.transpose();
+  const Eigen::Matrix<double, D, D> k = (s.strain_stiffness_N / (l0 * l0 * l0)) * s.d * s.d.transpose();
   ElementMatrix<D> out;
   out << k, -k, -k, k;
   return out;

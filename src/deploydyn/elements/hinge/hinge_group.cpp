@@ -54,7 +54,7 @@ class HingeGroup final : public ElementGroup {
     }
   }
   // A hinge has no thermal strain (its pin force does, through its bar: friction, a rate force).
-  void add_thermal_force_derivative(const Eigen::VectorXd&, double, Eigen::VectorXd&) const override {}
+  void add_thermal_force_derivative(const Eigen::VectorXd&, double, double, Eigen::VectorXd&) const override {}
   void add_thermal_force_rate(const Eigen::VectorXd&, double, Eigen::VectorXd&) const override {}
   void add_mass_times(const Eigen::VectorXd&, Eigen::VectorXd&) const override {}
   void add_weight(const Eigen::Vector3d&, Eigen::VectorXd&) const override {}
