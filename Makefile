@@ -1,5 +1,5 @@
 # The two entry points. Each installs what is missing (Debian packages), configures, builds,
-# then runs. `make demo`: the paper's study and the scissor structures into results/. `make test`: every test.
+# then runs. `make demo`: the paper's study, the scissor structures and the mast into results/. `make test`: every test.
 # CI also runs `make sanitize` (the tests under ASan + UBSan) and `make fuzz` (60 s of libFuzzer).
 PRESET ?= release
 BUILD  := build/$(PRESET)
@@ -20,11 +20,13 @@ configure: deps
 build: configure
 	@cmake --build $(BUILD)
 
-# The paper's study, then the scissor arch and ring at the same three ΔT; both run even if one fails.
+# The paper's study, then the scissor arch and ring and the spring-driven mast (docs/boom.md) at
+# the same three ΔT; each runs even if another fails.
 demo: build
 	@status=0; \
 	$(PYTHON) scripts/paper_demo.py --cli $(BUILD)/deploydyn --out results/paper || status=1; \
 	$(PYTHON) scripts/scissor_demo.py --cli $(BUILD)/deploydyn --out results/scissor || status=1; \
+	$(PYTHON) scripts/boom_demo.py --cli $(BUILD)/deploydyn --out results/boom || status=1; \
 	exit $$status
 
 test: build

@@ -94,6 +94,9 @@ struct StepEnds {
   const Eigen::VectorXd& q_after;
   const Eigen::VectorXd& v_after;
   const Eigen::VectorXd& lambda_after;
+  // False on the last attempt a step may have (ModeSwitchingStep's limit reached): the groups
+  // must accept it as it is, writing its history and switching nothing.
+  bool may_switch = true;
 };
 enum class StepVerdict { accept, redo };
 

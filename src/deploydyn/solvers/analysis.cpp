@@ -147,9 +147,12 @@ class ModeSwitchingStep {
     NewtonResult result = integrator_.step(h, system_, next);
     projected_ = false;
     bool switched = false;
-    for (int k = 0; result.converged && k < kMaxSwitches; ++k) {
+    for (int k = 0; result.converged; ++k) {
       used_ = next.history;
-      const StepEnds ends{state.time_s, next.time_s, state.q, state.v, next.q, next.v, next.lambda};
+      // After kMaxSwitches attempts the step stands: the groups still write its history (the
+      // hinges' dissipated energy, lock torque, sliding direction) without switching.
+      const StepEnds ends{state.time_s, next.time_s, state.q, state.v, next.q, next.v, next.lambda,
+                          k < kMaxSwitches};
       if (assembler_.end_step(ends, used_, next.history, events_, groups_) == StepVerdict::accept) break;
       ++switches;
       switched = true;

@@ -210,7 +210,7 @@ class HingeGroup final : public ElementGroup {
     // First the switches: a latch or stop reached, a sliding hinge come to rest, a lock that
     // lets go. Any of them: the step again with the new modes, nothing else written.
     bool switched = false;
-    for (std::size_t i = 0; i < records_.size(); ++i) {
+    for (std::size_t i = 0; i < records_.size() && ends.may_switch; ++i) {
       switched |= switch_mode(i, ends, before.subspan(i * kHistorySlots, kHistorySlots),
                               after.subspan(i * kHistorySlots, kHistorySlots), events);
     }
