@@ -11,6 +11,7 @@
 #include <chrono>
 #include <csignal>
 #include <cstdio>
+#include <filesystem>
 #include <string>
 #include <system_error>
 
@@ -22,6 +23,7 @@
 #include "deploydyn/io/text_file.hpp"
 #include "deploydyn/output/output_error.hpp"
 #include "deploydyn/output/plausibility.hpp"
+#include "deploydyn/output/result_folder.hpp"
 #include "deploydyn/output/run_to_folder.hpp"
 #include "exit_codes.hpp"
 #include "generate_command.hpp"
@@ -93,10 +95,36 @@ class ProgressLine {
   Clock::time_point start_, last_;
 };
 
-int run_command(const std::string& model_file, const std::string& out_dir,
+// The files by which a folder shows that a run (or a study) wrote into it.
+std::vector<std::string> earlier_results(const std::filesystem::path& folder, const Model& model) {
+  std::vector<std::string> found;
+  for (const std::string& name : {std::string(kLockFileName), std::string(kRunModelFileName),
+                                  model.output.summary_file, model.output.history_file,
+                                  std::string("summary.json"), std::string("study.json")}) {
+    std::error_code error;
+    if (std::filesystem::exists(folder / name, error) &&
+        std::find(found.begin(), found.end(), name) == found.end()) {
+      found.push_back(name);
+    }
+  }
+  return found;
+}
+
+// `out_given`: --out was on the command line. Without it the run goes into ./results, but
+// never over the results of an earlier run there unless `force`: they may be all that is
+// left of a long run, and the user named no folder to replace.
+int run_command(const std::string& model_file, const std::string& out_dir, bool out_given, bool force,
                 const std::vector<std::string>& sets, bool quiet) {
   stop_on_signals();
   const Model model = load_model(model_file, parse_overrides(sets));
+  if (!out_given && !force) {
+    if (const auto found = earlier_results(out_dir, model); !found.empty()) {
+      print_error(fmt::format("{}/ holds the results of an earlier run ({}); give --out DIR to "
+                              "write elsewhere, or --force to replace them",
+                              out_dir, fmt::join(found, ", ")));
+      return kExitBadInput;
+    }
+  }
   ProgressLine progress(model.analysis.end_time_s, quiet);
   RunControl control;
   control.progress = [&](double t) { progress.update(t); };
@@ -253,13 +281,18 @@ int main(int argc, char** argv) {
 
   CLI::App* run = app.add_subcommand("run", "Run a model's analysis; write history.csv and summary.json");
   run->add_option("model", model_file, "Model file (YAML or JSON)")->required();
-  run->add_option("--out,-o", out_dir, "Result folder (created if needed)")->capture_default_str();
-  run->add_option("--set,-s", sets, "Override a scalar of the model: PATH=VALUE, e.g. thermal.dT=130");
+  run->add_option("--out,-o", out_dir,
+                  "Result folder (created if needed; an earlier run's results in it are replaced)")
+      ->capture_default_str();
+  bool force = false;
+  run->add_flag("--force,-f", force,
+                "Without --out: replace the results of an earlier run in ./results (else refused)");
+  run->add_option("--set,-s", sets, "Override a value of the model: PATH=VALUE, e.g. thermal.dT=130 or 'supports.1.fix=[y]'");
   run->add_flag("--quiet,-q", quiet, "No progress or closing line on stderr");
 
   CLI::App* check = app.add_subcommand("check", "Validate a model and print a one-screen summary");
   check->add_option("model", model_file, "Model file (YAML or JSON)")->required();
-  check->add_option("--set,-s", sets, "Override a scalar of the model: PATH=VALUE");
+  check->add_option("--set,-s", sets, "Override a value of the model: PATH=VALUE (VALUE may be a YAML flow [list] or {mapping})");
 
   cli::GenerateArguments generate_arguments;
   CLI::App* generate = cli::add_generate_command(app, generate_arguments);
@@ -284,7 +317,7 @@ int main(int argc, char** argv) {
   }
 
   try {
-    if (*run) return run_command(model_file, out_dir, sets, quiet);
+    if (*run) return run_command(model_file, out_dir, run->count("--out") > 0, force, sets, quiet);
     if (*generate) return cli::generate_command(generate_arguments);
     if (*modes) return cli::modes_command(modes_arguments);
     if (*window) {

@@ -24,7 +24,7 @@ CLI::App* add_modes_command(CLI::App& app, ModesArguments& arguments) {
   modes->add_option("--at", arguments.times_s, "Times (s) at which the drivers stand; default: the "
                                                "model's analysis.at, else 0")
       ->check(CLI::NonNegativeNumber);
-  modes->add_option("--set,-s", arguments.sets, "Override a scalar of the model: PATH=VALUE");
+  modes->add_option("--set,-s", arguments.sets, "Override a value of the model: PATH=VALUE (VALUE may be a YAML flow [list] or {mapping})");
   modes->add_option("--out,-o", arguments.out_dir, "Result folder for modes.csv, vtk/ (mode shapes) and summary.json");
   return modes;
 }

@@ -71,7 +71,7 @@ CLI::App* add_window_command(CLI::App& app, WindowArguments& arguments) {
                      "Uniform ΔT levels deployed quasi-statically, evenly over the range")
       ->capture_default_str()
       ->check(CLI::Range(0, 1000));
-  window->add_option("--set,-s", arguments.sets, "Override a scalar of the model: PATH=VALUE");
+  window->add_option("--set,-s", arguments.sets, "Override a value of the model: PATH=VALUE (VALUE may be a YAML flow [list] or {mapping})");
   window->add_option("--out,-o", arguments.out_dir, "Folder for window.csv and window.json");
   return window;
 }

@@ -214,6 +214,51 @@ TEST(Override, ReplacesAndAddsScalars) {
   EXPECT_EQ(model.drivers[0].reading, DriverReading::value);
 }
 
+// A VALUE that starts with '[' or '{' is a YAML flow list or mapping: it replaces a list, a
+// mapping or a single value, or adds a key, and is checked like the file's own.
+TEST(Override, FlowValuesReplaceListsMappingsAndScalars) {
+  const Model model = load_model(example("general"), {{"supports.1.fix", "[y]"},
+                                                      {"analysis.integrator", "{type: newmark}"},
+                                                      {"thermal.dT", "{type: smooth_step, t0: 0, v0: 0, t1: 2, v1: 130}"},
+                                                      {"analysis.adaptive", " {tolerance: 1e-7}"},
+                                                      {"gravity", "[0, -9.81]"}});
+  EXPECT_EQ(model.supports[1].axes, (std::array<bool, 3>{false, true, false}));
+  EXPECT_EQ(model.analysis.integrator.kind, IntegratorOptions::Kind::newmark);  // the file's rho_inf is gone
+  EXPECT_EQ(model.analysis.integrator.beta, 0.25);
+  EXPECT_EQ(model.temperature_change_C.value(1.0), 65.0);
+  EXPECT_TRUE(model.analysis.adaptive.enabled);
+  EXPECT_EQ(model.analysis.adaptive.tolerance_m, 1e-7);
+  EXPECT_EQ(model.gravity_m_s2, Eigen::Vector3d(0, -9.81, 0));
+  // Text that does not start a flow collection stays one scalar, as before.
+  EXPECT_EQ(load_model(example("general"), {{"drivers.motor.profile", "0.2"}}).drivers[0].profile.value(3.0), 0.2);
+}
+
+// An error inside a flow value names the --set that gave it, with the item's own path.
+TEST(Override, ErrorInAFlowValueNamesTheOverride) {
+  const struct {
+    Override override;
+    const char* field;
+    const char* problem;
+  } kCases[] = {
+      {{"supports.1.fix", "[x, w]"}, "supports.1.fix.1", "must be one of x, y, z, got 'w'"},
+      {{"thermal.dT", "{type: smooth_step, t0: 0, v0: 0, t1: 2}"}, "thermal.dT.v1", "required"},
+      {{"analysis.integrator", "{type: newmark, rho_inf: 0.9}"}, "analysis.integrator.rho_inf",
+       "applies to hht and generalized_alpha"},
+  };
+  for (const auto& c : kCases) {
+    SCOPED_TRACE(c.override.value);
+    try {
+      load_model(example("general"), {c.override});
+      ADD_FAILURE() << "accepted";
+    } catch (const InputError& error) {
+      EXPECT_EQ(error.source(), fmt::format("--set {}={}", c.override.path, c.override.value));
+      EXPECT_EQ(error.line(), 0);
+      EXPECT_EQ(error.field(), c.field);
+      EXPECT_NE(error.problem().find(c.problem), std::string::npos) << error.what();
+    }
+  }
+}
+
 // Each bad override must name itself as the source and its path as the field.
 TEST(Override, BadOverrideNamesItself) {
   const struct {
@@ -224,7 +269,12 @@ TEST(Override, BadOverrideNamesItself) {
       {"elements.9.area=1", "no key '9' in 'elements'; keys there: 1, 2, 3"},
       {"analysis.newton.max_iter=1", "unknown key 'max_iter'; did you mean 'max_iterations'?"},
       {"analysis.stpe=1", "unknown key 'stpe'; did you mean 'step'?"},
-      {"analysis.integrator=3", "is a mapping; --set replaces single values only"},
+      {"analysis.integrator=3", "'analysis.integrator' is a mapping; a single value cannot replace it, a YAML "
+                                "flow mapping can (e.g. analysis.integrator={key: value, ...})"},
+      {"supports.1=x", "'supports.1' is a mapping; a single value cannot replace it"},
+      {"drivers.motor.profile.x=1", "'drivers.motor.profile' is a single value; it has no 'x'"},
+      {"supports.1.fix=[x, y", "VALUE starts a YAML flow list [...] but does not parse"},
+      {"thermal={dT: 1, dT: 2}", "'dT' is given twice"},
       {"supports.5.node=A", "is a list of 2 items; expected an index from 0 to 1, got '5'"},
       {"thermal.dT.x=1", "'thermal.dT' is a single value; it has no 'x'"},
       {"thermal.dT=abc", "unknown function 'abc'"},

@@ -10,6 +10,7 @@
 #include <thread>
 
 #include "deploydyn/io/input_error.hpp"
+#include "deploydyn/io/model_loader.hpp"
 
 namespace deploydyn {
 namespace {
@@ -60,6 +61,23 @@ TEST(StudyLoader, OptionsAndDefaults) {
   EXPECT_EQ(load("model: general.yaml\ncases: {a: {}, b: {}}\n").reference, 0u) << "else the first";
 }
 
+// A case may set a list or a mapping, as --set does with a YAML flow value.
+TEST(StudyLoader, CasesSetListsAndMappings) {
+  const Study study = load(
+      "model: general.yaml\ncases:\n"
+      "  sliding: {supports.1.fix: [y]}\n"
+      "  paper:\n    analysis.integrator: {type: newmark}\n");
+  ASSERT_EQ(study.cases.size(), 2u);
+  EXPECT_EQ(study.cases[0].overrides.at(0).value, "[y]");
+  EXPECT_EQ(study.cases[1].overrides.at(0).value, "{type: newmark}");
+  const Model paper = load_model(study.model_file, study.cases[1].overrides);
+  EXPECT_EQ(paper.analysis.integrator.kind, IntegratorOptions::Kind::newmark);
+  expect_error("model: general.yaml\ncases: {a: {supports.1.fix: [x, w]}}\n", 2, "cases.a.supports.1.fix",
+               "must be one of x, y, z, got 'w'");
+  expect_error("model: general.yaml\ncases: {a: {thermal.dT: }}\n", 2, "cases.a.thermal.dT",
+               "expected a value to set, got nothing");
+}
+
 TEST(StudyLoader, MissingOrUnreadableModel) {
   expect_error("cases: {a: {}}\n", 1, "model", "required key is missing");
   expect_error("model: nowhere.yaml\ncases: {a: {}}\n", 1, "model", "cannot open file");
@@ -76,8 +94,9 @@ TEST(StudyLoader, CasesMustBeGivenAndNamedOnce) {
                "'a' is given twice");
   expect_error("model: general.yaml\ncases:\n  a/b: {}\n", 3, "cases.a/b", "cannot name a folder");
   expect_error("model: general.yaml\ncases:\n  a: [1]\n", 3, "cases.a", "mapping of overrides");
+  // A list is set as a flow value, then checked by the model's loader, at the case's line.
   expect_error("model: general.yaml\ncases:\n  a: {thermal.dT: [1, 2]}\n", 3, "cases.a.thermal.dT",
-               "a single value");
+               "expected a function: a number, a function name or a mapping with 'type', got a list");
 }
 
 TEST(StudyLoader, BadOverrideIsReportedAtItsLine) {

@@ -8,6 +8,7 @@
 #include <charconv>
 #include <cmath>
 #include <fstream>
+#include <functional>
 #include <limits>
 #include <map>
 #include <optional>
@@ -887,12 +888,55 @@ bool is_option_section(const std::string& path) {
   return std::find(kOptionSections.begin(), kOptionSections.end(), path) != kOptionSections.end();
 }
 
-// Replaces (or adds, as the last key of a mapping) the scalar at override.path.
+// A copy of `node` made of new nodes: they have no mark, so an error in them names the --set
+// that made them, not a line of the model file.
+YAML::Node without_marks(const YAML::Node& node, const std::function<void(const std::string&)>& fail) {
+  switch (node.Type()) {
+    case YAML::NodeType::Sequence: {
+      YAML::Node copy(YAML::NodeType::Sequence);
+      for (const auto& item : node) copy.push_back(without_marks(item, fail));
+      return copy;
+    }
+    case YAML::NodeType::Map: {
+      YAML::Node copy(YAML::NodeType::Map);
+      for (const auto& entry : node) {
+        if (!entry.first.IsScalar()) fail("keys of a mapping must be plain names, got " + io::describe(entry.first));
+        const std::string& key = entry.first.Scalar();
+        if (copy[key]) fail(fmt::format("'{}' is given twice", key));
+        copy[key] = without_marks(entry.second, fail);
+      }
+      return copy;
+    }
+    case YAML::NodeType::Scalar:
+      return YAML::Node(node.Scalar());
+    default:
+      return YAML::Node();
+  }
+}
+
+// VALUE as a node: a YAML flow sequence or mapping when it starts with '[' or '{' (e.g.
+// supports.1.fix=[x, y], thermal.dT={type: smooth_step, ...}), else the text as one scalar.
+YAML::Node override_value(const std::string& value, const std::function<void(const std::string&)>& fail) {
+  const std::size_t first = value.find_first_not_of(" \t");
+  if (first == std::string::npos || (value[first] != '[' && value[first] != '{')) return YAML::Node(value);
+  YAML::Node parsed;
+  try {
+    parsed = YAML::Load(value);
+  } catch (const YAML::ParserException& error) {
+    fail(fmt::format("VALUE starts a YAML flow {} but does not parse: {} (column {})",
+                     value[first] == '[' ? "list [...]" : "mapping {...}", error.msg, error.mark.column + 1));
+  }
+  return without_marks(parsed, fail);
+}
+
+// Replaces (or adds, as the last key of a mapping) the value at override.path: a scalar by
+// text, anything by a YAML flow list or mapping.
 void apply_override(YAML::Node root, const Override& override, io::YamlSource& source) {
   const auto fail = [&](const std::string& problem) {
     io::throw_input_error(fmt::format("--set {}={}", override.path, override.value),
                           YAML::Mark::null_mark(), override.path, problem);
   };
+  const YAML::Node value = override_value(override.value, fail);
   const auto keys = split_path(override.path);
   YAML::Node current = root;
   std::string walked = "the top level";
@@ -915,7 +959,7 @@ void apply_override(YAML::Node root, const Override& override, io::YamlSource& s
         present.push_back(entry.first.Scalar());
       }
       if (!next && last) {
-        current[key] = YAML::Node(override.value);
+        current[key] = value;
         source.add_override(override);
         return;
       }
@@ -946,11 +990,13 @@ void apply_override(YAML::Node root, const Override& override, io::YamlSource& s
     walked = "'" + path_here + "'";
     current.reset(*next);  // rebinds; plain assignment would overwrite the node in the tree
   }
-  if (!current.IsScalar() && !current.IsNull()) {
-    fail(fmt::format("{} is {}; --set replaces single values only", walked, io::describe(current)));
+  if (!current.IsScalar() && !current.IsNull() && value.IsScalar()) {
+    fail(fmt::format("{} is {}; a single value cannot replace it, a YAML flow {} can (e.g. {}={})",
+                     walked, io::describe(current), current.IsMap() ? "mapping" : "list", override.path,
+                     current.IsMap() ? "{key: value, ...}" : "[a, b]"));
   }
   // Assigning a Node replaces the tree's node; the new one has no mark, so errors name the --set.
-  current = YAML::Node(override.value);
+  current = value;
   source.add_override(override);
 }
 

@@ -11,8 +11,9 @@
 
 namespace deploydyn {
 
-// A command-line override `--set PATH=VALUE` of one scalar, e.g. thermal.dT=130 or
-// analysis.step=5e-4. PATH is dotted; mapping keys by name, sequence items by index.
+// A command-line override `--set PATH=VALUE` of one value, e.g. thermal.dT=130 or
+// analysis.step=5e-4. PATH is dotted; mapping keys by name, sequence items by index. A VALUE
+// that starts with '[' or '{' is a YAML flow list or mapping (supports.1.fix=[x, y]).
 struct Override {
   std::string path;
   std::string value;

@@ -102,15 +102,23 @@ void throw_input_error(const std::string& source, const YAML::Mark& mark, const 
 
 void YamlSource::fail(const YAML::Mark& mark, const std::string& field,
                       const std::string& problem) const {
-  // Only overrides make nodes without a mark: the latest one at or below this path made it.
+  // Only overrides make nodes without a mark: the latest one at, below or (a flow value's
+  // items) above this path made it.
   const auto made_it = std::find_if(overrides_.rbegin(), overrides_.rend(), [&](const Override& o) {
-    return o.path == field || o.path.starts_with(field + ".");
+    return o.path == field || o.path.starts_with(field + ".") || field.starts_with(o.path + ".");
   });
   if (!mark.is_null() || made_it == overrides_.rend()) {
     throw_input_error(name_, mark, field, problem);
   }
   throw_input_error(fmt::format("--set {}={}", made_it->path, made_it->value), mark, field,
                     problem);
+}
+
+std::string YamlValue::flow_text() const {
+  if (node_.IsScalar()) return node_.Scalar();
+  YAML::Emitter out;
+  out << YAML::Flow << node_;
+  return out.c_str();
 }
 
 void YamlValue::fail(const std::string& problem) const {

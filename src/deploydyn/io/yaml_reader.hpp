@@ -62,6 +62,8 @@ class YamlValue {
   // Made by a --set override (it has no place in the file).
   bool from_override() const { return node_.Mark().is_null(); }
   std::string description() const { return describe(node_); }
+  // The value as YAML flow text, as --set takes it: "130", "[x, y]", "{type: newmark}".
+  std::string flow_text() const;
 
   [[noreturn]] void fail(const std::string& problem) const;
   // An error about `key` of this mapping that has no node of its own (e.g. it is missing).

@@ -47,11 +47,9 @@ CaseSpec read_case(const std::string& name, const YamlValue& value) {
   }
   CaseSpec spec{{name, {}}, value, {}};
   for (const auto& [path, setting] : value.entries()) {
-    if (!setting.is_scalar()) {
-      setting.fail("expected a single value (an override replaces one scalar of the model), got " +
-                   setting.description());
-    }
-    spec.study_case.overrides.push_back({path, setting.text()});
+    if (setting.description() == "nothing") setting.fail("expected a value to set, got nothing");
+    // A list or mapping is set as --set takes it, in YAML flow form.
+    spec.study_case.overrides.push_back({path, setting.flow_text()});
     spec.setters.push_back(setting);
   }
   return spec;

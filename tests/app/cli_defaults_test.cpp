@@ -1,0 +1,98 @@
+// What a new user meets first: the README's model file run as it is (the default integrator
+// must give the true driver torque), `check` saying which integrator will run, `run` without
+// --out not replacing earlier results, and every override example of docs/model-format.md
+// running as written.
+
+#include <fmt/format.h>
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "support/cli.hpp"
+#include "support/csv_table.hpp"
+
+namespace deploydyn {
+namespace {
+
+namespace fs = std::filesystem;
+using testing::read_text;
+using testing::run_cli;
+using testing::run_cli_with_prefix;
+using testing::ScratchFolder;
+
+const std::string kSource = DEPLOYDYN_SOURCE_DIR;
+
+// The first ```yaml block after `heading` in a Markdown file of the repository.
+std::string yaml_block_after(const std::string& document, const std::string& heading) {
+  const std::string text = read_text(kSource + "/" + document);
+  const std::size_t at = text.find("\n" + heading + "\n");
+  if (at == std::string::npos) return {};
+  const std::size_t begin = text.find("```yaml\n", at);
+  const std::size_t end = text.find("\n```", begin + 8);
+  if (begin == std::string::npos || end == std::string::npos) return {};
+  return text.substr(begin + 8, end - begin - 8 + 1);
+}
+
+void write_file(const fs::path& file, const std::string& text) {
+  fs::create_directories(file.parent_path());
+  std::ofstream(file) << text;
+}
+
+// Without --out a run writes into ./results; when that already holds a run's results it
+// refuses (exit 2, naming --out and --force) and leaves them as they are; --force replaces them.
+TEST(CliDefaults, RunWithoutOutDoesNotReplaceEarlierResults) {
+  const ScratchFolder folder("run_without_out");
+  fs::create_directories(folder.path());
+  const std::string cd = "cd " + folder.path().string() + " &&";
+  const std::string model = testing::example_path("parallel.yaml");
+  const auto first = run_cli_with_prefix(cd, "run " + model + " --quiet --set analysis.end=0.01");
+  ASSERT_EQ(first.exit_code, 0) << first.output;
+  const fs::path summary = folder.path() / "results" / "summary.json";
+  ASSERT_TRUE(fs::exists(summary));
+  const std::string before = read_text(summary);
+
+  const auto second = run_cli_with_prefix(cd, "run " + model + " --quiet --set analysis.end=0.02");
+  EXPECT_EQ(second.exit_code, 2) << second.output;
+  EXPECT_NE(second.output.find("results"), std::string::npos) << second.output;
+  EXPECT_NE(second.output.find("--out"), std::string::npos) << second.output;
+  EXPECT_NE(second.output.find("--force"), std::string::npos) << second.output;
+  EXPECT_EQ(read_text(summary), before) << "the earlier results were touched";
+
+  const auto forced = run_cli_with_prefix(cd, "run " + model + " --quiet --force --set analysis.end=0.02");
+  ASSERT_EQ(forced.exit_code, 0) << forced.output;
+  EXPECT_EQ(nlohmann::json::parse(read_text(summary))["final_time"], 0.02);
+  // A folder named by --out is the user's choice: replaced as before.
+  const auto named = run_cli_with_prefix(cd, "run " + model + " --quiet --out results --set analysis.end=0.01");
+  EXPECT_EQ(named.exit_code, 0) << named.output;
+}
+
+// The override examples of docs/model-format.md, each line run as written from the top folder.
+TEST(CliDefaults, OverrideExamplesOfTheModelFormatRun) {
+  const std::string text = read_text(kSource + "/docs/model-format.md");
+  const std::size_t section = text.find("\n## Overrides");
+  ASSERT_NE(section, std::string::npos);
+  const std::size_t begin = text.find("```sh\n", section);
+  const std::size_t end = text.find("```\n", begin + 6);
+  ASSERT_NE(end, std::string::npos);
+  std::istringstream block(text.substr(begin + 6, end - begin - 6));
+  int n_commands = 0;
+  for (std::string line; std::getline(block, line);) {
+    if (!line.starts_with("deploydyn ")) continue;
+    ++n_commands;
+    std::string command = line.substr(line.find(' ') + 1);
+    if (const std::size_t comment = command.find("  # "); comment != std::string::npos) command.resize(comment);
+    const auto o = run_cli_with_prefix("cd " + kSource + " &&", command);
+    EXPECT_EQ(o.exit_code, 0) << line << "\n" << o.output;
+  }
+  EXPECT_GE(n_commands, 10);
+}
+
+}  // namespace
+}  // namespace deploydyn
