@@ -247,13 +247,23 @@ int check_command(const std::string& model_file, const std::vector<std::string>&
                m.shift_rad2_s2 ? fmt::format("modes nearest ω² = {:g} rad²/s²", *m.shift_rad2_s2) : "lowest modes",
                fmt::join(m.times_s, ", "));
   } else {
-    const IntegratorOptions& i = a.integrator;
-    const std::string integrator =
-        i.kind == IntegratorOptions::Kind::newmark
-            ? fmt::format("Newmark β = {:g}, γ = {:g}", i.beta, i.gamma)
-            : fmt::format("{} ρ∞ = {:g}", to_string(i.kind), i.rho_infinity);
-    fmt::print("analysis    {}, t = 0 → {:g} s, step {:g} s ({:.0f} steps), {}\n", to_string(a.type),
-               a.end_time_s, a.step_s, a.end_time_s / a.step_s, integrator);
+    fmt::print("analysis    {}, t = 0 → {:g} s, step {:g} s ({:.0f} steps){}\n", to_string(a.type),
+               a.end_time_s, a.step_s, a.end_time_s / a.step_s,
+               a.adaptive.enabled && a.type == AnalysisType::dynamic
+                   ? fmt::format(", adaptive (tolerance {:g} m)", a.adaptive.tolerance_m)
+                   : std::string());
+    if (a.type == AnalysisType::dynamic) {
+      // The scheme `run` will use, whether the file gives it or not (docs/model-format.md).
+      const IntegratorOptions& i = a.integrator;
+      const bool trapezoidal = i.kind == IntegratorOptions::Kind::newmark && i.beta == 0.25 && i.gamma == 0.5;
+      fmt::print("integrator  {}\n",
+                 i.kind == IntegratorOptions::Kind::newmark
+                     ? fmt::format("newmark, β = {:g}, γ = {:g}{}", i.beta, i.gamma,
+                                   trapezoidal ? " (the trapezoidal rule: no numerical damping; driver "
+                                                 "efforts may zigzag from step to step)"
+                                               : "")
+                     : fmt::format("{}, ρ∞ = {:g}", to_string(i.kind), i.rho_infinity));
+    }
   }
   const LinearSolverKind solver = choose_linear_solver(a.linear_solver, assembler.n_unknowns());
   fmt::print("linear      {} for {} unknowns{}\n",

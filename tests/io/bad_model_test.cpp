@@ -93,6 +93,8 @@ const BadModelCase kBadModels[] = {
     {"rho_inf_out_of_range.yaml", 5, "analysis.integrator.rho_inf",
      "must be in [0, 1] for generalized_alpha, got 1.5"},
     {"gamma_with_hht.yaml", 5, "analysis.integrator.gamma", "applies to type newmark only"},
+    {"beta_without_newmark_type.yaml", 5, "analysis.integrator.beta",
+     "applies to type newmark only, and the default type is generalized_alpha; give type: newmark"},
     {"adaptive_max_below_min.yaml", 5, "analysis.adaptive.max_step",
      "must not be below min_step = 0.001 s, got 0.0001"},
     {"support_unknown_node.yaml", 5, "supports.0.node", "unknown node 'Z'; nodes are A, B"},

@@ -100,7 +100,9 @@ TEST(ModelLoader, DefaultsFillWhatTheFileLeavesOut) {
   EXPECT_EQ(model.analysis.end_time_s, 1.0);
   EXPECT_EQ(model.analysis.step_s, defaults.step_s);
   EXPECT_EQ(model.analysis.output_interval_s, defaults.step_s);
-  EXPECT_EQ(model.analysis.integrator.beta, 0.25);
+  // The default integrator (model.hpp, docs/model-format.md): generalized-α, ρ∞ = 0.9.
+  EXPECT_EQ(model.analysis.integrator.kind, IntegratorOptions::Kind::generalized_alpha);
+  EXPECT_EQ(model.analysis.integrator.rho_infinity, 0.9);
   EXPECT_EQ(model.analysis.newton.max_iterations, defaults.newton.max_iterations);
   EXPECT_EQ(model.output.summary_file, "summary.json");
 }
@@ -126,7 +128,7 @@ analysis:
   output_interval: 0.05
   load_steps: 4
   mass: lumped
-  integrator: {beta: 0.3025, gamma: 0.6}
+  integrator: {type: newmark, beta: 0.3025, gamma: 0.6}
   newton: {max_iterations: 8, tol_force: 1e-6}
 output: {history: h.csv, summary: s.json}
 )",
@@ -147,6 +149,8 @@ output: {history: h.csv, summary: s.json}
   EXPECT_EQ(model.analysis.output_interval_s, 0.05);
   EXPECT_EQ(model.analysis.load_steps, 4);
   EXPECT_EQ(model.analysis.mass, MassMatrixKind::lumped);
+  EXPECT_EQ(model.analysis.integrator.kind, IntegratorOptions::Kind::newmark);
+  EXPECT_EQ(model.analysis.integrator.beta, 0.3025);
   EXPECT_EQ(model.analysis.integrator.gamma, 0.6);
   EXPECT_EQ(model.analysis.newton.max_iterations, 8);
   EXPECT_EQ(model.analysis.newton.force_tolerance, 1e-6);

@@ -152,8 +152,14 @@ void expect_equal_models(const Model& a, const Model& b) {
   EXPECT_EQ(p.output_interval_s, q.output_interval_s);
   EXPECT_EQ(p.load_steps, q.load_steps);
   EXPECT_EQ(p.mass, q.mass);
+  EXPECT_EQ(p.integrator.kind, q.integrator.kind);
   EXPECT_EQ(p.integrator.beta, q.integrator.beta);
   EXPECT_EQ(p.integrator.gamma, q.integrator.gamma);
+  EXPECT_EQ(p.integrator.rho_infinity, q.integrator.rho_infinity);
+  EXPECT_EQ(p.adaptive.enabled, q.adaptive.enabled);
+  EXPECT_EQ(p.adaptive.tolerance_m, q.adaptive.tolerance_m);
+  EXPECT_EQ(p.adaptive.min_step_s, q.adaptive.min_step_s);
+  EXPECT_EQ(p.adaptive.max_step_s, q.adaptive.max_step_s);
   EXPECT_EQ(p.newton.max_iterations, q.newton.max_iterations);
   EXPECT_EQ(p.newton.force_tolerance, q.newton.force_tolerance);
   EXPECT_EQ(p.newton.constraint_tolerance_m, q.newton.constraint_tolerance_m);
@@ -183,6 +189,32 @@ TEST(ModelRoundTrip, PaperExamples) {
     expect_round_trip(
         load_model(fmt::format("{}/examples/paper/{}.yaml", DEPLOYDYN_SOURCE_DIR, name),
                    {{"thermal.dT", "-170"}}));
+  }
+}
+
+// The integrator is written whatever it is, so that a reload runs the same scheme: a file
+// without one gets the default (generalized-α, ρ∞ = 0.9) written out, and the paper's Newmark
+// (¼, ½), no longer the default, stays Newmark.
+TEST(ModelRoundTrip, IntegratorIsWrittenSoThatAReloadRunsTheSameScheme) {
+  const std::string base = R"(
+nodes: {A: [0, 0], B: [1, 0]}
+materials: {steel: {E: 2e11, density: 7850}}
+elements: {1: {nodes: [A, B], area: 1e-4, material: steel}}
+supports: [{node: A}]
+)";
+  const Model by_default = load_model_from_string(base, "no integrator");
+  EXPECT_EQ(by_default.analysis.integrator.kind, IntegratorOptions::Kind::generalized_alpha);
+  EXPECT_EQ(by_default.analysis.integrator.rho_infinity, 0.9);
+  EXPECT_NE(saved(by_default).find("integrator: {type: generalized_alpha, rho_inf: 0.9}"), std::string::npos)
+      << saved(by_default);
+  expect_round_trip(by_default);
+  for (const char* integrator : {"{type: newmark}", "{type: newmark, beta: 0.3025, gamma: 0.6}",
+                                 "{type: hht, rho_inf: 0.7}", "{type: generalized_alpha, rho_inf: 1}"}) {
+    SCOPED_TRACE(integrator);
+    const Model model = load_model_from_string(
+        base + "analysis: {integrator: " + std::string(integrator) + ", adaptive: {tolerance: 1e-7}}", "given");
+    expect_round_trip(model);
+    EXPECT_EQ(load_model_from_string(saved(model), "saved").analysis.integrator.kind, model.analysis.integrator.kind);
   }
 }
 

@@ -765,7 +765,10 @@ class ModelReader {
       // These schemes take their β and γ from ρ∞; a given β or γ would be silently ignored.
       for (const char* key : {"beta", "gamma"}) {
         if (const auto given = spec.find(key)) {
-          given->fail("applies to type newmark only; hht and generalized_alpha take rho_inf");
+          given->fail(type ? "applies to type newmark only; hht and generalized_alpha take rho_inf"
+                           : fmt::format("applies to type newmark only, and the default type is {}; "
+                                         "give type: newmark with beta and gamma",
+                                         to_string(integrator.kind)));
         }
       }
       const bool hht = integrator.kind == IntegratorOptions::Kind::hht;
