@@ -18,6 +18,7 @@
 
 #include "deploydyn/assembly/assembler.hpp"
 #include "deploydyn/elements/element_kinds.hpp"
+#include "deploydyn/io/model_keys.hpp"
 #include "deploydyn/io/text_file.hpp"
 #include "deploydyn/io/yaml_reader.hpp"
 #include "deploydyn/model/dof_map.hpp"
@@ -94,9 +95,7 @@ class ModelReader {
       root_.fail("expected a mapping with nodes, materials and elements, got " +
                  root_.description());
     }
-    root_.expect_keys({"name", "description", "units", "nodes", "materials", "elements", "thermal",
-                       "supports", "joints", "drivers", "loads", "gravity", "functions", "analysis",
-                       "output"});
+    root_.expect_keys(model_keys::kTopLevel);
     if (const auto name = root_.find("name")) model_.name = name->text();
     if (const auto description = root_.find("description")) {
       model_.description = description->text();
@@ -109,7 +108,7 @@ class ModelReader {
     read_nodes(root_.at("nodes"));
     read_materials(root_.at("materials"));
     if (const auto thermal = root_.find("thermal")) {
-      thermal->expect_keys({"dT"});
+      thermal->expect_keys(model_keys::kThermal);
       if (const auto dT = thermal->find("dT")) model_.temperature_change_C = function(*dT);
     }
     read_elements(root_.at("elements"));
@@ -167,7 +166,7 @@ class ModelReader {
     switch (spec.at("type").choice(
         {"constant", "smooth_step", "smooth_trapezoid", "paper_eq23", "table"})) {
       case 0:
-        spec.expect_keys({"type", "value"});
+        spec.expect_keys(model_keys::kConstantFunction);
         return TimeFunction::constant(spec.at("value").number());
       case 1:
         return smooth_step(spec);
@@ -181,7 +180,7 @@ class ModelReader {
   }
 
   static TimeFunction smooth_step(const YamlValue& spec) {
-    spec.expect_keys({"type", "t0", "v0", "t1", "v1"});
+    spec.expect_keys(model_keys::kSmoothStep);
     TimeFunction::SmoothStep f{spec.at("t0").number(Sign::any, "s"), spec.at("v0").number(),
                                spec.at("t1").number(Sign::any, "s"), spec.at("v1").number()};
     if (!(f.t1 > f.t0)) {
@@ -192,7 +191,7 @@ class ModelReader {
 
   // paper_eq23 as a mapping takes the same keys, each defaulting to the paper's value.
   static TimeFunction smooth_trapezoid(const YamlValue& spec, bool keys_optional) {
-    spec.expect_keys({"type", "amplitude", "rise", "fall"});
+    spec.expect_keys(model_keys::kSmoothTrapezoid);
     const auto get = [&](std::string_view key) {
       return keys_optional ? spec.find(key) : std::optional<YamlValue>(spec.at(key));
     };
@@ -225,7 +224,7 @@ class ModelReader {
   }
 
   static TimeFunction table(const YamlValue& spec) {
-    spec.expect_keys({"type", "points"});
+    spec.expect_keys(model_keys::kTableFunction);
     TimeFunction::Table f;
     for (const auto& point : spec.at("points").items(1, kUnbounded, "[t, value] pairs")) {
       const auto t_and_value = point.numbers(2, 2, "");
@@ -248,7 +247,7 @@ class ModelReader {
     for (const auto& [name, spec] : entries) {
       Node node{.name = name};
       if (spec.is_map()) {
-        spec.expect_keys({"at", "mass"});
+        spec.expect_keys(model_keys::kNode);
         node.point_mass_kg = spec.number_or("mass", 0.0, Sign::non_negative, "kg");
       }
       const YamlValue at = spec.is_map() ? spec.at("at") : spec;
@@ -289,7 +288,7 @@ class ModelReader {
     const auto entries = section.entries();
     if (entries.empty()) section.fail("needs at least one material");
     for (const auto& [name, spec] : entries) {
-      spec.expect_keys({"E", "alpha", "density"});
+      spec.expect_keys(model_keys::kMaterial);
       Material material;
       material.name = name;
       material.youngs_modulus_Pa = spec.at("E").number(Sign::positive, "Pa");
@@ -377,7 +376,7 @@ class ModelReader {
   void read_supports(const YamlValue& section) {
     std::map<int, std::string> support_of_node;  // node → path of its support
     for (const auto& spec : section.items(0, kUnbounded, "supports {node: name, fix: [x, y]}")) {
-      spec.expect_keys({"node", "fix"});
+      spec.expect_keys(model_keys::kSupport);
       const YamlValue node = spec.at("node");
       FixedNode support{.node = nodes_.find(node), .axes = {true, true, model_.dimension == 3}};
       if (const auto [previous, added] = support_of_node.emplace(support.node, spec.path());
@@ -431,7 +430,7 @@ class ModelReader {
     for (const Node& node : model_.nodes) size_m = std::max(size_m, node.position_m.cwiseAbs().maxCoeff());
     for (const auto& [name, spec] : section.entries()) {
       joints_.add(name, spec);
-      spec.expect_keys({"type", "nodes", "axis"});
+      spec.expect_keys(model_keys::kJoint);
       Joint joint;
       joint.name = name;
       joint.kind = spec.at("type").choice(kJointKinds);
@@ -477,7 +476,7 @@ class ModelReader {
           read_bar_angle(spec, driver);
           break;
         case Driver::Kind::coordinate:
-          spec.expect_keys({"type", "node", "direction", "profile", "reading"});
+          spec.expect_keys(model_keys::kCoordinateDriver);
           driver.node = nodes_.find(spec.at("node"));
           driver.direction = axis(spec.at("direction"));
           driver.reading = reading(spec, {"velocity", "displacement"});
@@ -511,7 +510,7 @@ class ModelReader {
   }
 
   void read_bar_angle(const YamlValue& spec, Driver& driver) const {
-    spec.expect_keys({"type", "element", "pivot", "axis", "profile", "reading"});
+    spec.expect_keys(model_keys::kBarAngleDriver);
     driver.element = bar_index(spec.at("element"));
     const BarElement& bar = model_.bars[driver.element];
     driver.pivot = bar.node_a;
@@ -530,7 +529,7 @@ class ModelReader {
   }
 
   void read_revolute(const YamlValue& spec, Driver& driver) const {
-    spec.expect_keys({"type", "joint", "profile", "reading"});
+    spec.expect_keys(model_keys::kRevoluteDriver);
     const YamlValue joint_name = spec.at("joint");
     driver.joint = joints_.find(joint_name);
     const Joint& joint = model_.joints[static_cast<std::size_t>(driver.joint)];
@@ -547,7 +546,7 @@ class ModelReader {
   }
 
   void read_hinge_angle(const YamlValue& spec, Driver& driver) const {
-    spec.expect_keys({"type", "nodes", "axis", "profile", "reading"});
+    spec.expect_keys(model_keys::kHingeAngleDriver);
     const YamlValue nodes = spec.at("nodes");
     const auto names = nodes.items(3, 3, "node names [A, H, B]");
     for (std::size_t k = 0; k < 3; ++k) driver.hinge_nodes[k] = nodes_.find(names[k]);
@@ -591,7 +590,7 @@ class ModelReader {
 
   void read_loads(const YamlValue& section) {
     for (const auto& spec : section.items(0, kUnbounded, "loads {node: name, force: [fx, fy]}")) {
-      spec.expect_keys({"node", "force", "moment", "factor"});
+      spec.expect_keys(model_keys::kLoad);
       NodalLoad load{.node = nodes_.find(spec.at("node"))};
       const auto force = spec.find("force");
       const auto moment = spec.find("moment");
@@ -620,9 +619,7 @@ class ModelReader {
       read_modal(spec);
       return;
     }
-    spec.expect_keys(
-        {"type", "end", "end_when", "step", "output_interval", "load_steps", "mass", "integrator",
-         "newton", "adaptive", "linear_solver"});
+    spec.expect_keys(model_keys::kAnalysis);
     AnalysisOptions& analysis = model_.analysis;
     if (const auto type = spec.find("type")) {
       analysis.type = type->choice(kAnalysisTypes);
@@ -667,8 +664,7 @@ class ModelReader {
   // type: continuation: `end` is the parameter's last value, not a time; time-stepping keys do
   // not apply and are rejected.
   void read_continuation(const YamlValue& spec) {
-    spec.expect_keys({"type", "parameter", "start", "end", "eigenvalues", "max_steps", "switch_branch",
-                      "newton", "linear_solver"});
+    spec.expect_keys(model_keys::kContinuation);
     AnalysisOptions& analysis = model_.analysis;
     analysis.type = AnalysisType::continuation;
     ContinuationSettings& c = analysis.continuation;
@@ -691,7 +687,7 @@ class ModelReader {
   // apply and are rejected. Asking for more modes than the constrained system has is an error
   // here, where the file's line can be named.
   void read_modal(const YamlValue& spec) {
-    spec.expect_keys({"type", "modes", "at", "shift", "load_steps", "mass", "newton", "linear_solver"});
+    spec.expect_keys(model_keys::kModal);
     AnalysisOptions& analysis = model_.analysis;
     analysis.type = AnalysisType::modal;
     ModalSettings& modal = analysis.modal;
@@ -756,11 +752,10 @@ class ModelReader {
   }
 
   void read_integrator(const YamlValue& spec) {
-    spec.expect_keys({"type", "beta", "gamma", "rho_inf"});
+    spec.expect_keys(model_keys::kIntegrator);
     IntegratorOptions& integrator = model_.analysis.integrator;
-    if (const auto type = spec.find("type")) {
-      integrator.kind = type->choice(kIntegratorKinds);
-    }
+    const auto type = spec.find("type");
+    if (type) integrator.kind = type->choice(kIntegratorKinds);
     if (integrator.kind != IntegratorOptions::Kind::newmark) {
       // These schemes take their β and γ from ρ∞; a given β or γ would be silently ignored.
       for (const char* key : {"beta", "gamma"}) {
@@ -795,7 +790,7 @@ class ModelReader {
   }
 
   void read_adaptive(const YamlValue& spec) {
-    spec.expect_keys({"tolerance", "min_step", "max_step"});
+    spec.expect_keys(model_keys::kAdaptive);
     AdaptiveOptions& adaptive = model_.analysis.adaptive;
     adaptive.enabled = true;
     adaptive.tolerance_m = spec.number_or("tolerance", adaptive.tolerance_m, Sign::positive, "m");
@@ -811,7 +806,7 @@ class ModelReader {
   }
 
   void read_newton(const YamlValue& spec) {
-    spec.expect_keys({"max_iterations", "tol_force", "tol_constraint", "tol_displacement"});
+    spec.expect_keys(model_keys::kNewton);
     NewtonOptions& newton = model_.analysis.newton;
     if (const auto max_iterations = spec.find("max_iterations")) {
       newton.max_iterations = max_iterations->integer(1);
@@ -825,7 +820,7 @@ class ModelReader {
   }
 
   void read_output(const YamlValue& spec) {
-    spec.expect_keys({"history", "summary", "vtk"});
+    spec.expect_keys(model_keys::kOutput);
     OutputOptions& output = model_.output;
     const auto history = spec.find("history");
     const auto summary = spec.find("summary");

@@ -9,6 +9,7 @@
 #include <sstream>
 
 #include "deploydyn/io/input_error.hpp"
+#include "deploydyn/io/model_keys.hpp"
 #include "deploydyn/io/text_file.hpp"
 #include "deploydyn/io/yaml_reader.hpp"
 #include "deploydyn/output/result_folder.hpp"
@@ -97,7 +98,7 @@ void check_cases(const std::filesystem::path& model_file, const YamlValue& model
 Study read_study(const YamlValue& root, const std::string& source_name,
                  const std::filesystem::path& base_folder) {
   if (!root.is_map()) root.fail("expected a study: a mapping with model and cases");
-  root.expect_keys({"model", "description", "out", "jobs", "reference", "cases"});
+  root.expect_keys(model_keys::kStudy);
 
   Study study;
   const YamlValue model_value = root.at("model");

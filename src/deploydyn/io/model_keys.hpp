@@ -1,0 +1,87 @@
+#pragma once
+// The keys a model file (and a study file) may hold, section by section. The loaders reject
+// every other key with exactly these lists (io/model_loader.cpp, study/study_loader.cpp), and
+// tests/io/model_keys_test.cpp checks them against docs/model-format.md: its "Key reference"
+// table lists each section's keys, and the section of the document it names explains each key.
+// The keys of an element type are its field table (ElementKind::fields()), tested the same way
+// in tests/elements/element_kinds_test.cpp.
+
+#include <array>
+#include <span>
+#include <string_view>
+
+namespace deploydyn::model_keys {
+
+using Keys = std::span<const std::string_view>;
+
+inline constexpr std::array<std::string_view, 15> kTopLevel{
+    "name",     "description", "units",  "nodes", "materials", "elements",  "thermal", "supports",
+    "joints",   "drivers",     "loads",  "gravity", "functions", "analysis", "output"};
+inline constexpr std::array<std::string_view, 2> kNode{"at", "mass"};
+inline constexpr std::array<std::string_view, 3> kMaterial{"E", "alpha", "density"};
+inline constexpr std::array<std::string_view, 1> kThermal{"dT"};
+inline constexpr std::array<std::string_view, 2> kSupport{"node", "fix"};
+inline constexpr std::array<std::string_view, 3> kJoint{"type", "nodes", "axis"};
+inline constexpr std::array<std::string_view, 6> kBarAngleDriver{"type", "element", "pivot",
+                                                                  "axis", "profile", "reading"};
+inline constexpr std::array<std::string_view, 5> kHingeAngleDriver{"type", "nodes", "axis", "profile",
+                                                                   "reading"};
+inline constexpr std::array<std::string_view, 4> kRevoluteDriver{"type", "joint", "profile", "reading"};
+inline constexpr std::array<std::string_view, 5> kCoordinateDriver{"type", "node", "direction",
+                                                                   "profile", "reading"};
+inline constexpr std::array<std::string_view, 4> kLoad{"node", "force", "moment", "factor"};
+inline constexpr std::array<std::string_view, 11> kAnalysis{
+    "type", "end", "end_when", "step", "output_interval", "load_steps", "mass", "integrator", "newton",
+    "adaptive", "linear_solver"};
+inline constexpr std::array<std::string_view, 4> kIntegrator{"type", "beta", "gamma", "rho_inf"};
+inline constexpr std::array<std::string_view, 3> kAdaptive{"tolerance", "min_step", "max_step"};
+inline constexpr std::array<std::string_view, 4> kNewton{"max_iterations", "tol_force",
+                                                         "tol_constraint", "tol_displacement"};
+inline constexpr std::array<std::string_view, 9> kContinuation{
+    "type", "parameter", "start", "end", "eigenvalues", "max_steps", "switch_branch", "newton",
+    "linear_solver"};
+inline constexpr std::array<std::string_view, 8> kModal{"type", "modes", "at", "shift",
+                                                        "load_steps", "mass", "newton", "linear_solver"};
+inline constexpr std::array<std::string_view, 3> kOutput{"history", "summary", "vtk"};
+inline constexpr std::array<std::string_view, 2> kConstantFunction{"type", "value"};
+inline constexpr std::array<std::string_view, 5> kSmoothStep{"type", "t0", "v0", "t1", "v1"};
+// smooth_trapezoid (every key required) and paper_eq23 (every key optional)
+inline constexpr std::array<std::string_view, 4> kSmoothTrapezoid{"type", "amplitude", "rise", "fall"};
+inline constexpr std::array<std::string_view, 2> kTableFunction{"type", "points"};
+inline constexpr std::array<std::string_view, 6> kStudy{"model", "description", "out", "jobs",
+                                                        "reference", "cases"};
+
+// One mapping of the file and where docs/model-format.md explains its keys.
+struct Section {
+  std::string_view where;    // e.g. "analysis.integrator", "drivers.NAME (type: bar_angle)"
+  std::string_view heading;  // the heading of docs/model-format.md that explains them
+  Keys keys;
+};
+
+inline constexpr std::array<Section, 23> kSections{{
+    {"top level", "### Top level", kTopLevel},
+    {"nodes.NAME", "### `nodes`", kNode},
+    {"materials.NAME", "### `materials`", kMaterial},
+    {"thermal", "### `thermal`", kThermal},
+    {"supports.N", "### `supports`", kSupport},
+    {"joints.NAME", "### `joints`", kJoint},
+    {"drivers.NAME (type: bar_angle)", "### `drivers`", kBarAngleDriver},
+    {"drivers.NAME (type: hinge_angle)", "### `drivers`", kHingeAngleDriver},
+    {"drivers.NAME (type: revolute)", "### `drivers`", kRevoluteDriver},
+    {"drivers.NAME (type: coordinate)", "### `drivers`", kCoordinateDriver},
+    {"loads.N", "### `loads`", kLoad},
+    {"analysis (type: static or dynamic)", "### `analysis`", kAnalysis},
+    {"analysis.integrator", "#### `integrator`", kIntegrator},
+    {"analysis.adaptive", "#### `adaptive`", kAdaptive},
+    {"analysis.newton", "#### `newton`", kNewton},
+    {"analysis (type: continuation)", "#### `type: continuation`", kContinuation},
+    {"analysis (type: modal)", "#### `type: modal`", kModal},
+    {"output", "### `output`", kOutput},
+    {"function (type: constant)", "## Functions of time", kConstantFunction},
+    {"function (type: smooth_step)", "## Functions of time", kSmoothStep},
+    {"function (type: smooth_trapezoid or paper_eq23)", "## Functions of time", kSmoothTrapezoid},
+    {"function (type: table)", "## Functions of time", kTableFunction},
+    {"study file (top level)", "## Load-case studies: `deploydyn study`", kStudy},
+}};
+
+}  // namespace deploydyn::model_keys
