@@ -283,7 +283,7 @@ int main(int argc, char** argv) {
   std::signal(SIGXFSZ, SIG_IGN);
   CLI::App app{"deploydyn: deployment dynamics of flexible deployable structures under thermal loading"};
   app.require_subcommand(1);
-  app.set_version_flag("--version", "deploydyn 0.1.0");
+  app.set_version_flag("--version", "deploydyn " DEPLOYDYN_VERSION);
 
   std::string model_file, out_dir = "results";
   std::vector<std::string> sets;

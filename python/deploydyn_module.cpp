@@ -488,6 +488,7 @@ py::dict modes_at(const LoadedModel& loaded, int n_modes, const std::vector<doub
 
 PYBIND11_MODULE(_core, m) {
   m.doc() = "deploydyn's C++ core; use the package `deploydyn`, not this module";
+  m.attr("__version__") = DEPLOYDYN_VERSION;  // python/CMakeLists.txt, from the project's version
 
   // deploydyn.InputError(ValueError): the loader's one-line message, plus its parts.
   static py::exception<InputError> input_error(m, "InputError", PyExc_ValueError);

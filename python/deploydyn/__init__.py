@@ -6,6 +6,7 @@
     result["mstrain.2"]                         # numpy array, a column of history.csv
     result.values, result.columns               # the whole history as (rows × columns)
     result.summary["drivers"]["motor"]["peak"]  # summary.json as a dict
+    deploydyn.__version__                       # "0.1.0", the project's version
     deploydyn.read_result("results/hot")        # a result folder, also one still running
     deploydyn.folder_status("results/hot")      # "completed", "killed", ...
 
@@ -59,6 +60,8 @@ from deploydyn import result_folder as _result_folder
 
 InputError = _core.InputError
 OutputError = _core.OutputError
+# The project's version (CMakeLists.txt `project(deploydyn VERSION ...)`), as `deploydyn --version`.
+__version__ = _core.__version__
 
 __all__ = [
     "InputError", "OutputError", "RunFailed", "IncompleteHistoryWarning", "Model", "Result",

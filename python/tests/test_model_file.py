@@ -19,6 +19,16 @@ def test_package_is_the_built_one():
     assert core.parent == pathlib.Path(deploydyn.__file__).parent
 
 
+def test_version_is_the_projects():
+    """deploydyn.__version__ is the version of CMakeLists.txt's project(), as the CLI's --version."""
+    import os
+    import re
+    cmake = pathlib.Path(os.environ["DEPLOYDYN_SOURCE_DIR"]) / "CMakeLists.txt"
+    version = re.search(r"project\(deploydyn VERSION ([0-9.]+)", cmake.read_text()).group(1)
+    assert deploydyn.__version__ == version
+    assert run_cli("--version").stdout.strip() == f"deploydyn {version}"
+
+
 def test_model_contents(general_model):
     model = deploydyn.load(general_model)
     assert model.name == "general four-bar linkage"
