@@ -151,5 +151,25 @@ TEST(CliDefaults, OverrideExamplesOfTheModelFormatRun) {
   EXPECT_GE(n_commands, 10);
 }
 
+// Citations point into the repository (docs/theory.md and the other docs), never to a design
+// document it does not hold (issue 15: six citations of one were left in the sources once).
+TEST(CliDefaults, NoCitationOfADesignDocumentOutsideTheRepository) {
+  const std::string design = std::string("DESIGN") + " §";  // split, so this file does not match
+  const std::string design_file = std::string("DESIGN") + ".md";
+  int n_files = 0;
+  for (const char* folder : {"src", "app", "python", "docs", "scripts", "tests", "examples", "bench", "fuzz"}) {
+    for (const auto& entry : fs::recursive_directory_iterator(kSource + "/" + folder)) {
+      const std::string extension = entry.path().extension().string();
+      if (!entry.is_regular_file() || extension == ".png" || extension == ".gif") continue;
+      ++n_files;
+      const std::string text = read_text(entry.path());
+      EXPECT_EQ(text.find(design), std::string::npos) << entry.path();
+      EXPECT_EQ(text.find(design_file), std::string::npos) << entry.path();
+    }
+  }
+  EXPECT_EQ(read_text(kSource + "/README.md").find(design), std::string::npos);
+  EXPECT_GT(n_files, 100);
+}
+
 }  // namespace
 }  // namespace deploydyn
