@@ -92,6 +92,25 @@ void expect_equal_models(const Model& a, const Model& b) {
     EXPECT_EQ(x.temperature_change_C, y.temperature_change_C);
     EXPECT_EQ(x.temperature_given, y.temperature_given);
   }
+  ASSERT_EQ(a.hinges.size(), b.hinges.size());
+  for (std::size_t i = 0; i < a.hinges.size(); ++i) {
+    SCOPED_TRACE("hinge " + a.hinges[i].name);
+    const HingeElement& x = a.hinges[i];
+    const HingeElement& y = b.hinges[i];
+    EXPECT_EQ(x.name, y.name);
+    EXPECT_EQ(x.form, y.form);
+    EXPECT_EQ(x.nodes, y.nodes);
+    EXPECT_EQ(x.axis, y.axis);
+    EXPECT_EQ(x.initial_angle_rad, y.initial_angle_rad);
+    EXPECT_EQ(x.stiffness_Nm_per_rad, y.stiffness_Nm_per_rad);
+    EXPECT_EQ(x.rest_angle_rad, y.rest_angle_rad);
+    EXPECT_EQ(x.damping_Nms_per_rad, y.damping_Nms_per_rad);
+    EXPECT_EQ(x.friction_coefficient, y.friction_coefficient);
+    EXPECT_EQ(x.pin_radius_m, y.pin_radius_m);
+    EXPECT_EQ(x.stop_min_rad, y.stop_min_rad);
+    EXPECT_EQ(x.stop_max_rad, y.stop_max_rad);
+    EXPECT_EQ(x.latch_rad, y.latch_rad);
+  }
   ASSERT_EQ(a.supports.size(), b.supports.size());
   for (std::size_t i = 0; i < a.supports.size(); ++i) {
     EXPECT_EQ(a.supports[i].node, b.supports[i].node);
@@ -250,6 +269,29 @@ elements:
 supports: [{node: A}, {node: C}]
 )", "cables"));
   expect_round_trip(load_model(fmt::format("{}/examples/cables/guyed_mast.yaml", DEPLOYDYN_SOURCE_DIR)));
+}
+
+// Hinges of both forms, every key, and the spring-driven mast with end_when.
+TEST(ModelRoundTrip, Hinges) {
+  expect_round_trip(load_model_from_string(R"(
+nodes: {A: [-1, 0], H: [0, 0], B: [1, 0.2], C: [1, 0.2], D: [2, 0]}
+materials: {steel: {E: 2.0e11, alpha: 1.2e-5}}
+elements:
+  g: {nodes: [A, H], area: 1.0e-4, material: steel, mass: 1}
+  arm: {type: beam, nodes: [H, B], area: 1.0e-4, inertia_z: 1.0e-8, material: steel, mass: 1}
+  tip: {type: beam, nodes: [C, D], area: 1.0e-4, inertia_z: 1.0e-8, material: steel, mass: 1}
+  h: {type: hinge, nodes: [A, H, B], stiffness: 3, rest_angle: -2.5, damping: 0.1, friction: 0.2,
+      pin_radius: 0.005, stop_min: -3.5, stop_max: -2.0, latch: -2.2}
+  r: {type: hinge, rotation_nodes: [B, C], stiffness: 1.5}
+joints: {p: {type: pin, nodes: [B, C]}}
+supports: [{node: A}, {node: H}]
+analysis: {type: dynamic, end: 2, step: 1.0e-3, end_when: all_latched}
+)", "hinges"));
+  const Model model = load_model_from_string(
+      "nodes: {A: [0, 0], B: [1, 0]}\nmaterials: {s: {E: 1.0e9}}\nelements: {b: {nodes: [A, B], area: 1, mass: 1, "
+      "material: s}}\nanalysis: {end: 1, end_when: all_latched}\n", "end_when");
+  EXPECT_EQ(load_model_from_string(saved(model), "saved").analysis.end_when, EndCondition::all_latched);
+  expect_round_trip(load_model(fmt::format("{}/examples/boom/boom.yaml", DEPLOYDYN_SOURCE_DIR)));
 }
 
 // analysis.type continuation keeps its own keys (parameter, start, end, eigenvalues, max_steps)
