@@ -166,9 +166,7 @@ class HingeGroup final : public ElementGroup {
     out[8] = static_cast<double>(mode);
   }
   double reference_length_m(int element) const override {
-    const HingeElement& e = *records_[static_cast<std::size_t>(element)].element;
-    if (e.form == HingeElement::Form::rotations) return 0.0;
-    return std::min(arm_length_[static_cast<std::size_t>(element)][0], arm_length_[static_cast<std::size_t>(element)][1]);
+    return records_[static_cast<std::size_t>(element)].reference_length_m;
   }
 
   std::vector<std::unique_ptr<Constraint>> make_switched_constraints(int first_row) const override {
@@ -234,7 +232,6 @@ class HingeGroup final : public ElementGroup {
     return n;
   }
 
-  void set_arm_lengths(std::vector<std::array<double, 2>> lengths) { arm_length_ = std::move(lengths); }
 
  private:
   // Without drivers a hinge starts held, or sticking when it has friction (static friction
@@ -287,7 +284,8 @@ class HingeGroup final : public ElementGroup {
     };
     const HingeVector q1 = r.gather(ends.q_after);
     const HingeKinematics k1 = r.kinematics(q1);
-    const double angle0 = r.kinematics(r.gather(ends.q_before)).angle_rad, angle1 = k1.angle_rad;
+    const HingeKinematics k0 = r.kinematics(r.gather(ends.q_before));
+    const double angle0 = k0.angle_rad, angle1 = k1.angle_rad;
     const double lock = lock_torque(i, mode, ends);
     switch (mode) {
       case HingeMode::free: {
@@ -302,7 +300,7 @@ class HingeGroup final : public ElementGroup {
         // falling chain of 100 hinged bars: without it, hinges went back and forth between
         // sticking and slipping up to the 8 redos of nearly every step, 20 Newton iterations).
         if (e.friction_coefficient > 0.0 && slip != 0.0 && !driven_ && before[kFrictionSwitched] == 0.0) {
-          const double rate0 = r.kinematics(r.gather(ends.q_before)).gradient.dot(r.gather(ends.v_before));
+          const double rate0 = k0.gradient.dot(r.gather(ends.v_before));
           const double rate1 = k1.gradient.dot(r.gather(ends.v_after));
           if (rate1 * slip < 0.0) {  // came to rest inside the step: stick where θ̇ = 0
             const double share = rate0 != rate1 ? std::clamp(rate0 / (rate0 - rate1), 0.0, 1.0) : 0.0;
@@ -368,7 +366,6 @@ class HingeGroup final : public ElementGroup {
   std::vector<HingeRecord> records_;
   std::vector<std::string> labels_;  // "hinge <name>", for messages
   bool driven_ = false;
-  std::vector<std::array<double, 2>> arm_length_;
   // Set once, when the assembler takes the locks (make_switched_constraints is const).
   mutable std::vector<int> lock_row_;  // [hinge] → its lock's row in λ, −1 without a lock
   // The modes of the step under way (use_history); the locks read them.
@@ -380,7 +377,6 @@ class HingeGroup final : public ElementGroup {
 std::unique_ptr<ElementGroup> make_hinge_group(const Model& model, const DofMap& dofs) {
   std::vector<HingeRecord> records;
   std::vector<std::string> labels;
-  std::vector<std::array<double, 2>> arm_lengths;
   const int dimension = model.dimension;
   for (const HingeElement& e : model.hinges) {
     const std::string label = "hinge " + e.name;
@@ -397,7 +393,6 @@ std::unique_ptr<ElementGroup> make_hinge_group(const Model& model, const DofMap&
         }
         r.dofs.push_back(rz);
       }
-      arm_lengths.push_back({0.0, 0.0});
       continue;
     }
     for (const int node : e.nodes) {
@@ -405,7 +400,8 @@ std::unique_ptr<ElementGroup> make_hinge_group(const Model& model, const DofMap&
     }
     r.geometry = HingeAngle(dimension == 2 ? Eigen::Vector3d::UnitZ() : e.axis);
     const Eigen::Vector3d& h = model.nodes[e.nodes[1]].position_m;
-    arm_lengths.push_back({(model.nodes[e.nodes[0]].position_m - h).norm(), (model.nodes[e.nodes[2]].position_m - h).norm()});
+    r.reference_length_m = std::min((model.nodes[e.nodes[0]].position_m - h).norm(),
+                                    (model.nodes[e.nodes[2]].position_m - h).norm());
     if (e.friction_coefficient == 0.0) continue;
     // Friction presses with the axial force of the bar A–H.
     const auto member = std::find_if(model.bars.begin(), model.bars.end(), [&](const BarElement& b) {
@@ -419,9 +415,7 @@ std::unique_ptr<ElementGroup> make_hinge_group(const Model& model, const DofMap&
     r.pin_member = PinMember{{material.youngs_modulus_Pa * member->area_m2, member->reference_length_m},
                              material.expansion_per_C, &member->temperature_change_C};
   }
-  auto group = std::make_unique<HingeGroup>(std::move(records), std::move(labels), !model.drivers.empty());
-  group->set_arm_lengths(std::move(arm_lengths));
-  return group;
+  return std::make_unique<HingeGroup>(std::move(records), std::move(labels), !model.drivers.empty());
 }
 
 }  // namespace deploydyn

@@ -49,6 +49,7 @@ struct HingeRecord {
   std::vector<int> dofs;                  // bars: A, H, B (D each); rotations: rz_A, rz_B
   HingeAngle geometry{Eigen::Vector3d::UnitZ()};
   std::optional<PinMember> pin_member;    // with friction on the bars form
+  double reference_length_m = 0.0;        // the shorter arm; 0 for the rotations form
 
   int n_dofs() const { return static_cast<int>(dofs.size()); }
   HingeVector gather(const Eigen::VectorXd& x) const {
