@@ -132,6 +132,9 @@ int run_command(const std::string& model_file, const std::string& out_dir, bool 
   const RunReport report = run_to_folder(model, out_dir, control);
   progress.clear();
   for (const std::string& warning : report.warnings) fmt::print(stderr, "warning: {}\n", warning);
+  if (!quiet) {
+    for (const std::string& note : report.notes) fmt::print(stderr, "note: {}\n", note);
+  }
   if (report.status == RunStatus::completed) {
     if (!quiet) {
       // A modal analysis counts no Newton iterations of its own.

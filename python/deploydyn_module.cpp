@@ -3,7 +3,7 @@
 // Kept thin on purpose: a model is always read by the model loader (from a file, or from the
 // text the Python ModelBuilder writes), so every check and error message is the CLI's; a run is
 // run_analysis or run_to_folder; the summary is summary_json, the history rows
-// append_history_row. The Python package adds the friendly API on top.
+// HistoryLayout::append_row. The Python package adds the friendly API on top.
 //
 // Errors: InputError → deploydyn.InputError, a subclass of ValueError carrying source, line,
 // column, field and problem; OutputError (results that cannot be written) →
@@ -70,16 +70,19 @@ struct LoadedModel {
 // Records kept in memory: the history as one row-major block, and the envelope for the summary.
 class MemorySink final : public RecordSink {
  public:
-  explicit MemorySink(std::size_t n_columns) : n_columns_(n_columns) {}
+  explicit MemorySink(const Model& model) : layout_(model), n_columns_(layout_.columns().size()) {}
   void record(const StepRecord& r) override {
-    append_history_row(r, values_);
+    if (r.output) layout_.append_row(r, values_);
     envelope_.record(r);
   }
+  bool wants_every_step() const override { return true; }  // for the envelope
+  const std::vector<std::string>& columns() const { return layout_.columns(); }
   std::size_t n_rows() const { return n_columns_ == 0 ? 0 : values_.size() / n_columns_; }
   const std::vector<double>& values() const { return values_; }
   const Envelope& envelope() const { return envelope_; }
 
  private:
+  HistoryLayout layout_;
   std::size_t n_columns_;
   std::vector<double> values_;
   Envelope envelope_;
@@ -178,8 +181,8 @@ py::dict modes_in_memory(const LoadedModel& loaded) {
 // text (exactly what summary.json would hold), status and message.
 py::dict run_in_memory(const LoadedModel& loaded) {
   if (loaded.model.analysis.type == AnalysisType::modal) return modes_in_memory(loaded);
-  const std::vector<std::string> columns = history_columns(loaded.model);
-  MemorySink sink(columns.size());
+  MemorySink sink(loaded.model);
+  const std::vector<std::string>& columns = sink.columns();
   InterruptWatch watch;
   RunReport report;
   {

@@ -6,7 +6,8 @@ independent reader for tests/output/vtk_writer_test.cpp, and prints what it read
    "frames": [{"file": ..., "timestep": t from the .pvd, "time_value": the frame's TimeValue,
                "points": [[x, y, z], ...], "cells": [[i, j], ...], "cell_types": [3, ...],
                "point_vectors": active vectors' name, "cell_scalars": active scalars' name,
-               "point_data": {name: {"type": "double", "tuples": [[...], ...]}, ...},
+               "point_data": {name: {"type": "double", "tuples": [[...], ...]}, ...,
+                              name: {"type": "string", "values": [...]} for String arrays},
                "cell_data": {...}}, ...]}
 
 Usage: read_vtu.py COLLECTION.pvd. The collection is parsed with VTK's XML parser and every
@@ -60,7 +61,11 @@ def collection_entries(pvd):
 def arrays(data):
     out = {}
     for i in range(data.GetNumberOfArrays()):
-        array = data.GetArray(i)
+        array = data.GetAbstractArray(i)
+        if array.IsA("vtkStringArray"):  # names: {"type": "string", "values": [...]}
+            values = [array.GetValue(k) for k in range(array.GetNumberOfValues())]
+            out[array.GetName()] = {"type": "string", "values": values}
+            continue
         tuples = [list(array.GetTuple(k)) for k in range(array.GetNumberOfTuples())]
         out[array.GetName()] = {"type": array.GetDataTypeAsString(), "tuples": tuples}
     return out

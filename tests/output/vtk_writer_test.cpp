@@ -129,7 +129,9 @@ void compare_frames(const json& frames, const CsvTable& history, const Model& mo
     }
 
     const json& points = frame.at("point_data");
-    EXPECT_EQ(keys(points), (std::set<std::string>{"displacement_m", "velocity_m_s"}));
+    EXPECT_EQ(keys(points), (std::set<std::string>{"displacement_m", "velocity_m_s", "node_name"}));
+    EXPECT_EQ(points.at("node_name").at("type"), "string");
+    for (int i = 0; i < model.n_nodes(); ++i) EXPECT_EQ(points.at("node_name").at("values")[i], model.nodes[i].name);
     EXPECT_EQ(frame.at("point_vectors"), "displacement_m");
     for (const char* name : {"displacement_m", "velocity_m_s"}) {
       EXPECT_EQ(points.at(name).at("type"), "double");
@@ -148,8 +150,9 @@ void compare_frames(const json& frames, const CsvTable& history, const Model& mo
     }
 
     const json& cells = frame.at("cell_data");
-    EXPECT_EQ(keys(cells), (std::set<std::string>{"strain", "mechanical_strain", "axial_force_N",
-                                                  "temperature_change_C"}));
+    EXPECT_EQ(keys(cells), (std::set<std::string>{"strain", "mechanical_strain", "axial_force_N", "stress_Pa",
+                                                  "temperature_change_C", "element_name", "element_type"}));
+    const std::vector<double> stress_Pa = scalars(cells, "stress_Pa");
     EXPECT_EQ(frame.at("cell_scalars"), "axial_force_N");
     const std::vector<double> strain = scalars(cells, "strain");
     const std::vector<double> mechanical_strain = scalars(cells, "mechanical_strain");
@@ -161,6 +164,9 @@ void compare_frames(const json& frames, const CsvTable& history, const Model& mo
       EXPECT_EQ(strain.at(b), history.at(k, "strain." + name));
       EXPECT_EQ(mechanical_strain.at(b), history.at(k, "mstrain." + name));
       EXPECT_EQ(axial_force_N.at(b), history.at(k, "force." + name));
+      EXPECT_EQ(stress_Pa.at(b), axial_force_N.at(b) / model.bars[b].area_m2);
+      EXPECT_EQ(cells.at("element_name").at("values")[b], name);
+      EXPECT_EQ(cells.at("element_type").at("values")[b], "bar");
       // The thermal strain the run used is history's strain − mstrain.
       const double alpha_per_C = model.materials[model.bars[b].material].expansion_per_C;
       EXPECT_NEAR(alpha_per_C * temperature_change_C.at(b),

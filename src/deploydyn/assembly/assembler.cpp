@@ -128,6 +128,7 @@ std::unique_ptr<Constraint> make_driver(const Driver& driver, const Model& model
 Assembler::Assembler(const Model& model) : model_(model), dofs_(model) {
   for (const ElementKind* kind : element_kinds()) groups_.push_back(kind->make_group(model, dofs_));
   for (const FixedNode& support : model.supports) {
+    support_constraint_.push_back(static_cast<int>(constraints_.size()));
     constraints_.push_back(make_support(support, model, dofs_));
     if (support.rotation && model.dimension == 3) {  // a 3D beam's node: R − Rᵀ = 0 (theory D8)
       std::vector<int> frame = frame_dofs(dofs_, support.node);
@@ -547,6 +548,15 @@ double Assembler::driver_effort(int driver, const Eigen::VectorXd& q, double t,
   }
   // Coordinate driver: the force it applies along the coordinate is −λ.
   return -multipliers[0];
+}
+
+std::vector<double> Assembler::support_reactions(const Eigen::VectorXd& lambda) const {
+  std::vector<double> reactions;
+  for (const int c : support_constraint_) {
+    // Φ = q_i − q0 has B = e_i: the support's force on the structure along q_i is −λ.
+    for (int row = 0; row < constraints_[c]->n_equations(); ++row) reactions.push_back(-lambda[first_row_[c] + row]);
+  }
+  return reactions;
 }
 
 std::string Assembler::describe_equation(int row) const {

@@ -164,6 +164,10 @@ class Assembler {
                        const Eigen::VectorXd& lambda) const;
   // First constraint row of driver `driver` in λ.
   int driver_row(int driver) const { return driver_rows_[driver]; }
+  // What the supports apply to the structure, −λ of their rows: per support of the model, the
+  // force (N) along each fixed axis, then the moment (N·m) on a fixed 2D rotation
+  // (output/history_layout.hpp names them). A 3D beam node's fixed frame reports none.
+  std::vector<double> support_reactions(const Eigen::VectorXd& lambda) const;
 
   // Plain words for constraint row `row`, e.g. "support D, y" or "driver motor".
   std::string describe_equation(int row) const;
@@ -184,6 +188,7 @@ class Assembler {
   std::vector<int> first_row_;                            // [constraint] → first λ row
   std::vector<int> driver_rows_;                          // [driver] → first λ row
   std::vector<int> driver_constraint_;                    // [driver] → index in constraints_
+  std::vector<int> support_constraint_;                   // [support] → index in constraints_
   int n_equations_ = 0;
   int n_element_constraints_ = 0;  // constraints the element kinds brought
   int n_switched_equations_ = 0;   // rows of the groups' switched constraints (hinge locks)

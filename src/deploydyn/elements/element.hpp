@@ -42,6 +42,9 @@ struct ResultQuantity {
   std::string_view key;   // history.csv column prefix ("force.<element>"), summary.json key
   std::string_view name;  // with its unit: VTK cell array, Python ("axial_force_N")
   bool recorded = true;   // written to history, summary and VTK; false: computed on request
+  // In history.csv and summary.json unless the model's output selection asks otherwise
+  // (output/history_layout.hpp); envelopes.csv and VTK have every recorded quantity.
+  bool by_default = true;
 };
 
 // The results of every element of one type at one configuration: the quantities of its

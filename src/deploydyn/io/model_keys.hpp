@@ -42,7 +42,8 @@ inline constexpr std::array<std::string_view, 9> kContinuation{
     "linear_solver"};
 inline constexpr std::array<std::string_view, 8> kModal{"type", "modes", "at", "shift",
                                                         "load_steps", "mass", "newton", "linear_solver"};
-inline constexpr std::array<std::string_view, 3> kOutput{"history", "summary", "vtk"};
+inline constexpr std::array<std::string_view, 4> kOutput{"history", "summary", "vtk", "select"};
+inline constexpr std::array<std::string_view, 3> kOutputSelect{"nodes", "elements", "quantities"};
 inline constexpr std::array<std::string_view, 2> kConstantFunction{"type", "value"};
 inline constexpr std::array<std::string_view, 5> kSmoothStep{"type", "t0", "v0", "t1", "v1"};
 // smooth_trapezoid (every key required) and paper_eq23 (every key optional)
@@ -58,7 +59,7 @@ struct Section {
   Keys keys;
 };
 
-inline constexpr std::array<Section, 23> kSections{{
+inline constexpr std::array<Section, 24> kSections{{
     {"top level", "### Top level", kTopLevel},
     {"nodes.NAME", "### `nodes`", kNode},
     {"materials.NAME", "### `materials`", kMaterial},
@@ -77,6 +78,7 @@ inline constexpr std::array<Section, 23> kSections{{
     {"analysis (type: continuation)", "#### `type: continuation`", kContinuation},
     {"analysis (type: modal)", "#### `type: modal`", kModal},
     {"output", "### `output`", kOutput},
+    {"output.select", "#### `select`: what history.csv holds", kOutputSelect},
     {"function (type: constant)", "## Functions of time", kConstantFunction},
     {"function (type: smooth_step)", "## Functions of time", kSmoothStep},
     {"function (type: smooth_trapezoid or paper_eq23)", "## Functions of time", kSmoothTrapezoid},

@@ -23,6 +23,8 @@
 #include "deploydyn/io/yaml_reader.hpp"
 #include "deploydyn/model/dof_map.hpp"
 
+#include "deploydyn/output/envelope_table.hpp"
+#include "deploydyn/output/history_layout.hpp"
 #include "deploydyn/output/result_folder.hpp"
 #include "deploydyn/output/vtk_writer.hpp"
 
@@ -827,21 +829,75 @@ class ModelReader {
     if (history) output.history_file = file_name(*history);
     if (summary) output.summary_file = file_name(*summary);
     if (const auto vtk = spec.find("vtk")) output.vtk = vtk->choice({"false", "true"}) == 1;
+    if (const auto select = spec.find("select")) read_selection(*select);
     // Each file of the run's folder must survive the others: a history named summary.json
     // would be overwritten at the end, one named model.yaml would lose the model as run.
     for (const auto& [value, name, other] :
          {std::tuple{history, output.history_file, output.summary_file},
           std::tuple{summary, output.summary_file, output.history_file}}) {
       if (!value) continue;
-      const std::vector<std::string> taken{kRunModelFileName, kLockFileName, kVtkFolderName, other,
-                                           other + ".tmp"};
+      const std::vector<std::string> taken{kRunModelFileName, kLockFileName, kVtkFolderName, kEnvelopeFileName,
+                                           other, other + ".tmp"};
       if (std::find(taken.begin(), taken.end(), name) != taken.end()) {
         value->fail(fmt::format("'{}' is taken in the result folder; the run writes {} (model), "
-                                "{} (summary), {} (history), {} (lock) and {}/ (VTK)",
+                                "{} (summary), {} (history), {} (envelopes), {} (lock) and {}/ (VTK)",
                                 name, kRunModelFileName, output.summary_file, output.history_file,
-                                kLockFileName, kVtkFolderName));
+                                kEnvelopeFileName, kLockFileName, kVtkFolderName));
       }
     }
+  }
+
+  // output.select (output/history_layout.hpp): names and patterns must each choose something,
+  // the words stand alone, families are this model's.
+  void read_selection(const YamlValue& spec) {
+    spec.expect_keys(model_keys::kOutputSelect);
+    OutputSelection& select = model_.output.select;
+    std::vector<std::string> nodes;
+    for (const Node& node : model_.nodes) nodes.push_back(node.name);
+    if (const auto value = spec.find("nodes")) {
+      select.nodes = chosen_names(*value, nodes, {kAllWord, kMovingWord}, "node");
+    }
+    if (const auto value = spec.find("elements")) {
+      select.elements = chosen_names(*value, element_names(model_), {kAllWord, kNoneWord}, "element");
+    }
+    if (const auto value = spec.find("quantities")) {
+      const std::vector<std::string> families = history_families(model_);
+      for (const YamlValue& item : list_or_word(*value, "quantity names")) {
+        const std::string family = item.text();
+        if (std::find(families.begin(), families.end(), family) == families.end()) {
+          item.fail(fmt::format("unknown quantity '{}'{}; this model's are {}", family,
+                                io::did_you_mean(family, families), fmt::join(families, ", ")));
+        }
+        select.quantities.push_back(family);
+      }
+      if (select.quantities.empty()) value->fail("names no quantity; history.csv would hold only t");
+    }
+  }
+
+  // A list, or one scalar as a list of one.
+  static std::vector<YamlValue> list_or_word(const YamlValue& value, std::string_view what) {
+    if (value.is_scalar()) return {value};
+    return value.items(0, std::numeric_limits<std::size_t>::max(), what);
+  }
+
+  static std::vector<std::string> chosen_names(const YamlValue& value, const std::vector<std::string>& names,
+                                               std::initializer_list<std::string_view> words,
+                                               std::string_view kind) {
+    std::vector<std::string> out;
+    const std::vector<YamlValue> items = list_or_word(value, fmt::format("{} names or patterns", kind));
+    for (const YamlValue& item : items) {
+      const std::string text = item.text();
+      const bool word = std::find(words.begin(), words.end(), text) != words.end();
+      if (word && items.size() > 1) {
+        item.fail(fmt::format("'{}' stands alone: give it as the only entry, or list {} names", text, kind));
+      }
+      if (!word && std::none_of(names.begin(), names.end(), [&](const std::string& n) { return name_matches(text, n); })) {
+        item.fail(fmt::format("'{}' matches no {}{}; give {} names, patterns with * or ?, or {}", text, kind,
+                              io::did_you_mean(text, names), kind, fmt::join(words, ", ")));
+      }
+      out.push_back(text);
+    }
+    return out;
   }
 
   // Output goes into the run's output folder, so only a plain name makes sense.

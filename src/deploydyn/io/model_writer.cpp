@@ -375,6 +375,20 @@ void emit_analysis(YAML::Emitter& out, const Model& model) {
   out << model.output.summary_file;
   emit_key(out, "vtk");
   out << model.output.vtk;
+  const OutputSelection& select = model.output.select;
+  if (!select.empty()) {
+    emit_key(out, "select");
+    out << YAML::BeginMap;
+    for (const auto& [key, names] : {std::pair{"nodes", &select.nodes}, std::pair{"elements", &select.elements},
+                                     std::pair{"quantities", &select.quantities}}) {
+      if (names->empty()) continue;
+      emit_key(out, key);
+      out << YAML::Flow << YAML::BeginSeq;
+      for (const std::string& name : *names) out << name;
+      out << YAML::EndSeq;
+    }
+    out << YAML::EndMap;
+  }
   out << YAML::EndMap;
 }
 

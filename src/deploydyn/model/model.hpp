@@ -217,10 +217,27 @@ struct AnalysisOptions {
   ModalSettings modal;                // type modal only
 };
 
+// What history.csv holds (output/history_layout.hpp resolves it; docs/model-format.md,
+// "Choosing what history.csv holds"). Each list is empty when the model does not choose, and
+// then the default applies: everything for a small model, a reduced set for a large one.
+struct OutputSelection {
+  // Node names or glob patterns (* and ?), or one of the words "all", "moving" (every node not
+  // fixed in all of its axes).
+  std::vector<std::string> nodes;
+  // Element names or glob patterns, or one of the words "all", "none".
+  std::vector<std::string> elements;
+  // Column families: position, displacement, the element quantities' keys (strain, mstrain,
+  // force, stress, ...), driver, reaction, energy.
+  std::vector<std::string> quantities;
+
+  bool empty() const { return nodes.empty() && elements.empty() && quantities.empty(); }
+};
+
 struct OutputOptions {
   std::string history_file = "history.csv";
   std::string summary_file = "summary.json";
   bool vtk = false;  // also a ParaView time series in vtk/ (output/vtk_writer.hpp)
+  OutputSelection select;
 };
 
 struct Model {

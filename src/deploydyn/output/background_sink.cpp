@@ -15,9 +15,10 @@ BackgroundSink::~BackgroundSink() {
 void BackgroundSink::record(const StepRecord& record) { push(record); }
 
 void BackgroundSink::record_state(const Assembler& assembler, const MotionState& state,
-                                  const WorkTally& work) {
+                                  const WorkTally& work, bool output) {
+  if (!output && !wants_every_step()) return;
   // Only what a record needs: not the accelerations.
-  Snapshot snapshot{&assembler, {}, work};
+  Snapshot snapshot{&assembler, {}, work, output};
   snapshot.state.time_s = state.time_s;
   snapshot.state.q = state.q;
   snapshot.state.v = state.v;
@@ -62,7 +63,7 @@ void BackgroundSink::work() {
     try {
       for (const Item& item : batch) {
         if (const auto* s = std::get_if<Snapshot>(&item)) {
-          sink_.record(make_step_record(*s->assembler, s->state, s->work));
+          sink_.record(make_step_record(*s->assembler, s->state, s->work, s->output));
         } else {
           sink_.record(std::get<StepRecord>(item));
         }

@@ -29,7 +29,8 @@ class BackgroundSink final : public RecordSink {
   void record(const StepRecord& record) override;
   // Queues a copy of the state; the record is built on the writer thread.
   void record_state(const Assembler& assembler, const MotionState& state,
-                    const WorkTally& work) override;
+                    const WorkTally& work, bool output = true) override;
+  bool wants_every_step() const override { return sink_.wants_every_step(); }
   // Waits until every record has reached the sink; rethrows the first exception it threw.
   void finish();
   // True once the sink has thrown: the records since are dropped. Any thread may ask.
@@ -41,6 +42,7 @@ class BackgroundSink final : public RecordSink {
     const Assembler* assembler = nullptr;
     MotionState state;
     WorkTally work;
+    bool output = true;
   };
   using Item = std::variant<StepRecord, Snapshot>;
 

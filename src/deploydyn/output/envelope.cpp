@@ -34,7 +34,11 @@ void Envelope::record(const StepRecord& r) {
   for (std::size_t d = 0; d < r.driver_efforts.size(); ++d) {
     drivers_[d].update(r.driver_efforts[d], r.time_s);
   }
-  last_ = r;
+  reactions_.resize(r.reactions.size());
+  for (std::size_t k = 0; k < r.reactions.size(); ++k) reactions_[k].update(r.reactions[k], r.time_s);
+  coordinates_.resize(static_cast<std::size_t>(r.q.size()));
+  for (Eigen::Index k = 0; k < r.q.size(); ++k) coordinates_[static_cast<std::size_t>(k)].update(r.q[k], r.time_s);
+  if (r.output) last_ = r;
   ++n_records_;
 }
 

@@ -1,7 +1,9 @@
 #pragma once
-// Extremes over a run, as the records go by: per element the min and max of each recorded
-// result quantity (the bar's total strain, mechanical strain and axial force) with their times;
-// per driver the peak effort; the last node positions. summary.json is written from it.
+// Extremes over a run, taken from every step (RecordSink::wants_every_step), not only the output
+// times: per element the min and max of each recorded result quantity (the bar's total strain,
+// mechanical strain, axial force, stress) with their times; per driver its effort's; per
+// support row its reaction's; per unknown of q its value's (displacements follow); and the last
+// output record. summary.json and envelopes.csv are written from it.
 
 #include <limits>
 #include <vector>
@@ -36,17 +38,22 @@ struct ElementEnvelope {
 class Envelope final : public RecordSink {
  public:
   void record(const StepRecord& record) override;
+  bool wants_every_step() const override { return true; }
 
   int n_records() const { return n_records_; }
   // Per type of elements/element_kinds.hpp.
   const std::vector<ElementEnvelope>& elements() const { return elements_; }
   const std::vector<Extremes>& drivers() const { return drivers_; }
+  const std::vector<Extremes>& reactions() const { return reactions_; }    // Assembler::support_reactions
+  const std::vector<Extremes>& coordinates() const { return coordinates_; }  // per unknown of q
   const StepRecord& last() const { return last_; }
 
  private:
   int n_records_ = 0;
   std::vector<ElementEnvelope> elements_;
   std::vector<Extremes> drivers_;
+  std::vector<Extremes> reactions_;
+  std::vector<Extremes> coordinates_;
   StepRecord last_;
 };
 

@@ -6,8 +6,6 @@
 #include <string_view>
 #include <utility>
 
-#include "deploydyn/elements/element_kinds.hpp"
-#include "deploydyn/model/dof_map.hpp"
 
 namespace deploydyn {
 namespace {
@@ -24,50 +22,17 @@ constexpr std::size_t kLongestValue = 25;
 
 }  // namespace
 
-std::vector<std::string> history_columns(const Model& model) {
-  std::vector<std::string> columns{"t"};
-  // Every unknown of q, in its order: x.A, y.A, then what elements add (rz.A for a beam's node).
-  const DofMap dofs(model);
-  for (int dof = 0; dof < dofs.n_dofs(); ++dof) columns.push_back(dofs.label(dof));
-  for (const ElementRef& e : all_elements(model)) {
-    for (const ResultQuantity& quantity : e.kind->quantities(model.dimension)) {
-      if (quantity.recorded) {
-        columns.push_back(std::string(quantity.key) + "." + e.kind->element_name(model, e.index));
-      }
-    }
-  }
-  for (const Driver& driver : model.drivers) {
-    columns.push_back((drives_rotation(driver.kind) ? "torque." : "force.") + driver.name);
-  }
-  for (const char* energy : {"kinetic", "strain_energy", "external_work", "dissipated"}) columns.push_back(energy);
-  return columns;
-}
-
-void append_history_row(const StepRecord& r, std::vector<double>& row) {
-  row.push_back(r.time_s);
-  row.insert(row.end(), r.q.begin(), r.q.end());
-  const auto kinds = element_kinds();
-  for (std::size_t g = 0; g < r.elements.size(); ++g) {
-    const auto quantities = kinds[g]->quantities(r.dimension);
-    const ElementResults& results = r.elements[g];
-    for (int e = 0; e < results.n_elements(); ++e) {
-      for (int k = 0; k < results.n_quantities; ++k) {
-        if (quantities[static_cast<std::size_t>(k)].recorded) row.push_back(results.at(e, k));
-      }
-    }
-  }
-  row.insert(row.end(), r.driver_efforts.begin(), r.driver_efforts.end());
-  row.insert(row.end(), {r.kinetic_energy_J, r.strain_energy_J, r.external_work_J, r.dissipated_J});
-}
+std::vector<std::string> history_columns(const Model& model) { return HistoryLayout(model).columns(); }
 
 HistoryWriter::HistoryWriter(const std::filesystem::path& file, const Model& model)
-    : file_(file), last_flush_(std::chrono::steady_clock::now()) {
-  file_.append(fmt::format("{}\n", fmt::join(history_columns(model), ",")));
+    : layout_(model), file_(file), last_flush_(std::chrono::steady_clock::now()) {
+  file_.append(fmt::format("{}\n", fmt::join(layout_.columns(), ",")));
 }
 
 void HistoryWriter::record(const StepRecord& r) {
+  if (!r.output) return;  // a step between output times: for the envelope only
   values_.clear();
-  append_history_row(r, values_);
+  layout_.append_row(r, values_);
   // The shortest text that reads back as the same double (fmt's default, Dragonbox), written
   // straight into a buffer sized for the longest: 40 ns a value, against 83 through
   // fmt::join and a back_inserter (bench/output_benchmark.cpp). The row is the writer

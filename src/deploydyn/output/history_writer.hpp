@@ -1,7 +1,8 @@
 #pragma once
-// history.csv (README, "The outputs"): one header row, then one row per output time:
-//   t, x.<node>, y.<node>[, z.<node>] ..., strain.<el>, mstrain.<el>, force.<el> ...,
-//   torque.<driver> | force.<driver> ..., kinetic, strain_energy, external_work, dissipated
+// history.csv (README, "The outputs"): one header row, then one row per output time, with the
+// columns of output/history_layout.hpp (by default t, x.<node>, y.<node>[, z.<node>] ...,
+// strain.<el>, mstrain.<el>, force.<el> ..., torque.<driver> | force.<driver> ..., kinetic,
+// strain_energy, external_work, dissipated, reaction.<node>.<axis> ...).
 // Rows are gathered and written in whole rows at least every 200 ms of wall time, so a crash
 // or an interrupt loses at most that much and never leaves half a row (output/checked_file.hpp);
 // a failed write throws OutputError with the reason and keeps the rows before it.
@@ -13,15 +14,13 @@
 
 #include "deploydyn/model/model.hpp"
 #include "deploydyn/output/checked_file.hpp"
+#include "deploydyn/output/history_layout.hpp"
 #include "deploydyn/output/step_record.hpp"
 
 namespace deploydyn {
 
+// The columns of the model's history.csv (HistoryLayout::columns).
 std::vector<std::string> history_columns(const Model& model);
-
-// Appends one record's values to `row`, in the order of history_columns: what HistoryWriter
-// writes as one row, for callers that keep the history in memory.
-void append_history_row(const StepRecord& record, std::vector<double>& row);
 
 class HistoryWriter final : public RecordSink {
  public:
@@ -33,8 +32,10 @@ class HistoryWriter final : public RecordSink {
 
   void record(const StepRecord& record) override;
   void flush();
+  const HistoryLayout& layout() const { return layout_; }
 
  private:
+  HistoryLayout layout_;
   AppendFile file_;
   std::vector<double> values_;
   std::vector<char> rows_;    // text of the rows not yet written, then room for one more

@@ -1,5 +1,6 @@
 #include "deploydyn/output/run_to_folder.hpp"
 
+#include <algorithm>
 #include <atomic>
 #include <optional>
 #include <utility>
@@ -7,6 +8,7 @@
 
 #include "deploydyn/output/background_sink.hpp"
 #include "deploydyn/output/envelope.hpp"
+#include "deploydyn/output/envelope_table.hpp"
 #include "deploydyn/output/history_writer.hpp"
 #include "deploydyn/output/modes_to_folder.hpp"
 #include "deploydyn/output/output_error.hpp"
@@ -25,7 +27,12 @@ class FanOut final : public RecordSink {
  public:
   explicit FanOut(std::vector<RecordSink*> sinks) : sinks_(std::move(sinks)) {}
   void record(const StepRecord& r) override {
-    for (RecordSink* sink : sinks_) sink->record(r);
+    for (RecordSink* sink : sinks_) {
+      if (r.output || sink->wants_every_step()) sink->record(r);
+    }
+  }
+  bool wants_every_step() const override {
+    return std::any_of(sinks_.begin(), sinks_.end(), [](const RecordSink* s) { return s->wants_every_step(); });
   }
 
  private:
@@ -57,6 +64,7 @@ RunReport run_to_folder(const Model& model, const std::filesystem::path& folder,
   try {
     start_run_folder(results, model, run_files(model));
     HistoryWriter history(folder / model.output.history_file, model);
+    if (!history.layout().note().empty()) report.notes.push_back(history.layout().note());
     envelope = Envelope();
     std::vector<RecordSink*> sinks{&history, &envelope};
     std::optional<VtkWriter> vtk;
@@ -74,6 +82,12 @@ RunReport run_to_folder(const Model& model, const std::filesystem::path& folder,
     record_output_failure(report, error);
   }
   report.warnings = plausibility_warnings(model, envelope);
+  try {  // what was computed, also of a run that failed
+    if (!output_error) write_envelope_table(folder / kEnvelopeFileName, model, envelope);
+  } catch (const OutputError& error) {
+    output_error = error;
+    record_output_failure(report, error);
+  }
   results.finish(summary_json(model, envelope, report), short_summary_json(model, report));
   if (output_error) throw *output_error;
   return report;

@@ -5,9 +5,10 @@
 namespace deploydyn {
 
 StepRecord make_step_record(const Assembler& assembler, const MotionState& state,
-                            const WorkTally& work) {
+                            const WorkTally& work, bool output) {
   StepRecord record;
   record.time_s = state.time_s;
+  record.output = output;
   record.dimension = assembler.model().dimension;
   record.q = state.q;
   record.v = state.v;
@@ -29,6 +30,7 @@ StepRecord make_step_record(const Assembler& assembler, const MotionState& state
   for (int d = 0; d < n_drivers; ++d) {
     record.driver_efforts.push_back(assembler.driver_effort(d, state.q, state.time_s, state.lambda));
   }
+  record.reactions = assembler.support_reactions(state.lambda);
   Eigen::VectorXd momentum;
   assembler.mass_times(state.v, momentum);
   record.kinetic_energy_J = 0.5 * state.v.dot(momentum);

@@ -19,11 +19,15 @@ struct WorkTally {
 
 struct StepRecord {
   double time_s = 0.0;
+  // An output time (history.csv, VTK), or a step between them that only the envelopes take
+  // (RecordSink::wants_every_step).
+  bool output = true;
   int dimension = 2;                   // the model's: which quantities its elements report
   Eigen::VectorXd q;                   // nodal coordinates (m)
   Eigen::VectorXd v;                   // their rates q̇ (m/s); zero in a static analysis
   std::vector<ElementResults> elements;  // per type of elements/element_kinds.hpp
   std::vector<double> driver_efforts;  // torque (N·m) or force (N), per driver
+  std::vector<double> reactions;       // of the supports (N; N·m): Assembler::support_reactions
   double kinetic_energy_J = 0.0;       // ½ q̇ᵀ M q̇
   double strain_energy_J = 0.0;        // Σ of the elements' strain energies
   double external_work_J = 0.0;        // work of loads and drivers since the start
@@ -32,18 +36,22 @@ struct StepRecord {
 };
 
 StepRecord make_step_record(const Assembler& assembler, const MotionState& state,
-                            const WorkTally& work = {});
+                            const WorkTally& work = {}, bool output = true);
 
-// Receives the records of a run as they are computed.
+// Receives the records of a run as they are computed: those of the output times, and, when it
+// wants them, those of every step in between (record.output false), so that peaks are the
+// peaks of the solution, not of its samples.
 class RecordSink {
  public:
   virtual ~RecordSink() = default;
   virtual void record(const StepRecord& record) = 0;
-  // The solution at an output time: builds its StepRecord and passes it to record(). A sink may
-  // build it elsewhere (BackgroundSink: on its writer thread); the assembler is only read.
+  virtual bool wants_every_step() const { return false; }
+  // The solution after a step: builds its StepRecord and passes it to record(), if `output` or
+  // wants_every_step(). A sink may build it elsewhere (BackgroundSink: on its writer thread);
+  // the assembler is only read.
   virtual void record_state(const Assembler& assembler, const MotionState& state,
-                            const WorkTally& work) {
-    record(make_step_record(assembler, state, work));
+                            const WorkTally& work, bool output = true) {
+    if (output || wants_every_step()) record(make_step_record(assembler, state, work, output));
   }
 };
 

@@ -1,10 +1,15 @@
 #include "deploydyn/output/summary_writer.hpp"
 
+#include <fmt/format.h>
+
+#include <algorithm>
 #include <map>
 #include <nlohmann/json.hpp>
 
 #include "deploydyn/elements/element_kinds.hpp"
 #include "deploydyn/model/dof_map.hpp"
+#include "deploydyn/output/envelope_table.hpp"
+#include "deploydyn/output/history_layout.hpp"
 #include "deploydyn/output/plausibility.hpp"
 #include "deploydyn/output/result_folder.hpp"
 #include "deploydyn/output/vtk_writer.hpp"
@@ -14,6 +19,9 @@ namespace deploydyn {
 namespace {
 
 using nlohmann::ordered_json;
+
+// summary.json of a large model lists this many elements, those of highest peak force.
+constexpr int kLargeModelElements = 20;
 
 // Appends `key: value` to a JSON object without ordered_map's linear search for an existing key
 // (the model's names are unique): writing 10⁵ elements stays linear instead of quadratic
@@ -25,6 +33,39 @@ void append(ordered_json& object, const std::string& key, ordered_json value) {
 ordered_json extremes(const Extremes& e) {
   if (e.empty()) return nullptr;
   return {{"min", e.min}, {"t_min", e.time_of_min_s}, {"max", e.max}, {"t_max", e.time_of_max_s}};
+}
+
+// Per element, the extremes of the quantities history.csv holds by default; all elements, or
+// the `limit` of highest peak |force| (when limit ≥ 0).
+ordered_json element_extremes(const Model& model, const Envelope& envelope, int limit) {
+  const auto kinds = element_kinds();
+  std::vector<std::pair<double, ElementRef>> peaks;
+  for (std::size_t g = 0; g < kinds.size() && g < envelope.elements().size(); ++g) {
+    const ElementEnvelope& of_kind = envelope.elements()[g];
+    const int force = quantity_index(*kinds[g], model.dimension, "axial_force_N");
+    for (int e = 0; e < kinds[g]->n_elements(model) && e < of_kind.n_elements(); ++e) {
+      peaks.push_back({force >= 0 ? of_kind.at(e, force).peak_magnitude() : 0.0, {kinds[g], e}});
+    }
+  }
+  if (limit >= 0 && static_cast<int>(peaks.size()) > limit) {
+    std::partial_sort(peaks.begin(), peaks.begin() + limit, peaks.end(),
+                      [](const auto& a, const auto& b) { return a.first > b.first; });
+    peaks.resize(static_cast<std::size_t>(limit));
+  }
+  ordered_json elements = ordered_json::object();
+  for (const auto& [peak, ref] : peaks) {
+    const std::size_t g = static_cast<std::size_t>(
+        std::find(kinds.begin(), kinds.end(), ref.kind) - kinds.begin());
+    const auto quantities = ref.kind->quantities(model.dimension);
+    ordered_json entry = ordered_json::object();
+    for (std::size_t k = 0; k < quantities.size(); ++k) {
+      if (quantities[k].recorded && quantities[k].by_default) {
+        append(entry, std::string(quantities[k].key), extremes(envelope.elements()[g].at(ref.index, static_cast<int>(k))));
+      }
+    }
+    append(elements, ref.kind->element_name(model, ref.index), std::move(entry));
+  }
+  return elements;
 }
 
 // The scheme as chosen and its generalized-α parameters as used.
@@ -107,6 +148,9 @@ ordered_json event_counts(const std::vector<RunEvent>& events) {
 std::vector<std::pair<std::string, std::string>> run_files(const Model& model) {
   std::vector<std::pair<std::string, std::string>> files{{"model", kRunModelFileName},
                                                          {"history", model.output.history_file}};
+  const bool time_history = model.analysis.type == AnalysisType::quasi_static ||
+                            model.analysis.type == AnalysisType::dynamic;
+  if (time_history) files.emplace_back("envelopes", kEnvelopeFileName);
   if (model.output.vtk) files.emplace_back("vtk", kVtkFolderName);
   return files;
 }
@@ -144,22 +188,19 @@ std::string summary_json(const Model& model, const Envelope& envelope, const Run
                    {"step", model.analysis.step_s},
                    {"integrator", integrator(model.analysis.integrator)}};
 
-  ordered_json elements = ordered_json::object();
-  const auto kinds = element_kinds();
-  for (std::size_t g = 0; g < kinds.size() && g < envelope.elements().size(); ++g) {
-    const ElementEnvelope& envelope_of_kind = envelope.elements()[g];
-    const auto quantities = kinds[g]->quantities(model.dimension);
-    for (int e = 0; e < kinds[g]->n_elements(model) && e < envelope_of_kind.n_elements(); ++e) {
-      ordered_json entry = ordered_json::object();
-      for (std::size_t k = 0; k < quantities.size(); ++k) {
-        if (quantities[k].recorded) {
-          append(entry, std::string(quantities[k].key), extremes(envelope_of_kind.at(e, static_cast<int>(k))));
-        }
-      }
-      append(elements, kinds[g]->element_name(model, e), std::move(entry));
-    }
+  const HistoryLayout layout(model);
+  const bool large = layout.selection() == "large model default";
+  j["elements"] = element_extremes(model, envelope, large ? kLargeModelElements : -1);
+  ordered_json output = {{"history_selection", layout.selection()}, {"history_columns", layout.columns().size()}};
+  if (!layout.note().empty()) output["note"] = layout.note();
+  if (large) {
+    output["elements_note"] = fmt::format("'elements' lists the {} elements of highest peak |force|; "
+                                          "{} has every element's extremes", kLargeModelElements, kEnvelopeFileName);
   }
-  j["elements"] = elements;
+  if (model.analysis.type == AnalysisType::quasi_static || model.analysis.type == AnalysisType::dynamic) {
+    output["envelopes_file"] = kEnvelopeFileName;
+  }
+  j["output"] = output;
 
   ordered_json drivers = ordered_json::object();
   for (std::size_t d = 0; d < model.drivers.size() && d < envelope.drivers().size(); ++d) {
@@ -173,6 +214,17 @@ std::string summary_json(const Model& model, const Envelope& envelope, const Run
     append(drivers, model.drivers[d].name, std::move(entry));
   }
   j["drivers"] = drivers;
+
+  // Per supported node, the extremes of each reaction component over every step.
+  ordered_json reactions = ordered_json::object();
+  const std::vector<std::string> labels = reaction_labels(model);
+  for (std::size_t r = 0; r < labels.size() && r < envelope.reactions().size(); ++r) {
+    const std::size_t dot = labels[r].rfind('.');
+    const std::string node = labels[r].substr(9, dot - 9);  // "reaction.<node>.<axis>"
+    if (!reactions.contains(node)) append(reactions, node, ordered_json::object());
+    reactions[node][labels[r].substr(dot + 1)] = extremes(envelope.reactions()[r]);
+  }
+  j["reactions"] = reactions;
 
   ordered_json positions = ordered_json::object();
   if (envelope.n_records() > 0) {

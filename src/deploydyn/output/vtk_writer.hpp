@@ -1,19 +1,20 @@
 #pragma once
 // ParaView output: a VTK XML time series, one file per record, in the folder given
 // (run_to_folder gives <result folder>/vtk/ when the model says `output: {vtk: true}`):
-//   frame_000000.vtu, frame_000001.vtu, ...   UnstructuredGrid, ASCII, one per output time
+//   frame_000000.vtu, frame_000001.vtu, ...   UnstructuredGrid, one per output time
 //   deploydyn.pvd                              the Collection: each frame's file and time
 // File format: https://docs.vtk.org/en/latest/design_documents/VTKFileFormats.html (XML).
 //
 // A frame holds the elements as cells (cell i is element i in the order of
 // elements/element_kinds.hpp; bars are VTK_LINEs) between the nodes' current positions (point i
 // is node i; z = 0 in 2D), and as data
-//   points: displacement_m (current − initial position), velocity_m_s (q̇; 0 in a static run)
+//   points: displacement_m (current − initial position), velocity_m_s (q̇; 0 in a static run),
+//           node_name (a String array: the model's names)
 //   cells:  one array per recorded result quantity of the element types, by its name (the bar's
-//           strain, mechanical_strain, axial_force_N), and temperature_change_C (the element's
-//           ΔT at that time)
-// plus the time in the field data TimeValue. Numbers are written in the shortest form that
-// reads back to the same double, so the files carry exactly what history.csv does.
+//           strain, mechanical_strain, axial_force_N, stress_Pa), temperature_change_C (the
+//           element's ΔT at that time), element_name and element_type (String arrays)
+// plus the time in the field data TimeValue. Numeric arrays are inline binary (base64 of the
+// doubles): exactly what history.csv holds, in half the size of text.
 //
 // Streamed: each record's frame is written whole, then added to the collection, whose entry and
 // closing tags go out in one write at the end of the file. So while a run goes, deploydyn.pvd is

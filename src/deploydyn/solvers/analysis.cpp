@@ -432,7 +432,9 @@ RunReport run_analysis(const Assembler& assembler, RecordSink& sink, const RunCo
       steps.output_written();
     } else {
       advance_work();
-      if (all_latched) sink.record_state(assembler, state, work.tally());  // the end, between outputs
+      // A step between output times reaches the envelopes only, so that peaks are not missed;
+      // the end of a run that every latch stopped is an output.
+      sink.record_state(assembler, state, work.tally(), /*output=*/all_latched);
     }
     report.time_reached_s = state.time_s;
     if (control.progress) control.progress(state.time_s);

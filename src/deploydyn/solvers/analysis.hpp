@@ -54,6 +54,7 @@ struct RunReport {
   int initial_iterations = 0;
   double wall_time_s = 0.0;
   std::vector<std::string> warnings;  // implausible states reached (output/plausibility.hpp)
+  std::vector<std::string> notes;     // what the user should know of the results (a reduced history)
   std::vector<RunEvent> events;       // in time order
   int mode_switches = 0;              // steps taken again after a latch, stop or stick switched
   // Why the run ended when it completed: "end_time", or "all_latched" (AnalysisOptions::end_when).

@@ -25,6 +25,7 @@ struct BarRecord {
   bar::Section section;
   double mass_kg = 0.0;
   double expansion_per_C = 0.0;                        // α
+  double area_m2 = 0.0;                                // A, for the stress N/A
   const TimeFunction* temperature_change_C = nullptr;  // ΔT(t), in the model
 
   double thermal_strain(double t) const { return expansion_per_C * temperature_change_C->value(t); }
@@ -66,7 +67,8 @@ struct BarRecord {
     out[0] = s.strain;
     out[1] = s.mechanical_strain;
     out[2] = s.axial_force_N;
-    out[3] = s.length_m;
+    out[3] = s.axial_force_N / area_m2;
+    out[4] = s.length_m;
   }
   double reference_length_m() const { return section.reference_length_m; }
 };
@@ -75,6 +77,7 @@ constexpr ResultQuantity kQuantities[] = {
     {"strain", "strain", true},              // total Green–Lagrange ε
     {"mstrain", "mechanical_strain", true},  // ε_m = ε − αΔT
     {"force", "axial_force_N", true},        // true axial force N, tension positive
+    {"stress", "stress_Pa", true, false},    // N / A: the force over the unstrained section
     {"length", "length_m", false},           // current length l
 };
 
@@ -92,6 +95,7 @@ std::unique_ptr<ElementGroup> make_bars(const Model& model, const DofMap& dofs) 
     bar.section = {material.youngs_modulus_Pa * e.area_m2, e.reference_length_m};
     bar.mass_kg = e.mass_kg;
     bar.expansion_per_C = material.expansion_per_C;
+    bar.area_m2 = e.area_m2;
     bar.temperature_change_C = &e.temperature_change_C;
   }
   return std::make_unique<LocalElementGroup<BarRecord<D>>>(std::move(records), model.analysis.mass);

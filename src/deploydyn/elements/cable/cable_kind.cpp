@@ -30,6 +30,7 @@ struct CableRecord {
 
   std::array<int, kDofs> dofs{};
   double axial_stiffness_N = 0.0;  // EA
+  double area_m2 = 0.0;            // A, for the stress N/A
   double mass_kg = 0.0;
   double expansion_per_C = 0.0;                        // α
   double initial_rest_length_m = 0.0;                  // L0(0): the length scale
@@ -76,9 +77,10 @@ struct CableRecord {
     out[0] = s.bar.strain;
     out[1] = s.bar.mechanical_strain;
     out[2] = s.bar.axial_force_N;
-    out[3] = s.section.reference_length_m;
-    out[4] = s.bar.slack ? 1.0 : 0.0;
-    out[5] = s.bar.length_m;
+    out[3] = s.bar.axial_force_N / area_m2;
+    out[4] = s.section.reference_length_m;
+    out[5] = s.bar.slack ? 1.0 : 0.0;
+    out[6] = s.bar.length_m;
   }
   double reference_length_m() const { return initial_rest_length_m; }
 };
@@ -87,6 +89,7 @@ constexpr ResultQuantity kQuantities[] = {
     {"strain", "strain", true},              // total Green–Lagrange ε, relative to L0(t)
     {"mstrain", "mechanical_strain", true},  // ε_m = ε − αΔT
     {"force", "axial_force_N", true},        // true axial force N ≥ 0; 0 when slack
+    {"stress", "stress_Pa", true, false},    // N / A: the force over the unstrained section
     {"rest", "rest_length_m", true},         // L0(t)
     {"slack", "slack", true},                // 1 when slack (ε_m < 0), 0 when taut
     {"length", "length_m", false},           // current length l
@@ -143,6 +146,7 @@ std::unique_ptr<ElementGroup> make_cables(const Model& model, const DofMap& dofs
       cable.dofs[D + axis] = dofs.index(e.node_b, axis);
     }
     cable.axial_stiffness_N = material.youngs_modulus_Pa * e.area_m2;
+    cable.area_m2 = e.area_m2;
     cable.mass_kg = e.mass_kg;
     cable.expansion_per_C = material.expansion_per_C;
     cable.initial_rest_length_m = e.rest_length_m.value(0.0);
