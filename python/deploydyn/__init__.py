@@ -807,6 +807,13 @@ class ModelBuilder:
         self._section("analysis").update(_plain(options, "analysis", "ModelBuilder.analysis"))
         return self
 
+    def output(self, **options):
+        """Output options as in the file: history, summary (file names), vtk (bool), select={nodes,
+        elements, quantities} (what history.csv holds: names or patterns, and column families such
+        as "position", "displacement", "force", "stress", "reaction"). Checked at `build`."""
+        self._section("output").update(_plain(options, "output", "ModelBuilder.output"))
+        return self
+
     def to_dict(self):
         """The model file's content as a dict (a copy)."""
         return copy.deepcopy(self._spec)

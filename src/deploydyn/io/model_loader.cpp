@@ -937,8 +937,9 @@ std::vector<std::string> split_path(const std::string& path) {
 // analysis.newton.max_iterations=5 works on a file without a newton section. Elsewhere a missing
 // key in the middle of a path is a typo (elements.9.area when there is no element 9).
 bool is_option_section(const std::string& path) {
-  static const std::array<std::string_view, 6> kOptionSections{
-      "analysis", "analysis.integrator", "analysis.newton", "analysis.adaptive", "thermal", "output"};
+  static const std::array<std::string_view, 7> kOptionSections{
+      "analysis", "analysis.integrator", "analysis.newton", "analysis.adaptive", "thermal", "output",
+      "output.select"};
   return std::find(kOptionSections.begin(), kOptionSections.end(), path) != kOptionSections.end();
 }
 

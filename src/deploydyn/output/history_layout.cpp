@@ -158,12 +158,13 @@ HistoryLayout::HistoryLayout(const Model& model) {
     });
     if (static_cast<std::size_t>(n_default) > kLargeHistoryColumns) {
       select.nodes = {std::string(kMovingWord)};
-      select.quantities = {"position", "force", "driver", "energy", "reaction"};
+      select.quantities = {"position", "force", "driver", "energy"};
       selection_ = "large model default";
       note_ = fmt::format(
           "history.csv: this model's full history has {} columns, so it holds the positions of the "
-          "nodes that move, the elements' forces, the drivers, energies and reactions (envelopes.csv "
-          "has every quantity's extremes); choose otherwise with output.select (docs/model-format.md)",
+          "nodes that move, the elements' forces, the drivers and energies (envelopes.csv has every "
+          "quantity's extremes, reactions included); choose otherwise with output.select "
+          "(docs/model-format.md)",
           n_default);
     }
   }

@@ -13,7 +13,8 @@
 // `output.select` chooses nodes and elements by name or glob pattern, and families. Without a
 // choice a model gets every family but displacement and those ResultQuantity::by_default leaves
 // out (the paper's columns, then reactions); a model whose default would exceed
-// kLargeHistoryColumns gets the nodes that move and only the elements' forces, and a note says so.
+// kLargeHistoryColumns gets the nodes that move, the elements' forces, drivers and energies, and a
+// note says so.
 
 #include <cstddef>
 #include <string>

@@ -31,12 +31,13 @@ StepRecord make_step_record(const Assembler& assembler, const MotionState& state
     record.driver_efforts.push_back(assembler.driver_effort(d, state.q, state.time_s, state.lambda));
   }
   record.reactions = assembler.support_reactions(state.lambda);
+  record.external_work_J = work.external_J;
+  record.dissipated_J = work.dissipated_J;
+  if (!output) return record;  // for the envelopes, which track no energies: two passes saved
   Eigen::VectorXd momentum;
   assembler.mass_times(state.v, momentum);
   record.kinetic_energy_J = 0.5 * state.v.dot(momentum);
   record.strain_energy_J = assembler.strain_energy(state.q, state.time_s);
-  record.external_work_J = work.external_J;
-  record.dissipated_J = work.dissipated_J;
   return record;
 }
 

@@ -33,6 +33,7 @@ struct StepRecord {
   double external_work_J = 0.0;        // work of loads and drivers since the start
   double dissipated_J = 0.0;           // energy dissipated since the start (WorkTally)
   // Energy balance: kinetic + strain − external_work + dissipated stays at its initial value.
+  // A record that is not an output (for the envelopes) leaves kinetic and strain energy at 0.
 };
 
 StepRecord make_step_record(const Assembler& assembler, const MotionState& state,

@@ -68,6 +68,32 @@ ordered_json element_extremes(const Model& model, const Envelope& envelope, int 
   return elements;
 }
 
+// Per supported node, the extremes of each reaction component over every step; all supports, or
+// the `limit` of highest peak (when limit ≥ 0).
+ordered_json reaction_extremes(const Model& model, const Envelope& envelope, int limit) {
+  struct Support {
+    std::string node;
+    double peak = 0.0;
+    ordered_json components = ordered_json::object();
+  };
+  std::vector<Support> supports;
+  const std::vector<std::string> labels = reaction_labels(model);
+  for (std::size_t r = 0; r < labels.size() && r < envelope.reactions().size(); ++r) {
+    const std::size_t dot = labels[r].rfind('.');
+    std::string node = labels[r].substr(9, dot - 9);  // "reaction.<node>.<axis>"
+    if (supports.empty() || supports.back().node != node) supports.push_back({std::move(node)});
+    supports.back().components[labels[r].substr(dot + 1)] = extremes(envelope.reactions()[r]);
+    supports.back().peak = std::max(supports.back().peak, envelope.reactions()[r].peak_magnitude());
+  }
+  if (limit >= 0 && static_cast<int>(supports.size()) > limit) {
+    std::stable_sort(supports.begin(), supports.end(), [](const Support& a, const Support& b) { return a.peak > b.peak; });
+    supports.resize(static_cast<std::size_t>(limit));
+  }
+  ordered_json out = ordered_json::object();
+  for (Support& s : supports) append(out, s.node, std::move(s.components));
+  return out;
+}
+
 // The scheme as chosen and its generalized-α parameters as used.
 ordered_json integrator(const IntegratorOptions& options) {
   const auto c = GeneralizedAlphaCoefficients::from(options);
@@ -194,8 +220,9 @@ std::string summary_json(const Model& model, const Envelope& envelope, const Run
   ordered_json output = {{"history_selection", layout.selection()}, {"history_columns", layout.columns().size()}};
   if (!layout.note().empty()) output["note"] = layout.note();
   if (large) {
-    output["elements_note"] = fmt::format("'elements' lists the {} elements of highest peak |force|; "
-                                          "{} has every element's extremes", kLargeModelElements, kEnvelopeFileName);
+    output["elements_note"] = fmt::format("'elements' and 'reactions' list the {} elements and supports of "
+                                          "highest peak; {} has every one's extremes",
+                                          kLargeModelElements, kEnvelopeFileName);
   }
   if (model.analysis.type == AnalysisType::quasi_static || model.analysis.type == AnalysisType::dynamic) {
     output["envelopes_file"] = kEnvelopeFileName;
@@ -215,16 +242,7 @@ std::string summary_json(const Model& model, const Envelope& envelope, const Run
   }
   j["drivers"] = drivers;
 
-  // Per supported node, the extremes of each reaction component over every step.
-  ordered_json reactions = ordered_json::object();
-  const std::vector<std::string> labels = reaction_labels(model);
-  for (std::size_t r = 0; r < labels.size() && r < envelope.reactions().size(); ++r) {
-    const std::size_t dot = labels[r].rfind('.');
-    const std::string node = labels[r].substr(9, dot - 9);  // "reaction.<node>.<axis>"
-    if (!reactions.contains(node)) append(reactions, node, ordered_json::object());
-    reactions[node][labels[r].substr(dot + 1)] = extremes(envelope.reactions()[r]);
-  }
-  j["reactions"] = reactions;
+  j["reactions"] = reaction_extremes(model, envelope, large ? kLargeModelElements : -1);
 
   ordered_json positions = ordered_json::object();
   if (envelope.n_records() > 0) {

@@ -44,41 +44,51 @@ void append_base64(std::string& out, const std::vector<unsigned char>& bytes) {
   }
 }
 
-// A Float64 DataArray of `n_components` per tuple; `value(i, k)` gives component k of tuple i.
-// Inline binary (VTK XML "binary": base64 of a UInt64 byte count and the little-endian doubles):
-// the doubles exactly, as history.csv has them, in half the size of their shortest text.
-template <class Value>
-void float_array(std::string& text, const char* name, int n_tuples, int n_components, Value value) {
+// A DataArray of `n_components` per tuple, inline binary (VTK XML "binary": base64 of a UInt64
+// byte count and the little-endian values): doubles exactly, as history.csv has them, in half
+// the size of their shortest text. `value(i, k)` gives component k of tuple i.
+template <class T, class Value>
+void binary_array(std::string& text, const char* vtk_type, const char* name, int n_tuples, int n_components,
+                  Value value) {
   static_assert(std::endian::native == std::endian::little, "VTK files are written LittleEndian");
   fmt::format_to(Out(text),
-                 "        <DataArray type=\"Float64\" Name=\"{}\" NumberOfComponents=\"{}\" "
+                 "        <DataArray type=\"{}\" Name=\"{}\" NumberOfComponents=\"{}\" "
                  "format=\"binary\">\n          ",
-                 name, n_components);
-  const std::uint64_t n_bytes = sizeof(double) * static_cast<std::uint64_t>(n_tuples) * n_components;
+                 vtk_type, name, n_components);
+  const std::uint64_t n_bytes = sizeof(T) * static_cast<std::uint64_t>(n_tuples) * n_components;
   std::vector<unsigned char> bytes(sizeof(n_bytes) + n_bytes);
   std::memcpy(bytes.data(), &n_bytes, sizeof(n_bytes));
   unsigned char* at = bytes.data() + sizeof(n_bytes);
   for (int i = 0; i < n_tuples; ++i) {
-    for (int k = 0; k < n_components; ++k, at += sizeof(double)) {
-      const double v = value(i, k);
-      std::memcpy(at, &v, sizeof(double));
+    for (int k = 0; k < n_components; ++k, at += sizeof(T)) {
+      const T v = value(i, k);
+      std::memcpy(at, &v, sizeof(T));
     }
   }
   append_base64(text, bytes);
   text += "\n        </DataArray>\n";
 }
 
-// A String array (VTK XML writes these as "Array", in ASCII: each string's character codes and
-// a 0): the names of the nodes or elements, so that ParaView's spreadsheet and selections show
-// the model's names.
+template <class Value>
+void float_array(std::string& text, const char* name, int n_tuples, int n_components, Value value) {
+  binary_array<double>(text, "Float64", name, n_tuples, n_components, value);
+}
+
+// A String array (VTK XML calls it "Array"; in binary, each string's bytes and a 0 after the
+// byte count): the names of the nodes or elements, so that ParaView's spreadsheet and
+// selections show the model's names.
 template <class Name>
-void name_array(Out out, const char* name, int n_tuples, Name name_of) {
-  fmt::format_to(out, "        <Array type=\"String\" Name=\"{}\" format=\"ascii\">\n         ", name);
+void name_array(std::string& text, const char* name, int n_tuples, Name name_of) {
+  fmt::format_to(Out(text), "        <Array type=\"String\" Name=\"{}\" format=\"binary\">\n          ", name);
+  std::vector<unsigned char> bytes(sizeof(std::uint64_t));
   for (int i = 0; i < n_tuples; ++i) {
-    for (const char c : name_of(i)) fmt::format_to(out, " {}", static_cast<int>(static_cast<unsigned char>(c)));
-    fmt::format_to(out, " 0");
+    for (const char c : name_of(i)) bytes.push_back(static_cast<unsigned char>(c));
+    bytes.push_back(0);
   }
-  fmt::format_to(out, "\n        </Array>\n");
+  const std::uint64_t n_bytes = bytes.size() - sizeof(std::uint64_t);
+  std::memcpy(bytes.data(), &n_bytes, sizeof(n_bytes));
+  append_base64(text, bytes);
+  text += "\n        </Array>\n";
 }
 
 }  // namespace
@@ -169,7 +179,7 @@ void VtkWriter::write_frame(const StepRecord& r, const std::filesystem::path& fi
   float_array(text_, "displacement_m", n_nodes, 3,
               [&](int i, int k) { return nodal(r.q, i, k) - model_.nodes[i].position_m[k]; });
   float_array(text_, "velocity_m_s", n_nodes, 3, [&](int i, int k) { return nodal(r.v, i, k); });
-  name_array(out, "node_name", n_nodes, [&](int i) -> const std::string& { return model_.nodes[i].name; });
+  name_array(text_, "node_name", n_nodes, [&](int i) -> const std::string& { return model_.nodes[i].name; });
   fmt::format_to(out, "      </PointData>\n      <CellData Scalars=\"axial_force_N\">\n");
   // One array per recorded quantity of every element type (first of its name: types that share
   // a quantity, such as the axial force, share the array; others get NaN there).
@@ -200,41 +210,34 @@ void VtkWriter::write_frame(const StepRecord& r, const std::filesystem::path& fi
   float_array(text_, "temperature_change_C", n_cells, 1, [&](int c, int) {
     return cells[c].kind->temperature_change_C(model_, cells[c].index, r.time_s);
   });
-  name_array(out, "element_name", n_cells,
+  name_array(text_, "element_name", n_cells,
              [&](int c) -> const std::string& { return cells[c].kind->element_name(model_, cells[c].index); });
-  name_array(out, "element_type", n_cells, [&](int c) { return std::string(cells[c].kind->name()); });
+  name_array(text_, "element_type", n_cells, [&](int c) { return std::string(cells[c].kind->name()); });
   fmt::format_to(out, "      </CellData>\n      <Points>\n");
   float_array(text_, "Points", n_nodes, 3, [&](int i, int k) { return nodal(r.q, i, k); });
-  fmt::format_to(out,
-                 "      </Points>\n"
-                 "      <Cells>\n"
-                 "        <DataArray type=\"Int64\" Name=\"connectivity\" format=\"ascii\">\n");
-  for (const ElementRef& cell : cells) {
-    fmt::format_to(out, "         ");
-    for (int i = 0; i < cell.kind->n_element_nodes(); ++i) {
-      fmt::format_to(out, " {}", cell.kind->element_node(model_, cell.index, i));
-    }
-    fmt::format_to(out, "\n");
-  }
-  fmt::format_to(out,
-                 "        </DataArray>\n"
-                 "        <DataArray type=\"Int64\" Name=\"offsets\" format=\"ascii\">\n");
-  int offset = 0;
-  for (const ElementRef& cell : cells) {
-    offset += cell.kind->n_element_nodes();
-    fmt::format_to(out, "          {}\n", offset);
-  }
-  fmt::format_to(out,
-                 "        </DataArray>\n"
-                 "        <DataArray type=\"UInt8\" Name=\"types\" format=\"ascii\">\n");
-  for (const ElementRef& cell : cells) fmt::format_to(out, "          {}\n", cell.kind->vtk_cell_type());
-  fmt::format_to(out,
-                 "        </DataArray>\n"
-                 "      </Cells>\n"
-                 "    </Piece>\n"
-                 "  </UnstructuredGrid>\n"
-                 "</VTKFile>\n");
+  if (cells_text_.empty()) cells_text_ = cells_block(cells);  // the same in every frame
+  text_ += cells_text_;
   write_file(file, text_);
+}
+
+std::string VtkWriter::cells_block(const std::vector<ElementRef>& cells) const {
+  std::vector<std::int64_t> connectivity, offsets;
+  for (const ElementRef& cell : cells) {
+    for (int i = 0; i < cell.kind->n_element_nodes(); ++i) {
+      connectivity.push_back(cell.kind->element_node(model_, cell.index, i));
+    }
+    offsets.push_back(static_cast<std::int64_t>(connectivity.size()));
+  }
+  std::string text = "      </Points>\n      <Cells>\n";
+  binary_array<std::int64_t>(text, "Int64", "connectivity", static_cast<int>(connectivity.size()), 1,
+                             [&](int i, int) { return connectivity[static_cast<std::size_t>(i)]; });
+  binary_array<std::int64_t>(text, "Int64", "offsets", static_cast<int>(offsets.size()), 1,
+                             [&](int i, int) { return offsets[static_cast<std::size_t>(i)]; });
+  binary_array<std::uint8_t>(text, "UInt8", "types", static_cast<int>(cells.size()), 1, [&](int c, int) {
+    return static_cast<std::uint8_t>(cells[static_cast<std::size_t>(c)].kind->vtk_cell_type());
+  });
+  text += "      </Cells>\n    </Piece>\n  </UnstructuredGrid>\n</VTKFile>\n";
+  return text;
 }
 
 void VtkWriter::append_to_collection(int frame, double time_s) {

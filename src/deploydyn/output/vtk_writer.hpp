@@ -24,6 +24,7 @@
 #include <filesystem>
 #include <string>
 
+#include "deploydyn/elements/element_kinds.hpp"
 #include "deploydyn/model/dof_map.hpp"
 #include "deploydyn/model/model.hpp"
 #include "deploydyn/output/step_record.hpp"
@@ -58,6 +59,8 @@ class VtkWriter final : public RecordSink {
  private:
   void write_frame(const StepRecord& record, const std::filesystem::path& file);
   void append_to_collection(int frame, double time_s);
+  // From </Points> to the end: the cells' connectivity, offsets and types, which never change.
+  std::string cells_block(const std::vector<ElementRef>& cells) const;
 
   std::filesystem::path folder_;
   const Model& model_;
@@ -66,6 +69,7 @@ class VtkWriter final : public RecordSink {
   std::FILE* collection_ = nullptr;  // deploydyn.pvd, open for the writer's life
   long collection_footer_at_ = 0;    // byte offset of "  </Collection>" in it
   std::string text_;                 // reused for each file's contents
+  std::string cells_text_;           // cells_block, made at the first frame
 };
 
 }  // namespace deploydyn
