@@ -24,6 +24,8 @@
 #include "deploydyn/output/output_error.hpp"
 #include "deploydyn/output/plausibility.hpp"
 #include "deploydyn/output/result_folder.hpp"
+#include "deploydyn/output/envelope_table.hpp"
+#include "deploydyn/output/history_layout.hpp"
 #include "deploydyn/output/run_to_folder.hpp"
 #include "exit_codes.hpp"
 #include "generate_command.hpp"
@@ -267,6 +269,11 @@ int check_command(const std::string& model_file, const std::vector<std::string>&
                                                : "")
                      : fmt::format("{}, ρ∞ = {:g}", to_string(i.kind), i.rho_infinity));
     }
+    const HistoryLayout history(model);
+    fmt::print("history     {} columns ({}{}); extremes of every quantity over every step in {}\n",
+               history.columns().size(), history.selection(),
+               history.selection() == "large model default" ? ": moving nodes, forces, drivers, energies" : "",
+               kEnvelopeFileName);
   }
   const LinearSolverKind solver = choose_linear_solver(a.linear_solver, assembler.n_unknowns());
   fmt::print("linear      {} for {} unknowns{}\n",

@@ -8,6 +8,7 @@
     result.summary["drivers"]["motor"]["peak"]  # summary.json as a dict
     deploydyn.__version__                       # "0.1.0", the project's version
     deploydyn.read_result("results/hot")        # a result folder, also one still running
+    deploydyn.read_result("results/hot").envelopes[("2", "axial_force_N")]["max"]  # every step's peak
     deploydyn.folder_status("results/hot")      # "completed", "killed", ...
 
 Models come from a model file (`load`), from text (`loads`), from a dict in the file's layout
@@ -65,7 +66,7 @@ __version__ = _core.__version__
 
 __all__ = [
     "InputError", "OutputError", "RunFailed", "IncompleteHistoryWarning", "Model", "Result",
-    "ModelBuilder", "load", "loads", "from_dict", "roof", "read_result", "folder_status",
+    "ModelBuilder", "load", "loads", "from_dict", "roof", "read_result", "read_envelopes", "folder_status",
     "constant", "smooth_step", "smooth_trapezoid", "paper_eq23", "table",
 ]
 
@@ -882,6 +883,16 @@ class Result:
         values = self[column]
         return float(values[np.argmax(np.abs(values))]) if values.size else math.nan
 
+    @property
+    def envelopes(self):
+        """envelopes.csv of the result folder (extremes over every step, not only the output
+        rows) as {(item, quantity): {"kind", "unit", "min", "t_min_s", "max", "t_max_s"}}, e.g.
+        result.envelopes[("crank", "axial_force_N")]["max"]; {} for a run kept in memory or a
+        folder without the file."""
+        if self.folder is None:
+            return {}
+        return read_envelopes(self.folder / "envelopes.csv")
+
     def raise_for_status(self):
         """Raise RunFailed unless the run completed."""
         if not self.ok:
@@ -891,6 +902,24 @@ class Result:
     def __repr__(self):
         return (f"<deploydyn.Result {self.status}: {self.values.shape[0]} rows × "
                 f"{len(self.columns)} columns{f' in {self.folder}' if self.folder else ''}>")
+
+
+def read_envelopes(file):
+    """envelopes.csv as {(item, quantity): {"kind", "unit", "min", "t_min_s", "max", "t_max_s"}};
+    {} when the file does not exist. The numbers are floats."""
+    import csv
+    file = _path("read_envelopes", "file", file)
+    try:
+        with open(file, newline="", encoding="utf-8") as f:
+            rows = list(csv.DictReader(f))
+    except FileNotFoundError:
+        return {}
+    out = {}
+    for row in rows:
+        out[(row["item"], row["quantity"])] = {
+            "kind": row["kind"], "unit": row["unit"],
+            **{key: float(row[key]) for key in ("min", "t_min_s", "max", "t_max_s")}}
+    return out
 
 
 def read_result(folder, history_file=None, summary_file=None):

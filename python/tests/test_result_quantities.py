@@ -47,3 +47,26 @@ def test_selection_gives_displacements_and_stress_and_leaves_out_the_rest():
 def test_a_selection_that_matches_nothing_names_the_field():
     with pytest.raises(deploydyn.InputError, match=r"output\.select\.nodes\.0.*matches no node"):
         heated_bar(select={"nodes": ["Q*"]})
+
+
+def test_envelopes_of_a_folder_hold_every_steps_extremes(tmp_path):
+    model = deploydyn.load(deploydyn_example("paper/general.yaml"),
+                           overrides={"analysis.end": 0.5, "analysis.step": 0.001,
+                                      "analysis.output_interval": 0.1})
+    result = model.run(out=tmp_path / "run", check=True)
+    envelopes = result.envelopes
+    dense = deploydyn.load(deploydyn_example("paper/general.yaml"),
+                           overrides={"analysis.end": 0.5, "analysis.step": 0.001,
+                                      "analysis.output_interval": 0.001}).run(check=True)
+    for bar in ("1", "2", "3"):
+        peak = envelopes[(bar, "axial_force_N")]
+        assert peak["kind"] == "bar" and peak["unit"] == "N"
+        # Every step's maximum, as the run written at every step has it; the 0.1 s rows miss it.
+        assert peak["max"] == pytest.approx(dense[f"force.{bar}"].max(), rel=1e-7)
+        assert peak["max"] >= result[f"force.{bar}"].max()
+    assert deploydyn.read_envelopes(tmp_path / "nothing.csv") == {}
+
+
+def deploydyn_example(name):
+    import pathlib
+    return pathlib.Path(__file__).resolve().parents[2] / "examples" / name

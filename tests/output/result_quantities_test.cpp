@@ -320,7 +320,7 @@ TEST(HistoryColumns, LargeModelsDefaultToMovingNodesAndForcesWithANote) {
   // A choice of the model's own is kept, however large.
   Model chosen = model;
   chosen.output.select.quantities = {"position", "strain", "mstrain", "force"};
-  EXPECT_EQ(HistoryLayout(chosen).selection(), "model");
+  EXPECT_EQ(HistoryLayout(chosen).selection(), "output.select");
   EXPECT_GT(HistoryLayout(chosen).columns().size(), kLargeHistoryColumns);
 }
 

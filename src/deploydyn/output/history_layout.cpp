@@ -145,7 +145,7 @@ HistoryLayout::HistoryLayout(const Model& model) {
 
   OutputSelection select = model.output.select;
   const std::vector<std::string> families = history_families(model);
-  selection_ = select.empty() ? "default" : "model";
+  selection_ = select.empty() ? "default" : "output.select";
   if (select.quantities.empty()) {
     for (const std::string& family : families) {
       if (in_default(model, family)) select.quantities.push_back(family);

@@ -51,7 +51,7 @@ class HistoryLayout {
   void append_row(const StepRecord& record, std::vector<double>& row) const;
   // Empty, or what the default for a large model left out and how to choose otherwise.
   const std::string& note() const { return note_; }
-  // Whether the model chose (output.select) or the default applied ("default", "large model default").
+  // "output.select" (the model chose), "default", or "large model default".
   const std::string& selection() const { return selection_; }
 
  private:
