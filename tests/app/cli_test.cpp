@@ -43,7 +43,8 @@ TEST_F(Cli, RunWritesTheContractFiles) {
   const std::string history = read_file(folder_ / "history.csv");
   EXPECT_EQ(history.substr(0, history.find('\n')),
             "t,x.A,y.A,x.B,y.B,x.C,y.C,x.D,y.D,strain.1,mstrain.1,force.1,strain.2,mstrain.2,"
-            "force.2,strain.3,mstrain.3,force.3,torque.motor,kinetic,strain_energy,external_work,dissipated");
+            "force.2,strain.3,mstrain.3,force.3,torque.motor,kinetic,strain_energy,external_work,dissipated,"
+            "reaction.A.x,reaction.A.y,reaction.D.x,reaction.D.y");
   // t = 0 and every 5 ms to 50 ms.
   EXPECT_EQ(std::count(history.begin(), history.end(), '\n'), 1 + 11);
 
@@ -58,6 +59,10 @@ TEST_F(Cli, RunWritesTheContractFiles) {
   }
   EXPECT_EQ(summary["drivers"]["motor"]["quantity"], "torque");
   EXPECT_EQ(summary["final_positions"]["D"][0].get<double>(), 0.357);
+  EXPECT_TRUE(summary["reactions"]["A"]["x"].contains("t_max"));
+  EXPECT_EQ(summary["files"]["envelopes"], "envelopes.csv");
+  const std::string envelopes = read_file(folder_ / "envelopes.csv");
+  EXPECT_EQ(envelopes.substr(0, envelopes.find('\n')), "item,kind,quantity,unit,min,t_min_s,max,t_max_s");
 }
 
 TEST_F(Cli, SetSelectsTheTemperatureCase) {

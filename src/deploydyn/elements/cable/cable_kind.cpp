@@ -77,9 +77,9 @@ struct CableRecord {
     out[0] = s.bar.strain;
     out[1] = s.bar.mechanical_strain;
     out[2] = s.bar.axial_force_N;
-    out[3] = s.bar.axial_force_N / area_m2;
-    out[4] = s.section.reference_length_m;
-    out[5] = s.bar.slack ? 1.0 : 0.0;
+    out[3] = s.section.reference_length_m;
+    out[4] = s.bar.slack ? 1.0 : 0.0;
+    out[5] = s.bar.axial_force_N / area_m2;
     out[6] = s.bar.length_m;
   }
   double reference_length_m() const { return initial_rest_length_m; }
@@ -89,9 +89,9 @@ constexpr ResultQuantity kQuantities[] = {
     {"strain", "strain", true},              // total Green–Lagrange ε, relative to L0(t)
     {"mstrain", "mechanical_strain", true},  // ε_m = ε − αΔT
     {"force", "axial_force_N", true},        // true axial force N ≥ 0; 0 when slack
-    {"stress", "stress_Pa", true, false},    // N / A: the force over the unstrained section
     {"rest", "rest_length_m", true},         // L0(t)
     {"slack", "slack", true},                // 1 when slack (ε_m < 0), 0 when taut
+    {"stress", "stress_Pa", true, false},    // N / A: the force over the unstrained section
     {"length", "length_m", false},           // current length l
 };
 
