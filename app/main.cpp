@@ -30,6 +30,7 @@
 #include "exit_codes.hpp"
 #include "generate_command.hpp"
 #include "modes_command.hpp"
+#include "report_command.hpp"
 #include "window_command.hpp"
 #include "study_command.hpp"
 
@@ -322,11 +323,14 @@ int main(int argc, char** argv) {
   CLI::App* modes = cli::add_modes_command(app, modes_arguments);
   cli::WindowArguments window_arguments;
   CLI::App* window = cli::add_window_command(app, window_arguments);
+  cli::ReportArguments report_arguments;
+  CLI::App* report = cli::add_report_command(app, report_arguments);
 
   // CLI11 would only say "a subcommand is required"; name the word it did not know instead.
   if (const std::string first = argc > 1 ? argv[1] : "-"; first[0] != '-' && first != "run" && first != "check" &&
-                                                            first != "generate" && first != "study" && first != "modes" && first != "window") {
-    fmt::print(stderr, "error: unknown command '{}'; commands are run, check, modes, window, generate and study (see --help)\n", first);
+                                                            first != "generate" && first != "study" && first != "modes" && first != "window" &&
+                                                            first != "report") {
+    fmt::print(stderr, "error: unknown command '{}'; commands are run, check, modes, window, generate, study and report (see --help)\n", first);
     return kExitBadInput;
   }
   try {
@@ -340,6 +344,7 @@ int main(int argc, char** argv) {
     if (*run) return run_command(model_file, out_dir, run->count("--out") > 0, force, sets, quiet);
     if (*generate) return cli::generate_command(generate_arguments);
     if (*modes) return cli::modes_command(modes_arguments);
+    if (*report) return cli::report_command(report_arguments);
     if (*window) {
       stop_on_signals();
       return cli::window_command(window_arguments, g_stop);

@@ -18,6 +18,7 @@
 #include "deploydyn/elements/element_kinds.hpp"
 #include "deploydyn/output/checked_file.hpp"
 #include "deploydyn/output/output_error.hpp"
+#include "deploydyn/util/base64.hpp"
 
 namespace deploydyn {
 namespace {
@@ -29,20 +30,6 @@ constexpr std::string_view kCollectionFooter = "  </Collection>\n</VTKFile>\n";
 }
 
 using Out = std::back_insert_iterator<std::string>;
-
-// RFC 4648 base64 of `bytes`, appended to `out`.
-void append_base64(std::string& out, const std::vector<unsigned char>& bytes) {
-  static constexpr char kDigits[] = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
-  std::size_t i = 0;
-  for (; i + 3 <= bytes.size(); i += 3) {
-    const unsigned v = (bytes[i] << 16) | (bytes[i + 1] << 8) | bytes[i + 2];
-    out += {kDigits[v >> 18], kDigits[(v >> 12) & 63], kDigits[(v >> 6) & 63], kDigits[v & 63]};
-  }
-  if (const std::size_t rest = bytes.size() - i; rest > 0) {
-    const unsigned v = (bytes[i] << 16) | (rest == 2 ? bytes[i + 1] << 8 : 0);
-    out += {kDigits[v >> 18], kDigits[(v >> 12) & 63], rest == 2 ? kDigits[(v >> 6) & 63] : '=', '='};
-  }
-}
 
 // A DataArray of `n_components` per tuple, inline binary (VTK XML "binary": base64 of a UInt64
 // byte count and the little-endian values): doubles exactly, as history.csv has them, in half

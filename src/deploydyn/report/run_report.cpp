@@ -1,0 +1,419 @@
+#include "deploydyn/report/run_report.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <bit>
+#include <charconv>
+#include <cmath>
+#include <cstring>
+#include <fstream>
+#include <map>
+#include <nlohmann/json.hpp>
+#include <sstream>
+#include <unordered_map>
+
+#include "deploydyn/elements/element_kinds.hpp"
+#include "deploydyn/io/model_loader.hpp"
+#include "deploydyn/output/checked_file.hpp"
+#include "deploydyn/output/envelope_table.hpp"
+#include "deploydyn/output/result_folder.hpp"
+#include "deploydyn/util/base64.hpp"
+
+namespace deploydyn {
+
+namespace embedded {  // cmake/embed_text.cmake, from CMakeLists.txt
+std::string_view three_js();
+std::string_view orbit_controls_js();
+std::string_view report_page_html();
+std::string_view report_viewer_js();
+}  // namespace embedded
+
+namespace {
+
+using nlohmann::json;
+namespace fs = std::filesystem;
+
+std::string read_file(const fs::path& file, const std::string& what) {
+  std::ifstream in(file, std::ios::binary);
+  if (!in) {
+    throw ReportError(fmt::format("{}: cannot read {} (is {} a result folder of `deploydyn run`?)", file.string(),
+                                  what, file.parent_path().string()));
+  }
+  std::stringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+// history.csv: its columns and rows. A last row cut short (a killed run) is left out.
+struct History {
+  std::vector<std::string> columns;
+  std::vector<std::vector<double>> values;  // values[column][row]
+  std::size_t n_rows = 0;
+  bool dropped_last_row = false;
+
+  int column(const std::string& name) const {
+    const auto found = std::find(columns.begin(), columns.end(), name);
+    return found == columns.end() ? -1 : static_cast<int>(found - columns.begin());
+  }
+};
+
+History read_history(const fs::path& file) {
+  const std::string text = read_file(file, "the history");
+  History h;
+  std::size_t at = text.find('\n');
+  if (at == std::string::npos) throw ReportError(fmt::format("{}: no header row", file.string()));
+  for (std::size_t start = 0; start <= at;) {
+    const std::size_t comma = std::min(text.find(',', start), at);
+    h.columns.push_back(text.substr(start, comma - start));
+    start = comma + 1;
+  }
+  h.values.resize(h.columns.size());
+  std::size_t line = 1;
+  for (std::size_t start = at + 1; start < text.size(); ++line) {
+    const std::size_t end = text.find('\n', start);
+    if (end == std::string::npos) {  // no newline: a row cut short
+      h.dropped_last_row = true;
+      break;
+    }
+    const char* p = text.data() + start;
+    const char* const stop = text.data() + end;
+    std::vector<double> row;
+    row.reserve(h.columns.size());
+    while (p <= stop && row.size() < h.columns.size()) {
+      double v = 0.0;
+      const auto [next, error] = std::from_chars(p, stop, v);
+      if (error != std::errc()) break;
+      row.push_back(v);
+      p = next + 1;  // past the comma (or the newline)
+    }
+    if (row.size() != h.columns.size()) {
+      throw ReportError(fmt::format("{}:{}: a row of {} numbers under a header of {} columns", file.string(),
+                                    line + 1, row.size(), h.columns.size()));
+    }
+    for (std::size_t k = 0; k < row.size(); ++k) h.values[k].push_back(row[k]);
+    ++h.n_rows;
+    start = end + 1;
+  }
+  if (h.n_rows == 0) throw ReportError(fmt::format("{}: no rows: the run wrote no results", file.string()));
+  return h;
+}
+
+template <class T>
+std::string binary_base64(std::span<const T> values) {
+  static_assert(std::endian::native == std::endian::little, "the page reads little-endian arrays");
+  std::string out;
+  append_base64(out, std::span<const unsigned char>(reinterpret_cast<const unsigned char*>(values.data()),
+                                                    values.size() * sizeof(T)));
+  return out;
+}
+
+// The members drawn: every two-node element, with its nodes and force column.
+struct Members {
+  std::vector<std::int32_t> nodes;  // a, b per member
+  std::vector<std::string> names;
+  std::vector<int> force_column;  // −1: none in the history
+};
+
+Members members_of(const Model& model, const History& history) {
+  Members m;
+  for (const ElementRef& e : all_elements(model)) {
+    if (e.kind->n_element_nodes() != 2) continue;  // hinges act between bars: not drawn
+    const std::string& name = e.kind->element_name(model, e.index);
+    m.nodes.push_back(e.kind->element_node(model, e.index, 0));
+    m.nodes.push_back(e.kind->element_node(model, e.index, 1));
+    m.names.push_back(name);
+    m.force_column.push_back(history.column("force." + name));
+  }
+  return m;
+}
+
+// The page's animation: node positions (x, y, z per node; z = 0 in 2D) and member forces of
+// the chosen rows, and the model-file positions the deformation scale starts from.
+json animation(const Model& model, const History& history, const Members& members, const ReportOptions& options,
+               std::string& note) {
+  const std::size_t n_nodes = model.nodes.size();
+  const std::size_t n_members = members.names.size();
+  const std::size_t bytes_per_frame = 4 * (3 * n_nodes + n_members);
+  std::size_t n_frames = std::min<std::size_t>(static_cast<std::size_t>(options.max_frames), history.n_rows);
+  n_frames = std::max<std::size_t>(1, std::min(n_frames, options.max_animation_bytes / std::max<std::size_t>(bytes_per_frame, 1)));
+  const std::vector<std::size_t> rows = frame_rows(history.n_rows, n_frames);
+  if (rows.size() < history.n_rows) {
+    note = fmt::format("The animation shows {} of the {} output times, evenly spread.", rows.size(), history.n_rows);
+  }
+  std::vector<float> initial(3 * n_nodes, 0.0f);
+  std::vector<std::array<int, 3>> columns(n_nodes, {-1, -1, -1});
+  int n_missing = 0;
+  for (std::size_t i = 0; i < n_nodes; ++i) {
+    bool any = false;
+    for (int axis = 0; axis < model.dimension; ++axis) {
+      initial[3 * i + axis] = static_cast<float>(model.nodes[i].position_m[axis]);
+      columns[i][axis] = history.column(fmt::format("{}.{}", "xyz"[axis], model.nodes[i].name));
+      any = any || columns[i][axis] >= 0;
+    }
+    n_missing += any ? 0 : 1;
+  }
+  if (n_missing > 0) {
+    note += fmt::format(" {} nodes have no position in history.csv and are drawn where model.yaml puts them.",
+                        n_missing);
+  }
+  std::vector<float> positions, forces;
+  positions.reserve(rows.size() * 3 * n_nodes);
+  const bool any_force = std::any_of(members.force_column.begin(), members.force_column.end(),
+                                     [](int c) { return c >= 0; });
+  json times = json::array();
+  double largest_force = 0.0;
+  for (const std::size_t row : rows) {
+    times.push_back(history.values[0][row]);
+    for (std::size_t i = 0; i < n_nodes; ++i) {
+      for (int axis = 0; axis < 3; ++axis) {
+        const int c = columns[i][axis];
+        positions.push_back(c >= 0 ? static_cast<float>(history.values[static_cast<std::size_t>(c)][row])
+                                   : initial[3 * i + axis]);
+      }
+    }
+    if (!any_force) continue;
+    for (const int c : members.force_column) {
+      const double f = c >= 0 ? history.values[static_cast<std::size_t>(c)][row] : std::nan("");
+      if (std::isfinite(f)) largest_force = std::max(largest_force, std::abs(f));
+      forces.push_back(static_cast<float>(f));
+    }
+  }
+  json out = {{"times", times},
+              {"initial", float32_base64(initial)},
+              {"positions", float32_base64(positions)},
+              {"largest_force_N", largest_force}};
+  out["forces"] = any_force ? json(float32_base64(forces)) : json(nullptr);
+  return out;
+}
+
+bool is_position(const std::string& column, const Model& model) {
+  // x.<node>, y.<node>, z.<node> and a node's other unknowns (rz.<node>, R11.<node>, ...).
+  const std::size_t dot = column.find('.');
+  if (dot == std::string::npos || column.starts_with("reaction.")) return false;
+  const std::string prefix = column.substr(0, dot);
+  if (prefix == "x" || prefix == "y" || prefix == "z" || prefix == "rz") return true;
+  return prefix.size() == 3 && prefix[0] == 'R' && (model.dimension == 3);
+}
+
+// The columns offered to plot (not positions: the animation shows those), as Float64 arrays,
+// decimated to at most 5000 rows. Within options.max_plot_values: the drivers, energies and
+// reactions, then the elements' forces by peak, then their other quantities.
+json plot_data(const Model& model, const History& history, const ReportOptions& options, std::string& note) {
+  std::vector<std::string> driver_columns;
+  for (const Driver& d : model.drivers) {
+    driver_columns.push_back((drives_rotation(d.kind) ? "torque." : "force.") + d.name);
+  }
+  std::vector<std::size_t> chosen;
+  std::vector<std::pair<double, std::size_t>> forces, others;  // (peak, column)
+  for (std::size_t c = 1; c < history.columns.size(); ++c) {
+    const std::string& name = history.columns[c];
+    if (is_position(name, model)) continue;
+    const bool driver = std::find(driver_columns.begin(), driver_columns.end(), name) != driver_columns.end();
+    if (driver || name.find('.') == std::string::npos || name.starts_with("reaction.")) {
+      chosen.push_back(c);
+    } else if (name.starts_with("force.")) {
+      double peak = 0.0;
+      for (const double v : history.values[c]) peak = std::max(peak, std::abs(v));
+      forces.push_back({peak, c});
+    } else {
+      others.push_back({0.0, c});
+    }
+  }
+  std::stable_sort(forces.begin(), forces.end(), [](const auto& a, const auto& b) { return a.first > b.first; });
+  const std::size_t stride = (history.n_rows + 4999) / 5000;
+  const std::size_t rows_kept = (history.n_rows + stride - 1) / stride;
+  const std::size_t budget = std::max<std::size_t>(1, options.max_plot_values / rows_kept);
+  const std::size_t n_elements = forces.size() + others.size();
+  std::size_t offered = 0;
+  for (const auto* list : {&forces, &others}) {
+    for (const auto& [peak, c] : *list) {
+      if (chosen.size() >= budget) break;
+      chosen.push_back(c);
+      ++offered;
+    }
+  }
+  if (offered < n_elements) {
+    note = fmt::format("{} of the {} element columns are offered (the largest forces first); history.csv has all.",
+                       offered, n_elements);
+  }
+  if (stride > 1) note += fmt::format(" Plots show every {}th of the {} rows.", stride, history.n_rows);
+  std::sort(chosen.begin(), chosen.end());
+  auto decimated = [&](std::size_t c) {
+    std::vector<double> v;
+    for (std::size_t r = 0; r < history.n_rows; r += stride) v.push_back(history.values[c][r]);
+    return binary_base64<double>(v);
+  };
+  json columns = json::array(), values = json::array();
+  for (const std::size_t c : chosen) {
+    columns.push_back(history.columns[c]);
+    values.push_back(decimated(c));
+  }
+  // Shown at first: the drivers' efforts, or without drivers the three most loaded members.
+  json defaults = json::array();
+  for (const std::string& name : driver_columns) {
+    if (history.column(name) >= 0) defaults.push_back(name);
+  }
+  for (std::size_t k = 0; defaults.empty() && k < forces.size() && k < 3; ++k) {
+    defaults.push_back(history.columns[forces[k].second]);
+  }
+  if (defaults.empty() && !columns.empty()) defaults.push_back(columns[0]);
+  return {{"t", decimated(0)}, {"columns", columns}, {"values", values}, {"defaults", defaults}};
+}
+
+// envelopes.csv as rows for the table; beyond max_table_rows, the rows of highest peak of each
+// quantity, in equal shares.
+json envelope_table_rows(const fs::path& file, const ReportOptions& options, std::string& note) {
+  std::ifstream in(file);
+  json out = {{"columns", json::array()}, {"rows", json::array()}};
+  if (!in) {
+    note = "No envelopes.csv in the folder (a run before envelopes were written, or not a time history).";
+    return out;
+  }
+  std::string line;
+  std::getline(in, line);
+  std::vector<std::string> header;
+  for (std::stringstream s(line); std::getline(s, line, ',');) header.push_back(line);
+  out["columns"] = header;
+  struct Row {
+    std::vector<std::string> fields;
+    double peak = 0.0;
+  };
+  std::map<std::string, std::vector<Row>> by_quantity;
+  std::size_t n_rows = 0;
+  while (std::getline(in, line)) {
+    Row row;
+    for (std::stringstream s(line); std::getline(s, line, ',');) row.fields.push_back(line);
+    if (row.fields.size() != header.size() || header.size() < 8) continue;
+    row.peak = std::max(std::abs(std::stod(row.fields[4])), std::abs(std::stod(row.fields[6])));
+    by_quantity[row.fields[1] + "/" + row.fields[2]].push_back(std::move(row));
+    ++n_rows;
+  }
+  const std::size_t share = std::max<std::size_t>(1, options.max_table_rows / std::max<std::size_t>(by_quantity.size(), 1));
+  std::size_t kept = 0;
+  for (auto& [quantity, rows] : by_quantity) {
+    if (rows.size() > share) {
+      std::partial_sort(rows.begin(), rows.begin() + static_cast<std::ptrdiff_t>(share), rows.end(),
+                        [](const Row& a, const Row& b) { return a.peak > b.peak; });
+      rows.resize(share);
+    }
+    for (const Row& row : rows) {
+      json r = json::array();
+      for (std::size_t k = 0; k < row.fields.size(); ++k) {
+        if (k >= 4) {
+          r.push_back(std::stod(row.fields[k]));
+        } else {
+          r.push_back(row.fields[k]);
+        }
+      }
+      out["rows"].push_back(std::move(r));
+      ++kept;
+    }
+  }
+  if (kept < n_rows) {
+    note = fmt::format("The table holds {} of the {} rows of envelopes.csv: the highest peaks of each quantity.", kept,
+                       n_rows);
+  }
+  return out;
+}
+
+// What the summary panel shows: summary.json without its per-element and per-node lists.
+json summary_panel(const json& summary) {
+  json out = json::object();
+  for (const char* key : {"model", "status", "message", "failure", "end", "analysis", "steps", "newton_iterations",
+                          "newton_iterations_per_step", "rejected_steps", "wall_time", "drivers", "warnings",
+                          "event_counts", "mode_switches", "output"}) {
+    if (summary.contains(key)) out[key] = summary[key];
+  }
+  if (summary.contains("events") && summary["events"].is_array()) {
+    json events = json::array();
+    for (std::size_t i = 0; i < summary["events"].size() && i < 200; ++i) events.push_back(summary["events"][i]);
+    out["events"] = events;
+  }
+  return out;
+}
+
+void replace_once(std::string& text, std::string_view marker, std::string_view with) {
+  const std::size_t at = text.find(marker);
+  if (at == std::string::npos) throw std::logic_error(fmt::format("report page: no {}", marker));
+  text.replace(at, marker.size(), with);
+}
+
+}  // namespace
+
+std::vector<std::size_t> frame_rows(std::size_t n_rows, std::size_t n_frames) {
+  std::vector<std::size_t> rows;
+  if (n_rows == 0) return rows;
+  n_frames = std::clamp<std::size_t>(n_frames, 1, n_rows);
+  if (n_frames == 1) return {n_rows - 1};
+  for (std::size_t k = 0; k < n_frames; ++k) {
+    // Rounded, so that the spacing is even; k = n_frames − 1 gives the last row exactly.
+    rows.push_back((k * (n_rows - 1) + (n_frames - 1) / 2) / (n_frames - 1));
+  }
+  return rows;
+}
+
+std::string float32_base64(std::span<const float> values) { return binary_base64<float>(values); }
+
+std::string run_report_html(const fs::path& folder, const ReportOptions& options) {
+  if (!fs::is_directory(folder)) throw ReportError(fmt::format("{}: not a folder", folder.string()));
+  const json summary = [&] {
+    const fs::path file = folder / "summary.json";
+    try {
+      return json::parse(read_file(file, "the run's summary"));
+    } catch (const json::exception& error) {
+      throw ReportError(fmt::format("{}: not a JSON summary ({})", file.string(), error.what()));
+    }
+  }();
+  Model model;
+  try {
+    model = load_model(folder / kRunModelFileName);
+  } catch (const std::exception& error) {
+    if (!fs::exists(folder / kRunModelFileName)) {
+      throw ReportError(fmt::format("{}: missing: the report draws the model that the run wrote there",
+                                    (folder / kRunModelFileName).string()));
+    }
+    throw ReportError(error.what());
+  }
+  std::string history_name = model.output.history_file;
+  if (summary.contains("files") && summary["files"].contains("history")) history_name = summary["files"]["history"];
+  const History history = read_history(folder / history_name);
+  if (history.columns.empty() || history.columns[0] != "t") {
+    throw ReportError(fmt::format("{}: not a time history (its first column is not t)", (folder / history_name).string()));
+  }
+
+  std::string table_note, plot_note, animation_note;
+  json data;
+  data["title"] = model.name.empty() ? folder.filename().string() : model.name;
+  data["folder"] = fs::absolute(folder).string();
+  data["summary"] = summary_panel(summary);
+  data["dimension"] = model.dimension;
+  data["table"] = envelope_table_rows(folder / kEnvelopeFileName, options, table_note);
+  const Members members = members_of(model, history);
+  data["members"] = {{"nodes", binary_base64<std::int32_t>(members.nodes)}, {"names", members.names}};
+  data["nodes"] = model.nodes.size();
+  data["animation"] = animation(model, history, members, options, animation_note);
+  data["plots"] = plot_data(model, history, options, plot_note);
+  data["notes"] = {{"table", table_note}, {"plots", plot_note}, {"animation", animation_note},
+                   {"history", history.dropped_last_row ? "The history's last row was cut short (a killed run) "
+                                                          "and is left out."
+                                                        : ""}};
+
+  std::string data_text = data.dump(-1, ' ', false, json::error_handler_t::replace);
+  // Inside <script>, "</" would end the element: JSON allows it escaped.
+  for (std::size_t at = 0; (at = data_text.find("</", at)) != std::string::npos; at += 3) data_text.replace(at, 2, "<\\/");
+
+  std::string page(embedded::report_page_html());
+  replace_once(page, "<!--DEPLOYDYN:THREE-->",
+               fmt::format("<script>{}</script>\n<script>{}</script>", embedded::three_js(), embedded::orbit_controls_js()));
+  replace_once(page, "<!--DEPLOYDYN:DATA-->",
+               fmt::format("<script type=\"application/json\" id=\"deploydyn-data\">{}</script>", data_text));
+  replace_once(page, "<!--DEPLOYDYN:VIEWER-->", fmt::format("<script>{}</script>", embedded::report_viewer_js()));
+  return page;
+}
+
+void write_run_report(const fs::path& folder, const fs::path& out, const ReportOptions& options) {
+  write_file_atomically(out, run_report_html(folder, options));
+}
+
+}  // namespace deploydyn
