@@ -178,6 +178,7 @@
     });
     report.setFrame = setFrame;
     report.frameCount = nFrames;
+    report.times = anim.times;
     report.setScale = (s) => { scale = s; setFrame(report.frame); };
     setFrame(nFrames - 1);
   }

@@ -1,0 +1,151 @@
+"""`deploydyn report` in a real browser: Debian's headless Chromium (through python3-selenium and
+chromium-driver, which scripts/install-deps.sh installs) opens the page from the file alone, and
+the test checks that the 3D canvas draws the structure where its members are, that the time
+slider changes the picture, that plots and the envelope table are there, and that no script
+error is logged. A missing browser fails the test: `make test` installs it."""
+import base64
+import io
+import json
+import os
+import shutil
+
+import numpy as np
+import pytest
+from PIL import Image
+
+from conftest import GENERAL, run_cli
+
+selenium = pytest.importorskip("selenium", reason="python3-selenium is missing: run scripts/install-deps.sh")
+from selenium import webdriver  # noqa: E402
+from selenium.webdriver.chrome.service import Service  # noqa: E402
+
+CHROMEDRIVER = shutil.which("chromedriver") or "/usr/bin/chromedriver"
+
+
+@pytest.fixture(scope="module")
+def browser():
+    assert os.path.exists(CHROMEDRIVER), (
+        "chromium-driver is not installed: run scripts/install-deps.sh (make test does)")
+    options = webdriver.ChromeOptions()
+    for argument in ("--headless=new", "--no-sandbox", "--disable-dev-shm-usage", "--use-gl=angle",
+                     "--use-angle=swiftshader", "--enable-unsafe-swiftshader", "--window-size=1200,1600"):
+        options.add_argument(argument)
+    options.set_capability("goog:loggingPrefs", {"browser": "ALL"})
+    # Under the sanitizer build CTest preloads ASan into python3; not into the browser.
+    environment = {k: v for k, v in os.environ.items() if k not in ("LD_PRELOAD", "ASAN_OPTIONS")}
+    driver = webdriver.Chrome(service=Service(CHROMEDRIVER, env=environment), options=options)
+    yield driver
+    driver.quit()
+
+
+def open_report(browser, page):
+    browser.get(page.as_uri())
+    browser.set_script_timeout(60)
+    browser.execute_async_script("""
+        const done = arguments[arguments.length - 1];
+        (function wait() { if (window.deploydynReport && window.deploydynReport.ready) done(); else setTimeout(wait, 50); })();
+    """)
+
+
+def canvas_pixels(browser):
+    """The 3D canvas as an RGB array, read from its drawing buffer."""
+    url = browser.execute_script("return document.getElementById('view').toDataURL('image/png')")
+    image = Image.open(io.BytesIO(base64.b64decode(url.split(",", 1)[1]))).convert("RGB")
+    return np.asarray(image).astype(int)
+
+
+def drawn(pixels):
+    """Pixels that are not the white background."""
+    return np.any(pixels < 235, axis=2)
+
+
+def blocks(mask, size=4):
+    """Whether anything is drawn in each size × size block of pixels."""
+    h, w = (mask.shape[0] // size) * size, (mask.shape[1] // size) * size
+    return mask[:h, :w].reshape(h // size, size, w // size, size).any(axis=(1, 3))
+
+
+def severe_messages(browser):
+    return [entry for entry in browser.get_log("browser") if entry["level"] == "SEVERE"]
+
+
+@pytest.fixture(scope="module")
+def linkage_report(tmp_path_factory):
+    folder = tmp_path_factory.mktemp("report") / "run"
+    run_cli("run", GENERAL, "--out", folder, "--quiet", "--set", "analysis.end=1.5", "--set", "thermal.dT=130")
+    run_cli("report", folder, "--quiet")
+    return folder
+
+
+def test_the_page_draws_the_linkage_and_the_slider_moves_it(browser, linkage_report):
+    page = linkage_report / "report.html"
+    assert page.stat().st_size > 500_000  # three.js is in the file: no network at view time
+    assert "<script src=" not in page.read_text(encoding="utf-8")
+    open_report(browser, page)
+    frames = browser.execute_script("return window.deploydynReport.frameCount")
+    assert frames > 10
+
+    browser.execute_script("window.deploydynReport.setFrame(0)")
+    first = canvas_pixels(browser)
+    browser.execute_script(f"window.deploydynReport.setFrame({frames - 1})")
+    last = canvas_pixels(browser)
+    # The members are drawn: a line's worth of pixels, not a blank canvas and not a filled one.
+    for pixels in (first, last):
+        share = drawn(pixels).mean()
+        assert 1e-4 < share < 0.2, share
+    # The crank turned by 1.5 rad/s·1.5 s: the picture changed where the members are.
+    assert np.count_nonzero(drawn(first) != drawn(last)) > 100
+
+    # Members are coloured by force: at the time of the largest force (envelopes.csv) the most
+    # loaded bar is red (tension) or blue (compression), not grey.
+    import csv
+    with open(linkage_report / "envelopes.csv") as f:
+        forces = [r for r in csv.DictReader(f) if r["quantity"] == "axial_force_N"]
+    peak = max(forces, key=lambda r: max(abs(float(r["min"])), abs(float(r["max"]))))
+    t_peak = float(peak["t_max_s"] if abs(float(peak["max"])) >= abs(float(peak["min"])) else peak["t_min_s"])
+    times = browser.execute_script("return window.deploydynReport.times")
+    browser.execute_script(f"window.deploydynReport.setFrame({int(np.argmin(np.abs(np.array(times) - t_peak)))})")
+    at_peak = canvas_pixels(browser)
+    colours = at_peak[drawn(at_peak)]
+    assert np.any(np.abs(colours[:, 0] - colours[:, 2]) > 60), "no red or blue member"
+
+    # The deformation scale: 0 draws the model-file shape whatever the frame.
+    # (Only the colours differ then, and with them the anti-aliased edges: a few pixels.)
+    # Compared on 4×4-pixel blocks, which an edge's shade does not move between.
+    browser.execute_script("window.deploydynReport.setScale(0)")
+    browser.execute_script(f"window.deploydynReport.setFrame({frames - 1})")
+    undeformed = blocks(drawn(canvas_pixels(browser)))
+    browser.execute_script("window.deploydynReport.setFrame(0)")
+    changed = np.count_nonzero(blocks(drawn(canvas_pixels(browser))) != undeformed)
+    assert changed < 0.05 * np.count_nonzero(blocks(drawn(first)) != blocks(drawn(last))), changed
+    browser.execute_script("window.deploydynReport.setScale(1)")
+
+    assert severe_messages(browser) == []
+
+
+def test_the_page_has_the_plots_and_the_envelope_table(browser, linkage_report):
+    open_report(browser, linkage_report / "report.html")
+    assert browser.execute_script("return window.deploydynReport.plotted") == ["torque.motor"]
+    options = browser.execute_script(
+        "return Array.from(document.getElementById('plot-columns').options).map(o => o.value)")
+    assert {"kinetic", "force.1", "reaction.A.x"} <= set(options)
+    assert not any(name.startswith(("x.", "y.")) for name in options)  # positions: the 3D view
+    # Zooming in time redraws on the chosen range.
+    browser.execute_script("window.deploydynReport.zoom(0.5, 1.0)")
+    assert browser.execute_script("return window.deploydynReport.plotRange") == [0.5, 1.0]
+
+    rows = (linkage_report / "envelopes.csv").read_text().strip().splitlines()[1:]
+    assert browser.execute_script("return window.deploydynReport.tableRows") == len(rows)
+    first_cells = browser.execute_script(
+        "return Array.from(document.querySelectorAll('#table tbody tr')).map(r => r.cells[0].textContent + '/' + r.cells[2].textContent)")
+    assert {f"{r.split(',')[0]}/{r.split(',')[2]}" for r in rows} == set(first_cells)
+    summary = json.loads((linkage_report / "summary.json").read_text())
+    assert summary["model"] in browser.find_element("id", "title").text
+    assert severe_messages(browser) == []
+
+
+def test_a_folder_without_results_is_a_clear_error(tmp_path):
+    done = run_cli("report", tmp_path, check=False)
+    assert done.returncode == 2
+    assert "summary.json" in done.stderr and str(tmp_path) in done.stderr
+    assert not (tmp_path / "report.html").exists()
