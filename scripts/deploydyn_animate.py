@@ -8,10 +8,13 @@ bar and the time, into a GIF (Pillow) or, when ffmpeg is installed, an MP4.
 
 history.csv gives the node coordinates and bar forces at each output time; which nodes a bar
 joins comes from the model file (--model; without it, RESULT_DIR/model.yaml if there is one).
-Only node and element names and the supports are read from the model, so overrides (--set)
-that changed values do not matter. 3D models are drawn in their x–y projection. Colours:
-blue compression, red tension, symmetric about zero; the colour range is the largest |force|
-of the run unless --force-range is given.
+A node without position columns (output.select, a large model's default) stays at its
+model-file position; a member without a force column is grey. 3D models are projected: --view
+xz|yz|xy|iso (iso by default) or --azim/--elev; --scale K draws the model-file shape plus K ×
+the displacement, so that millimetre deflections show. Colours: blue compression, red tension,
+symmetric about zero; the colour range is the largest |force| of the run unless --force-range
+is given. All members are one line collection and node names are drawn up to 30 nodes, so
+10⁴ members animate in seconds (bench/plot_bench.py).
 
 The folder's status is printed on stderr; a run that did not complete (failed, interrupted,
 killed, or still going) is animated as far as it got, without the incomplete last row that a
@@ -26,41 +29,17 @@ import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402  (after choosing the backend)
 import numpy as np  # noqa: E402
-import yaml  # noqa: E402
-from matplotlib import animation, colors  # noqa: E402
-from matplotlib.collections import LineCollection  # noqa: E402
+from matplotlib import animation  # noqa: E402
 
 # deploydyn's reader of result folders: pure Python, so that the script runs without the built
 # module.
 sys.path.insert(0, str(pathlib.Path(__file__).resolve().parents[1] / "python" / "deploydyn"))
 import result_folder  # noqa: E402
 
-
-def read_topology(model_file):
-    """Element name → (node a, node b), the supported nodes, and node name → initial (x, y),
-    from a model file.
-
-    BaseLoader keeps every scalar as text, as the model loader reads names (so `1:` is "1").
-    """
-    spec = yaml.load(pathlib.Path(model_file).read_text(encoding="utf-8"), Loader=yaml.BaseLoader)
-    if not isinstance(spec, dict) or not isinstance(spec.get("elements"), dict):
-        raise SystemExit(f"deploydyn_animate: {model_file}: no 'elements' mapping")
-    bars = {}
-    for name, element in spec["elements"].items():
-        nodes = element.get("nodes") if isinstance(element, dict) else None
-        if not isinstance(nodes, list) or len(nodes) != 2:
-            raise SystemExit(f"deploydyn_animate: {model_file}: elements.{name}.nodes: "
-                             "expected two node names")
-        bars[str(name)] = (str(nodes[0]), str(nodes[1]))
-    supports = [str(s["node"]) for s in spec.get("supports") or [] if isinstance(s, dict)]
-    positions = {}
-    for name, node in (spec.get("nodes") or {}).items():
-        at = node.get("at") if isinstance(node, dict) else node
-        try:
-            positions[str(name)] = (float(at[0]), float(at[1]))
-        except (TypeError, ValueError, IndexError, KeyError):
-            pass                          # the solver checked the file; this is only a check
-    return bars, supports, positions
+sys.path.insert(0, str(pathlib.Path(__file__).resolve().parent))
+from structure_view import (MAX_LABELLED_NODES, MAX_MARKED_NODES, VIEWS, Structure,  # noqa: E402
+                            axis_labels, force_norm, line_collection, project, segments,
+                            view_angles)
 
 
 def read_history(result_dir):
@@ -84,21 +63,16 @@ def read_history(result_dir):
     return table.as_dict()
 
 
-def check_start(data, positions, model_file, result_dir):
+def check_start(structure, positions, model_file, result_dir):
     """The run must start where the model's nodes are (within a tenth of the model's size):
     a model with the same names but another shape would draw wrong bars without this."""
-    known = {n: xy for n, xy in positions.items() if f"x.{n}" in data and f"y.{n}" in data}
-    if len(known) < 2:
-        return
-    model_xy = np.array(list(known.values()))
-    start_xy = np.array([[data[f"x.{n}"][0], data[f"y.{n}"][0]] for n in known])
-    size = np.ptp(model_xy, axis=0).max() or 1.0
-    worst = int(np.argmax(np.linalg.norm(start_xy - model_xy, axis=1)))
-    if np.linalg.norm(start_xy[worst] - model_xy[worst]) > 0.1 * size:
-        name = list(known)[worst]
-        raise SystemExit(f"deploydyn_animate: node {name} starts at {tuple(start_xy[worst])} in "
-                         f"{result_dir}, but {model_file} puts it at {tuple(model_xy[worst])}: "
-                         "is that the model of this run?")
+    size = np.ptp(structure.initial, axis=0).max() or 1.0
+    distance = np.linalg.norm(positions[0] - structure.initial, axis=1)
+    worst = int(np.argmax(distance))
+    if distance[worst] > 0.1 * size:
+        raise SystemExit(f"deploydyn_animate: node {structure.node_names[worst]} starts at "
+                         f"{tuple(positions[0][worst])} in {result_dir}, but {model_file} puts it at "
+                         f"{tuple(structure.initial[worst])}: is that the model of this run?")
 
 
 def frame_rows(n_rows, frames, every):
@@ -112,68 +86,64 @@ def frame_rows(n_rows, frames, every):
 
 
 def animate(result_dir, model_file, out, frames=100, every=None, fps=20, dpi=90,
-            force_range=None, title=None):
+            force_range=None, title=None, view=None, azim=None, elev=None, scale=1.0):
     """Write the animation; returns the number of frames."""
-    bars, supports, positions = read_topology(model_file)
+    structure = Structure(model_file)
     data = read_history(result_dir)
-    missing = [c for name, (a, b) in bars.items()
-               for c in (f"force.{name}", f"x.{a}", f"y.{a}", f"x.{b}", f"y.{b}") if c not in data]
-    if missing:
-        raise SystemExit(f"deploydyn_animate: {result_dir}/history.csv has no column "
-                         f"{', '.join(missing[:4])}: is {model_file} the model of this run?")
-    check_start(data, positions, model_file, result_dir)
-    names = list(bars)
+    if not any(f"force.{m}" in data for m in structure.member_names) and \
+            not any(f"x.{n}" in data for n in structure.node_names):
+        raise SystemExit(f"deploydyn_animate: {result_dir}/history.csv has no column of "
+                         f"{model_file}'s nodes or members: is it the model of this run?")
     t = data["t"]
-    forces = np.column_stack([data[f"force.{n}"] for n in names])          # rows × bars
-    ends = np.stack([np.column_stack([data[f"x.{a}"], data[f"y.{a}"], data[f"x.{b}"],
-                                      data[f"y.{b}"]]) for a, b in bars.values()], axis=1)
-    segments = ends.reshape(len(t), len(names), 2, 2)                     # rows × bars × 2 × xy
-    nodes = sorted({n for pair in bars.values() for n in pair})
+    positions = structure.positions(data)                       # rows × nodes × 3
+    check_start(structure, positions, model_file, result_dir)
+    forces = structure.forces(data)                             # rows × members
+    angles = view_angles(view, azim, elev, structure.dimension)
+    rows = frame_rows(len(t), frames, every)
+    page = project(structure.deformed(positions[rows], scale), *angles)   # frames × nodes × 2
+    norm = force_norm(forces, force_range)
 
-    limit = force_range or float(np.max(np.abs(forces))) or 1.0
-    norm = colors.Normalize(-limit, limit)
-    xy = segments.reshape(-1, 2)
-    span = np.ptp(xy, axis=0).max() or 1.0
-    margin = 0.08 * span
-    low, high = xy.min(axis=0) - margin, xy.max(axis=0) + margin
+    span = np.ptp(page.reshape(-1, 2), axis=0).max() or 1.0
+    low = page.reshape(-1, 2).min(axis=0) - 0.08 * span
+    high = page.reshape(-1, 2).max(axis=0) + 0.08 * span
     aspect = (high[1] - low[1]) / (high[0] - low[0])    # figure shaped like the motion
     fig, ax = plt.subplots(figsize=(7.5, float(np.clip(6.0 * aspect + 1.4, 3.2, 8.0))))
-    lines = LineCollection(segments[0], cmap="coolwarm", norm=norm, linewidths=5,
-                           capstyle="round", zorder=2)
-    lines.set_array(forces[0])
+    lines = line_collection(structure, norm)
     ax.add_collection(lines)
-    joints = ax.scatter([], [], s=28, color="black", zorder=3)
-    ground = [n for n in supports if f"x.{n}" in data]
-    ax.scatter([data[f"x.{n}"][0] for n in ground], [data[f"y.{n}"][0] for n in ground],
-               marker="^", s=180, color="dimgrey", zorder=1, label="support")
-    labels = {n: ax.annotate(n, (0, 0), xytext=(6, 6), textcoords="offset points", fontsize=10)
-              for n in nodes}
+    n_nodes = len(structure.node_names)
+    joints = ax.scatter([], [], s=28 if n_nodes <= 50 else 6, color="black", zorder=3) \
+        if n_nodes <= MAX_MARKED_NODES else None
+    if structure.supports:
+        ground = project(structure.initial[structure.supports], *angles)
+        ax.scatter(ground[:, 0], ground[:, 1], marker="^", s=180 if n_nodes <= 50 else 12,
+                   color="dimgrey", zorder=1, label="support")
+    labels = ([ax.annotate(n, (0, 0), xytext=(6, 6), textcoords="offset points", fontsize=10)
+               for n in structure.node_names] if n_nodes <= MAX_LABELLED_NODES else [])
     clock = ax.text(0.02, 0.96, "", transform=ax.transAxes, fontsize=11, va="top",
                     family="monospace")
-
     ax.set_xlim(low[0], high[0])
     ax.set_ylim(low[1], high[1])
     ax.set_aspect("equal")
-    ax.set_xlabel("x (m)")
-    ax.set_ylabel("y (m)")
+    xlabel, ylabel = axis_labels(*angles)
+    ax.set_xlabel(xlabel)
+    ax.set_ylabel(ylabel)
     ax.grid(True, alpha=0.3)
     fig.colorbar(lines, ax=ax, fraction=0.04, pad=0.03, label="axial force (N), tension +")
-    ax.set_title(title or pathlib.Path(result_dir).resolve().name, fontsize=11)
+    scaled = f", displacements ×{scale:g}" if scale != 1 else ""
+    ax.set_title((title or pathlib.Path(result_dir).resolve().name) + scaled, fontsize=11)
     fig.tight_layout()
 
-    rows = frame_rows(len(t), frames, every)
+    def draw(k):
+        lines.set_segments(segments(structure, page[k]))
+        lines.set_array(np.ma.masked_invalid(forces[rows[k]]))
+        if joints is not None:
+            joints.set_offsets(page[k])
+        for label, xy in zip(labels, page[k]):
+            label.xy = tuple(xy)
+        clock.set_text(f"t = {t[rows[k]]:7.3f} s")
+        return [lines, clock, *labels] + ([joints] if joints is not None else [])
 
-    def draw(row):
-        lines.set_segments(segments[row])
-        lines.set_array(forces[row])
-        positions = np.array([[data[f"x.{n}"][row], data[f"y.{n}"][row]] for n in nodes])
-        joints.set_offsets(positions)
-        for n, (x, y) in zip(nodes, positions):
-            labels[n].xy = (x, y)
-        clock.set_text(f"t = {t[row]:7.3f} s")
-        return [lines, joints, clock, *labels.values()]
-
-    movie = animation.FuncAnimation(fig, draw, frames=rows, blit=False)
+    movie = animation.FuncAnimation(fig, draw, frames=range(len(rows)), blit=False)
     out = pathlib.Path(out)
     out.parent.mkdir(parents=True, exist_ok=True)
     if out.suffix.lower() == ".gif":
@@ -200,6 +170,12 @@ def main(argv=None):
     parser.add_argument("--force-range", type=float, metavar="N",
                         help="colours span −N … +N newtons (default: the run's largest |force|)")
     parser.add_argument("--title")
+    parser.add_argument("--view", choices=sorted(VIEWS),
+                        help="projection: xy (default in 2D), xz, yz or iso (default in 3D)")
+    parser.add_argument("--azim", type=float, help="view azimuth (degrees), as matplotlib's 3D axes")
+    parser.add_argument("--elev", type=float, help="view elevation (degrees)")
+    parser.add_argument("--scale", type=float, default=1.0,
+                        help="deformation scale: model-file shape + SCALE × displacement (default 1)")
     args = parser.parse_args(argv)
 
     model = args.model or pathlib.Path(args.result_dir) / "model.yaml"
@@ -209,7 +185,8 @@ def main(argv=None):
     if args.frames < 1 or (args.every is not None and args.every < 1):
         parser.error("--frames and --every must be at least 1")
     n = animate(args.result_dir, model, args.out, frames=args.frames, every=args.every,
-                fps=args.fps, dpi=args.dpi, force_range=args.force_range, title=args.title)
+                fps=args.fps, dpi=args.dpi, force_range=args.force_range, title=args.title,
+                view=args.view, azim=args.azim, elev=args.elev, scale=args.scale)
     print(f"animate: wrote {args.out} ({n} frames)", file=sys.stderr)
     return 0
 

@@ -9,11 +9,17 @@ element or node), each run named by its folder or by --label:
     coordinates.{png,svg}  x and y (and z) of the nodes that move (m)
     driver.{png,svg}       driver torque (N·m) or force (N)
     energy.{png,svg}       kinetic and strain energy, external work (J) — with --what energy
+    structure.{png,svg}    the structure at the end (and at the time of the largest force), members
+                           coloured by force over the model-file shape; 3D projected (--view,
+                           --azim, --elev), displacements scaled by --scale
+    displacement.{png,svg} |u| = |x − X| of the nodes that move most (m; X: model-file position)
 
     scripts/deploydyn_plot.py results/hot results/cold --out plots
     scripts/deploydyn_plot.py results/hot results/cold --label "ΔT = +130" --label "ΔT = −170" \\
         --what strain driver --element 2 --format png
-Each folder's status is printed on stderr (completed, failed, interrupted, running, or killed:
+A panel shows at most 12 lines: with more members or nodes, those of largest peak |force| or
+motion, and the panel's note says so (--element / --node choose others), so that 10⁴ members
+plot in seconds (bench/plot_bench.py). Each folder's status is printed on stderr (completed, failed, interrupted, running, or killed:
 the run died without finishing). Runs that did not complete are drawn as far as they got; a
 history whose last row a killed run left incomplete is drawn without that row. The plotting
 core is plot_columns of scripts/plot_paper.py, which draws the paper's figures; histories are
@@ -23,15 +29,23 @@ import argparse
 import pathlib
 import sys
 
+import matplotlib
 import numpy as np
+
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt  # noqa: E402
+from matplotlib.collections import LineCollection  # noqa: E402
 
 sys.path.insert(0, str(pathlib.Path(__file__).resolve().parent))
 from plot_paper import MICRO, Panel, Run, plot_columns, read_folder  # noqa: E402
+from structure_view import (VIEWS, Structure, axis_labels, force_norm, line_collection,  # noqa: E402
+                            project, segments, view_angles)
 
-QUANTITIES = ("strain", "force", "coordinates", "driver", "energy")
-DEFAULT_QUANTITIES = ("strain", "force", "coordinates", "driver")
+QUANTITIES = ("strain", "force", "coordinates", "driver", "energy", "structure", "displacement")
+DEFAULT_QUANTITIES = ("strain", "force", "coordinates", "driver", "structure")
 STYLES = ("-", "--", ":", "-.")
 MOVES_M = 1e-9  # m: a node that moves less is not shown among the coordinates
+MAX_LINES = 12  # lines per panel: beyond, the largest
 
 
 def read_header(folder):
@@ -58,6 +72,24 @@ def moving_nodes(folders, nodes, axes):
                 moving.append(node)
                 break
     return moving
+
+
+def largest(folders, names, columns_of_name, count=MAX_LINES):
+    """The `count` names whose columns (columns_of_name(name)) vary or reach most in any run:
+    peak |value| for forces, range for coordinates."""
+    size = {}
+    for folder in folders:
+        table = read_folder(pathlib.Path(folder))[2] or {}
+        for name in names:
+            for column, measure in columns_of_name(name):
+                values = table.get(column)
+                if values is not None and values.size:
+                    size[name] = max(size.get(name, 0.0), float(measure(values)))
+    return sorted(names, key=lambda n: -size.get(n, 0.0))[:count]
+
+
+def peak(values):
+    return np.max(np.abs(values))
 
 
 def columns_of(names, prefix, what):
@@ -92,22 +124,34 @@ def model_names(folders):
 
 def figures(columns, folders, what, elements, nodes):
     """{figure name: (panels, ncols)} for the quantities asked for that the history has."""
-    elements = elements or names_after(columns, "strain.")
+    drivers = set(names_after(columns, "torque."))
+    members = names_after(columns, "strain.") or [n for n in names_after(columns, "force.")
+                                                  if n not in drivers]
+    note = ""
+    if not elements and len(members) > MAX_LINES:
+        note = (f"the {MAX_LINES} of {len(members)} members of largest peak |force| "
+                "(--element chooses)")
+        members = largest(folders, members, lambda n: [(f"force.{n}", peak)])
+    elements = elements or members
     axes = [a for a in "xyz" if any(c.startswith(f"{a}.") for c in columns)]
     out = {}
-    if "strain" in what and elements:
+    if "strain" in what and elements and any(c.startswith("strain.") for c in columns):
         out["strain"] = ([Panel(columns_of(elements, "strain.", "element"),
-                                "total strain ε (µε)", MICRO),
+                                "total strain ε (µε)", MICRO, note=note),
                           Panel(columns_of(elements, "mstrain.", "element"),
-                                "mechanical strain ε − αΔT (µε)", MICRO)], 1)
+                                "mechanical strain ε − αΔT (µε)", MICRO, note=note)], 1)
     if "force" in what and elements:
         out["force"] = ([Panel(columns_of(elements, "force.", "element"),
-                               "axial force (N, tension +)")], 1)
-    if "coordinates" in what:
+                               "axial force (N, tension +)", note=note)], 1)
+    if "coordinates" in what and axes:
         shown = nodes or moving_nodes(folders, names_after(columns, f"{axes[0]}."), axes)
+        node_note = ""
+        if not nodes and len(shown) > MAX_LINES:
+            node_note = f"the {MAX_LINES} of {len(shown)} moving nodes that move most (--node chooses)"
+            shown = largest(folders, shown, lambda n: [(f"{a}.{n}", np.ptp) for a in axes])
         if shown:
-            out["coordinates"] = ([Panel(columns_of(shown, f"{a}.", "node"), f"{a} (m)")
-                                   for a in axes], 1)
+            out["coordinates"] = ([Panel(columns_of(shown, f"{a}.", "node"), f"{a} (m)",
+                                         note=node_note) for a in axes], 1)
     if "driver" in what:
         torques = names_after(columns, "torque.")
         element_forces = set(elements) | set(names_after(columns, "strain."))
@@ -126,6 +170,103 @@ def figures(columns, folders, what, elements, nodes):
     return out
 
 
+def model_of(folder, model_file=None):
+    """The Structure of a run: --model, else the folder's model.yaml; None (with a message)
+    when there is neither."""
+    path = pathlib.Path(model_file) if model_file else pathlib.Path(folder) / "model.yaml"
+    if not path.exists():
+        print(f"plot: {folder}: no model.yaml: no structure or displacement figure (--model gives it)",
+              file=sys.stderr)
+        return None
+    return Structure(path)
+
+
+def save(fig, out, name, formats):
+    out.mkdir(parents=True, exist_ok=True)
+    for f in formats:
+        with plt.rc_context({"svg.fonttype": "none"}):
+            fig.savefig(out / f"{name}.{f}", dpi=110)
+        print(f"plot: wrote {out / f'{name}.{f}'}", file=sys.stderr)
+    plt.close(fig)
+
+
+def plot_structure(out, usable, structures, angles, scale, title, formats):
+    """Per run, the structure at the end of the run and at the time of its largest |force|,
+    coloured by force, over the model-file shape (thin grey)."""
+    panels = []
+    for label, folder, _ in usable:
+        data = read_folder(pathlib.Path(folder))[2]
+        if data is None or label not in structures:
+            continue
+        structure = structures[label]
+        forces = structure.forces(data)
+        finite = np.where(np.isfinite(forces), np.abs(forces), -1.0)
+        at_peak = int(np.unravel_index(np.argmax(finite), finite.shape)[0]) if finite.size else 0
+        rows = sorted({at_peak, len(data["t"]) - 1})
+        panels += [(label, structure, data, forces, row) for row in rows]
+    if not panels:
+        return False
+    norm = force_norm(np.concatenate([p[3].ravel() for p in panels]))
+    fig, axes = plt.subplots(1, len(panels), figsize=(6.0 * len(panels), 5.0), squeeze=False)
+    for ax, (label, structure, data, forces, row) in zip(axes[0], panels):
+        positions = structure.positions({k: v[row:row + 1] for k, v in data.items()})[0]
+        initial = project(structure.initial, *angles)
+        ax.add_collection(LineCollection(segments(structure, initial), colors="lightgrey",
+                                         linewidths=0.8, linestyles="--", zorder=1))
+        lines = line_collection(structure, norm)
+        lines.set_segments(segments(structure, project(structure.deformed(positions, scale), *angles)))
+        lines.set_array(np.ma.masked_invalid(forces[row]))
+        ax.add_collection(lines)
+        ax.autoscale()
+        ax.set_aspect("equal")
+        xlabel, ylabel = axis_labels(*angles)
+        ax.set_xlabel(xlabel)
+        ax.set_ylabel(ylabel)
+        ax.grid(True, alpha=0.3)
+        scaled = f", displacements ×{scale:g}" if scale != 1 else ""
+        ax.set_title(f"{label}: t = {data['t'][row]:.3g} s{scaled}", fontsize=10)
+    fig.colorbar(lines, ax=axes[0].tolist(), fraction=0.03, pad=0.02, label="axial force (N), tension +")
+    fig.suptitle(title, fontsize=10.5)
+    save(fig, out, "structure", formats)
+    return True
+
+
+def plot_displacement(out, runs, structures, nodes, title, formats):
+    """|x − X| over time of the chosen nodes, else the MAX_LINES that move most in any run."""
+    for run in runs:
+        structure = structures.get(run.label)
+        if structure is None:
+            continue
+
+        def derive(data, structure=structure):
+            u = np.linalg.norm(structure.positions(data) - structure.initial, axis=2)
+            for i, name in enumerate(structure.node_names):
+                data[f"|u|.{name}"] = u[:, i]
+        run.derive = derive
+    names = nodes
+    note = ""
+    if not names:
+        first = next(iter(structures.values()))
+        candidates = first.node_names
+        size = {}
+        for run in runs:
+            data = read_folder(run.folder)[2]
+            if data is None or run.label not in structures:
+                continue
+            u = np.linalg.norm(structures[run.label].positions(data) - structures[run.label].initial, axis=2)
+            for i, name in enumerate(structures[run.label].node_names):
+                size[name] = max(size.get(name, 0.0), float(u[:, i].max()))
+        names = sorted(candidates, key=lambda n: -size.get(n, 0.0))[:MAX_LINES]
+        names = [n for n in names if size.get(n, 0.0) > MOVES_M]
+        if len(candidates) > MAX_LINES:
+            note = f"the {len(names)} nodes that move most (--node chooses)"
+    if not names:
+        return False
+    return plot_columns(out / f"displacement.{formats[0]}", runs,
+                        [Panel(columns_of(names, "|u|.", "node"), "|u| = |x − X| (m)", note=note)],
+                        title, also=formats[1:]) is not None
+
+
 def main(argv=None):
     parser = argparse.ArgumentParser(
         description=__doc__.splitlines()[0],
@@ -142,6 +283,14 @@ def main(argv=None):
     parser.add_argument("--format", nargs="+", default=["png", "svg"], choices=["png", "svg", "pdf"],
                         help="file formats (default: png svg)")
     parser.add_argument("--title", help="figure title (default: the model names and runs)")
+    parser.add_argument("--view", choices=sorted(VIEWS),
+                        help="structure: projection xy (default in 2D), xz, yz or iso (default in 3D)")
+    parser.add_argument("--azim", type=float, help="structure: view azimuth (degrees)")
+    parser.add_argument("--elev", type=float, help="structure: view elevation (degrees)")
+    parser.add_argument("--scale", type=float, default=1.0,
+                        help="structure: model-file shape + SCALE × displacement (default 1)")
+    parser.add_argument("--model", help="the runs' model file, for structure and displacement "
+                        "(default: each folder's model.yaml)")
     args = parser.parse_args(argv)
 
     labels = case_names(args.folders, args.label)
@@ -162,6 +311,15 @@ def main(argv=None):
                             also=args.format[1:])
         if done:
             written.append(name)
+    structures = {label: model_of(folder, args.model) for label, folder, _ in usable}
+    structures = {label: s for label, s in structures.items() if s is not None}
+    if "displacement" in args.what and structures:
+        if plot_displacement(out, runs, structures, args.node, title, args.format):
+            written.append("displacement")
+    if "structure" in args.what and structures:
+        angles = view_angles(args.view, args.azim, args.elev, next(iter(structures.values())).dimension)
+        if plot_structure(out, usable, structures, angles, args.scale, title, args.format):
+            written.append("structure")
     if not written:
         print("plot: nothing drawn (no matching columns)", file=sys.stderr)
         return 1

@@ -103,3 +103,92 @@ def test_paper_figures_still_draw(results):
     for name in ("fig3_parallel_normal", "fig4_general_normal", "fig5a_parallel_element2",
                  "fig5b_general_element2", "torque_parallel", "torque_general"):
         assert (results / f"{name}.png").read_bytes()[:8] == PNG, name
+
+
+# --- At scale and in 3D (scripts/structure_view.py) --------------------------------------------
+
+sys.path.insert(0, str(SCRIPTS))
+import numpy as np  # noqa: E402
+import structure_view  # noqa: E402
+
+PYRAMID = """
+nodes: {A: [0, 0, 0], B: [2, 0, 0], C: [2, 2, 0], D: [0, 2, 0], E: [1, 1, 0.2]}
+materials: {steel: {E: 2.0e11}}
+elements:
+  ae: {nodes: [A, E], area: 1.0e-4, material: steel, mass: 1}
+  be: {nodes: [B, E], area: 1.0e-4, material: steel, mass: 1}
+  ce: {nodes: [C, E], area: 1.0e-4, material: steel, mass: 1}
+  de: {nodes: [D, E], area: 1.0e-4, material: steel, mass: 1}
+  ab: {nodes: [A, B], area: 1.0e-4, material: steel, mass: 1}
+supports: [{node: A}, {node: B}, {node: C}, {node: D}]
+"""
+
+
+def pyramid(tmp_path):
+    model = tmp_path / "pyramid.yaml"
+    model.write_text(PYRAMID)
+    structure = structure_view.Structure(model)
+    # A history whose apex rises from 0.2 m to 1.4 m; the base nodes have no columns (fixed).
+    t = np.linspace(0, 1, 5)
+    data = {"t": t, "x.E": np.ones(5), "y.E": np.ones(5), "z.E": 0.2 + 1.2 * t, "force.ae": -t}
+    return structure, data
+
+
+def test_a_3d_view_shows_the_apex_rising_that_the_xy_projection_hides(tmp_path):
+    structure, data = pyramid(tmp_path)
+    positions = structure.positions(data)
+    apex = structure.node_names.index("E")
+    assert np.array_equal(positions[:, 0, :], np.tile(structure.initial[0], (5, 1)))  # no columns: fixed
+    side = structure_view.project(positions, *structure_view.view_angles("xz"))
+    top = structure_view.project(positions, *structure_view.view_angles("xy"))
+    iso = structure_view.project(positions, *structure_view.view_angles("iso"))
+    assert side[-1, apex, 1] - side[0, apex, 1] == pytest.approx(1.2)     # up the page by 1.2 m
+    assert np.allclose(top[-1, apex], top[0, apex])                       # seen from above: still
+    assert np.linalg.norm(iso[-1, apex] - iso[0, apex]) > 0.9             # the default 3D view
+    assert structure_view.axis_labels(*structure_view.view_angles("xz")) == ("x (m)", "z (m)")
+    forces = structure.forces(data)
+    assert np.isnan(forces[:, 1]).all() and forces[-1, 0] == -1.0         # no column: grey
+
+
+def test_the_deformation_scale_multiplies_the_displacement(tmp_path):
+    structure, data = pyramid(tmp_path)
+    positions = structure.positions(data)
+    scaled = structure.deformed(positions, 50.0)
+    assert np.allclose(scaled - structure.initial, 50.0 * (positions - structure.initial))
+    assert np.array_equal(structure.deformed(positions, 0.0)[-1], structure.initial)
+
+
+def test_ten_thousand_members_are_drawn_as_one_collection(tmp_path, monkeypatch):
+    """A generated roof of 10⁴ bars: the structure figure holds two line collections (the
+    model-file shape and the members) and no per-member line or label; the time-history panels
+    show at most 12 lines with a note."""
+    model = tmp_path / "roof.yaml"
+    run_cli("generate", "roof", "--units", 3333, "--out", model)
+    folder = tmp_path / "run"
+    run_cli("run", model, "--out", folder, "--quiet", "--set", "analysis.end=0.02",
+            "--set", "analysis.output_interval=0.01")
+    import deploydyn_plot
+    figures = []
+    monkeypatch.setattr(deploydyn_plot.plt, "close", lambda fig=None: figures.append(fig))
+    assert deploydyn_plot.main([str(folder), "--out", str(tmp_path / "plots"), "--what", "structure",
+                                "force", "--format", "png"]) == 0
+    from matplotlib.figure import Figure
+    figures = [f for f in figures if isinstance(f, Figure)]
+    from matplotlib.collections import LineCollection
+
+    def structure_axes(figure):  # not the colour bar's
+        return [ax for ax in figure.axes if ax.collections and ax.get_xlabel() == "x (m)"]
+    structure_figure = [f for f in figures if structure_axes(f)][-1]
+    axes = structure_axes(structure_figure)
+    assert axes
+    for ax in axes:
+        assert len(ax.collections) == 2 and not ax.lines and len(ax.texts) == 0
+        assert all(isinstance(c, LineCollection) for c in ax.collections)
+        assert len(ax.collections[1].get_segments()) == 3333 * 3 + 1
+    assert (tmp_path / "plots" / "force.png").exists()
+    force_panel = "axial force (N, tension +)"
+    force_figures = [f for f in figures if any(ax.get_ylabel() == force_panel for ax in f.axes)]
+    for ax in force_figures[-1].axes:
+        if ax.get_ylabel() == force_panel:
+            assert len(ax.lines) == 12
+            assert "12 of 10000 members" in ax.get_legend().get_title().get_text()

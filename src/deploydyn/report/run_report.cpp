@@ -52,9 +52,11 @@ struct History {
   std::size_t n_rows = 0;
   bool dropped_last_row = false;
 
+  std::unordered_map<std::string, int> index;  // column name → position
+
   int column(const std::string& name) const {
-    const auto found = std::find(columns.begin(), columns.end(), name);
-    return found == columns.end() ? -1 : static_cast<int>(found - columns.begin());
+    const auto found = index.find(name);
+    return found == index.end() ? -1 : found->second;
   }
 };
 
@@ -69,6 +71,7 @@ History read_history(const fs::path& file) {
     start = comma + 1;
   }
   h.values.resize(h.columns.size());
+  for (std::size_t c = 0; c < h.columns.size(); ++c) h.index.emplace(h.columns[c], static_cast<int>(c));
   std::size_t line = 1;
   for (std::size_t start = at + 1; start < text.size(); ++line) {
     const std::size_t end = text.find('\n', start);
