@@ -4,6 +4,7 @@
 
 #include <chrono>
 #include <cstdio>
+#include <filesystem>
 
 #include "deploydyn/study/study_loader.hpp"
 #include "deploydyn/study/study_runner.hpp"
@@ -23,6 +24,9 @@ CLI::App* add_study_command(CLI::App& app, StudyArguments& arguments) {
                    "Cases run at once (default: the study file's jobs; 0: all, up to 4 per core)")
       ->check(CLI::NonNegativeNumber);
   study->add_flag("--quiet,-q", arguments.quiet, "No line per completed case or closing line");
+  study->add_flag("--force,-f", arguments.force,
+                  "Without --out or the study file's out: replace an earlier study's results in "
+                  "results/<study name> (else refused)");
   return study;
 }
 
@@ -30,6 +34,17 @@ int study_command(const StudyArguments& arguments, const std::atomic<bool>& stop
   Study study = load_study(arguments.study_file);
   if (!arguments.out_dir.empty()) study.out_folder = arguments.out_dir;
   if (arguments.jobs >= 0) study.jobs = arguments.jobs;
+  // As `run`: a folder nobody named is never replaced silently; it may hold all that is left
+  // of a long study.
+  if (arguments.out_dir.empty() && !study.out_named && !arguments.force) {
+    for (const char* file : {kStudyStatusFileName, kStudyTableFileName}) {
+      if (std::filesystem::exists(study.out_folder / file)) {
+        fmt::print(stderr, "error: {}/ holds the results of an earlier study ({}); give --out DIR to write "
+                           "elsewhere, or --force to replace them\n", study.out_folder.string(), file);
+        return kExitBadInput;
+      }
+    }
+  }
   const int n_jobs = resolve_jobs(study.jobs, study.cases.size());
 
   StudyControl control;

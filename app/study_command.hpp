@@ -13,6 +13,7 @@ struct StudyArguments {
   std::string out_dir;  // empty: the study file's `out`, or its default
   int jobs = -1;        // < 0: the study file's `jobs`; 0: all cases at once (resolve_jobs)
   bool quiet = false;
+  bool force = false;   // replace an earlier study's results in the default folder
 };
 
 // Adds `study` to `app`; parsed values land in `arguments`.

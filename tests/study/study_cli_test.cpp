@@ -13,6 +13,7 @@ namespace {
 using testing::example_path;
 using testing::read_text;
 using testing::run_cli;
+using testing::run_cli_with_prefix;
 using testing::ScratchFolder;
 
 // A study of examples/paper/general.yaml written into `folder`, 0.2 s per case.
@@ -64,4 +65,22 @@ TEST(StudyCli, BadStudyFileIsExitCodeTwoWithNothingWritten) {
 }
 
 }  // namespace
+TEST(StudyCli, TheDefaultFolderIsNotReplacedSilently) {
+  // Without --out or the study file's out, cases go to ./results/<study name>, as `run` goes to
+  // ./results: a second study there is refused unless --force.
+  ScratchFolder folder("study_cli_default_folder");
+  const auto file = write_study(folder, "  a: {analysis.end: 0.05}\n");
+  const std::string in_folder = "cd '" + folder.path().string() + "' &&";
+  ASSERT_EQ(run_cli_with_prefix(in_folder, "study " + file.string() + " -q").exit_code, 0);
+  const auto table = folder.path() / "results" / file.stem() / "study.csv";
+  ASSERT_TRUE(std::filesystem::exists(table));
+  const auto written = std::filesystem::last_write_time(table);
+  const auto again = run_cli_with_prefix(in_folder, "study " + file.string() + " -q");
+  EXPECT_EQ(again.exit_code, 2) << again.output;
+  EXPECT_NE(again.output.find("holds the results of an earlier study"), std::string::npos) << again.output;
+  EXPECT_NE(again.output.find("--force"), std::string::npos) << again.output;
+  EXPECT_EQ(std::filesystem::last_write_time(table), written);
+  EXPECT_EQ(run_cli_with_prefix(in_folder, "study " + file.string() + " -q --force").exit_code, 0);
+}
+
 }  // namespace deploydyn

@@ -29,6 +29,7 @@ struct Study {
   std::filesystem::path model_file;
   std::vector<StudyCase> cases;  // at least one; names unique
   std::filesystem::path out_folder;
+  bool out_named = false;  // the study file gave `out`; else out_folder is results/<study name>
   int jobs = 0;               // cases run at once; 0: all (resolve_jobs)
   std::size_t reference = 0;  // index into cases: final shapes are compared with this case's
 

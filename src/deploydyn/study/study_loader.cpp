@@ -105,7 +105,10 @@ Study read_study(const YamlValue& root, const std::string& source_name,
   study.model_file = base_folder / model_value.text();
   if (const auto description = root.find("description")) description->text();
   study.out_folder = std::filesystem::path("results") / std::filesystem::path(source_name).stem();
-  if (const auto out = root.find("out")) study.out_folder = base_folder / out->text();
+  if (const auto out = root.find("out")) {
+    study.out_folder = base_folder / out->text();
+    study.out_named = true;
+  }
   if (const auto jobs = root.find("jobs")) study.jobs = jobs->integer(0);
 
   const YamlValue cases = root.at("cases");
