@@ -49,9 +49,11 @@
     if (s.failure) rows.push(['failure', `${s.failure.phase} at t = ${s.failure.time}: ${s.failure.reason}`]);
     if (s.steps !== undefined) rows.push(['steps', `${s.steps} (${s.newton_iterations} Newton iterations, ${s.rejected_steps} rejected), ${formatNumber(s.wall_time)} s`]);
     rows.push(['model', `${data.nodes} nodes, ${data.members.names.length} members drawn`]);
-    for (const [name, d] of Object.entries(s.drivers || {})) {
+    const drivers = Object.entries(s.drivers || {}).sort((a, b) => b[1].peak - a[1].peak);
+    for (const [name, d] of drivers.slice(0, 4)) {
       rows.push([`driver ${name}`, `peak ${d.quantity} ${formatNumber(d.peak)} ${d.unit} at t = ${formatNumber(d.t_peak)} s`]);
     }
+    if (drivers.length > 4) rows.push(['', `… and ${drivers.length - 4} more drivers of smaller peaks (table below)`]);
     if (s.event_counts && Object.keys(s.event_counts).length) {
       rows.push(['events', Object.entries(s.event_counts).map(([k, n]) => `${k} ×${n}`).join(', ')]);
     }
@@ -86,13 +88,18 @@
     const positions = decode(anim.positions, Float32Array);
     const forces = anim.forces ? decode(anim.forces, Float32Array) : null;
     const nFrames = anim.times.length;
-    const largest = anim.largest_force_N;
+    const largest = anim.colour_range_N;  // 99th percentile of |force|; beyond it the colours saturate
     text('legend-min', `−${formatNumber(largest)}`);
     text('legend-max', `+${formatNumber(largest)}`);
+    if (anim.largest_force_N > 1.001 * largest) {
+      document.querySelector('#legend .note').textContent +=
+        `; saturated beyond (largest |force| ${formatNumber(anim.largest_force_N)} N)`;
+    }
     text('animation-note', anim.note || data.notes.animation || '');
 
     const canvas = document.getElementById('view');
-    const renderer = new THREE.WebGLRenderer({ canvas, antialias: true, preserveDrawingBuffer: true });
+    // Anti-aliased lines cost several samples a pixel: worth it for a few members, not for 10⁵.
+    const renderer = new THREE.WebGLRenderer({ canvas, antialias: nMembers <= 5000, preserveDrawingBuffer: true });
     renderer.setPixelRatio(window.devicePixelRatio || 1);
     renderer.setClearColor(0xffffff, 1);
     const scene = new THREE.Scene();

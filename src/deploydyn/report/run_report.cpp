@@ -166,6 +166,7 @@ json animation(const Model& model, const History& history, const Members& member
                                      [](int c) { return c >= 0; });
   json times = json::array();
   double largest_force = 0.0;
+  std::vector<float> magnitudes;  // for the colour scale
   for (const std::size_t row : rows) {
     times.push_back(history.values[0][row]);
     for (std::size_t i = 0; i < n_nodes; ++i) {
@@ -178,14 +179,26 @@ json animation(const Model& model, const History& history, const Members& member
     if (!any_force) continue;
     for (const int c : members.force_column) {
       const double f = c >= 0 ? history.values[static_cast<std::size_t>(c)][row] : std::nan("");
-      if (std::isfinite(f)) largest_force = std::max(largest_force, std::abs(f));
+      if (std::isfinite(f)) {
+        largest_force = std::max(largest_force, std::abs(f));
+        magnitudes.push_back(static_cast<float>(std::abs(f)));
+      }
       forces.push_back(static_cast<float>(f));
     }
+  }
+  // Colours span ± the 99th percentile of |force| over the frames: one member's spike (an
+  // actuator's bar) would otherwise leave every other member grey.
+  double colour_range = largest_force;
+  if (!magnitudes.empty()) {
+    const auto at = magnitudes.begin() + static_cast<std::ptrdiff_t>(0.99 * static_cast<double>(magnitudes.size() - 1));
+    std::nth_element(magnitudes.begin(), at, magnitudes.end());
+    colour_range = *at > 0.0f ? *at : largest_force;
   }
   json out = {{"times", times},
               {"initial", float32_base64(initial)},
               {"positions", float32_base64(positions)},
-              {"largest_force_N", largest_force}};
+              {"largest_force_N", largest_force},
+              {"colour_range_N", colour_range}};
   out["forces"] = any_force ? json(float32_base64(forces)) : json(nullptr);
   return out;
 }
