@@ -26,7 +26,7 @@ namespace deploydyn {
 struct ReportOptions {
   int max_frames = 200;
   std::size_t max_animation_bytes = std::size_t{64} << 20;  // positions and forces, as Float32
-  std::size_t max_plot_values = 4'000'000;                   // history values offered to plot
+  std::size_t max_plot_values = 1'000'000;                   // history values offered to plot
   std::size_t max_table_rows = 50'000;                       // of envelopes.csv
 };
 
