@@ -299,10 +299,12 @@ class Model:
     # -- contents -------------------------------------------------------------------------------
     @property
     def name(self):
+        """The model's `name` (empty when the file gives none)."""
         return self._core.name
 
     @property
     def description(self):
+        """The model's `description` (empty when the file gives none)."""
         return self._core.description
 
     @property
@@ -493,6 +495,7 @@ def roof(units, trusses=1, delta_t=130.0, bearings="sliding", overrides=None):
 
 
 def constant(value):
+    """A function of time that is `value` at every t: {"type": "constant", "value": value}."""
     return {"type": "constant", "value": _number("constant", "value", value)}
 
 
@@ -850,6 +853,8 @@ class Result:
 
     @property
     def status(self):
+        """"completed", "failed" or "interrupted"; for a folder read with read_result also
+        "running", "killed" or "unknown" (folder_status), as it was when read."""
         return self._status if self._status is not None else self.summary.get("status")
 
     @property
@@ -861,6 +866,7 @@ class Result:
 
     @property
     def ok(self):
+        """True when the run completed."""
         return self.status == "completed"
 
     @property
@@ -870,6 +876,7 @@ class Result:
 
     @property
     def t(self):
+        """The output times (s): the history's column t."""
         return self.history["t"]
 
     def __getitem__(self, column):
