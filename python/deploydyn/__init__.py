@@ -198,7 +198,12 @@ def _plain(value, field, where):
 
 
 def _value_text(where, path, value):
-    """An override value as the text --set takes: numbers in their shortest exact form."""
+    """An override value as the text --set takes: numbers in their shortest exact form; a dict
+    or list (a function such as smooth_step(...), a list of axes) as a YAML flow value, which
+    JSON is."""
+    if isinstance(value, (dict, list, tuple)):
+        return json.dumps(_plain(list(value) if isinstance(value, tuple) else value, path, where),
+                          ensure_ascii=False)
     if isinstance(value, bool):
         return "true" if value else "false"
     if isinstance(value, numbers.Integral):
@@ -207,8 +212,8 @@ def _value_text(where, path, value):
         return repr(float(value))
     if isinstance(value, str):
         return value
-    raise TypeError(f"{where}: override {path}: the value must be a number, bool or text, "
-                    f"not {_shown(value)}")
+    raise TypeError(f"{where}: override {path}: the value must be a number, bool, text, dict "
+                    f"or list, not {_shown(value)}")
 
 
 _OVERRIDES_TAKE = ("a dict {path: value}, a 'PATH=VALUE' text, or a list of such texts or "

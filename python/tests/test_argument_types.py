@@ -76,7 +76,10 @@ def test_overrides_of_the_wrong_shape(general_model):
                        match=r"^from_dict: an override's path must be a str, not int 1$"):
         deploydyn.from_dict({}, overrides=[(1, 2)])
     with pytest.raises(TypeError, match=r"^Model\.set: override thermal\.dT: the value must be a "
-                                        r"number, bool or text, not list \[1, 2\]$"):
+                                        r"number, bool, text, dict or list, not set \{1\}$"):
+        deploydyn.load(general_model).set("thermal.dT", {1})
+    # A list is a YAML flow value, checked by the loader like --set's: not a function of time.
+    with pytest.raises(deploydyn.InputError, match=r"thermal\.dT: expected a function"):
         deploydyn.load(general_model).set("thermal.dT", [1, 2])
     with pytest.raises(TypeError, match=r"^Model\.set: path must be a str, not int 5$"):
         deploydyn.load(general_model).set(5, 1)

@@ -63,5 +63,20 @@ def test_bad_override_leaves_the_model_as_it_was(general_model):
     assert model.analysis["step"] == 1e-3
     with pytest.raises(ValueError, match="expected PATH=VALUE"):
         model.set("thermal.dT130")
-    with pytest.raises(TypeError):
+    with pytest.raises(deploydyn.InputError):
         model.set("thermal.dT", [1, 2])
+
+
+def test_python_values_extend_a_model_in_code_without_yaml():
+    """A function, a list or a mapping is given as Python data: as --set takes YAML flow values."""
+    import deploydyn
+    from conftest import GENERAL
+    model = deploydyn.load(GENERAL)
+    heated = model.with_overrides({"thermal.dT": deploydyn.smooth_step(0, 0, 1, 50)})
+    assert heated.temperature_changes(1.0) == {"1": 50.0, "2": 50.0, "3": 50.0}
+    assert heated.temperature_changes(0.0) == {"1": 0.0, "2": 0.0, "3": 0.0}
+    named = model.with_overrides({"functions": {"ramp": deploydyn.smooth_step(0, 0, 2, 130)},
+                                  "thermal.dT": "ramp"})
+    assert named.temperature_changes(2.0)["2"] == 130.0
+    rolled = model.with_overrides({"supports.1.fix": ("y",)})
+    assert rolled.overrides == [("supports.1.fix", '["y"]')]
