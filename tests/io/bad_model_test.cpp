@@ -24,6 +24,10 @@ struct BadModelCase {
 std::ostream& operator<<(std::ostream& out, const BadModelCase& bad) { return out << bad.file; }
 
 const BadModelCase kBadModels[] = {
+    {"output_select_unknown_node.yaml", 6, "output.select.nodes.1",
+     "'top*' matches no node; give node names, patterns with * or ?, or all, moving"},
+    {"output_select_unknown_quantity.yaml", 7, "output.select.quantities.1",
+     "unknown quantity 'reactions'; did you mean 'reaction'?"},
     {"unknown_key_suggestion.yaml", 7, "elements.1.aera",
      "unknown key 'aera'; did you mean 'area'?"},
     {"unknown_top_level_key.yaml", 4, "solver_settings",
