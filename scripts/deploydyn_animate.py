@@ -37,8 +37,8 @@ sys.path.insert(0, str(pathlib.Path(__file__).resolve().parents[1] / "python" / 
 import result_folder  # noqa: E402
 
 sys.path.insert(0, str(pathlib.Path(__file__).resolve().parent))
-from structure_view import (MAX_LABELLED_NODES, MAX_MARKED_NODES, VIEWS, Structure,  # noqa: E402
-                            axis_labels, force_norm, line_collection, project, segments,
+from structure_view import (MAX_LABELLED_NODES, MAX_MARKED_NODES, Structure,  # noqa: E402
+                            add_view_arguments, axis_labels, force_norm, line_collection, project, segments,
                             view_angles)
 
 
@@ -170,12 +170,7 @@ def main(argv=None):
     parser.add_argument("--force-range", type=float, metavar="N",
                         help="colours span −N … +N newtons (default: the run's largest |force|)")
     parser.add_argument("--title")
-    parser.add_argument("--view", choices=sorted(VIEWS),
-                        help="projection: xy (default in 2D), xz, yz or iso (default in 3D)")
-    parser.add_argument("--azim", type=float, help="view azimuth (degrees), as matplotlib's 3D axes")
-    parser.add_argument("--elev", type=float, help="view elevation (degrees)")
-    parser.add_argument("--scale", type=float, default=1.0,
-                        help="deformation scale: model-file shape + SCALE × displacement (default 1)")
+    add_view_arguments(parser)
     args = parser.parse_args(argv)
 
     model = args.model or pathlib.Path(args.result_dir) / "model.yaml"

@@ -38,7 +38,7 @@ from matplotlib.collections import LineCollection  # noqa: E402
 
 sys.path.insert(0, str(pathlib.Path(__file__).resolve().parent))
 from plot_paper import MICRO, Panel, Run, plot_columns, read_folder  # noqa: E402
-from structure_view import (VIEWS, Structure, axis_labels, force_norm, line_collection,  # noqa: E402
+from structure_view import (Structure, add_view_arguments, axis_labels, force_norm, line_collection,  # noqa: E402
                             project, segments, view_angles)
 
 QUANTITIES = ("strain", "force", "coordinates", "driver", "energy", "structure", "displacement")
@@ -283,12 +283,7 @@ def main(argv=None):
     parser.add_argument("--format", nargs="+", default=["png", "svg"], choices=["png", "svg", "pdf"],
                         help="file formats (default: png svg)")
     parser.add_argument("--title", help="figure title (default: the model names and runs)")
-    parser.add_argument("--view", choices=sorted(VIEWS),
-                        help="structure: projection xy (default in 2D), xz, yz or iso (default in 3D)")
-    parser.add_argument("--azim", type=float, help="structure: view azimuth (degrees)")
-    parser.add_argument("--elev", type=float, help="structure: view elevation (degrees)")
-    parser.add_argument("--scale", type=float, default=1.0,
-                        help="structure: model-file shape + SCALE × displacement (default 1)")
+    add_view_arguments(parser, "structure: ")
     parser.add_argument("--model", help="the runs' model file, for structure and displacement "
                         "(default: each folder's model.yaml)")
     args = parser.parse_args(argv)

@@ -71,6 +71,17 @@ class Structure:
         return self.initial + scale * (positions - self.initial)
 
 
+def add_view_arguments(parser, what=""):
+    """--view, --azim, --elev and --scale, as both scripts take them; `what` names what they
+    apply to in the help ("structure: ")."""
+    parser.add_argument("--view", choices=sorted(VIEWS),
+                        help=f"{what}projection xy (default in 2D), xz, yz or iso (default in 3D)")
+    parser.add_argument("--azim", type=float, help=f"{what}view azimuth (degrees), as matplotlib's 3D axes")
+    parser.add_argument("--elev", type=float, help=f"{what}view elevation (degrees)")
+    parser.add_argument("--scale", type=float, default=1.0,
+                        help=f"{what}model-file shape + SCALE × displacement (default 1)")
+
+
 def view_angles(view=None, azim=None, elev=None, dimension=3):
     """(azimuth, elevation) in degrees from a view name or explicit angles."""
     if azim is not None or elev is not None:
