@@ -98,8 +98,7 @@ def scratch(tmp_path_factory):
 
 
 def environment(build):
-    env = dict(os.environ)
-    env.pop("LD_PRELOAD", None)  # the sanitizer build preloads ASan into python3, not into bash
+    env = dict(os.environ)  # with the sanitizer build's LD_PRELOAD: its Python module needs it
     env["PATH"] = f"{build}:{env['PATH']}"
     env["PYTHONPATH"] = str(build / "python")
     return env
