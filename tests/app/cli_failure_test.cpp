@@ -107,7 +107,10 @@ TEST(CliFailure, InterruptedRunKeepsAValidHistory) {
   // 5 s at 1 µs (5 million steps, several seconds): far longer than the half second before the signal.
   const std::string command = std::string(DEPLOYDYN_CLI) + " run " + testing::example_path("general.yaml") +
                               " --quiet --out " + out + " --set analysis.step=1e-6 --set analysis.output_interval=1e-3" +
-                              " & pid=$!; sleep 0.5; kill -TERM $pid; wait $pid; echo exit=$?";
+                              // The signal once the run has started writing (a loaded machine may take longer
+                              // than a fixed delay to reach main()), and at least 0.5 s in.
+                              " & pid=$!; for i in $(seq 200); do [ -s " + out + "/history.csv ] && break; sleep 0.05; done;" +
+                              " sleep 0.5; kill -TERM $pid; wait $pid; echo exit=$?";
   std::FILE* pipe = popen(command.c_str(), "r");
   std::string output;
   std::array<char, 512> buffer{};
