@@ -124,7 +124,13 @@ def model_names(folders):
 
 def figures(columns, folders, what, elements, nodes):
     """{figure name: (panels, ncols)} for the quantities asked for that the history has."""
+    # Drivers by summary.json (a coordinate driver's force.<name> looks like a member's);
+    # members: the elements with strain columns, else the other force columns.
     drivers = set(names_after(columns, "torque."))
+    for folder in folders:
+        summary = read_folder(pathlib.Path(folder))[1] or {}
+        drivers |= set(summary.get("drivers") or {})
+    driver_forces = [d for d in names_after(columns, "force.") if d in drivers]
     members = names_after(columns, "strain.") or [n for n in names_after(columns, "force.")
                                                   if n not in drivers]
     note = ""
@@ -154,8 +160,7 @@ def figures(columns, folders, what, elements, nodes):
                                          note=node_note) for a in axes], 1)
     if "driver" in what:
         torques = names_after(columns, "torque.")
-        element_forces = set(elements) | set(names_after(columns, "strain."))
-        forces = [d for d in names_after(columns, "force.") if d not in element_forces]
+        forces = driver_forces
         panels = []
         if torques:
             panels.append(Panel(columns_of(torques, "torque.", "driver"), "driver torque (N·m)"))
