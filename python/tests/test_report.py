@@ -95,6 +95,15 @@ def test_the_page_draws_the_linkage_and_the_slider_moves_it(browser, linkage_rep
         assert 1e-4 < share < 0.2, share
     # The crank turned by 1.5 rad/s·1.5 s: the picture changed where the members are.
     assert np.count_nonzero(drawn(first) != drawn(last)) > 100
+    # And the members are drawn where they are: a drawn pixel within 2 px of each member's
+    # midpoint, as the page's camera projects it.
+    midpoints = browser.execute_script("return window.deploydynReport.memberMidpoints()")
+    assert len(midpoints) == 3
+    for x, y in midpoints:
+        i, j = int(round(y)), int(round(x))
+        assert drawn(last)[max(i - 2, 0):i + 3, max(j - 2, 0):j + 3].any(), (x, y)
+    # ... and not where no member is: the canvas's corners are background.
+    assert not drawn(last)[:20, :20].any() and not drawn(last)[-20:, -20:].any()
 
     # Members are coloured by force: at the time of the largest force (envelopes.csv) the most
     # loaded bar is red (tension) or blue (compression), not grey.

@@ -184,6 +184,17 @@
       if (playing) requestAnimationFrame(tick);
     });
     report.setFrame = setFrame;
+    // Where each member's midpoint is drawn, in canvas pixels (x right, y down): the browser
+    // test looks for the member's colour there.
+    report.memberMidpoints = () => {
+      const out = [], w = canvas.width, h = canvas.height, p = new THREE.Vector3();
+      for (let m = 0; m < nMembers; ++m) {
+        p.set((vertex[6 * m] + vertex[6 * m + 3]) / 2, (vertex[6 * m + 1] + vertex[6 * m + 4]) / 2,
+              (vertex[6 * m + 2] + vertex[6 * m + 5]) / 2).project(camera);
+        out.push([(p.x + 1) / 2 * w, (1 - p.y) / 2 * h]);
+      }
+      return out;
+    };
     report.frameCount = nFrames;
     report.times = anim.times;
     report.setScale = (s) => { scale = s; setFrame(report.frame); };
