@@ -1,6 +1,7 @@
 #pragma once
-// `deploydyn study STUDY.yaml [--out DIR] [--jobs N] [--quiet]`: runs a load-case study
-// (study/study_runner.hpp), each case into DIR/<case>/, and writes DIR/study.csv.
+// `deploydyn study STUDY.yaml [--out DIR] [--jobs N] [--resume] [--quiet]`: runs a load-case
+// study (study/study_runner.hpp), each case into DIR/<case>/, and writes DIR/study.csv.
+// Under `mpirun -n N` the cases are spread over the N processes (app/mpi_channel.hpp).
 
 #include <CLI/CLI.hpp>
 #include <atomic>
@@ -14,6 +15,7 @@ struct StudyArguments {
   int jobs = -1;        // < 0: the study file's `jobs`; 0: all cases at once (resolve_jobs)
   bool quiet = false;
   bool force = false;   // replace an earlier study's results in the default folder
+  bool resume = false;  // skip the cases an earlier run completed
 };
 
 // Adds `study` to `app`; parsed values land in `arguments`.

@@ -1,13 +1,22 @@
 #include "deploydyn/study/study_runner.hpp"
 
+#include <fmt/format.h>
+#include <signal.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <chrono>
+#include <fstream>
 #include <mutex>
 #include <optional>
+#include <sstream>
 #include <system_error>
 #include <thread>
 
 #include <nlohmann/json.hpp>
 
 #include "deploydyn/io/model_loader.hpp"
+#include "deploydyn/io/model_writer.hpp"
 #include "deploydyn/output/output_error.hpp"
 #include "deploydyn/output/result_folder.hpp"
 #include "deploydyn/output/run_to_folder.hpp"
@@ -16,11 +25,13 @@
 namespace deploydyn {
 namespace {
 
+constexpr const char* kNotStarted = "not started: the study was interrupted";
+
 CaseOutcome run_case(const Study& study, std::size_t index, const std::atomic<bool>* stop) {
   CaseOutcome outcome;
   if (stop != nullptr && stop->load()) {
     outcome.status = RunStatus::interrupted;
-    outcome.message = "not started: the study was interrupted";
+    outcome.message = kNotStarted;
     return outcome;
   }
   // Everything a case can throw is that case's failure; nothing may leave a worker thread.
@@ -29,6 +40,7 @@ CaseOutcome run_case(const Study& study, std::size_t index, const std::atomic<bo
     RunControl control;
     control.stop = stop;
     outcome.report = run_to_folder(model, study.case_folder(index), control, outcome.envelope);
+    outcome.ran = true;
     outcome.status = outcome.report.status;
     outcome.message = outcome.report.message;
     outcome.model = std::move(model);
@@ -42,6 +54,38 @@ CaseOutcome run_case(const Study& study, std::size_t index, const std::atomic<bo
   return outcome;
 }
 
+std::string host_name() {
+  char name[256] = {};
+  return gethostname(name, sizeof name - 1) == 0 ? std::string(name) : std::string();
+}
+
+// Whether process `pid` on `host` still exists. On another host it cannot be told: assumed
+// alive (mpirun's own abort then ends the study; rerun it with resume).
+bool process_alive(long pid, const std::string& host) {
+  if (pid <= 0 || host != host_name()) return true;
+  return ::kill(static_cast<pid_t>(pid), 0) == 0 || errno == EPERM;
+}
+
+std::string file_text(const std::filesystem::path& file) {
+  std::ifstream in(file, std::ios::binary);
+  std::ostringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+// The case's folder holds a completed run of the model this case would run now.
+bool completed_earlier(const Study& study, std::size_t index) {
+  try {
+    const auto earlier = read_case_result(study.case_folder(index));
+    if (!earlier || earlier->status != RunStatus::completed) return false;
+    std::ostringstream model_now;
+    save_model(load_model(study.model_file, study.cases[index].overrides), model_now);
+    return model_now.str() == file_text(study.case_folder(index) / kRunModelFileName);
+  } catch (const std::exception&) {
+    return false;  // unreadable or no longer loadable: run it again, and let that say why
+  }
+}
+
 // study.json at the end: the study's status and each case's; "failed" with `table_error` when
 // study.csv could not be written. `short_form`: the status only, for a disk too full for more.
 std::string study_status_json(const Study& study, const std::vector<CaseOutcome>& outcomes,
@@ -52,9 +96,12 @@ std::string study_status_json(const Study& study, const std::vector<CaseOutcome>
     all_completed = all_completed && outcomes[i].status == RunStatus::completed;
     any_interrupted = any_interrupted || outcomes[i].status == RunStatus::interrupted;
     if (short_form) continue;
-    cases[study.cases[i].name] = {{"status", to_string(outcomes[i].status)},
-                                  {"message", outcomes[i].message},
-                                  {"folder", study.case_folder(i).filename().string()}};
+    nlohmann::ordered_json entry = {{"status", to_string(outcomes[i].status)},
+                                    {"message", outcomes[i].message},
+                                    {"folder", study.case_folder(i).filename().string()}};
+    if (outcomes[i].resumed) entry["resumed"] = true;
+    if (outcomes[i].process > 0) entry["process"] = outcomes[i].process;
+    cases[study.cases[i].name] = std::move(entry);
   }
   nlohmann::ordered_json j;
   j["study"] = study.model_file.string();
@@ -68,6 +115,59 @@ std::string study_status_json(const Study& study, const std::vector<CaseOutcome>
   return j.dump(short_form ? -1 : 2, ' ', false, nlohmann::ordered_json::error_handler_t::replace);
 }
 
+// Process 0 of a distributed study: answers the workers until each has been told to stop,
+// taking their cases from `take` and calling `done` as each case ends. A worker that died
+// (process_alive) is stopped waiting for; its case is reported as failed.
+template <typename Take, typename Done>
+void coordinate(StudyChannel& channel, Take take, Done done, std::vector<CaseOutcome>& outcomes) {
+  struct Worker {
+    long running = -1;  // its case
+    long pid = 0;
+    std::string host;
+    bool stopped = false;
+  };
+  std::vector<Worker> workers(static_cast<std::size_t>(channel.size()));
+  int active = channel.size() - 1;
+  while (active > 0) {
+    if (const auto report = channel.poll_report()) {
+      Worker& worker = workers.at(static_cast<std::size_t>(report->rank));
+      worker.pid = report->pid;
+      worker.host = report->host;
+      if (report->finished_case >= 0) {
+        CaseOutcome& outcome = outcomes.at(static_cast<std::size_t>(report->finished_case));
+        outcome.status = report->status;
+        outcome.message = report->message;
+        outcome.ran = report->ran;
+        outcome.process = report->rank;
+        done(static_cast<std::size_t>(report->finished_case));
+      }
+      worker.running = take();
+      channel.assign(report->rank, worker.running);
+      if (worker.running < 0) {
+        worker.stopped = true;
+        --active;
+      }
+      continue;
+    }
+    for (std::size_t rank = 1; rank < workers.size(); ++rank) {
+      Worker& worker = workers[rank];
+      if (worker.stopped || worker.pid == 0 || process_alive(worker.pid, worker.host)) continue;
+      if (worker.running >= 0) {
+        CaseOutcome& outcome = outcomes[static_cast<std::size_t>(worker.running)];
+        outcome.status = RunStatus::failed;
+        outcome.message = fmt::format("process {} (pid {}) died while running this case; rerun "
+                                      "the study with --resume to run it again", rank, worker.pid);
+        outcome.process = static_cast<int>(rank);
+        outcome.lost = true;
+        done(static_cast<std::size_t>(worker.running));
+      }
+      worker.stopped = true;
+      --active;
+    }
+    std::this_thread::sleep_for(std::chrono::milliseconds(2));
+  }
+}
+
 }  // namespace
 
 std::vector<CaseOutcome> run_study(const Study& study, const StudyControl& control) {
@@ -75,35 +175,72 @@ std::vector<CaseOutcome> run_study(const Study& study, const StudyControl& contr
   ResultFolder folder(study.out_folder, kStudyStatusFileName);
   folder.start("study", study.model_file.string(), {{"table", kStudyTableFileName}});
   std::vector<CaseOutcome> outcomes(n_cases);
-  std::atomic<std::size_t> next_case{0};
+  std::vector<std::size_t> to_run;
+  for (std::size_t i = 0; i < n_cases; ++i) {
+    if (control.resume && completed_earlier(study, i)) {
+      outcomes[i].status = RunStatus::completed;
+      outcomes[i].ran = outcomes[i].resumed = true;
+      outcomes[i].message = "completed by an earlier run of the study";
+      continue;
+    }
+    outcomes[i].status = RunStatus::interrupted;
+    outcomes[i].message = kNotStarted;
+    to_run.push_back(i);
+  }
+
+  std::atomic<std::size_t> next{0};
+  const auto take = [&]() -> long {
+    if (control.stop != nullptr && control.stop->load()) return -1;
+    const std::size_t k = next++;
+    return k < to_run.size() ? static_cast<long>(to_run[k]) : -1;
+  };
   std::mutex report_mutex;
-  const auto work = [&] {
-    for (std::size_t i = next_case++; i < n_cases; i = next_case++) {
-      outcomes[i] = run_case(study, i, control.stop);
-      if (!control.case_done) continue;
-      const std::lock_guard lock(report_mutex);
-      try {
-        control.case_done(i, outcomes[i]);
-      } catch (...) {
-        // A report that cannot be shown (e.g. stderr closed) must not end the study.
-      }
+  const auto done = [&](std::size_t i) {
+    if (!control.case_done) return;
+    const std::lock_guard lock(report_mutex);
+    try {
+      control.case_done(i, outcomes[i]);
+    } catch (...) {
+      // A report that cannot be shown (e.g. stderr closed) must not end the study.
     }
   };
+  const auto work = [&] {
+    for (long i = take(); i >= 0; i = take()) {
+      outcomes[static_cast<std::size_t>(i)] = run_case(study, static_cast<std::size_t>(i), control.stop);
+      done(static_cast<std::size_t>(i));
+    }
+  };
+  const bool distributed = control.channel != nullptr && control.channel->size() > 1;
   {
-    // The calling thread is one of the workers: with one job no thread is started.
+    // Without other processes the calling thread is one of the workers: with one job no
+    // thread is started. With them it answers them, and threads run this process's cases.
+    const int n_threads = distributed ? std::max(study.jobs, 1) : resolve_jobs(study.jobs, to_run.size());
     std::vector<std::jthread> helpers;
-    for (int t = 1; t < resolve_jobs(study.jobs, n_cases); ++t) {
+    for (int t = distributed ? 0 : 1; t < n_threads; ++t) {
       try {
         helpers.emplace_back(work);
       } catch (const std::system_error&) {
         break;  // no more threads to be had: the ones running take all cases
       }
     }
-    work();
+    if (distributed) {
+      coordinate(*control.channel, take, done, outcomes);
+    } else {
+      work();
+    }
   }  // joins the helpers
+
+  std::vector<CaseResult> results;
   std::optional<OutputError> table_error;
   try {
-    write_study_table(study.table_file(), study, outcomes);
+    for (CaseOutcome& outcome : outcomes) {
+      const std::size_t i = results.size();
+      std::optional<CaseResult> from_folder;
+      if (outcome.ran) from_folder = read_case_result(study.case_folder(i));
+      outcome.result = from_folder ? *from_folder : CaseResult::not_run(outcome.status, outcome.message);
+      results.push_back(outcome.result);
+    }
+    write_study_table(study.table_file(), study, results);
   } catch (const OutputError& error) {
     table_error = error;
   }
@@ -112,6 +249,29 @@ std::vector<CaseOutcome> run_study(const Study& study, const StudyControl& contr
                 study_status_json(study, outcomes, why.substr(0, 2000), true));
   if (table_error) throw *table_error;
   return outcomes;
+}
+
+void run_study_worker(const Study& study, const StudyControl& control) {
+  StudyChannel& channel = *control.channel;
+  WorkerReport report;
+  report.rank = channel.rank();
+  report.pid = static_cast<long>(::getpid());
+  report.host = host_name();
+  for (long i = channel.report_and_wait(report); i >= 0; i = channel.report_and_wait(report)) {
+    const auto index = static_cast<std::size_t>(i);
+    CaseOutcome outcome = run_case(study, index, control.stop);
+    outcome.process = report.rank;
+    report.finished_case = i;
+    report.status = outcome.status;
+    report.ran = outcome.ran;
+    report.message = outcome.message;
+    if (!control.case_done) continue;
+    try {
+      control.case_done(index, outcome);
+    } catch (...) {
+      // as in run_study: a report that cannot be shown does not end the study
+    }
+  }
 }
 
 }  // namespace deploydyn

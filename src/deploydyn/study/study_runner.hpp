@@ -1,5 +1,6 @@
 #pragma once
-// Runs a study's cases concurrently: worker threads take the next case from a shared counter;
+// Runs a study's cases concurrently: worker threads (and, in a distributed study, worker
+// processes: study/study_channel.hpp) take the next case from a shared counter;
 // each case loads the model with its overrides and runs it with run_to_folder into
 // Study::case_folder (model.yaml, history.csv streamed, summary.json), as `deploydyn run` would.
 // A case that fails (its overrides are invalid, the solver gives up, files cannot be written)
@@ -7,7 +8,12 @@
 // them (study/study_table.hpp).
 //
 // Cases share nothing while they run: each has its own model, assembler and writers, so the
-// results do not depend on the number of threads (history.csv files are byte-identical).
+// results do not depend on the number of threads or processes (history.csv files are
+// byte-identical). study.csv is made from what the case folders hold (study/case_result.hpp),
+// wherever the case ran.
+//
+// Resuming (StudyControl::resume) skips every case whose folder holds a completed run of the
+// same model (model.yaml as this case would write it): what a killed study left is kept.
 
 #include <atomic>
 #include <cstddef>
@@ -19,7 +25,9 @@
 #include "deploydyn/model/model.hpp"
 #include "deploydyn/output/envelope.hpp"
 #include "deploydyn/solvers/analysis.hpp"
+#include "deploydyn/study/case_result.hpp"
 #include "deploydyn/study/study.hpp"
+#include "deploydyn/study/study_channel.hpp"
 
 namespace deploydyn {
 
@@ -28,9 +36,16 @@ namespace deploydyn {
 struct CaseOutcome {
   RunStatus status = RunStatus::failed;
   std::string message;         // the run's one line, or why it could not run
+  bool ran = false;            // the model was built and run: the case folder holds its results
+  bool resumed = false;        // skipped: an earlier run of the study completed it
+  int process = 0;             // the study process that ran it (0 without MPI)
+  bool lost = false;           // its process died while running it
+  // In this process only (not for a case run by another process, or resumed):
   std::optional<Model> model;  // as run, overrides applied
   RunReport report;
   Envelope envelope;  // extremes and the last record, as summary.json has them
+  // What study.csv holds of it, read from its folder after it ended.
+  CaseResult result;
 };
 
 struct StudyControl {
@@ -39,11 +54,22 @@ struct StudyControl {
   // Set from elsewhere (a signal handler): running cases stop after their current step and
   // report `interrupted`, cases not yet started are not started.
   const std::atomic<bool>* stop = nullptr;
+  // Skip the cases that an earlier run of the study completed (same model).
+  bool resume = false;
+  // A distributed study: the other processes' channel (rank 0 coordinates). Empty: this process only.
+  StudyChannel* channel = nullptr;
 };
 
 // Runs every case, resolve_jobs(study.jobs, n) at a time, then writes study.csv, in a folder
 // it owns (output/result_folder.hpp; status in study.json). Outcomes are in the study's case
 // order. Throws OutputError when the folder is in use or study.csv cannot be written.
+// With a channel (process 0 of a distributed study) it also hands cases to the other processes
+// as they ask, and this process runs study.jobs cases at a time (0: one). A worker process that
+// dies (on this host) loses only its running case, reported as failed.
 std::vector<CaseOutcome> run_study(const Study& study, const StudyControl& control = {});
+
+// A worker process of a distributed study (control.channel->rank() > 0): runs the cases that
+// process 0 hands it, one at a time, each into its folder; case_done is called for each.
+void run_study_worker(const Study& study, const StudyControl& control);
 
 }  // namespace deploydyn

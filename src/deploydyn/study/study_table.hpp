@@ -17,19 +17,15 @@
 #include <vector>
 
 #include "deploydyn/study/study.hpp"
-#include "deploydyn/study/study_runner.hpp"
+#include "deploydyn/study/case_result.hpp"
 
 namespace deploydyn {
 
-// Largest distance (m) between the final positions of the same node (by name) in two runs;
-// NaN when either has no records or a node of `run` is missing in `reference`.
-double final_shape_error_m(const CaseOutcome& run, const CaseOutcome& reference);
-
 // The CSV text (header and one line per case).
-std::string study_table_csv(const Study& study, const std::vector<CaseOutcome>& outcomes);
+std::string study_table_csv(const Study& study, const std::vector<CaseResult>& outcomes);
 
 // Written whole to a temporary file and renamed, as summary.json is; OutputError if it cannot.
 void write_study_table(const std::filesystem::path& file, const Study& study,
-                       const std::vector<CaseOutcome>& outcomes);
+                       const std::vector<CaseResult>& outcomes);
 
 }  // namespace deploydyn

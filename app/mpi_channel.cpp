@@ -1,0 +1,114 @@
+#include "mpi_channel.hpp"
+
+#include <cstdlib>
+#include <exception>
+#include <stdexcept>
+#include <string>
+
+#include <nlohmann/json.hpp>
+
+#ifdef DEPLOYDYN_WITH_MPI
+#include <mpi.h>
+#endif
+
+namespace deploydyn::cli {
+namespace {
+
+// OpenMPI's mpirun (and PMIx launchers) set these in every process they start.
+bool launched_by_mpirun() {
+  for (const char* variable : {"OMPI_COMM_WORLD_SIZE", "PMIX_RANK", "PMI_SIZE"}) {
+    if (std::getenv(variable) != nullptr) return true;
+  }
+  return false;
+}
+
+}  // namespace
+
+#ifdef DEPLOYDYN_WITH_MPI
+
+class MpiChannel final : public StudyChannel {
+ public:
+  MpiChannel() {
+    // Only the main thread calls MPI; process 0 runs its own cases on other threads.
+    int provided = 0;
+    MPI_Init_thread(nullptr, nullptr, MPI_THREAD_FUNNELED, &provided);
+    MPI_Comm_rank(MPI_COMM_WORLD, &rank_);
+    MPI_Comm_size(MPI_COMM_WORLD, &size_);
+  }
+  ~MpiChannel() override {
+    // Leaving by an exception (bad input, a folder in use) the other processes may be waiting
+    // for this one: end them all rather than wait in MPI_Finalize.
+    if (std::uncaught_exceptions() > 0) MPI_Abort(MPI_COMM_WORLD, 2);
+    MPI_Finalize();
+  }
+  MpiChannel(const MpiChannel&) = delete;
+  MpiChannel& operator=(const MpiChannel&) = delete;
+
+  int rank() const override { return rank_; }
+  int size() const override { return size_; }
+
+  std::optional<WorkerReport> poll_report() override {
+    int arrived = 0;
+    MPI_Status status;
+    MPI_Iprobe(MPI_ANY_SOURCE, kReportTag, MPI_COMM_WORLD, &arrived, &status);
+    if (!arrived) return std::nullopt;
+    int length = 0;
+    MPI_Get_count(&status, MPI_CHAR, &length);
+    std::string text(static_cast<std::size_t>(length), '\0');
+    MPI_Recv(text.data(), length, MPI_CHAR, status.MPI_SOURCE, kReportTag, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
+    const auto j = nlohmann::json::parse(text);
+    WorkerReport report;
+    report.rank = status.MPI_SOURCE;
+    report.finished_case = j.at("case").get<long>();
+    report.status = static_cast<RunStatus>(j.at("status").get<int>());
+    report.ran = j.at("ran").get<bool>();
+    report.message = j.at("message").get<std::string>();
+    report.pid = j.at("pid").get<long>();
+    report.host = j.at("host").get<std::string>();
+    return report;
+  }
+
+  void assign(int rank, long case_index) override {
+    MPI_Send(&case_index, 1, MPI_LONG, rank, kAssignTag, MPI_COMM_WORLD);
+  }
+
+  long report_and_wait(const WorkerReport& report) override {
+    const std::string text = nlohmann::json{{"case", report.finished_case},
+                                            {"status", static_cast<int>(report.status)},
+                                            {"ran", report.ran},
+                                            {"message", report.message},
+                                            {"pid", report.pid},
+                                            {"host", report.host}}
+                                 .dump(-1, ' ', false, nlohmann::json::error_handler_t::replace);
+    MPI_Send(text.data(), static_cast<int>(text.size()), MPI_CHAR, 0, kReportTag, MPI_COMM_WORLD);
+    long case_index = -1;
+    MPI_Recv(&case_index, 1, MPI_LONG, 0, kAssignTag, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
+    return case_index;
+  }
+
+ private:
+  static constexpr int kReportTag = 1;
+  static constexpr int kAssignTag = 2;
+  int rank_ = 0;
+  int size_ = 1;
+};
+
+std::unique_ptr<StudyChannel> join_mpi_if_launched() {
+  if (!launched_by_mpirun()) return nullptr;
+  return std::make_unique<MpiChannel>();
+}
+
+#else
+
+std::unique_ptr<StudyChannel> join_mpi_if_launched() {
+  if (launched_by_mpirun()) {
+    throw std::runtime_error(
+        "started by mpirun, but this deploydyn was built without MPI (install libopenmpi-dev and "
+        "build again: scripts/install-deps.sh does); run `deploydyn study` without mpirun");
+  }
+  return nullptr;
+}
+
+#endif
+
+}  // namespace deploydyn::cli
