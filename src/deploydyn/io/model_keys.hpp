@@ -49,8 +49,15 @@ inline constexpr std::array<std::string_view, 5> kSmoothStep{"type", "t0", "v0",
 // smooth_trapezoid (every key required) and paper_eq23 (every key optional)
 inline constexpr std::array<std::string_view, 4> kSmoothTrapezoid{"type", "amplitude", "rise", "fall"};
 inline constexpr std::array<std::string_view, 2> kTableFunction{"type", "points"};
-inline constexpr std::array<std::string_view, 6> kStudy{"model", "description", "out", "jobs",
-                                                        "reference", "cases"};
+inline constexpr std::array<std::string_view, 7> kStudy{"model", "description", "out", "jobs",
+                                                        "reference", "cases", "sampling"};
+inline constexpr std::array<std::string_view, 7> kSampling{"method", "cases", "seed", "length_error",
+                                                           "temperature", "material", "limits"};
+inline constexpr std::array<std::string_view, 3> kLengthError{"elements", "normal", "uniform"};
+inline constexpr std::array<std::string_view, 3> kSampledTemperature{"dT", "gradient", "scatter"};
+inline constexpr std::array<std::string_view, 2> kTemperatureGradient{"direction", "dT"};
+inline constexpr std::array<std::string_view, 2> kMaterialScatter{"E", "alpha"};
+inline constexpr std::array<std::string_view, 3> kSamplingLimits{"force", "torque", "shape_error"};
 
 // One mapping of the file and where docs/model-format.md explains its keys.
 struct Section {
@@ -59,7 +66,7 @@ struct Section {
   Keys keys;
 };
 
-inline constexpr std::array<Section, 24> kSections{{
+inline constexpr std::array<Section, 30> kSections{{
     {"top level", "### Top level", kTopLevel},
     {"nodes.NAME", "### `nodes`", kNode},
     {"materials.NAME", "### `materials`", kMaterial},
@@ -84,6 +91,12 @@ inline constexpr std::array<Section, 24> kSections{{
     {"function (type: smooth_trapezoid or paper_eq23)", "## Functions of time", kSmoothTrapezoid},
     {"function (type: table)", "## Functions of time", kTableFunction},
     {"study file (top level)", "## Load-case studies: `deploydyn study`", kStudy},
+    {"sampling", "### Sampled studies", kSampling},
+    {"sampling.length_error.N", "### Sampled studies", kLengthError},
+    {"sampling.temperature", "### Sampled studies", kSampledTemperature},
+    {"sampling.temperature.gradient", "### Sampled studies", kTemperatureGradient},
+    {"sampling.material", "### Sampled studies", kMaterialScatter},
+    {"sampling.limits", "### Sampled studies", kSamplingLimits},
 }};
 
 }  // namespace deploydyn::model_keys

@@ -6,10 +6,13 @@
 
 #include <cstddef>
 #include <filesystem>
+#include <optional>
+#include <utility>
 #include <string>
 #include <vector>
 
 #include "deploydyn/io/model_loader.hpp"
+#include "deploydyn/study/sampling.hpp"
 
 namespace deploydyn {
 
@@ -23,6 +26,8 @@ inline constexpr const char* kStudyStatusFileName = "study.json";
 struct StudyCase {
   std::string name;                 // also the name of its folder under Study::out_folder
   std::vector<Override> overrides;  // applied in this order, as `--set` would
+  // A sampled case's drawn values by name (study/sampling.hpp), for samples.csv.
+  std::vector<std::pair<std::string, double>> drawn;
 };
 
 struct Study {
@@ -32,6 +37,8 @@ struct Study {
   bool out_named = false;  // the study file gave `out`; else out_folder is results/<study name>
   int jobs = 0;               // cases run at once; 0: all (resolve_jobs)
   std::size_t reference = 0;  // index into cases: final shapes are compared with this case's
+  // A sampled study (cases drawn, not listed): cases[0] is "nominal", the others drawn.
+  std::optional<Sampling> sampling;
 
   std::filesystem::path case_folder(std::size_t index) const;
   std::filesystem::path table_file() const;  // out_folder/study.csv

@@ -13,6 +13,7 @@
 #include "deploydyn/io/text_file.hpp"
 #include "deploydyn/io/yaml_reader.hpp"
 #include "deploydyn/output/result_folder.hpp"
+#include "deploydyn/study/sampling_loader.hpp"
 
 namespace deploydyn {
 namespace {
@@ -68,18 +69,23 @@ bool sets_zero_temperature_change(const StudyCase& c) {
   return false;
 }
 
-// Loads the model under every case's overrides; an error caused by an override is reported at
-// that override's line in the study file.
-void check_cases(const std::filesystem::path& model_file, const YamlValue& model_value,
-                 const std::vector<CaseSpec>& specs) {
+// The model as its file says; an error in it names its own file, except that it is missing.
+Model load_nominal(const std::filesystem::path& model_file, const YamlValue& model_value) {
   try {
-    load_model(model_file);
+    return load_model(model_file);
   } catch (const InputError& e) {
     if (e.source() == model_file.string() && e.line() == 0) {
       model_value.fail(fmt::format("{}: {}", model_file.string(), e.problem()));
     }
     throw;  // the model itself is wrong: its own file and line say where
   }
+}
+
+// Loads the model under every case's overrides; an error caused by an override is reported at
+// that override's line in the study file.
+void check_cases(const std::filesystem::path& model_file, const YamlValue& model_value,
+                 const std::vector<CaseSpec>& specs) {
+  load_nominal(model_file, model_value);
   for (const CaseSpec& spec : specs) {
     const auto& overrides = spec.study_case.overrides;
     try {
@@ -110,6 +116,34 @@ Study read_study(const YamlValue& root, const std::string& source_name,
     study.out_named = true;
   }
   if (const auto jobs = root.find("jobs")) study.jobs = jobs->integer(0);
+
+  if (const auto sampling = root.find("sampling")) {
+    if (root.find("cases")) {
+      root.at("cases").fail("a study either lists its cases or samples them: give cases or sampling, not both");
+    }
+    if (root.find("reference")) root.at("reference").fail("a sampled study's reference is its nominal case");
+    study.sampling = read_sampling(*sampling);
+    const Model nominal = load_nominal(study.model_file, model_value);
+    std::vector<DrawnCase> drawn;
+    try {
+      drawn = draw_cases(*study.sampling, nominal);
+    } catch (const std::invalid_argument& e) {
+      sampling->fail(e.what());
+    }
+    study.cases.push_back({"nominal", {}, {}});
+    for (DrawnCase& c : drawn) {
+      StudyCase sampled{std::move(c.name), {}, std::move(c.drawn)};
+      for (auto& [path, value] : c.overrides) sampled.overrides.push_back({std::move(path), std::move(value)});
+      study.cases.push_back(std::move(sampled));
+    }
+    // Every drawn case sets the same paths the same way: the first one stands for all.
+    try {
+      load_model(study.model_file, study.cases[1].overrides);
+    } catch (const InputError& e) {
+      sampling->fail(fmt::format("the model with {}'s drawn values: {}", study.cases[1].name, e.what()));
+    }
+    return study;
+  }
 
   const YamlValue cases = root.at("cases");
   std::vector<CaseSpec> specs;

@@ -20,6 +20,8 @@
 #include "deploydyn/output/output_error.hpp"
 #include "deploydyn/output/result_folder.hpp"
 #include "deploydyn/output/run_to_folder.hpp"
+#include "deploydyn/output/checked_file.hpp"
+#include "deploydyn/study/sampling_statistics.hpp"
 #include "deploydyn/study/study_table.hpp"
 
 namespace deploydyn {
@@ -86,6 +88,16 @@ bool completed_earlier(const Study& study, std::size_t index) {
   }
 }
 
+// The study's own files, by role, as study.json lists them.
+nlohmann::ordered_json study_files(const Study& study) {
+  nlohmann::ordered_json files = {{"table", kStudyTableFileName}};
+  if (study.sampling) {
+    files["samples"] = kSamplesFileName;
+    files["statistics"] = kStatisticsFileName;
+  }
+  return files;
+}
+
 // study.json at the end: the study's status and each case's; "failed" with `table_error` when
 // study.csv could not be written. `short_form`: the status only, for a disk too full for more.
 std::string study_status_json(const Study& study, const std::vector<CaseOutcome>& outcomes,
@@ -111,7 +123,7 @@ std::string study_status_json(const Study& study, const std::vector<CaseOutcome>
                                        : "failed";
   if (!table_error.empty()) j["message"] = table_error;
   j["cases"] = std::move(cases);
-  j["files"] = {{"table", kStudyTableFileName}};
+  j["files"] = study_files(study);
   return j.dump(short_form ? -1 : 2, ' ', false, nlohmann::ordered_json::error_handler_t::replace);
 }
 
@@ -173,7 +185,10 @@ void coordinate(StudyChannel& channel, Take take, Done done, std::vector<CaseOut
 std::vector<CaseOutcome> run_study(const Study& study, const StudyControl& control) {
   const std::size_t n_cases = study.cases.size();
   ResultFolder folder(study.out_folder, kStudyStatusFileName);
-  folder.start("study", study.model_file.string(), {{"table", kStudyTableFileName}});
+  ResultFolder::Files files;
+  const nlohmann::ordered_json listed = study_files(study);
+  for (const auto& [role, name] : listed.items()) files.emplace_back(role, name.get<std::string>());
+  folder.start("study", study.model_file.string(), files);
   std::vector<CaseOutcome> outcomes(n_cases);
   std::vector<std::size_t> to_run;
   for (std::size_t i = 0; i < n_cases; ++i) {
@@ -241,6 +256,10 @@ std::vector<CaseOutcome> run_study(const Study& study, const StudyControl& contr
       results.push_back(outcome.result);
     }
     write_study_table(study.table_file(), study, results);
+    if (study.sampling) {
+      write_file_atomically(study.out_folder / kSamplesFileName, samples_csv(study));
+      write_file_atomically(study.out_folder / kStatisticsFileName, statistics_csv(study, results));
+    }
   } catch (const OutputError& error) {
     table_error = error;
   }

@@ -57,8 +57,10 @@ std::string study_table_csv(const Study& study, const std::vector<CaseResult>& o
                                             outcomes.size(), study.cases.size()));
   }
   // Columns that depend on the cases: overrides in order of first use, drivers by name.
+  // (A sampled study's drawn values are in samples.csv, not here: there may be thousands.)
   std::vector<std::string> override_paths;
   for (const StudyCase& c : study.cases) {
+    if (study.sampling) break;
     for (const Override& o : c.overrides) {
       if (std::find(override_paths.begin(), override_paths.end(), o.path) == override_paths.end()) {
         override_paths.push_back(o.path);

@@ -2,7 +2,8 @@
 // study.csv: the cases of a study side by side, one row per case in the study's order.
 // Columns:
 //   case, status (completed, failed, interrupted);
-//   one column per override path set by any case (its value in that case, empty if unset);
+//   one column per override path set by any case (its value in that case, empty if unset;
+//     none for a sampled study: its drawn values are in samples.csv);
 //   peak_mstrain, peak_mstrain_element: largest |mechanical strain| over all bars and times,
 //     and its bar; peak_force (N), peak_force_element: the same for |axial force|;
 //   peak_torque.<driver> (N·m) or peak_force.<driver> (N): largest |driver effort|;

@@ -1,0 +1,85 @@
+#pragma once
+// A sampled study: cases drawn instead of listed (docs/model-format.md, "Sampled studies").
+// Each case is the model with drawn overrides, as `--set` would apply them, so that every case
+// folder's model.yaml is the exact model that ran:
+//   - length errors (m) per member group: elements.<bar>.length = L0 + δ, δ normal (std) or
+//     uniform (± tolerance), for bars and beams;
+//   - a temperature field (°C), each member's own constant ΔT (elements.<m>.dT):
+//       ΔT_m = ΔT_u + G · ((s_m − s_min)/(s_max − s_min) − ½) + σ_T z_m,
+//     ΔT_u uniform over a range (the day's temperature), G uniform over a range (sun on one
+//     side: the hottest members are G warmer than the coldest), s_m = d · (midpoint of m) along
+//     the direction d, z_m standard normal (member-to-member scatter);
+//   - material scatter: each member's E and α times a normal factor of mean 1 and the given
+//     coefficient of variation (the member gets its own copy of its material).
+// Draws come from study/random_draws.hpp: a case is the same whichever process draws it.
+// Case "nominal" (the model as written) comes first and is the reference of shape errors.
+
+#include <Eigen/Core>
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "deploydyn/model/model.hpp"
+#include "deploydyn/study/random_draws.hpp"
+
+namespace deploydyn {
+
+// A scalar random variable, by its quantile function.
+struct Distribution {
+  enum class Kind { fixed, uniform, normal };
+  Kind kind = Kind::fixed;
+  double a = 0.0;  // fixed: the value; uniform: the low end; normal: the mean
+  double b = 0.0;  // uniform: the high end; normal: the standard deviation
+
+  double quantile(double p) const;  // p in (0, 1)
+  double mean() const;
+  double standard_deviation() const;
+};
+
+struct LengthErrorGroup {
+  std::vector<std::string> elements;  // names or shell patterns (fnmatch)
+  Distribution error_m;               // δ added to the reference length
+};
+
+struct TemperatureField {
+  Distribution uniform_C;                  // ΔT_u
+  Eigen::Vector3d direction = Eigen::Vector3d::UnitX();
+  Distribution gradient_C;                 // G
+  double scatter_C = 0.0;                  // σ_T
+};
+
+// Thresholds whose exceedance probability the statistics report.
+struct SamplingLimits {
+  std::optional<double> force_N;        // a member's peak |axial force|
+  std::optional<double> torque_Nm;      // a driver's peak |effort| (N for a linear driver)
+  std::optional<double> shape_error_m;  // the final shape's largest distance from nominal's
+};
+
+struct Sampling {
+  SamplingMethod method = SamplingMethod::latin_hypercube;
+  long n_cases = 0;  // drawn cases, besides nominal
+  std::uint64_t seed = 0;
+  std::vector<LengthErrorGroup> length_errors;
+  std::optional<TemperatureField> temperature;
+  double E_cv = 0.0;      // coefficient of variation of E
+  double alpha_cv = 0.0;  // and of α
+  SamplingLimits limits;
+};
+
+// One drawn case: its name, its overrides, and the drawn values (for samples.csv), named
+// "dT_C", "gradient_C", "length_error_m.<m>", "dT_C.<m>", "E_factor.<m>", "alpha_factor.<m>".
+struct DrawnCase {
+  std::string name;
+  std::vector<std::pair<std::string, std::string>> overrides;  // path, value
+  std::vector<std::pair<std::string, double>> drawn;
+};
+
+// The drawn cases of `sampling` for the model `nominal` (not nominal itself). Throws
+// std::invalid_argument when a length-error group matches no bar or beam, or a member's copy of
+// its material would take a name the model already uses.
+std::vector<DrawnCase> draw_cases(const Sampling& sampling, const Model& nominal);
+
+}  // namespace deploydyn
