@@ -6,6 +6,12 @@
 #include <gtest/gtest.h>
 
 #include <atomic>
+#include <condition_variable>
+#include <deque>
+#include <fstream>
+#include <mutex>
+#include <set>
+#include <thread>
 #include <cmath>
 #include <map>
 #include <nlohmann/json.hpp>
@@ -13,7 +19,10 @@
 #include <string>
 #include <vector>
 
+#include "deploydyn/elements/element_kinds.hpp"
 #include "deploydyn/io/model_loader.hpp"
+#include "deploydyn/model/dof_map.hpp"
+#include "deploydyn/output/output_error.hpp"
 #include "deploydyn/output/run_to_folder.hpp"
 #include "deploydyn/study/study_loader.hpp"
 #include "support/cli.hpp"
@@ -221,6 +230,165 @@ TEST(StudyRunner, AStopLeavesTheRestNotStarted) {
   const auto rows = read_table(study.table_file());
   EXPECT_EQ(rows[2].at("status"), "interrupted");
   EXPECT_EQ(rows[1].at("shape_error"), "");
+}
+
+}  // namespace
+}  // namespace deploydyn
+
+namespace deploydyn {
+namespace {
+
+// The processes of a distributed study as threads of this one (what app/mpi_channel.cpp does
+// over MPI): reports queue up for process 0, each worker waits for its assignment.
+class ThreadChannels {
+ public:
+  explicit ThreadChannels(int size) : assignments_(static_cast<std::size_t>(size)) {}
+
+  class Channel final : public StudyChannel {
+   public:
+    Channel(ThreadChannels& all, int rank) : all_(all), rank_(rank) {}
+    int rank() const override { return rank_; }
+    int size() const override { return static_cast<int>(all_.assignments_.size()); }
+    std::optional<WorkerReport> poll_report() override {
+      const std::lock_guard lock(all_.mutex_);
+      if (all_.reports_.empty()) return std::nullopt;
+      WorkerReport report = all_.reports_.front();
+      all_.reports_.pop_front();
+      return report;
+    }
+    void assign(int rank, long case_index) override {
+      const std::lock_guard lock(all_.mutex_);
+      all_.assignments_[static_cast<std::size_t>(rank)] = case_index;
+      all_.changed_.notify_all();
+    }
+    long report_and_wait(const WorkerReport& report) override {
+      std::unique_lock lock(all_.mutex_);
+      all_.reports_.push_back(report);
+      auto& mine = all_.assignments_[static_cast<std::size_t>(rank_)];
+      all_.changed_.wait(lock, [&] { return mine.has_value(); });
+      const long case_index = *mine;
+      mine.reset();
+      return case_index;
+    }
+
+   private:
+    ThreadChannels& all_;
+    int rank_;
+  };
+
+ private:
+  std::mutex mutex_;
+  std::condition_variable changed_;
+  std::deque<WorkerReport> reports_;
+  std::vector<std::optional<long>> assignments_;
+};
+
+// Without its wall time column: the only one that differs between two runs of a study.
+std::vector<std::map<std::string, std::string>> table_without_wall_time(const std::filesystem::path& file) {
+  auto rows = read_table(file);
+  for (auto& row : rows) row.erase("wall_time");
+  return rows;
+}
+
+TEST(StudyRunner, ProcessesGetCasesAsTheyAskAndWriteWhatOneProcessWrites) {
+  ScratchFolder folder("study_distributed");
+  const Study serial = short_general_study(folder.path() / "serial", 1);
+  run_study(serial);
+  Study distributed = short_general_study(folder.path() / "distributed", 1);
+  ThreadChannels channels(3);
+  ThreadChannels::Channel coordinator(channels, 0), first(channels, 1), second(channels, 2);
+  std::vector<CaseOutcome> outcomes;
+  {
+    StudyControl on_first, on_second, control;
+    on_first.channel = &first;
+    on_second.channel = &second;
+    control.channel = &coordinator;
+    std::jthread worker_1([&] { run_study_worker(distributed, on_first); });
+    std::jthread worker_2([&] { run_study_worker(distributed, on_second); });
+    outcomes = run_study(distributed, control);
+  }
+  std::set<int> processes;
+  for (const CaseOutcome& outcome : outcomes) {
+    EXPECT_EQ(outcome.status, RunStatus::completed) << outcome.message;
+    processes.insert(outcome.process);
+  }
+  EXPECT_GE(processes.size(), 2u) << "the workers must have taken cases";
+  EXPECT_EQ(table_without_wall_time(distributed.table_file()), table_without_wall_time(serial.table_file()));
+  for (std::size_t i = 0; i < serial.cases.size(); ++i) {
+    EXPECT_EQ(read_text(distributed.case_folder(i) / "history.csv"), read_text(serial.case_folder(i) / "history.csv"));
+  }
+}
+
+// study.csv is made from the case folders: what a folder gives back equals what the run had in
+// memory, number for number.
+TEST(StudyRunner, CaseResultReadFromTheFolderEqualsTheRunsOwn) {
+  ScratchFolder folder("study_case_result");
+  const Study study = short_general_study(folder.path(), 1);
+  const std::vector<CaseOutcome> outcomes = run_study(study);
+  for (const CaseOutcome& outcome : outcomes) {
+    ASSERT_TRUE(outcome.model.has_value());
+    const Model& model = *outcome.model;
+    const CaseResult& result = outcome.result;
+    ASSERT_EQ(result.peak_force_N.size(), model.bars.size());
+    for (std::size_t b = 0; b < model.bars.size(); ++b) {
+      EXPECT_EQ(result.peak_force_N[b].name, model.bars[b].name);
+      const int force = quantity_index(*element_kinds()[0], model.dimension, "axial_force_N");
+      EXPECT_EQ(result.peak_force_N[b].peak,
+                outcome.envelope.elements()[0].at(static_cast<int>(b), force).peak_magnitude());
+    }
+    ASSERT_EQ(result.drivers.size(), 1u);
+    EXPECT_EQ(result.drivers[0].peak, outcome.envelope.drivers()[0].peak_magnitude());
+    const DofMap dofs(model);
+    for (int node = 0; node < model.n_nodes(); ++node) {
+      EXPECT_EQ(result.final_positions_m.at(model.nodes[node].name).x(), outcome.envelope.last().q[dofs.index(node, 0)]);
+      EXPECT_EQ(result.final_positions_m.at(model.nodes[node].name).y(), outcome.envelope.last().q[dofs.index(node, 1)]);
+    }
+    EXPECT_EQ(result.steps, outcome.report.steps);
+    EXPECT_EQ(result.time_reached_s, outcome.report.time_reached_s);
+  }
+  // A folder whose run has not ended gives nothing; a damaged one is an error naming its file.
+  const auto running = study.case_folder(0) / "summary.json";
+  std::string text = read_text(running);
+  text.replace(text.find("\"completed\""), 11, "\"running\"");
+  std::ofstream(running) << text;
+  EXPECT_FALSE(read_case_result(study.case_folder(0)).has_value());
+  std::ofstream(study.case_folder(1) / "envelopes.csv") << "item,kind,quantity,unit,min,t_min_s,max,t_max_s\n1,bar,axial_force_N,N,x,0,1,0\n";
+  try {
+    read_case_result(study.case_folder(1));
+    ADD_FAILURE() << "a damaged envelopes.csv must be an error";
+  } catch (const OutputError& e) {
+    EXPECT_NE(std::string(e.what()).find("envelopes.csv"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("line 2"), std::string::npos) << e.what();
+  }
+}
+
+// Resuming keeps the completed cases of the same model and runs the others: a case whose
+// override changed, and one that had failed.
+TEST(StudyRunner, ResumeRunsOnlyWhatIsNotCompletedForThisModel) {
+  ScratchFolder folder("study_resume");
+  Study study = short_general_study(folder.path(), 1);
+  run_study(study);
+  const auto hot_history = std::filesystem::last_write_time(study.case_folder(0) / "history.csv");
+  study.cases[2].overrides[0].value = "-100";  // cold changed
+  StudyControl control;
+  control.resume = true;
+  std::vector<std::string> ran;
+  control.case_done = [&](std::size_t i, const CaseOutcome& outcome) {
+    if (!outcome.resumed) ran.push_back(study.cases[i].name);
+  };
+  const std::vector<CaseOutcome> outcomes = run_study(study, control);
+  EXPECT_EQ(ran, std::vector<std::string>{"cold"});
+  EXPECT_TRUE(outcomes[0].resumed);
+  EXPECT_TRUE(outcomes[1].resumed);
+  EXPECT_FALSE(outcomes[2].resumed);
+  EXPECT_EQ(std::filesystem::last_write_time(study.case_folder(0) / "history.csv"), hot_history);
+  const auto rows = read_table(study.table_file());
+  EXPECT_EQ(rows[2].at("thermal.dT"), "-100");
+  EXPECT_EQ(rows[0].at("status"), "completed");
+  EXPECT_FALSE(rows[0].at("peak_force").empty()) << "a kept case's results are in the table";
+  const nlohmann::json status = nlohmann::json::parse(read_text(study.out_folder / "study.json"));
+  EXPECT_TRUE(status["cases"]["hot"]["resumed"].get<bool>());
+  EXPECT_FALSE(status["cases"]["cold"].contains("resumed"));
 }
 
 }  // namespace
