@@ -88,7 +88,8 @@ def slow_study(tmp_path):
     run_cli("generate", "roof", "--units", 40, "--trusses", 4, "--out", roof)
     study = tmp_path / "study.yaml"
     study.write_text("model: roof.yaml\ncases:\n" +
-                     "".join(f"  dT{t}: {{thermal.dT: {t}}}\n" for t in (0, 10, 20, 30)))
+                     "".join(f"  dT{t}: {{thermal.dT: {t}, analysis.output_interval: 0.25}}\n"
+                             for t in (0, 10, 20, 30)))
     return study
 
 
