@@ -48,7 +48,8 @@ void BM_RoofStudy(benchmark::State& state) {
   for (int k = 0; k < state.range(1); ++k) {
     const double delta_t_C = planar ? planar_C[k] : spatial_C[k];
     study.cases.push_back({fmt::format("case{}", k),
-                           {parse_override(fmt::format("thermal.dT={}", delta_t_C))}});
+                           {parse_override(fmt::format("thermal.dT={}", delta_t_C))},
+                           {}});
   }
   study.reference = 1;
   for (auto _ : state) {

@@ -181,9 +181,9 @@ TEST(StudyRunner, AFailingCaseDoesNotStopTheOthers) {
   ScratchFolder folder("study_failing_case");
   Study study = short_general_study(folder.path(), 2);
   // Not through the loader, which would refuse the bad override before running anything.
-  study.cases.insert(study.cases.begin() + 1, {"typo", {{"thermal.dX", "1"}}});
+  study.cases.insert(study.cases.begin() + 1, {"typo", {{"thermal.dX", "1"}}, {}});
   study.cases.push_back(
-      {"jammed", {{"thermal.dT", "-170"}, {"analysis.newton.max_iterations", "1"}}});
+      {"jammed", {{"thermal.dT", "-170"}, {"analysis.newton.max_iterations", "1"}}, {}});
   std::atomic<int> n_reported{0};
   StudyControl control;
   control.case_done = [&](std::size_t, const CaseOutcome&) { ++n_reported; };

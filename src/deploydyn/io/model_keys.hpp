@@ -42,7 +42,7 @@ inline constexpr std::array<std::string_view, 9> kContinuation{
     "linear_solver"};
 inline constexpr std::array<std::string_view, 8> kModal{"type", "modes", "at", "shift",
                                                         "load_steps", "mass", "newton", "linear_solver"};
-inline constexpr std::array<std::string_view, 4> kOutput{"history", "summary", "vtk", "select"};
+inline constexpr std::array<std::string_view, 5> kOutput{"history", "summary", "vtk", "hdf5", "select"};
 inline constexpr std::array<std::string_view, 3> kOutputSelect{"nodes", "elements", "quantities"};
 inline constexpr std::array<std::string_view, 2> kConstantFunction{"type", "value"};
 inline constexpr std::array<std::string_view, 5> kSmoothStep{"type", "t0", "v0", "t1", "v1"};

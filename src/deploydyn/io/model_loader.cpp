@@ -26,6 +26,7 @@
 #include "deploydyn/output/envelope_table.hpp"
 #include "deploydyn/output/history_layout.hpp"
 #include "deploydyn/output/result_folder.hpp"
+#include "deploydyn/output/hdf5_writer.hpp"
 #include "deploydyn/output/vtk_writer.hpp"
 
 namespace deploydyn {
@@ -829,6 +830,7 @@ class ModelReader {
     if (history) output.history_file = file_name(*history);
     if (summary) output.summary_file = file_name(*summary);
     if (const auto vtk = spec.find("vtk")) output.vtk = vtk->choice({"false", "true"}) == 1;
+    if (const auto hdf5 = spec.find("hdf5")) output.hdf5 = hdf5->choice({"false", "true"}) == 1;
     if (const auto select = spec.find("select")) read_selection(*select);
     // Each file of the run's folder must survive the others: a history named summary.json
     // would be overwritten at the end, one named model.yaml would lose the model as run.
@@ -837,12 +839,13 @@ class ModelReader {
           std::tuple{summary, output.summary_file, output.history_file}}) {
       if (!value) continue;
       const std::vector<std::string> taken{kRunModelFileName, kLockFileName, kVtkFolderName, kEnvelopeFileName,
-                                           other, other + ".tmp"};
+                                           kHdf5FileName,     kXdmfFileName, other,          other + ".tmp"};
       if (std::find(taken.begin(), taken.end(), name) != taken.end()) {
         value->fail(fmt::format("'{}' is taken in the result folder; the run writes {} (model), "
-                                "{} (summary), {} (history), {} (envelopes), {} (lock) and {}/ (VTK)",
+                                "{} (summary), {} (history), {} (envelopes), {} (lock), {}/ (VTK) "
+                                "and {}, {} (HDF5)",
                                 name, kRunModelFileName, output.summary_file, output.history_file,
-                                kEnvelopeFileName, kLockFileName, kVtkFolderName));
+                                kEnvelopeFileName, kLockFileName, kVtkFolderName, kHdf5FileName, kXdmfFileName));
       }
     }
   }

@@ -375,6 +375,8 @@ void emit_analysis(YAML::Emitter& out, const Model& model) {
   out << model.output.summary_file;
   emit_key(out, "vtk");
   out << model.output.vtk;
+  emit_key(out, "hdf5");
+  out << model.output.hdf5;
   const OutputSelection& select = model.output.select;
   if (!select.empty()) {
     emit_key(out, "select");

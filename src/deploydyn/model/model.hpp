@@ -237,6 +237,7 @@ struct OutputOptions {
   std::string history_file = "history.csv";
   std::string summary_file = "summary.json";
   bool vtk = false;  // also a ParaView time series in vtk/ (output/vtk_writer.hpp)
+  bool hdf5 = false;  // also history.h5 and its index history.xdmf (output/hdf5_writer.hpp)
   OutputSelection select;
 };
 

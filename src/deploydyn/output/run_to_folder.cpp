@@ -17,6 +17,7 @@
 #include "deploydyn/output/result_folder.hpp"
 #include "deploydyn/output/run_folder.hpp"
 #include "deploydyn/output/summary_writer.hpp"
+#include "deploydyn/output/hdf5_writer.hpp"
 #include "deploydyn/output/vtk_writer.hpp"
 
 namespace deploydyn {
@@ -69,6 +70,8 @@ RunReport run_to_folder(const Model& model, const std::filesystem::path& folder,
     std::vector<RecordSink*> sinks{&history, &envelope};
     std::optional<VtkWriter> vtk;
     if (model.output.vtk) sinks.push_back(&vtk.emplace(folder / kVtkFolderName, model));
+    std::optional<Hdf5Writer> hdf5;
+    if (model.output.hdf5) sinks.push_back(&hdf5.emplace(folder, model));
     FanOut sink(std::move(sinks));
     // Writing overlaps solving: the records reach the files from a thread of their own.
     BackgroundSink background(sink);
@@ -77,6 +80,7 @@ RunReport run_to_folder(const Model& model, const std::filesystem::path& folder,
                           stop_on_write_failure(control, stop, [&] { return background.failed(); }));
     background.finish();
     history.flush();
+    if (hdf5) hdf5->finish();
   } catch (const OutputError& error) {
     output_error = error;
     record_output_failure(report, error);

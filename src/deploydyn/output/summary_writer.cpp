@@ -12,6 +12,7 @@
 #include "deploydyn/output/history_layout.hpp"
 #include "deploydyn/output/plausibility.hpp"
 #include "deploydyn/output/result_folder.hpp"
+#include "deploydyn/output/hdf5_writer.hpp"
 #include "deploydyn/output/vtk_writer.hpp"
 #include "deploydyn/solvers/generalized_alpha.hpp"
 
@@ -178,6 +179,10 @@ std::vector<std::pair<std::string, std::string>> run_files(const Model& model) {
                             model.analysis.type == AnalysisType::dynamic;
   if (time_history) files.emplace_back("envelopes", kEnvelopeFileName);
   if (model.output.vtk) files.emplace_back("vtk", kVtkFolderName);
+  if (model.output.hdf5 && time_history) {
+    files.emplace_back("hdf5", kHdf5FileName);
+    files.emplace_back("xdmf", kXdmfFileName);
+  }
   return files;
 }
 

@@ -98,7 +98,7 @@ void remove_vtk_series(const std::filesystem::path& folder) {
 std::string vtk_frame_file_name(int index) { return fmt::format("frame_{:06d}.vtu", index); }
 
 VtkWriter::VtkWriter(const std::filesystem::path& folder, const Model& model)
-    : folder_(folder), model_(model), dofs_(model) {
+    : folder_(folder), model_(model), mesh_(model) {
   std::error_code error;
   std::filesystem::create_directories(folder_, error);
   if (error) throw OutputError("cannot create folder", folder_, error.value());
@@ -124,15 +124,12 @@ VtkWriter::~VtkWriter() {
 }
 
 void VtkWriter::record(const StepRecord& record) {
-  const bool whole_state = record.q.size() == dofs_.n_dofs() && record.v.size() == dofs_.n_dofs();
-  int n_results = 0;
-  for (const ElementResults& results : record.elements) n_results += results.n_elements();
-  const bool all_kinds = record.elements.size() == element_kinds().size();
-  if (!whole_state || !all_kinds || n_results != n_elements(model_)) {
+  if (!mesh_.fits(record)) {
     throw std::invalid_argument(fmt::format(
         "VtkWriter::record: the record does not fit the model: {} coordinates and {} rates for {}, "
-        "{} element results for {}",
-        record.q.size(), record.v.size(), dofs_.n_dofs(), n_results, n_elements(model_)));
+        "{} element types for {}",
+        record.q.size(), record.v.size(), model_.n_nodes() * model_.dimension, record.elements.size(),
+        element_kinds().size()));
   }
   write_frame(record, folder_ / vtk_frame_file_name(n_frames_));
   append_to_collection(n_frames_, record.time_s);
@@ -140,14 +137,9 @@ void VtkWriter::record(const StepRecord& record) {
 }
 
 void VtkWriter::write_frame(const StepRecord& r, const std::filesystem::path& file) {
-  const int n_nodes = model_.n_nodes();
-  const std::vector<ElementRef> cells = all_elements(model_);
-  const int n_cells = static_cast<int>(cells.size());
-  const int dimension = model_.dimension;
-  // Component k of node i in a 3-vector (z = 0 in 2D) of the global vector x.
-  auto nodal = [&](const Eigen::VectorXd& x, int i, int k) {
-    return k < dimension ? x[dofs_.index(i, k)] : 0.0;
-  };
+  const int n_nodes = mesh_.n_points();
+  const int n_cells = mesh_.n_cells();
+  const std::vector<ElementRef>& cells = mesh_.cells();
 
   text_.clear();
   const Out out(text_);
@@ -164,57 +156,28 @@ void VtkWriter::write_frame(const StepRecord& r, const std::filesystem::path& fi
                  "      <PointData Vectors=\"displacement_m\">\n",
                  r.time_s, n_nodes, n_cells);
   float_array(text_, "displacement_m", n_nodes, 3,
-              [&](int i, int k) { return nodal(r.q, i, k) - model_.nodes[i].position_m[k]; });
-  float_array(text_, "velocity_m_s", n_nodes, 3, [&](int i, int k) { return nodal(r.v, i, k); });
+              [&](int i, int k) { return mesh_.nodal(r.q, i, k) - model_.nodes[i].position_m[k]; });
+  float_array(text_, "velocity_m_s", n_nodes, 3, [&](int i, int k) { return mesh_.nodal(r.v, i, k); });
   name_array(text_, "node_name", n_nodes, [&](int i) -> const std::string& { return model_.nodes[i].name; });
   fmt::format_to(out, "      </PointData>\n      <CellData Scalars=\"axial_force_N\">\n");
-  // One array per recorded quantity of every element type (first of its name: types that share
-  // a quantity, such as the axial force, share the array; others get NaN there).
-  const auto kinds = element_kinds();
-  std::vector<std::string_view> arrays;
-  for (const ElementKind* kind : kinds) {
-    if (kind->n_elements(model_) == 0) continue;  // a bar-only model gets no beam arrays
-    for (const ResultQuantity& quantity : kind->quantities(model_.dimension)) {
-      if (quantity.recorded && std::find(arrays.begin(), arrays.end(), quantity.name) == arrays.end()) {
-        arrays.push_back(quantity.name);
-      }
-    }
+  for (std::size_t a = 0; a < mesh_.cell_arrays().size(); ++a) {
+    float_array(text_, mesh_.cell_arrays()[a].c_str(), n_cells, 1,
+                [&](int c, int) { return mesh_.cell_value(r, a, c); });
   }
-  std::vector<int> group_of_cell;  // its type's place in element_kinds(): r.elements[group]
-  group_of_cell.reserve(cells.size());
-  for (const ElementRef& cell : cells) {
-    group_of_cell.push_back(static_cast<int>(std::find(kinds.begin(), kinds.end(), cell.kind) - kinds.begin()));
-  }
-  for (const std::string_view array : arrays) {
-    std::vector<int> index_in_kind;
-    for (const ElementKind* kind : kinds) index_in_kind.push_back(quantity_index(*kind, model_.dimension, array));
-    float_array(text_, std::string(array).c_str(), n_cells, 1, [&](int c, int) {
-      const int k = index_in_kind[static_cast<std::size_t>(group_of_cell[c])];
-      return k < 0 ? std::numeric_limits<double>::quiet_NaN()
-                   : r.elements[static_cast<std::size_t>(group_of_cell[c])].at(cells[c].index, k);
-    });
-  }
-  float_array(text_, "temperature_change_C", n_cells, 1, [&](int c, int) {
-    return cells[c].kind->temperature_change_C(model_, cells[c].index, r.time_s);
-  });
   name_array(text_, "element_name", n_cells,
              [&](int c) -> const std::string& { return cells[c].kind->element_name(model_, cells[c].index); });
   name_array(text_, "element_type", n_cells, [&](int c) { return std::string(cells[c].kind->name()); });
   fmt::format_to(out, "      </CellData>\n      <Points>\n");
-  float_array(text_, "Points", n_nodes, 3, [&](int i, int k) { return nodal(r.q, i, k); });
-  if (cells_text_.empty()) cells_text_ = cells_block(cells);  // the same in every frame
+  float_array(text_, "Points", n_nodes, 3, [&](int i, int k) { return mesh_.nodal(r.q, i, k); });
+  if (cells_text_.empty()) cells_text_ = cells_block();  // the same in every frame
   text_ += cells_text_;
   write_file(file, text_);
 }
 
-std::string VtkWriter::cells_block(const std::vector<ElementRef>& cells) const {
-  std::vector<std::int64_t> connectivity, offsets;
-  for (const ElementRef& cell : cells) {
-    for (int i = 0; i < cell.kind->n_element_nodes(); ++i) {
-      connectivity.push_back(cell.kind->element_node(model_, cell.index, i));
-    }
-    offsets.push_back(static_cast<std::int64_t>(connectivity.size()));
-  }
+std::string VtkWriter::cells_block() const {
+  const auto& connectivity = mesh_.connectivity();
+  const auto& offsets = mesh_.offsets();
+  const std::vector<ElementRef>& cells = mesh_.cells();
   std::string text = "      </Points>\n      <Cells>\n";
   binary_array<std::int64_t>(text, "Int64", "connectivity", static_cast<int>(connectivity.size()), 1,
                              [&](int i, int) { return connectivity[static_cast<std::size_t>(i)]; });

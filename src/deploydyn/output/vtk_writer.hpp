@@ -27,6 +27,7 @@
 #include "deploydyn/elements/element_kinds.hpp"
 #include "deploydyn/model/dof_map.hpp"
 #include "deploydyn/model/model.hpp"
+#include "deploydyn/output/mesh_frame.hpp"
 #include "deploydyn/output/step_record.hpp"
 
 namespace deploydyn {
@@ -60,11 +61,11 @@ class VtkWriter final : public RecordSink {
   void write_frame(const StepRecord& record, const std::filesystem::path& file);
   void append_to_collection(int frame, double time_s);
   // From </Points> to the end: the cells' connectivity, offsets and types, which never change.
-  std::string cells_block(const std::vector<ElementRef>& cells) const;
+  std::string cells_block() const;
 
   std::filesystem::path folder_;
   const Model& model_;
-  DofMap dofs_;
+  MeshLayout mesh_;
   int n_frames_ = 0;
   std::FILE* collection_ = nullptr;  // deploydyn.pvd, open for the writer's life
   long collection_footer_at_ = 0;    // byte offset of "  </Collection>" in it

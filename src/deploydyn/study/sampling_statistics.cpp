@@ -71,7 +71,8 @@ std::string samples_csv(const Study& study) {
     text += c.name;
     for (const std::string& name : names) {
       const auto value = values.find(name);
-      text += "," + (value == values.end() ? std::string() : number(value->second));
+      text += ',';
+      if (value != values.end()) text += number(value->second);
     }
     text += "\n";
   }
@@ -106,8 +107,9 @@ std::string statistics_csv(const Study& study, const std::vector<CaseResult>& re
     }
     if (!r.peak_force_N.empty()) largest.values.push_back(most);
     for (const CaseResult::DriverPeak& d : r.drivers) {
-      row_of(drivers, "driver." + d.name,
-             {d.torque ? "peak_torque" : "peak_force", "driver." + d.name, d.torque ? "N·m" : "N", {},
+      const std::string item = fmt::format("driver.{}", d.name);
+      row_of(drivers, item,
+             {d.torque ? "peak_torque" : "peak_force", item, d.torque ? "N·m" : "N", {},
               d.torque ? limits.torque_Nm : limits.force_N})
           .values.push_back(d.peak);
     }

@@ -47,7 +47,7 @@ CaseSpec read_case(const std::string& name, const YamlValue& value) {
         "the model as it is; got " +
         value.description());
   }
-  CaseSpec spec{{name, {}}, value, {}};
+  CaseSpec spec{{name, {}, {}}, value, {}};
   for (const auto& [path, setting] : value.entries()) {
     if (setting.description() == "nothing") setting.fail("expected a value to set, got nothing");
     // A list or mapping is set as --set takes it, in YAML flow form.

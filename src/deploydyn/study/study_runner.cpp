@@ -229,7 +229,9 @@ std::vector<CaseOutcome> run_study(const Study& study, const StudyControl& contr
   {
     // Without other processes the calling thread is one of the workers: with one job no
     // thread is started. With them it answers them, and threads run this process's cases.
-    const int n_threads = distributed ? std::max(study.jobs, 1) : resolve_jobs(study.jobs, to_run.size());
+    // Under MPI a process is one worker (mpirun binds it to a core) unless jobs says more.
+    const int n_threads =
+        control.channel != nullptr ? std::max(study.jobs, 1) : resolve_jobs(study.jobs, to_run.size());
     std::vector<std::jthread> helpers;
     for (int t = distributed ? 0 : 1; t < n_threads; ++t) {
       try {

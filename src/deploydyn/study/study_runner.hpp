@@ -64,7 +64,7 @@ struct StudyControl {
 // it owns (output/result_folder.hpp; status in study.json). Outcomes are in the study's case
 // order. Throws OutputError when the folder is in use or study.csv cannot be written.
 // With a channel (process 0 of a distributed study) it also hands cases to the other processes
-// as they ask, and this process runs study.jobs cases at a time (0: one). A worker process that
+// as they ask. Under MPI (any channel) this process runs study.jobs cases at a time (0: one). A worker process that
 // dies (on this host) loses only its running case, reported as failed.
 std::vector<CaseOutcome> run_study(const Study& study, const StudyControl& control = {});
 
