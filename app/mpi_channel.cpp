@@ -1,9 +1,13 @@
 #include "mpi_channel.hpp"
 
+#include "exit_codes.hpp"
+
+#include <cstdio>
 #include <cstdlib>
 #include <exception>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 #include <nlohmann/json.hpp>
 
@@ -38,7 +42,17 @@ class MpiChannel final : public StudyChannel {
   ~MpiChannel() override {
     // Leaving by an exception (bad input, a folder in use) the other processes may be waiting
     // for this one: end them all rather than wait in MPI_Finalize.
-    if (std::uncaught_exceptions() > 0) MPI_Abort(MPI_COMM_WORLD, 2);
+    if (std::uncaught_exceptions() > 0) MPI_Abort(MPI_COMM_WORLD, kExitBadInput);
+    // MPI_Finalize waits for every process, a dead one too (mpirun --enable-recovery): with
+    // every result written, process 0 ends the survivors instead.
+    if (!lost_.empty()) {
+      std::string ranks;
+      for (const int rank : lost_) ranks += (ranks.empty() ? "" : ", ") + std::to_string(rank);
+      std::fprintf(stderr, "process %s died; its case is listed as failed and every other result is "
+                           "written; ending the other processes (MPI_Abort)\n", ranks.c_str());
+      std::fflush(nullptr);
+      MPI_Abort(MPI_COMM_WORLD, kExitSolverFailure);
+    }
     MPI_Finalize();
   }
   MpiChannel(const MpiChannel&) = delete;
@@ -72,6 +86,8 @@ class MpiChannel final : public StudyChannel {
     MPI_Send(&case_index, 1, MPI_LONG, rank, kAssignTag, MPI_COMM_WORLD);
   }
 
+  void lost(int rank) override { lost_.push_back(rank); }
+
   long report_and_wait(const WorkerReport& report) override {
     const std::string text = nlohmann::json{{"case", report.finished_case},
                                             {"status", static_cast<int>(report.status)},
@@ -91,6 +107,7 @@ class MpiChannel final : public StudyChannel {
   static constexpr int kAssignTag = 2;
   int rank_ = 0;
   int size_ = 1;
+  std::vector<int> lost_;
 };
 
 std::unique_ptr<StudyChannel> join_mpi_if_launched() {

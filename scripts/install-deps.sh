@@ -5,13 +5,15 @@ set -euo pipefail
 
 packages=(
   build-essential cmake ninja-build pkg-config
-  libeigen3-dev libyaml-cpp-dev libcli11-dev libfmt-dev nlohmann-json3-dev
+  libeigen3-dev libyaml-cpp-dev libyaml-dev libcli11-dev libfmt-dev nlohmann-json3-dev
   libgtest-dev libgmock-dev libbenchmark-dev libsuitesparse-dev libspectra-dev
   clang libclang-rt-14-dev
-  python3 python3-numpy python3-matplotlib python3-vtk9
+  python3 python3-numpy python3-matplotlib
   python3-dev pybind11-dev python3-pytest python3-pil python3-yaml
   libjs-three chromium chromium-driver python3-selenium
-  libopenmpi-dev openmpi-bin libhdf5-dev python3-h5py python3-paraview xvfb xauth
+  libopenmpi-dev openmpi-bin libhdf5-dev python3-h5py xvfb xauth
+  # ParaView's Python (pvpython) also provides VTK's (vtkmodules); it conflicts with python3-vtk9.
+  python3-paraview
 )
 
 missing=()

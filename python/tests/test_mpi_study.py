@@ -125,6 +125,9 @@ def test_a_killed_process_loses_only_its_case_and_resume_runs_only_that(tmp_path
     _, stderr = run.communicate(timeout=120)
     status = json.loads((out / "study.json").read_text())
     assert status["status"] == "failed", stderr
+    # Process 0 ends the survivors (MPI cannot finalize with a dead member) and says why; with
+    # --enable-recovery mpirun's own exit code stays 0, study.json tells.
+    assert "died; its case is listed as failed" in stderr, stderr
     lost = status["cases"][killed_case.name]
     assert lost["status"] == "failed" and "died while running this case" in lost["message"], lost
     others = {name: case for name, case in status["cases"].items() if name != killed_case.name}

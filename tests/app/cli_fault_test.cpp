@@ -186,6 +186,21 @@ TEST(CliFaults, AFullDiskEndsTheRunWithExitCodeThreeAndTheReason) {
   EXPECT_TRUE(read_history(folder.path() / "history.csv").row_complete);
 }
 
+// With history.h5 too: HDF5 (1.10) once crashed at exit on a full disk and printed its error
+// stack from the writer thread; the run must end as above, naming the file, without either.
+TEST(CliFaults, AFullDiskWithHdf5OutputEndsTheRunCleanly) {
+  const ScratchFolder folder("fsize_hdf5");
+  const auto outcome = testing::run_cli_with_prefix(
+      "prlimit --fsize=100000", "run " + example_path("parallel.yaml") + " --set output.hdf5=true --out " +
+                                    folder.path().string());
+  EXPECT_EQ(outcome.exit_code, 3) << outcome.output;
+  const bool names_a_file = outcome.output.find("history.h5") != std::string::npos ||
+                            outcome.output.find("history.csv: File too large") != std::string::npos;
+  EXPECT_TRUE(names_a_file) << outcome.output;
+  EXPECT_EQ(outcome.output.find("HDF5-DIAG"), std::string::npos) << outcome.output;
+  EXPECT_EQ(folder_status(folder.path()), "failed");
+}
+
 TEST(CliFaults, OutputNamesThatWouldOverwriteEachOtherAreRejected) {
   for (const std::string setting : {"output.history=summary.json", "output.history=model.yaml",
                                      "output.summary=history.csv", "output.history=.deploydyn.lock",

@@ -10,7 +10,6 @@
 #include <hdf5.h>
 
 #include <atomic>
-#include <charconv>
 #include <regex>
 #include <sstream>
 #include <string>
@@ -19,6 +18,7 @@
 #include "deploydyn/io/model_loader.hpp"
 #include "deploydyn/output/run_to_folder.hpp"
 #include "support/cli.hpp"
+#include "support/csv_table.hpp"
 
 namespace deploydyn {
 namespace {
@@ -44,7 +44,9 @@ Array read_array(hid_t file, const std::string& path) {
   hsize_t n = 1;
   for (const hsize_t d : array.shape) n *= d;
   array.values.resize(n);
-  if (n > 0) EXPECT_GE(H5Dread(set, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, array.values.data()), 0);
+  if (n > 0) {
+    EXPECT_GE(H5Dread(set, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, array.values.data()), 0);
+  }
   H5Sclose(space);
   H5Dclose(set);
   return array;
@@ -68,31 +70,12 @@ std::vector<std::string> read_strings(hid_t file, const std::string& path) {
   return result;
 }
 
-struct Csv {
-  std::vector<std::string> columns;
-  std::vector<std::vector<double>> rows;
-  std::size_t column(const std::string& name) const {
-    const auto at = std::find(columns.begin(), columns.end(), name);
-    EXPECT_NE(at, columns.end()) << name;
-    return static_cast<std::size_t>(at - columns.begin());
-  }
-};
-
-Csv read_csv(const std::filesystem::path& file) {
-  Csv csv;
-  std::istringstream lines(read_text(file));
-  std::string line, cell;
-  std::getline(lines, line);
-  for (std::istringstream header(line); std::getline(header, cell, ',');) csv.columns.push_back(cell);
-  while (std::getline(lines, line)) {
-    auto& row = csv.rows.emplace_back();
-    for (std::istringstream cells(line); std::getline(cells, cell, ',');) {
-      double value = 0.0;
-      std::from_chars(cell.data(), cell.data() + cell.size(), value);  // the exact double
-      row.push_back(value);
-    }
-  }
-  return csv;
+// history.csv, its numbers read back as the same doubles.
+using testing::CsvTable;
+std::size_t column(const CsvTable& csv, const std::string& name) {
+  const auto at = std::find(csv.columns.begin(), csv.columns.end(), name);
+  EXPECT_NE(at, csv.columns.end()) << name;
+  return static_cast<std::size_t>(at - csv.columns.begin());
 }
 
 // Every HDF DataItem of the index: the dataset it names exists with the dimensions it states.
@@ -137,7 +120,7 @@ TEST(Hdf5Writer, HoldsHistoryCsvBitForBitAndTheMeshOfEveryOutputTime) {
     if (selected) sets.push_back("output.select={nodes: [B], quantities: [position, force]}");
     const hid_t file = run_and_open(sets, folder.path());
     ASSERT_GE(file, 0);
-    const Csv csv = read_csv(folder.path() / "history.csv");
+    const CsvTable csv = testing::read_csv_table(folder.path() / "history.csv");
     ASSERT_GT(csv.rows.size(), 50u);
     EXPECT_EQ(read_strings(file, "/history_columns"), csv.columns);
     const Array table = read_array(file, "/history");
@@ -151,16 +134,16 @@ TEST(Hdf5Writer, HoldsHistoryCsvBitForBitAndTheMeshOfEveryOutputTime) {
     ASSERT_EQ(time.values.size(), csv.rows.size());
     // The mesh: node B is node 1, element 2 is cell 1; the same doubles as the table's.
     for (const std::size_t r : {std::size_t{0}, csv.rows.size() / 2, csv.rows.size() - 1}) {
-      EXPECT_EQ(time.values[r], csv.rows[r][csv.column("t")]);
+      EXPECT_EQ(time.values[r], csv.rows[r][column(csv, "t")]);
       const std::string step = fmt::format("/mesh/steps/{:06d}", r);
       const Array points = read_array(file, step + "/points");
       ASSERT_EQ(points.shape, (std::vector<hsize_t>{4, 3}));
-      EXPECT_EQ(points.values[3 * 1 + 0], csv.rows[r][csv.column("x.B")]);
-      EXPECT_EQ(points.values[3 * 1 + 1], csv.rows[r][csv.column("y.B")]);
+      EXPECT_EQ(points.values[3 * 1 + 0], csv.rows[r][column(csv, "x.B")]);
+      EXPECT_EQ(points.values[3 * 1 + 1], csv.rows[r][column(csv, "y.B")]);
       EXPECT_EQ(points.values[3 * 1 + 2], 0.0);
       const Array force = read_array(file, step + "/cells/axial_force_N");
       ASSERT_EQ(force.shape, (std::vector<hsize_t>{3}));
-      EXPECT_EQ(force.values[1], csv.rows[r][csv.column("force.2")]);
+      EXPECT_EQ(force.values[1], csv.rows[r][column(csv, "force.2")]);
     }
     expect_index_matches_file(folder.path(), file, csv.rows.size());
     H5Fclose(file);
@@ -183,7 +166,7 @@ TEST(Hdf5Writer, ARunStoppedPartWayLeavesBothFilesReadableWithItsRows) {
   ASSERT_EQ(report.status, RunStatus::interrupted) << report.message;
   const hid_t file = H5Fopen((folder.path() / kHdf5FileName).c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
   ASSERT_GE(file, 0);
-  const Csv csv = read_csv(folder.path() / "history.csv");
+  const CsvTable csv = testing::read_csv_table(folder.path() / "history.csv");
   EXPECT_GT(csv.rows.size(), 10u);
   EXPECT_LT(csv.rows.size(), 1001u);
   EXPECT_EQ(read_array(file, "/history").shape.at(0), csv.rows.size());

@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""Reads a deploydyn ParaView time series with VTK itself (Debian's python3-vtk9), an
+"""Reads a deploydyn ParaView time series with VTK itself (the vtkmodules of Debian's python3-paraview), an
 independent reader for tests/output/vtk_writer_test.cpp, and prints what it read as JSON:
 
   {"vtk_version": "9.1.0",

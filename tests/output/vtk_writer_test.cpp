@@ -1,5 +1,5 @@
 // The ParaView output (output/vtk_writer.hpp), read back by an independent reader: VTK itself,
-// through tests/output/read_vtu.py and Debian's python3-vtk9, whose values are compared with
+// through tests/output/read_vtu.py and the VTK of Debian's python3-paraview, whose values are compared with
 // history.csv of the same run; and the collection's layout against a golden file.
 
 #include "deploydyn/output/vtk_writer.hpp"
@@ -64,7 +64,7 @@ json read_with_vtk(const std::filesystem::path& collection) {
   const int status = pclose(pipe);
   if (status != 0) {
     ADD_FAILURE() << command << " failed (status " << status << "; its message is above). It needs "
-                  << "Debian's python3-vtk9, which scripts/install-deps.sh installs.";
+                  << "VTK's Python (Debian's python3-paraview), which scripts/install-deps.sh installs.";
     return nullptr;
   }
   return json::parse(output);

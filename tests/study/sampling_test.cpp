@@ -20,6 +20,8 @@
 #include "deploydyn/study/sampling_statistics.hpp"
 #include "deploydyn/study/study_loader.hpp"
 
+#include "support/study_error.hpp"
+
 namespace deploydyn {
 namespace {
 
@@ -205,34 +207,24 @@ TEST(SampledStudy, LoadsTheSameCasesEveryTime) {
   }
 }
 
-void expect_error(const std::string& text, int line, const std::string& field, const std::string& problem) {
-  try {
-    load(text);
-    ADD_FAILURE() << "no error for:\n" << text;
-  } catch (const InputError& e) {
-    EXPECT_EQ(e.source(), "s.yaml") << e.what();
-    EXPECT_EQ(e.line(), line) << e.what();
-    EXPECT_EQ(e.field(), field) << e.what();
-    EXPECT_NE(e.problem().find(problem), std::string::npos) << e.what();
-  }
-}
+using testing::expect_study_error;
 
 TEST(SampledStudy, BadSamplingSectionsAreNamedErrors) {
   const std::string head = "model: general.yaml\n";
-  expect_error(head + "cases: {a: {}}\nsampling: {cases: 3, material: {E: 0.01}}\n", 2, "cases", "not both");
-  expect_error(head + "sampling:\n  cases: 0\n  material: {E: 0.01}\n", 3, "sampling.cases", "at least 1");
-  expect_error(head + "sampling:\n  cases: 3\n", 3, "sampling.length_error", "nothing to draw");
-  expect_error(head + "sampling:\n  cases: 3\n  method: sobol\n  material: {E: 0.01}\n", 4, "sampling.method",
+  expect_study_error(head + "cases: {a: {}}\nsampling: {cases: 3, material: {E: 0.01}}\n", 2, "cases", "not both");
+  expect_study_error(head + "sampling:\n  cases: 0\n  material: {E: 0.01}\n", 3, "sampling.cases", "at least 1");
+  expect_study_error(head + "sampling:\n  cases: 3\n", 3, "sampling.length_error", "nothing to draw");
+  expect_study_error(head + "sampling:\n  cases: 3\n  method: sobol\n  material: {E: 0.01}\n", 4, "sampling.method",
                "latin_hypercube");
-  expect_error(head + "sampling:\n  cases: 3\n  material: {E: 0.5}\n", 4, "sampling.material.E",
+  expect_study_error(head + "sampling:\n  cases: 3\n  material: {E: 0.5}\n", 4, "sampling.material.E",
                "coefficient of variation");
-  expect_error(head + "sampling:\n  cases: 3\n  length_error:\n    - {elements: '1', normal: 1e-3, uniform: 1e-3}\n",
+  expect_study_error(head + "sampling:\n  cases: 3\n  length_error:\n    - {elements: '1', normal: 1e-3, uniform: 1e-3}\n",
                5, "sampling.length_error.0.normal", "exactly one");
-  expect_error(head + "sampling:\n  cases: 3\n  length_error:\n    - {elements: 'beam*', normal: 1e-3}\n", 3,
+  expect_study_error(head + "sampling:\n  cases: 3\n  length_error:\n    - {elements: 'beam*', normal: 1e-3}\n", 3,
                "sampling", "match no bar");
-  expect_error(head + "sampling:\n  cases: 3\n  temperature: {dT: [160, 100]}\n", 4,
+  expect_study_error(head + "sampling:\n  cases: 3\n  temperature: {dT: [160, 100]}\n", 4,
                "sampling.temperature.dT", "low ≤ high");
-  expect_error(head + "sampling:\n  cases: 3\n  temperature: {dt: 5}\n", 4, "sampling.temperature.dt", "dT");
+  expect_study_error(head + "sampling:\n  cases: 3\n  temperature: {dt: 5}\n", 4, "sampling.temperature.dt", "dT");
 }
 
 // Percentiles as numpy.percentile computes them by default (linear between order statistics).

@@ -12,6 +12,8 @@
 #include "deploydyn/io/input_error.hpp"
 #include "deploydyn/io/model_loader.hpp"
 
+#include "support/study_error.hpp"
+
 namespace deploydyn {
 namespace {
 
@@ -19,19 +21,7 @@ const std::filesystem::path kPaper = std::filesystem::path(DEPLOYDYN_SOURCE_DIR)
 
 Study load(const std::string& text) { return load_study_from_string(text, "s.yaml", kPaper); }
 
-// Loads `text`, expecting an InputError at `line` of s.yaml about `field`, saying `problem`.
-void expect_error(const std::string& text, int line, const std::string& field,
-                  const std::string& problem) {
-  try {
-    load(text);
-    ADD_FAILURE() << "no error for:\n" << text;
-  } catch (const InputError& e) {
-    EXPECT_EQ(e.source(), "s.yaml") << e.what();
-    EXPECT_EQ(e.line(), line) << e.what();
-    EXPECT_EQ(e.field(), field) << e.what();
-    EXPECT_NE(e.problem().find(problem), std::string::npos) << e.what();
-  }
-}
+using testing::expect_study_error;
 
 TEST(StudyLoader, ReadsThePaperStudy) {
   const Study study = load_study(kPaper / "general_study.yaml");
@@ -72,48 +62,48 @@ TEST(StudyLoader, CasesSetListsAndMappings) {
   EXPECT_EQ(study.cases[1].overrides.at(0).value, "{type: newmark}");
   const Model paper = load_model(study.model_file, study.cases[1].overrides);
   EXPECT_EQ(paper.analysis.integrator.kind, IntegratorOptions::Kind::newmark);
-  expect_error("model: general.yaml\ncases: {a: {supports.1.fix: [x, w]}}\n", 2, "cases.a.supports.1.fix",
+  expect_study_error("model: general.yaml\ncases: {a: {supports.1.fix: [x, w]}}\n", 2, "cases.a.supports.1.fix",
                "must be one of x, y, z, got 'w'");
-  expect_error("model: general.yaml\ncases: {a: {thermal.dT: }}\n", 2, "cases.a.thermal.dT",
+  expect_study_error("model: general.yaml\ncases: {a: {thermal.dT: }}\n", 2, "cases.a.thermal.dT",
                "expected a value to set, got nothing");
 }
 
 TEST(StudyLoader, MissingOrUnreadableModel) {
-  expect_error("cases: {a: {}}\n", 1, "model", "required key is missing");
-  expect_error("model: nowhere.yaml\ncases: {a: {}}\n", 1, "model", "cannot open file");
+  expect_study_error("cases: {a: {}}\n", 1, "model", "required key is missing");
+  expect_study_error("model: nowhere.yaml\ncases: {a: {}}\n", 1, "model", "cannot open file");
 }
 
 TEST(StudyLoader, UnknownKeyIsRejectedWithTheNearestOne) {
-  expect_error("model: general.yaml\ncases: {a: {}}\nrefrence: a\n", 3, "refrence",
+  expect_study_error("model: general.yaml\ncases: {a: {}}\nrefrence: a\n", 3, "refrence",
                "did you mean 'reference'?");
 }
 
 TEST(StudyLoader, CasesMustBeGivenAndNamedOnce) {
-  expect_error("model: general.yaml\ncases: {}\n", 2, "cases", "at least one case");
-  expect_error("model: general.yaml\ncases:\n  a: {}\n  a: {thermal.dT: 1}\n", 4, "cases.a",
+  expect_study_error("model: general.yaml\ncases: {}\n", 2, "cases", "at least one case");
+  expect_study_error("model: general.yaml\ncases:\n  a: {}\n  a: {thermal.dT: 1}\n", 4, "cases.a",
                "'a' is given twice");
-  expect_error("model: general.yaml\ncases:\n  a/b: {}\n", 3, "cases.a/b", "cannot name a folder");
-  expect_error("model: general.yaml\ncases:\n  a: [1]\n", 3, "cases.a", "mapping of overrides");
+  expect_study_error("model: general.yaml\ncases:\n  a/b: {}\n", 3, "cases.a/b", "cannot name a folder");
+  expect_study_error("model: general.yaml\ncases:\n  a: [1]\n", 3, "cases.a", "mapping of overrides");
   // A list is set as a flow value, then checked by the model's loader, at the case's line.
-  expect_error("model: general.yaml\ncases:\n  a: {thermal.dT: [1, 2]}\n", 3, "cases.a.thermal.dT",
+  expect_study_error("model: general.yaml\ncases:\n  a: {thermal.dT: [1, 2]}\n", 3, "cases.a.thermal.dT",
                "expected a function: a number, a function name or a mapping with 'type', got a list");
 }
 
 TEST(StudyLoader, BadOverrideIsReportedAtItsLine) {
-  expect_error(
+  expect_study_error(
       "model: general.yaml\ncases:\n  hot: {thermal.dT: 130}\n  cold: {thermal.dX: -170}\n", 4,
       "cases.cold.thermal.dX", "unknown key 'dX'");
-  expect_error("model: general.yaml\ncases:\n  hot:\n    thermal.dT: warm\n", 4,
+  expect_study_error("model: general.yaml\ncases:\n  hot:\n    thermal.dT: warm\n", 4,
                "cases.hot.thermal.dT", "unknown function 'warm'");
 }
 
 TEST(StudyLoader, ReferenceMustNameACase) {
-  expect_error("model: general.yaml\nreference: normall\ncases: {normal: {}}\n", 2, "reference",
+  expect_study_error("model: general.yaml\nreference: normall\ncases: {normal: {}}\n", 2, "reference",
                "did you mean 'normal'?");
 }
 
 TEST(StudyLoader, JobsIsACountOfThreads) {
-  expect_error("model: general.yaml\njobs: -1\ncases: {a: {}}\n", 2, "jobs", "at least 0");
+  expect_study_error("model: general.yaml\njobs: -1\ncases: {a: {}}\n", 2, "jobs", "at least 0");
   EXPECT_EQ(resolve_jobs(8, 3), 3);
   EXPECT_EQ(resolve_jobs(1, 3), 1);
   EXPECT_EQ(resolve_jobs(2, 0), 1);

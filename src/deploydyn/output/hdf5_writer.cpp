@@ -16,6 +16,17 @@ constexpr int kPolyline = 2;  // XDMF's cell type in a Mixed topology; its node 
 constexpr std::size_t kChunkBytes = std::size_t{1} << 20;
 constexpr std::size_t kCompactBytes = 16 * 1024;
 
+// HDF5 keeps its error printing per thread (thread-safe build) and, at exit, flushes files still
+// open, which crashes on a full disk (HDF5 1.10). Failures here become OutputErrors, so every
+// entry point silences the printing for its thread, and the library is told not to clean up
+// at exit: the writer closes its own file.
+void quiet_hdf5() {
+  static const bool no_cleanup_at_exit = H5dont_atexit() >= 0;
+  (void)no_cleanup_at_exit;
+  thread_local const bool silenced = H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr) >= 0;
+  (void)silenced;
+}
+
 [[noreturn]] void failed(const std::filesystem::path& file, const std::string& what) {
   throw OutputError("cannot write", file, 0, "HDF5 could not " + what);
 }
@@ -91,7 +102,7 @@ struct Hdf5Writer::Dataset {
 
 Hdf5Writer::Hdf5Writer(const std::filesystem::path& folder, const Model& model)
     : folder_(folder), model_(model), layout_(model), mesh_(model), last_flush_(std::chrono::steady_clock::now()) {
-  H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);  // failures are OutputErrors, not HDF5's printout
+  quiet_hdf5();
   const std::filesystem::path file = folder_ / kHdf5FileName;
   // The 1.8 file format's compact object headers: a small model's per-step groups take a third
   // of the 1.0 format's room. Readers since HDF5 1.8 (2008) read it.
@@ -153,6 +164,7 @@ Hdf5Writer::Hdf5Writer(const std::filesystem::path& folder, const Model& model)
 }
 
 Hdf5Writer::~Hdf5Writer() {
+  quiet_hdf5();
   try {
     flush();
   } catch (const OutputError&) {
@@ -164,6 +176,7 @@ Hdf5Writer::~Hdf5Writer() {
 
 void Hdf5Writer::record(const StepRecord& record) {
   if (!record.output) return;
+  quiet_hdf5();
   if (!mesh_.fits(record)) {
     throw std::invalid_argument("Hdf5Writer::record: the record does not fit the model");
   }
@@ -242,6 +255,7 @@ void Hdf5Writer::write_doubles(const std::string& path, const std::vector<hsize_
 void Hdf5Writer::finish() { flush(); }
 
 void Hdf5Writer::flush() {
+  quiet_hdf5();
   if (H5Fflush(file_, H5F_SCOPE_GLOBAL) < 0) failed(folder_ / kHdf5FileName, "flush the file");
   write_file_atomically(folder_ / kXdmfFileName, xdmf());
   last_flush_ = std::chrono::steady_clock::now();

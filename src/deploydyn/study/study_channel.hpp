@@ -37,6 +37,8 @@ class StudyChannel {
   virtual void assign(int rank, long case_index) = 0;
   // A worker: sends its report to process 0 and waits for its next case (−1: stop).
   virtual long report_and_wait(const WorkerReport& report) = 0;
+  // Process 0: worker `rank` died. The channel must not wait for it when the study ends.
+  virtual void lost(int /*rank*/) {}
 };
 
 }  // namespace deploydyn
