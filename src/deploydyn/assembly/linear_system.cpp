@@ -23,6 +23,7 @@ Eigen::MatrixXd LinearSystem::to_dense() const {
 }
 
 FactorizationStatus LinearSystem::factorize() {
+  ++factorizations_;
   for (const double v : values_) {
     if (!std::isfinite(v)) {
       FactorizationStatus status;

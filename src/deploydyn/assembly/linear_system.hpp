@@ -51,6 +51,9 @@ class LinearSystem {
 
   // LU factorization of the current values; a singular or non-finite matrix is a status.
   FactorizationStatus factorize();
+  // How many factorizations were made: a solver that kept an LU of its own knows from it
+  // whether the system still holds that LU.
+  long factorizations() const { return factorizations_; }
   // Overwrites rhs with the solution; call after a successful factorize().
   virtual void solve(Eigen::Ref<Eigen::VectorXd> rhs) = 0;
   // "dense LU", "KLU", "UMFPACK": for reports and benchmarks.
@@ -75,6 +78,7 @@ class LinearSystem {
   virtual MatrixEntry position(int value_index) const = 0;
 
   int size_ = 0;
+  long factorizations_ = 0;
   std::vector<int> slots_;
   std::vector<double> values_;
 };

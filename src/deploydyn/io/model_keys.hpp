@@ -35,8 +35,8 @@ inline constexpr std::array<std::string_view, 11> kAnalysis{
     "adaptive", "linear_solver"};
 inline constexpr std::array<std::string_view, 4> kIntegrator{"type", "beta", "gamma", "rho_inf"};
 inline constexpr std::array<std::string_view, 3> kAdaptive{"tolerance", "min_step", "max_step"};
-inline constexpr std::array<std::string_view, 4> kNewton{"max_iterations", "tol_force",
-                                                         "tol_constraint", "tol_displacement"};
+inline constexpr std::array<std::string_view, 5> kNewton{"max_iterations", "tol_force",
+                                                         "tol_constraint", "tol_displacement", "jacobian"};
 inline constexpr std::array<std::string_view, 9> kContinuation{
     "type", "parameter", "start", "end", "eigenvalues", "max_steps", "switch_branch", "newton",
     "linear_solver"};

@@ -811,6 +811,10 @@ class ModelReader {
   void read_newton(const YamlValue& spec) {
     spec.expect_keys(model_keys::kNewton);
     NewtonOptions& newton = model_.analysis.newton;
+    if (const auto jacobian = spec.find("jacobian")) {
+      newton.jacobian = jacobian->choice({"full", "reuse"}) == 0 ? NewtonOptions::Jacobian::full
+                                                                 : NewtonOptions::Jacobian::reuse;
+    }
     if (const auto max_iterations = spec.find("max_iterations")) {
       newton.max_iterations = max_iterations->integer(1);
     }

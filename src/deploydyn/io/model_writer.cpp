@@ -364,6 +364,8 @@ void emit_analysis(YAML::Emitter& out, const Model& model) {
   emit_number(out, "tol_force", analysis.newton.force_tolerance);
   emit_number(out, "tol_constraint", analysis.newton.constraint_tolerance_m);
   emit_number(out, "tol_displacement", analysis.newton.displacement_tolerance_m);
+  emit_key(out, "jacobian");
+  out << (analysis.newton.jacobian == NewtonOptions::Jacobian::full ? "full" : "reuse");
   out << YAML::EndMap;
   out << YAML::EndMap;
 

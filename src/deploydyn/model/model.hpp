@@ -143,6 +143,10 @@ struct NewtonOptions {
   double force_tolerance = 1e-8;        // ‖r‖∞ relative to the largest force term
   double constraint_tolerance_m = 1e-10;  // ‖Φ‖∞ (m or rad·m)
   double displacement_tolerance_m = 1e-12;  // ‖Δq‖∞ that counts as converged
+  // full: a new matrix and LU every iteration; reuse: modified Newton, keeping the last LU
+  // (across steps too) while the residual contracts fast enough (solvers/newton.hpp).
+  enum class Jacobian { full, reuse };
+  Jacobian jacobian = Jacobian::full;
 };
 
 // Time integrator. All three are members of the generalized-α family in the form of Arnold &

@@ -267,6 +267,7 @@ std::string summary_json(const Model& model, const Envelope& envelope, const Run
   j["mode_switches"] = report.mode_switches;
   j["steps"] = report.steps;
   j["newton_iterations"] = report.newton_iterations;
+  j["factorizations"] = report.factorizations;
   j["newton_iterations_per_step"] =
       report.steps > 0 ? static_cast<double>(report.newton_iterations) / report.steps : 0.0;
   j["max_newton_iterations_per_step"] = report.max_iterations_per_step;

@@ -398,6 +398,7 @@ RunReport run_analysis(const Assembler& assembler, RecordSink& sink, const RunCo
     const double step = steps.next_step(state.time_s);
     const NewtonResult newton = switching.step(step, state, next, report.mode_switches);
     report.newton_iterations += newton.iterations;
+    report.factorizations += newton.factorizations;
     report.max_iterations_per_step = std::max(report.max_iterations_per_step, newton.iterations);
     if (!newton.converged) {
       switching.drop_events();

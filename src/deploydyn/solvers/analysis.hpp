@@ -48,6 +48,7 @@ struct RunReport {
   double time_reached_s = 0.0;
   int steps = 0;
   int newton_iterations = 0;      // in the time steps
+  int factorizations = 0;         // of them, with a new matrix LU (fewer with jacobian: reuse)
   int max_iterations_per_step = 0;
   int rejected_steps = 0;
   int initial_load_steps = 0;

@@ -14,6 +14,22 @@ constexpr double kRoundOffShare = 16.0 * std::numeric_limits<double>::epsilon();
 
 NewtonResult NewtonSolver::solve(DiscreteEquations& equations, LinearSystem& system,
                                  Eigen::VectorXd& q, Eigen::VectorXd& lambda) {
+  if (options_.jacobian == NewtonOptions::Jacobian::full) return iterate(equations, system, q, lambda, false);
+  q_start_ = q;
+  lambda_start_ = lambda;
+  NewtonResult reused = iterate(equations, system, q, lambda, true);
+  if (reused.converged || reused.iterations == reused.factorizations) return reused;
+  // An old LU was used and there is no equilibrium yet: full Newton decides.
+  q = q_start_;
+  lambda = lambda_start_;
+  NewtonResult full = iterate(equations, system, q, lambda, false);
+  full.iterations += reused.iterations;
+  full.factorizations += reused.factorizations;
+  return full;
+}
+
+NewtonResult NewtonSolver::iterate(DiscreteEquations& equations, LinearSystem& system, Eigen::VectorXd& q,
+                                   Eigen::VectorXd& lambda, bool reuse) {
   const NewtonOptions& options = options_;
   const auto n_dofs = q.size();
   const auto n_eq = lambda.size();
@@ -25,6 +41,10 @@ NewtonResult NewtonSolver::solve(DiscreteEquations& equations, LinearSystem& sys
   Eigen::VectorXd& step = step_;
   NewtonResult result;
   double last_correction = std::numeric_limits<double>::infinity();
+  // The LU in the system is this solver's, for this step size: it may serve again.
+  bool lu_current = reuse && factored_system_ == &system && factored_count_ == system.factorizations() &&
+                    factored_scale_ == equations.constraint_scale();
+  double last_measure = std::numeric_limits<double>::infinity();
 
   for (;; ++result.iterations) {
     const double force_scale = equations.residual(q, lambda, r, phi);
@@ -58,13 +78,28 @@ NewtonResult NewtonSolver::solve(DiscreteEquations& equations, LinearSystem& sys
       result.failure = fmt::format("no convergence in {} Newton iterations", options.max_iterations);
       return result;
     }
+    // The residual relative to what convergence asks; an old LU serves while it contracts.
+    const double measure =
+        std::max(result.force_residual_N / std::max(options.force_tolerance * force_scale + force_floor,
+                                                    std::numeric_limits<double>::min()),
+                 result.constraint_residual / options.constraint_tolerance_m);
+    if (lu_current && measure > kReuseContraction * last_measure) lu_current = false;
+    last_measure = measure;
 
-    equations.matrix(q, lambda, system);
-    const FactorizationStatus status = system.factorize();
-    if (!status.ok) {
-      result.failure = status.message;
-      result.null_vector = status.null_vector;
-      return result;
+    if (!lu_current) {
+      equations.matrix(q, lambda, system);
+      const FactorizationStatus status = system.factorize();
+      ++result.factorizations;
+      factored_system_ = &system;
+      factored_count_ = system.factorizations();
+      factored_scale_ = equations.constraint_scale();
+      if (!status.ok) {
+        factored_system_ = nullptr;
+        result.failure = status.message;
+        result.null_vector = status.null_vector;
+        return result;
+      }
+      lu_current = reuse;
     }
     const double s = equations.constraint_scale();
     step.head(n_dofs) = -r;

@@ -6,6 +6,15 @@
 // + s · 16 ε · max(‖q‖∞, 1 m), a round-off floor (s, the constraint scale, is the size of the
 // force block's diagonal, N/m), or the last correction ‖Δq‖∞ ≤ tol_displacement. A failure is
 // a status, never an abort.
+//
+// Modified Newton (NewtonOptions::jacobian = reuse; docs/theory.md "Modified Newton"): the LU
+// of the last factorized matrix is kept, across iterations and time steps, while each residual
+// is at most kReuseContraction of the one before (measured relative to the tolerances); when
+// one is not, the next iteration refactorizes at the current iterate. The LU is also renewed
+// when the constraint scale s changed (another step size) or another solver factorized the
+// system since. Converged means the same tests as above. A solve that used an old LU and did
+// not converge is done again from its start with full Newton before it counts as failed, so
+// that a failure still says the structure, not the reuse, found no equilibrium.
 
 #include <string>
 
@@ -17,6 +26,7 @@ namespace deploydyn {
 struct NewtonResult {
   bool converged = false;
   int iterations = 0;                  // linear solves done
+  int factorizations = 0;              // of them, with a new matrix and LU
   double force_residual_N = 0.0;       // ‖r‖∞ at the end
   double constraint_residual = 0.0;    // ‖Φ‖∞ at the end
   int worst_dof = -1;                  // index of the largest |r|
@@ -33,9 +43,19 @@ class NewtonSolver {
   NewtonResult solve(DiscreteEquations& equations, LinearSystem& system, Eigen::VectorXd& q,
                      Eigen::VectorXd& lambda);
 
+  // A residual above this share of the previous one renews the LU (reuse only).
+  static constexpr double kReuseContraction = 0.5;
+
  private:
+  NewtonResult iterate(DiscreteEquations& equations, LinearSystem& system, Eigen::VectorXd& q,
+                       Eigen::VectorXd& lambda, bool reuse);
+
   NewtonOptions options_;
-  Eigen::VectorXd r_, phi_, step_;
+  Eigen::VectorXd r_, phi_, step_, q_start_, lambda_start_;
+  // The LU this solver made last: the system, its factorization count then, and s then.
+  const LinearSystem* factored_system_ = nullptr;
+  long factored_count_ = -1;
+  double factored_scale_ = 0.0;
 };
 
 }  // namespace deploydyn

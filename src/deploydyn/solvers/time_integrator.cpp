@@ -19,6 +19,7 @@ class QuasiStaticSteps final : public TimeIntegrator {
                      system, state);
     NewtonResult newton = r.newton;
     newton.iterations = r.total_iterations;
+    newton.factorizations = r.total_iterations;  // static solves renew the LU every iteration
     return newton;
   }
   double local_error(double, const MotionState&, const MotionState&) const override { return 0.0; }
