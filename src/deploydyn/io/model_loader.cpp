@@ -1,7 +1,7 @@
 #include "deploydyn/io/model_loader.hpp"
+#include "deploydyn/io/model_source.hpp"
 
 #include <fmt/format.h>
-#include <yaml-cpp/yaml.h>
 
 #include <algorithm>
 #include <array>
@@ -950,57 +950,58 @@ bool is_option_section(const std::string& path) {
   return std::find(kOptionSections.begin(), kOptionSections.end(), path) != kOptionSections.end();
 }
 
-// A copy of `node` made of new nodes: they have no mark, so an error in them names the --set
-// that made them, not a line of the model file.
-YAML::Node without_marks(const YAML::Node& node, const std::function<void(const std::string&)>& fail) {
-  switch (node.Type()) {
-    case YAML::NodeType::Sequence: {
-      YAML::Node copy(YAML::NodeType::Sequence);
-      for (const auto& item : node) copy.push_back(without_marks(item, fail));
-      return copy;
+// The keys of a flow value's mappings are plain names, each once (as the file's are checked).
+void check_flow_keys(const io::YamlDocument& value, io::YamlDocument::Id node,
+                     const std::function<void(const std::string&)>& fail) {
+  const bool map = value.kind(node) == io::YamlKind::map;
+  std::vector<std::string_view> seen;
+  for (std::size_t i = 0; i < value.size(node); ++i) {
+    if (!map) {
+      check_flow_keys(value, value.item(node, i), fail);
+      continue;
     }
-    case YAML::NodeType::Map: {
-      YAML::Node copy(YAML::NodeType::Map);
-      for (const auto& entry : node) {
-        if (!entry.first.IsScalar()) fail("keys of a mapping must be plain names, got " + io::describe(entry.first));
-        const std::string& key = entry.first.Scalar();
-        if (copy[key]) fail(fmt::format("'{}' is given twice", key));
-        copy[key] = without_marks(entry.second, fail);
-      }
-      return copy;
+    const io::YamlDocument::Id key = value.key(node, i);
+    if (value.kind(key) != io::YamlKind::scalar) {
+      fail("keys of a mapping must be plain names, got " + io::describe(value, key));
     }
-    case YAML::NodeType::Scalar:
-      return YAML::Node(node.Scalar());
-    default:
-      return YAML::Node();
+    if (std::find(seen.begin(), seen.end(), value.scalar(key)) != seen.end()) {
+      fail(fmt::format("'{}' is given twice", value.scalar(key)));
+    }
+    seen.push_back(value.scalar(key));
+    check_flow_keys(value, value.value(node, i), fail);
   }
 }
 
-// VALUE as a node: a YAML flow sequence or mapping when it starts with '[' or '{' (e.g.
-// supports.1.fix=[x, y], thermal.dT={type: smooth_step, ...}), else the text as one scalar.
-YAML::Node override_value(const std::string& value, const std::function<void(const std::string&)>& fail) {
+// VALUE as a node of `document`: a YAML flow sequence or mapping when it starts with '[' or '{'
+// (e.g. supports.1.fix=[x, y], thermal.dT={type: smooth_step, ...}), else the text as one
+// scalar. Its nodes have no mark, so an error in them names the --set, not a line of the file.
+io::YamlDocument::Id override_value(io::YamlDocument& document, const std::string& value,
+                                    const std::function<void(const std::string&)>& fail) {
   const std::size_t first = value.find_first_not_of(" \t");
-  if (first == std::string::npos || (value[first] != '[' && value[first] != '{')) return YAML::Node(value);
-  YAML::Node parsed;
+  if (first == std::string::npos || (value[first] != '[' && value[first] != '{')) return document.add_scalar(value);
   try {
-    parsed = YAML::Load(value);
-  } catch (const YAML::ParserException& error) {
+    const io::YamlDocument parsed = io::YamlDocument::parse_with_yaml_cpp(value);
+    check_flow_keys(parsed, parsed.root(), fail);
+    return document.add_copy(parsed, parsed.root());
+  } catch (const io::YamlSyntaxError& error) {
     fail(fmt::format("VALUE starts a YAML flow {} but does not parse: {} (column {})",
-                     value[first] == '[' ? "list [...]" : "mapping {...}", error.msg, error.mark.column + 1));
+                     value[first] == '[' ? "list [...]" : "mapping {...}", error.message, error.mark.column + 1));
   }
-  return without_marks(parsed, fail);
+  return 0;  // not reached: fail throws
 }
 
 // Replaces (or adds, as the last key of a mapping) the value at override.path: a scalar by
 // text, anything by a YAML flow list or mapping.
-void apply_override(YAML::Node root, const Override& override, io::YamlSource& source) {
+void apply_override(io::YamlDocument& document, const Override& override, io::YamlSource& source) {
+  using Id = io::YamlDocument::Id;
   const auto fail = [&](const std::string& problem) {
-    io::throw_input_error(fmt::format("--set {}={}", override.path, override.value),
-                          YAML::Mark::null_mark(), override.path, problem);
+    io::throw_input_error(fmt::format("--set {}={}", override.path, override.value), {}, override.path, problem);
   };
-  const YAML::Node value = override_value(override.value, fail);
+  const Id value = override_value(document, override.value, fail);
   const auto keys = split_path(override.path);
-  YAML::Node current = root;
+  Id current = document.root();
+  // Where `current` hangs in its parent, so that it can be replaced there.
+  std::optional<std::pair<Id, std::size_t>> slot;
   std::string walked = "the top level";
   for (std::size_t i = 0; i < keys.size(); ++i) {
     const std::string& key = keys[i];
@@ -1010,24 +1011,29 @@ void apply_override(YAML::Node root, const Override& override, io::YamlSource& s
     if (key.empty()) {
       fail("empty key in the path; separate keys by single dots, e.g. analysis.step");
     }
-    std::optional<YAML::Node> next;
-    if (current.IsMap()) {
+    const io::YamlKind kind = document.kind(current);
+    std::optional<Id> next;
+    if (kind == io::YamlKind::map) {
       std::vector<std::string> present;
-      for (const auto& entry : current) {
-        if (entry.first.Scalar() == key) {
-          next.emplace(entry.second);
+      for (std::size_t k = 0; k < document.size(current); ++k) {
+        const std::string_view name = document.scalar(document.key(current, k));
+        if (name == key) {
+          next = document.value(current, k);
+          slot = {current, k};
           break;
         }
-        present.push_back(entry.first.Scalar());
+        present.emplace_back(name);
       }
-      if (!next && last) {
-        current[key] = value;
-        source.add_override(override);
-        return;
-      }
-      if (!next && is_option_section(path_here)) {
-        current[key] = YAML::Node(YAML::NodeType::Map);
-        next.emplace(current[key]);
+      if (!next && (last || is_option_section(path_here))) {
+        // A new last key, or a new options section to hold the rest of the path.
+        const Id added = last ? value : document.add_map();
+        document.append(current, document.add_scalar(key), added);
+        if (last) {
+          source.add_override(override);
+          return;
+        }
+        next = added;
+        slot = {current, document.size(current) - 1};
       }
       if (!next) {
         const std::string nearest = io::did_you_mean(key, present);
@@ -1035,38 +1041,44 @@ void apply_override(YAML::Node root, const Override& override, io::YamlSource& s
                          key, walked,
                          nearest.empty() ? "; keys there: " + io::join_names(present) : nearest));
       }
-    } else if (current.IsSequence()) {
+    } else if (kind == io::YamlKind::sequence) {
       std::size_t index = 0;
+      const std::size_t n = document.size(current);
       const auto [end, error] = std::from_chars(key.data(), key.data() + key.size(), index);
-      if (current.size() == 0)
-        fail(fmt::format("{} is an empty list; it has no '{}'", walked, key));
-      if (error != std::errc() || end != key.data() + key.size() || index >= current.size()) {
+      if (n == 0) fail(fmt::format("{} is an empty list; it has no '{}'", walked, key));
+      if (error != std::errc() || end != key.data() + key.size() || index >= n) {
         fail(fmt::format("{} is a list of {} items; expected an index from 0 to {}, got '{}'",
-                         walked, current.size(), current.size() - 1, key));
+                         walked, n, n - 1, key));
       }
-      const YAML::Node& list = current;  // const: never let [] append
-      next.emplace(list[index]);
+      next = document.item(current, index);
+      slot = {current, index};
     } else {
       fail(fmt::format("{} is a single value; it has no '{}'", walked, key));
     }
     walked = "'" + path_here + "'";
-    current.reset(*next);  // rebinds; plain assignment would overwrite the node in the tree
+    current = *next;
   }
-  if (!current.IsScalar() && !current.IsNull() && value.IsScalar()) {
+  const io::YamlKind kind = document.kind(current);
+  if (kind != io::YamlKind::scalar && kind != io::YamlKind::null && document.kind(value) == io::YamlKind::scalar) {
     fail(fmt::format("{} is {}; a single value cannot replace it, a YAML flow {} can (e.g. {}={})",
-                     walked, io::describe(current), current.IsMap() ? "mapping" : "list", override.path,
-                     current.IsMap() ? "{key: value, ...}" : "[a, b]"));
+                     walked, io::describe(document, current), kind == io::YamlKind::map ? "mapping" : "list",
+                     override.path, kind == io::YamlKind::map ? "{key: value, ...}" : "[a, b]"));
   }
-  // Assigning a Node replaces the tree's node; the new one has no mark, so errors name the --set.
-  current = value;
+  if (!slot) {
+    fail("give a path, e.g. analysis.step");
+  } else if (document.kind(slot->first) == io::YamlKind::map) {
+    document.set_value(slot->first, slot->second, value);
+  } else {
+    document.set_item(slot->first, slot->second, value);
+  }
   source.add_override(override);
 }
 
-YAML::Node parse_yaml(const std::string& text, const std::string& source_name) {
+io::YamlDocument parse_yaml(const std::string& text, const std::string& source_name) {
   try {
-    return YAML::Load(text);
-  } catch (const YAML::ParserException& error) {
-    io::throw_input_error(source_name, error.mark, "", "YAML syntax: " + error.msg);
+    return io::YamlDocument::parse(text);
+  } catch (const io::YamlSyntaxError& error) {
+    io::throw_input_error(source_name, error.mark, "", "YAML syntax: " + error.message);
   }
 }
 
@@ -1075,7 +1087,7 @@ YAML::Node parse_yaml(const std::string& text, const std::string& source_name) {
 Override parse_override(const std::string& text) {
   const std::size_t equals = text.find('=');
   if (equals == std::string::npos || equals == 0) {
-    io::throw_input_error("--set " + text, YAML::Mark::null_mark(), "",
+    io::throw_input_error("--set " + text, io::YamlMark{}, "",
                           "expected PATH=VALUE, e.g. thermal.dT=130 or analysis.step=5e-4");
   }
   return {text.substr(0, equals), text.substr(equals + 1)};
@@ -1088,21 +1100,32 @@ std::vector<Override> parse_overrides(const std::vector<std::string>& texts) {
 }
 
 Model load_model(const std::filesystem::path& file, const std::vector<Override>& overrides) {
-  return load_model_from_string(io::read_input_file(file), file.string(), overrides);
+  return ModelSource::read(file).build(overrides);
 }
 
 Model load_model_from_string(const std::string& text, const std::string& source_name,
                              const std::vector<Override>& overrides) {
-  io::YamlSource source(source_name);
-  try {
-    const YAML::Node root = parse_yaml(text, source_name);
-    for (const Override& override : overrides) apply_override(root, override, source);
-    const YamlValue root_value(root, "", source);
-    return ModelReader(root_value).read();
-  } catch (const YAML::Exception& error) {
-    // The reader checks types before converting, so this is a safety net, not a path.
-    io::throw_input_error(source_name, error.mark, "", "cannot read the model: " + error.msg);
-  }
+  return ModelSource::from_string(text, source_name).build(overrides);
+}
+
+ModelSource ModelSource::read(const std::filesystem::path& file) {
+  return from_string(io::read_input_file(file), file.string());
+}
+
+ModelSource ModelSource::from_string(const std::string& text, const std::string& source_name) {
+  return ModelSource(std::make_shared<const io::YamlDocument>(parse_yaml(text, source_name)), source_name);
+}
+
+ModelSource ModelSource::from_document(io::YamlDocument document, const std::string& source_name) {
+  return ModelSource(std::make_shared<const io::YamlDocument>(std::move(document)), source_name);
+}
+
+Model ModelSource::build(const std::vector<Override>& overrides) const {
+  io::YamlSource source(name_);
+  if (overrides.empty()) return ModelReader(YamlValue(*document_, document_->root(), "", source)).read();
+  io::YamlDocument edited = *document_;  // the overrides edit a copy: this source serves again
+  for (const Override& override : overrides) apply_override(edited, override, source);
+  return ModelReader(YamlValue(edited, edited.root(), "", source)).read();
 }
 
 }  // namespace deploydyn

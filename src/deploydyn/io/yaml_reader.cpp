@@ -3,9 +3,12 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <cctype>
+#include <charconv>
 #include <cmath>
 #include <limits>
 #include <optional>
+#include <sstream>
 #include <unordered_set>
 
 #include "deploydyn/io/input_error.hpp"
@@ -66,15 +69,51 @@ std::string hint(std::string_view key, const std::vector<std::string>& allowed) 
   return nearest.empty() ? "; allowed: " + join_names(allowed) : nearest;
 }
 
+// A scalar as a number, as yaml-cpp reads one (so that files mean what they always meant): a
+// whole decimal number as C++ streams read it, or .inf, -.inf, .nan in YAML's spellings.
+// Plain decimals (nearly every number of a model) take std::from_chars, which rounds alike.
+bool read_number(std::string_view text, double& value) {
+  const bool decimal_start =
+      !text.empty() && (std::isdigit(static_cast<unsigned char>(text[0])) != 0 ||
+                        ((text[0] == '-' || text[0] == '.') && text.size() > 1 &&
+                         (std::isdigit(static_cast<unsigned char>(text[1])) != 0 || text[1] == '.')));
+  if (decimal_start) {
+    const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
+    if (error == std::errc() && end == text.data() + text.size()) return true;
+  }
+  std::istringstream stream{std::string(text)};
+  stream.unsetf(std::ios::dec);
+  if ((stream >> std::noskipws >> value) && (stream >> std::ws).eof()) return true;
+  for (const std::string_view inf : {".inf", ".Inf", ".INF", "+.inf", "+.Inf", "+.INF"}) {
+    if (text == inf) {
+      value = std::numeric_limits<double>::infinity();
+      return true;
+    }
+  }
+  for (const std::string_view inf : {"-.inf", "-.Inf", "-.INF"}) {
+    if (text == inf) {
+      value = -std::numeric_limits<double>::infinity();
+      return true;
+    }
+  }
+  for (const std::string_view nan : {".nan", ".NaN", ".NAN"}) {
+    if (text == nan) {
+      value = std::numeric_limits<double>::quiet_NaN();
+      return true;
+    }
+  }
+  return false;
+}
+
 }  // namespace
 
-std::string describe(const YAML::Node& node) {
-  switch (node.Type()) {
-    case YAML::NodeType::Scalar:
-      return fmt::format("'{}'", node.Scalar());
-    case YAML::NodeType::Sequence:
+std::string describe(const YamlDocument& document, YamlDocument::Id node) {
+  switch (document.kind(node)) {
+    case YamlKind::scalar:
+      return fmt::format("'{}'", document.scalar(node));
+    case YamlKind::sequence:
       return "a list";
-    case YAML::NodeType::Map:
+    case YamlKind::map:
       return "a mapping";
     default:
       return "nothing";
@@ -94,13 +133,13 @@ std::string join_names(const std::vector<std::string>& names) {
   return joined;
 }
 
-void throw_input_error(const std::string& source, const YAML::Mark& mark, const std::string& field,
+void throw_input_error(const std::string& source, const YamlMark& mark, const std::string& field,
                        const std::string& problem) {
   if (mark.is_null()) throw InputError(source, 0, 0, field, problem);
   throw InputError(source, mark.line + 1, mark.column + 1, field, problem);
 }
 
-void YamlSource::fail(const YAML::Mark& mark, const std::string& field,
+void YamlSource::fail(const YamlMark& mark, const std::string& field,
                       const std::string& problem) const {
   // Only overrides make nodes without a mark: the latest one at, below or (a flow value's
   // items) above this path made it.
@@ -114,19 +153,14 @@ void YamlSource::fail(const YAML::Mark& mark, const std::string& field,
                     problem);
 }
 
-std::string YamlValue::flow_text() const {
-  if (node_.IsScalar()) return node_.Scalar();
-  YAML::Emitter out;
-  out << YAML::Flow << node_;
-  return out.c_str();
-}
+std::string YamlValue::flow_text() const { return document_->flow_text(node_); }
 
 void YamlValue::fail(const std::string& problem) const {
-  source_->fail(node_.Mark(), path_, problem);
+  source_->fail(document_->mark(node_), path_, problem);
 }
 
 void YamlValue::fail_key(std::string_view key, const std::string& problem) const {
-  source_->fail(node_.Mark(), child_path(key), problem);
+  source_->fail(document_->mark(node_), child_path(key), problem);
 }
 
 std::string YamlValue::child_path(std::string_view key) const {
@@ -134,20 +168,21 @@ std::string YamlValue::child_path(std::string_view key) const {
 }
 
 std::vector<std::pair<std::string, YamlValue>> YamlValue::entries() const {
-  if (!node_.IsMap()) fail("expected a mapping (name: value, ...), got " + describe(node_));
+  if (!is_map()) fail("expected a mapping (name: value, ...), got " + description());
+  const YamlDocument& document = *document_;
   std::vector<std::pair<std::string, YamlValue>> result;
-  std::unordered_set<std::string> seen;
-  for (const auto& entry : node_) {
-    // yaml-cpp keeps repeated keys; a repeated name is almost always a copy-paste slip.
-    if (!entry.first.IsScalar() || entry.first.Scalar().empty()) {
-      source_->fail(entry.first.Mark(), path_,
-                    "keys must be plain names, got " + describe(entry.first));
+  std::unordered_set<std::string_view> seen;
+  for (std::size_t i = 0; i < document.size(node_); ++i) {
+    // A repeated name (YAML parsers keep it) is almost always a copy-paste slip.
+    const YamlDocument::Id key_node = document.key(node_, i);
+    const std::string_view key = document.scalar(key_node);
+    if (document.kind(key_node) != YamlKind::scalar || key.empty()) {
+      source_->fail(document.mark(key_node), path_, "keys must be plain names, got " + describe(document, key_node));
     }
-    const std::string& key = entry.first.Scalar();
     if (!seen.insert(key).second) {
-      source_->fail(entry.first.Mark(), child_path(key), fmt::format("'{}' is given twice", key));
+      source_->fail(document.mark(key_node), child_path(key), fmt::format("'{}' is given twice", key));
     }
-    result.emplace_back(key, YamlValue(entry.second, child_path(key), *source_));
+    result.emplace_back(key, child(document.value(node_, i), key));
   }
   return result;
 }
@@ -158,20 +193,22 @@ void YamlValue::expect_keys(std::initializer_list<std::string_view> allowed) con
 
 void YamlValue::expect_keys(std::span<const std::string_view> allowed) const {
   entries();  // checks that this is a mapping of unique plain names
-  for (const auto& entry : node_) {
-    const std::string& key = entry.first.Scalar();
+  for (std::size_t i = 0; i < document_->size(node_); ++i) {
+    const YamlDocument::Id key_node = document_->key(node_, i);
+    const std::string_view key = document_->scalar(key_node);
     if (std::find(allowed.begin(), allowed.end(), key) != allowed.end()) continue;
     // Report at the key itself: its value may be lines below.
-    source_->fail(entry.first.Mark(), child_path(key),
+    source_->fail(document_->mark(key_node), child_path(key),
                   fmt::format("unknown key '{}'{}", key, hint(key, to_strings(allowed))));
   }
 }
 
 std::optional<YamlValue> YamlValue::find(std::string_view key) const {
-  if (!node_.IsMap()) fail("expected a mapping (name: value, ...), got " + describe(node_));
-  for (const auto& entry : node_) {
-    if (entry.first.IsScalar() && entry.first.Scalar() == key) {
-      return YamlValue(entry.second, child_path(key), *source_);
+  if (!is_map()) fail("expected a mapping (name: value, ...), got " + description());
+  for (std::size_t i = 0; i < document_->size(node_); ++i) {
+    const YamlDocument::Id key_node = document_->key(node_, i);
+    if (document_->kind(key_node) == YamlKind::scalar && document_->scalar(key_node) == key) {
+      return child(document_->value(node_, i), key);
     }
   }
   return std::nullopt;
@@ -199,57 +236,56 @@ std::vector<YamlValue> YamlValue::items(std::size_t n_min, std::size_t n_max,
     }
     return fmt::format("a list of {} to {} {}", n_min, n_max, what);
   };
-  if (!node_.IsSequence()) fail(fmt::format("expected {}, got {}", expected(), describe(node_)));
-  if (node_.size() < n_min || node_.size() > n_max) {
-    fail(fmt::format("expected {}, got {} item(s)", expected(), node_.size()));
-  }
+  const std::size_t n = document_->size(node_);
+  if (kind() != YamlKind::sequence) fail(fmt::format("expected {}, got {}", expected(), description()));
+  if (n < n_min || n > n_max) fail(fmt::format("expected {}, got {} item(s)", expected(), n));
   std::vector<YamlValue> result;
-  for (std::size_t i = 0; i < node_.size(); ++i) {
-    result.emplace_back(node_[i], child_path(std::to_string(i)), *source_);
-  }
+  result.reserve(n);
+  for (std::size_t i = 0; i < n; ++i) result.push_back(child(document_->item(node_, i), std::to_string(i)));
   return result;
 }
 
 std::string YamlValue::text() const {
-  if (!node_.IsScalar()) fail("expected text, got " + describe(node_));
-  return node_.Scalar();
+  if (!is_scalar()) fail("expected text, got " + description());
+  return std::string(document_->scalar(node_));
 }
 
 bool YamlValue::is_number() const {
   double ignored = 0.0;
-  return node_.IsScalar() && YAML::convert<double>::decode(node_, ignored);
+  return is_scalar() && read_number(document_->scalar(node_), ignored);
 }
 
 double YamlValue::number(Sign sign, std::string_view unit) const {
   const std::string in_unit = unit.empty() ? "" : fmt::format(" ({})", unit);
   double value = 0.0;
-  if (!node_.IsScalar() || !YAML::convert<double>::decode(node_, value)) {
-    fail(fmt::format("expected a number{}, got {}", in_unit, describe(node_)));
+  if (!is_scalar() || !read_number(document_->scalar(node_), value)) {
+    fail(fmt::format("expected a number{}, got {}", in_unit, description()));
   }
-  if (!std::isfinite(value)) fail(fmt::format("must be a finite number, got {}", node_.Scalar()));
+  const std::string_view scalar = document_->scalar(node_);
+  if (!std::isfinite(value)) fail(fmt::format("must be a finite number, got {}", scalar));
   // Beyond these, products in the solver (m·a, EA·ε, K/M) overflow or lose all digits: a
   // mass of 1e308 kg or an area of 1e-300 m² is a typo, not a structure.
   constexpr double kLargest = 1e100, kSmallest = 1e-100;
   if (std::abs(value) > kLargest || (value != 0.0 && std::abs(value) < kSmallest)) {
     fail(fmt::format("must be 0 or between {:g} and {:g} in magnitude{}, got {}", kSmallest, kLargest,
-                     unit.empty() ? " (SI units)" : in_unit, node_.Scalar()));
+                     unit.empty() ? " (SI units)" : in_unit, scalar));
   }
   if (sign == Sign::positive && !(value > 0.0)) {
-    fail(fmt::format("must be positive{}, got {}", in_unit, node_.Scalar()));
+    fail(fmt::format("must be positive{}, got {}", in_unit, scalar));
   }
   if (sign == Sign::non_negative && value < 0.0) {
-    fail(fmt::format("must not be negative{}, got {}", in_unit, node_.Scalar()));
+    fail(fmt::format("must not be negative{}, got {}", in_unit, scalar));
   }
   return value;
 }
 
 int YamlValue::integer(int min) const {
   const double value = number();
-  if (value != std::floor(value)) fail(fmt::format("expected an integer, got {}", node_.Scalar()));
-  if (value < min) fail(fmt::format("must be at least {}, got {}", min, node_.Scalar()));
+  const std::string_view scalar = document_->scalar(node_);
+  if (value != std::floor(value)) fail(fmt::format("expected an integer, got {}", scalar));
+  if (value < min) fail(fmt::format("must be at least {}, got {}", min, scalar));
   if (value > std::numeric_limits<int>::max()) {
-    fail(
-        fmt::format("must be at most {}, got {}", std::numeric_limits<int>::max(), node_.Scalar()));
+    fail(fmt::format("must be at most {}, got {}", std::numeric_limits<int>::max(), scalar));
   }
   return static_cast<int>(value);
 }

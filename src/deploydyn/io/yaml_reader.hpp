@@ -1,8 +1,7 @@
 #pragma once
-// Checked reading of a YAML tree. Every failure is an InputError naming the file, line, column
-// and dotted field, so that the model loader only has to state what is allowed.
-
-#include <yaml-cpp/yaml.h>
+// Checked reading of a YAML document (io/yaml_document.hpp). Every failure is an InputError
+// naming the file, line, column and dotted field, so that the model loader only has to state
+// what is allowed.
 
 #include <cstddef>
 #include <initializer_list>
@@ -14,12 +13,13 @@
 #include <vector>
 
 #include "deploydyn/io/model_loader.hpp"
+#include "deploydyn/io/yaml_document.hpp"
 #include "deploydyn/util/name_table.hpp"
 
 namespace deploydyn::io {
 
 // Throws InputError at mark; line and column are 0 when the mark is null (e.g. no file).
-[[noreturn]] void throw_input_error(const std::string& source, const YAML::Mark& mark,
+[[noreturn]] void throw_input_error(const std::string& source, const YamlMark& mark,
                                     const std::string& field, const std::string& problem);
 
 // Where a tree came from: a file (or a source name), possibly edited by --set overrides.
@@ -30,7 +30,7 @@ class YamlSource {
   // Remembers an applied override: nodes it made have no mark, and their errors name it.
   void add_override(const Override& applied) { overrides_.push_back(applied); }
 
-  [[noreturn]] void fail(const YAML::Mark& mark, const std::string& field,
+  [[noreturn]] void fail(const YamlMark& mark, const std::string& field,
                          const std::string& problem) const;
 
  private:
@@ -41,27 +41,25 @@ class YamlSource {
 enum class Sign { any, positive, non_negative };
 
 // "'abc'", "a list", "a mapping" or "nothing": what a node is, for messages.
-std::string describe(const YAML::Node& node);
+std::string describe(const YamlDocument& document, YamlDocument::Id node);
 // "; did you mean 'area'?" for a candidate a few edits away from word (a typo), or "".
 std::string did_you_mean(std::string_view word, const std::vector<std::string>& candidates);
 // "A, B, C" (the first few, then "...").
 std::string join_names(const std::vector<std::string>& names);
 
-// One node of the tree with its dotted path, e.g. "elements.2.area".
+// One node of a document with its dotted path, e.g. "elements.2.area". The document and the
+// source must outlive it.
 class YamlValue {
  public:
-  YamlValue(YAML::Node node, std::string path, const YamlSource& source)
-      : node_(std::move(node)), path_(std::move(path)), source_(&source) {}
-  YamlValue(const YamlValue&) = default;
-  // Assigning a YAML::Node overwrites the node it refers to, i.e. it would edit the tree.
-  YamlValue& operator=(const YamlValue&) = delete;
+  YamlValue(const YamlDocument& document, YamlDocument::Id node, std::string path, const YamlSource& source)
+      : document_(&document), node_(node), path_(std::move(path)), source_(&source) {}
 
   const std::string& path() const { return path_; }
-  bool is_scalar() const { return node_.IsScalar(); }
-  bool is_map() const { return node_.IsMap(); }
+  bool is_scalar() const { return kind() == YamlKind::scalar; }
+  bool is_map() const { return kind() == YamlKind::map; }
   // Made by a --set override (it has no place in the file).
-  bool from_override() const { return node_.Mark().is_null(); }
-  std::string description() const { return describe(node_); }
+  bool from_override() const { return document_->mark(node_).is_null(); }
+  std::string description() const { return describe(*document_, node_); }
   // The value as YAML flow text, as --set takes it: "130", "[x, y]", "{type: newmark}".
   std::string flow_text() const;
 
@@ -98,8 +96,13 @@ class YamlValue {
 
  private:
   std::string child_path(std::string_view key) const;
+  YamlKind kind() const { return document_->kind(node_); }
+  YamlValue child(YamlDocument::Id node, std::string_view key) const {
+    return YamlValue(*document_, node, child_path(key), *source_);
+  }
 
-  YAML::Node node_;
+  const YamlDocument* document_;
+  YamlDocument::Id node_;
   std::string path_;
   const YamlSource* source_;
 };

@@ -10,6 +10,11 @@ constexpr std::size_t kCasesPerCore = 4;
 
 }  // namespace
 
+Model Study::case_model(std::size_t index) const {
+  const std::vector<Override>& overrides = cases.at(index).overrides;
+  return model_source ? model_source->build(overrides) : load_model(model_file, overrides);
+}
+
 std::filesystem::path Study::case_folder(std::size_t index) const {
   return out_folder / cases.at(index).name;
 }

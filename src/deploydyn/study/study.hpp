@@ -6,12 +6,14 @@
 
 #include <cstddef>
 #include <filesystem>
+#include <memory>
 #include <optional>
 #include <utility>
 #include <string>
 #include <vector>
 
 #include "deploydyn/io/model_loader.hpp"
+#include "deploydyn/io/model_source.hpp"
 #include "deploydyn/study/sampling.hpp"
 
 namespace deploydyn {
@@ -40,6 +42,11 @@ struct Study {
   // A sampled study (cases drawn, not listed): cases[0] is "nominal", the others drawn.
   std::optional<Sampling> sampling;
 
+  // model_file parsed once (study/study_loader.cpp); without it the file is read per case.
+  std::shared_ptr<const ModelSource> model_source;
+
+  // Case `index`'s model: the model with the case's overrides.
+  Model case_model(std::size_t index) const;
   std::filesystem::path case_folder(std::size_t index) const;
   std::filesystem::path table_file() const;  // out_folder/study.csv
 };

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <charconv>
 #include <fstream>
+#include <memory>
 #include <optional>
 #include <sstream>
 
@@ -69,10 +70,12 @@ bool sets_zero_temperature_change(const StudyCase& c) {
   return false;
 }
 
-// The model as its file says; an error in it names its own file, except that it is missing.
-Model load_nominal(const std::filesystem::path& model_file, const YamlValue& model_value) {
+// The model file, read and parsed once for every case; an error in it names its own file,
+// except that it is missing (named at the study's `model` line).
+std::shared_ptr<const ModelSource> read_model_source(const std::filesystem::path& model_file,
+                                                     const YamlValue& model_value) {
   try {
-    return load_model(model_file);
+    return std::make_shared<const ModelSource>(ModelSource::read(model_file));
   } catch (const InputError& e) {
     if (e.source() == model_file.string() && e.line() == 0) {
       model_value.fail(fmt::format("{}: {}", model_file.string(), e.problem()));
@@ -81,15 +84,14 @@ Model load_nominal(const std::filesystem::path& model_file, const YamlValue& mod
   }
 }
 
-// Loads the model under every case's overrides; an error caused by an override is reported at
+// Builds the model under every case's overrides; an error caused by an override is reported at
 // that override's line in the study file.
-void check_cases(const std::filesystem::path& model_file, const YamlValue& model_value,
-                 const std::vector<CaseSpec>& specs) {
-  load_nominal(model_file, model_value);
+void check_cases(const ModelSource& source, const std::vector<CaseSpec>& specs) {
+  source.build();
   for (const CaseSpec& spec : specs) {
     const auto& overrides = spec.study_case.overrides;
     try {
-      load_model(model_file, overrides);
+      source.build(overrides);
     } catch (const InputError& e) {
       for (std::size_t i = 0; i < overrides.size(); ++i) {
         if (e.source() == fmt::format("--set {}={}", overrides[i].path, overrides[i].value)) {
@@ -123,7 +125,8 @@ Study read_study(const YamlValue& root, const std::string& source_name,
     }
     if (root.find("reference")) root.at("reference").fail("a sampled study's reference is its nominal case");
     study.sampling = read_sampling(*sampling);
-    const Model nominal = load_nominal(study.model_file, model_value);
+    study.model_source = read_model_source(study.model_file, model_value);
+    const Model nominal = study.model_source->build();
     std::vector<DrawnCase> drawn;
     try {
       drawn = draw_cases(*study.sampling, nominal);
@@ -138,7 +141,7 @@ Study read_study(const YamlValue& root, const std::string& source_name,
     }
     // Every drawn case sets the same paths the same way: the first one stands for all.
     try {
-      load_model(study.model_file, study.cases[1].overrides);
+      study.model_source->build(study.cases[1].overrides);
     } catch (const InputError& e) {
       sampling->fail(fmt::format("the model with {}'s drawn values: {}", study.cases[1].name, e.what()));
     }
@@ -170,7 +173,8 @@ Study read_study(const YamlValue& root, const std::string& source_name,
         zero == study.cases.end() ? 0 : static_cast<std::size_t>(zero - study.cases.begin());
   }
 
-  check_cases(study.model_file, model_value, specs);
+  study.model_source = read_model_source(study.model_file, model_value);
+  check_cases(*study.model_source, specs);
   return study;
 }
 
@@ -179,18 +183,13 @@ Study read_study(const YamlValue& root, const std::string& source_name,
 Study load_study_from_string(const std::string& text, const std::string& source_name,
                              const std::filesystem::path& base_folder) {
   const io::YamlSource source(source_name);
+  io::YamlDocument document;
   try {
-    YAML::Node root;
-    try {
-      root = YAML::Load(text);
-    } catch (const YAML::ParserException& error) {
-      io::throw_input_error(source_name, error.mark, "", "YAML syntax: " + error.msg);
-    }
-    return read_study(YamlValue(root, "", source), source_name, base_folder);
-  } catch (const YAML::Exception& error) {
-    // The reader checks types before converting, so this is a safety net, not a path.
-    io::throw_input_error(source_name, error.mark, "", "cannot read the study: " + error.msg);
+    document = io::YamlDocument::parse(text);
+  } catch (const io::YamlSyntaxError& error) {
+    io::throw_input_error(source_name, error.mark, "", "YAML syntax: " + error.message);
   }
+  return read_study(YamlValue(document, document.root(), "", source), source_name, base_folder);
 }
 
 Study load_study(const std::filesystem::path& file) {

@@ -38,7 +38,7 @@ CaseOutcome run_case(const Study& study, std::size_t index, const std::atomic<bo
   }
   // Everything a case can throw is that case's failure; nothing may leave a worker thread.
   try {
-    Model model = load_model(study.model_file, study.cases[index].overrides);
+    Model model = study.case_model(index);
     RunControl control;
     control.stop = stop;
     outcome.report = run_to_folder(model, study.case_folder(index), control, outcome.envelope);
@@ -81,7 +81,7 @@ bool completed_earlier(const Study& study, std::size_t index) {
     const auto earlier = read_case_result(study.case_folder(index));
     if (!earlier || earlier->status != RunStatus::completed) return false;
     std::ostringstream model_now;
-    save_model(load_model(study.model_file, study.cases[index].overrides), model_now);
+    save_model(study.case_model(index), model_now);
     return model_now.str() == file_text(study.case_folder(index) / kRunModelFileName);
   } catch (const std::exception&) {
     return false;  // unreadable or no longer loadable: run it again, and let that say why
@@ -173,6 +173,7 @@ void coordinate(StudyChannel& channel, Take take, Done done, std::vector<CaseOut
         outcome.lost = true;
         done(static_cast<std::size_t>(worker.running));
       }
+      channel.lost(static_cast<int>(rank));
       worker.stopped = true;
       --active;
     }

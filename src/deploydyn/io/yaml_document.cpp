@@ -1,0 +1,304 @@
+#include "deploydyn/io/yaml_document.hpp"
+
+#include <yaml-cpp/yaml.h>
+#include <yaml.h>
+
+#include <memory>
+#include <stdexcept>
+#include <unordered_map>
+#include <utility>
+
+namespace deploydyn::io {
+namespace {
+
+// yaml-cpp's null: a plain (unquoted) ~, null, Null, NULL or nothing at all.
+bool plain_null(std::string_view text) {
+  return text.empty() || text == "~" || text == "null" || text == "Null" || text == "NULL";
+}
+
+YamlMark mark_of(const yaml_mark_t& mark) { return {static_cast<int>(mark.line), static_cast<int>(mark.column)}; }
+
+// LibYAML gave up: the text is not YAML, or uses what this reader does not take (an alias
+// before its anchor). yaml-cpp then reads it, and says why when it cannot.
+struct LibyamlRefused {};
+
+// Quotes a scalar for flow text when it would otherwise read differently.
+std::string flow_scalar(std::string_view text) {
+  const bool plain = !text.empty() && text.find_first_of(",[]{}:#&*!|>'\"%@`\n") == std::string_view::npos &&
+                     text.front() != ' ' && text.back() != ' ' && text.front() != '-' && text.front() != '?';
+  const bool number_like = !text.empty() && text.front() == '-' &&
+                           text.find_first_not_of("-+.0123456789eE") == std::string_view::npos;
+  if (plain || number_like) return std::string(text);
+  std::string quoted = "\"";
+  for (const char c : text) {
+    if (c == '"' || c == '\\') quoted += '\\';
+    if (c == '\n') {
+      quoted += "\\n";
+      continue;
+    }
+    quoted += c;
+  }
+  return quoted + '"';
+}
+
+}  // namespace
+
+// Builds the tree from LibYAML's events. A container's children are gathered on a stack and
+// stored together when it ends, so that they are contiguous in children_.
+class YamlDocument::Builder {
+ public:
+  explicit Builder(YamlDocument& document) : document_(document) {}
+
+  void parse(std::string_view text) {
+    yaml_parser_t parser;
+    if (yaml_parser_initialize(&parser) == 0) throw std::bad_alloc();
+    const std::unique_ptr<yaml_parser_t, void (*)(yaml_parser_t*)> guard(&parser, yaml_parser_delete);
+    yaml_parser_set_input_string(&parser, reinterpret_cast<const unsigned char*>(text.data()), text.size());
+    bool have_root = false;
+    for (bool done = false; !done;) {
+      yaml_event_t event;
+      if (yaml_parser_parse(&parser, &event) == 0) throw LibyamlRefused{};
+      const std::unique_ptr<yaml_event_t, void (*)(yaml_event_t*)> event_guard(&event, yaml_event_delete);
+      switch (event.type) {
+        case YAML_SCALAR_EVENT: {
+          const std::string_view value(reinterpret_cast<const char*>(event.data.scalar.value),
+                                       event.data.scalar.length);
+          const bool null = event.data.scalar.style == YAML_PLAIN_SCALAR_STYLE && plain_null(value);
+          // yaml-cpp places an empty value (`key:` and nothing) where the next token starts.
+          const Id node = null ? document_.add_node(YamlKind::null, mark_of(event.start_mark))
+                               : document_.add_scalar_at(value, mark_of(event.start_mark));
+          add(node, anchor_name(event.data.scalar.anchor));
+          break;
+        }
+        case YAML_SEQUENCE_START_EVENT:
+          open(YamlKind::sequence, mark_of(event.start_mark), anchor_name(event.data.sequence_start.anchor));
+          break;
+        case YAML_MAPPING_START_EVENT:
+          open(YamlKind::map, mark_of(event.start_mark), anchor_name(event.data.mapping_start.anchor));
+          break;
+        case YAML_SEQUENCE_END_EVENT:
+        case YAML_MAPPING_END_EVENT:
+          close();
+          break;
+        case YAML_ALIAS_EVENT: {
+          const auto anchored = anchors_.find(reinterpret_cast<const char*>(event.data.alias.anchor));
+          if (anchored == anchors_.end()) throw LibyamlRefused{};
+          add(anchored->second, {});
+          break;
+        }
+        case YAML_DOCUMENT_END_EVENT:
+        case YAML_STREAM_END_EVENT:
+          done = true;  // as yaml-cpp's Load: the first document only
+          break;
+        case YAML_DOCUMENT_START_EVENT:
+          have_root = true;
+          break;
+        default:
+          break;
+      }
+    }
+    if (!have_root || !root_) document_.root_ = document_.add_node(YamlKind::null, {});
+  }
+
+ private:
+  struct Open {
+    Id node;
+    std::size_t first;   // its children start here on the stack
+    std::string anchor;  // copied: the event that named it is freed before the node ends
+  };
+
+  static std::string anchor_name(const unsigned char* anchor) {
+    return anchor != nullptr ? std::string(reinterpret_cast<const char*>(anchor)) : std::string();
+  }
+
+  void add(Id node, const std::string& anchor) {
+    if (!anchor.empty()) anchors_[anchor] = node;
+    if (open_.empty()) {
+      document_.root_ = node;
+      root_ = true;
+      return;
+    }
+    stack_.push_back(node);
+  }
+
+  void open(YamlKind kind, YamlMark mark, std::string anchor) {
+    const Id node = document_.add_node(kind, mark);
+    // An anchor names the node from its start: an alias inside it would be a cycle, which
+    // yaml-cpp refuses too.
+    open_.push_back({node, stack_.size(), std::move(anchor)});
+  }
+
+  void close() {
+    const Open container = std::move(open_.back());
+    open_.pop_back();
+    Node& node = document_.nodes_[container.node];
+    node.begin = static_cast<std::uint32_t>(document_.children_.size());
+    const std::size_t n = stack_.size() - container.first;
+    node.count = static_cast<std::uint32_t>(node.kind == YamlKind::map ? n / 2 : n);
+    document_.children_.insert(document_.children_.end(), stack_.begin() + static_cast<std::ptrdiff_t>(container.first),
+                               stack_.end());
+    stack_.resize(container.first);
+    add(container.node, container.anchor);
+  }
+
+  YamlDocument& document_;
+  std::vector<Open> open_;
+  std::vector<Id> stack_;
+  std::unordered_map<std::string, Id> anchors_;
+  bool root_ = false;
+};
+
+YamlDocument YamlDocument::parse(std::string_view text) {
+  YamlDocument document;
+  document.nodes_.reserve(text.size() / 6);  // about one value per six bytes in a model file
+  document.children_.reserve(text.size() / 5);
+  document.text_.reserve(text.size() / 2);
+  try {
+    Builder(document).parse(text);
+    return document;
+  } catch (const LibyamlRefused&) {
+    return parse_with_yaml_cpp(text);
+  }
+}
+
+// A yaml-cpp tree into the document, marks kept.
+class YamlDocument::YamlCppReader {
+ public:
+  explicit YamlCppReader(YamlDocument& document) : document_(document) {}
+
+  Id copy(const YAML::Node& node) {
+    const YamlMark mark = node.Mark().is_null() ? YamlMark{} : YamlMark{node.Mark().line, node.Mark().column};
+    switch (node.Type()) {
+      case YAML::NodeType::Scalar:
+        return document_.add_scalar_at(node.Scalar(), mark);
+      case YAML::NodeType::Sequence:
+      case YAML::NodeType::Map: {
+        std::vector<Id> children;
+        for (const auto& entry : node) {
+          if (node.IsMap()) {
+            children.push_back(copy(entry.first));
+            children.push_back(copy(entry.second));
+          } else {
+            children.push_back(copy(entry));
+          }
+        }
+        return document_.add_container(node.IsMap() ? YamlKind::map : YamlKind::sequence, mark, children);
+      }
+      default:
+        return document_.add_node(YamlKind::null, mark);
+    }
+  }
+
+ private:
+  YamlDocument& document_;
+};
+
+YamlDocument YamlDocument::parse_with_yaml_cpp(std::string_view text) {
+  YAML::Node root;
+  try {
+    root = YAML::Load(std::string(text));
+  } catch (const YAML::ParserException& error) {
+    throw YamlSyntaxError{error.msg, error.mark.is_null() ? YamlMark{} : YamlMark{error.mark.line, error.mark.column}};
+  }
+  YamlDocument document;
+  document.root_ = YamlCppReader(document).copy(root);
+  return document;
+}
+
+std::string_view YamlDocument::scalar(Id node) const {
+  const Node& n = nodes_[node];
+  if (n.kind != YamlKind::scalar) return {};
+  return std::string_view(text_).substr(n.begin, n.count);
+}
+
+YamlDocument::Id YamlDocument::add_node(YamlKind kind, YamlMark mark) {
+  Node node;
+  node.kind = kind;
+  node.line = mark.line;
+  node.column = mark.column;
+  nodes_.push_back(node);
+  return static_cast<Id>(nodes_.size() - 1);
+}
+
+YamlDocument::Id YamlDocument::add_scalar_at(std::string_view text, YamlMark mark) {
+  const Id id = add_node(YamlKind::scalar, mark);
+  nodes_[id].begin = static_cast<std::uint32_t>(text_.size());
+  nodes_[id].count = static_cast<std::uint32_t>(text.size());
+  text_.append(text);
+  return id;
+}
+
+YamlDocument::Id YamlDocument::add_container(YamlKind kind, YamlMark mark, std::span<const Id> children) {
+  const Id id = add_node(kind, mark);
+  nodes_[id].begin = static_cast<std::uint32_t>(children_.size());
+  nodes_[id].count = static_cast<std::uint32_t>(kind == YamlKind::map ? children.size() / 2 : children.size());
+  children_.insert(children_.end(), children.begin(), children.end());
+  return id;
+}
+
+YamlDocument::Id YamlDocument::add_scalar(std::string_view text) { return add_scalar_at(text, {}); }
+
+YamlDocument::Id YamlDocument::add_map() { return add_node(YamlKind::map, {}); }
+
+YamlDocument::Id YamlDocument::add_copy(const YamlDocument& other, Id node) {
+  switch (other.kind(node)) {
+    case YamlKind::scalar:
+      return add_scalar(other.scalar(node));
+    case YamlKind::sequence:
+    case YamlKind::map: {
+      const bool map = other.kind(node) == YamlKind::map;
+      std::vector<Id> children;
+      for (std::size_t i = 0; i < other.size(node); ++i) {
+        if (map) {
+          children.push_back(add_copy(other, other.key(node, i)));
+          children.push_back(add_copy(other, other.value(node, i)));
+        } else {
+          children.push_back(add_copy(other, other.item(node, i)));
+        }
+      }
+      return add_container(other.kind(node), {}, children);
+    }
+    default:
+      return add_node(YamlKind::null, {});
+  }
+}
+
+void YamlDocument::append(Id map, Id key, Id value) {
+  // The mapping's pairs move to the end, with the new one: children stay contiguous.
+  Node& node = nodes_[map];
+  const auto begin = static_cast<std::ptrdiff_t>(node.begin);
+  std::vector<Id> pairs(children_.begin() + begin, children_.begin() + begin + 2 * node.count);
+  pairs.push_back(key);
+  pairs.push_back(value);
+  node.begin = static_cast<std::uint32_t>(children_.size());
+  node.count += 1;
+  children_.insert(children_.end(), pairs.begin(), pairs.end());
+}
+
+std::string YamlDocument::flow_text(Id node) const {
+  switch (kind(node)) {
+    case YamlKind::scalar:
+      return std::string(scalar(node));
+    case YamlKind::sequence: {
+      std::string text = "[";
+      for (std::size_t i = 0; i < size(node); ++i) {
+        const Id child = item(node, i);
+        text += (i > 0 ? ", " : "") + (kind(child) == YamlKind::scalar ? flow_scalar(scalar(child)) : flow_text(child));
+      }
+      return text + "]";
+    }
+    case YamlKind::map: {
+      std::string text = "{";
+      for (std::size_t i = 0; i < size(node); ++i) {
+        const Id k = key(node, i), v = value(node, i);
+        text += (i > 0 ? ", " : "") + flow_text(k) + ": " +
+                (kind(v) == YamlKind::scalar ? flow_scalar(scalar(v)) : flow_text(v));
+      }
+      return text + "}";
+    }
+    default:
+      return "~";
+  }
+}
+
+}  // namespace deploydyn::io

@@ -1,0 +1,87 @@
+#pragma once
+// A YAML file as a tree in flat arrays, read with LibYAML's event parser: a 10⁵-bar roof
+// (15 MB) loads in a fraction of a second and a few bytes per value, where a tree of
+// yaml-cpp nodes took seconds and ~1 GB (docs/performance.md, "Model input").
+//
+// Nodes are numbered; a node is null, a scalar (its text), a sequence (its items) or a mapping
+// (its key and value nodes, in file order). Each keeps its place in the file (0-based line and
+// column, as yaml-cpp's marks), so that errors can name it. An alias is the anchored node itself.
+// The --set overrides edit a document: the nodes they make have no place in the file.
+
+#include <cstdint>
+#include <span>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace deploydyn::io {
+
+struct YamlMark {
+  int line = -1;  // 0-based; −1: no place in the file (made by an override)
+  int column = -1;
+  bool is_null() const { return line < 0; }
+};
+
+enum class YamlKind : std::uint8_t { null, scalar, sequence, map };
+
+// The parser's own message when a text is not YAML, at its place.
+struct YamlSyntaxError {
+  std::string message;
+  YamlMark mark;
+};
+
+class YamlDocument {
+ public:
+  using Id = std::uint32_t;
+
+  // The first document of `text`; an empty text is a null root. Throws YamlSyntaxError with
+  // yaml-cpp's message when it is not YAML (LibYAML tells that it is not; yaml-cpp, which
+  // the messages have always come from, says why).
+  static YamlDocument parse(std::string_view text);
+  // The same tree through yaml-cpp: the reference parse, and the one for the rare text that
+  // LibYAML rejects and yaml-cpp reads.
+  static YamlDocument parse_with_yaml_cpp(std::string_view text);
+
+  Id root() const { return root_; }
+  YamlKind kind(Id node) const { return nodes_[node].kind; }
+  YamlMark mark(Id node) const { return {nodes_[node].line, nodes_[node].column}; }
+  // A scalar's text; "" for the others.
+  std::string_view scalar(Id node) const;
+  // Items of a sequence, pairs of a mapping; 0 for the others.
+  std::size_t size(Id node) const { return nodes_[node].kind >= YamlKind::sequence ? nodes_[node].count : 0; }
+  Id item(Id sequence, std::size_t i) const { return children_[nodes_[sequence].begin + i]; }
+  Id key(Id map, std::size_t i) const { return children_[nodes_[map].begin + 2 * i]; }
+  Id value(Id map, std::size_t i) const { return children_[nodes_[map].begin + 2 * i + 1]; }
+
+  // Edits (overrides). New nodes have no mark.
+  Id add_scalar(std::string_view text);
+  Id add_map();
+  // `node` of `other` and everything below it, copied into this document without marks.
+  Id add_copy(const YamlDocument& other, Id node);
+  void set_value(Id map, std::size_t i, Id value) { children_[nodes_[map].begin + 2 * i + 1] = value; }
+  void set_item(Id sequence, std::size_t i, Id value) { children_[nodes_[sequence].begin + i] = value; }
+  void append(Id map, Id key, Id value);
+
+  // The node as YAML flow text, as --set takes it: 130, [x, y], {type: newmark}.
+  std::string flow_text(Id node) const;
+
+ private:
+  struct Node {
+    YamlKind kind = YamlKind::null;
+    std::int32_t line = -1, column = -1;
+    std::uint32_t begin = 0, count = 0;  // a scalar's bytes in text_, or children in children_
+  };
+  class Builder;
+  class YamlCppReader;
+
+  Id add_node(YamlKind kind, YamlMark mark);
+  Id add_container(YamlKind kind, YamlMark mark, std::span<const Id> children);
+  Id add_scalar_at(std::string_view text, YamlMark mark);
+
+  std::vector<Node> nodes_;
+  std::vector<Id> children_;  // a sequence's items; a mapping's keys and values, alternating
+  std::string text_;          // every scalar's bytes, one after the other
+  Id root_ = 0;
+};
+
+}  // namespace deploydyn::io
