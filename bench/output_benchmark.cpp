@@ -3,6 +3,11 @@
 //   BM_MakeStepRecord  building the record: bar strains and forces, driver torque, energies
 //   BM_HistoryRow      formatting and writing its history.csv row (to a file in /tmp)
 // Counter ns_per_value: the time divided by the row's number of values.
+// History.csv against history.h5 (output/hdf5_writer.hpp) on roofs of 100 and 10⁴ units:
+//   BM_CsvRecord/N, BM_Hdf5Record/N   one output time of a roof of N units, written
+// Counters: ns_per_value (per history.csv value: the same table in both; history.h5 also
+// writes the mesh), bytes_per_value (the file's size per history.csv value; for HDF5 with the
+// mesh and the XDMF index), values (per record).
 
 #include <benchmark/benchmark.h>
 
@@ -10,6 +15,7 @@
 
 #include "deploydyn/assembly/assembler.hpp"
 #include "deploydyn/generators/roof.hpp"
+#include "deploydyn/output/hdf5_writer.hpp"
 #include "deploydyn/output/history_writer.hpp"
 
 namespace deploydyn {
@@ -20,9 +26,9 @@ struct RoofSnapshot {
   std::unique_ptr<Assembler> assembler;
   MotionState state;
 
-  RoofSnapshot() {
+  explicit RoofSnapshot(int n_units = 100) {
     RoofOptions options;
-    options.n_units = 100;
+    options.n_units = n_units;
     // The model docs/performance.md's writer costs were measured on (no bottom members).
     options.bearings = RoofBearings::pinned;
     model = make_roof(options);
@@ -63,6 +69,53 @@ void BM_HistoryRow(benchmark::State& state) {
       roof.n_values(), benchmark::Counter::kIsIterationInvariantRate | benchmark::Counter::kInvert);
 }
 BENCHMARK(BM_HistoryRow);
+
+// One record of an N-unit roof per iteration into `writer`, then the counters of `written`.
+template <typename Write>
+void record_roof(benchmark::State& state, Write write) {
+  const RoofSnapshot roof(static_cast<int>(state.range(0)));
+  const StepRecord record = make_step_record(*roof.assembler, roof.state);
+  const std::filesystem::path folder = std::filesystem::temp_directory_path() / "deploydyn_bench_output";
+  std::filesystem::remove_all(folder);
+  std::filesystem::create_directories(folder);
+  const std::uintmax_t bytes = write(state, roof.model, record, folder);
+  std::filesystem::remove_all(folder);
+  state.counters["values"] = roof.n_values();
+  state.counters["ns_per_value"] = benchmark::Counter(
+      roof.n_values(), benchmark::Counter::kIsIterationInvariantRate | benchmark::Counter::kInvert);
+  state.counters["bytes_per_value"] =
+      static_cast<double>(bytes) / (roof.n_values() * static_cast<double>(state.iterations()));
+}
+
+void BM_CsvRecord(benchmark::State& state) {
+  record_roof(state, [](benchmark::State& s, const Model& model, const StepRecord& record,
+                        const std::filesystem::path& folder) {
+    const auto file = folder / "history.csv";
+    {
+      HistoryWriter writer(file, model);
+      for (auto _ : s) writer.record(record);
+      writer.flush();
+    }
+    return std::filesystem::file_size(file);
+  });
+}
+BENCHMARK(BM_CsvRecord)->Arg(100)->Arg(10'000)->Unit(benchmark::kMicrosecond);
+
+void BM_Hdf5Record(benchmark::State& state) {
+  record_roof(state, [](benchmark::State& s, const Model& model, StepRecord record,
+                        const std::filesystem::path& folder) {
+    {
+      Hdf5Writer writer(folder, model);
+      for (auto _ : s) {
+        writer.record(record);
+        record.time_s += 1e-3;
+      }
+      writer.finish();
+    }
+    return std::filesystem::file_size(folder / kHdf5FileName) + std::filesystem::file_size(folder / kXdmfFileName);
+  });
+}
+BENCHMARK(BM_Hdf5Record)->Arg(100)->Arg(10'000)->Unit(benchmark::kMicrosecond);
 
 }  // namespace
 }  // namespace deploydyn
