@@ -7,7 +7,6 @@
 // document, yaml-cpp's nodes; glibc's mallinfo2 while it is alive).
 
 #include <benchmark/benchmark.h>
-#include <malloc.h>
 #include <yaml-cpp/yaml.h>
 
 #include <map>
@@ -18,16 +17,12 @@
 #include "deploydyn/io/model_source.hpp"
 #include "deploydyn/io/model_writer.hpp"
 #include "deploydyn/io/yaml_document.hpp"
+#include "support/heap_in_use.hpp"
 
 namespace deploydyn {
 namespace {
 
 constexpr int kTrusses = 10;
-
-double heap_in_use_bytes() {
-  const struct mallinfo2 info = mallinfo2();
-  return static_cast<double>(info.uordblks + info.hblkhd);
-}
 
 // The roof's model file, made once per size.
 const std::string& roof_text(int units) {
@@ -53,9 +48,9 @@ void parse_and_count(benchmark::State& state, Parse parse) {
   const std::string& text = roof_text(units);
   double held_bytes = 0.0;
   for (auto _ : state) {
-    const double before = heap_in_use_bytes();
+    const double before = bench::heap_in_use_bytes();
     auto tree = parse(text);
-    held_bytes = heap_in_use_bytes() - before;
+    held_bytes = bench::heap_in_use_bytes() - before;
     benchmark::DoNotOptimize(tree);
   }
   state.counters["bars"] = static_cast<double>(roof_bars(units));

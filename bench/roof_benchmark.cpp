@@ -13,7 +13,6 @@
 // the first steps cost what typical ones do.
 
 #include <benchmark/benchmark.h>
-#include <malloc.h>
 #include <sys/resource.h>
 
 #include <memory>
@@ -23,6 +22,7 @@
 #include "deploydyn/solvers/consistent_rates.hpp"
 #include "deploydyn/solvers/generalized_alpha.hpp"
 #include "support/allocation_counter.hpp"
+#include "support/heap_in_use.hpp"
 #include "support/cold_roof.hpp"
 #include "support/stepping_run.hpp"
 
@@ -30,12 +30,6 @@ namespace deploydyn {
 namespace {
 
 constexpr int kTrusses3d = 10;
-
-// Bytes the C/C++ heap holds now (glibc): what the structures built since a baseline take.
-double heap_in_use_bytes() {
-  const struct mallinfo2 info = mallinfo2();
-  return static_cast<double>(info.uordblks + info.hblkhd);
-}
 
 // A roof ready to step, its drivers turning at the peak rate from t = 0, with back end `solver`.
 struct RoofRun : bench::SteppingRun {
@@ -62,14 +56,14 @@ void label(benchmark::State& state, const Model& model, const LinearSystem& syst
 }
 
 void step_roof(benchmark::State& state, NewtonOptions::Jacobian jacobian) {
-  const double heap_before = heap_in_use_bytes();
+  const double heap_before = bench::heap_in_use_bytes();
   RoofRun run(static_cast<int>(state.range(0)), static_cast<int>(state.range(1)),
               static_cast<LinearSolverKind>(state.range(2)), jacobian);
   const double h = run.model.analysis.step_s;
   long iterations = 0, factorizations = 0, steps = 0;
   NewtonResult first = run.integrator->step(h, *run.system, run.state);
   if (!first.converged) state.SkipWithError(first.failure.c_str());
-  const double heap_bytes = heap_in_use_bytes() - heap_before;
+  const double heap_bytes = bench::heap_in_use_bytes() - heap_before;
   const long allocations_before = bench::heap_allocations();
   for (auto _ : state) {
     const NewtonResult result = run.integrator->step(h, *run.system, run.state);
