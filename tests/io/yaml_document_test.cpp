@@ -157,7 +157,7 @@ TEST(YamlDocument, NumbersReadAsYamlCppReadsThem) {
     const std::string text = "value: '" + spelling + "'\n";
     const YamlDocument document = YamlDocument::parse(text);
     const YamlSource source("numbers");
-    const YamlValue value = YamlValue(document, document.root(), "", source).at("value");
+    const YamlValue value = YamlValue(document, document.root(), source).at("value");
     double expected = 0.0;
     const bool reads = YAML::convert<double>::decode(YAML::Node(spelling), expected);
     EXPECT_EQ(value.is_number(), reads) << "'" << spelling << "'";

@@ -1122,10 +1122,10 @@ ModelSource ModelSource::from_document(io::YamlDocument document, const std::str
 
 Model ModelSource::build(const std::vector<Override>& overrides) const {
   io::YamlSource source(name_);
-  if (overrides.empty()) return ModelReader(YamlValue(*document_, document_->root(), "", source)).read();
+  if (overrides.empty()) return ModelReader(YamlValue(*document_, document_->root(), source)).read();
   io::YamlDocument edited = *document_;  // the overrides edit a copy: this source serves again
   for (const Override& override : overrides) apply_override(edited, override, source);
-  return ModelReader(YamlValue(edited, edited.root(), "", source)).read();
+  return ModelReader(YamlValue(edited, edited.root(), source)).read();
 }
 
 }  // namespace deploydyn

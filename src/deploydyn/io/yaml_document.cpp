@@ -138,6 +138,7 @@ class YamlDocument::Builder {
     document_.children_.insert(document_.children_.end(), stack_.begin() + static_cast<std::ptrdiff_t>(container.first),
                                stack_.end());
     stack_.resize(container.first);
+    document_.adopt(container.node);
     add(container.node, container.anchor);
   }
 
@@ -233,7 +234,41 @@ YamlDocument::Id YamlDocument::add_container(YamlKind kind, YamlMark mark, std::
   nodes_[id].begin = static_cast<std::uint32_t>(children_.size());
   nodes_[id].count = static_cast<std::uint32_t>(kind == YamlKind::map ? children.size() / 2 : children.size());
   children_.insert(children_.end(), children.begin(), children.end());
+  adopt(id);
   return id;
+}
+
+void YamlDocument::adopt(Id container) {
+  const Node& node = nodes_[container];
+  const std::uint32_t n = node.kind == YamlKind::map ? 2 * node.count : node.count;
+  for (std::uint32_t k = 0; k < n; ++k) {
+    Node& child = nodes_[children_[node.begin + k]];
+    if (child.parent != kNoParent) continue;
+    child.parent = container;
+    child.slot = k;
+  }
+}
+
+void YamlDocument::place(Id container, std::size_t slot, Id node) {
+  children_[nodes_[container].begin + slot] = node;
+  nodes_[node].parent = container;
+  nodes_[node].slot = static_cast<std::uint32_t>(slot);
+}
+
+std::string YamlDocument::path(Id node) const {
+  std::vector<std::string> keys;  // from the node up
+  for (Id at = node; nodes_[at].parent != kNoParent; at = nodes_[at].parent) {
+    const Node& parent = nodes_[nodes_[at].parent];
+    keys.push_back(parent.kind == YamlKind::map
+                       ? std::string(scalar(children_[parent.begin + nodes_[at].slot / 2 * 2]))
+                       : std::to_string(nodes_[at].slot));
+  }
+  std::string path;
+  for (auto key = keys.rbegin(); key != keys.rend(); ++key) {
+    if (!path.empty()) path += '.';
+    path += *key;
+  }
+  return path;
 }
 
 YamlDocument::Id YamlDocument::add_scalar(std::string_view text) { return add_scalar_at(text, {}); }
@@ -264,7 +299,8 @@ YamlDocument::Id YamlDocument::add_copy(const YamlDocument& other, Id node) {
 }
 
 void YamlDocument::append(Id map, Id key, Id value) {
-  // The mapping's pairs move to the end, with the new one: children stay contiguous.
+  // The mapping's pairs move to the end, with the new one: children stay contiguous (and keep
+  // their slots).
   Node& node = nodes_[map];
   const auto begin = static_cast<std::ptrdiff_t>(node.begin);
   std::vector<Id> pairs(children_.begin() + begin, children_.begin() + begin + 2 * node.count);
@@ -273,6 +309,8 @@ void YamlDocument::append(Id map, Id key, Id value) {
   node.begin = static_cast<std::uint32_t>(children_.size());
   node.count += 1;
   children_.insert(children_.end(), pairs.begin(), pairs.end());
+  place(map, 2 * node.count - 2, key);
+  place(map, 2 * node.count - 1, value);
 }
 
 std::string YamlDocument::flow_text(Id node) const {

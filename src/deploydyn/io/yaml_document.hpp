@@ -45,6 +45,9 @@ class YamlDocument {
   Id root() const { return root_; }
   YamlKind kind(Id node) const { return nodes_[node].kind; }
   YamlMark mark(Id node) const { return {nodes_[node].line, nodes_[node].column}; }
+  // The dotted path from the root, e.g. "elements.2.area" (keys by name, items by index); an
+  // aliased node's is where it was anchored. Made on demand: only messages need it.
+  std::string path(Id node) const;
   // A scalar's text; "" for the others.
   std::string_view scalar(Id node) const;
   // Items of a sequence, pairs of a mapping; 0 for the others.
@@ -58,24 +61,30 @@ class YamlDocument {
   Id add_map();
   // `node` of `other` and everything below it, copied into this document without marks.
   Id add_copy(const YamlDocument& other, Id node);
-  void set_value(Id map, std::size_t i, Id value) { children_[nodes_[map].begin + 2 * i + 1] = value; }
-  void set_item(Id sequence, std::size_t i, Id value) { children_[nodes_[sequence].begin + i] = value; }
+  void set_value(Id map, std::size_t i, Id value) { place(map, 2 * i + 1, value); }
+  void set_item(Id sequence, std::size_t i, Id value) { place(sequence, i, value); }
   void append(Id map, Id key, Id value);
 
   // The node as YAML flow text, as --set takes it: 130, [x, y], {type: newmark}.
   std::string flow_text(Id node) const;
 
  private:
+  static constexpr Id kNoParent = ~Id{0};
   struct Node {
     YamlKind kind = YamlKind::null;
     std::int32_t line = -1, column = -1;
     std::uint32_t begin = 0, count = 0;  // a scalar's bytes in text_, or children in children_
+    Id parent = kNoParent;               // the container that holds it first
+    std::uint32_t slot = 0;              // its place there: a map's 2i (key) or 2i + 1, an item's i
   };
   class Builder;
   class YamlCppReader;
 
   Id add_node(YamlKind kind, YamlMark mark);
+  void place(Id container, std::size_t slot, Id node);
   Id add_container(YamlKind kind, YamlMark mark, std::span<const Id> children);
+  // Sets the parent of `container`'s children that have none yet (an alias keeps its first).
+  void adopt(Id container);
   Id add_scalar_at(std::string_view text, YamlMark mark);
 
   std::vector<Node> nodes_;

@@ -156,7 +156,7 @@ void YamlSource::fail(const YamlMark& mark, const std::string& field,
 std::string YamlValue::flow_text() const { return document_->flow_text(node_); }
 
 void YamlValue::fail(const std::string& problem) const {
-  source_->fail(document_->mark(node_), path_, problem);
+  source_->fail(document_->mark(node_), path(), problem);
 }
 
 void YamlValue::fail_key(std::string_view key, const std::string& problem) const {
@@ -164,7 +164,8 @@ void YamlValue::fail_key(std::string_view key, const std::string& problem) const
 }
 
 std::string YamlValue::child_path(std::string_view key) const {
-  return path_.empty() ? std::string(key) : fmt::format("{}.{}", path_, key);
+  const std::string here = path();
+  return here.empty() ? std::string(key) : fmt::format("{}.{}", here, key);
 }
 
 std::vector<std::pair<std::string, YamlValue>> YamlValue::entries() const {
@@ -177,12 +178,12 @@ std::vector<std::pair<std::string, YamlValue>> YamlValue::entries() const {
     const YamlDocument::Id key_node = document.key(node_, i);
     const std::string_view key = document.scalar(key_node);
     if (document.kind(key_node) != YamlKind::scalar || key.empty()) {
-      source_->fail(document.mark(key_node), path_, "keys must be plain names, got " + describe(document, key_node));
+      source_->fail(document.mark(key_node), path(), "keys must be plain names, got " + describe(document, key_node));
     }
     if (!seen.insert(key).second) {
       source_->fail(document.mark(key_node), child_path(key), fmt::format("'{}' is given twice", key));
     }
-    result.emplace_back(key, child(document.value(node_, i), key));
+    result.emplace_back(key, child(document.value(node_, i)));
   }
   return result;
 }
@@ -208,7 +209,7 @@ std::optional<YamlValue> YamlValue::find(std::string_view key) const {
   for (std::size_t i = 0; i < document_->size(node_); ++i) {
     const YamlDocument::Id key_node = document_->key(node_, i);
     if (document_->kind(key_node) == YamlKind::scalar && document_->scalar(key_node) == key) {
-      return child(document_->value(node_, i), key);
+      return child(document_->value(node_, i));
     }
   }
   return std::nullopt;
@@ -241,7 +242,7 @@ std::vector<YamlValue> YamlValue::items(std::size_t n_min, std::size_t n_max,
   if (n < n_min || n > n_max) fail(fmt::format("expected {}, got {} item(s)", expected(), n));
   std::vector<YamlValue> result;
   result.reserve(n);
-  for (std::size_t i = 0; i < n; ++i) result.push_back(child(document_->item(node_, i), std::to_string(i)));
+  for (std::size_t i = 0; i < n; ++i) result.push_back(child(document_->item(node_, i)));
   return result;
 }
 

@@ -47,14 +47,14 @@ std::string did_you_mean(std::string_view word, const std::vector<std::string>& 
 // "A, B, C" (the first few, then "...").
 std::string join_names(const std::vector<std::string>& names);
 
-// One node of a document with its dotted path, e.g. "elements.2.area". The document and the
-// source must outlive it.
+// One node of a document, known in messages by its dotted path, e.g. "elements.2.area". The
+// document and the source must outlive it.
 class YamlValue {
  public:
-  YamlValue(const YamlDocument& document, YamlDocument::Id node, std::string path, const YamlSource& source)
-      : document_(&document), node_(node), path_(std::move(path)), source_(&source) {}
+  YamlValue(const YamlDocument& document, YamlDocument::Id node, const YamlSource& source)
+      : document_(&document), node_(node), source_(&source) {}
 
-  const std::string& path() const { return path_; }
+  std::string path() const { return document_->path(node_); }
   bool is_scalar() const { return kind() == YamlKind::scalar; }
   bool is_map() const { return kind() == YamlKind::map; }
   // Made by a --set override (it has no place in the file).
@@ -97,13 +97,10 @@ class YamlValue {
  private:
   std::string child_path(std::string_view key) const;
   YamlKind kind() const { return document_->kind(node_); }
-  YamlValue child(YamlDocument::Id node, std::string_view key) const {
-    return YamlValue(*document_, node, child_path(key), *source_);
-  }
+  YamlValue child(YamlDocument::Id node) const { return YamlValue(*document_, node, *source_); }
 
   const YamlDocument* document_;
   YamlDocument::Id node_;
-  std::string path_;
   const YamlSource* source_;
 };
 

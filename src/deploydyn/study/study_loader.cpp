@@ -189,7 +189,7 @@ Study load_study_from_string(const std::string& text, const std::string& source_
   } catch (const io::YamlSyntaxError& error) {
     io::throw_input_error(source_name, error.mark, "", "YAML syntax: " + error.message);
   }
-  return read_study(YamlValue(document, document.root(), "", source), source_name, base_folder);
+  return read_study(YamlValue(document, document.root(), source), source_name, base_folder);
 }
 
 Study load_study(const std::filesystem::path& file) {
