@@ -15,8 +15,10 @@
 #include <benchmark/benchmark.h>
 #include <sys/resource.h>
 
+#include <chrono>
 #include <memory>
 
+#include "deploydyn/assembly/klu_linear_system.hpp"
 #include "deploydyn/assembly/linear_system_factory.hpp"
 #include "deploydyn/generators/roof.hpp"
 #include "deploydyn/solvers/consistent_rates.hpp"
@@ -135,6 +137,47 @@ void BM_RoofSolve(benchmark::State& state) {
   }
   label(state, run.model, *run.system);
 }
+
+// KLU with AMD (0) or METIS nested dissection (1) on the 3D roofs: the ordering's own time, a
+// full factorization, a refactorization, a solve, and the factors' entries.
+void BM_RoofOrdering(benchmark::State& state) {
+  RoofRun run(static_cast<int>(state.range(0)), static_cast<int>(state.range(1)), LinearSolverKind::klu);
+  const auto ordering = static_cast<KluOrdering>(state.range(2));
+  auto timed = [](auto&& work) {
+    const auto start = std::chrono::steady_clock::now();
+    work();
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  };
+  auto klu = std::make_unique<KluLinearSystem>(ordering);
+  KluLinearSystem& system = *klu;
+  const double analysis_s = timed([&] { system.analyze(run.assembler->n_unknowns(), run.assembler->matrix_entries()); });
+  run.system = std::move(klu);
+  run.assemble();
+  const double factor_s = timed([&] { system.factorize(); });
+  double refactor_s = 0.0, solve_s = 0.0;
+  Eigen::VectorXd rhs = Eigen::VectorXd::Ones(system.size());
+  for (auto _ : state) {
+    refactor_s += timed([&] { system.factorize(); });
+    solve_s += timed([&] { system.solve(rhs); });
+    benchmark::DoNotOptimize(rhs.data());
+  }
+  const auto n = static_cast<double>(state.iterations());
+  state.counters["analysis_ms"] = analysis_s * 1e3;
+  state.counters["first_factor_ms"] = factor_s * 1e3;
+  state.counters["refactor_ms"] = refactor_s / n * 1e3;
+  state.counters["solve_ms"] = solve_s / n * 1e3;
+  state.counters["factor_entries"] = system.factor_nonzeros();
+  state.counters["bars"] = static_cast<double>(run.model.n_bars());
+}
+// Long roofs (10 trusses) and square ones (as many trusses as units).
+BENCHMARK(BM_RoofOrdering)->Apply([](auto* b) {
+  b->ArgNames({"units", "trusses", "nd"});
+  for (const int nd : {0, 1}) {
+    for (const int units : {26, 263, 2630}) b->Args({units, kTrusses3d, nd});
+    for (const int side : {32, 100, 160}) b->Args({side, side, nd});
+  }
+  b->Unit(benchmark::kMillisecond);
+});
 
 // Planar 10 … 10 000 units (21 … 20 001 bars) and 3D roofs of 10 trusses (≈ 10² … 10⁵ bars).
 void roof_sizes(benchmark::internal::Benchmark* b, std::vector<int> solvers) {

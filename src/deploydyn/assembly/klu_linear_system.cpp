@@ -4,12 +4,20 @@
 
 #include <stdexcept>
 
+#include "deploydyn/assembly/metis_ordering.hpp"
+
 namespace deploydyn {
 namespace {
 
 // A refactorization keeps the old pivot order; when its reciprocal condition estimate falls
 // this far below the last full factorization's, pivots are searched anew.
 constexpr double kRefactorConditionLoss = 1e-3;
+
+// KLU's user ordering (Common.ordering = 3), called per block; returns 0 on failure, else any
+// positive number (KLU uses it only as a flop estimate for its statistics).
+int nested_dissection_for_klu(int n, int* column_start, int* row_index, int* perm, klu_common*) {
+  return nested_dissection_order(n, column_start, row_index, perm) ? 1 : 0;
+}
 
 }  // namespace
 
@@ -18,8 +26,12 @@ struct KluLinearSystem::Handles {
   klu_symbolic* symbolic = nullptr;
   klu_numeric* numeric = nullptr;
 
-  Handles() {
+  explicit Handles(KluOrdering ordering) {
     klu_defaults(&common);
+    if (ordering == KluOrdering::nested_dissection) {
+      common.ordering = 3;
+      common.user_order = nested_dissection_for_klu;
+    }
     // No row scaling and no input check (-1): the assembler already sizes the constraint rows
     // like the force block (docs/theory.md), and the pattern is valid by construction (sorted, no
     // repeats: SparseLinearSystem::build_storage). Scaling and checking at every
@@ -32,7 +44,7 @@ struct KluLinearSystem::Handles {
   }
 };
 
-KluLinearSystem::KluLinearSystem() : klu_(std::make_unique<Handles>()) {}
+KluLinearSystem::KluLinearSystem(KluOrdering ordering) : klu_(std::make_unique<Handles>(ordering)) {}
 KluLinearSystem::~KluLinearSystem() = default;
 
 void KluLinearSystem::analyze_pattern() {
@@ -81,6 +93,10 @@ FactorizationStatus KluLinearSystem::factorize_fully() {
   FactorizationStatus status;
   status.reciprocal_condition = k.common.rcond;
   return status;
+}
+
+double KluLinearSystem::factor_nonzeros() const {
+  return klu_->numeric != nullptr ? static_cast<double>(klu_->numeric->lnz) + klu_->numeric->unz : 0.0;
 }
 
 void KluLinearSystem::solve(Eigen::Ref<Eigen::VectorXd> rhs) {

@@ -9,9 +9,13 @@
 
 namespace deploydyn {
 
+// The fill-reducing order of each block: KLU's default AMD, or METIS's nested dissection
+// (assembly/metis_ordering.hpp). docs/performance.md, "Faster large steps", compares them.
+enum class KluOrdering { amd, nested_dissection };
+
 class KluLinearSystem final : public SparseLinearSystem {
  public:
-  KluLinearSystem();
+  explicit KluLinearSystem(KluOrdering ordering = KluOrdering::amd);
   ~KluLinearSystem() override;
   KluLinearSystem(const KluLinearSystem&) = delete;
   KluLinearSystem& operator=(const KluLinearSystem&) = delete;
@@ -20,6 +24,8 @@ class KluLinearSystem final : public SparseLinearSystem {
   const char* name() const override { return "KLU"; }
 
   int full_factorizations() const { return full_factorizations_; }
+  // Entries of the L and U factors (with their diagonals) of the last factorization; 0 before.
+  double factor_nonzeros() const;
 
  protected:
   FactorizationStatus factorize_finite() override;

@@ -188,12 +188,15 @@ struct AdaptiveOptions {
 
 // Back end of the Newton iteration matrix (assembly/linear_system_factory.hpp). `automatic`
 // takes the fastest measured for the model's size (bench/roof_benchmark.cpp): KLU.
-enum class LinearSolverKind { automatic, dense, klu, umfpack };
+// klu_nested_dissection: KLU ordered by METIS's nested dissection instead of AMD
+// (docs/performance.md, "Faster large steps": it pays on wide grids, not on long roofs).
+enum class LinearSolverKind { automatic, dense, klu, umfpack, klu_nested_dissection };
 inline constexpr NameTable kLinearSolverKinds{std::array{
     NamedValue<LinearSolverKind>{LinearSolverKind::automatic, "automatic"},
     NamedValue<LinearSolverKind>{LinearSolverKind::dense, "dense"},
     NamedValue<LinearSolverKind>{LinearSolverKind::klu, "klu"},
     NamedValue<LinearSolverKind>{LinearSolverKind::umfpack, "umfpack"},
+    NamedValue<LinearSolverKind>{LinearSolverKind::klu_nested_dissection, "klu_nested_dissection"},
 }};
 inline const char* to_string(LinearSolverKind kind) { return kLinearSolverKinds.name(kind).data(); }
 
