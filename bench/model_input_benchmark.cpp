@@ -3,6 +3,8 @@
 //   BM_ModelLoad       the whole load: parse (LibYAML, io/yaml_document.hpp), check, build the Model
 //   BM_YamlDocument    the parse alone: LibYAML's events into the flat document
 //   BM_YamlCppTree     the parse as it was before: yaml-cpp's node tree (YAML::Load)
+//   BM_ModelLoadJson, BM_JsonDocument   the same model as JSON (`generate --out FILE.json`),
+//                      read with simdjson
 // Counters: MB/s of file text, and the heap what each returns holds per bar (the Model, the
 // document, yaml-cpp's nodes; glibc's mallinfo2 while it is alive).
 
@@ -40,12 +42,19 @@ const std::string& roof_text(int units) {
   return text;
 }
 
+const std::string& roof_json(int units) {
+  static std::map<int, std::string> texts;
+  auto& text = texts[units];
+  if (text.empty()) text = io::YamlDocument::parse(roof_text(units)).json_text();
+  return text;
+}
+
 long long roof_bars(int units) { return roof_size(units, kTrusses, RoofBearings::pinned).n_bars; }
 
 template <typename Parse>
-void parse_and_count(benchmark::State& state, Parse parse) {
+void parse_and_count(benchmark::State& state, Parse parse, bool json = false) {
   const int units = static_cast<int>(state.range(0));
-  const std::string& text = roof_text(units);
+  const std::string& text = json ? roof_json(units) : roof_text(units);
   double held_bytes = 0.0;
   for (auto _ : state) {
     const double before = bench::heap_in_use_bytes();
@@ -72,6 +81,15 @@ void BM_YamlCppTree(benchmark::State& state) {
   parse_and_count(state, [](const std::string& text) { return YAML::Load(text); });
 }
 
+void BM_ModelLoadJson(benchmark::State& state) {
+  parse_and_count(
+      state, [](const std::string& text) { return ModelSource::from_string(text, "roof.json").build(); }, true);
+}
+
+void BM_JsonDocument(benchmark::State& state) {
+  parse_and_count(state, [](const std::string& text) { return *io::YamlDocument::parse_json(text); }, true);
+}
+
 void roof_units(benchmark::internal::Benchmark* b) {
   b->ArgName("units");
   for (const int units : {26, 263, 2630}) b->Arg(units);
@@ -80,6 +98,8 @@ void roof_units(benchmark::internal::Benchmark* b) {
 
 BENCHMARK(BM_ModelLoad)->Apply(roof_units);
 BENCHMARK(BM_YamlDocument)->Apply(roof_units);
+BENCHMARK(BM_ModelLoadJson)->Apply(roof_units);
+BENCHMARK(BM_JsonDocument)->Apply(roof_units);
 BENCHMARK(BM_YamlCppTree)->Apply(roof_units)->Iterations(2);
 
 }  // namespace

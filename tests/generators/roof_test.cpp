@@ -6,6 +6,7 @@
 #include <fmt/format.h>
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <numbers>
@@ -16,6 +17,7 @@
 #include <utility>
 #include <vector>
 
+#include "deploydyn/io/input_error.hpp"
 #include "deploydyn/io/model_loader.hpp"
 #include "deploydyn/io/model_writer.hpp"
 #include "support/cli.hpp"
@@ -625,6 +627,36 @@ TEST(RoofCommand, WritesAModelThatChecksAndRuns) {
   const auto ran = testing::run_cli("run " + file + " --quiet --out " +
                                     (folder.path() / "out").string() + " --set analysis.end=0.05");
   EXPECT_EQ(ran.exit_code, 0) << ran.output;
+}
+
+// --out FILE.json: the same model as JSON, read by the JSON path (io/yaml_document.hpp); an
+// error in it is placed at its line and column in the JSON file.
+TEST(RoofCommand, WritesJsonThatLoadsAsTheSameModel) {
+  const testing::ScratchFolder folder("generate_roof_json");
+  std::filesystem::create_directories(folder.path());
+  const std::string yaml = (folder.path() / "roof.yaml").string(), json = (folder.path() / "roof.json").string();
+  ASSERT_EQ(testing::run_cli("generate roof --units 3 --trusses 2 --out " + yaml).exit_code, 0);
+  const auto generated = testing::run_cli("generate roof --units 3 --trusses 2 --out " + json);
+  ASSERT_EQ(generated.exit_code, 0) << generated.output;
+  const std::string text = testing::read_text(json);
+  ASSERT_EQ(text.rfind("{\n  \"name\": ", 0), 0u) << text.substr(0, 100);
+  std::ostringstream from_yaml, from_json;
+  save_model(load_model(yaml), from_yaml);
+  save_model(load_model(json), from_json);
+  EXPECT_EQ(from_json.str(), from_yaml.str());
+  // A negative area in the JSON file: its line there, the field, what is allowed.
+  const std::size_t area = text.find("\"area\": ");
+  ASSERT_NE(area, std::string::npos);
+  std::string bad = text;
+  bad.insert(area + 8, "-");
+  const int line = 1 + static_cast<int>(std::count(text.begin(), text.begin() + static_cast<std::ptrdiff_t>(area), '\n'));
+  try {
+    load_model_from_string(bad, "bad.json");
+    ADD_FAILURE() << "a negative area was accepted";
+  } catch (const InputError& error) {
+    EXPECT_EQ(error.line(), line) << error.what();
+    EXPECT_NE(std::string(error.what()).find("must be positive (m²)"), std::string::npos) << error.what();
+  }
 }
 
 TEST(RoofCommand, WritesToStandardOutputAndTakesTheTemperature) {

@@ -1,5 +1,7 @@
 #include "deploydyn/io/yaml_document.hpp"
 
+#include <fmt/format.h>
+#include <simdjson.h>
 #include <yaml-cpp/yaml.h>
 #include <yaml.h>
 
@@ -39,6 +41,49 @@ std::string flow_scalar(std::string_view text) {
     quoted += c;
   }
   return quoted + '"';
+}
+
+// JSON's number grammar (RFC 8259): such a text is written bare, any other quoted.
+bool json_number(std::string_view text) {
+  std::size_t i = 0;
+  const auto digits = [&] {
+    const std::size_t start = i;
+    while (i < text.size() && text[i] >= '0' && text[i] <= '9') ++i;
+    return i > start;
+  };
+  if (i < text.size() && text[i] == '-') ++i;
+  if (i < text.size() && text[i] == '0') {
+    ++i;
+  } else if (!digits()) {
+    return false;
+  }
+  if (i < text.size() && text[i] == '.' && (++i, !digits())) return false;
+  if (i < text.size() && (text[i] == 'e' || text[i] == 'E')) {
+    ++i;
+    if (i < text.size() && (text[i] == '+' || text[i] == '-')) ++i;
+    if (!digits()) return false;
+  }
+  return i == text.size();
+}
+
+void write_json_string(std::string_view text, std::string& out) {
+  out += '"';
+  for (const char c : text) {
+    switch (c) {
+      case '"': out += "\\\""; break;
+      case '\\': out += "\\\\"; break;
+      case '\n': out += "\\n"; break;
+      case '\t': out += "\\t"; break;
+      case '\r': out += "\\r"; break;
+      default:
+        if (static_cast<unsigned char>(c) < 0x20) {
+          out += fmt::format("\\u{:04x}", static_cast<unsigned>(c));
+        } else {
+          out += c;
+        }
+    }
+  }
+  out += '"';
 }
 
 }  // namespace
@@ -131,14 +176,8 @@ class YamlDocument::Builder {
   void close() {
     const Open container = std::move(open_.back());
     open_.pop_back();
-    Node& node = document_.nodes_[container.node];
-    node.begin = static_cast<std::uint32_t>(document_.children_.size());
-    const std::size_t n = stack_.size() - container.first;
-    node.count = static_cast<std::uint32_t>(node.kind == YamlKind::map ? n / 2 : n);
-    document_.children_.insert(document_.children_.end(), stack_.begin() + static_cast<std::ptrdiff_t>(container.first),
-                               stack_.end());
+    document_.set_children(container.node, std::span<const Id>(stack_).subspan(container.first));
     stack_.resize(container.first);
-    document_.adopt(container.node);
     add(container.node, container.anchor);
   }
 
@@ -149,7 +188,110 @@ class YamlDocument::Builder {
   bool root_ = false;
 };
 
+// JSON through simdjson's On-Demand API. Each node is placed where LibYAML places it (a
+// container at its bracket, a string at its opening quote, 0-based line and column counted in
+// characters), so that messages name the same place whichever parser read the file.
+class YamlDocument::JsonReader {
+ public:
+  JsonReader(YamlDocument& document, const char* text) : document_(document), scanned_(text) {}
+
+  Id read(simdjson::ondemand::value value) {
+    using simdjson::ondemand::json_type;
+    const json_type type = value.type();
+    const std::string_view token = value.raw_json_token();
+    const YamlMark mark = mark_at(token.data());
+    switch (type) {
+      case json_type::object: {
+        const Id node = document_.add_node(YamlKind::map, mark);
+        const std::size_t first = stack_.size();
+        simdjson::ondemand::object object = value.get_object();
+        for (auto field_result : object) {
+          simdjson::ondemand::field field = std::move(field_result);
+          const char* key_at = field.key().raw() - 1;  // its opening quote
+          const std::string_view key = field.unescaped_key();
+          stack_.push_back(document_.add_scalar_at(key, mark_at(key_at)));
+          const Id child = read(field.value());
+          stack_.push_back(child);
+        }
+        return close(node, first);
+      }
+      case json_type::array: {
+        const Id node = document_.add_node(YamlKind::sequence, mark);
+        const std::size_t first = stack_.size();
+        simdjson::ondemand::array array = value.get_array();
+        for (auto item : array) {
+          const Id child = read(item.value());
+          stack_.push_back(child);
+        }
+        return close(node, first);
+      }
+      case json_type::string: {
+        const std::string_view text = value.get_string();
+        return document_.add_scalar_at(text, mark);
+      }
+      default: {
+        // Numbers, true, false, null: LibYAML's plain scalars, as written.
+        const std::string_view text = token.substr(0, token.find_last_not_of(" \t\r\n") + 1);
+        return plain_null(text) ? document_.add_node(YamlKind::null, mark) : document_.add_scalar_at(text, mark);
+      }
+    }
+  }
+
+ private:
+  Id close(Id node, std::size_t first) {
+    document_.set_children(node, std::span<const Id>(stack_).subspan(first));
+    stack_.resize(first);
+    return node;
+  }
+
+  // Places come in the order of the text: count lines and characters from the last one.
+  YamlMark mark_at(const char* at) {
+    for (; scanned_ < at; ++scanned_) {
+      const auto byte = static_cast<unsigned char>(*scanned_);
+      if (byte == '\n') {
+        ++line_;
+        column_ = 0;
+      } else if ((byte & 0xC0) != 0x80) {
+        ++column_;  // a character starts here (UTF-8 continuation bytes do not count)
+      }
+    }
+    return {line_, column_};
+  }
+
+  YamlDocument& document_;
+  const char* scanned_;  // marks are counted up to here
+  int line_ = 0, column_ = 0;
+  std::vector<Id> stack_;
+};
+
+std::optional<YamlDocument> YamlDocument::parse_json(std::string_view text) {
+  YamlDocument document;
+  document.nodes_.reserve(text.size() / 8);
+  document.children_.reserve(text.size() / 6);
+  document.text_.reserve(text.size() / 2);
+  try {
+    const simdjson::padded_string padded(text);
+    simdjson::ondemand::parser parser;
+    simdjson::ondemand::document json = parser.iterate(padded);
+    JsonReader reader(document, padded.data());
+    document.root_ = reader.read(json.get_value());
+    // More after the first value: not JSON (LibYAML then says what it is).
+    if (json.current_location().error() != simdjson::OUT_OF_BOUNDS) return std::nullopt;
+  } catch (const simdjson::simdjson_error&) {
+    return std::nullopt;
+  }
+  return document;
+}
+
 YamlDocument YamlDocument::parse(std::string_view text) {
+  const std::size_t first = text.find_first_not_of(" \t\r\n");
+  if (first != std::string_view::npos && text[first] == '{') {
+    if (std::optional<YamlDocument> json = parse_json(text)) return std::move(*json);
+  }
+  return parse_yaml(text);
+}
+
+YamlDocument YamlDocument::parse_yaml(std::string_view text) {
   YamlDocument document;
   document.nodes_.reserve(text.size() / 6);  // about one value per six bytes in a model file
   document.children_.reserve(text.size() / 5);
@@ -231,11 +373,16 @@ YamlDocument::Id YamlDocument::add_scalar_at(std::string_view text, YamlMark mar
 
 YamlDocument::Id YamlDocument::add_container(YamlKind kind, YamlMark mark, std::span<const Id> children) {
   const Id id = add_node(kind, mark);
-  nodes_[id].begin = static_cast<std::uint32_t>(children_.size());
-  nodes_[id].count = static_cast<std::uint32_t>(kind == YamlKind::map ? children.size() / 2 : children.size());
-  children_.insert(children_.end(), children.begin(), children.end());
-  adopt(id);
+  set_children(id, children);
   return id;
+}
+
+void YamlDocument::set_children(Id container, std::span<const Id> children) {
+  Node& node = nodes_[container];
+  node.begin = static_cast<std::uint32_t>(children_.size());
+  node.count = static_cast<std::uint32_t>(node.kind == YamlKind::map ? children.size() / 2 : children.size());
+  children_.insert(children_.end(), children.begin(), children.end());
+  adopt(container);
 }
 
 void YamlDocument::adopt(Id container) {
@@ -311,6 +458,65 @@ void YamlDocument::append(Id map, Id key, Id value) {
   children_.insert(children_.end(), pairs.begin(), pairs.end());
   place(map, 2 * node.count - 2, key);
   place(map, 2 * node.count - 1, value);
+}
+
+std::string YamlDocument::json_text(Id node) const {
+  std::string out;
+  write_json(node, 0, out);
+  out += '\n';
+  return out;
+}
+
+void YamlDocument::write_json(Id node, int depth, std::string& out) const {
+  const std::string indent(static_cast<std::size_t>(2 * (depth + 1)), ' ');
+  switch (kind(node)) {
+    case YamlKind::scalar: {
+      const std::string_view text = scalar(node);
+      if (json_number(text) || text == "true" || text == "false") {
+        out += text;
+      } else {
+        write_json_string(text, out);
+      }
+      return;
+    }
+    case YamlKind::sequence: {
+      bool flat = true;  // a list of scalars fits on one line
+      for (std::size_t i = 0; i < size(node); ++i) flat = flat && kind(item(node, i)) < YamlKind::sequence;
+      out += '[';
+      for (std::size_t i = 0; i < size(node); ++i) {
+        out += i > 0 ? (flat ? ", " : ",\n" + indent) : (flat ? "" : "\n" + indent);
+        write_json(item(node, i), depth + 1, out);
+      }
+      if (!flat && size(node) > 0) out += "\n" + indent.substr(2);
+      out += ']';
+      return;
+    }
+    case YamlKind::map: {
+      // Below the sections, a mapping of scalars and lists of scalars fits on one line, as the
+      // model writer's elements do: {"nodes": ["a", "b"], "area": 4.6e-05}.
+      bool flat = depth >= 2;
+      for (std::size_t i = 0; i < size(node) && flat; ++i) {
+        const Id v = value(node, i);
+        flat = kind(v) < YamlKind::sequence;
+        if (kind(v) == YamlKind::sequence) {
+          flat = true;
+          for (std::size_t k = 0; k < size(v); ++k) flat = flat && kind(item(v, k)) < YamlKind::sequence;
+        }
+      }
+      out += '{';
+      for (std::size_t i = 0; i < size(node); ++i) {
+        out += i > 0 ? (flat ? ", " : ",\n" + indent) : (flat ? "" : "\n" + indent);
+        write_json_string(scalar(key(node, i)), out);
+        out += ": ";
+        write_json(value(node, i), depth + 1, out);
+      }
+      if (!flat && size(node) > 0) out += "\n" + indent.substr(2);
+      out += '}';
+      return;
+    }
+    default:
+      out += "null";
+  }
 }
 
 std::string YamlDocument::flow_text(Id node) const {
