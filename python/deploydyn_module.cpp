@@ -45,6 +45,9 @@
 #include "deploydyn/solvers/continuation.hpp"
 #include "deploydyn/solvers/modal_analysis.hpp"
 #include "deploydyn/solvers/static_solver.hpp"
+#include "deploydyn/study/study_channel.hpp"
+#include "deploydyn/study/study_loader.hpp"
+#include "deploydyn/study/study_runner.hpp"
 
 namespace py = pybind11;
 using namespace deploydyn;
@@ -489,6 +492,60 @@ py::dict modes_at(const LoadedModel& loaded, int n_modes, const std::vector<doub
   return out;
 }
 
+// A study channel written in Python (deploydyn/study.py, over mpi4py): each call takes the GIL.
+class PythonStudyChannel final : public StudyChannel {
+ public:
+  int rank() const override { PYBIND11_OVERRIDE_PURE(int, StudyChannel, rank); }
+  int size() const override { PYBIND11_OVERRIDE_PURE(int, StudyChannel, size); }
+  std::optional<WorkerReport> poll_report() override {
+    PYBIND11_OVERRIDE_PURE(std::optional<WorkerReport>, StudyChannel, poll_report);
+  }
+  void assign(int rank, long case_index) override {
+    PYBIND11_OVERRIDE_PURE(void, StudyChannel, assign, rank, case_index);
+  }
+  long report_and_wait(const WorkerReport& report) override {
+    PYBIND11_OVERRIDE_PURE(long, StudyChannel, report_and_wait, report);
+  }
+  void lost(int rank) override { PYBIND11_OVERRIDE(void, StudyChannel, lost, rank); }
+};
+
+// A study file run as `deploydyn study` runs it; with a channel, as one process of a
+// distributed study. Process 0 (or the only one) returns each case's name, status, message
+// and process; a worker process returns nothing.
+py::object run_study_file(const std::filesystem::path& file, const std::optional<std::filesystem::path>& out,
+                          int jobs, bool resume, StudyChannel* channel) {
+  Study study = load_study(file);
+  if (out) study.out_folder = *out;
+  if (jobs >= 0) study.jobs = jobs;
+  StudyControl control;
+  control.resume = resume;
+  control.channel = channel;
+  static std::atomic<bool> stop{false};  // Ctrl-C is Python's: a study runs to its end
+  control.stop = &stop;
+  std::vector<CaseOutcome> outcomes;
+  {
+    py::gil_scoped_release release;
+    if (channel != nullptr && channel->rank() > 0) {
+      run_study_worker(study, control);
+    } else {
+      outcomes = run_study(study, control);
+    }
+  }
+  if (channel != nullptr && channel->rank() > 0) return py::none();
+  py::list cases;
+  for (std::size_t i = 0; i < outcomes.size(); ++i) {
+    py::dict c;
+    c["name"] = study.cases[i].name;
+    c["status"] = to_string(outcomes[i].status);
+    c["message"] = outcomes[i].message;
+    c["process"] = outcomes[i].process;
+    c["resumed"] = outcomes[i].resumed;
+    c["folder"] = study.case_folder(i);
+    cases.append(std::move(c));
+  }
+  return cases;
+}
+
 PYBIND11_MODULE(_core, m) {
   m.doc() = "deploydyn's C++ core; use the package `deploydyn`, not this module";
   m.attr("__version__") = DEPLOYDYN_VERSION;  // python/CMakeLists.txt, from the project's version
@@ -608,6 +665,22 @@ PYBIND11_MODULE(_core, m) {
       },
       py::arg("units"), py::arg("trusses"), py::arg("delta_t"), py::arg("bearings"),
       "The model file `deploydyn generate roof` writes (generators/roof.hpp)");
+  py::class_<WorkerReport>(m, "WorkerReport", "A worker's message to process 0 (study/study_channel.hpp)")
+      .def(py::init<>())
+      .def_readwrite("rank", &WorkerReport::rank)
+      .def_readwrite("finished_case", &WorkerReport::finished_case)
+      .def_property(
+          "status", [](const WorkerReport& r) { return static_cast<int>(r.status); },
+          [](WorkerReport& r, int status) { r.status = static_cast<RunStatus>(status); })
+      .def_readwrite("ran", &WorkerReport::ran)
+      .def_readwrite("message", &WorkerReport::message)
+      .def_readwrite("pid", &WorkerReport::pid)
+      .def_readwrite("host", &WorkerReport::host);
+  py::class_<StudyChannel, PythonStudyChannel>(m, "StudyChannel",
+                                               "How the processes of a study talk; see deploydyn.run_study")
+      .def(py::init<>());
+  m.def("run_study", &run_study_file, py::arg("file"), py::arg("out"), py::arg("jobs"), py::arg("resume"),
+        py::arg("channel"));
   m.def(
       "parse_override",
       [](const std::string& text) {

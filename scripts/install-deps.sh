@@ -11,7 +11,7 @@ packages=(
   python3 python3-numpy python3-matplotlib
   python3-dev pybind11-dev python3-pytest python3-pil python3-yaml
   libjs-three chromium chromium-driver python3-selenium
-  libopenmpi-dev openmpi-bin libhdf5-dev python3-h5py xvfb xauth
+  libopenmpi-dev openmpi-bin python3-mpi4py libhdf5-dev python3-h5py xvfb xauth
   # ParaView's Python (pvpython) also provides VTK's (vtkmodules); it conflicts with python3-vtk9.
   python3-paraview
 )

@@ -10,6 +10,7 @@
     deploydyn.read_result("results/hot")        # a result folder, also one still running
     deploydyn.read_result("results/hot").envelopes[("2", "axial_force_N")]["max"]  # every step's peak
     deploydyn.folder_status("results/hot")      # "completed", "killed", ...
+    deploydyn.run_study("study.yaml", comm=MPI.COMM_WORLD)  # a study file, also under mpirun
 
 Models come from a model file (`load`), from text (`loads`), from a dict in the file's layout
 (`from_dict`), or from a `ModelBuilder`. Every model, however made, is read and checked by the
@@ -57,6 +58,7 @@ import numpy as np
 
 from deploydyn import _core
 from deploydyn.result_folder import IncompleteHistoryWarning
+from deploydyn.study import run_study
 from deploydyn import result_folder as _result_folder
 
 InputError = _core.InputError
@@ -67,6 +69,7 @@ __version__ = _core.__version__
 __all__ = [
     "InputError", "OutputError", "RunFailed", "IncompleteHistoryWarning", "Model", "Result",
     "ModelBuilder", "load", "loads", "from_dict", "roof", "read_result", "read_envelopes", "folder_status",
+    "run_study",
     "constant", "smooth_step", "smooth_trapezoid", "paper_eq23", "table",
 ]
 

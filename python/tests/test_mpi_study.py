@@ -82,6 +82,42 @@ def test_three_processes_write_the_same_case_folders_as_one(tmp_path):
     assert "(process " in done.stderr
 
 
+def test_a_study_from_python_over_mpi4py_writes_the_same_case_folders(tmp_path):
+    """`mpirun -n 3 python3 script.py` calling deploydyn.run_study(..., comm=MPI.COMM_WORLD)."""
+    pytest.importorskip("mpi4py", reason="needs Debian's python3-mpi4py (scripts/install-deps.sh)")
+    study = SOURCE_DIR / "examples" / "paper" / "general_study.yaml"
+    run_cli("study", study, "--out", tmp_path / "serial", "--quiet")
+    script = tmp_path / "study.py"
+    script.write_text(
+        "import json, sys\n"
+        "from mpi4py import MPI\n"
+        "import deploydyn\n"
+        "cases = deploydyn.run_study(sys.argv[1], out=sys.argv[2], comm=MPI.COMM_WORLD)\n"
+        "if MPI.COMM_WORLD.Get_rank() == 0:\n"
+        "    print(json.dumps([[c['name'], c['status'], c['process']] for c in cases]))\n"
+        "else:\n"
+        "    assert cases is None\n")
+    env = dict(MPI_ENV, PYTHONPATH=os.pathsep.join(filter(None, [str(pathlib.Path(deploydyn_path())),
+                                                                 os.environ.get("PYTHONPATH")])))
+    done = subprocess.run([MPIRUN, "-n", "3", "--oversubscribe", "/usr/bin/python3", str(script), str(study),
+                           str(tmp_path / "python")], capture_output=True, text=True, env=env, timeout=300)
+    assert done.returncode == 0, done.stdout + done.stderr
+    cases = json.loads(done.stdout.strip().splitlines()[-1])
+    assert all(status == "completed" for _, status, _ in cases), cases
+    assert {process for _, _, process in cases} - {0}, "the other processes ran cases too"
+    serial, parallel = case_files(tmp_path / "serial"), case_files(tmp_path / "python")
+    assert sorted(serial) == sorted(parallel)
+    for name in serial:
+        assert serial[name] == parallel[name], name
+    assert table_without_wall_time(tmp_path / "serial") == table_without_wall_time(tmp_path / "python")
+
+
+def deploydyn_path():
+    """The folder that holds the package deploydyn this test imports."""
+    import deploydyn
+    return pathlib.Path(deploydyn.__file__).parent.parent
+
+
 def slow_study(tmp_path):
     """Four cases of a 3D roof of 4 trusses × 40 units, about 2.5 s each."""
     roof = tmp_path / "roof.yaml"

@@ -1,0 +1,91 @@
+"""Load-case and sampled studies from Python, as `deploydyn study` runs them, alone or over MPI
+through mpi4py (docs/model-format.md, "Load-case studies", "Studies over MPI").
+
+    import deploydyn
+    cases = deploydyn.run_study("examples/paper/general_study.yaml", out="results/general")
+
+    # study.py, started as `mpirun -n 4 python3 study.py`:
+    from mpi4py import MPI
+    cases = deploydyn.run_study("study.yaml", out="results/s", comm=MPI.COMM_WORLD)
+    # process 0 returns the cases; the others return None
+
+The case folders and study.csv are those of `deploydyn study` (and of `mpirun -n N deploydyn
+study`): the same C++ runner decides which process runs which case (the next free one), and
+process 0 alone writes study.csv and study.json.
+"""
+import os
+import pathlib
+
+from deploydyn import _core
+
+# The tags of the two messages, as app/mpi_channel.cpp uses them over MPI's C API.
+_REPORT_TAG = 1
+_ASSIGN_TAG = 2
+
+
+class _Mpi4pyChannel(_core.StudyChannel):
+    """The study channel (study/study_channel.hpp) over an mpi4py communicator. Every call
+    comes from the thread that called run_study, which holds the GIL for it."""
+
+    def __init__(self, comm):
+        super().__init__()
+        from mpi4py import MPI  # noqa: only needed here; a serial study does without mpi4py
+        self._mpi = MPI
+        self._comm = comm
+        self.lost_ranks = []
+
+    def rank(self):
+        return self._comm.Get_rank()
+
+    def size(self):
+        return self._comm.Get_size()
+
+    def poll_report(self):
+        status = self._mpi.Status()
+        if not self._comm.iprobe(source=self._mpi.ANY_SOURCE, tag=_REPORT_TAG, status=status):
+            return None
+        fields = self._comm.recv(source=status.Get_source(), tag=_REPORT_TAG)
+        report = _core.WorkerReport()
+        report.rank = status.Get_source()
+        for name, value in fields.items():
+            setattr(report, name, value)
+        return report
+
+    def assign(self, rank, case_index):
+        self._comm.send(case_index, dest=rank, tag=_ASSIGN_TAG)
+
+    def report_and_wait(self, report):
+        fields = {name: getattr(report, name)
+                  for name in ("finished_case", "status", "ran", "message", "pid", "host")}
+        self._comm.send(fields, dest=0, tag=_REPORT_TAG)
+        return self._comm.recv(source=0, tag=_ASSIGN_TAG)
+
+    def lost(self, rank):
+        self.lost_ranks.append(rank)
+
+
+def run_study(file, out=None, jobs=None, resume=False, comm=None):
+    """Runs the study file `file` as `deploydyn study FILE` does: each case into its folder
+    under `out` (default: the study file's `out`, else results/<study name>), then study.csv.
+    `jobs`: cases at once in this process (default: the study's `jobs`; all at once alone, one
+    per process over MPI). `resume`: keep the cases an earlier run completed for the same model.
+    `comm`: an mpi4py communicator (e.g. MPI.COMM_WORLD) when the script runs under `mpirun
+    -n N`: the N processes share the cases, each takes the next one when it is free.
+
+    Returns, in process 0 (or alone), one dict per case in the study's order: name, status
+    ("completed", "failed", "interrupted"), message, process (the one that ran it), resumed,
+    folder; in the other processes None. Bad input raises InputError; a folder in use or a
+    study.csv that cannot be written raises OutputError; failed cases do not raise (their
+    status says so), as the command's exit code 1."""
+    if jobs is not None and (isinstance(jobs, bool) or not isinstance(jobs, int) or jobs < 0):
+        raise TypeError(f"run_study: jobs must be an int ≥ 0, not {type(jobs).__name__} {jobs!r}")
+    channel = _Mpi4pyChannel(comm) if comm is not None and comm.Get_size() > 1 else None
+    folder = None if out is None else pathlib.Path(os.fspath(out))
+    cases = _core.run_study(pathlib.Path(os.fspath(file)), folder, -1 if jobs is None else jobs,
+                            bool(resume), channel)
+    if channel is not None and channel.lost_ranks:
+        # MPI cannot finish normally with a dead member: as `deploydyn study` does, end the
+        # others now that every result is written.
+        comm.Abort(1)
+    return cases
+
