@@ -48,7 +48,7 @@ fuzz: deps
 	@test -f build/fuzz/build.ninja || cmake --preset fuzz >/dev/null
 	@cmake --build --preset fuzz
 	@rm -rf build/fuzz/corpus && mkdir -p build/fuzz/corpus
-	@cp examples/paper/*.yaml examples/beams/*.yaml examples/petal/*.yaml examples/cables/*.yaml examples/boom/*.yaml examples/tutorial/*.yaml tests/io/bad_models/*.yaml build/fuzz/corpus/
+	@cp examples/paper/*.yaml examples/beams/*.yaml examples/petal/*.yaml examples/cables/*.yaml examples/boom/*.yaml examples/tutorial/*.yaml tests/io/bad_models/*.yaml fuzz/seeds/*.json build/fuzz/corpus/
 	@build/fuzz/model_loader_fuzzer build/fuzz/corpus -dict=fuzz/model.dict -max_len=4096 \
 	  -max_total_time=$(FUZZ_SECONDS) -timeout=10 -rss_limit_mb=4096 -print_final_stats=1 2>&1 \
 	  | grep -E '^(stat::number_of_executed_units|stat::average_exec_per_sec|==|SUMMARY|Done)' ; \
