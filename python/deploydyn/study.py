@@ -15,6 +15,8 @@ process 0 alone writes study.csv and study.json.
 """
 import os
 import pathlib
+import sys
+import traceback
 
 from deploydyn import _core
 
@@ -63,6 +65,9 @@ class _Mpi4pyChannel(_core.StudyChannel):
     def lost(self, rank):
         self.lost_ranks.append(rank)
 
+    def free(self):
+        self._comm.Free()
+
 
 def run_study(file, out=None, jobs=None, resume=False, comm=None):
     """Runs the study file `file` as `deploydyn study FILE` does: each case into its folder
@@ -76,16 +81,34 @@ def run_study(file, out=None, jobs=None, resume=False, comm=None):
     ("completed", "failed", "interrupted"), message, process (the one that ran it), resumed,
     folder; in the other processes None. Bad input raises InputError; a folder in use or a
     study.csv that cannot be written raises OutputError; failed cases do not raise (their
-    status says so), as the command's exit code 1."""
+    status says so), as the command's exit code 1. Over MPI, an error in any process, or a
+    process that died (mpirun --enable-recovery), ends every process with MPI_Abort once what
+    could be written is written: study.json then tells what happened."""
     if jobs is not None and (isinstance(jobs, bool) or not isinstance(jobs, int) or jobs < 0):
         raise TypeError(f"run_study: jobs must be an int ≥ 0, not {type(jobs).__name__} {jobs!r}")
-    channel = _Mpi4pyChannel(comm) if comm is not None and comm.Get_size() > 1 else None
+    # A communicator of the study's own (collective: every process calls run_study), so that
+    # the script's own messages cannot be taken for the study's.
+    channel = _Mpi4pyChannel(comm.Dup()) if comm is not None and comm.Get_size() > 1 else None
     folder = None if out is None else pathlib.Path(os.fspath(out))
-    cases = _core.run_study(pathlib.Path(os.fspath(file)), folder, -1 if jobs is None else jobs,
-                            bool(resume), channel)
+    try:
+        cases = _core.run_study(pathlib.Path(os.fspath(file)), folder, -1 if jobs is None else jobs,
+                                bool(resume), channel)
+    except BaseException:
+        # The other processes may be waiting for this one: end them all rather than hang, as
+        # `deploydyn study` does (the error is printed first; mpirun exits non-zero).
+        if channel is not None:
+            traceback.print_exc()
+            sys.stderr.flush()
+            comm.Abort(2)
+        raise
     if channel is not None and channel.lost_ranks:
         # MPI cannot finish normally with a dead member: as `deploydyn study` does, end the
-        # others now that every result is written.
+        # others now that every result is written (so process 0 returns nothing either).
+        print(f"process {', '.join(map(str, channel.lost_ranks))} died; its case is listed as failed and "
+              "every other result is written; ending the other processes (MPI_Abort)", file=sys.stderr,
+              flush=True)
         comm.Abort(1)
+    if channel is not None:
+        channel.free()
     return cases
 

@@ -112,6 +112,24 @@ def test_a_study_from_python_over_mpi4py_writes_the_same_case_folders(tmp_path):
     assert table_without_wall_time(tmp_path / "serial") == table_without_wall_time(tmp_path / "python")
 
 
+def test_an_error_in_process_0_from_python_ends_every_process(tmp_path):
+    """The workers wait for process 0: when it raises (here: its folder is a file), mpi4py's
+    Abort ends them all instead of a hang."""
+    pytest.importorskip("mpi4py", reason="needs Debian's python3-mpi4py (scripts/install-deps.sh)")
+    study = SOURCE_DIR / "examples" / "paper" / "general_study.yaml"
+    taken = tmp_path / "a_file"
+    taken.write_text("not a folder\n")
+    script = tmp_path / "study.py"
+    script.write_text("import sys\nfrom mpi4py import MPI\nimport deploydyn\n"
+                      "deploydyn.run_study(sys.argv[1], out=sys.argv[2], comm=MPI.COMM_WORLD)\n")
+    env = dict(MPI_ENV, PYTHONPATH=os.pathsep.join(filter(None, [str(deploydyn_path()),
+                                                                 os.environ.get("PYTHONPATH")])))
+    done = subprocess.run([MPIRUN, "-n", "2", "--oversubscribe", "/usr/bin/python3", str(script), str(study),
+                           str(taken)], capture_output=True, text=True, env=env, timeout=120)
+    assert done.returncode != 0, done.stdout + done.stderr
+    assert "OutputError" in done.stderr, done.stderr
+
+
 def deploydyn_path():
     """The folder that holds the package deploydyn this test imports."""
     import deploydyn

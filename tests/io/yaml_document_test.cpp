@@ -179,6 +179,45 @@ TEST(YamlDocument, NullsAnchorsAndTheFirstDocumentAsYamlCppReadsThem) {
   EXPECT_EQ(empty_reference.mark(empty_reference.value(empty_reference.root(), 0)).line, 1);
 }
 
+// What a careless or hostile file must not do: contain itself, expand without bound, nest
+// deeper than the stack; and what tags and quotes mean.
+TEST(YamlDocument, CyclesAreRefusedTagsAndQuotesKeepText) {
+  for (const std::string text : {"a: &x [*x]\n", "a: &x {b: *x}\n", "a: &x [1, [2, *x]]\n"}) {
+    EXPECT_NE(syntax_error(text, true).find("cannot contain itself"), std::string::npos) << text;
+    EXPECT_NE(syntax_error(text, false).find("cannot contain itself"), std::string::npos) << text;
+  }
+  // Nested aliases: shared nodes here, not copies (a few lines cannot become gigabytes).
+  std::string laughs = "a: &a [x, x, x, x, x, x, x, x, x, x]\n";
+  for (char c = 'b'; c <= 'j'; ++c) {
+    laughs += fmt::format("{}: &{} [*{p}, *{p}, *{p}, *{p}, *{p}, *{p}, *{p}, *{p}, *{p}, *{p}]\n", c, c,
+                          fmt::arg("p", static_cast<char>(c - 1)));
+  }
+  const YamlDocument shared = YamlDocument::parse(laughs);
+  EXPECT_EQ(shared.size(shared.root()), 10u);
+  // 5000 levels of brackets: beyond LibYAML's path, refused by yaml-cpp's own limit or read.
+  const std::string deep = "a: " + std::string(5000, '[') + std::string(5000, ']') + "\n";
+  try {
+    const YamlDocument read = YamlDocument::parse(deep);
+    EXPECT_EQ(read.kind(read.value(read.root(), 0)), YamlKind::sequence);
+  } catch (const YamlSyntaxError& error) {
+    EXPECT_FALSE(error.message.empty());
+  }
+  const YamlDocument tagged = YamlDocument::parse("a: !!str ~\nb: !!str\nc: ~\n");
+  EXPECT_EQ(tagged.kind(tagged.value(tagged.root(), 0)), YamlKind::scalar);
+  EXPECT_EQ(tagged.scalar(tagged.value(tagged.root(), 0)), "~");
+  EXPECT_EQ(tagged.kind(tagged.value(tagged.root(), 1)), YamlKind::scalar);
+  EXPECT_EQ(tagged.kind(tagged.value(tagged.root(), 2)), YamlKind::null);
+  // Quoted null words stay text through flow text (a study case's value becomes --set text).
+  const YamlDocument quoted = YamlDocument::parse("p: [\"null\", \"~\", '', x]\n\"a,b\": 1\n");
+  EXPECT_EQ(quoted.flow_text(quoted.root()), "{p: [\"null\", \"~\", \"\", x], \"a,b\": 1}");
+  const YamlDocument again = YamlDocument::parse(quoted.flow_text(quoted.root()));
+  EXPECT_EQ(again.kind(again.item(again.value(again.root(), 0), 0)), YamlKind::scalar);
+  // An alias is known by its first place in the file, even inside a later section.
+  const YamlDocument aliased = YamlDocument::parse("analysis: {step: &h -1e-3, adaptive: {max_step: *h}}\n");
+  const YamlDocument::Id analysis = aliased.value(aliased.root(), 0);
+  EXPECT_EQ(aliased.path(aliased.value(analysis, 0)), "analysis.step");
+}
+
 TEST(YamlDocument, TextThatIsNotYamlGetsYamlCppsMessage) {
   for (const std::string text : {"a: [1, 2\nb: 3\n", "a: *unknown\n", "a: {b: 1\n", "a: b: c\n", "a: 1\n b: 2\n", "a: [\n"}) {
     const std::string reference = syntax_error(text, false);

@@ -2,6 +2,8 @@
 
 #include <suitesparse/klu.h>
 
+#include <algorithm>
+#include <limits>
 #include <stdexcept>
 
 #include "deploydyn/assembly/metis_ordering.hpp"
@@ -13,10 +15,11 @@ namespace {
 // this far below the last full factorization's, pivots are searched anew.
 constexpr double kRefactorConditionLoss = 1e-3;
 
-// KLU's user ordering (Common.ordering = 3), called per block; returns 0 on failure, else any
-// positive number (KLU uses it only as a flop estimate for its statistics).
+// KLU's user ordering (Common.ordering = 3), called per block: 0 on failure, else the expected
+// entries of the block's L, by which KLU sizes its first allocation of the factors.
 int nested_dissection_for_klu(int n, int* column_start, int* row_index, int* perm, klu_common*) {
-  return nested_dissection_order(n, column_start, row_index, perm) ? 1 : 0;
+  const long entries = nested_dissection_order(n, column_start, row_index, perm);
+  return static_cast<int>(std::min<long>(entries, std::numeric_limits<int>::max()));
 }
 
 }  // namespace

@@ -3,14 +3,63 @@
 #include <metis.h>
 
 #include <algorithm>
+#include <mutex>
 #include <vector>
 
 namespace deploydyn {
 
-bool nested_dissection_order(int n, const int* column_start, const int* row_index, int* perm) {
+namespace {
+
+// nnz(L) of the Cholesky factor of the pattern (xadj, adjncy) eliminated in the order `perm`: the
+// elimination tree (Liu's algorithm, with path compression), then each row's subtree counted by
+// walking from its entries up the tree to the row (George & Liu, 1981).
+long cholesky_entries(int n, const std::vector<idx_t>& xadj, const std::vector<idx_t>& adjncy,
+                      const std::vector<idx_t>& perm) {
+  std::vector<int> position(static_cast<std::size_t>(n)), parent(static_cast<std::size_t>(n), -1),
+      ancestor(static_cast<std::size_t>(n), -1), mark(static_cast<std::size_t>(n), -1);
+  for (int k = 0; k < n; ++k) position[static_cast<std::size_t>(perm[static_cast<std::size_t>(k)])] = k;
+  const auto below = [&](int k, auto&& visit) {  // the entries of row k left of the diagonal
+    const idx_t v = perm[static_cast<std::size_t>(k)];
+    for (idx_t p = xadj[static_cast<std::size_t>(v)]; p < xadj[static_cast<std::size_t>(v) + 1]; ++p) {
+      const int j = position[static_cast<std::size_t>(adjncy[static_cast<std::size_t>(p)])];
+      if (j < k) visit(j);
+    }
+  };
+  for (int k = 0; k < n; ++k) {
+    below(k, [&](int j) {
+      while (ancestor[static_cast<std::size_t>(j)] != -1 && ancestor[static_cast<std::size_t>(j)] != k) {
+        const int next = ancestor[static_cast<std::size_t>(j)];
+        ancestor[static_cast<std::size_t>(j)] = k;
+        j = next;
+      }
+      if (ancestor[static_cast<std::size_t>(j)] == -1) {
+        ancestor[static_cast<std::size_t>(j)] = k;
+        parent[static_cast<std::size_t>(j)] = k;
+      }
+    });
+  }
+  long entries = 0;
+  for (int k = 0; k < n; ++k) {
+    ++entries;  // the diagonal
+    mark[static_cast<std::size_t>(k)] = k;
+    below(k, [&](int j) {
+      for (; j != -1 && mark[static_cast<std::size_t>(j)] != k; j = parent[static_cast<std::size_t>(j)]) {
+        mark[static_cast<std::size_t>(j)] = k;
+        ++entries;
+      }
+    });
+  }
+  return entries;
+}
+
+std::mutex metis_mutex;
+
+}  // namespace
+
+long nested_dissection_order(int n, const int* column_start, const int* row_index, int* perm) {
   if (n <= 1) {
     if (n == 1) perm[0] = 0;
-    return true;
+    return n;
   }
   // The graph of A + Aᵀ without its diagonal: an edge for every off-diagonal entry, both ways.
   std::vector<idx_t> degree(static_cast<std::size_t>(n) + 1, 0);
@@ -48,12 +97,16 @@ bool nested_dissection_order(int n, const int* column_start, const int* row_inde
   idx_t options[METIS_NOPTIONS];
   METIS_SetDefaultOptions(options);
   std::vector<idx_t> order(static_cast<std::size_t>(n)), inverse(static_cast<std::size_t>(n));
-  if (METIS_NodeND(&nvtxs, xadj.data(), adjncy.data(), nullptr, options, order.data(), inverse.data()) != METIS_OK) {
-    return false;
+  {
+    const std::lock_guard lock(metis_mutex);
+    if (METIS_NodeND(&nvtxs, xadj.data(), adjncy.data(), nullptr, options, order.data(), inverse.data()) !=
+        METIS_OK) {
+      return 0;
+    }
   }
   // METIS's own definition (ometis.c): A'[k] = A[order[k]], the k-th pivot is order[k].
   std::copy(order.begin(), order.end(), perm);
-  return true;
+  return cholesky_entries(n, xadj, adjncy, order);
 }
 
 }  // namespace deploydyn

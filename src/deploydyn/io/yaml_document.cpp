@@ -20,13 +20,22 @@ bool plain_null(std::string_view text) {
 
 YamlMark mark_of(const yaml_mark_t& mark) { return {static_cast<int>(mark.line), static_cast<int>(mark.column)}; }
 
+// Nesting beyond this is left to yaml-cpp (io/yaml_document.cpp, Builder::open).
+constexpr std::size_t kMaxDepth = 1000;
+
+// An alias inside the node its anchor names: a tree that contains itself.
+YamlSyntaxError cycle(const std::string& anchor, YamlMark mark) {
+  const std::string alias = anchor.empty() ? "an alias" : "alias *" + anchor;
+  return {alias + " inside the node its anchor names: a node cannot contain itself", mark};
+}
+
 // LibYAML gave up: the text is not YAML, or uses what this reader does not take (an alias
 // before its anchor). yaml-cpp then reads it, and says why when it cannot.
 struct LibyamlRefused {};
 
 // Quotes a scalar for flow text when it would otherwise read differently.
 std::string flow_scalar(std::string_view text) {
-  const bool plain = !text.empty() && text.find_first_of(",[]{}:#&*!|>'\"%@`\n") == std::string_view::npos &&
+  const bool plain = !plain_null(text) && text.find_first_of(",[]{}:#&*!|>'\"%@`\n") == std::string_view::npos &&
                      text.front() != ' ' && text.back() != ' ' && text.front() != '-' && text.front() != '?';
   const bool number_like = !text.empty() && text.front() == '-' &&
                            text.find_first_not_of("-+.0123456789eE") == std::string_view::npos;
@@ -108,7 +117,9 @@ class YamlDocument::Builder {
         case YAML_SCALAR_EVENT: {
           const std::string_view value(reinterpret_cast<const char*>(event.data.scalar.value),
                                        event.data.scalar.length);
-          const bool null = event.data.scalar.style == YAML_PLAIN_SCALAR_STYLE && plain_null(value);
+          // A tag (`!!str ~`) makes it text, as in yaml-cpp.
+          const bool null = event.data.scalar.style == YAML_PLAIN_SCALAR_STYLE && event.data.scalar.plain_implicit != 0 &&
+                            plain_null(value);
           // yaml-cpp places an empty value (`key:` and nothing) where the next token starts.
           const Id node = null ? document_.add_node(YamlKind::null, mark_of(event.start_mark))
                                : document_.add_scalar_at(value, mark_of(event.start_mark));
@@ -126,7 +137,11 @@ class YamlDocument::Builder {
           close();
           break;
         case YAML_ALIAS_EVENT: {
-          const auto anchored = anchors_.find(reinterpret_cast<const char*>(event.data.alias.anchor));
+          const std::string name = anchor_name(event.data.alias.anchor);
+          for (const Open& container : open_) {
+            if (container.anchor == name) throw cycle(name, mark_of(event.start_mark));
+          }
+          const auto anchored = anchors_.find(name);
           if (anchored == anchors_.end()) throw LibyamlRefused{};
           add(anchored->second, {});
           break;
@@ -163,13 +178,25 @@ class YamlDocument::Builder {
       root_ = true;
       return;
     }
+    // Its first place in the file is its path (an alias later elsewhere keeps it).
+    Node& added = document_.nodes_[node];
+    if (added.parent == kNoParent) {
+      added.parent = open_.back().node;
+      added.slot = static_cast<std::uint32_t>(stack_.size() - open_.back().first);
+    }
     stack_.push_back(node);
   }
 
   void open(YamlKind kind, YamlMark mark, std::string anchor) {
+    // Deeper than any model: left to yaml-cpp, which refuses beyond its own limit (and whose
+    // tree the recursive readers then walk within the stack).
+    if (open_.size() >= kMaxDepth) throw LibyamlRefused{};
     const Id node = document_.add_node(kind, mark);
-    // An anchor names the node from its start: an alias inside it would be a cycle, which
-    // yaml-cpp refuses too.
+    if (!open_.empty()) {
+      Node& added = document_.nodes_[node];
+      added.parent = open_.back().node;
+      added.slot = static_cast<std::uint32_t>(stack_.size() - open_.back().first);
+    }
     open_.push_back({node, stack_.size(), std::move(anchor)});
   }
 
@@ -307,16 +334,25 @@ YamlDocument YamlDocument::parse_yaml(std::string_view text) {
 // A yaml-cpp tree into the document, marks kept.
 class YamlDocument::YamlCppReader {
  public:
-  explicit YamlCppReader(YamlDocument& document) : document_(document) {}
+  // Aliases are copied: `budget` nodes at most, so that a few lines of nested aliases cannot
+  // expand to gigabytes.
+  YamlCppReader(YamlDocument& document, std::size_t budget) : document_(document), budget_(budget) {}
 
   Id copy(const YAML::Node& node) {
     const YamlMark mark = node.Mark().is_null() ? YamlMark{} : YamlMark{node.Mark().line, node.Mark().column};
+    if (document_.nodes_.size() >= budget_) {
+      throw YamlSyntaxError{"aliases expand to more nodes than the text could hold", mark};
+    }
+    for (const YAML::Node& ancestor : ancestors_) {
+      if (ancestor.is(node)) throw cycle("", mark);
+    }
     switch (node.Type()) {
       case YAML::NodeType::Scalar:
         return document_.add_scalar_at(node.Scalar(), mark);
       case YAML::NodeType::Sequence:
       case YAML::NodeType::Map: {
         std::vector<Id> children;
+        ancestors_.push_back(node);
         for (const auto& entry : node) {
           if (node.IsMap()) {
             children.push_back(copy(entry.first));
@@ -325,6 +361,7 @@ class YamlDocument::YamlCppReader {
             children.push_back(copy(entry));
           }
         }
+        ancestors_.pop_back();
         return document_.add_container(node.IsMap() ? YamlKind::map : YamlKind::sequence, mark, children);
       }
       default:
@@ -334,6 +371,8 @@ class YamlDocument::YamlCppReader {
 
  private:
   YamlDocument& document_;
+  std::size_t budget_;
+  std::vector<YAML::Node> ancestors_;  // the containers being copied, to find a cycle
 };
 
 YamlDocument YamlDocument::parse_with_yaml_cpp(std::string_view text) {
@@ -344,7 +383,7 @@ YamlDocument YamlDocument::parse_with_yaml_cpp(std::string_view text) {
     throw YamlSyntaxError{error.msg, error.mark.is_null() ? YamlMark{} : YamlMark{error.mark.line, error.mark.column}};
   }
   YamlDocument document;
-  document.root_ = YamlCppReader(document).copy(root);
+  document.root_ = YamlCppReader(document, 16 * text.size() + 64).copy(root);
   return document;
 }
 
@@ -535,7 +574,7 @@ std::string YamlDocument::flow_text(Id node) const {
       std::string text = "{";
       for (std::size_t i = 0; i < size(node); ++i) {
         const Id k = key(node, i), v = value(node, i);
-        text += (i > 0 ? ", " : "") + flow_text(k) + ": " +
+        text += (i > 0 ? ", " : "") + (kind(k) == YamlKind::scalar ? flow_scalar(scalar(k)) : flow_text(k)) + ": " +
                 (kind(v) == YamlKind::scalar ? flow_scalar(scalar(v)) : flow_text(v));
       }
       return text + "}";

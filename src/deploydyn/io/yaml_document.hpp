@@ -5,7 +5,9 @@
 //
 // Nodes are numbered; a node is null, a scalar (its text), a sequence (its items) or a mapping
 // (its key and value nodes, in file order). Each keeps its place in the file (0-based line and
-// column, as yaml-cpp's marks), so that errors can name it. An alias is the anchored node itself.
+// column, as LibYAML counts them: columns in characters, where yaml-cpp counted bytes, which
+// differs only after non-ASCII text on the same line), so that errors can name it. An alias is
+// the anchored node itself; an alias inside the node it names is refused (a cycle).
 // The --set overrides edit a document: the nodes they make have no place in the file.
 
 #include <cstdint>
