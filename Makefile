@@ -35,6 +35,7 @@ test: build
 # Speed and memory (bench/, Google Benchmark): medians of BENCH_REPETITIONS runs as a table.
 BENCH_REPETITIONS ?= 3
 bench: build
+	@cmake --build $(BUILD) --target deploydyn_bench
 	@$(PYTHON) scripts/bench_table.py --binary $(BUILD)/bench/deploydyn_bench --repetitions $(BENCH_REPETITIONS)
 
 # The whole test suite built with AddressSanitizer and UndefinedBehaviorSanitizer.
