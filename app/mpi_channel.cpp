@@ -2,6 +2,9 @@
 
 #include "exit_codes.hpp"
 
+#include <unistd.h>
+
+#include <array>
 #include <cstdio>
 #include <cstdlib>
 #include <exception>
@@ -38,6 +41,14 @@ class MpiChannel final : public StudyChannel {
     MPI_Init_thread(nullptr, nullptr, MPI_THREAD_FUNNELED, &provided);
     MPI_Comm_rank(MPI_COMM_WORLD, &rank_);
     MPI_Comm_size(MPI_COMM_WORLD, &size_);
+    // Who every process is, for process 0 to watch from the start (StudyChannel::identity).
+    long pid = static_cast<long>(::getpid());
+    std::array<char, kHostLength> host{};
+    ::gethostname(host.data(), host.size() - 1);
+    pids_.resize(static_cast<std::size_t>(rank_ == 0 ? size_ : 0));
+    hosts_.resize(static_cast<std::size_t>(rank_ == 0 ? size_ * kHostLength : 0));
+    MPI_Gather(&pid, 1, MPI_LONG, pids_.data(), 1, MPI_LONG, 0, MPI_COMM_WORLD);
+    MPI_Gather(host.data(), kHostLength, MPI_CHAR, hosts_.data(), kHostLength, MPI_CHAR, 0, MPI_COMM_WORLD);
   }
   ~MpiChannel() override {
     // Leaving by an exception (bad input, a folder in use) the other processes may be waiting
@@ -88,6 +99,12 @@ class MpiChannel final : public StudyChannel {
 
   void lost(int rank) override { lost_.push_back(rank); }
 
+  std::optional<std::pair<long, std::string>> identity(int rank) const override {
+    if (rank < 0 || static_cast<std::size_t>(rank) >= pids_.size()) return std::nullopt;
+    return std::make_pair(pids_[static_cast<std::size_t>(rank)],
+                          std::string(hosts_.data() + static_cast<std::size_t>(rank) * kHostLength));
+  }
+
   long report_and_wait(const WorkerReport& report) override {
     const std::string text = nlohmann::json{{"case", report.finished_case},
                                             {"status", static_cast<int>(report.status)},
@@ -105,9 +122,12 @@ class MpiChannel final : public StudyChannel {
  private:
   static constexpr int kReportTag = 1;
   static constexpr int kAssignTag = 2;
+  static constexpr int kHostLength = 256;
   int rank_ = 0;
   int size_ = 1;
   std::vector<int> lost_;
+  std::vector<long> pids_;   // process 0: every process's pid
+  std::vector<char> hosts_;  // and host name, kHostLength bytes each
 };
 
 std::unique_ptr<StudyChannel> join_mpi_if_launched() {

@@ -507,6 +507,8 @@ class PythonStudyChannel final : public StudyChannel {
     PYBIND11_OVERRIDE_PURE(long, StudyChannel, report_and_wait, report);
   }
   void lost(int rank) override { PYBIND11_OVERRIDE(void, StudyChannel, lost, rank); }
+  using Identity = std::optional<std::pair<long, std::string>>;
+  Identity identity(int rank) const override { PYBIND11_OVERRIDE(Identity, StudyChannel, identity, rank); }
 };
 
 // A study file run as `deploydyn study` runs it; with a channel, as one process of a

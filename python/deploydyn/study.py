@@ -15,6 +15,7 @@ process 0 alone writes study.csv and study.json.
 """
 import os
 import pathlib
+import socket
 import sys
 import traceback
 
@@ -35,6 +36,8 @@ class _Mpi4pyChannel(_core.StudyChannel):
         self._mpi = MPI
         self._comm = comm
         self.lost_ranks = []
+        # Who every process is, for process 0 to watch from the start (collective).
+        self._identities = comm.gather((os.getpid(), socket.gethostname()), root=0)
 
     def rank(self):
         return self._comm.Get_rank()
@@ -61,6 +64,9 @@ class _Mpi4pyChannel(_core.StudyChannel):
                   for name in ("finished_case", "status", "ran", "message", "pid", "host")}
         self._comm.send(fields, dest=0, tag=_REPORT_TAG)
         return self._comm.recv(source=0, tag=_ASSIGN_TAG)
+
+    def identity(self, rank):
+        return tuple(self._identities[rank]) if self._identities else None
 
     def lost(self, rank):
         self.lost_ranks.append(rank)

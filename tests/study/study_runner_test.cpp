@@ -4,6 +4,8 @@
 #include "deploydyn/study/study_runner.hpp"
 
 #include <gtest/gtest.h>
+#include <unistd.h>
+#include <sys/wait.h>
 
 #include <atomic>
 #include <condition_variable>
@@ -316,6 +318,58 @@ TEST(StudyRunner, ProcessesGetCasesAsTheyAskAndWriteWhatOneProcessWrites) {
   EXPECT_EQ(table_without_wall_time(distributed.table_file()), table_without_wall_time(serial.table_file()));
   for (std::size_t i = 0; i < serial.cases.size(); ++i) {
     EXPECT_EQ(read_text(distributed.case_folder(i) / "history.csv"), read_text(serial.case_folder(i) / "history.csv"));
+  }
+}
+
+// Process 0 knows every worker from the start when its channel can tell (MPI gathers pids as
+// the processes start): a worker that died before its first report (here: never started) is
+// noticed, and the study ends without it instead of waiting for it forever.
+TEST(StudyRunner, AWorkerThatDiesBeforeItsFirstReportIsNoticed) {
+  const pid_t child = fork();
+  if (child == 0) _exit(0);
+  waitpid(child, nullptr, 0);  // a pid that no longer runs
+  char host[256] = {};
+  gethostname(host, sizeof host - 1);
+
+  class Watching final : public StudyChannel {
+   public:
+    Watching(StudyChannel& inner, long dead_pid, std::string host)
+        : inner_(inner), dead_pid_(dead_pid), host_(std::move(host)) {}
+    int rank() const override { return inner_.rank(); }
+    int size() const override { return inner_.size(); }
+    std::optional<WorkerReport> poll_report() override { return inner_.poll_report(); }
+    void assign(int rank, long case_index) override { inner_.assign(rank, case_index); }
+    long report_and_wait(const WorkerReport& report) override { return inner_.report_and_wait(report); }
+    std::optional<std::pair<long, std::string>> identity(int rank) const override {
+      if (rank == 2) return std::make_pair(dead_pid_, host_);
+      return std::nullopt;
+    }
+    void lost(int rank) override { lost_ranks.push_back(rank); }
+    std::vector<int> lost_ranks;
+
+   private:
+    StudyChannel& inner_;
+    long dead_pid_;
+    std::string host_;
+  };
+
+  ScratchFolder folder("study_dead_worker");
+  Study study = short_general_study(folder.path(), 1);
+  ThreadChannels channels(3);
+  ThreadChannels::Channel coordinator(channels, 0), first(channels, 1);
+  Watching watching(coordinator, child, host);
+  std::vector<CaseOutcome> outcomes;
+  {
+    StudyControl on_first, control;
+    on_first.channel = &first;
+    control.channel = &watching;
+    std::jthread worker_1([&] { run_study_worker(study, on_first); });
+    outcomes = run_study(study, control);
+  }
+  EXPECT_EQ(watching.lost_ranks, std::vector<int>{2});
+  for (const CaseOutcome& outcome : outcomes) {
+    EXPECT_EQ(outcome.status, RunStatus::completed) << outcome.message;
+    EXPECT_NE(outcome.process, 2);
   }
 }
 

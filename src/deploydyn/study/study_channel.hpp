@@ -9,6 +9,7 @@
 
 #include <optional>
 #include <string>
+#include <utility>
 
 #include "deploydyn/solvers/analysis.hpp"
 
@@ -39,6 +40,10 @@ class StudyChannel {
   virtual long report_and_wait(const WorkerReport& report) = 0;
   // Process 0: worker `rank` died. The channel must not wait for it when the study ends.
   virtual void lost(int /*rank*/) {}
+  // Process 0: worker `rank`'s pid and host, when the channel knows them from the start (MPI
+  // gathers them as the processes start), so that a worker that dies before its first report
+  // is noticed too. Empty: known from its first report.
+  virtual std::optional<std::pair<long, std::string>> identity(int /*rank*/) const { return std::nullopt; }
 };
 
 }  // namespace deploydyn

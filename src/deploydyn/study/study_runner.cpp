@@ -139,6 +139,12 @@ void coordinate(StudyChannel& channel, Take take, Done done, std::vector<CaseOut
     bool stopped = false;
   };
   std::vector<Worker> workers(static_cast<std::size_t>(channel.size()));
+  for (int rank = 1; rank < channel.size(); ++rank) {
+    if (const auto identity = channel.identity(rank)) {
+      workers[static_cast<std::size_t>(rank)].pid = identity->first;
+      workers[static_cast<std::size_t>(rank)].host = identity->second;
+    }
+  }
   int active = channel.size() - 1;
   while (active > 0) {
     if (const auto report = channel.poll_report()) {
