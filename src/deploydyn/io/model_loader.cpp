@@ -1064,12 +1064,12 @@ void apply_override(io::YamlDocument& document, const Override& override, io::Ya
                      walked, io::describe(document, current), kind == io::YamlKind::map ? "mapping" : "list",
                      override.path, kind == io::YamlKind::map ? "{key: value, ...}" : "[a, b]"));
   }
-  if (!slot) {
-    fail("give a path, e.g. analysis.step");
-  } else if (document.kind(slot->first) == io::YamlKind::map) {
-    document.set_value(slot->first, slot->second, value);
+  // The path has at least one key (split_path), so the loop placed `current` in a container.
+  const auto [container, index] = *slot;
+  if (document.kind(container) == io::YamlKind::map) {
+    document.set_value(container, index, value);
   } else {
-    document.set_item(slot->first, slot->second, value);
+    document.set_item(container, index, value);
   }
   source.add_override(override);
 }

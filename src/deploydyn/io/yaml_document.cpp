@@ -191,13 +191,8 @@ class YamlDocument::Builder {
     // Deeper than any model: left to yaml-cpp, which refuses beyond its own limit (and whose
     // tree the recursive readers then walk within the stack).
     if (open_.size() >= kMaxDepth) throw LibyamlRefused{};
-    const Id node = document_.add_node(kind, mark);
-    if (!open_.empty()) {
-      Node& added = document_.nodes_[node];
-      added.parent = open_.back().node;
-      added.slot = static_cast<std::uint32_t>(stack_.size() - open_.back().first);
-    }
-    open_.push_back({node, stack_.size(), std::move(anchor)});
+    // Its parent is set by add() when it closes, at the same place among its siblings.
+    open_.push_back({document_.add_node(kind, mark), stack_.size(), std::move(anchor)});
   }
 
   void close() {
