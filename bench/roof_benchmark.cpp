@@ -195,7 +195,11 @@ BENCHMARK(BM_RoofStep)->Apply([](auto* b) { roof_sizes(b, {kKlu}); });
 // Modified Newton (analysis.newton.jacobian: reuse) on the 3D roofs of 10³ … 10⁵ bars.
 BENCHMARK(BM_RoofStepReuse)->Apply([](auto* b) {
   b->ArgNames({"units", "trusses", "solver"});
-  for (const int units : {26, 263, 2630}) b->Args({units, kTrusses3d, kKlu});
+  for (const int solver : {kKlu, kUmfpack}) {
+    for (const int units : {26, 263, 2630}) b->Args({units, kTrusses3d, solver});
+  }
+  // A fixed number of steps: the LU ages along the run, so the counts depend on its length.
+  b->Iterations(100);
   b->Unit(benchmark::kMicrosecond);
 });
 // Where dense LU stops paying (automatic choice, assembly/linear_system_factory.hpp): small

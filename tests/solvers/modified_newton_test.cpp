@@ -122,6 +122,39 @@ TEST(ModifiedNewton, KeepsTheLuAcrossSolvesAndRenewsItWhenItMust) {
   EXPECT_LT(far.factorizations, far.iterations);
 }
 
+// Along a loading path the LU ages: each solve takes more iterations than the last while every
+// one still contracts. The age-replacement rule renews it at the next solve whenever a solve
+// cost more than the mean per solve since the LU was made (the LU counted as
+// kLuCostInIterations iterations), and only then or when the rate test asks.
+TEST(ModifiedNewton, RenewsAnAgeingLuWhenASolveCostsMoreThanTheMeanSinceIt) {
+  Fixture fixture;
+  HardeningSprings equations(Eigen::Vector2d(30.0, 10.0));
+  NewtonSolver solver(options(NewtonOptions::Jacobian::reuse));
+  Eigen::VectorXd q = Eigen::VectorXd::Zero(2), lambda(0);
+  double cost = 0.0;
+  int solves = 0, renewals_by_rule = 0;
+  bool renewal_due = false;
+  for (int k = 0; k <= 40; ++k) {
+    equations.set_load(Eigen::Vector2d(30.0, 10.0) * (1.0 + 0.05 * k));
+    const NewtonResult result = solver.solve(equations, fixture.system, q, lambda);
+    ASSERT_TRUE(result.converged) << "load step " << k << ": " << result.failure;
+    if (renewal_due) {
+      EXPECT_GE(result.factorizations, 1) << "load step " << k << ": the rule asked for a new LU";
+      ++renewals_by_rule;
+    }
+    if (result.factorizations > 0) {
+      cost = NewtonSolver::kLuCostInIterations * result.factorizations + result.iterations;
+      solves = 1;
+      renewal_due = false;
+    } else {
+      cost += result.iterations;
+      ++solves;
+      renewal_due = result.iterations > cost / solves;
+    }
+  }
+  EXPECT_GE(renewals_by_rule, 5) << "the path ages the LU: the rule renews it";
+}
+
 // An old LU from a nearly unloaded state, far from the new equilibrium: in max_iterations it
 // does not get there (each residual contracts, but slowly), full Newton does. The solve is
 // done again with full Newton from where it started, and converges: its iterations count both.

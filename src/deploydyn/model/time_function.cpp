@@ -79,7 +79,7 @@ double evaluate(const TimeFunction::Kind& kind, double t, int order) {
 
 }  // namespace
 
-double TimeFunction::value(double t) const { return evaluate(kind_, t, 0); }
+double TimeFunction::value_of_kind(double t) const { return evaluate(kind_, t, 0); }
 double TimeFunction::derivative(double t) const { return evaluate(kind_, t, 1); }
 double TimeFunction::second_derivative(double t) const { return evaluate(kind_, t, 2); }
 double TimeFunction::integral(double t) const {

@@ -18,14 +18,28 @@ NewtonResult NewtonSolver::solve(DiscreteEquations& equations, LinearSystem& sys
   q_start_ = q;
   lambda_start_ = lambda;
   NewtonResult reused = iterate(equations, system, q, lambda, true);
+  if (reused.converged) account(reused);
   if (reused.converged || reused.iterations == reused.factorizations) return reused;
   // An old LU was used and there is no equilibrium yet: full Newton decides.
   q = q_start_;
   lambda = lambda_start_;
   NewtonResult full = iterate(equations, system, q, lambda, false);
+  if (full.converged) account(full);
   full.iterations += reused.iterations;
   full.factorizations += reused.factorizations;
   return full;
+}
+
+void NewtonSolver::account(const NewtonResult& solved) {
+  if (solved.factorizations > 0) {
+    cost_since_lu_ = kLuCostInIterations * solved.factorizations + solved.iterations;
+    solves_since_lu_ = 1;
+    return;
+  }
+  cost_since_lu_ += solved.iterations;
+  ++solves_since_lu_;
+  // The marginal cost above the mean: a new LU now lowers the mean cost per solve.
+  renew_lu_ = solved.iterations > cost_since_lu_ / solves_since_lu_;
 }
 
 NewtonResult NewtonSolver::iterate(DiscreteEquations& equations, LinearSystem& system, Eigen::VectorXd& q,
@@ -43,7 +57,7 @@ NewtonResult NewtonSolver::iterate(DiscreteEquations& equations, LinearSystem& s
   double last_correction = std::numeric_limits<double>::infinity();
   // The LU in the system is this solver's, for this step size: it may serve again.
   bool lu_current = reuse && factored_system_ == &system && factored_count_ == system.factorizations() &&
-                    factored_scale_ == equations.constraint_scale();
+                    factored_scale_ == equations.constraint_scale() && !renew_lu_;
   double last_measure = std::numeric_limits<double>::infinity();
 
   for (;; ++result.iterations) {
@@ -90,6 +104,7 @@ NewtonResult NewtonSolver::iterate(DiscreteEquations& equations, LinearSystem& s
       equations.matrix(q, lambda, system);
       const FactorizationStatus status = system.factorize();
       ++result.factorizations;
+      renew_lu_ = false;
       factored_system_ = &system;
       factored_count_ = system.factorizations();
       factored_scale_ = equations.constraint_scale();

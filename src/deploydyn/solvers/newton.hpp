@@ -15,6 +15,10 @@
 // system since. Converged means the same tests as above. A solve that used an old LU and did
 // not converge is done again from its start with full Newton before it counts as failed, so
 // that a failure still says the structure, not the reuse, found no equilibrium.
+// Across solves the LU ages: each needs more iterations than the last, though every one still
+// contracts. The LU is renewed at the start of the next solve when the last one took more
+// iterations than the mean cost per solve since the LU was made, the LU counted as
+// kLuCostInIterations iterations (an age-replacement rule, docs/theory.md "Modified Newton").
 
 #include <string>
 
@@ -45,10 +49,16 @@ class NewtonSolver {
 
   // A residual above this share of the previous one renews the LU (reuse only).
   static constexpr double kReuseContraction = 0.5;
+  // What a new matrix and LU cost, in reuse iterations (residual + solve). Measured on the 3D
+  // roofs (docs/performance.md): 3.4 at 10⁵ bars, 12 at 10⁴, 8 at 10³; the total cost is flat
+  // near the optimum, and a count, unlike a timing, keeps runs reproducible bit for bit.
+  static constexpr double kLuCostInIterations = 5.0;
 
  private:
   NewtonResult iterate(DiscreteEquations& equations, LinearSystem& system, Eigen::VectorXd& q,
                        Eigen::VectorXd& lambda, bool reuse);
+  // The age-replacement rule: books a converged solve's cost, decides on renewal.
+  void account(const NewtonResult& solved);
 
   NewtonOptions options_;
   Eigen::VectorXd r_, phi_, step_, q_start_, lambda_start_;
@@ -56,6 +66,10 @@ class NewtonSolver {
   const LinearSystem* factored_system_ = nullptr;
   long factored_count_ = -1;
   double factored_scale_ = 0.0;
+  // Since the LU was made: cost in iterations (the LU's included) and solves; renew it next.
+  double cost_since_lu_ = 0.0;
+  int solves_since_lu_ = 0;
+  bool renew_lu_ = false;
 };
 
 }  // namespace deploydyn
