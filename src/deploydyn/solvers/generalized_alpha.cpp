@@ -3,7 +3,16 @@
 #include <algorithm>
 #include <memory>
 
+#include "deploydyn/util/run_threads.hpp"
+
 namespace deploydyn {
+namespace {
+
+// From this many unknowns on, a residual is worth two cores (docs/performance.md, "Faster
+// large steps"): below, starting the second thread costs more than it saves.
+constexpr Eigen::Index kTwoCoreResidualDofs = 5000;
+
+}  // namespace
 
 // The equations of one step, set up anew by start() for every step; vectors keep their size
 // from step to step, so a step allocates nothing.
@@ -41,9 +50,25 @@ class GeneralizedAlphaEquations final : public DiscreteEquations {
   double residual(const Eigen::VectorXd& q, const Eigen::VectorXd& lambda, Eigen::VectorXd& r,
                   Eigen::VectorXd& phi) override {
     acceleration(q, acceleration_);
-    assembler_.mass_times(acceleration_, inertia_);
-    assembler_.internal_force(q, t_, 1.0, internal_);
-    assembler_.constraints_and_force(q, t_, lambda, phi, reaction_);
+    const auto forces = [&] {
+      assembler_.internal_force(q, t_, 1.0, internal_);
+      assembler_.constraints_and_force(q, t_, lambda, phi, reaction_);
+    };
+    // Inertia and the other forces are independent outputs, each summed by one thread in its
+    // usual order: on two cores the residual is the same bit for bit. (No parallel region at
+    // all below the threshold: even an inactive one allocates its team.)
+    if (q.size() >= kTwoCoreResidualDofs && run_threads() > 1) {
+#pragma omp parallel sections num_threads(2)
+      {
+#pragma omp section
+        assembler_.mass_times(acceleration_, inertia_);
+#pragma omp section
+        forces();
+      }
+    } else {
+      assembler_.mass_times(acceleration_, inertia_);
+      forces();
+    }
     r = inertia_ + internal_ - external_ + reaction_;
     if (rate_forces_) {  // dampers, friction: f_d(q, q̇(q)) at the step's end
       rates(q);

@@ -23,6 +23,7 @@
 #include "deploydyn/output/checked_file.hpp"
 #include "deploydyn/study/sampling_statistics.hpp"
 #include "deploydyn/study/study_table.hpp"
+#include "deploydyn/util/run_threads.hpp"
 
 namespace deploydyn {
 namespace {
@@ -226,19 +227,21 @@ std::vector<CaseOutcome> run_study(const Study& study, const StudyControl& contr
       // A report that cannot be shown (e.g. stderr closed) must not end the study.
     }
   };
+  const bool distributed = control.channel != nullptr && control.channel->size() > 1;
+  // Without other processes the calling thread is one of the workers: with one job no
+  // thread is started. With them it answers them, and threads run this process's cases.
+  // Under MPI a process is one worker (mpirun binds it to a core) unless jobs says more.
+  const int n_threads =
+      control.channel != nullptr ? std::max(study.jobs, 1) : resolve_jobs(study.jobs, to_run.size());
+  const bool shared_cores = distributed || n_threads > 1;
   const auto work = [&] {
+    const RunsOnOneCore one_core(shared_cores);  // the cases share the cores, not one case
     for (long i = take(); i >= 0; i = take()) {
       outcomes[static_cast<std::size_t>(i)] = run_case(study, static_cast<std::size_t>(i), control.stop);
       done(static_cast<std::size_t>(i));
     }
   };
-  const bool distributed = control.channel != nullptr && control.channel->size() > 1;
   {
-    // Without other processes the calling thread is one of the workers: with one job no
-    // thread is started. With them it answers them, and threads run this process's cases.
-    // Under MPI a process is one worker (mpirun binds it to a core) unless jobs says more.
-    const int n_threads =
-        control.channel != nullptr ? std::max(study.jobs, 1) : resolve_jobs(study.jobs, to_run.size());
     std::vector<std::jthread> helpers;
     for (int t = distributed ? 0 : 1; t < n_threads; ++t) {
       try {
