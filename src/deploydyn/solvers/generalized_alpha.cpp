@@ -1,6 +1,7 @@
 #include "deploydyn/solvers/generalized_alpha.hpp"
 
 #include <algorithm>
+#include <exception>
 #include <memory>
 
 #include "deploydyn/util/run_threads.hpp"
@@ -59,13 +60,26 @@ class GeneralizedAlphaEquations final : public DiscreteEquations {
     // usual order: on two cores the residual is the same bit for bit. (No parallel region at
     // all below the threshold: even an inactive one allocates its team.)
     if (q.size() >= kTwoCoreResidualDofs && run_threads() > 1) {
+      // An exception must not leave an OpenMP section (that ends the process): each is kept
+      // and thrown again after the sections, as the one-core path would throw it.
+      std::exception_ptr inertia_failure, forces_failure;
 #pragma omp parallel sections num_threads(2)
       {
 #pragma omp section
-        assembler_.mass_times(acceleration_, inertia_);
+        try {
+          assembler_.mass_times(acceleration_, inertia_);
+        } catch (...) {
+          inertia_failure = std::current_exception();
+        }
 #pragma omp section
-        forces();
+        try {
+          forces();
+        } catch (...) {
+          forces_failure = std::current_exception();
+        }
       }
+      if (inertia_failure) std::rethrow_exception(inertia_failure);
+      if (forces_failure) std::rethrow_exception(forces_failure);
     } else {
       assembler_.mass_times(acceleration_, inertia_);
       forces();
