@@ -14,6 +14,18 @@ namespace {
 // measured in docs/performance.md, "Faster large steps".
 constexpr Eigen::Index kTwoCoreResidualDofs = 5000;
 
+// Runs `work` and returns what it threw: an exception must not leave an OpenMP section (that
+// ends the process), so it is thrown again after the sections, as on one core.
+template <class Work>
+std::exception_ptr failure_of(const Work& work) noexcept {
+  try {
+    work();
+  } catch (...) {
+    return std::current_exception();
+  }
+  return nullptr;
+}
+
 }  // namespace
 
 // The equations of one step, set up anew by start() for every step; vectors keep their size
@@ -52,6 +64,7 @@ class GeneralizedAlphaEquations final : public DiscreteEquations {
   double residual(const Eigen::VectorXd& q, const Eigen::VectorXd& lambda, Eigen::VectorXd& r,
                   Eigen::VectorXd& phi) override {
     acceleration(q, acceleration_);
+    const auto inertia = [&] { assembler_.mass_times(acceleration_, inertia_); };
     const auto forces = [&] {
       assembler_.internal_force(q, t_, 1.0, internal_);
       assembler_.constraints_and_force(q, t_, lambda, phi, reaction_);
@@ -60,28 +73,19 @@ class GeneralizedAlphaEquations final : public DiscreteEquations {
     // usual order: on two cores the residual is the same bit for bit. (No parallel region at
     // all below the threshold: even an inactive one allocates its team.)
     if (q.size() >= kTwoCoreResidualDofs && run_threads() > 1) {
-      // An exception must not leave an OpenMP section (that ends the process): each is kept
-      // and thrown again after the sections, as the one-core path would throw it.
-      std::exception_ptr inertia_failure, forces_failure;
+      std::exception_ptr failures[2];
 #pragma omp parallel sections num_threads(2)
       {
 #pragma omp section
-        try {
-          assembler_.mass_times(acceleration_, inertia_);
-        } catch (...) {
-          inertia_failure = std::current_exception();
-        }
+        failures[0] = failure_of(inertia);
 #pragma omp section
-        try {
-          forces();
-        } catch (...) {
-          forces_failure = std::current_exception();
-        }
+        failures[1] = failure_of(forces);
       }
-      if (inertia_failure) std::rethrow_exception(inertia_failure);
-      if (forces_failure) std::rethrow_exception(forces_failure);
+      for (const std::exception_ptr& failure : failures) {
+        if (failure) std::rethrow_exception(failure);
+      }
     } else {
-      assembler_.mass_times(acceleration_, inertia_);
+      inertia();
       forces();
     }
     r = inertia_ + internal_ - external_ + reaction_;
