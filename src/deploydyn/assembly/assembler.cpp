@@ -175,7 +175,11 @@ Assembler::Assembler(const Model& model) : model_(model), dofs_(model) {
     if (c->n_equations() > kMaxConstraintEquations || n_local > kMaxConstraintDofs) {
       throw std::logic_error("a constraint touches more unknowns than the assembler's local buffers hold");
     }
-    n_matrix_entries_ += 2 * c->n_equations() * n_local + (c->nonlinear() ? n_local * n_local : 0) +
+    if (c->jacobian_diagonal() && n_local != c->n_equations()) {
+      throw std::logic_error("a constraint with a diagonal Jacobian has one unknown per equation");
+    }
+    const int jacobian_entries = c->jacobian_diagonal() ? n_local : c->n_equations() * n_local;
+    n_matrix_entries_ += 2 * jacobian_entries + (c->nonlinear() ? n_local * n_local : 0) +
                          (c->switchable() ? c->n_equations() : 0);
   }
   Eigen::VectorXd unit = Eigen::VectorXd::Ones(n_dofs()), row_sums;
@@ -435,8 +439,16 @@ void Assembler::for_each_matrix_block(const Eigen::VectorXd& q, double t,
     for (int k = 0; k < n_eq; ++k) rows[k] = n_dofs() + first_row_[c] + k;
     const std::span<const int> row_span(rows.data(), n_eq);
     jacobian *= w.constraint_scale;
-    emit(row_span, con.dofs(), jacobian);
-    emit(con.dofs(), row_span, jacobian.transpose());
+    if (con.jacobian_diagonal()) {
+      for (int k = 0; k < n_eq; ++k) {
+        const std::span<const int> row = row_span.subspan(k, 1), dof = con.dofs().subspan(k, 1);
+        emit(row, dof, jacobian.block<1, 1>(k, k));
+        emit(dof, row, jacobian.block<1, 1>(k, k));
+      }
+    } else {
+      emit(row_span, con.dofs(), jacobian);
+      emit(con.dofs(), row_span, jacobian.transpose());
+    }
     if (con.nonlinear()) {
       Eigen::MatrixXd hessian = Eigen::MatrixXd::Zero(n_local, n_local);
       con.add_hessian_term(q, t, lambda.segment(first_row_[c], n_eq), hessian);

@@ -53,11 +53,11 @@ KluLinearSystem::~KluLinearSystem() = default;
 void KluLinearSystem::analyze_pattern() {
   if (klu_->numeric != nullptr) klu_free_numeric(&klu_->numeric, &klu_->common);
   if (klu_->symbolic != nullptr) klu_free_symbolic(&klu_->symbolic, &klu_->common);
-  klu_->symbolic = klu_analyze(size_, column_start_.data(), row_index_.data(), &klu_->common);
+  klu_->symbolic = klu_analyze(factored_size(), column_start_.data(), row_index_.data(), &klu_->common);
   if (klu_->symbolic == nullptr) throw std::runtime_error("KLU could not analyse the matrix pattern");
 }
 
-FactorizationStatus KluLinearSystem::factorize_finite() {
+FactorizationStatus KluLinearSystem::factorize_pattern() {
   if (klu_->numeric == nullptr) return factorize_fully();
   Handles& k = *klu_;
   const bool refactored = klu_refactor(column_start_.data(), row_index_.data(), values_.data(),
@@ -79,9 +79,9 @@ FactorizationStatus KluLinearSystem::factorize_fully() {
   if (k.numeric == nullptr || k.common.status == KLU_SINGULAR) {
     const int column = k.common.singular_col;
     FactorizationStatus status = singular(0.0);
-    if (status.null_vector.size() == 0 && column >= 0 && column < size_) {
+    if (status.null_vector.size() == 0 && column >= 0 && column < factored_size()) {
       // Too large for an SVD: KLU's first zero pivot names one unknown of the null space.
-      status.null_vector = Eigen::VectorXd::Unit(size_, column);
+      status.null_vector = Eigen::VectorXd::Unit(size_, unknown_of(column));
     }
     if (k.numeric != nullptr) klu_free_numeric(&k.numeric, &k.common);
     return status;
@@ -102,8 +102,8 @@ double KluLinearSystem::factor_nonzeros() const {
   return klu_->numeric != nullptr ? static_cast<double>(klu_->numeric->lnz) + klu_->numeric->unz : 0.0;
 }
 
-void KluLinearSystem::solve(Eigen::Ref<Eigen::VectorXd> rhs) {
-  klu_solve(klu_->symbolic, klu_->numeric, size_, 1, rhs.data(), &klu_->common);
+void KluLinearSystem::solve_pattern(double* rhs) {
+  klu_solve(klu_->symbolic, klu_->numeric, factored_size(), 1, rhs, &klu_->common);
 }
 
 }  // namespace deploydyn

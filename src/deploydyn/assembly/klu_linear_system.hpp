@@ -20,7 +20,6 @@ class KluLinearSystem final : public SparseLinearSystem {
   KluLinearSystem(const KluLinearSystem&) = delete;
   KluLinearSystem& operator=(const KluLinearSystem&) = delete;
 
-  void solve(Eigen::Ref<Eigen::VectorXd> rhs) override;
   const char* name() const override { return "KLU"; }
 
   int full_factorizations() const { return full_factorizations_; }
@@ -28,8 +27,9 @@ class KluLinearSystem final : public SparseLinearSystem {
   double factor_nonzeros() const;
 
  protected:
-  FactorizationStatus factorize_finite() override;
   void analyze_pattern() override;
+  FactorizationStatus factorize_pattern() override;
+  void solve_pattern(double* rhs) override;
 
  private:
   struct Handles;  // klu_common, klu_symbolic, klu_numeric (klu.h stays out of this header)

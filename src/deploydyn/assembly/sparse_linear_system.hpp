@@ -3,6 +3,11 @@
 // from the assembler's entries. The back end's symbolic analysis (fill-reducing ordering) is
 // done once there too, so that each factorize() is numeric only. The indefinite constrained
 // matrix [A sBᵀ; sB 0] is factored as it is (no symmetry used).
+//
+// Held coordinates are eliminated before the back end sees the matrix (docs/theory.md,
+// "Held coordinates out of the factorization"): a constraint row with one entry, (j, i), whose
+// column has one entry, (i, j), fixes unknown i by row j alone and leaves unknown j to row i.
+// Supports are such pairs, and on a large roof they are two thirds of the unknowns.
 
 #include "deploydyn/assembly/linear_system.hpp"
 
@@ -10,17 +15,59 @@ namespace deploydyn {
 
 class SparseLinearSystem : public LinearSystem {
  public:
-  int non_zeros() const { return static_cast<int>(row_index_.size()); }
+  // Positions of the whole pattern.
+  int non_zeros() const { return static_cast<int>(values_.size()); }
+  // Unknowns the back end factorizes: size() less two per held coordinate.
+  int factored_size() const { return static_cast<int>(kept_.size()); }
+
+  void solve(Eigen::Ref<Eigen::VectorXd> rhs) final;
 
  protected:
-  // Builds column_start_/row_index_ (CSC, 0-based, sorted rows, no repeats) and the slots.
-  void build_storage(std::span<const MatrixEntry> entries) override;
-  MatrixEntry position(int value_index) const override;
-  // The back end's symbolic analysis of the pattern, called once at the end of build_storage.
-  virtual void analyze_pattern() = 0;
+  // Builds the factored pattern (column_start_, row_index_: CSC of the kept unknowns, 0-based,
+  // sorted rows, no repeats; its values are the first factored_non_zeros() of values_), the held
+  // pairs and the slots.
+  void build_storage(std::span<const MatrixEntry> entries) final;
+  MatrixEntry position(int value_index) const final;
+  FactorizationStatus factorize_finite() final;
 
-  std::vector<int> column_start_;  // size + 1
-  std::vector<int> row_index_;     // non_zeros()
+  // The back end, on the factored pattern: its symbolic analysis (once, from build_storage), its
+  // numeric factorization of values_.data(), and its solve in place of a factored_size() vector.
+  // Not called when every coordinate is held (factored_size() == 0).
+  virtual void analyze_pattern() = 0;
+  virtual FactorizationStatus factorize_pattern() = 0;
+  virtual void solve_pattern(double* rhs) = 0;
+
+  // The unknown (in size()'s numbering) of the back end's unknown `factored`.
+  int unknown_of(int factored) const { return kept_[factored]; }
+
+  std::vector<int> column_start_;  // factored_size() + 1
+  std::vector<int> row_index_;     // column_start_.back()
+
+ private:
+  // Row j = equation holds coordinate i = coordinate by its one entry A(j, i) = values_[pivot];
+  // A(i, j) = values_[partner] is how row i's balance names unknown j.
+  struct HeldPair {
+    int coordinate = 0;
+    int equation = 0;
+    int pivot = 0;
+    int partner = 0;
+  };
+  // An entry off the factored pattern and off the pairs: values_[slot] at row `row` of pair
+  // `pair`'s coordinate column (row in the factored numbering), or at column `col` (size()'s
+  // numbering) of that coordinate's row.
+  struct Coupling {
+    int slot = 0;
+    int index = 0;
+    int pair = 0;
+  };
+
+  std::vector<int> kept_;                  // factored → size()'s numbering
+  std::vector<HeldPair> held_;
+  std::vector<Coupling> column_couplings_; // A(k, i) for kept k: moves to the right-hand side
+  std::vector<Coupling> row_couplings_;    // A(i, k) for k ≠ j: row i's balance gives unknown j
+  std::vector<MatrixEntry> held_positions_;  // of values_[factored non-zeros ...]
+  // Work vectors of solve(), sized once.
+  Eigen::VectorXd factored_rhs_, held_value_, held_balance_;
 };
 
 }  // namespace deploydyn

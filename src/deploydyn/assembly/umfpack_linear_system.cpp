@@ -30,13 +30,13 @@ void UmfpackLinearSystem::analyze_pattern() {
   Handles& u = *umfpack_;
   if (u.numeric != nullptr) umfpack_di_free_numeric(&u.numeric);
   if (u.symbolic != nullptr) umfpack_di_free_symbolic(&u.symbolic);
-  const int status = umfpack_di_symbolic(size_, size_, column_start_.data(), row_index_.data(),
+  const int status = umfpack_di_symbolic(factored_size(), factored_size(), column_start_.data(), row_index_.data(),
                                          nullptr, &u.symbolic, u.control, u.info);
   if (status != UMFPACK_OK) throw std::runtime_error("UMFPACK could not analyse the matrix pattern");
-  right_hand_side_.resize(size_);
+  right_hand_side_.resize(factored_size());
 }
 
-FactorizationStatus UmfpackLinearSystem::factorize_finite() {
+FactorizationStatus UmfpackLinearSystem::factorize_pattern() {
   Handles& u = *umfpack_;
   if (u.numeric != nullptr) umfpack_di_free_numeric(&u.numeric);
   const int result = umfpack_di_numeric(column_start_.data(), row_index_.data(), values_.data(),
@@ -51,9 +51,9 @@ FactorizationStatus UmfpackLinearSystem::factorize_finite() {
   return status;
 }
 
-void UmfpackLinearSystem::solve(Eigen::Ref<Eigen::VectorXd> rhs) {
-  right_hand_side_ = rhs;
-  umfpack_di_solve(UMFPACK_A, column_start_.data(), row_index_.data(), values_.data(), rhs.data(),
+void UmfpackLinearSystem::solve_pattern(double* rhs) {
+  right_hand_side_ = Eigen::Map<const Eigen::VectorXd>(rhs, factored_size());
+  umfpack_di_solve(UMFPACK_A, column_start_.data(), row_index_.data(), values_.data(), rhs,
                    right_hand_side_.data(), umfpack_->numeric, umfpack_->control, umfpack_->info);
 }
 

@@ -15,12 +15,12 @@ class UmfpackLinearSystem final : public SparseLinearSystem {
   UmfpackLinearSystem(const UmfpackLinearSystem&) = delete;
   UmfpackLinearSystem& operator=(const UmfpackLinearSystem&) = delete;
 
-  void solve(Eigen::Ref<Eigen::VectorXd> rhs) override;
   const char* name() const override { return "UMFPACK"; }
 
  protected:
-  FactorizationStatus factorize_finite() override;
   void analyze_pattern() override;
+  FactorizationStatus factorize_pattern() override;
+  void solve_pattern(double* rhs) override;
 
  private:
   struct Handles;  // control and info arrays, symbolic and numeric objects

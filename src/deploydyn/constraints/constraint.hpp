@@ -34,6 +34,10 @@ class Constraint {
   virtual void evaluate(const Eigen::VectorXd& q, double t, Eigen::Ref<Eigen::VectorXd> phi,
                         Eigen::Ref<Eigen::MatrixXd> jacobian) const = 0;
 
+  // Whether row k of B depends on dofs()[k] alone (a support, a coordinate driver): the pattern
+  // then holds only those entries, and the sparse back ends take such held coordinates out of
+  // the factorization (assembly/sparse_linear_system.hpp).
+  virtual bool jacobian_diagonal() const { return false; }
   // Whether Φ is nonlinear in q, i.e. has a Hessian term: the iteration matrix reserves room
   // for H(λ) only then (the 3D pin joint and revolute driver, the hinge-angle driver).
   virtual bool nonlinear() const { return false; }

@@ -21,6 +21,7 @@ class PrescribedCoordinates final : public Constraint {
                         Eigen::Ref<Eigen::VectorXd> phi_t,
                         Eigen::Ref<Eigen::VectorXd> bias) const override;
   std::string describe(int row) const override { return labels_[row]; }
+  bool jacobian_diagonal() const override { return true; }
 
  private:
   std::vector<double> initial_;
