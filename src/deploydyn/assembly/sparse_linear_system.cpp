@@ -76,7 +76,9 @@ void SparseLinearSystem::build_storage(std::span<const MatrixEntry> entries) {
     kept_.push_back(u);
   }
 
-  // values_: the factored pattern's entries first (what the back end reads), then the rest.
+  // values_: the factored pattern's entries first (what the back end reads), then per pair the
+  // held coordinate's column in the kept rows, then its row, then the pair's two entries. Each
+  // coupling is contiguous, so that a solve streams through it.
   std::vector<int> place(whole.row_index.size(), -1);
   column_start_.assign(kept_.size() + 1, 0);
   row_index_.clear();
@@ -90,72 +92,123 @@ void SparseLinearSystem::build_storage(std::span<const MatrixEntry> entries) {
     }
     column_start_[f + 1] = static_cast<int>(row_index_.size());
   }
-  held_positions_.clear();
-  column_couplings_.clear();
-  row_couplings_.clear();
-  for (int col = 0; col < size_; ++col) {
-    for (int k = whole.column_start[col]; k < whole.column_start[col + 1]; ++k) {
-      if (place[k] >= 0) continue;
-      const int row = whole.row_index[k];
-      const int slot = static_cast<int>(row_index_.size() + held_positions_.size());
-      place[k] = slot;
-      held_positions_.push_back({row, col});
-      if (role[row] == Role::equation) {
-        held_[pair_of[row]].pivot = slot;
-      } else if (role[col] == Role::equation) {
-        held_[pair_of[col]].partner = slot;
-      } else if (role[row] == Role::coordinate) {
-        row_couplings_.push_back({slot, col, pair_of[row]});
-      } else {
-        column_couplings_.push_back({slot, factored_index[row], pair_of[col]});
+  row_index_.shrink_to_fit();
+  const int n_pairs = static_cast<int>(held_.size());
+  held_column_.start.assign(n_pairs + 1, 0);
+  held_row_.start.assign(n_pairs + 1, 0);
+  // Every entry off the factored pattern, with what it is: a pair's own entry, or one of a held
+  // coordinate's row (any column but its equation's) or column (a kept row).
+  enum class Held { pivot, partner, in_row, in_column };
+  auto for_each_held_entry = [&](auto&& visit) {
+    for (int col = 0; col < size_; ++col) {
+      for (int k = whole.column_start[col]; k < whole.column_start[col + 1]; ++k) {
+        const int row = whole.row_index[k];
+        if (role[row] == Role::kept && role[col] == Role::kept) continue;
+        const Held held = role[row] == Role::equation       ? Held::pivot
+                          : role[col] == Role::equation     ? Held::partner
+                          : role[row] == Role::coordinate ? Held::in_row
+                                                            : Held::in_column;
+        visit(k, row, col, held);
       }
     }
-  }
+  };
+  for_each_held_entry([&](int, int row, int col, Held held) {
+    if (held == Held::in_row) ++held_row_.start[pair_of[row] + 1];
+    if (held == Held::in_column) ++held_column_.start[pair_of[col] + 1];
+  });
+  held_column_.start[0] = static_cast<int>(row_index_.size());
+  std::partial_sum(held_column_.start.begin(), held_column_.start.end(), held_column_.start.begin());
+  held_row_.start[0] = held_column_.start.back();
+  std::partial_sum(held_row_.start.begin(), held_row_.start.end(), held_row_.start.begin());
+  held_column_.index.resize(held_column_.start.back() - held_column_.start.front());
+  held_row_.index.resize(held_row_.start.back() - held_row_.start.front());
+  std::vector<int> next_in_column(held_column_.start.begin(), held_column_.start.end() - 1);
+  std::vector<int> next_in_row(held_row_.start.begin(), held_row_.start.end() - 1);
+  for_each_held_entry([&](int k, int row, int col, Held held) {
+    switch (held) {
+      case Held::pivot: place[k] = pivot_slot(pair_of[row]); break;
+      case Held::partner: place[k] = partner_slot(pair_of[col]); break;
+      case Held::in_row:
+        place[k] = next_in_row[pair_of[row]]++;
+        held_row_.index[place[k] - held_row_.start.front()] = col;
+        break;
+      case Held::in_column:
+        place[k] = next_in_column[pair_of[col]]++;
+        held_column_.index[place[k] - held_column_.start.front()] = factored_index[row];
+        break;
+    }
+  });
   for (int k = 0; k < static_cast<int>(entries.size()); ++k) slots_[k] = place[whole_position[k]];
-  row_index_.shrink_to_fit();
-  values_.assign(row_index_.size() + held_positions_.size(), 0.0);
+  values_.assign(held_row_.start.back() + 2 * held_.size(), 0.0);
   factored_rhs_.resize(factored_size());
-  held_value_.resize(static_cast<Eigen::Index>(held_.size()));
-  held_balance_.resize(static_cast<Eigen::Index>(held_.size()));
+  held_value_.resize(n_pairs);
+  held_balance_.resize(n_pairs);
   if (factored_size() > 0) analyze_pattern();  // none when every coordinate is held
 }
 
 MatrixEntry SparseLinearSystem::position(int value_index) const {
-  const int factored_entries = static_cast<int>(row_index_.size());
-  if (value_index >= factored_entries) return held_positions_[value_index - factored_entries];
-  const auto col = std::upper_bound(column_start_.begin(), column_start_.end(), value_index) -
-                   column_start_.begin() - 1;
-  return {kept_[row_index_[value_index]], kept_[col]};
+  // The pair whose run in `runs` holds value_index.
+  auto pair_in = [&](const HeldRuns& runs) {
+    return static_cast<int>(std::upper_bound(runs.start.begin(), runs.start.end(), value_index) - runs.start.begin()) - 1;
+  };
+  if (value_index < held_column_.start.front()) {
+    const auto col = std::upper_bound(column_start_.begin(), column_start_.end(), value_index) -
+                     column_start_.begin() - 1;
+    return {kept_[row_index_[value_index]], kept_[col]};
+  }
+  if (value_index < held_row_.start.front()) {
+    const HeldPair& pair = held_[pair_in(held_column_)];
+    return {kept_[held_column_.index[value_index - held_column_.start.front()]], pair.coordinate};
+  }
+  if (value_index < held_row_.start.back()) {
+    const HeldPair& pair = held_[pair_in(held_row_)];
+    return {pair.coordinate, held_row_.index[value_index - held_row_.start.front()]};
+  }
+  const int offset = value_index - held_row_.start.back();  // pivot_slot, partner_slot
+  const HeldPair& pair = held_[offset / 2];
+  return offset % 2 == 0 ? MatrixEntry{pair.equation, pair.coordinate} : MatrixEntry{pair.coordinate, pair.equation};
 }
 
 FactorizationStatus SparseLinearSystem::factorize_finite() {
   // A zero pivot leaves row j (or column j) empty: the whole matrix is singular.
-  for (const HeldPair& pair : held_) {
-    if (values_[pair.pivot] == 0.0 || values_[pair.partner] == 0.0) return singular(0.0);
+  for (int p = 0; p < static_cast<int>(held_.size()); ++p) {
+    if (values_[pivot_slot(p)] == 0.0 || values_[partner_slot(p)] == 0.0) return singular(0.0);
   }
   return factored_size() > 0 ? factorize_pattern() : FactorizationStatus{};
 }
 
-// docs/theory.md, Eq. (H1)-(H3): the held coordinates from their rows, the kept unknowns from the
-// factored system with the held columns moved to the right-hand side, then the held equations'
-// unknowns from the held coordinates' rows.
+// docs/theory.md, Eqs. (H1)–(H3): the held coordinates from their rows, the kept unknowns from
+// the factored system with the held columns moved to the right-hand side, then the held
+// equations' unknowns from the held coordinates' rows.
 void SparseLinearSystem::solve(Eigen::Ref<Eigen::VectorXd> rhs) {
   if (held_.empty()) {
     solve_pattern(rhs.data());
     return;
   }
-  for (std::size_t p = 0; p < held_.size(); ++p) {
-    held_value_[p] = rhs[held_[p].equation] / values_[held_[p].pivot];
+  const int n_pairs = static_cast<int>(held_.size());
+  for (int p = 0; p < n_pairs; ++p) {
+    held_value_[p] = rhs[held_[p].equation] / values_[pivot_slot(p)];
     held_balance_[p] = rhs[held_[p].coordinate];
   }
   for (int f = 0; f < factored_size(); ++f) factored_rhs_[f] = rhs[kept_[f]];
-  for (const Coupling& c : column_couplings_) factored_rhs_[c.index] -= values_[c.slot] * held_value_[c.pair];
+  const int* row_of = held_column_.index.data() - held_column_.start.front();
+  for (int p = 0; p < n_pairs; ++p) {
+    const double x = held_value_[p];
+    if (x == 0.0) continue;  // the coordinate is where its constraint holds it: Newton's usual case
+    for (int slot = held_column_.start[p]; slot < held_column_.start[p + 1]; ++slot) {
+      factored_rhs_[row_of[slot]] -= values_[slot] * x;
+    }
+  }
   if (factored_size() > 0) solve_pattern(factored_rhs_.data());
   for (int f = 0; f < factored_size(); ++f) rhs[kept_[f]] = factored_rhs_[f];
-  for (std::size_t p = 0; p < held_.size(); ++p) rhs[held_[p].coordinate] = held_value_[p];
-  for (const Coupling& c : row_couplings_) held_balance_[c.pair] -= values_[c.slot] * rhs[c.index];
-  for (std::size_t p = 0; p < held_.size(); ++p) {
-    rhs[held_[p].equation] = held_balance_[p] / values_[held_[p].partner];
+  for (int p = 0; p < n_pairs; ++p) rhs[held_[p].coordinate] = held_value_[p];
+  const int* column_of = held_row_.index.data() - held_row_.start.front();
+  for (int p = 0; p < n_pairs; ++p) {
+    double balance = held_balance_[p];
+    for (int slot = held_row_.start[p]; slot < held_row_.start[p + 1]; ++slot) {
+      balance -= values_[slot] * rhs[column_of[slot]];
+    }
+    rhs[held_[p].equation] = balance / values_[partner_slot(p)];
   }
 }
 

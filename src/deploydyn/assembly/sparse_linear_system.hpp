@@ -44,28 +44,26 @@ class SparseLinearSystem : public LinearSystem {
   std::vector<int> row_index_;     // column_start_.back()
 
  private:
-  // Row j = equation holds coordinate i = coordinate by its one entry A(j, i) = values_[pivot];
-  // A(i, j) = values_[partner] is how row i's balance names unknown j.
+  // Row `equation` holds unknown `coordinate` by its one entry (H1); the coordinate's row gives
+  // the equation's unknown (H3).
   struct HeldPair {
     int coordinate = 0;
     int equation = 0;
-    int pivot = 0;
-    int partner = 0;
   };
-  // An entry off the factored pattern and off the pairs: values_[slot] at row `row` of pair
-  // `pair`'s coordinate column (row in the factored numbering), or at column `col` (size()'s
-  // numbering) of that coordinate's row.
-  struct Coupling {
-    int slot = 0;
-    int index = 0;
-    int pair = 0;
+  // Per pair, a run of values_ [start[p], start[p + 1]) and, for each value, the index of the
+  // unknown it multiplies or is added to (index[slot − start[0]]).
+  struct HeldRuns {
+    std::vector<int> start;
+    std::vector<int> index;
   };
+  // The pair's own two entries, A(j, i) and A(i, j), at the end of values_.
+  int pivot_slot(int pair) const { return held_row_.start.back() + 2 * pair; }
+  int partner_slot(int pair) const { return pivot_slot(pair) + 1; }
 
-  std::vector<int> kept_;                  // factored → size()'s numbering
+  std::vector<int> kept_;  // factored → size()'s numbering
   std::vector<HeldPair> held_;
-  std::vector<Coupling> column_couplings_; // A(k, i) for kept k: moves to the right-hand side
-  std::vector<Coupling> row_couplings_;    // A(i, k) for k ≠ j: row i's balance gives unknown j
-  std::vector<MatrixEntry> held_positions_;  // of values_[factored non-zeros ...]
+  HeldRuns held_column_;   // A(k, i), k kept (factored numbering): moves to the right-hand side
+  HeldRuns held_row_;      // A(i, k), k ≠ j (size()'s numbering): row i's balance gives x_j
   // Work vectors of solve(), sized once.
   Eigen::VectorXd factored_rhs_, held_value_, held_balance_;
 };
