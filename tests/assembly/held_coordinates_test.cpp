@@ -11,6 +11,7 @@
 #include <filesystem>
 #include <memory>
 #include <random>
+#include <tuple>
 
 #include "deploydyn/assembly/klu_linear_system.hpp"
 #include "deploydyn/assembly/linear_system_factory.hpp"
@@ -91,7 +92,71 @@ TEST(HeldCoordinates, PairsAreSolvedAsExactlyAsTheWholeMatrix) {
     x = -2.0 * b;
     system->solve(x);
     EXPECT_LT((x + 2.0 * expected).lpNorm<Eigen::Infinity>(), 1e-13 * expected.lpNorm<Eigen::Infinity>());
+    // Coordinate 1 needing no correction (b_5 = 0): its column is skipped, not mis-solved.
+    Eigen::VectorXd c = b;
+    c[5] = 0.0;
+    const Eigen::VectorXd expected_c = a.fullPivLu().solve(c);
+    x = c;
+    system->solve(x);
+    EXPECT_EQ(x[1], 0.0);  // exactly: Eq. (H1)
+    EXPECT_LT((x - expected_c).lpNorm<Eigen::Infinity>(), 1e-13 * expected_c.lpNorm<Eigen::Infinity>());
   }
+}
+
+// Sparse system from (row, col, value) triplets, factorized and solved for b.
+Eigen::VectorXd solved(SparseLinearSystem& system, int size, const std::vector<std::tuple<int, int, double>>& triplets,
+                       const Eigen::VectorXd& b) {
+  std::vector<MatrixEntry> entries;
+  for (const auto& [row, col, value] : triplets) entries.push_back({row, col});
+  system.analyze(size, entries);
+  for (std::size_t k = 0; k < triplets.size(); ++k) system.values()[system.slots()[k]] += std::get<2>(triplets[k]);
+  EXPECT_TRUE(system.factorize().ok);
+  Eigen::VectorXd x = b;
+  system.solve(x);
+  return x;
+}
+
+TEST(HeldCoordinates, HeldUnknownsWithNoCouplingsAndSystemsWithNothingLeftToFactorize) {
+  for (const auto& system : sparse_back_ends()) {
+    SCOPED_TRACE(system->name());
+    // Coordinate 0, held by row 1, has no other entry in its row or column: both runs empty.
+    const Eigen::Vector3d x = solved(*system, 3, {{1, 0, 2.0}, {0, 1, 5.0}, {2, 2, 4.0}}, Eigen::Vector3d(10.0, 6.0, 8.0));
+    EXPECT_EQ(system->factored_size(), 1);
+    EXPECT_DOUBLE_EQ(x[0], 3.0);  // 6 / 2
+    EXPECT_DOUBLE_EQ(x[1], 2.0);  // 10 / 5
+    EXPECT_DOUBLE_EQ(x[2], 2.0);  // 8 / 4
+    Eigen::Matrix3d expected_matrix = Eigen::Matrix3d::Zero();
+    expected_matrix(1, 0) = 2.0;
+    expected_matrix(0, 1) = 5.0;
+    expected_matrix(2, 2) = 4.0;
+    EXPECT_EQ(system->to_dense(), expected_matrix);
+  }
+  for (const auto& system : sparse_back_ends()) {
+    SCOPED_TRACE(system->name());
+    // Every unknown held: [7 −1; 3 0] is solved by substitution alone.
+    const Eigen::Vector2d x = solved(*system, 2, {{1, 0, 3.0}, {0, 1, -1.0}, {0, 0, 7.0}}, Eigen::Vector2d(5.0, 6.0));
+    EXPECT_EQ(system->factored_size(), 0);
+    EXPECT_DOUBLE_EQ(x[0], 2.0);  // 6 / 3
+    EXPECT_DOUBLE_EQ(x[1], 9.0);  // (5 − 7·2) / −1
+  }
+}
+
+// Beyond the dense diagnosis (2000 unknowns) a zero pivot of a pair names the pair's equation.
+TEST(HeldCoordinates, AZeroPivotInALargeSystemNamesItsEquation) {
+  constexpr int kKept = 2101;
+  std::vector<MatrixEntry> entries;
+  for (int k = 0; k < kKept; ++k) entries.push_back({k, k});
+  entries.push_back({kKept, kKept});      // the held coordinate's diagonal
+  entries.push_back({kKept + 1, kKept});  // its row: the zero pivot
+  entries.push_back({kKept, kKept + 1});
+  KluLinearSystem system;
+  system.analyze(kKept + 2, entries);
+  for (std::size_t k = 0; k < entries.size() - 2; ++k) system.values()[system.slots()[k]] = 1.0;
+  system.values()[system.slots().back()] = 1.0;
+  const FactorizationStatus status = system.factorize();
+  EXPECT_FALSE(status.ok);
+  ASSERT_EQ(status.null_vector.size(), kKept + 2);
+  EXPECT_EQ(status.null_vector[kKept + 1], 1.0);
 }
 
 TEST(HeldCoordinates, AZeroPivotOfAPairIsASingularMatrix) {

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cassert>
 #include <cmath>
 #include <limits>
 #include <stdexcept>
@@ -440,6 +441,7 @@ void Assembler::for_each_matrix_block(const Eigen::VectorXd& q, double t,
     const std::span<const int> row_span(rows.data(), n_eq);
     jacobian *= w.constraint_scale;
     if (con.jacobian_diagonal()) {
+      assert(jacobian.isDiagonal(0.0));  // the pattern holds the diagonal only
       for (int k = 0; k < n_eq; ++k) {
         const std::span<const int> row = row_span.subspan(k, 1), dof = con.dofs().subspan(k, 1);
         emit(row, dof, jacobian.block<1, 1>(k, k));

@@ -172,7 +172,11 @@ MatrixEntry SparseLinearSystem::position(int value_index) const {
 FactorizationStatus SparseLinearSystem::factorize_finite() {
   // A zero pivot leaves row j (or column j) empty: the whole matrix is singular.
   for (int p = 0; p < static_cast<int>(held_.size()); ++p) {
-    if (values_[pivot_slot(p)] == 0.0 || values_[partner_slot(p)] == 0.0) return singular(0.0);
+    if (values_[pivot_slot(p)] != 0.0 && values_[partner_slot(p)] != 0.0) continue;
+    FactorizationStatus status = singular(0.0);
+    // Too large for an SVD: name the pair's equation (its constraint is degenerate).
+    if (status.null_vector.size() == 0) status.null_vector = Eigen::VectorXd::Unit(size_, held_[p].equation);
+    return status;
   }
   return factored_size() > 0 ? factorize_pattern() : FactorizationStatus{};
 }
@@ -182,7 +186,7 @@ FactorizationStatus SparseLinearSystem::factorize_finite() {
 // equations' unknowns from the held coordinates' rows.
 void SparseLinearSystem::solve(Eigen::Ref<Eigen::VectorXd> rhs) {
   if (held_.empty()) {
-    solve_pattern(rhs.data());
+    if (factored_size() > 0) solve_pattern(rhs.data());
     return;
   }
   const int n_pairs = static_cast<int>(held_.size());
@@ -191,22 +195,22 @@ void SparseLinearSystem::solve(Eigen::Ref<Eigen::VectorXd> rhs) {
     held_balance_[p] = rhs[held_[p].coordinate];
   }
   for (int f = 0; f < factored_size(); ++f) factored_rhs_[f] = rhs[kept_[f]];
-  const int* row_of = held_column_.index.data() - held_column_.start.front();
+  const int first_in_column = held_column_.start.front();
   for (int p = 0; p < n_pairs; ++p) {
     const double x = held_value_[p];
     if (x == 0.0) continue;  // the coordinate is where its constraint holds it: Newton's usual case
     for (int slot = held_column_.start[p]; slot < held_column_.start[p + 1]; ++slot) {
-      factored_rhs_[row_of[slot]] -= values_[slot] * x;
+      factored_rhs_[held_column_.index[slot - first_in_column]] -= values_[slot] * x;
     }
   }
   if (factored_size() > 0) solve_pattern(factored_rhs_.data());
   for (int f = 0; f < factored_size(); ++f) rhs[kept_[f]] = factored_rhs_[f];
   for (int p = 0; p < n_pairs; ++p) rhs[held_[p].coordinate] = held_value_[p];
-  const int* column_of = held_row_.index.data() - held_row_.start.front();
+  const int first_in_row = held_row_.start.front();
   for (int p = 0; p < n_pairs; ++p) {
     double balance = held_balance_[p];
     for (int slot = held_row_.start[p]; slot < held_row_.start[p + 1]; ++slot) {
-      balance -= values_[slot] * rhs[column_of[slot]];
+      balance -= values_[slot] * rhs[held_row_.index[slot - first_in_row]];
     }
     rhs[held_[p].equation] = balance / values_[partner_slot(p)];
   }

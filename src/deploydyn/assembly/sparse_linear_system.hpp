@@ -20,6 +20,9 @@ class SparseLinearSystem : public LinearSystem {
   // Unknowns the back end factorizes: size() less two per held coordinate.
   int factored_size() const { return static_cast<int>(kept_.size()); }
 
+  // Reads the held pairs' entries from values() (H1, H3): values() must stay as factorize()
+  // found them until the last solve with that factorization, as every solver here does (each
+  // assembles, then factorizes, then solves).
   void solve(Eigen::Ref<Eigen::VectorXd> rhs) final;
 
  protected:
