@@ -64,29 +64,31 @@ class GeneralizedAlphaEquations final : public DiscreteEquations {
   double residual(const Eigen::VectorXd& q, const Eigen::VectorXd& lambda, Eigen::VectorXd& r,
                   Eigen::VectorXd& phi) override {
     acceleration(q, acceleration_);
-    const auto inertia = [&] { assembler_.mass_times(acceleration_, inertia_); };
-    const auto forces = [&] {
-      assembler_.internal_force(q, t_, 1.0, internal_);
+    const auto inertia_and_constraints = [&] {
+      assembler_.mass_times(acceleration_, inertia_);
       assembler_.constraints_and_force(q, t_, lambda, phi, reaction_);
     };
-    // Inertia and the other forces are independent outputs, each summed by one thread in its
-    // usual order: on two cores the residual is the same bit for bit. (No parallel region at
-    // all below the threshold: even an inactive one allocates its team.)
+    const auto internal_forces = [&] { assembler_.internal_force(q, t_, 1.0, internal_); };
+    // Independent outputs, each summed by one thread in its usual order: on two cores the
+    // residual is the same bit for bit. The split gives the cores about equal shares on the
+    // 10⁵-bar roof (profile: inertia 5.7 % and constraints 5.1 % of a step against 8.5 % for the
+    // internal forces). No parallel region at all below the threshold: even an inactive one
+    // allocates its team.
     if (q.size() >= kTwoCoreResidualDofs && run_threads() > 1) {
       std::exception_ptr failures[2];
 #pragma omp parallel sections num_threads(2)
       {
 #pragma omp section
-        failures[0] = failure_of(inertia);
+        failures[0] = failure_of(inertia_and_constraints);
 #pragma omp section
-        failures[1] = failure_of(forces);
+        failures[1] = failure_of(internal_forces);
       }
       for (const std::exception_ptr& failure : failures) {
         if (failure) std::rethrow_exception(failure);
       }
     } else {
-      inertia();
-      forces();
+      inertia_and_constraints();
+      internal_forces();
     }
     r = inertia_ + internal_ - external_ + reaction_;
     if (rate_forces_) {  // dampers, friction: f_d(q, q̇(q)) at the step's end
