@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <numeric>
+#include <utility>
 
 namespace deploydyn {
 namespace {
@@ -40,6 +41,29 @@ CompressedColumns compress(int size, std::span<const MatrixEntry> entries, std::
   return pattern;
 }
 
+// Held pairs (coordinate i, equation j): row j and column j each with one entry, at (j, i) and
+// (i, j), i ≠ j, no unknown in two pairs. Found from the pattern alone.
+std::vector<std::pair<int, int>> find_held_pairs(const CompressedColumns& whole) {
+  const int size = static_cast<int>(whole.column_start.size()) - 1;
+  std::vector<int> row_count(size, 0), last_column_in_row(size, -1);
+  for (int col = 0; col < size; ++col) {
+    for (int k = whole.column_start[col]; k < whole.column_start[col + 1]; ++k) {
+      ++row_count[whole.row_index[k]];
+      last_column_in_row[whole.row_index[k]] = col;
+    }
+  }
+  std::vector<bool> paired(size, false);
+  std::vector<std::pair<int, int>> pairs;
+  for (int j = 0; j < size; ++j) {
+    if (row_count[j] != 1 || whole.column_start[j + 1] - whole.column_start[j] != 1) continue;
+    const int i = whole.row_index[whole.column_start[j]];
+    if (i == j || last_column_in_row[j] != i || paired[i] || paired[j]) continue;
+    paired[i] = paired[j] = true;
+    pairs.emplace_back(i, j);
+  }
+  return pairs;
+}
+
 enum class Role { kept, coordinate, equation };
 
 }  // namespace
@@ -48,21 +72,10 @@ void SparseLinearSystem::build_storage(std::span<const MatrixEntry> entries) {
   std::vector<int> whole_position;
   const CompressedColumns whole = compress(size_, entries, whole_position);
 
-  // Held pairs: row j and column j each with one entry, at (j, i) and (i, j), i ≠ j.
-  std::vector<int> row_count(size_, 0), last_column_in_row(size_, -1);
-  for (int col = 0; col < size_; ++col) {
-    for (int k = whole.column_start[col]; k < whole.column_start[col + 1]; ++k) {
-      ++row_count[whole.row_index[k]];
-      last_column_in_row[whole.row_index[k]] = col;
-    }
-  }
   std::vector<Role> role(size_, Role::kept);
   std::vector<int> pair_of(size_, -1);
   held_.clear();
-  for (int j = 0; j < size_; ++j) {
-    if (row_count[j] != 1 || whole.column_start[j + 1] - whole.column_start[j] != 1) continue;
-    const int i = whole.row_index[whole.column_start[j]];
-    if (i == j || last_column_in_row[j] != i || role[i] != Role::kept || role[j] != Role::kept) continue;
+  for (const auto& [i, j] : find_held_pairs(whole)) {
     role[i] = Role::coordinate;
     role[j] = Role::equation;
     pair_of[i] = pair_of[j] = static_cast<int>(held_.size());

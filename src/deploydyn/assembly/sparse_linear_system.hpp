@@ -27,7 +27,7 @@ class SparseLinearSystem : public LinearSystem {
 
  protected:
   // Builds the factored pattern (column_start_, row_index_: CSC of the kept unknowns, 0-based,
-  // sorted rows, no repeats; its values are the first factored_non_zeros() of values_), the held
+  // sorted rows, no repeats; its values are the first row_index_.size() of values_), the held
   // pairs and the slots.
   void build_storage(std::span<const MatrixEntry> entries) final;
   MatrixEntry position(int value_index) const final;
