@@ -279,8 +279,9 @@ int check_command(const std::string& model_file, const std::vector<std::string>&
   const LinearSolverKind solver = choose_linear_solver(a.linear_solver, assembler.n_unknowns());
   fmt::print("linear      {} for {} unknowns{}\n",
              solver == LinearSolverKind::dense                   ? "dense LU"
-             : solver == LinearSolverKind::klu                   ? "KLU (sparse)"
+             : solver == LinearSolverKind::klu                   ? "KLU (sparse; large systems in two domains)"
              : solver == LinearSolverKind::klu_nested_dissection ? "KLU (sparse, nested dissection)"
+             : solver == LinearSolverKind::klu_two_domains       ? "KLU (sparse, two domains)"
                                                                  : "UMFPACK (sparse)",
              assembler.n_unknowns(), a.linear_solver == LinearSolverKind::automatic ? " (automatic)" : "");
   if (const std::string warning = integrator_warning(model); !warning.empty()) {

@@ -138,7 +138,7 @@ void BM_RoofSolve(benchmark::State& state) {
   label(state, run.model, *run.system);
 }
 
-// KLU with AMD (0) or METIS nested dissection (1) on the 3D roofs: the ordering's own time, a
+// KLU with AMD (0), METIS nested dissection (1) or two domains (2) on the 3D roofs: the ordering's own time, a
 // full factorization, a refactorization, a solve, the factors' entries and the unknowns left to
 // KLU once the supports are taken out (docs/theory.md, Eqs. H1–H3).
 void BM_RoofOrdering(benchmark::State& state) {
@@ -174,7 +174,7 @@ void BM_RoofOrdering(benchmark::State& state) {
 // Long roofs (10 trusses) and square ones (as many trusses as units).
 BENCHMARK(BM_RoofOrdering)->Apply([](auto* b) {
   b->ArgNames({"units", "trusses", "nd"});
-  for (const int nd : {0, 1}) {
+  for (const int nd : {0, 1, 2}) {
     for (const int units : {26, 263, 2630}) b->Args({units, kTrusses3d, nd});
     for (const int side : {32, 100, 160}) b->Args({side, side, nd});
   }

@@ -26,6 +26,7 @@ std::vector<std::unique_ptr<SparseLinearSystem>> sparse_back_ends() {
   std::vector<std::unique_ptr<SparseLinearSystem>> systems;
   systems.push_back(std::make_unique<KluLinearSystem>());
   systems.push_back(std::make_unique<KluLinearSystem>(KluOrdering::nested_dissection));
+  systems.push_back(std::make_unique<KluLinearSystem>(KluOrdering::two_domains));
   systems.push_back(std::make_unique<UmfpackLinearSystem>());
   return systems;
 }

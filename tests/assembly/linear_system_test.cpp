@@ -22,7 +22,7 @@ using testing::BarSpec;
 using testing::ModelBuilder;
 
 constexpr LinearSolverKind kKinds[] = {LinearSolverKind::dense, LinearSolverKind::klu, LinearSolverKind::umfpack,
-                                       LinearSolverKind::klu_nested_dissection};
+                                       LinearSolverKind::klu_nested_dissection, LinearSolverKind::klu_two_domains};
 
 // A stiff planar truss of `bays` square bays (posts, chords, one diagonal each), pinned at the
 // left end and on rollers at the right; point masses on the top nodes.

@@ -5,8 +5,10 @@
 #include <algorithm>
 #include <limits>
 #include <stdexcept>
+#include <vector>
 
 #include "deploydyn/assembly/metis_ordering.hpp"
+#include "deploydyn/util/run_threads.hpp"
 
 namespace deploydyn {
 namespace {
@@ -15,11 +17,76 @@ namespace {
 // this far below the last full factorization's, pivots are searched anew.
 constexpr double kRefactorConditionLoss = 1e-3;
 
+// From this many factored unknowns on, `automatic` orders by two domains: their solve on two
+// cores pays from about 3 000 (the 32 × 32 roof: 1.31 → 0.92 ms), not at 864 (the 10³-bar
+// roof: 0.062 → 0.081 ms). docs/performance.md, "Faster large steps".
+constexpr int kTwoDomainUnknowns = 2000;
+
 // KLU's user ordering (Common.ordering = 3), called per block: 0 on failure, else the expected
 // entries of the block's L, by which KLU sizes its first allocation of the factors.
 int nested_dissection_for_klu(int n, int* column_start, int* row_index, int* perm, klu_common*) {
   const long entries = nested_dissection_order(n, column_start, row_index, perm);
   return static_cast<int>(std::min<long>(entries, std::numeric_limits<int>::max()));
+}
+
+// One column of KLU's factors of a block, as KLU packs them (klu_internal.h, GET_POINTER): at
+// `lu + start[k]` (in doubles) the column's row indices, then, from the next whole double on,
+// its values.
+struct FactorColumn {
+  const int* rows;
+  const double* values;
+  int length;
+};
+FactorColumn factor_column(const double* lu, const int* start, const int* length, int k) {
+  const double* at = lu + start[k];
+  const int n = length[k];
+  const auto index_doubles = (static_cast<std::size_t>(n) * sizeof(int) + sizeof(double) - 1) / sizeof(double);
+  return {reinterpret_cast<const int*>(at), at + index_doubles, n};
+}
+
+}  // namespace
+
+// The two-domain split of the factors (assembly/metis_ordering.hpp) and the work space of the
+// solve that runs the domains on two cores.
+struct TwoDomainSolve {
+  int first = 0, second = 0;   // the domains' sizes, in pivot order; the separator follows
+  bool split = false;          // the last full factorization kept the domains apart
+  std::vector<double> x;       // the permuted right-hand side
+  std::vector<double> second_to_separator;  // the second domain's updates of the separator's rows
+};
+
+namespace {
+
+int two_domains_for_klu(int n, int* column_start, int* row_index, int* perm, klu_common* common) {
+  const TwoDomainOrder order = two_domain_order(n, column_start, row_index, perm);
+  auto& solve = *static_cast<TwoDomainSolve*>(common->user_data);
+  solve.first = order.first;
+  solve.second = order.second;
+  return static_cast<int>(std::min<long>(order.entries, std::numeric_limits<int>::max()));
+}
+
+// Whether KLU's pivoting kept the two domains apart (docs/theory.md, Eq. T1): no column of the first domain reaches a
+// row of the second in L, and no column of the second reaches a row of the first in U. (A row
+// taken from the separator as a pivot could; the ordering makes that unlikely, not impossible.)
+bool factors_split(const klu_numeric& f, TwoDomainSolve& d) {
+  if (f.nblocks != 1 || d.first <= 0 || d.second <= 0) return false;
+  const int separator = d.first + d.second;
+  const auto* lu = static_cast<const double*>(f.LUbx[0]);
+  for (int k = 0; k < d.first; ++k) {
+    const FactorColumn c = factor_column(lu, f.Lip, f.Llen, k);
+    for (int p = 0; p < c.length; ++p) {
+      if (c.rows[p] >= d.first && c.rows[p] < separator) return false;
+    }
+  }
+  for (int k = d.first; k < separator; ++k) {
+    const FactorColumn c = factor_column(lu, f.Uip, f.Ulen, k);
+    for (int p = 0; p < c.length; ++p) {
+      if (c.rows[p] < d.first) return false;
+    }
+  }
+  d.x.resize(static_cast<std::size_t>(f.n));
+  d.second_to_separator.resize(static_cast<std::size_t>(f.n - separator));
+  return true;
 }
 
 }  // namespace
@@ -28,18 +95,30 @@ struct KluLinearSystem::Handles {
   klu_common common{};
   klu_symbolic* symbolic = nullptr;
   klu_numeric* numeric = nullptr;
+  TwoDomainSolve two_domains;
 
-  explicit Handles(KluOrdering ordering) {
+  Handles() {
     klu_defaults(&common);
-    if (ordering == KluOrdering::nested_dissection) {
-      common.ordering = 3;
-      common.user_order = nested_dissection_for_klu;
-    }
     // No row scaling and no input check (-1): the assembler already sizes the constraint rows
     // like the force block (docs/theory.md), and the pattern is valid by construction (sorted, no
     // repeats: SparseLinearSystem::build_storage). Scaling and checking at every
     // refactorization cost 9 % of a roof's time step.
     common.scale = -1;
+  }
+  void order_by(KluOrdering ordering) {
+    common.ordering = 0;  // AMD
+    common.btf = 1;
+    common.user_order = nullptr;
+    common.user_data = nullptr;
+    if (ordering == KluOrdering::nested_dissection) {
+      common.ordering = 3;
+      common.user_order = nested_dissection_for_klu;
+    } else if (ordering == KluOrdering::two_domains) {
+      common.ordering = 3;
+      common.user_order = two_domains_for_klu;
+      common.user_data = &two_domains;
+      common.btf = 0;  // one block, whose factors split as the order does
+    }
   }
   ~Handles() {
     if (numeric != nullptr) klu_free_numeric(&numeric, &common);
@@ -47,12 +126,19 @@ struct KluLinearSystem::Handles {
   }
 };
 
-KluLinearSystem::KluLinearSystem(KluOrdering ordering) : klu_(std::make_unique<Handles>(ordering)) {}
+KluLinearSystem::KluLinearSystem(KluOrdering ordering)
+    : klu_(std::make_unique<Handles>()), requested_ordering_(ordering) {}
 KluLinearSystem::~KluLinearSystem() = default;
 
 void KluLinearSystem::analyze_pattern() {
   if (klu_->numeric != nullptr) klu_free_numeric(&klu_->numeric, &klu_->common);
   if (klu_->symbolic != nullptr) klu_free_symbolic(&klu_->symbolic, &klu_->common);
+  ordering_ = requested_ordering_;
+  if (ordering_ == KluOrdering::automatic) {
+    ordering_ = factored_size() >= kTwoDomainUnknowns ? KluOrdering::two_domains : KluOrdering::amd;
+  }
+  klu_->order_by(ordering_);
+  klu_->two_domains.split = false;
   klu_->symbolic = klu_analyze(factored_size(), column_start_.data(), row_index_.data(), &klu_->common);
   if (klu_->symbolic == nullptr) throw std::runtime_error("KLU could not analyse the matrix pattern");
 }
@@ -88,6 +174,7 @@ FactorizationStatus KluLinearSystem::factorize_fully() {
   }
   klu_rcond(k.symbolic, k.numeric, &k.common);
   reciprocal_condition_at_full_ = k.common.rcond;
+  k.two_domains.split = ordering_ == KluOrdering::two_domains && factors_split(*k.numeric, k.two_domains);
   if (!(k.common.rcond > kSingularReciprocalCondition)) {
     const double rcond = k.common.rcond;
     klu_free_numeric(&k.numeric, &k.common);
@@ -102,8 +189,68 @@ double KluLinearSystem::factor_nonzeros() const {
   return klu_->numeric != nullptr ? static_cast<double>(klu_->numeric->lnz) + klu_->numeric->unz : 0.0;
 }
 
+bool KluLinearSystem::solves_by_two_domains() const { return klu_->two_domains.split; }
+
 void KluLinearSystem::solve_pattern(double* rhs) {
+  if (klu_->two_domains.split) {
+    solve_two_domains(rhs);
+    return;
+  }
   klu_solve(klu_->symbolic, klu_->numeric, factored_size(), 1, rhs, &klu_->common);
+}
+
+void KluLinearSystem::solve_two_domains(double* rhs) {
+  const klu_numeric& f = *klu_->numeric;
+  TwoDomainSolve& d = klu_->two_domains;
+  const int n = factored_size();
+  const int separator = d.first + d.second;
+  const auto* lu = static_cast<const double*>(f.LUbx[0]);
+  const auto* diagonal = static_cast<const double*>(f.Udiag);
+  double* x = d.x.data();
+  double* second_to_separator = d.second_to_separator.data();
+  for (int k = 0; k < n; ++k) x[k] = rhs[f.Pnum[k]];
+  // L y = P b (docs/theory.md, Eq. T2): a domain's columns reach its own rows and the separator's.
+  const auto forward = [&](int begin, int end, double* separator_rows) {
+    for (int k = begin; k < end; ++k) {
+      const FactorColumn c = factor_column(lu, f.Lip, f.Llen, k);
+      const double xk = x[k];
+      for (int p = 0; p < c.length; ++p) {
+        const int row = c.rows[p];
+        if (row >= separator) separator_rows[row - separator] -= c.values[p] * xk;
+        else x[row] -= c.values[p] * xk;
+      }
+    }
+  };
+  // U x = y from the last column back (Eq. T3): a domain's columns reach only its own rows.
+  const auto backward = [&](int begin, int end) {
+    for (int k = end - 1; k >= begin; --k) {
+      const FactorColumn c = factor_column(lu, f.Uip, f.Ulen, k);
+      const double xk = x[k] /= diagonal[k];
+      for (int p = 0; p < c.length; ++p) x[c.rows[p]] -= c.values[p] * xk;
+    }
+  };
+  std::fill(second_to_separator, second_to_separator + (n - separator), 0.0);
+  // The two domains write disjoint entries: on one core or two, the same result bit for bit.
+  const bool two_cores = run_threads() > 1;
+#pragma omp parallel sections num_threads(2) if (two_cores)
+  {
+#pragma omp section
+    forward(0, d.first, x + separator);
+#pragma omp section
+    forward(d.first, separator, second_to_separator);
+  }
+  for (int k = separator; k < n; ++k) x[k] += second_to_separator[k - separator];
+  forward(separator, n, x + separator);
+  backward(separator, n);
+#pragma omp parallel sections num_threads(2) if (two_cores)
+  {
+#pragma omp section
+    backward(0, d.first);
+#pragma omp section
+    backward(d.first, separator);
+  }
+  const int* column_order = klu_->symbolic->Q;
+  for (int k = 0; k < n; ++k) rhs[column_order[k]] = x[k];
 }
 
 }  // namespace deploydyn

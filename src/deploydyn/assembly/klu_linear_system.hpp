@@ -9,13 +9,15 @@
 
 namespace deploydyn {
 
-// The fill-reducing order of each block: KLU's default AMD, or METIS's nested dissection
-// (assembly/metis_ordering.hpp). docs/performance.md, "Faster large steps", compares them.
-enum class KluOrdering { amd, nested_dissection };
+// The fill-reducing order: KLU's default (BTF blocks, each by AMD), METIS's nested dissection
+// of each block, or two domains and their separator (one block; assembly/metis_ordering.hpp),
+// whose solve runs the domains on two cores. `automatic`: two domains for large systems, else
+// AMD. docs/performance.md, "Faster large steps", compares them.
+enum class KluOrdering { amd, nested_dissection, two_domains, automatic };
 
 class KluLinearSystem final : public SparseLinearSystem {
  public:
-  explicit KluLinearSystem(KluOrdering ordering = KluOrdering::amd);
+  explicit KluLinearSystem(KluOrdering ordering = KluOrdering::automatic);
   ~KluLinearSystem() override;
   KluLinearSystem(const KluLinearSystem&) = delete;
   KluLinearSystem& operator=(const KluLinearSystem&) = delete;
@@ -25,6 +27,10 @@ class KluLinearSystem final : public SparseLinearSystem {
   int full_factorizations() const { return full_factorizations_; }
   // Entries of the L and U factors (with their diagonals) of the last factorization; 0 before.
   double factor_nonzeros() const;
+  // The ordering in use (`automatic` resolved), and whether solves run on two domains: the
+  // last full factorization's pivots kept them apart (else KLU's own solve serves).
+  KluOrdering ordering() const { return ordering_; }
+  bool solves_by_two_domains() const;
 
  protected:
   void analyze_pattern() override;
@@ -34,7 +40,10 @@ class KluLinearSystem final : public SparseLinearSystem {
  private:
   struct Handles;  // klu_common, klu_symbolic, klu_numeric (klu.h stays out of this header)
   FactorizationStatus factorize_fully();
+  void solve_two_domains(double* rhs);
   std::unique_ptr<Handles> klu_;
+  KluOrdering requested_ordering_;
+  KluOrdering ordering_ = KluOrdering::amd;
   double reciprocal_condition_at_full_ = 0.0;
   int full_factorizations_ = 0;
 };

@@ -13,9 +13,12 @@ LinearSolverKind choose_linear_solver(LinearSolverKind requested, int /*n_unknow
 std::unique_ptr<LinearSystem> make_linear_system(const Assembler& assembler, LinearSolverKind kind) {
   std::unique_ptr<LinearSystem> system;
   switch (choose_linear_solver(kind, assembler.n_unknowns())) {
-    case LinearSolverKind::klu: system = std::make_unique<KluLinearSystem>(); break;
+    case LinearSolverKind::klu: system = std::make_unique<KluLinearSystem>(KluOrdering::automatic); break;
     case LinearSolverKind::klu_nested_dissection:
       system = std::make_unique<KluLinearSystem>(KluOrdering::nested_dissection);
+      break;
+    case LinearSolverKind::klu_two_domains:
+      system = std::make_unique<KluLinearSystem>(KluOrdering::two_domains);
       break;
     case LinearSolverKind::umfpack: system = std::make_unique<UmfpackLinearSystem>(); break;
     default: system = std::make_unique<DenseLinearSystem>(); break;

@@ -4,7 +4,16 @@
 // A + Aᵀ, as AMD orders it: the two differ in how they cut a large, regular structure (METIS
 // splits it into halves recursively; AMD eliminates greedily), which shows in the fill.
 
+#include <vector>
+
 namespace deploydyn {
+
+// The graph of A + Aᵀ without its diagonal, as METIS takes it (idx_t is 32 bits in Debian's
+// METIS): the neighbours of v are neighbours[start[v] .. start[v + 1]), each once, sorted.
+struct SymmetricGraph {
+  std::vector<int> start, neighbours;
+};
+SymmetricGraph symmetric_graph(int n, const int* column_start, const int* row_index);
 
 // Fills perm (size n) with the pivot order of the n × n pattern (Ap, Ai) in compressed columns:
 // perm[k] is the row and column that is eliminated k-th. Returns the entries of L (diagonal
@@ -13,5 +22,16 @@ namespace deploydyn {
 // the C library's one random sequence, so its calls are serialized (the order stays the same
 // whatever the number of study threads).
 long nested_dissection_order(int n, const int* column_start, const int* row_index, int* perm);
+
+// Two domains that share no entry, and the separator between them (METIS's vertex separator;
+// an unknown without a diagonal entry next to the separator joins it), ordered first domain,
+// second domain, separator, each by CAMD's minimum degree. Their LU factors split the same
+// way, which lets a solve run the two domains on two cores. `entries` as above; 0 on failure.
+// A system too small to split (or one METIS cannot) is one domain: `second` is 0.
+struct TwoDomainOrder {
+  long entries = 0;
+  int first = 0, second = 0;  // the domains' sizes; the separator is the rest
+};
+TwoDomainOrder two_domain_order(int n, const int* column_start, const int* row_index, int* perm);
 
 }  // namespace deploydyn

@@ -188,15 +188,18 @@ struct AdaptiveOptions {
 
 // Back end of the Newton iteration matrix (assembly/linear_system_factory.hpp). `automatic`
 // takes the fastest measured for the model's size (bench/roof_benchmark.cpp): KLU.
-// klu_nested_dissection: KLU ordered by METIS's nested dissection instead of AMD
-// (docs/performance.md, "Faster large steps": it pays on wide grids, not on long roofs).
-enum class LinearSolverKind { automatic, dense, klu, umfpack, klu_nested_dissection };
+// `klu` orders by AMD, and large systems by two domains whose solves run on two cores
+// (assembly/klu_linear_system.hpp); klu_two_domains always by two domains; klu_nested_dissection
+// by METIS's nested dissection (docs/performance.md, "Faster large steps": it pays on wide grids,
+// not on long roofs).
+enum class LinearSolverKind { automatic, dense, klu, umfpack, klu_nested_dissection, klu_two_domains };
 inline constexpr NameTable kLinearSolverKinds{std::array{
     NamedValue<LinearSolverKind>{LinearSolverKind::automatic, "automatic"},
     NamedValue<LinearSolverKind>{LinearSolverKind::dense, "dense"},
     NamedValue<LinearSolverKind>{LinearSolverKind::klu, "klu"},
     NamedValue<LinearSolverKind>{LinearSolverKind::umfpack, "umfpack"},
     NamedValue<LinearSolverKind>{LinearSolverKind::klu_nested_dissection, "klu_nested_dissection"},
+    NamedValue<LinearSolverKind>{LinearSolverKind::klu_two_domains, "klu_two_domains"},
 }};
 inline const char* to_string(LinearSolverKind kind) { return kLinearSolverKinds.name(kind).data(); }
 
