@@ -80,6 +80,9 @@ void step_roof(benchmark::State& state, NewtonOptions::Jacobian jacobian) {
   label(state, run.model, *run.system);
   state.counters["newton_per_step"] = steps > 0 ? double(iterations) / steps : 0.0;
   state.counters["lu_per_step"] = steps > 0 ? double(factorizations) / steps : 0.0;
+  // KLU's solves ran by two domains on two cores (docs/theory.md, Eqs. T1–T3): 1, else 0.
+  const auto* klu = dynamic_cast<const KluLinearSystem*>(run.system.get());
+  state.counters["two_domain_solves"] = klu != nullptr && klu->solves_by_two_domains();
   // The benchmark's own bookkeeping allocates nothing per iteration: these are the step's.
   state.counters["allocations_per_step"] =
       steps > 0 ? double(bench::heap_allocations() - allocations_before) / steps : 0.0;
