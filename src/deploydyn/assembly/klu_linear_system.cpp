@@ -9,6 +9,7 @@
 
 #include "deploydyn/assembly/metis_ordering.hpp"
 #include "deploydyn/util/run_threads.hpp"
+#include "deploydyn/util/side_by_side.hpp"
 
 namespace deploydyn {
 namespace {
@@ -230,25 +231,13 @@ void KluLinearSystem::solve_two_domains(double* rhs) {
     }
   };
   std::fill(second_to_separator, second_to_separator + (n - separator), 0.0);
-  // The two domains write disjoint entries: on one core or two, the same result bit for bit.
   const bool two_cores = run_threads() > 1;
-#pragma omp parallel sections num_threads(2) if (two_cores)
-  {
-#pragma omp section
-    forward(0, d.first, x + separator);
-#pragma omp section
-    forward(d.first, separator, second_to_separator);
-  }
+  side_by_side(two_cores, [&] { forward(0, d.first, x + separator); },
+               [&] { forward(d.first, separator, second_to_separator); });
   for (int k = separator; k < n; ++k) x[k] += second_to_separator[k - separator];
   forward(separator, n, x + separator);
   backward(separator, n);
-#pragma omp parallel sections num_threads(2) if (two_cores)
-  {
-#pragma omp section
-    backward(0, d.first);
-#pragma omp section
-    backward(d.first, separator);
-  }
+  side_by_side(two_cores, [&] { backward(0, d.first); }, [&] { backward(d.first, separator); });
   const int* column_order = klu_->symbolic->Q;
   for (int k = 0; k < n; ++k) rhs[column_order[k]] = x[k];
 }

@@ -1,10 +1,10 @@
 #include "deploydyn/solvers/generalized_alpha.hpp"
 
 #include <algorithm>
-#include <exception>
 #include <memory>
 
 #include "deploydyn/util/run_threads.hpp"
+#include "deploydyn/util/side_by_side.hpp"
 
 namespace deploydyn {
 namespace {
@@ -13,18 +13,6 @@ namespace {
 // 10⁴-bar roof's 16 000 take 0.35 ms), against microseconds to wake the second thread. Gains
 // measured in docs/performance.md, "Faster large steps".
 constexpr Eigen::Index kTwoCoreResidualDofs = 5000;
-
-// Runs `work` and returns what it threw: an exception must not leave an OpenMP section (that
-// ends the process), so it is thrown again after the sections, as on one core.
-template <class Work>
-std::exception_ptr failure_of(const Work& work) noexcept {
-  try {
-    work();
-  } catch (...) {
-    return std::current_exception();
-  }
-  return nullptr;
-}
 
 }  // namespace
 
@@ -72,24 +60,8 @@ class GeneralizedAlphaEquations final : public DiscreteEquations {
     // Independent outputs, each summed by one thread in its usual order: on two cores the
     // residual is the same bit for bit. The split gives the cores about equal shares on the
     // 10⁵-bar roof (profile: inertia 5.7 % and constraints 5.1 % of a step against 8.5 % for the
-    // internal forces). No parallel region at all below the threshold: even an inactive one
-    // allocates its team.
-    if (q.size() >= kTwoCoreResidualDofs && run_threads() > 1) {
-      std::exception_ptr failures[2];
-#pragma omp parallel sections num_threads(2)
-      {
-#pragma omp section
-        failures[0] = failure_of(inertia_and_constraints);
-#pragma omp section
-        failures[1] = failure_of(internal_forces);
-      }
-      for (const std::exception_ptr& failure : failures) {
-        if (failure) std::rethrow_exception(failure);
-      }
-    } else {
-      inertia_and_constraints();
-      internal_forces();
-    }
+    // internal forces).
+    side_by_side(q.size() >= kTwoCoreResidualDofs && run_threads() > 1, inertia_and_constraints, internal_forces);
     r = inertia_ + internal_ - external_ + reaction_;
     if (rate_forces_) {  // dampers, friction: f_d(q, q̇(q)) at the step's end
       rates(q);
