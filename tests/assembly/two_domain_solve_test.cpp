@@ -173,6 +173,7 @@ TEST(TwoDomainSolve, AgreesWithTheDenseLuAfterRefactorizationsToo) {
 }
 
 TEST(TwoDomainSolve, OneCoreAndTwoCoresAgreeBitForBit) {
+  if (run_threads() < 2) GTEST_SKIP() << "one core: nothing runs side by side here";
   const SparseMatrix m = grid(40, 4.0, true);
   KluLinearSystem system(KluOrdering::two_domains);
   system.analyze(m.n, m.entries);
@@ -181,23 +182,77 @@ TEST(TwoDomainSolve, OneCoreAndTwoCoresAgreeBitForBit) {
   ASSERT_TRUE(system.solves_by_two_domains());
   const Eigen::VectorXd b = random_vector(m.n, 9);
   const Eigen::VectorXd on_two = solved(system, b);
+  const Eigen::VectorXd reference = m.dense().partialPivLu().solve(b);
+  EXPECT_LT((on_two - reference).lpNorm<Eigen::Infinity>(), 1e-12 * reference.lpNorm<Eigen::Infinity>());
   const RunsOnOneCore one_core(true);
   EXPECT_EQ(run_threads(), 1);
   EXPECT_EQ(solved(system, b), on_two);
 }
 
-TEST(TwoDomainSolve, PivotsThatMixTheDomainsLeaveTheSolveToKlu) {
-  // A diagonal too small for KLU's diagonal preference: every pivot is a neighbour's row, and
-  // next to the separator some are the separator's, whose entries reach the other domain.
-  const SparseMatrix m = grid(30, 1e-9, false);
+TEST(TwoDomainSolve, TwoUnconnectedPartsNeedNoSeparator) {
+  // Two grids with no entry between them: the domains are the grids, the separator is empty.
+  const SparseMatrix one = grid(20, 4.0, false, 1), other = grid(20, 4.0, false, 2);
+  SparseMatrix m = one;
+  m.n = one.n + other.n;
+  for (std::size_t k = 0; k < other.entries.size(); ++k) {
+    m.add(other.entries[k].row + one.n, other.entries[k].col + one.n, other.values[k]);
+  }
+  std::vector<int> start, rows, perm(static_cast<std::size_t>(m.n));
+  m.columns(start, rows);
+  const TwoDomainOrder order = two_domain_order(m.n, start.data(), rows.data(), perm.data());
+  EXPECT_EQ(order.first + order.second, m.n);
   KluLinearSystem system(KluOrdering::two_domains);
   system.analyze(m.n, m.entries);
   m.fill(system);
   ASSERT_TRUE(system.factorize().ok);
-  EXPECT_FALSE(system.solves_by_two_domains());
-  const Eigen::VectorXd b = random_vector(m.n, 4);
+  ASSERT_TRUE(system.solves_by_two_domains());
+  const Eigen::VectorXd b = random_vector(m.n, 3);
   const Eigen::VectorXd reference = m.dense().partialPivLu().solve(b);
-  EXPECT_LT((solved(system, b) - reference).lpNorm<Eigen::Infinity>(), 1e-10 * reference.lpNorm<Eigen::Infinity>());
+  EXPECT_LT((solved(system, b) - reference).lpNorm<Eigen::Infinity>(), 1e-12 * reference.lpNorm<Eigen::Infinity>());
+}
+
+TEST(TwoDomainSolve, ASingularMatrixLeavesNothingToSolveWith) {
+  // Each row sums to zero (the diagonal is the count of neighbours, every coupling −1): the
+  // constant vector is a null vector.
+  SparseMatrix m;
+  const int side = 30;
+  m.n = side * side;
+  for (int k = 0; k < m.n; ++k) {
+    const int i = k / side, j = k % side;
+    const int neighbours = (i > 0) + (i + 1 < side) + (j > 0) + (j + 1 < side);
+    m.add(k, k, neighbours);
+    if (i > 0) m.add(k, k - side, -1.0);
+    if (i + 1 < side) m.add(k, k + side, -1.0);
+    if (j > 0) m.add(k, k - 1, -1.0);
+    if (j + 1 < side) m.add(k, k + 1, -1.0);
+  }
+  KluLinearSystem system(KluOrdering::two_domains);
+  system.analyze(m.n, m.entries);
+  const SparseMatrix regular = grid(side, 4.0, false);
+  regular.fill(system);
+  ASSERT_TRUE(system.factorize().ok);
+  ASSERT_TRUE(system.solves_by_two_domains());
+  m.fill(system);
+  EXPECT_FALSE(system.factorize().ok);
+  EXPECT_FALSE(system.solves_by_two_domains());
+}
+
+TEST(TwoDomainSolve, PivotsThatMixTheDomainsLeaveTheSolveToKlu) {
+  // A diagonal too small for KLU's diagonal preference: every pivot is a neighbour's row, and
+  // next to the separator some are the separator's, whose entries reach the other domain. The
+  // same system goes from split factors to mixed ones and stays correct through both.
+  const SparseMatrix dominant = grid(30, 4.0, false), mixing = grid(30, 1e-9, false);
+  KluLinearSystem system(KluOrdering::two_domains);
+  system.analyze(dominant.n, dominant.entries);
+  for (const SparseMatrix* m : {&dominant, &mixing}) {
+    m->fill(system);
+    ASSERT_TRUE(system.factorize().ok);
+    EXPECT_EQ(system.solves_by_two_domains(), m == &dominant);
+    const Eigen::VectorXd b = random_vector(m->n, 4);
+    const Eigen::VectorXd reference = m->dense().partialPivLu().solve(b);
+    EXPECT_LT((solved(system, b) - reference).lpNorm<Eigen::Infinity>(), 1e-10 * reference.lpNorm<Eigen::Infinity>());
+  }
+  EXPECT_EQ(system.full_factorizations(), 2);  // the old pivots failed the mixing matrix
 }
 
 TEST(TwoDomainSolve, AutomaticOrdersLargeSystemsByTwoDomains) {

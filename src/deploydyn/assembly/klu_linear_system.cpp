@@ -70,7 +70,8 @@ int two_domains_for_klu(int n, int* column_start, int* row_index, int* perm, klu
 // row of the second in L, and no column of the second reaches a row of the first in U. (A row
 // taken from the separator as a pivot could; the ordering makes that unlikely, not impossible.)
 bool factors_split(const klu_numeric& f, TwoDomainSolve& d) {
-  if (f.nblocks != 1 || d.first <= 0 || d.second <= 0) return false;
+  // The solve permutes but does not scale the rows (Handles sets scale = -1: no Rs).
+  if (f.nblocks != 1 || f.Rs != nullptr || d.first <= 0 || d.second <= 0) return false;
   const int separator = d.first + d.second;
   const auto* lu = static_cast<const double*>(f.LUbx[0]);
   for (int k = 0; k < d.first; ++k) {
@@ -139,7 +140,7 @@ void KluLinearSystem::analyze_pattern() {
     ordering_ = factored_size() >= kTwoDomainUnknowns ? KluOrdering::two_domains : KluOrdering::amd;
   }
   klu_->order_by(ordering_);
-  klu_->two_domains.split = false;
+  klu_->two_domains = {};
   klu_->symbolic = klu_analyze(factored_size(), column_start_.data(), row_index_.data(), &klu_->common);
   if (klu_->symbolic == nullptr) throw std::runtime_error("KLU could not analyse the matrix pattern");
 }
@@ -161,6 +162,7 @@ FactorizationStatus KluLinearSystem::factorize_pattern() {
 FactorizationStatus KluLinearSystem::factorize_fully() {
   Handles& k = *klu_;
   if (k.numeric != nullptr) klu_free_numeric(&k.numeric, &k.common);
+  k.two_domains.split = false;  // until these factors are found split
   ++full_factorizations_;
   k.numeric = klu_factor(column_start_.data(), row_index_.data(), values_.data(), k.symbolic, &k.common);
   if (k.numeric == nullptr || k.common.status == KLU_SINGULAR) {
@@ -175,12 +177,12 @@ FactorizationStatus KluLinearSystem::factorize_fully() {
   }
   klu_rcond(k.symbolic, k.numeric, &k.common);
   reciprocal_condition_at_full_ = k.common.rcond;
-  k.two_domains.split = ordering_ == KluOrdering::two_domains && factors_split(*k.numeric, k.two_domains);
   if (!(k.common.rcond > kSingularReciprocalCondition)) {
     const double rcond = k.common.rcond;
     klu_free_numeric(&k.numeric, &k.common);
     return singular(rcond);
   }
+  k.two_domains.split = ordering_ == KluOrdering::two_domains && factors_split(*k.numeric, k.two_domains);
   FactorizationStatus status;
   status.reciprocal_condition = k.common.rcond;
   return status;
@@ -190,10 +192,12 @@ double KluLinearSystem::factor_nonzeros() const {
   return klu_->numeric != nullptr ? static_cast<double>(klu_->numeric->lnz) + klu_->numeric->unz : 0.0;
 }
 
-bool KluLinearSystem::solves_by_two_domains() const { return klu_->two_domains.split; }
+bool KluLinearSystem::solves_by_two_domains() const {
+  return klu_->numeric != nullptr && klu_->two_domains.split;
+}
 
 void KluLinearSystem::solve_pattern(double* rhs) {
-  if (klu_->two_domains.split) {
+  if (solves_by_two_domains()) {
     solve_two_domains(rhs);
     return;
   }

@@ -132,7 +132,7 @@ TwoDomainOrder two_domain_order(int n, const int* column_start, const int* row_i
   idx_t nvtxs = n, separator_size = 0;
   idx_t options[METIS_NOPTIONS];
   METIS_SetDefaultOptions(options);
-  if (n >= kSmallestSplit) {
+  if (n >= kSmallestSplit && xadj.back() > 0) {  // an edgeless graph has nothing to cut
     const std::lock_guard lock(metis_mutex);
     if (METIS_ComputeVertexSeparator(&nvtxs, xadj.data(), adjncy.data(), nullptr, options, &separator_size,
                                      part.data()) != METIS_OK) {
@@ -161,6 +161,7 @@ TwoDomainOrder two_domain_order(int n, const int* column_start, const int* row_i
   // CAMD orders constraint set 0 first, then set 1, then set 2, each by approximate minimum degree.
   double control[CAMD_CONTROL], info[CAMD_INFO];
   camd_defaults(control);
+  // Fails only out of memory or on an invalid pattern: KLU's analysis then fails and says so.
   if (camd_order(n, column_start, row_index, perm, control, info, part.data()) < CAMD_OK) return {};
   TwoDomainOrder order;
   order.first = static_cast<int>(std::count(part.begin(), part.end(), 0));
