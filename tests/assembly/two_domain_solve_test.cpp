@@ -8,6 +8,7 @@
 
 #include <Eigen/LU>
 #include <algorithm>
+#include <memory>
 #include <numeric>
 #include <random>
 #include <vector>
@@ -101,6 +102,21 @@ Eigen::VectorXd solved(LinearSystem& system, const Eigen::VectorXd& b) {
   return x;
 }
 
+// The largest error of `system`'s solution of m x = b, relative to the largest entry of a dense
+// LU's.
+double error_against_dense_lu(LinearSystem& system, const SparseMatrix& m, const Eigen::VectorXd& b) {
+  const Eigen::VectorXd reference = m.dense().partialPivLu().solve(b);
+  return (solved(system, b) - reference).lpNorm<Eigen::Infinity>() / reference.lpNorm<Eigen::Infinity>();
+}
+
+// KLU in two domains, analysed for m's pattern and holding m's values (not yet factorized).
+std::unique_ptr<KluLinearSystem> two_domain_system(const SparseMatrix& m) {
+  auto system = std::make_unique<KluLinearSystem>(KluOrdering::two_domains);
+  system->analyze(m.n, m.entries);
+  m.fill(*system);
+  return system;
+}
+
 TEST(TwoDomainOrder, LeavesNoEntryBetweenTheDomains) {
   for (const bool multipliers : {false, true}) {
     SCOPED_TRACE(multipliers ? "with multipliers" : "grid");
@@ -145,13 +161,10 @@ TEST(TwoDomainOrder, ASystemTooSmallToSplitIsOneDomain) {
   EXPECT_EQ(order.first, 4);
   EXPECT_EQ(order.second, 0);
   EXPECT_GT(order.entries, 0);
-  KluLinearSystem system(KluOrdering::two_domains);
-  system.analyze(m.n, m.entries);
-  m.fill(system);
-  ASSERT_TRUE(system.factorize().ok);
-  EXPECT_FALSE(system.solves_by_two_domains());
-  const Eigen::VectorXd b = random_vector(m.n, 1);
-  EXPECT_LT((m.dense() * solved(system, b) - b).lpNorm<Eigen::Infinity>(), 1e-13);
+  const auto system = two_domain_system(m);
+  ASSERT_TRUE(system->factorize().ok);
+  EXPECT_FALSE(system->solves_by_two_domains());
+  EXPECT_LT(error_against_dense_lu(*system, m, random_vector(m.n, 1)), 1e-13);
 }
 
 TEST(TwoDomainSolve, AgreesWithTheDenseLuAfterRefactorizationsToo) {
@@ -164,9 +177,7 @@ TEST(TwoDomainSolve, AgreesWithTheDenseLuAfterRefactorizationsToo) {
       m.fill(system);
       ASSERT_TRUE(system.factorize().ok);
       ASSERT_TRUE(system.solves_by_two_domains());
-      const Eigen::VectorXd b = random_vector(m.n, seed);
-      const Eigen::VectorXd reference = m.dense().partialPivLu().solve(b);
-      EXPECT_LT((solved(system, b) - reference).lpNorm<Eigen::Infinity>(), 1e-12 * reference.lpNorm<Eigen::Infinity>());
+      EXPECT_LT(error_against_dense_lu(system, m, random_vector(m.n, seed)), 1e-12);
     }
     EXPECT_EQ(system.full_factorizations(), 1);
   }
@@ -175,18 +186,15 @@ TEST(TwoDomainSolve, AgreesWithTheDenseLuAfterRefactorizationsToo) {
 TEST(TwoDomainSolve, OneCoreAndTwoCoresAgreeBitForBit) {
   if (run_threads() < 2) GTEST_SKIP() << "one core: nothing runs side by side here";
   const SparseMatrix m = grid(40, 4.0, true);
-  KluLinearSystem system(KluOrdering::two_domains);
-  system.analyze(m.n, m.entries);
-  m.fill(system);
-  ASSERT_TRUE(system.factorize().ok);
-  ASSERT_TRUE(system.solves_by_two_domains());
+  const auto system = two_domain_system(m);
+  ASSERT_TRUE(system->factorize().ok);
+  ASSERT_TRUE(system->solves_by_two_domains());
   const Eigen::VectorXd b = random_vector(m.n, 9);
-  const Eigen::VectorXd on_two = solved(system, b);
-  const Eigen::VectorXd reference = m.dense().partialPivLu().solve(b);
-  EXPECT_LT((on_two - reference).lpNorm<Eigen::Infinity>(), 1e-12 * reference.lpNorm<Eigen::Infinity>());
+  EXPECT_LT(error_against_dense_lu(*system, m, b), 1e-12);
+  const Eigen::VectorXd on_two = solved(*system, b);
   const RunsOnOneCore one_core(true);
   EXPECT_EQ(run_threads(), 1);
-  EXPECT_EQ(solved(system, b), on_two);
+  EXPECT_EQ(solved(*system, b), on_two);
 }
 
 TEST(TwoDomainSolve, TwoUnconnectedPartsNeedNoSeparator) {
@@ -201,14 +209,10 @@ TEST(TwoDomainSolve, TwoUnconnectedPartsNeedNoSeparator) {
   m.columns(start, rows);
   const TwoDomainOrder order = two_domain_order(m.n, start.data(), rows.data(), perm.data());
   EXPECT_EQ(order.first + order.second, m.n);
-  KluLinearSystem system(KluOrdering::two_domains);
-  system.analyze(m.n, m.entries);
-  m.fill(system);
-  ASSERT_TRUE(system.factorize().ok);
-  ASSERT_TRUE(system.solves_by_two_domains());
-  const Eigen::VectorXd b = random_vector(m.n, 3);
-  const Eigen::VectorXd reference = m.dense().partialPivLu().solve(b);
-  EXPECT_LT((solved(system, b) - reference).lpNorm<Eigen::Infinity>(), 1e-12 * reference.lpNorm<Eigen::Infinity>());
+  const auto system = two_domain_system(m);
+  ASSERT_TRUE(system->factorize().ok);
+  ASSERT_TRUE(system->solves_by_two_domains());
+  EXPECT_LT(error_against_dense_lu(*system, m, random_vector(m.n, 3)), 1e-12);
 }
 
 TEST(TwoDomainSolve, ASingularMatrixLeavesNothingToSolveWith) {
@@ -226,15 +230,12 @@ TEST(TwoDomainSolve, ASingularMatrixLeavesNothingToSolveWith) {
     if (j > 0) m.add(k, k - 1, -1.0);
     if (j + 1 < side) m.add(k, k + 1, -1.0);
   }
-  KluLinearSystem system(KluOrdering::two_domains);
-  system.analyze(m.n, m.entries);
-  const SparseMatrix regular = grid(side, 4.0, false);
-  regular.fill(system);
-  ASSERT_TRUE(system.factorize().ok);
-  ASSERT_TRUE(system.solves_by_two_domains());
-  m.fill(system);
-  EXPECT_FALSE(system.factorize().ok);
-  EXPECT_FALSE(system.solves_by_two_domains());
+  const auto system = two_domain_system(grid(side, 4.0, false));  // the same pattern, regular
+  ASSERT_TRUE(system->factorize().ok);
+  ASSERT_TRUE(system->solves_by_two_domains());
+  m.fill(*system);
+  EXPECT_FALSE(system->factorize().ok);
+  EXPECT_FALSE(system->solves_by_two_domains());
 }
 
 TEST(TwoDomainSolve, PivotsThatMixTheDomainsLeaveTheSolveToKlu) {
@@ -248,9 +249,7 @@ TEST(TwoDomainSolve, PivotsThatMixTheDomainsLeaveTheSolveToKlu) {
     m->fill(system);
     ASSERT_TRUE(system.factorize().ok);
     EXPECT_EQ(system.solves_by_two_domains(), m == &dominant);
-    const Eigen::VectorXd b = random_vector(m->n, 4);
-    const Eigen::VectorXd reference = m->dense().partialPivLu().solve(b);
-    EXPECT_LT((solved(system, b) - reference).lpNorm<Eigen::Infinity>(), 1e-10 * reference.lpNorm<Eigen::Infinity>());
+    EXPECT_LT(error_against_dense_lu(system, *m, random_vector(m->n, 4)), 1e-10);
   }
   EXPECT_EQ(system.full_factorizations(), 2);  // the old pivots failed the mixing matrix
 }
