@@ -1,8 +1,10 @@
 #pragma once
-// A fill-reducing ordering by nested dissection (METIS 5, Karypis & Kumar; Debian libmetis-dev):
-// for KLU's blocks as its user ordering (assembly/klu_linear_system.cpp). On the pattern of
-// A + Aᵀ, as AMD orders it: the two differ in how they cut a large, regular structure (METIS
-// splits it into halves recursively; AMD eliminates greedily), which shows in the fill.
+// Fill-reducing orderings cut by METIS 5 (Karypis & Kumar; Debian libmetis-dev), KLU's user
+// orderings (assembly/klu_linear_system.cpp), on the pattern of A + Aᵀ as AMD orders it:
+// - nested dissection, which differs from AMD in how it cuts a large, regular structure (METIS
+//   splits it into halves recursively; AMD eliminates greedily), which shows in the fill;
+// - two domains and their separator, each by CAMD's minimum degree, whose factors let a solve
+//   run the domains on two cores (docs/theory.md, "Two domains on two cores").
 
 #include <vector>
 
