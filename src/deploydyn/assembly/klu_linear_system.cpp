@@ -45,8 +45,6 @@ FactorColumn factor_column(const double* lu, const int* start, const int* length
   return {reinterpret_cast<const int*>(at), at + index_doubles, n};
 }
 
-}  // namespace
-
 // The two-domain split of the factors (assembly/metis_ordering.hpp) and the work space of the
 // solve that runs the domains on two cores.
 struct TwoDomainSolve {
@@ -55,8 +53,6 @@ struct TwoDomainSolve {
   std::vector<double> x;       // the permuted right-hand side
   std::vector<double> second_to_separator;  // the second domain's updates of the separator's rows
 };
-
-namespace {
 
 int two_domains_for_klu(int n, int* column_start, int* row_index, int* perm, klu_common* common) {
   const TwoDomainOrder order = two_domain_order(n, column_start, row_index, perm);
@@ -69,7 +65,7 @@ int two_domains_for_klu(int n, int* column_start, int* row_index, int* perm, klu
 // Whether KLU's pivoting kept the two domains apart (docs/theory.md, Eq. T1): no column of the first domain reaches a
 // row of the second in L, and no column of the second reaches a row of the first in U. (A row
 // taken from the separator as a pivot could; the ordering makes that unlikely, not impossible.)
-bool factors_split(const klu_numeric& f, TwoDomainSolve& d) {
+bool factors_split(const klu_numeric& f, const TwoDomainSolve& d) {
   // The solve permutes but does not scale the rows (Handles sets scale = -1: no Rs).
   if (f.nblocks != 1 || f.Rs != nullptr || d.first <= 0 || d.second <= 0) return false;
   const int separator = d.first + d.second;
@@ -86,8 +82,6 @@ bool factors_split(const klu_numeric& f, TwoDomainSolve& d) {
       if (c.rows[p] < d.first) return false;
     }
   }
-  d.x.resize(static_cast<std::size_t>(f.n));
-  d.second_to_separator.resize(static_cast<std::size_t>(f.n - separator));
   return true;
 }
 
@@ -140,9 +134,14 @@ void KluLinearSystem::analyze_pattern() {
     ordering_ = factored_size() >= kTwoDomainUnknowns ? KluOrdering::two_domains : KluOrdering::amd;
   }
   klu_->order_by(ordering_);
-  klu_->two_domains = {};
+  TwoDomainSolve& d = klu_->two_domains;
+  d = {};
   klu_->symbolic = klu_analyze(factored_size(), column_start_.data(), row_index_.data(), &klu_->common);
   if (klu_->symbolic == nullptr) throw std::runtime_error("KLU could not analyse the matrix pattern");
+  if (ordering_ == KluOrdering::two_domains) {  // the solve's work space, once per pattern
+    d.x.resize(static_cast<std::size_t>(factored_size()));
+    d.second_to_separator.resize(static_cast<std::size_t>(factored_size() - d.first - d.second));
+  }
 }
 
 FactorizationStatus KluLinearSystem::factorize_pattern() {
