@@ -14,7 +14,7 @@ namespace {
 
 TEST(TwoCoreResidual, RunsOnOneCoreHoldsWhileItLives) {
   const int threads = run_threads();
-  if (threads < 2) GTEST_SKIP() << "built without OpenMP or on one core: nothing to limit";
+  if (threads < 2) GTEST_SKIP() << "one core: nothing to limit";
   {
     const RunsOnOneCore inactive(false);
     EXPECT_EQ(run_threads(), threads);
@@ -27,7 +27,7 @@ TEST(TwoCoreResidual, RunsOnOneCoreHoldsWhileItLives) {
 }
 
 TEST(TwoCoreResidual, ARunOnTwoCoresEndsBitForBitWhereItEndsOnOne) {
-  if (run_threads() < 2) GTEST_SKIP() << "built without OpenMP or on one core";
+  if (run_threads() < 2) GTEST_SKIP() << "one core";
   RoofOptions options;
   options.n_units = 100;  // with 10 trusses 6060 coordinates: above the two-core threshold
   options.n_trusses = 10;
