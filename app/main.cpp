@@ -155,7 +155,16 @@ int run_command(const std::string& model_file, const std::string& out_dir, bool 
   return kExitSolverFailure;
 }
 
-int check_command(const std::string& model_file, const std::vector<std::string>& sets) {
+// A list of names for check's one screen: every name with `all`, else the first few and how many
+// more there are.
+std::string listed(const std::vector<std::string>& names, bool all) {
+  constexpr std::size_t kShown = 8;
+  if (all || names.size() <= kShown + 1) return fmt::format("{}", fmt::join(names, ", "));
+  return fmt::format("{}, … and {} more (--all lists them)",
+                     fmt::join(names.begin(), names.begin() + kShown, ", "), names.size() - kShown);
+}
+
+int check_command(const std::string& model_file, const std::vector<std::string>& sets, bool list_all) {
   const Model model = load_model(model_file, parse_overrides(sets));
   const Assembler assembler(model);
   int support_rows = 0;
@@ -178,10 +187,10 @@ int check_command(const std::string& model_file, const std::vector<std::string>&
   double mass = 0.0;
   for (const ElementRef& e : all_elements(model)) mass += e.kind->mass_kg(model, e.index);
   for (const Node& n : model.nodes) mass += n.point_mass_kg;
-  auto names = [](const auto& items) {
+  auto names = [&](const auto& items) {
     std::vector<std::string> out;
     for (const auto& item : items) out.push_back(item.name);
-    return fmt::format("{}", fmt::join(out, ", "));
+    return listed(out, list_all);
   };
   // Per element type present: "3 bars: 1, 2, 3", the rigid-body conditions "3 bars", its plural.
   std::vector<std::string> element_lists, rigid_conditions, kinds_present;
@@ -192,7 +201,7 @@ int check_command(const std::string& model_file, const std::vector<std::string>&
     const std::string plural = std::string(kinds[g]->name()) + "s";
     std::vector<std::string> element_names;
     for (int e = 0; e < n; ++e) element_names.push_back(kinds[g]->element_name(model, e));
-    element_lists.push_back(fmt::format("{} {}: {}", n, plural, fmt::join(element_names, ", ")));
+    element_lists.push_back(fmt::format("{} {}: {}", n, plural, listed(element_names, list_all)));
     const int conditions = assembler.element_groups()[g]->n_rigid_body_conditions();
     if (conditions == 0) continue;  // hinges: no body of their own
     rigid_conditions.push_back(conditions == n ? fmt::format("{} {}", n, plural)
@@ -204,7 +213,7 @@ int check_command(const std::string& model_file, const std::vector<std::string>&
   const auto driver_list = [&] {
     std::vector<std::string> out;
     for (const Driver& d : model.drivers) out.push_back(fmt::format("{} ({})", d.name, kDriverKinds.name(d.kind)));
-    return fmt::format("{}", fmt::join(out, ", "));
+    return listed(out, list_all);
   };
   const AnalysisOptions& a = model.analysis;
 
@@ -318,6 +327,8 @@ int main(int argc, char** argv) {
   CLI::App* check = app.add_subcommand("check", "Validate a model and print a one-screen summary");
   check->add_option("model", model_file, "Model file (YAML or JSON)")->required();
   check->add_option("--set,-s", sets, "Override a value of the model: PATH=VALUE (VALUE may be a YAML flow [list] or {mapping})");
+  bool list_all = false;
+  check->add_flag("--all", list_all, "List every node, element, joint and driver name (else the first few of each)");
 
   cli::GenerateArguments generate_arguments;
   CLI::App* generate = cli::add_generate_command(app, generate_arguments);
@@ -357,7 +368,7 @@ int main(int argc, char** argv) {
       stop_on_signals();
       return cli::study_command(study_arguments, g_stop);
     }
-    return check_command(model_file, sets);
+    return check_command(model_file, sets, list_all);
   } catch (const InputError& e) {
     print_error(e.what());
     return kExitBadInput;

@@ -84,6 +84,26 @@ TEST_F(Cli, CheckPrintsTheSummary) {
   EXPECT_NE(dense.output.find("dense LU for 13 unknowns\n"), std::string::npos) << dense.output;
 }
 
+// check prints one screen for any size: the first names of each list and a count; --all every name.
+TEST_F(Cli, CheckPrintsOneScreenForAnySize) {
+  fs::create_directories(folder_);
+  const std::string roof = (folder_ / "roof.yaml").string();
+  ASSERT_EQ(run_cli("generate roof --units 2000 --out " + roof).exit_code, 0);
+  const auto o = run_cli("check " + roof);
+  ASSERT_EQ(o.exit_code, 0) << o.output;
+  std::istringstream lines(o.output);
+  int n_lines = 0;
+  for (std::string line; std::getline(lines, line); ++n_lines) EXPECT_LE(line.size(), 400U) << line;
+  EXPECT_LE(n_lines, 24);
+  EXPECT_NE(o.output.find("nodes       4002: b0, t0, b1, t1, b2, t2, b3, t3, … and 3994 more (--all lists them)"),
+            std::string::npos) << o.output.substr(0, 2000);
+  EXPECT_EQ(o.output.find("t1999"), std::string::npos);
+  const auto all = run_cli("check " + roof + " --all");
+  ASSERT_EQ(all.exit_code, 0);
+  EXPECT_NE(all.output.find(", t1999"), std::string::npos) << "--all lists every node";
+  EXPECT_NE(all.output.find(", post2000"), std::string::npos) << "--all lists every element";
+}
+
 // Drivers are listed with their types; the petal's two hinge_angle drivers make it determinate.
 TEST_F(Cli, CheckListsDriverTypes) {
   const auto o = run_cli("check " + std::string(DEPLOYDYN_SOURCE_DIR) + "/examples/petal/petal.yaml");
