@@ -3,14 +3,12 @@
 // a file-size limit, names that would corrupt the results, inputs that are not model files.
 // Every result folder must tell the truth: rows whole, status what happened.
 
-#include <fcntl.h>
 #include <gtest/gtest.h>
-#include <spawn.h>
-#include <sys/file.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
 #include <chrono>
+#include <cstdlib>
 #include <csignal>
 #include <fstream>
 #include <nlohmann/json.hpp>
@@ -22,44 +20,15 @@
 
 #include "support/cli.hpp"
 
-extern char** environ;
-
 namespace deploydyn {
 namespace {
 
 using testing::example_path;
+using testing::folder_status;
 using testing::read_text;
+using testing::start_cli;
 using testing::run_cli;
 using testing::ScratchFolder;
-
-// `deploydyn` with `arguments`, started in the background, its output discarded.
-pid_t start_cli(const std::vector<std::string>& arguments) {
-  std::vector<std::string> words{DEPLOYDYN_CLI};
-  words.insert(words.end(), arguments.begin(), arguments.end());
-  std::vector<char*> argv;
-  for (std::string& word : words) argv.push_back(word.data());
-  argv.push_back(nullptr);
-  posix_spawn_file_actions_t actions;
-  posix_spawn_file_actions_init(&actions);
-  posix_spawn_file_actions_addopen(&actions, STDOUT_FILENO, "/dev/null", O_WRONLY, 0);
-  posix_spawn_file_actions_addopen(&actions, STDERR_FILENO, "/dev/null", O_WRONLY, 0);
-  pid_t pid = -1;
-  EXPECT_EQ(posix_spawn(&pid, DEPLOYDYN_CLI, &actions, nullptr, argv.data(), environ), 0);
-  posix_spawn_file_actions_destroy(&actions);
-  return pid;
-}
-
-// What a reader of the folder should conclude: the status in summary.json, or "killed" when it
-// says "running" and no process holds the folder's lock.
-std::string folder_status(const std::filesystem::path& folder) {
-  const nlohmann::json summary = nlohmann::json::parse(read_text(folder / "summary.json"));
-  const std::string status = summary["status"];
-  if (status != "running") return status;
-  const int fd = open((folder / ".deploydyn.lock").c_str(), O_RDWR);
-  const bool owned = fd >= 0 && flock(fd, LOCK_EX | LOCK_NB) != 0;
-  if (fd >= 0) close(fd);  // drops a lock this probe took
-  return owned ? "running" : "killed";
-}
 
 struct History {
   std::size_t n_rows = 0;
