@@ -144,6 +144,28 @@ TEST(CliFaults, ASecondRunIntoABusyFolderIsRefusedAndTheFirstIsUnharmed) {
   EXPECT_EQ(history.n_rows, 10001u);  // 1000 s every 0.1 s, and t = 0
 }
 
+// `window` takes its folder as a run does: a second window into it while the first computes
+// is refused, and the first one's results stand.
+TEST(CliFaults, ASecondWindowIntoABusyFolderIsRefused) {
+  const ScratchFolder folder("busy_window");
+  const pid_t first = start_cli({"window", example_path("parallel.yaml"), "--positions", "10000", "--out",
+                                 folder.path().string()});
+  for (int i = 0; i < 1000 && !std::filesystem::exists(folder.path() / "window.json"); ++i) {
+    std::this_thread::sleep_for(std::chrono::milliseconds(5));
+  }
+  const auto second = run_cli("window " + example_path("parallel.yaml") + " --dT -120:50 --positions 3 --out " +
+                              folder.path().string());
+  kill(first, SIGINT);
+  int wait_status = 0;
+  waitpid(first, &wait_status, 0);
+  EXPECT_EQ(second.exit_code, 3) << second.output;
+  EXPECT_NE(second.output.find("in use by another deploydyn run (pid " + std::to_string(first)), std::string::npos)
+      << second.output;
+  EXPECT_EQ(folder_status(folder.path(), "window.json"), "interrupted");
+  const nlohmann::json window = nlohmann::json::parse(read_text(folder.path() / "window.json"));
+  EXPECT_EQ(window["range"], nlohmann::json::array({-200.0, 200.0})) << "the second window's results";
+}
+
 TEST(CliFaults, AFullDiskEndsTheRunWithExitCodeThreeAndTheReason) {
   const ScratchFolder folder("fsize");
   // prlimit sets the limit for the command alone; deploydyn ignores SIGXFSZ itself.
