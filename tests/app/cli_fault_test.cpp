@@ -166,6 +166,29 @@ TEST(CliFaults, ASecondWindowIntoABusyFolderIsRefused) {
   EXPECT_EQ(window["range"], nlohmann::json::array({-200.0, 200.0})) << "the second window's results";
 }
 
+// Every file a summary lists is there, whatever stopped the run.
+void expect_listed_files_exist(const std::filesystem::path& folder) {
+  const nlohmann::json summary = nlohmann::json::parse(read_text(folder / "summary.json"));
+  for (const auto& [role, file] : summary["files"].items()) {
+    EXPECT_TRUE(std::filesystem::exists(folder / file.get<std::string>())) << role << ": " << file;
+  }
+}
+
+// A file-size limit below the running status's reserved 4 kB: no file of the run fits, but a
+// short final status does, and it says why.
+TEST(CliFaults, UnderATinyFileSizeLimitTheSummaryStillSaysFailed) {
+  const ScratchFolder folder("fsize_tiny");
+  const auto outcome = testing::run_cli_with_prefix(
+      "prlimit --fsize=1024", "run " + example_path("parallel.yaml") + " --out " + folder.path().string());
+  EXPECT_EQ(outcome.exit_code, 3) << outcome.output;
+  EXPECT_NE(outcome.output.find("File too large"), std::string::npos) << outcome.output;
+  ASSERT_TRUE(std::filesystem::exists(folder.path() / "summary.json")) << outcome.output;
+  const nlohmann::json summary = nlohmann::json::parse(read_text(folder.path() / "summary.json"));
+  EXPECT_EQ(summary["status"], "failed");
+  EXPECT_NE(summary["message"].get<std::string>().find("File too large"), std::string::npos) << summary;
+  expect_listed_files_exist(folder.path());
+}
+
 TEST(CliFaults, AFullDiskEndsTheRunWithExitCodeThreeAndTheReason) {
   const ScratchFolder folder("fsize");
   // prlimit sets the limit for the command alone; deploydyn ignores SIGXFSZ itself.
@@ -175,6 +198,7 @@ TEST(CliFaults, AFullDiskEndsTheRunWithExitCodeThreeAndTheReason) {
   EXPECT_NE(outcome.output.find("history.csv: File too large"), std::string::npos) << outcome.output;
   EXPECT_EQ(folder_status(folder.path()), "failed");
   EXPECT_TRUE(read_history(folder.path() / "history.csv").row_complete);
+  expect_listed_files_exist(folder.path());
 }
 
 // With history.h5 too: HDF5 (1.10) once crashed at exit on a full disk and printed its error
