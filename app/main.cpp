@@ -53,8 +53,8 @@ void print_error(const std::string& text) noexcept {
   }
 }
 
-// Ctrl-C, `kill` and a closed terminal all end a run the same way: at the next step, with
-// what it has written and status "interrupted".
+// Ctrl-C, `kill` and a closed terminal all end a run (and modes, window, study) the same way:
+// at the next step, with what it has written and status "interrupted".
 void stop_on_signals() {
   struct sigaction action {};
   action.sa_handler = request_stop;
@@ -118,7 +118,6 @@ std::vector<std::string> earlier_results(const std::filesystem::path& folder, co
 // left of a long run, and the user named no folder to replace.
 int run_command(const std::string& model_file, const std::string& out_dir, bool out_given, bool force,
                 const std::vector<std::string>& sets, bool quiet) {
-  stop_on_signals();
   const Model model = load_model(model_file, parse_overrides(sets));
   if (!out_given && !force) {
     if (const auto found = earlier_results(out_dir, model); !found.empty()) {
@@ -356,18 +355,14 @@ int main(int argc, char** argv) {
   }
 
   try {
+    // Every command that computes for long stops on a signal the same way: at its next step.
+    if (*run || *modes || *window || *study) stop_on_signals();
     if (*run) return run_command(model_file, out_dir, run->count("--out") > 0, force, sets, quiet);
     if (*generate) return cli::generate_command(generate_arguments);
-    if (*modes) return cli::modes_command(modes_arguments);
+    if (*modes) return cli::modes_command(modes_arguments, g_stop);
     if (*report) return cli::report_command(report_arguments);
-    if (*window) {
-      stop_on_signals();
-      return cli::window_command(window_arguments, g_stop);
-    }
-    if (*study) {
-      stop_on_signals();
-      return cli::study_command(study_arguments, g_stop);
-    }
+    if (*window) return cli::window_command(window_arguments, g_stop);
+    if (*study) return cli::study_command(study_arguments, g_stop);
     return check_command(model_file, sets, list_all);
   } catch (const InputError& e) {
     print_error(e.what());

@@ -29,7 +29,7 @@ CLI::App* add_modes_command(CLI::App& app, ModesArguments& arguments) {
   return modes;
 }
 
-int modes_command(const ModesArguments& arguments) {
+int modes_command(const ModesArguments& arguments, const std::atomic<bool>& stop) {
   Model model = load_model(arguments.model_file, parse_overrides(arguments.sets));
   ModalSettings& modal = model.analysis.modal;
   if (model.analysis.type != AnalysisType::modal) {
@@ -64,10 +64,15 @@ int modes_command(const ModesArguments& arguments) {
                  at.modes.omega2_rad2_s2[k] < 0.0 ? "  unstable (ω² < 0)" : "");
     }
   };
+  RunControl control;
+  control.stop = &stop;
   const RunReport report = arguments.out_dir.empty()
-                               ? compute_modes(assembler, {}, print).report
-                               : run_modes_to_folder(model, arguments.out_dir, {}, print);
-  return report.status == RunStatus::completed ? kExitSuccess : kExitSolverFailure;
+                               ? compute_modes(assembler, control, print).report
+                               : run_modes_to_folder(model, arguments.out_dir, control, print);
+  if (report.status == RunStatus::completed) return kExitSuccess;
+  // A failed time already said why; an interruption says how far it got.
+  if (report.status == RunStatus::interrupted) fmt::print(stderr, "{}: {}\n", arguments.model_file, report.message);
+  return kExitSolverFailure;
 }
 
 }  // namespace deploydyn::cli

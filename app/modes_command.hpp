@@ -7,6 +7,7 @@
 // result folder of such a model (modes.csv, vtk/, summary.json, model.yaml).
 
 #include <CLI/CLI.hpp>
+#include <atomic>
 #include <string>
 #include <vector>
 
@@ -23,8 +24,9 @@ struct ModesArguments {
 // Adds `modes` to `app`; parsed values land in `arguments`.
 CLI::App* add_modes_command(CLI::App& app, ModesArguments& arguments);
 
-// Exit code: 0 all computed, 1 an equilibrium or eigensolve failed (or interrupted). Throws
-// InputError on bad input, OutputError when --out cannot be written.
-int modes_command(const ModesArguments& arguments);
+// Exit code: 0 all computed, 1 an equilibrium or eigensolve failed, or `stop` was set (then it
+// ends at the next load step or time, status "interrupted"). Throws InputError on bad input,
+// OutputError when --out cannot be written.
+int modes_command(const ModesArguments& arguments, const std::atomic<bool>& stop);
 
 }  // namespace deploydyn::cli

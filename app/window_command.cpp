@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <charconv>
 #include <cmath>
+#include <optional>
 #include <stdexcept>
 
 #include "deploydyn/io/input_error.hpp"
@@ -85,6 +86,10 @@ int window_command(const WindowArguments& arguments, const std::atomic<bool>& st
   options.n_positions = arguments.n_positions;
   options.n_deployments = arguments.n_deployments;
   options.stop = &stop;
+  validate(options);
+  // The folder is taken before the long computation: a second window into it is refused now.
+  std::optional<WindowFolder> folder;
+  if (!arguments.out_dir.empty()) folder.emplace(arguments.out_dir, WindowOrigin{arguments.model_file, arguments.sets, options});
   const WindowResult window = deployability_window(model, options);
   fmt::print("{}: deployability window, uniform ΔT {:+g} … {:+g} °C, {} driver positions over {:g} s\n",
              arguments.model_file, lo, hi, window.times_s.size(), model.analysis.end_time_s);
@@ -103,7 +108,7 @@ int window_command(const WindowArguments& arguments, const std::atomic<bool>& st
   for (const WindowDeployment& d : window.deployments) {
     if (!d.failure.empty()) fmt::print(stderr, "warning: ΔT = {:+g} °C: {}\n", d.delta_t_C, d.failure);
   }
-  if (!arguments.out_dir.empty()) write_window(arguments.out_dir, window, kRegimeStep_C);
+  if (folder) folder->write(window, kRegimeStep_C);
   const bool complete = !window.stopped && window.cold.failures.empty() && window.hot.failures.empty() &&
                         std::all_of(window.deployments.begin(), window.deployments.end(),
                                     [](const WindowDeployment& d) { return d.failure.empty(); });

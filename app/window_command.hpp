@@ -2,7 +2,7 @@
 // `deploydyn window MODEL [--dT LO:HI] [--positions N] [--set PATH=VALUE ...] [--out DIR]`:
 // the deployability window (solvers/deployability_window.hpp): per side of the ΔT range, the
 // threshold beyond which the deployment jams or snaps and where; the regime at every 10 °C;
-// with --out, window.csv and window.json (output/window_writer.hpp), which
+// with --out, window.csv and window.json in a folder it owns (output/window_writer.hpp), which
 // scripts/deploydyn_window.py draws.
 
 #include <CLI/CLI.hpp>
@@ -24,7 +24,8 @@ struct WindowArguments {
 CLI::App* add_window_command(CLI::App& app, WindowArguments& arguments);
 
 // Exit code 0; 1 when a path could not be traced at some driver position or it was
-// interrupted. Throws InputError on bad input, OutputError when --out cannot be written.
+// interrupted. Throws InputError on bad input, OutputError when --out cannot be written or
+// another run or window owns it (checked before the window is computed).
 int window_command(const WindowArguments& arguments, const std::atomic<bool>& stop);
 
 }  // namespace deploydyn::cli

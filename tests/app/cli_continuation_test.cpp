@@ -98,4 +98,23 @@ TEST(CliContinuation, RunWritesThePathOfTheSnapThrough) {
   EXPECT_TRUE(std::filesystem::exists(out / "model.yaml"));
 }
 
+// A folder where model.yaml cannot be written (a folder of that name stands there): the path
+// never starts, and summary.json says why rather than "failed" with no reason.
+TEST(CliContinuation, AModelFileThatCannotBeWrittenIsTheNamedFailure) {
+  const ScratchFolder folder("cli_continuation_no_model");
+  const auto out = folder.path() / "out";
+  std::filesystem::create_directories(out / "model.yaml");
+  const auto model_file = folder.path() / "mises.yaml";
+  std::ofstream(model_file) << kMisesTruss;
+  const auto outcome = run_cli("run " + model_file.string() + " --quiet --out " + out.string());
+  EXPECT_EQ(outcome.exit_code, 3) << outcome.output;
+  EXPECT_NE(outcome.output.find("model.yaml: Is a directory"), std::string::npos) << outcome.output;
+  const auto summary = nlohmann::json::parse(read_text(out / "summary.json"));
+  EXPECT_EQ(summary["status"], "failed");
+  EXPECT_NE(summary["message"].get<std::string>().find("model.yaml: Is a directory"), std::string::npos)
+      << summary["message"];
+  EXPECT_EQ(summary["failure"]["phase"], "writing results");
+  EXPECT_NE(summary["failure"]["reason"].get<std::string>().find("Is a directory"), std::string::npos);
+}
+
 }  // namespace

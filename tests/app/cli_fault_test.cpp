@@ -3,14 +3,12 @@
 // a file-size limit, names that would corrupt the results, inputs that are not model files.
 // Every result folder must tell the truth: rows whole, status what happened.
 
-#include <fcntl.h>
 #include <gtest/gtest.h>
-#include <spawn.h>
-#include <sys/file.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
 #include <chrono>
+#include <cstdlib>
 #include <csignal>
 #include <fstream>
 #include <nlohmann/json.hpp>
@@ -22,44 +20,15 @@
 
 #include "support/cli.hpp"
 
-extern char** environ;
-
 namespace deploydyn {
 namespace {
 
 using testing::example_path;
+using testing::folder_status;
 using testing::read_text;
+using testing::start_cli;
 using testing::run_cli;
 using testing::ScratchFolder;
-
-// `deploydyn` with `arguments`, started in the background, its output discarded.
-pid_t start_cli(const std::vector<std::string>& arguments) {
-  std::vector<std::string> words{DEPLOYDYN_CLI};
-  words.insert(words.end(), arguments.begin(), arguments.end());
-  std::vector<char*> argv;
-  for (std::string& word : words) argv.push_back(word.data());
-  argv.push_back(nullptr);
-  posix_spawn_file_actions_t actions;
-  posix_spawn_file_actions_init(&actions);
-  posix_spawn_file_actions_addopen(&actions, STDOUT_FILENO, "/dev/null", O_WRONLY, 0);
-  posix_spawn_file_actions_addopen(&actions, STDERR_FILENO, "/dev/null", O_WRONLY, 0);
-  pid_t pid = -1;
-  EXPECT_EQ(posix_spawn(&pid, DEPLOYDYN_CLI, &actions, nullptr, argv.data(), environ), 0);
-  posix_spawn_file_actions_destroy(&actions);
-  return pid;
-}
-
-// What a reader of the folder should conclude: the status in summary.json, or "killed" when it
-// says "running" and no process holds the folder's lock.
-std::string folder_status(const std::filesystem::path& folder) {
-  const nlohmann::json summary = nlohmann::json::parse(read_text(folder / "summary.json"));
-  const std::string status = summary["status"];
-  if (status != "running") return status;
-  const int fd = open((folder / ".deploydyn.lock").c_str(), O_RDWR);
-  const bool owned = fd >= 0 && flock(fd, LOCK_EX | LOCK_NB) != 0;
-  if (fd >= 0) close(fd);  // drops a lock this probe took
-  return owned ? "running" : "killed";
-}
 
 struct History {
   std::size_t n_rows = 0;
@@ -175,6 +144,51 @@ TEST(CliFaults, ASecondRunIntoABusyFolderIsRefusedAndTheFirstIsUnharmed) {
   EXPECT_EQ(history.n_rows, 10001u);  // 1000 s every 0.1 s, and t = 0
 }
 
+// `window` takes its folder as a run does: a second window into it while the first computes
+// is refused, and the first one's results stand.
+TEST(CliFaults, ASecondWindowIntoABusyFolderIsRefused) {
+  const ScratchFolder folder("busy_window");
+  const pid_t first = start_cli({"window", example_path("parallel.yaml"), "--positions", "10000", "--out",
+                                 folder.path().string()});
+  for (int i = 0; i < 1000 && !std::filesystem::exists(folder.path() / "window.json"); ++i) {
+    std::this_thread::sleep_for(std::chrono::milliseconds(5));
+  }
+  const auto second = run_cli("window " + example_path("parallel.yaml") + " --dT -120:50 --positions 3 --out " +
+                              folder.path().string());
+  kill(first, SIGINT);
+  int wait_status = 0;
+  waitpid(first, &wait_status, 0);
+  EXPECT_EQ(second.exit_code, 3) << second.output;
+  EXPECT_NE(second.output.find("in use by another deploydyn run (pid " + std::to_string(first)), std::string::npos)
+      << second.output;
+  EXPECT_EQ(folder_status(folder.path(), "window.json"), "interrupted");
+  const nlohmann::json window = nlohmann::json::parse(read_text(folder.path() / "window.json"));
+  EXPECT_EQ(window["range"], nlohmann::json::array({-200.0, 200.0})) << "the second window's results";
+}
+
+// Every file a summary lists is there, whatever stopped the run.
+void expect_listed_files_exist(const std::filesystem::path& folder) {
+  const nlohmann::json summary = nlohmann::json::parse(read_text(folder / "summary.json"));
+  for (const auto& [role, file] : summary["files"].items()) {
+    EXPECT_TRUE(std::filesystem::exists(folder / file.get<std::string>())) << role << ": " << file;
+  }
+}
+
+// A file-size limit below the running status's reserved 4 kB: no file of the run fits, but a
+// short final status does, and it says why.
+TEST(CliFaults, UnderATinyFileSizeLimitTheSummaryStillSaysFailed) {
+  const ScratchFolder folder("fsize_tiny");
+  const auto outcome = testing::run_cli_with_prefix(
+      "prlimit --fsize=1024", "run " + example_path("parallel.yaml") + " --out " + folder.path().string());
+  EXPECT_EQ(outcome.exit_code, 3) << outcome.output;
+  EXPECT_NE(outcome.output.find("File too large"), std::string::npos) << outcome.output;
+  ASSERT_TRUE(std::filesystem::exists(folder.path() / "summary.json")) << outcome.output;
+  const nlohmann::json summary = nlohmann::json::parse(read_text(folder.path() / "summary.json"));
+  EXPECT_EQ(summary["status"], "failed");
+  EXPECT_NE(summary["message"].get<std::string>().find("File too large"), std::string::npos) << summary;
+  expect_listed_files_exist(folder.path());
+}
+
 TEST(CliFaults, AFullDiskEndsTheRunWithExitCodeThreeAndTheReason) {
   const ScratchFolder folder("fsize");
   // prlimit sets the limit for the command alone; deploydyn ignores SIGXFSZ itself.
@@ -184,6 +198,7 @@ TEST(CliFaults, AFullDiskEndsTheRunWithExitCodeThreeAndTheReason) {
   EXPECT_NE(outcome.output.find("history.csv: File too large"), std::string::npos) << outcome.output;
   EXPECT_EQ(folder_status(folder.path()), "failed");
   EXPECT_TRUE(read_history(folder.path() / "history.csv").row_complete);
+  expect_listed_files_exist(folder.path());
 }
 
 // With history.h5 too: HDF5 (1.10) once crashed at exit on a full disk and printed its error
@@ -199,6 +214,27 @@ TEST(CliFaults, AFullDiskWithHdf5OutputEndsTheRunCleanly) {
   EXPECT_TRUE(names_a_file) << outcome.output;
   EXPECT_EQ(outcome.output.find("HDF5-DIAG"), std::string::npos) << outcome.output;
   EXPECT_EQ(folder_status(folder.path()), "failed");
+}
+
+// HDF5 once left history.h5 unreadable after a failed write ("addr overflow" in h5py) while the
+// summary listed it, and named no reason. At both limits (history.csv fails first, history.h5
+// fails first) the message now gives the system's reason, and a listed history.h5 opens.
+TEST(CliFaults, AFullDiskLeavesNoUnreadableHistoryH5Listed) {
+  for (const std::string limit : {"100000", "1000000"}) {
+    SCOPED_TRACE("limit " + limit);
+    const ScratchFolder folder("fsize_hdf5_readable");
+    const auto outcome = testing::run_cli_with_prefix(
+        "prlimit --fsize=" + limit,
+        "run " + example_path("parallel.yaml") + " --set output.hdf5=true --out " + folder.path().string());
+    EXPECT_EQ(outcome.exit_code, 3) << outcome.output;
+    EXPECT_NE(outcome.output.find("File too large"), std::string::npos) << outcome.output;
+    expect_listed_files_exist(folder.path());
+    const nlohmann::json summary = nlohmann::json::parse(read_text(folder.path() / "summary.json"));
+    if (!summary["files"].contains("hdf5")) continue;
+    const std::string read = "/usr/bin/python3 -c \"import h5py, sys; f = h5py.File(sys.argv[1], 'r'); "
+                             "f['time'][:]; f['history'][:]\" '" + (folder.path() / "history.h5").string() + "'";
+    EXPECT_EQ(std::system(read.c_str()), 0) << "h5py cannot read the history.h5 that summary.json lists";
+  }
 }
 
 TEST(CliFaults, OutputNamesThatWouldOverwriteEachOtherAreRejected) {

@@ -106,11 +106,17 @@ TEST(DeployabilityWindow, RangesWithoutZeroAreRejected) {
 
 TEST(WindowCommand, WritesTheThresholdsAndSamples) {
   const ScratchFolder folder("window_command");
-  const auto outcome = run_cli("window " + example_path("parallel.yaml") + " --dT -120:50 --positions 3 --out " +
-                               folder.path().string());
+  const auto outcome = run_cli("window " + example_path("parallel.yaml") + " --dT -120:50 --positions 3 " +
+                               "--set thermal.dT=0 --out " + folder.path().string());
   ASSERT_EQ(outcome.exit_code, 0) << outcome.output;
   EXPECT_NE(outcome.output.find("cold: jams beyond ΔT = -84.843"), std::string::npos) << outcome.output;
   const nlohmann::json window = nlohmann::json::parse(read_text(folder.path() / "window.json"));
+  // How it was made: a later window into another folder must not be mistaken for this one.
+  EXPECT_EQ(window["status"], "completed");
+  EXPECT_EQ(window["model"], example_path("parallel.yaml"));
+  EXPECT_EQ(window["set"], nlohmann::json::array({"thermal.dT=0"}));
+  EXPECT_EQ(window["range"], nlohmann::json::array({-120.0, 50.0}));
+  EXPECT_EQ(window["positions_asked"], 3);
   EXPECT_NEAR(window["cold"]["threshold"]["dT"].get<double>(), kColdJamAtStart_C, 1e-3);
   EXPECT_TRUE(window["hot"]["threshold"].is_null());
   EXPECT_EQ(window["regimes"].front()["regime"], "jams");

@@ -1,13 +1,23 @@
 #pragma once
 // Runs the `deploydyn` command as a user would, for the command-line tests.
 
+#include <fcntl.h>
+#include <spawn.h>
+#include <sys/file.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
 #include <array>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <nlohmann/json.hpp>
 #include <sstream>
+#include <stdexcept>
 #include <string>
-#include <sys/wait.h>
+#include <vector>
+
+extern char** environ;
 
 namespace deploydyn::testing {
 
@@ -57,5 +67,37 @@ class ScratchFolder {
  private:
   std::filesystem::path path_;
 };
+
+// `deploydyn` with `arguments`, started in the background, its output discarded.
+inline pid_t start_cli(const std::vector<std::string>& arguments) {
+  std::vector<std::string> words{DEPLOYDYN_CLI};
+  words.insert(words.end(), arguments.begin(), arguments.end());
+  std::vector<char*> argv;
+  for (std::string& word : words) argv.push_back(word.data());
+  argv.push_back(nullptr);
+  posix_spawn_file_actions_t actions;
+  posix_spawn_file_actions_init(&actions);
+  posix_spawn_file_actions_addopen(&actions, STDOUT_FILENO, "/dev/null", O_WRONLY, 0);
+  posix_spawn_file_actions_addopen(&actions, STDERR_FILENO, "/dev/null", O_WRONLY, 0);
+  pid_t pid = -1;
+  const int error = posix_spawn(&pid, DEPLOYDYN_CLI, &actions, nullptr, argv.data(), environ);
+  posix_spawn_file_actions_destroy(&actions);
+  // Never a pid of -1: kill(-1, ...) would signal every process of the user.
+  if (error != 0) throw std::runtime_error(std::string("cannot start ") + DEPLOYDYN_CLI);
+  return pid;
+}
+
+// What a reader of the folder should conclude: the status in `status_file` (summary.json,
+// window.json), or "killed" when it says "running" and no process holds the folder's lock.
+inline std::string folder_status(const std::filesystem::path& folder,
+                                 const std::string& status_file = "summary.json") {
+  const nlohmann::json summary = nlohmann::json::parse(read_text(folder / status_file));
+  const std::string status = summary["status"];
+  if (status != "running") return status;
+  const int fd = open((folder / ".deploydyn.lock").c_str(), O_RDWR);
+  const bool owned = fd >= 0 && flock(fd, LOCK_EX | LOCK_NB) != 0;
+  if (fd >= 0) close(fd);  // drops a lock this probe took
+  return owned ? "running" : "killed";
+}
 
 }  // namespace deploydyn::testing

@@ -141,6 +141,7 @@ RunReport run_path_to_folder(const Model& model, const std::filesystem::path& fo
   ResultFolder results(folder, model.output.summary_file);
   std::optional<OutputError> output_error;
   ContinuationResult result;
+  bool traced = false;  // else the path never started (a file could not be written) and says nothing
   try {
     start_run_folder(results, model,
                      {{"model", kRunModelFileName}, {"path", kPathFileName}, {"history", model.output.history_file}});
@@ -161,26 +162,29 @@ RunReport run_path_to_folder(const Model& model, const std::filesystem::path& fo
     const auto system = make_linear_system(assembler);
     result = trace_path(assembler, options, *system, assembler.initial_coordinates(),
                         Eigen::VectorXd::Zero(assembler.n_equations()));
+    traced = true;
   } catch (const OutputError& error) {
     output_error = error;
   }
 
   RunReport report;
-  report.status = result.end == ContinuationEnd::reached_end ? RunStatus::completed
-                  : result.end == ContinuationEnd::stopped   ? RunStatus::interrupted
-                                                             : RunStatus::failed;
-  report.message = result.message;
-  // The first events in words; all of them are in summary.json.
-  constexpr std::size_t kEventsInMessage = 3;
-  for (std::size_t i = 0; i < std::min(result.events.size(), kEventsInMessage); ++i) {
-    report.message += "; " + result.events[i].description;
-  }
-  if (result.events.size() > kEventsInMessage) {
-    report.message += fmt::format("; {} more events in summary.json", result.events.size() - kEventsInMessage);
-  }
-  if (report.status == RunStatus::failed) {
-    report.failure.phase = "continuation";
-    report.failure.reason = result.message;
+  if (traced) {
+    report.status = result.end == ContinuationEnd::reached_end ? RunStatus::completed
+                    : result.end == ContinuationEnd::stopped   ? RunStatus::interrupted
+                                                               : RunStatus::failed;
+    report.message = result.message;
+    // The first events in words; all of them are in summary.json.
+    constexpr std::size_t kEventsInMessage = 3;
+    for (std::size_t i = 0; i < std::min(result.events.size(), kEventsInMessage); ++i) {
+      report.message += "; " + result.events[i].description;
+    }
+    if (result.events.size() > kEventsInMessage) {
+      report.message += fmt::format("; {} more events in summary.json", result.events.size() - kEventsInMessage);
+    }
+    if (report.status == RunStatus::failed) {
+      report.failure.phase = "continuation";
+      report.failure.reason = result.message;
+    }
   }
   if (output_error) record_output_failure(report, *output_error);
   report.steps = static_cast<int>(result.points.size());

@@ -7,6 +7,7 @@
 
 #include <cerrno>
 #include <chrono>
+#include <cstring>
 #include <ctime>
 #include <fstream>
 #include <nlohmann/json.hpp>
@@ -64,6 +65,21 @@ std::string utc_now() {
 std::string host_name() {
   char name[256] = {};
   return ::gethostname(name, sizeof name - 1) == 0 ? name : "";
+}
+
+// `status` with its "files" cut to those in `folder`: a run that stopped early never wrote
+// some (envelopes.csv after a failed write), and the status must not claim them. `indent` as
+// nlohmann::json::dump. Text that is not a JSON object is kept as it is.
+std::string with_existing_files(const std::filesystem::path& folder, std::string_view status, int indent) {
+  nlohmann::ordered_json j = nlohmann::ordered_json::parse(status, nullptr, /*allow_exceptions=*/false);
+  if (!j.is_object() || !j.contains("files") || !j["files"].is_object()) return std::string(status);
+  nlohmann::ordered_json existing = nlohmann::ordered_json::object();
+  for (const auto& [role, file] : j["files"].items()) {
+    std::error_code error;
+    if (file.is_string() && std::filesystem::exists(folder / file.get<std::string>(), error)) existing[role] = file;
+  }
+  j["files"] = existing;
+  return j.dump(indent, ' ', false, nlohmann::ordered_json::error_handler_t::replace);
 }
 
 }  // namespace
@@ -131,19 +147,35 @@ void ResultFolder::start(const std::string& name_key, const std::string& name, c
 
 void ResultFolder::finish(std::string_view final_status, std::string_view short_status) {
   try {
-    write_file_atomically(status_file(), std::string(final_status) + '\n');
+    write_file_atomically(status_file(), with_existing_files(folder_, final_status, 2) + '\n');
+    return;
+  } catch (const OutputError& error) {
+    if (write_short_status(with_existing_files(folder_, short_status, -1))) throw;
+    throw OutputError("cannot write", status_file(), 0,
+                      std::string(std::strerror(error.error_number())) +
+                          ", not even a short status: the folder has no final status (a running one is stale)");
+  }
+}
+
+bool ResultFolder::write_short_status(const std::string& text) {
+  // Overwriting bytes the file already has needs no new space (a full disk).
+  const int fd = ::open(status_file().c_str(), O_WRONLY | O_CLOEXEC);
+  struct stat info {};
+  bool written = false;
+  if (fd >= 0 && ::fstat(fd, &info) == 0 && text.size() < static_cast<std::size_t>(info.st_size)) {
+    std::string padded = text;
+    padded.resize(static_cast<std::size_t>(info.st_size) - 1, ' ');
+    padded += '\n';
+    written = ::pwrite(fd, padded.data(), padded.size(), 0) == static_cast<ssize_t>(padded.size());
+  }
+  if (fd >= 0) ::close(fd);
+  if (written) return true;
+  try {
+    // No running status to overwrite (it did not fit a file-size limit): a small new file may.
+    write_file_atomically(status_file(), text + '\n');
+    return true;
   } catch (const OutputError&) {
-    // Overwriting bytes the file already has needs no new space.
-    const int fd = ::open(status_file().c_str(), O_WRONLY | O_CLOEXEC);
-    struct stat info {};
-    if (fd >= 0 && ::fstat(fd, &info) == 0 && short_status.size() < static_cast<std::size_t>(info.st_size)) {
-      std::string text(short_status);
-      text.resize(static_cast<std::size_t>(info.st_size) - 1, ' ');
-      text += '\n';
-      [[maybe_unused]] const ssize_t ignored = ::pwrite(fd, text.data(), text.size(), 0);
-    }
-    if (fd >= 0) ::close(fd);
-    throw;
+    return false;
   }
 }
 

@@ -9,7 +9,8 @@
 //     says "running", then removes the previous run's outputs: at no moment does an old
 //     "completed" stand beside new, partial results;
 //   - finish() replaces it with the final status. When even that cannot be written (a full
-//     disk), a short status is written in place over room that start() reserved.
+//     disk), a short status is written in place over room that start() reserved, or else
+//     (no running status: it did not fit a file-size limit) as a new small file.
 
 #include <cstddef>
 #include <filesystem>
@@ -47,10 +48,14 @@ class ResultFolder {
   void start(const std::string& name_key, const std::string& name, const Files& files,
              const std::vector<std::string>& also_stale = {});
   // Replaces the status file by `final_status`. If that fails, writes `short_status` (a JSON
-  // object of at most kReservedStatusBytes) in place of the running status, and rethrows.
+  // object of at most kReservedStatusBytes) in place of the running status or else as a new
+  // small file, and rethrows; if even that fails, throws an OutputError that says the folder has
+  // no final status. Either status lists under "files" only the files that exist.
   void finish(std::string_view final_status, std::string_view short_status);
 
  private:
+  bool write_short_status(const std::string& text);  // false: not written
+
   std::filesystem::path folder_;
   std::string status_file_name_;
   int lock_fd_ = -1;

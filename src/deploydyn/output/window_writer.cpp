@@ -5,6 +5,7 @@
 #include <cmath>
 #include <nlohmann/json.hpp>
 #include <system_error>
+#include <utility>
 
 #include "deploydyn/output/checked_file.hpp"
 #include "deploydyn/output/output_error.hpp"
@@ -32,22 +33,33 @@ ordered_json side_json(const WindowSide& side) {
   return j;
 }
 
-}  // namespace
+// A file name or override need not be UTF-8: replace rather than throw.
+std::string text(const ordered_json& j) { return j.dump(2, ' ', false, ordered_json::error_handler_t::replace); }
 
-void write_window(const std::filesystem::path& folder, const WindowResult& window, double regime_step_C) {
-  std::error_code error;
-  std::filesystem::create_directories(folder, error);
-  if (error) throw OutputError("cannot create folder", folder, error.value());
+// How the window was made, the head of window.json.
+ordered_json origin_json(const WindowOrigin& origin, const char* status, const std::string& message) {
+  return {{"model", origin.model_file},
+          {"set", origin.overrides},
+          {"range", {origin.options.coldest_C, origin.options.hottest_C}},
+          {"positions_asked", origin.options.n_positions},
+          {"deployments_asked", origin.options.n_deployments},
+          {"status", status},
+          {"message", message}};
+}
+
+std::string samples_csv(const WindowResult& window) {
   std::string csv = "t,dT,lowest_eigenvalue,peak_axial_force,peak_mstrain,driver_effort\n";
   for (const WindowSample& s : window.samples) {
     csv += fmt::format("{},{},{},{},{},{}\n", s.time_s, s.delta_t_C, s.lowest_eigenvalue_N_m,
                        s.peak_axial_force_N, s.peak_mechanical_strain, s.driver_effort);
   }
-  write_file_atomically(folder / "window.csv", csv);
+  return csv;
+}
 
-  ordered_json j;
+std::string window_json(const WindowOrigin& origin, const WindowResult& window, double regime_step_C) {
+  ordered_json j = origin_json(origin, window.stopped ? "interrupted" : "completed",
+                               window.stopped ? "interrupted; the samples computed until then are kept" : "");
   j["units"] = {{"dT", "°C"}, {"t", "s"}, {"eigenvalue", "N/m"}, {"force", "N"}};
-  j["status"] = window.stopped ? "interrupted" : "completed";
   j["positions"] = window.times_s;
   j["cold"] = side_json(window.cold);
   j["hot"] = side_json(window.hot);
@@ -72,7 +84,27 @@ void write_window(const std::filesystem::path& folder, const WindowResult& windo
                            {"failure", d.failure}});
   }
   j["deployments"] = deployments;
-  write_file_atomically(folder / "window.json", j.dump(2, ' ', false, ordered_json::error_handler_t::replace) + "\n");
+  j["files"] = {{"samples", kWindowSamplesFileName}};
+  return text(j);
+}
+
+}  // namespace
+
+WindowFolder::WindowFolder(const std::filesystem::path& folder, WindowOrigin origin)
+    : folder_(folder, kWindowStatusFileName), origin_(std::move(origin)) {
+  folder_.start("model", origin_.model_file, {{"samples", kWindowSamplesFileName}});
+}
+
+void WindowFolder::write(const WindowResult& window, double regime_step_C) {
+  try {
+    write_file_atomically(folder_.path() / kWindowSamplesFileName, samples_csv(window));
+  } catch (const OutputError& error) {
+    const std::string failed = text(origin_json(origin_, "failed", error.what()));
+    folder_.finish(failed, failed);
+    throw;
+  }
+  const std::string json = window_json(origin_, window, regime_step_C);
+  folder_.finish(json, text(origin_json(origin_, "failed", "window.json could not be written in full")));
 }
 
 }  // namespace deploydyn

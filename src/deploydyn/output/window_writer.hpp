@@ -1,21 +1,51 @@
 #pragma once
-// The deployability window's files (solvers/deployability_window.hpp):
+// The deployability window's result folder (solvers/deployability_window.hpp), owned as a
+// run's is (output/result_folder.hpp): its lock for the whole computation, so that a second
+// window (or run) into it is refused; window.json saying "running" from the start; then
 //   window.csv   one row per sample: t (s), dT (°C), lowest_eigenvalue (N/m),
 //                peak_axial_force (N), peak_mstrain, driver_effort (N·m or N)
-//   window.json  per side (cold, hot): the range's end, the threshold (ΔT, its error bound,
-//                kind, driver time, description), the first event at each driver position,
-//                positions that failed; the regime at every `regime_step_C` of ΔT; and per
-//                deployed ΔT level its regime, where it stopped (jam or snap: kind, t),
-//                peak |axial force|, peak mechanical strain, peak driver effort and lowest
-//                stability eigenvalue.
+//   window.json  how it was made (the model file, its --set overrides, the ΔT range, the
+//                positions and deployments asked for), its status (completed, interrupted or
+//                failed, with a message); per side (cold, hot): the range's end, the threshold
+//                (ΔT, its error bound, kind, driver time, description), the first event at
+//                each driver position, positions that failed; the regime at every
+//                `regime_step_C` of ΔT; and per deployed ΔT level its regime, where it stopped
+//                (jam or snap: kind, t), peak |axial force|, peak mechanical strain, peak
+//                driver effort and lowest stability eigenvalue.
 // The deployments' path points are samples in window.csv too (rows at their ΔT level).
 
 #include <filesystem>
+#include <string>
+#include <vector>
 
+#include "deploydyn/output/result_folder.hpp"
 #include "deploydyn/solvers/deployability_window.hpp"
 
 namespace deploydyn {
 
-void write_window(const std::filesystem::path& folder, const WindowResult& window, double regime_step_C);
+inline constexpr const char* kWindowStatusFileName = "window.json";
+inline constexpr const char* kWindowSamplesFileName = "window.csv";
+
+// What window.json records of how the window was made.
+struct WindowOrigin {
+  std::string model_file;
+  std::vector<std::string> overrides;  // the --set PATH=VALUE arguments
+  WindowOptions options;
+};
+
+class WindowFolder {
+ public:
+  // Takes the folder (created if needed) and writes window.json saying "running". Throws
+  // OutputError when the folder is in use or cannot be written.
+  WindowFolder(const std::filesystem::path& folder, WindowOrigin origin);
+
+  // window.csv, then the final window.json. Throws OutputError when a file cannot be written
+  // (window.json then says "failed" and why, as far as it can be written).
+  void write(const WindowResult& window, double regime_step_C);
+
+ private:
+  ResultFolder folder_;
+  WindowOrigin origin_;
+};
 
 }  // namespace deploydyn

@@ -1,0 +1,99 @@
+// Every command that computes for long stops on SIGINT, SIGTERM and SIGHUP as `run` does:
+// within a fraction of a second, in whatever phase it is, exit code 1, its folder's status
+// "interrupted", every row it wrote whole.
+
+#include <gtest/gtest.h>
+#include <sys/wait.h>
+
+#include <chrono>
+#include <csignal>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include "support/cli.hpp"
+
+namespace deploydyn {
+namespace {
+
+using testing::example_path;
+using testing::folder_status;
+using testing::read_text;
+using testing::ScratchFolder;
+using testing::start_cli;
+
+// The longest a command may take from the signal to its exit: it stops at its next step,
+// writes what it has and its status.
+constexpr auto kStopWithin = std::chrono::milliseconds(800);
+
+struct LongCommand {
+  std::string what;                    // for the test's messages
+  std::vector<std::string> arguments;  // followed by the folder
+  std::string status_file;
+  std::string table;                   // a CSV that must stay row-complete
+};
+
+// Commands of several seconds (each alone, on an idle machine), by the phase they are in after
+// a few hundred milliseconds.
+std::vector<LongCommand> long_commands() {
+  const std::string parallel = example_path("parallel.yaml");
+  std::vector<std::string> modes{"modes", parallel, "--count", "2", "--at"};
+  for (int i = 0; i < 4000; ++i) modes.push_back(std::to_string(5.0 * i / 4000));
+  modes.push_back("--out");
+  return {
+      {"modes at 4000 times", modes, "summary.json", "modes.csv"},
+      {"window, at its driver positions",
+       {"window", parallel, "--positions", "10000", "--deployments", "1000", "--out"},
+       "window.json",
+       "window.csv"},
+      {"window, in its deployments",
+       {"window", parallel, "--dT", "-100:100", "--positions", "1", "--deployments", "1000", "--out"},
+       "window.json",
+       "window.csv"},
+  };
+}
+
+bool row_complete(const std::string& csv) {
+  if (csv.empty() || csv.back() != '\n') return false;
+  const std::size_t header_end = csv.find('\n');
+  const auto n_commas = std::count(csv.begin(), csv.begin() + static_cast<long>(header_end), ',');
+  std::size_t start = header_end + 1;
+  for (std::size_t end; (end = csv.find('\n', start)) != std::string::npos; start = end + 1) {
+    if (std::count(csv.begin() + static_cast<long>(start), csv.begin() + static_cast<long>(end), ',') != n_commas) {
+      return false;
+    }
+  }
+  return true;
+}
+
+TEST(CliSignals, ModesAndWindowStopOnEverySignalWithStatusInterrupted) {
+  for (const LongCommand& command : long_commands()) {
+    for (const int signal : {SIGINT, SIGTERM, SIGHUP}) {
+      SCOPED_TRACE(command.what + ", signal " + std::to_string(signal));
+      const ScratchFolder folder("signal");
+      std::vector<std::string> arguments = command.arguments;
+      arguments.push_back(folder.path().string());
+      const pid_t pid = start_cli(arguments);
+      // Signals are handled from before the folder is claimed: wait for its running status,
+      // then a little into the computation.
+      const auto status_file = folder.path() / command.status_file;
+      for (int i = 0; i < 1000 && !std::filesystem::exists(status_file); ++i) {
+        std::this_thread::sleep_for(std::chrono::milliseconds(5));
+      }
+      std::this_thread::sleep_for(std::chrono::milliseconds(300));
+      const auto sent = std::chrono::steady_clock::now();
+      kill(pid, signal);
+      int wait_status = 0;
+      waitpid(pid, &wait_status, 0);
+      const auto took = std::chrono::steady_clock::now() - sent;
+      ASSERT_TRUE(WIFEXITED(wait_status)) << "killed by signal " << WTERMSIG(wait_status);
+      EXPECT_EQ(WEXITSTATUS(wait_status), 1);
+      EXPECT_LT(took, kStopWithin) << std::chrono::duration<double>(took).count() << " s";
+      EXPECT_EQ(folder_status(folder.path(), command.status_file), "interrupted");
+      EXPECT_TRUE(row_complete(read_text(folder.path() / command.table)));
+    }
+  }
+}
+
+}  // namespace
+}  // namespace deploydyn
