@@ -4,6 +4,8 @@
 #include <fmt/format.h>
 #include <gtest/gtest.h>
 
+#include <filesystem>
+#include <fstream>
 #include <string>
 
 #include "deploydyn/io/input_error.hpp"
@@ -90,6 +92,10 @@ const BadModelCase kBadModels[] = {
      "times must increase strictly, got 1 after 2"},
     {"unknown_function_name.yaml", 7, "thermal.dT", "unknown function 'wram'"},
     {"yaml_syntax_error.yaml", 4, "", "YAML syntax"},
+    // What follows the model is not ignored: a second YAML document, a second JSON value, or text.
+    {"second_document.yaml", 5, "", "a second document starts here; a model file holds one document"},
+    {"json_second_value.json", 3, "", "a second document starts here; a model file holds one document (in JSON: one value)"},
+    {"json_trailing_text.json", 2, "", "a second document starts here"},
     {"units_not_si.yaml", 1, "units", "only SI is supported"},
     {"output_file_with_folder.yaml", 5, "output.history", "must be a plain file name"},
     {"empty.yaml", 0, "", "expected a mapping with nodes, materials and elements, got nothing"},
@@ -208,6 +214,33 @@ TEST(BadModel, HugeFileNamesTheLineOfItsMistake) {
   } catch (const InputError& error) {
     EXPECT_EQ(error.line(), last_line) << error.what();
     EXPECT_EQ(error.field(), "elements.last.area") << error.what();
+  }
+}
+
+// A model nested 10⁵ levels deep, as JSON or YAML (it overflowed the stack of check, run and
+// study): every command refuses it with exit code 2, not a signal, and a short message that
+// names the file, the line and the limit.
+TEST(BadModel, DeeplyNestedFileIsRefusedByEveryCommand) {
+  testing::ScratchFolder folder("deep_model");
+  std::filesystem::create_directories(folder.path());
+  const std::string brackets = std::string(100'000, '[') + std::string(100'000, ']');
+  std::ofstream(folder.path() / "deep.json") << "{\"nodes\": " << brackets << "}\n";
+  std::ofstream(folder.path() / "deep.yaml") << "# deep\nnodes: " << brackets << "\n";
+  for (const std::string file : {"deep.json", "deep.yaml"}) {
+    const std::filesystem::path model = folder.path() / file;
+    const std::filesystem::path study = folder.path() / (file + "_study.yaml");
+    std::ofstream(study) << "model: " << file << "\ncases:\n  a: {thermal.dT: 1}\n";
+    const std::string out = (folder.path() / "out").string();
+    for (const std::string& command : {"check " + model.string(), "run " + model.string() + " --quiet --out " + out,
+                                      "study " + study.string() + " --quiet --out " + out}) {
+      const testing::CliOutcome o = testing::run_cli(command);
+      EXPECT_EQ(o.exit_code, 2) << command << "\n" << o.output.substr(0, 500);
+      EXPECT_NE(o.output.find(fmt::format("{}:{}:", file, file == "deep.json" ? 1 : 2)), std::string::npos)
+          << command << "\n" << o.output.substr(0, 500);
+      EXPECT_NE(o.output.find("nest deeper than 256 levels here; a model file may nest at most 256"), std::string::npos) << o.output.substr(0, 500);
+      EXPECT_LT(o.output.size(), 400u) << "the message must not echo the file";
+      EXPECT_FALSE(std::filesystem::exists(out)) << command;
+    }
   }
 }
 

@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 #include <simdjson.h>
+#include <yaml-cpp/depthguard.h>
 #include <yaml-cpp/yaml.h>
 #include <yaml.h>
 
@@ -19,9 +20,19 @@ bool plain_null(std::string_view text) {
 }
 
 YamlMark mark_of(const yaml_mark_t& mark) { return {static_cast<int>(mark.line), static_cast<int>(mark.column)}; }
+YamlMark mark_of(const YAML::Mark& mark) { return mark.is_null() ? YamlMark{} : YamlMark{mark.line, mark.column}; }
 
-// Nesting beyond this is left to yaml-cpp (io/yaml_document.cpp, Builder::open).
-constexpr std::size_t kMaxDepth = 1000;
+// A container that opens at kMaxNestingDepth: refused before the readers recurse into it.
+YamlSyntaxError too_deep(YamlMark mark) {
+  return {fmt::format("lists and mappings nest deeper than {} levels here; a model file may nest at most {}",
+                      kMaxNestingDepth, kMaxNestingDepth),
+          mark};
+}
+
+// A second document (after `---`): a model file holds one.
+YamlSyntaxError second_document(YamlMark mark) {
+  return {"a second document starts here; a model file holds one document (in JSON: one value)", mark};
+}
 
 // An alias inside the node its anchor names: a tree that contains itself.
 YamlSyntaxError cycle(const std::string& anchor, YamlMark mark) {
@@ -113,6 +124,12 @@ class YamlDocument::Builder {
       yaml_event_t event;
       if (yaml_parser_parse(&parser, &event) == 0) throw LibyamlRefused{};
       const std::unique_ptr<yaml_event_t, void (*)(yaml_event_t*)> event_guard(&event, yaml_event_delete);
+      // Placed at its first node, where yaml-cpp places it too.
+      const bool node_starts = event.type == YAML_SCALAR_EVENT || event.type == YAML_SEQUENCE_START_EVENT ||
+                               event.type == YAML_MAPPING_START_EVENT || event.type == YAML_ALIAS_EVENT;
+      if (second_document_ && node_starts) {
+        throw second_document(mark_of(event.start_mark));
+      }
       switch (event.type) {
         case YAML_SCALAR_EVENT: {
           const std::string_view value(reinterpret_cast<const char*>(event.data.scalar.value),
@@ -146,11 +163,12 @@ class YamlDocument::Builder {
           add(anchored->second, {});
           break;
         }
-        case YAML_DOCUMENT_END_EVENT:
         case YAML_STREAM_END_EVENT:
-          done = true;  // as yaml-cpp's Load: the first document only
+          done = true;
           break;
         case YAML_DOCUMENT_START_EVENT:
+          // Read to the end of the text: what follows the first document is not ignored.
+          second_document_ = have_root;
           have_root = true;
           break;
         default:
@@ -188,9 +206,7 @@ class YamlDocument::Builder {
   }
 
   void open(YamlKind kind, YamlMark mark, std::string anchor) {
-    // Deeper than any model: left to yaml-cpp, which refuses beyond its own limit (and whose
-    // tree the recursive readers then walk within the stack).
-    if (open_.size() >= kMaxDepth) throw LibyamlRefused{};
+    if (open_.size() >= kMaxNestingDepth) throw too_deep(mark);
     // Its parent is set by add() when it closes, at the same place among its siblings.
     open_.push_back({document_.add_node(kind, mark), stack_.size(), std::move(anchor)});
   }
@@ -208,6 +224,7 @@ class YamlDocument::Builder {
   std::vector<Id> stack_;
   std::unordered_map<std::string, Id> anchors_;
   bool root_ = false;
+  bool second_document_ = false;
 };
 
 // JSON through simdjson's On-Demand API. Each node is placed where LibYAML places it (a
@@ -217,11 +234,13 @@ class YamlDocument::JsonReader {
  public:
   JsonReader(YamlDocument& document, const char* text) : document_(document), scanned_(text) {}
 
-  Id read(simdjson::ondemand::value value) {
+  // `depth`: the containers `value` is in. Each level is a call: the limit keeps the stack.
+  Id read(simdjson::ondemand::value value, std::size_t depth = 0) {
     using simdjson::ondemand::json_type;
     const json_type type = value.type();
     const std::string_view token = value.raw_json_token();
     const YamlMark mark = mark_at(token.data());
+    if ((type == json_type::object || type == json_type::array) && depth >= kMaxNestingDepth) throw too_deep(mark);
     switch (type) {
       case json_type::object: {
         const Id node = document_.add_node(YamlKind::map, mark);
@@ -232,7 +251,7 @@ class YamlDocument::JsonReader {
           const char* key_at = field.key().raw() - 1;  // its opening quote
           const std::string_view key = field.unescaped_key();
           stack_.push_back(document_.add_scalar_at(key, mark_at(key_at)));
-          const Id child = read(field.value());
+          const Id child = read(field.value(), depth + 1);
           stack_.push_back(child);
         }
         return close(node, first);
@@ -242,7 +261,7 @@ class YamlDocument::JsonReader {
         const std::size_t first = stack_.size();
         simdjson::ondemand::array array = value.get_array();
         for (auto item : array) {
-          const Id child = read(item.value());
+          const Id child = read(item.value(), depth + 1);
           stack_.push_back(child);
         }
         return close(node, first);
@@ -346,6 +365,7 @@ class YamlDocument::YamlCppReader {
         return document_.add_scalar_at(node.Scalar(), mark);
       case YAML::NodeType::Sequence:
       case YAML::NodeType::Map: {
+        if (ancestors_.size() >= kMaxNestingDepth) throw too_deep(mark);
         std::vector<Id> children;
         ancestors_.push_back(node);
         for (const auto& entry : node) {
@@ -371,14 +391,17 @@ class YamlDocument::YamlCppReader {
 };
 
 YamlDocument YamlDocument::parse_with_yaml_cpp(std::string_view text) {
-  YAML::Node root;
+  std::vector<YAML::Node> documents;  // all of them, so that a second one is seen
   try {
-    root = YAML::Load(std::string(text));
+    documents = YAML::LoadAll(std::string(text));
+  } catch (const YAML::DeepRecursion& error) {
+    throw too_deep(mark_of(error.mark));  // yaml-cpp's own message is "bad file"
   } catch (const YAML::ParserException& error) {
-    throw YamlSyntaxError{error.msg, error.mark.is_null() ? YamlMark{} : YamlMark{error.mark.line, error.mark.column}};
+    throw YamlSyntaxError{error.msg, mark_of(error.mark)};
   }
+  if (documents.size() > 1) throw second_document(mark_of(documents[1].Mark()));
   YamlDocument document;
-  document.root_ = YamlCppReader(document, 16 * text.size() + 64).copy(root);
+  document.root_ = YamlCppReader(document, 16 * text.size() + 64).copy(documents.empty() ? YAML::Node() : documents[0]);
   return document;
 }
 
