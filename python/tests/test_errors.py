@@ -88,3 +88,16 @@ def test_text_after_the_model_is_refused(text):
     """Only the first document or JSON value was read; the rest was silently dropped."""
     with pytest.raises(deploydyn.InputError, match="a second document starts here"):
         deploydyn.loads(text, source_name="two.yaml")
+
+
+def test_name_not_utf8_is_refused_at_load(tmp_path):
+    """A Latin-1 name loaded, then Model.name raised UnicodeDecodeError and the run died
+    writing summary.json."""
+    model_file = tmp_path / "latin1.yaml"
+    model_file.write_bytes(b"name: caf\xe9\n" + GOOD.encode())
+    with pytest.raises(deploydyn.InputError) as error:
+        deploydyn.load(model_file)
+    assert error.value.line == 1
+    assert error.value.field == "name"
+    assert error.value.problem == "must be UTF-8 text, got 'caf\\xE9'"
+    assert str(error.value) == cli_error(model_file)

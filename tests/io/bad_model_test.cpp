@@ -107,6 +107,8 @@ const BadModelCase kBadModels[] = {
      "applies to type newmark only, and the default type is generalized_alpha; give type: newmark"},
     {"adaptive_max_below_min.yaml", 5, "analysis.adaptive.max_step",
      "must not be below min_step = 0.001 s, got 0.0001"},
+    // Latin-1 é: it would end up in summary.json, which holds UTF-8 only.
+    {"name_not_utf8.yaml", 1, "name", "must be UTF-8 text, got 'caf\\xE9 roof'"},
     {"support_unknown_node.yaml", 5, "supports.0.node", "unknown node 'Z'; nodes are A, B"},
     {"duplicate_element.yaml", 5, "elements.1", "'1' is given twice"},
     {"driver_unknown_key.yaml", 5, "drivers.motor.extra", "unknown key 'extra'; allowed: type,"},

@@ -94,6 +94,7 @@ class ModelReader {
   explicit ModelReader(const YamlValue& root) : root_(root) {}
 
   Model read() {
+    root_.expect_utf8();  // before any message could quote a stray byte
     if (!root_.is_map()) {
       root_.fail("expected a mapping with nodes, materials and elements, got " +
                  root_.description());

@@ -61,6 +61,8 @@ class YamlDocument {
   static YamlDocument parse_with_yaml_cpp(std::string_view text);
 
   Id root() const { return root_; }
+  // Nodes are numbered 0 to node_count() − 1 (replaced ones included).
+  std::size_t node_count() const { return nodes_.size(); }
   YamlKind kind(Id node) const { return nodes_[node].kind; }
   YamlMark mark(Id node) const { return {nodes_[node].line, nodes_[node].column}; }
   // The dotted path from the root, e.g. "elements.2.area" (keys by name, items by index); an

@@ -12,6 +12,7 @@
 #include <unordered_set>
 
 #include "deploydyn/io/input_error.hpp"
+#include "deploydyn/io/text_file.hpp"
 
 namespace deploydyn::io {
 namespace {
@@ -166,6 +167,34 @@ void YamlValue::fail_key(std::string_view key, const std::string& problem) const
 std::string YamlValue::child_path(std::string_view key) const {
   const std::string here = path();
   return here.empty() ? std::string(key) : fmt::format("{}.{}", here, key);
+}
+
+void YamlValue::expect_utf8() const {
+  const YamlDocument& document = *document_;
+  std::vector<bool> seen(document.node_count());  // an alias's node is checked once
+  std::vector<YamlDocument::Id> pending{node_};
+  while (!pending.empty()) {
+    const YamlDocument::Id node = pending.back();
+    pending.pop_back();
+    if (seen[node]) continue;
+    seen[node] = true;
+    const std::string_view text = document.scalar(node);
+    if (!is_utf8(text)) {
+      // Escaped here as well as in the message: the Python error's field and problem are str.
+      source_->fail(document.mark(node), printable(document.path(node)),
+                    fmt::format("must be UTF-8 text, got '{}'", printable(excerpt(text))));
+    }
+    // Children pushed last to first, so that the first in the file is checked first.
+    const bool map = document.kind(node) == YamlKind::map;
+    for (std::size_t i = document.size(node); i-- > 0;) {
+      if (map) {
+        pending.push_back(document.value(node, i));
+        pending.push_back(document.key(node, i));
+      } else {
+        pending.push_back(document.item(node, i));
+      }
+    }
+  }
 }
 
 std::vector<std::pair<std::string, YamlValue>> YamlValue::entries() const {
