@@ -101,3 +101,8 @@ def test_name_not_utf8_is_refused_at_load(tmp_path):
     assert error.value.field == "name"
     assert error.value.problem == "must be UTF-8 text, got 'caf\\xE9'"
     assert str(error.value) == cli_error(model_file)
+
+
+def test_path_with_nul_is_refused_naming_the_argument():
+    with pytest.raises(ValueError, match=r"^load: path must not hold a NUL character"):
+        deploydyn.load("a\0b")

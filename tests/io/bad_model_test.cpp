@@ -10,6 +10,7 @@
 
 #include "deploydyn/io/input_error.hpp"
 #include "deploydyn/io/model_loader.hpp"
+#include "deploydyn/io/text_file.hpp"
 #include "support/cli.hpp"
 
 namespace deploydyn {
@@ -109,6 +110,8 @@ const BadModelCase kBadModels[] = {
      "must not be below min_step = 0.001 s, got 0.0001"},
     // Latin-1 é: it would end up in summary.json, which holds UTF-8 only.
     {"name_not_utf8.yaml", 1, "name", "must be UTF-8 text, got 'caf\\xE9 roof'"},
+    {"output_file_name_too_long.yaml", 5, "output.history",
+     "must be at most 251 bytes long (a file name's 255, less the '.tmp' of the copy written first), got 304 bytes"},
     {"support_unknown_node.yaml", 5, "supports.0.node", "unknown node 'Z'; nodes are A, B"},
     {"duplicate_element.yaml", 5, "elements.1", "'1' is given twice"},
     {"driver_unknown_key.yaml", 5, "drivers.motor.extra", "unknown key 'extra'; allowed: type,"},
@@ -243,6 +246,51 @@ TEST(BadModel, DeeplyNestedFileIsRefusedByEveryCommand) {
       EXPECT_LT(o.output.size(), 400u) << "the message must not echo the file";
       EXPECT_FALSE(std::filesystem::exists(out)) << command;
     }
+  }
+}
+
+// Messages quote at most an excerpt of the input: a text pasted as the whole file, as a key, as
+// a name or as a number is shown by its first 60 characters and "…" (whole, it was 4–11 kB).
+// (YAML's implicit keys have at most 1024 characters: the name has 300.)
+TEST(BadModel, MessagesQuoteLongInputAsAnExcerpt) {
+  const std::string long_text(10'000, 'x');
+  const std::string model = "nodes: {A: [0, 0], B: [1, 0]}\nmaterials: {steel: {E: 2.0e11}}\n"
+                            "elements: {1: {nodes: [A, B], area: 1.0e-4, material: steel, mass: 1}}\n";
+  const std::string x60 = std::string(60, 'x') + "…", digits60 = "1" + std::string(59, '0') + "…";
+  const std::pair<std::string, std::string> cases[] = {
+      {long_text + "\n", x60},
+      {model + "? " + long_text + "\n: 1\n", x60},  // an explicit key may be long
+      {model + "analysis: {type: " + long_text + "}\n", x60},
+      {model + "analysis: {end: 1" + std::string(10'000, '0') + "}\n", digits60},
+      {"nodes: {" + std::string(300, 'x') + ": [0, 0], B: [1, 0]}\nmaterials: {steel: {E: 2.0e11}}\nelements: {}\n",
+       x60}};
+  for (const auto& [text, shown] : cases) {
+    try {
+      load_model_from_string(text, "long.yaml");
+      FAIL() << "loaded: " << text.substr(0, 80);
+    } catch (const InputError& error) {
+      const std::string message = error.what();
+      EXPECT_LT(message.size(), 600u) << message.substr(0, 300);
+      EXPECT_NE(message.find(shown), std::string::npos) << message.substr(0, 300);
+    }
+  }
+}
+
+// A name becomes a CSV header, a JSON key and (a study case's) a folder name: at most 255 bytes.
+TEST(BadModel, NamesAreAtMostAFileNameLong) {
+  const auto with_node = [](const std::string& name) {
+    return "nodes: {" + name + ": [0, 0], B: [1, 0]}\nmaterials: {steel: {E: 2.0e11}}\n"
+           "elements: {1: {nodes: [" + name + ", B], area: 1.0e-4, material: steel, mass: 1}}\n";
+  };
+  EXPECT_EQ(load_model_from_string(with_node(std::string(255, 'n')), "names.yaml").nodes.size(), 2u);
+  try {
+    load_model_from_string(with_node(std::string(256, 'n')), "names.yaml");
+    FAIL() << "a 256-byte name loaded";
+  } catch (const InputError& error) {
+    EXPECT_EQ(error.line(), 1) << error.what();
+    EXPECT_NE(error.problem().find("a name must be at most 255 bytes (it may name a folder), got 256 bytes"),
+              std::string::npos)
+        << error.what();
   }
 }
 

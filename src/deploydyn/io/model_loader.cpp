@@ -48,13 +48,15 @@ constexpr double kCoincidentShare = 1e-9;
 // A hinge-angle arm shorter across the axis than this share of its length leaves the angle
 // undefined (as constraints/driven_hinge_angle.cpp decides).
 constexpr double kArmAcrossAxisShare = 1e-8;
+// An output file is written as NAME.tmp first, then renamed (output/checked_file.cpp).
+constexpr std::size_t kMaxOutputFileNameBytes = io::kMaxFileNameBytes - std::string_view(".tmp").size();
 // output_interval / step is "whole" up to the rounding of decimal inputs such as 5e-3 / 1e-3.
 constexpr double kWholeMultipleTolerance = 1e-9;
 
 // Names head CSV columns and key JSON objects: see io::name_problem.
 void check_name(const std::string& name, const YamlValue& where, std::string_view kind) {
   if (const std::string problem = io::name_problem(name); !problem.empty()) {
-    where.fail(fmt::format("{} '{}': {}", kind, name, problem));
+    where.fail(fmt::format("{} '{}': {}", kind, io::excerpt(name), problem));
   }
 }
 
@@ -75,7 +77,7 @@ class NameIndex {
     const auto found = index_.find(name);
     if (found == index_.end()) {
       reference.fail(
-          fmt::format("unknown {} '{}'; {}s are {}", kind_, name, kind_, io::join_names(names_)));
+          fmt::format("unknown {} '{}'; {}s are {}", kind_, io::excerpt(name), kind_, io::join_names(names_)));
     }
     return found->second;
   }
@@ -106,7 +108,7 @@ class ModelReader {
     }
     if (const auto units = root_.find("units"); units && units->text() != "SI") {
       units->fail(
-          fmt::format("only SI is supported (m, kg, s, N, Pa, °C), got '{}'", units->text()));
+          fmt::format("only SI is supported (m, kg, s, N, Pa, °C), got '{}'", io::excerpt(units->text())));
     }
     if (const auto functions = root_.find("functions")) read_functions(*functions);
     read_nodes(root_.at("nodes"));
@@ -151,14 +153,14 @@ class ModelReader {
         spec.fail(
             fmt::format("unknown function '{}'; entries of 'functions' may name the builtin "
                         "paper_eq23 but not each other",
-                        name));
+                        io::excerpt(name)));
       }
       if (const auto found = named->find(name); found != named->end()) return found->second;
       std::vector<std::string> known{std::string(kPaperEq23)};
       for (const auto& entry : *named) known.push_back(entry.first);
       const std::string nearest = io::did_you_mean(name, known);
       spec.fail(fmt::format(
-          "unknown function '{}'{}", name,
+          "unknown function '{}'{}", io::excerpt(name),
           nearest.empty()
               ? "; give a number, a mapping with 'type', or one of: " + io::join_names(known)
               : nearest));
@@ -873,7 +875,7 @@ class ModelReader {
       for (const YamlValue& item : list_or_word(*value, "quantity names")) {
         const std::string family = item.text();
         if (std::find(families.begin(), families.end(), family) == families.end()) {
-          item.fail(fmt::format("unknown quantity '{}'{}; this model's are {}", family,
+          item.fail(fmt::format("unknown quantity '{}'{}; this model's are {}", io::excerpt(family),
                                 io::did_you_mean(family, families), fmt::join(families, ", ")));
         }
         select.quantities.push_back(family);
@@ -900,7 +902,7 @@ class ModelReader {
         item.fail(fmt::format("'{}' stands alone: give it as the only entry, or list {} names", text, kind));
       }
       if (!word && std::none_of(names.begin(), names.end(), [&](const std::string& n) { return name_matches(text, n); })) {
-        item.fail(fmt::format("'{}' matches no {}{}; give {} names, patterns with * or ?, or {}", text, kind,
+        item.fail(fmt::format("'{}' matches no {}{}; give {} names, patterns with * or ?, or {}", io::excerpt(text), kind,
                               io::did_you_mean(text, names), kind, fmt::join(words, ", ")));
       }
       out.push_back(text);
@@ -908,12 +910,19 @@ class ModelReader {
     return out;
   }
 
-  // Output goes into the run's output folder, so only a plain name makes sense.
+  // Output goes into the run's output folder, so only a plain name makes sense; and one the file
+  // system takes, checked here rather than when the run writes it.
   static std::string file_name(const YamlValue& value) {
     const std::string name = value.text();
     if (name.empty() || name == "." || name == ".." ||
         name.find_first_of("/\\") != std::string::npos) {
-      value.fail(fmt::format("must be a plain file name without folders, got '{}'", name));
+      value.fail(fmt::format("must be a plain file name without folders, got '{}'", io::excerpt(name)));
+    }
+    if (name.find('\0') != std::string::npos) value.fail("must not hold a NUL character (\\0)");
+    if (name.size() > kMaxOutputFileNameBytes) {
+      value.fail(fmt::format("must be at most {} bytes long (a file name's {}, less the '.tmp' of the copy "
+                             "written first), got {} bytes",
+                             kMaxOutputFileNameBytes, io::kMaxFileNameBytes, name.size()));
     }
     return name;
   }

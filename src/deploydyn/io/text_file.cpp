@@ -116,6 +116,10 @@ std::string printable(std::string_view text) {
 
 std::string name_problem(std::string_view name) {
   if (name.empty()) return "a name must not be empty";
+  if (name.size() > kMaxFileNameBytes) {
+    return fmt::format("a name must be at most {} bytes (it may name a folder), got {} bytes", kMaxFileNameBytes,
+                       name.size());
+  }
   for (std::size_t i = 0; i < name.size();) {
     const std::size_t n = utf8_length(name, i);
     const auto lead = static_cast<unsigned char>(name[i]);

@@ -36,9 +36,13 @@ std::string excerpt(std::string_view text, std::size_t max_chars = kMaxExcerptCh
 // \n, \t or \xNN, and bytes that are not UTF-8 as \xNN. Printable UTF-8 (°, ², Greek) stays.
 std::string printable(std::string_view text);
 
+// The longest name of one file or folder that Linux file systems take, in bytes (NAME_MAX).
+inline constexpr std::size_t kMaxFileNameBytes = 255;
+
 // Why `name` cannot name a node, element, material, driver or study case, or "" when it can.
 // Names become CSV column headers (history.csv, study.csv), JSON keys and folder names: they
-// must be non-empty UTF-8 without control characters, commas or double quotes.
+// must be non-empty UTF-8 of at most kMaxFileNameBytes, without control characters, commas or
+// double quotes.
 std::string name_problem(std::string_view name);
 
 }  // namespace deploydyn::io
