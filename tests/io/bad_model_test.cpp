@@ -108,6 +108,9 @@ const BadModelCase kBadModels[] = {
      "applies to type newmark only, and the default type is generalized_alpha; give type: newmark"},
     {"adaptive_max_below_min.yaml", 5, "analysis.adaptive.max_step",
      "must not be below min_step = 0.001 s, got 0.0001"},
+    // 5 s / 1 ns: 5·10⁹ steps, where fixed steps may take 10⁸.
+    {"adaptive_min_step_too_many_steps.yaml", 7, "analysis.adaptive.min_step",
+     "allows 5e+09 steps up to end = 5 s; at most 1e+08 are allowed, so min_step must be at least 5e-08 s, got 1e-09"},
     // Latin-1 é: it would end up in summary.json, which holds UTF-8 only.
     {"name_not_utf8.yaml", 1, "name", "must be UTF-8 text, got 'caf\\xE9 roof'"},
     {"output_file_name_too_long.yaml", 5, "output.history",
@@ -273,6 +276,26 @@ TEST(BadModel, MessagesQuoteLongInputAsAnExcerpt) {
       EXPECT_LT(message.size(), 600u) << message.substr(0, 300);
       EXPECT_NE(message.find(shown), std::string::npos) << message.substr(0, 300);
     }
+  }
+}
+
+// A modal analysis solves once per time of `at`: a list longer than the cap is refused at load.
+TEST(BadModel, ModalTimesAreCapped) {
+  const std::string model = "nodes: {A: [0, 0], B: [1, 0]}\nmaterials: {steel: {E: 2.0e11}}\n"
+                            "elements: {1: {nodes: [A, B], area: 1.0e-4, material: steel, mass: 1}}\n"
+                            "supports: [{node: A}]\nanalysis:\n  type: modal\n  at: [";
+  const auto times = [](std::size_t n) {
+    std::string list = "0";
+    for (std::size_t i = 1; i < n; ++i) list += ", 0";
+    return list + "]\n";
+  };
+  EXPECT_EQ(load_model_from_string(model + times(100'000), "modal.yaml").analysis.modal.times_s.size(), 100'000u);
+  try {
+    load_model_from_string(model + times(100'001), "modal.yaml");
+    FAIL() << "100 001 modal times loaded";
+  } catch (const InputError& error) {
+    EXPECT_EQ(error.field(), "analysis.at") << error.what();
+    EXPECT_EQ(error.problem(), "expected a list of 1 to 100000 times (s), got 100001 item(s)") << error.what();
   }
 }
 

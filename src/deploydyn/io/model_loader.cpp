@@ -40,6 +40,8 @@ constexpr std::size_t kUnbounded = std::numeric_limits<std::size_t>::max();
 // A step below 1 ns or a run of more than 1e8 steps is a typo in the file, not a choice.
 constexpr double kMinStep_s = 1e-9;
 constexpr double kMaxSteps = 1e8;
+// Each modal time is a static solve and an eigenproblem: more than this is a generated list gone wrong.
+constexpr std::size_t kMaxModalTimes = 100'000;
 // More initial load steps than this is a typo: a millionth of the thermal load is far below
 // what moves a node measurably, and each step costs at least one factorization.
 constexpr int kMaxLoadSteps = 1'000'000;
@@ -702,7 +704,7 @@ class ModelReader {
       if (at->is_scalar()) {
         modal.times_s.push_back(at->number(Sign::non_negative, "s"));
       } else {
-        for (const YamlValue& t : at->items(1, kUnbounded, "times (s)")) {
+        for (const YamlValue& t : at->items(1, kMaxModalTimes, "times (s)")) {
           modal.times_s.push_back(t.number(Sign::non_negative, "s"));
         }
       }
@@ -800,10 +802,19 @@ class ModelReader {
     AdaptiveOptions& adaptive = model_.analysis.adaptive;
     adaptive.enabled = true;
     adaptive.tolerance_m = spec.number_or("tolerance", adaptive.tolerance_m, Sign::positive, "m");
-    adaptive.min_step_s = spec.number_or("min_step", adaptive.min_step_s, Sign::positive, "s");
+    // At most kMaxSteps steps, as with fixed steps: min_step is at least end / kMaxSteps, and
+    // that by default when larger than the usual 1 ns.
+    const double end_s = model_.analysis.end_time_s, fewest_steps_min_s = end_s / kMaxSteps;
+    adaptive.min_step_s = spec.number_or("min_step", std::max(adaptive.min_step_s, fewest_steps_min_s), Sign::positive, "s");
     adaptive.max_step_s = spec.number_or("max_step", adaptive.max_step_s, Sign::positive, "s");
     if (adaptive.min_step_s < kMinStep_s) {
       spec.at("min_step").fail(fmt::format("must be at least {} s, got {}", kMinStep_s, adaptive.min_step_s));
+    }
+    if (adaptive.min_step_s < fewest_steps_min_s) {
+      spec.at("min_step").fail(fmt::format("allows {:.3g} steps up to end = {} s; at most {:g} are allowed, so "
+                                           "min_step must be at least {:g} s, got {}",
+                                           end_s / adaptive.min_step_s, end_s, kMaxSteps, fewest_steps_min_s,
+                                           adaptive.min_step_s));
     }
     if (adaptive.max_step_s > 0.0 && adaptive.max_step_s < adaptive.min_step_s) {
       spec.at("max_step").fail(fmt::format("must not be below min_step = {} s, got {}",
