@@ -113,6 +113,7 @@ const BadModelCase kBadModels[] = {
      "allows 5e+09 steps up to end = 5 s; at most 1e+08 are allowed, so min_step must be at least 5e-08 s, got 1e-09"},
     // Latin-1 é: it would end up in summary.json, which holds UTF-8 only.
     {"name_not_utf8.yaml", 1, "name", "must be UTF-8 text, got 'caf\\xE9 roof'"},
+    {"output_file_name_nul.yaml", 5, "output.history", "must not hold a NUL character (\\0)"},
     {"output_file_name_too_long.yaml", 5, "output.history",
      "must be at most 251 bytes long (a file name's 255, less the '.tmp' of the copy written first), got 304 bytes"},
     {"support_unknown_node.yaml", 5, "supports.0.node", "unknown node 'Z'; nodes are A, B"},
@@ -313,6 +314,22 @@ TEST(BadModel, NamesAreAtMostAFileNameLong) {
     EXPECT_EQ(error.line(), 1) << error.what();
     EXPECT_NE(error.problem().find("a name must be at most 255 bytes (it may name a folder), got 256 bytes"),
               std::string::npos)
+        << error.what();
+  }
+}
+
+// A file beyond 256 MiB is refused before it is read (a sparse file: no disk is used).
+TEST(BadModel, FileLargerThanTheLimitIsRefusedBeforeReading) {
+  testing::ScratchFolder folder("large_model");
+  std::filesystem::create_directories(folder.path());
+  const std::filesystem::path file = folder.path() / "large.yaml";
+  std::ofstream(file) << "nodes: {}\n";
+  std::filesystem::resize_file(file, io::kMaxInputFileBytes + 1);
+  try {
+    load_model(file);
+    FAIL() << "a file of 256 MiB and a byte loaded";
+  } catch (const InputError& error) {
+    EXPECT_NE(std::string(error.what()).find("is 256 MiB; input files may have at most 256 MiB"), std::string::npos)
         << error.what();
   }
 }
