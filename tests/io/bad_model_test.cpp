@@ -94,7 +94,7 @@ const BadModelCase kBadModels[] = {
     {"unknown_function_name.yaml", 7, "thermal.dT", "unknown function 'wram'"},
     {"yaml_syntax_error.yaml", 4, "", "YAML syntax"},
     // What follows the model is not ignored: a second YAML document, a second JSON value, or text.
-    {"second_document.yaml", 5, "", "a second document starts here; a model file holds one document"},
+    {"second_document.yaml", 4, "", "a second document starts here; a model file holds one document"},
     {"json_second_value.json", 3, "", "a second document starts here; a model file holds one document (in JSON: one value)"},
     {"json_trailing_text.json", 2, "", "a second document starts here"},
     {"units_not_si.yaml", 1, "units", "only SI is supported"},

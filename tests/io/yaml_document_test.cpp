@@ -86,6 +86,7 @@ TEST(YamlDocument, EveryYamlFileOfTheRepositoryGivesYamlCppsTree) {
     for (const auto& file : yaml_files(folder)) {
       const std::string text = read_text(file);
       const std::string error = syntax_error(text, false);
+      if (syntax_error(text, true).starts_with("a second document")) continue;  // yaml-cpp reads the first
       EXPECT_EQ(syntax_error(text, true), error) << file;
       if (!error.empty()) continue;
       const YamlDocument fast = YamlDocument::parse_yaml(text), reference = YamlDocument::parse_with_yaml_cpp(text);
@@ -112,7 +113,7 @@ TEST(YamlDocument, EveryExampleGivesTheSameModelAndEveryBadModelTheSameMessage) 
   for (const std::string folder : {"examples", "tests/io/bad_models"}) {
     for (const auto& file : yaml_files(folder)) {
       const std::string text = read_text(file);
-      if (!syntax_error(text, false).empty()) continue;
+      if (!syntax_error(text, false).empty() || !syntax_error(text, true).empty()) continue;
       const std::string fast = model_or_message(YamlDocument::parse(text), file.string());
       EXPECT_EQ(fast, model_or_message(YamlDocument::parse_with_yaml_cpp(text), file.string())) << file;
       (fast.starts_with("error: ") ? n_errors : n_models) += 1;
@@ -129,7 +130,7 @@ TEST(YamlDocument, JsonGivesLibyamlsTreeAndTheSameModels) {
   for (const std::string folder : {"examples", "tests"}) {
     for (const auto& file : yaml_files(folder)) {
       const std::string text = read_text(file);
-      if (!syntax_error(text, false).empty()) continue;
+      if (!syntax_error(text, false).empty() || !syntax_error(text, true).empty()) continue;
       if (!is_utf8(text)) continue;  // JSON is UTF-8: such a file (a bad model) has no JSON form
       const YamlDocument yaml = YamlDocument::parse_yaml(text);
       if (yaml.kind(yaml.root()) != YamlKind::map) continue;  // JSON's fast path is for objects
@@ -150,10 +151,12 @@ TEST(YamlDocument, JsonGivesLibyamlsTreeAndTheSameModels) {
   }
   EXPECT_GE(n_files, 90u);
   EXPECT_GE(n_models, 20u);
-  // What simdjson refuses (YAML's flow syntax, a second value, not UTF-8) is left to LibYAML.
-  for (const std::string text : {"{a: 1}", "{\"a\": 1} {\"b\": 2}", "{\"a\": \"\xff\"}", "{\"a\": [1, 2}"}) {
+  // What simdjson refuses (YAML's flow syntax, not UTF-8) is left to LibYAML; a second value is
+  // refused (ASecondDocumentIsRefusedWhereItStarts).
+  for (const std::string text : {"{a: 1}", "{\"a\": \"\xff\"}", "{\"a\": [1, 2}"}) {
     EXPECT_FALSE(YamlDocument::parse_json(text).has_value()) << text;
   }
+  EXPECT_THROW(YamlDocument::parse_json("{\"a\": 1} {\"b\": 2}"), YamlSyntaxError);
   EXPECT_EQ(YamlDocument::parse("{a: 1}").flow_text(YamlDocument::parse("{a: 1}").root()), "{a: 1}");
 }
 
@@ -247,19 +250,18 @@ TEST(YamlDocument, NestingDeeperThanTheLimitIsRefusedByEveryParser) {
             std::string::npos);
 }
 
-// What follows the first document is not dropped: a second document (after ---), or text after
-// a JSON model's closing brace, is refused where it starts, by both parsers alike.
+// What follows the first document is not dropped: a second document (after ---, even one that
+// is not YAML), or text after a JSON model's closing brace, is refused where it starts. (yaml-cpp
+// alone reads the first document only: its LoadAll loops forever on some texts.)
 TEST(YamlDocument, ASecondDocumentIsRefusedWhereItStarts) {
   const std::string refused = "a second document starts here; a model file holds one document (in JSON: one value)";
-  const std::pair<std::string, std::string> cases[] = {{"a: 1\n---\nb: 2\n", "2:0"},
-                                                       {"a: 1\n---\n", "2:0"},
+  const std::pair<std::string, std::string> cases[] = {{"a: 1\n---\nb: 2\n", "1:0"},
+                                                       {"a: 1\n---\n", "1:0"},
+                                                       {"a: 1\n---\n]\n", "1:0"},
                                                        {"{\"a\": 1} xyz\n", "0:9"},
                                                        {"{\"a\": 1}{\"b\": 2}", "0:8"},
                                                        {"{\"a\": 1}\n{\"b\": 2}\n", "1:0"}};
-  for (const auto& [text, at] : cases) {
-    EXPECT_EQ(syntax_error(text, true), refused + " at " + at) << text;
-    EXPECT_EQ(syntax_error(text, false), refused + " at " + at) << text;
-  }
+  for (const auto& [text, at] : cases) EXPECT_EQ(syntax_error(text, true), refused + " at " + at) << text;
   // An end marker, or a comment after a JSON model, is no second document.
   EXPECT_EQ(syntax_error("a: 1\n...\n", true), "");
   EXPECT_EQ(syntax_error("{\"a\": 1}\n# done\n", true), "");

@@ -29,6 +29,19 @@ YamlSyntaxError too_deep(YamlMark mark) {
           mark};
 }
 
+// Where content starts at or after `from`, past blanks and YAML comments; text.size() if nowhere.
+std::size_t next_content(std::string_view text, std::size_t from) {
+  for (std::size_t i = from; i < text.size(); ++i) {
+    if (text[i] == '#') {
+      i = text.find('\n', i);
+      if (i == std::string_view::npos) return text.size();
+    } else if (text[i] != ' ' && text[i] != '\t' && text[i] != '\r' && text[i] != '\n') {
+      return i;
+    }
+  }
+  return text.size();
+}
+
 // A second document (after `---`): a model file holds one.
 YamlSyntaxError second_document(YamlMark mark) {
   return {"a second document starts here; a model file holds one document (in JSON: one value)", mark};
@@ -124,12 +137,6 @@ class YamlDocument::Builder {
       yaml_event_t event;
       if (yaml_parser_parse(&parser, &event) == 0) throw LibyamlRefused{};
       const std::unique_ptr<yaml_event_t, void (*)(yaml_event_t*)> event_guard(&event, yaml_event_delete);
-      // Placed at its first node, where yaml-cpp places it too.
-      const bool node_starts = event.type == YAML_SCALAR_EVENT || event.type == YAML_SEQUENCE_START_EVENT ||
-                               event.type == YAML_MAPPING_START_EVENT || event.type == YAML_ALIAS_EVENT;
-      if (second_document_ && node_starts) {
-        throw second_document(mark_of(event.start_mark));
-      }
       switch (event.type) {
         case YAML_SCALAR_EVENT: {
           const std::string_view value(reinterpret_cast<const char*>(event.data.scalar.value),
@@ -167,8 +174,9 @@ class YamlDocument::Builder {
           done = true;
           break;
         case YAML_DOCUMENT_START_EVENT:
-          // Read to the end of the text: what follows the first document is not ignored.
-          second_document_ = have_root;
+          // Read on to the end of the text: what follows the first document is not ignored. Seen
+          // here, before its content, which yaml-cpp would read after a LibYAML failure.
+          if (have_root) throw second_document(mark_of(event.start_mark));
           have_root = true;
           break;
         default:
@@ -224,7 +232,6 @@ class YamlDocument::Builder {
   std::vector<Id> stack_;
   std::unordered_map<std::string, Id> anchors_;
   bool root_ = false;
-  bool second_document_ = false;
 };
 
 // JSON through simdjson's On-Demand API. Each node is placed where LibYAML places it (a
@@ -286,6 +293,7 @@ class YamlDocument::JsonReader {
   }
 
   // Places come in the order of the text: count lines and characters from the last one.
+ public:
   YamlMark mark_at(const char* at) {
     for (; scanned_ < at; ++scanned_) {
       const auto byte = static_cast<unsigned char>(*scanned_);
@@ -299,6 +307,8 @@ class YamlDocument::JsonReader {
     return {line_, column_};
   }
 
+
+ private:
   YamlDocument& document_;
   const char* scanned_;  // marks are counted up to here
   int line_ = 0, column_ = 0;
@@ -316,8 +326,15 @@ std::optional<YamlDocument> YamlDocument::parse_json(std::string_view text) {
     simdjson::ondemand::document json = parser.iterate(padded);
     JsonReader reader(document, padded.data());
     document.root_ = reader.read(json.get_value());
-    // More after the first value: not JSON (LibYAML then says what it is).
-    if (json.current_location().error() != simdjson::OUT_OF_BOUNDS) return std::nullopt;
+    const auto after = json.current_location();
+    if (after.error() != simdjson::OUT_OF_BOUNDS) {
+      // More after the value than YAML comments: a second value or text, refused here (LibYAML
+      // refuses it too, and yaml-cpp, which reads what LibYAML refuses, would drop it).
+      const std::size_t at = static_cast<std::size_t>(after.value_unsafe() - padded.data());
+      if (const std::size_t more = next_content(text, at); more < text.size()) {
+        throw second_document(reader.mark_at(padded.data() + more));
+      }
+    }
   } catch (const simdjson::simdjson_error&) {
     return std::nullopt;
   }
@@ -391,17 +408,18 @@ class YamlDocument::YamlCppReader {
 };
 
 YamlDocument YamlDocument::parse_with_yaml_cpp(std::string_view text) {
-  std::vector<YAML::Node> documents;  // all of them, so that a second one is seen
+  // The first document only: YAML::LoadAll, which would see a second, loops forever on some
+  // text after the first (found by the fuzzer). LibYAML, which reads first, refuses a second.
+  YAML::Node root;
   try {
-    documents = YAML::LoadAll(std::string(text));
+    root = YAML::Load(std::string(text));
   } catch (const YAML::DeepRecursion& error) {
     throw too_deep(mark_of(error.mark));  // yaml-cpp's own message is "bad file"
   } catch (const YAML::ParserException& error) {
     throw YamlSyntaxError{error.msg, mark_of(error.mark)};
   }
-  if (documents.size() > 1) throw second_document(mark_of(documents[1].Mark()));
   YamlDocument document;
-  document.root_ = YamlCppReader(document, 16 * text.size() + 64).copy(documents.empty() ? YAML::Node() : documents[0]);
+  document.root_ = YamlCppReader(document, 16 * text.size() + 64).copy(root);
   return document;
 }
 

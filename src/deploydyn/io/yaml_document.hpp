@@ -46,8 +46,8 @@ class YamlDocument {
 
   // The one document of `text`; an empty text is a null root. Throws YamlSyntaxError with
   // yaml-cpp's message when it is not YAML (LibYAML tells that it is not; yaml-cpp, which
-  // the messages have always come from, says why), when it holds a second document, or when
-  // it nests deeper than kMaxNestingDepth. A text that starts with '{' is first read as JSON
+  // the messages have always come from, says why), when LibYAML finds a second document, or
+  // when it nests deeper than kMaxNestingDepth. A text that starts with '{' is first read as JSON
   // with simdjson (ten times LibYAML's speed); what simdjson refuses, LibYAML reads.
   static YamlDocument parse(std::string_view text);
   // LibYAML alone (then yaml-cpp for what it refuses): never the JSON path.
@@ -57,7 +57,7 @@ class YamlDocument {
   // YamlSyntaxError when it nests deeper than kMaxNestingDepth.
   static std::optional<YamlDocument> parse_json(std::string_view text);
   // The same tree through yaml-cpp: the reference parse, and the one for the rare text that
-  // LibYAML rejects and yaml-cpp reads.
+  // LibYAML rejects and yaml-cpp reads. Its first document only (see parse).
   static YamlDocument parse_with_yaml_cpp(std::string_view text);
 
   Id root() const { return root_; }
