@@ -158,6 +158,8 @@ def _path(where, name, value):
         path = os.fsdecode(path)
     if not path:
         raise ValueError(f"{where}: {name} must not be empty")
+    if "\0" in path:  # the operating system would see only the part before it
+        raise ValueError(f"{where}: {name} must not hold a NUL character (\\0), got {_shown(value)}")
     return pathlib.Path(path)
 
 

@@ -66,3 +66,43 @@ def test_yaml_syntax_error_in_text():
     assert str(error.value).startswith("snippet.yaml:")
     assert "YAML syntax" in str(error.value)
     assert error.value.line is not None
+
+
+# Hostile input (issue 32): refused with a short message, never a crash or a half-read model.
+
+GOOD = BAD_AREA.replace("area: -1", "area: 1e-4")
+
+
+def test_deeply_nested_text_is_refused_not_a_crash():
+    """10⁵ levels of brackets overflowed the stack and killed the interpreter."""
+    text = '{"nodes": ' + "[" * 100_000 + "]" * 100_000 + "}"
+    with pytest.raises(deploydyn.InputError) as error:
+        deploydyn.loads(text, source_name="deep.json")
+    assert str(error.value).startswith("deep.json:1:")
+    assert "nest deeper than 256 levels here; a model file may nest at most 256" in str(error.value)
+    assert len(str(error.value)) < 300
+
+
+@pytest.mark.parametrize("text", [GOOD + "---\nname: second\n", '{"name": "a"} xyz', '{"name": "a"}{"b": 1}'])
+def test_text_after_the_model_is_refused(text):
+    """Only the first document or JSON value was read; the rest was silently dropped."""
+    with pytest.raises(deploydyn.InputError, match="a second document starts here"):
+        deploydyn.loads(text, source_name="two.yaml")
+
+
+def test_name_not_utf8_is_refused_at_load(tmp_path):
+    """A Latin-1 name loaded, then Model.name raised UnicodeDecodeError and the run died
+    writing summary.json."""
+    model_file = tmp_path / "latin1.yaml"
+    model_file.write_bytes(b"name: caf\xe9\n" + GOOD.encode())
+    with pytest.raises(deploydyn.InputError) as error:
+        deploydyn.load(model_file)
+    assert error.value.line == 1
+    assert error.value.field == "name"
+    assert error.value.problem == "must be UTF-8 text, got 'caf\\xE9'"
+    assert str(error.value) == cli_error(model_file)
+
+
+def test_path_with_nul_is_refused_naming_the_argument():
+    with pytest.raises(ValueError, match=r"^load: path must not hold a NUL character"):
+        deploydyn.load("a\0b")

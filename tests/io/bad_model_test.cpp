@@ -4,10 +4,13 @@
 #include <fmt/format.h>
 #include <gtest/gtest.h>
 
+#include <filesystem>
+#include <fstream>
 #include <string>
 
 #include "deploydyn/io/input_error.hpp"
 #include "deploydyn/io/model_loader.hpp"
+#include "deploydyn/io/text_file.hpp"
 #include "support/cli.hpp"
 
 namespace deploydyn {
@@ -90,6 +93,10 @@ const BadModelCase kBadModels[] = {
      "times must increase strictly, got 1 after 2"},
     {"unknown_function_name.yaml", 7, "thermal.dT", "unknown function 'wram'"},
     {"yaml_syntax_error.yaml", 4, "", "YAML syntax"},
+    // What follows the model is not ignored: a second YAML document, a second JSON value, or text.
+    {"second_document.yaml", 4, "", "a second document starts here; a model file holds one document"},
+    {"json_second_value.json", 3, "", "a second document starts here; a model file holds one document (in JSON: one value)"},
+    {"json_trailing_text.json", 2, "", "a second document starts here"},
     {"units_not_si.yaml", 1, "units", "only SI is supported"},
     {"output_file_with_folder.yaml", 5, "output.history", "must be a plain file name"},
     {"empty.yaml", 0, "", "expected a mapping with nodes, materials and elements, got nothing"},
@@ -101,6 +108,14 @@ const BadModelCase kBadModels[] = {
      "applies to type newmark only, and the default type is generalized_alpha; give type: newmark"},
     {"adaptive_max_below_min.yaml", 5, "analysis.adaptive.max_step",
      "must not be below min_step = 0.001 s, got 0.0001"},
+    // 5 s / 1 ns: 5·10⁹ steps, where fixed steps may take 10⁸.
+    {"adaptive_min_step_too_many_steps.yaml", 7, "analysis.adaptive.min_step",
+     "allows 5e+09 steps up to end = 5 s; at most 1e+08 are allowed, so min_step must be at least 5e-08 s, got 1e-09"},
+    // Latin-1 é: it would end up in summary.json, which holds UTF-8 only.
+    {"name_not_utf8.yaml", 1, "name", "must be UTF-8 text, got 'caf\\xE9 roof'"},
+    {"output_file_name_nul.yaml", 5, "output.history", "must not hold a NUL character (\\0)"},
+    {"output_file_name_too_long.yaml", 5, "output.history",
+     "must be at most 251 bytes long (a file name's 255, less the '.tmp' of the copy written first), got 304 bytes"},
     {"support_unknown_node.yaml", 5, "supports.0.node", "unknown node 'Z'; nodes are A, B"},
     {"duplicate_element.yaml", 5, "elements.1", "'1' is given twice"},
     {"driver_unknown_key.yaml", 5, "drivers.motor.extra", "unknown key 'extra'; allowed: type,"},
@@ -208,6 +223,114 @@ TEST(BadModel, HugeFileNamesTheLineOfItsMistake) {
   } catch (const InputError& error) {
     EXPECT_EQ(error.line(), last_line) << error.what();
     EXPECT_EQ(error.field(), "elements.last.area") << error.what();
+  }
+}
+
+// A model nested 10⁵ levels deep, as JSON or YAML (it overflowed the stack of check, run and
+// study): every command refuses it with exit code 2, not a signal, and a short message that
+// names the file, the line and the limit.
+TEST(BadModel, DeeplyNestedFileIsRefusedByEveryCommand) {
+  testing::ScratchFolder folder("deep_model");
+  std::filesystem::create_directories(folder.path());
+  const std::string brackets = std::string(100'000, '[') + std::string(100'000, ']');
+  std::ofstream(folder.path() / "deep.json") << "{\"nodes\": " << brackets << "}\n";
+  std::ofstream(folder.path() / "deep.yaml") << "# deep\nnodes: " << brackets << "\n";
+  for (const std::string file : {"deep.json", "deep.yaml"}) {
+    const std::filesystem::path model = folder.path() / file;
+    const std::filesystem::path study = folder.path() / (file + "_study.yaml");
+    std::ofstream(study) << "model: " << file << "\ncases:\n  a: {thermal.dT: 1}\n";
+    const std::string out = (folder.path() / "out").string();
+    for (const std::string& command : {"check " + model.string(), "run " + model.string() + " --quiet --out " + out,
+                                      "study " + study.string() + " --quiet --out " + out}) {
+      const testing::CliOutcome o = testing::run_cli(command);
+      EXPECT_EQ(o.exit_code, 2) << command << "\n" << o.output.substr(0, 500);
+      EXPECT_NE(o.output.find(fmt::format("{}:{}:", file, file == "deep.json" ? 1 : 2)), std::string::npos)
+          << command << "\n" << o.output.substr(0, 500);
+      EXPECT_NE(o.output.find("nest deeper than 256 levels here; a model file may nest at most 256"), std::string::npos) << o.output.substr(0, 500);
+      EXPECT_LT(o.output.size(), 400u) << "the message must not echo the file";
+      EXPECT_FALSE(std::filesystem::exists(out)) << command;
+    }
+  }
+}
+
+// Messages quote at most an excerpt of the input: a text pasted as the whole file, as a key, as
+// a name or as a number is shown by its first 60 characters and "…" (whole, it was 4–11 kB).
+// (YAML's implicit keys have at most 1024 characters: the name has 300.)
+TEST(BadModel, MessagesQuoteLongInputAsAnExcerpt) {
+  const std::string long_text(10'000, 'x');
+  const std::string model = "nodes: {A: [0, 0], B: [1, 0]}\nmaterials: {steel: {E: 2.0e11}}\n"
+                            "elements: {1: {nodes: [A, B], area: 1.0e-4, material: steel, mass: 1}}\n";
+  const std::string x60 = std::string(60, 'x') + "…", digits60 = "1" + std::string(59, '0') + "…";
+  const std::pair<std::string, std::string> cases[] = {
+      {long_text + "\n", x60},
+      {model + "? " + long_text + "\n: 1\n", x60},  // an explicit key may be long
+      {model + "analysis: {type: " + long_text + "}\n", x60},
+      {model + "analysis: {end: 1" + std::string(10'000, '0') + "}\n", digits60},
+      {"nodes: {" + std::string(300, 'x') + ": [0, 0], B: [1, 0]}\nmaterials: {steel: {E: 2.0e11}}\nelements: {}\n",
+       x60}};
+  for (const auto& [text, shown] : cases) {
+    try {
+      load_model_from_string(text, "long.yaml");
+      FAIL() << "loaded: " << text.substr(0, 80);
+    } catch (const InputError& error) {
+      const std::string message = error.what();
+      EXPECT_LT(message.size(), 600u) << message.substr(0, 300);
+      EXPECT_NE(message.find(shown), std::string::npos) << message.substr(0, 300);
+    }
+  }
+}
+
+// A modal analysis solves once per time of `at`: a list longer than the cap is refused at load.
+TEST(BadModel, ModalTimesAreCapped) {
+  const std::string model = "nodes: {A: [0, 0], B: [1, 0]}\nmaterials: {steel: {E: 2.0e11}}\n"
+                            "elements: {1: {nodes: [A, B], area: 1.0e-4, material: steel, mass: 1}}\n"
+                            "supports: [{node: A}]\nanalysis:\n  type: modal\n  at: [";
+  const auto times = [](std::size_t n) {
+    std::string list = "0";
+    for (std::size_t i = 1; i < n; ++i) list += ", 0";
+    return list + "]\n";
+  };
+  EXPECT_EQ(load_model_from_string(model + times(100'000), "modal.yaml").analysis.modal.times_s.size(), 100'000u);
+  try {
+    load_model_from_string(model + times(100'001), "modal.yaml");
+    FAIL() << "100 001 modal times loaded";
+  } catch (const InputError& error) {
+    EXPECT_EQ(error.field(), "analysis.at") << error.what();
+    EXPECT_EQ(error.problem(), "expected a list of 1 to 100000 times (s), got 100001 item(s)") << error.what();
+  }
+}
+
+// A name becomes a CSV header, a JSON key and (a study case's) a folder name: at most 255 bytes.
+TEST(BadModel, NamesAreAtMostAFileNameLong) {
+  const auto with_node = [](const std::string& name) {
+    return "nodes: {" + name + ": [0, 0], B: [1, 0]}\nmaterials: {steel: {E: 2.0e11}}\n"
+           "elements: {1: {nodes: [" + name + ", B], area: 1.0e-4, material: steel, mass: 1}}\n";
+  };
+  EXPECT_EQ(load_model_from_string(with_node(std::string(255, 'n')), "names.yaml").nodes.size(), 2u);
+  try {
+    load_model_from_string(with_node(std::string(256, 'n')), "names.yaml");
+    FAIL() << "a 256-byte name loaded";
+  } catch (const InputError& error) {
+    EXPECT_EQ(error.line(), 1) << error.what();
+    EXPECT_NE(error.problem().find("a name must be at most 255 bytes (it may name a folder), got 256 bytes"),
+              std::string::npos)
+        << error.what();
+  }
+}
+
+// A file beyond 256 MiB is refused before it is read (a sparse file: no disk is used).
+TEST(BadModel, FileLargerThanTheLimitIsRefusedBeforeReading) {
+  testing::ScratchFolder folder("large_model");
+  std::filesystem::create_directories(folder.path());
+  const std::filesystem::path file = folder.path() / "large.yaml";
+  std::ofstream(file) << "nodes: {}\n";
+  std::filesystem::resize_file(file, io::kMaxInputFileBytes + 1);
+  try {
+    load_model(file);
+    FAIL() << "a file of 256 MiB and a byte loaded";
+  } catch (const InputError& error) {
+    EXPECT_NE(std::string(error.what()).find("is 256 MiB; input files may have at most 256 MiB"), std::string::npos)
+        << error.what();
   }
 }
 

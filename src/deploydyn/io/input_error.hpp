@@ -3,7 +3,8 @@
 // is allowed. what() is the full one-line message, e.g.
 //   model.yaml:17:5: elements.2.area: must be positive (m²), got -1
 // with control characters and bytes that are not UTF-8 escaped (io::printable): a message may
-// quote a binary file or an ANSI escape sequence, and must not play it on the terminal.
+// quote a binary file or an ANSI escape sequence, and must not play it on the terminal. Quoted
+// input is cut to an excerpt (io::excerpt) where the message is made; the field here.
 
 #include <stdexcept>
 #include <string>
@@ -35,7 +36,8 @@ class InputError : public std::runtime_error {
     if (line > 0) text.append(":").append(std::to_string(line));
     if (line > 0 && column > 0) text.append(":").append(std::to_string(column));
     text.append(": ");
-    if (!field.empty()) text.append(field).append(": ");
+    // A field is a few keys; a longer one holds a pasted text as a key.
+    if (!field.empty()) text.append(io::excerpt(field, 4 * io::kMaxExcerptChars)).append(": ");
     return io::printable(text.append(problem));
   }
 

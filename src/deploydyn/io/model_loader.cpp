@@ -40,6 +40,8 @@ constexpr std::size_t kUnbounded = std::numeric_limits<std::size_t>::max();
 // A step below 1 ns or a run of more than 1e8 steps is a typo in the file, not a choice.
 constexpr double kMinStep_s = 1e-9;
 constexpr double kMaxSteps = 1e8;
+// Each modal time is a static solve and an eigenproblem: more than this is a generated list gone wrong.
+constexpr std::size_t kMaxModalTimes = 100'000;
 // More initial load steps than this is a typo: a millionth of the thermal load is far below
 // what moves a node measurably, and each step costs at least one factorization.
 constexpr int kMaxLoadSteps = 1'000'000;
@@ -48,13 +50,15 @@ constexpr double kCoincidentShare = 1e-9;
 // A hinge-angle arm shorter across the axis than this share of its length leaves the angle
 // undefined (as constraints/driven_hinge_angle.cpp decides).
 constexpr double kArmAcrossAxisShare = 1e-8;
+// An output file is written as NAME.tmp first, then renamed (output/checked_file.cpp).
+constexpr std::size_t kMaxOutputFileNameBytes = io::kMaxFileNameBytes - std::string_view(".tmp").size();
 // output_interval / step is "whole" up to the rounding of decimal inputs such as 5e-3 / 1e-3.
 constexpr double kWholeMultipleTolerance = 1e-9;
 
 // Names head CSV columns and key JSON objects: see io::name_problem.
 void check_name(const std::string& name, const YamlValue& where, std::string_view kind) {
   if (const std::string problem = io::name_problem(name); !problem.empty()) {
-    where.fail(fmt::format("{} '{}': {}", kind, name, problem));
+    where.fail(fmt::format("{} '{}': {}", kind, io::excerpt(name), problem));
   }
 }
 
@@ -75,7 +79,7 @@ class NameIndex {
     const auto found = index_.find(name);
     if (found == index_.end()) {
       reference.fail(
-          fmt::format("unknown {} '{}'; {}s are {}", kind_, name, kind_, io::join_names(names_)));
+          fmt::format("unknown {} '{}'; {}s are {}", kind_, io::excerpt(name), kind_, io::join_names(names_)));
     }
     return found->second;
   }
@@ -94,6 +98,7 @@ class ModelReader {
   explicit ModelReader(const YamlValue& root) : root_(root) {}
 
   Model read() {
+    root_.expect_utf8();  // before any message could quote a stray byte
     if (!root_.is_map()) {
       root_.fail("expected a mapping with nodes, materials and elements, got " +
                  root_.description());
@@ -105,7 +110,7 @@ class ModelReader {
     }
     if (const auto units = root_.find("units"); units && units->text() != "SI") {
       units->fail(
-          fmt::format("only SI is supported (m, kg, s, N, Pa, °C), got '{}'", units->text()));
+          fmt::format("only SI is supported (m, kg, s, N, Pa, °C), got '{}'", io::excerpt(units->text())));
     }
     if (const auto functions = root_.find("functions")) read_functions(*functions);
     read_nodes(root_.at("nodes"));
@@ -150,14 +155,14 @@ class ModelReader {
         spec.fail(
             fmt::format("unknown function '{}'; entries of 'functions' may name the builtin "
                         "paper_eq23 but not each other",
-                        name));
+                        io::excerpt(name)));
       }
       if (const auto found = named->find(name); found != named->end()) return found->second;
       std::vector<std::string> known{std::string(kPaperEq23)};
       for (const auto& entry : *named) known.push_back(entry.first);
       const std::string nearest = io::did_you_mean(name, known);
       spec.fail(fmt::format(
-          "unknown function '{}'{}", name,
+          "unknown function '{}'{}", io::excerpt(name),
           nearest.empty()
               ? "; give a number, a mapping with 'type', or one of: " + io::join_names(known)
               : nearest));
@@ -699,7 +704,7 @@ class ModelReader {
       if (at->is_scalar()) {
         modal.times_s.push_back(at->number(Sign::non_negative, "s"));
       } else {
-        for (const YamlValue& t : at->items(1, kUnbounded, "times (s)")) {
+        for (const YamlValue& t : at->items(1, kMaxModalTimes, "times (s)")) {
           modal.times_s.push_back(t.number(Sign::non_negative, "s"));
         }
       }
@@ -797,10 +802,19 @@ class ModelReader {
     AdaptiveOptions& adaptive = model_.analysis.adaptive;
     adaptive.enabled = true;
     adaptive.tolerance_m = spec.number_or("tolerance", adaptive.tolerance_m, Sign::positive, "m");
-    adaptive.min_step_s = spec.number_or("min_step", adaptive.min_step_s, Sign::positive, "s");
+    // At most kMaxSteps steps, as with fixed steps: min_step is at least end / kMaxSteps, and
+    // that by default when larger than the usual 1 ns.
+    const double end_s = model_.analysis.end_time_s, fewest_steps_min_s = end_s / kMaxSteps;
+    adaptive.min_step_s = spec.number_or("min_step", std::max(adaptive.min_step_s, fewest_steps_min_s), Sign::positive, "s");
     adaptive.max_step_s = spec.number_or("max_step", adaptive.max_step_s, Sign::positive, "s");
     if (adaptive.min_step_s < kMinStep_s) {
       spec.at("min_step").fail(fmt::format("must be at least {} s, got {}", kMinStep_s, adaptive.min_step_s));
+    }
+    if (adaptive.min_step_s < fewest_steps_min_s) {
+      spec.at("min_step").fail(fmt::format("allows {:.3g} steps up to end = {} s; at most {:g} are allowed, so "
+                                           "min_step must be at least {:g} s, got {}",
+                                           end_s / adaptive.min_step_s, end_s, kMaxSteps, fewest_steps_min_s,
+                                           adaptive.min_step_s));
     }
     if (adaptive.max_step_s > 0.0 && adaptive.max_step_s < adaptive.min_step_s) {
       spec.at("max_step").fail(fmt::format("must not be below min_step = {} s, got {}",
@@ -872,7 +886,7 @@ class ModelReader {
       for (const YamlValue& item : list_or_word(*value, "quantity names")) {
         const std::string family = item.text();
         if (std::find(families.begin(), families.end(), family) == families.end()) {
-          item.fail(fmt::format("unknown quantity '{}'{}; this model's are {}", family,
+          item.fail(fmt::format("unknown quantity '{}'{}; this model's are {}", io::excerpt(family),
                                 io::did_you_mean(family, families), fmt::join(families, ", ")));
         }
         select.quantities.push_back(family);
@@ -899,7 +913,7 @@ class ModelReader {
         item.fail(fmt::format("'{}' stands alone: give it as the only entry, or list {} names", text, kind));
       }
       if (!word && std::none_of(names.begin(), names.end(), [&](const std::string& n) { return name_matches(text, n); })) {
-        item.fail(fmt::format("'{}' matches no {}{}; give {} names, patterns with * or ?, or {}", text, kind,
+        item.fail(fmt::format("'{}' matches no {}{}; give {} names, patterns with * or ?, or {}", io::excerpt(text), kind,
                               io::did_you_mean(text, names), kind, fmt::join(words, ", ")));
       }
       out.push_back(text);
@@ -907,12 +921,19 @@ class ModelReader {
     return out;
   }
 
-  // Output goes into the run's output folder, so only a plain name makes sense.
+  // Output goes into the run's output folder, so only a plain name makes sense; and one the file
+  // system takes, checked here rather than when the run writes it.
   static std::string file_name(const YamlValue& value) {
     const std::string name = value.text();
     if (name.empty() || name == "." || name == ".." ||
         name.find_first_of("/\\") != std::string::npos) {
-      value.fail(fmt::format("must be a plain file name without folders, got '{}'", name));
+      value.fail(fmt::format("must be a plain file name without folders, got '{}'", io::excerpt(name)));
+    }
+    if (name.find('\0') != std::string::npos) value.fail("must not hold a NUL character (\\0)");
+    if (name.size() > kMaxOutputFileNameBytes) {
+      value.fail(fmt::format("must be at most {} bytes long (a file name's {}, less the '.tmp' of the copy "
+                             "written first), got {} bytes",
+                             kMaxOutputFileNameBytes, io::kMaxFileNameBytes, name.size()));
     }
     return name;
   }

@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cerrno>
 #include <cstring>
 #include <fstream>
@@ -69,6 +70,24 @@ std::string read_input_file(const std::filesystem::path& file) {
   return content;
 }
 
+bool is_utf8(std::string_view text) {
+  for (std::size_t i = 0; i < text.size();) {
+    const std::size_t n = utf8_length(text, i);
+    if (n == 0) return false;
+    i += n;
+  }
+  return true;
+}
+
+std::string excerpt(std::string_view text, std::size_t max_chars) {
+  std::size_t end = 0;
+  for (std::size_t n_chars = 0; end < text.size() && n_chars < max_chars; ++n_chars) {
+    end += std::max<std::size_t>(utf8_length(text, end), 1);  // a stray byte counts as one
+  }
+  if (end >= text.size()) return std::string(text);
+  return std::string(text.substr(0, end)) + "…";
+}
+
 std::string printable(std::string_view text) {
   std::string out;
   out.reserve(text.size());
@@ -97,6 +116,10 @@ std::string printable(std::string_view text) {
 
 std::string name_problem(std::string_view name) {
   if (name.empty()) return "a name must not be empty";
+  if (name.size() > kMaxFileNameBytes) {
+    return fmt::format("a name must be at most {} bytes (it may name a folder), got {} bytes", kMaxFileNameBytes,
+                       name.size());
+  }
   for (std::size_t i = 0; i < name.size();) {
     const std::size_t n = utf8_length(name, i);
     const auto lead = static_cast<unsigned char>(name[i]);

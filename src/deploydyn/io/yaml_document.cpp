@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 #include <simdjson.h>
+#include <yaml-cpp/depthguard.h>
 #include <yaml-cpp/yaml.h>
 #include <yaml.h>
 
@@ -19,9 +20,32 @@ bool plain_null(std::string_view text) {
 }
 
 YamlMark mark_of(const yaml_mark_t& mark) { return {static_cast<int>(mark.line), static_cast<int>(mark.column)}; }
+YamlMark mark_of(const YAML::Mark& mark) { return mark.is_null() ? YamlMark{} : YamlMark{mark.line, mark.column}; }
 
-// Nesting beyond this is left to yaml-cpp (io/yaml_document.cpp, Builder::open).
-constexpr std::size_t kMaxDepth = 1000;
+// A container that opens at kMaxNestingDepth: refused before the readers recurse into it.
+YamlSyntaxError too_deep(YamlMark mark) {
+  return {fmt::format("lists and mappings nest deeper than {} levels here; a model file may nest at most {}",
+                      kMaxNestingDepth, kMaxNestingDepth),
+          mark};
+}
+
+// Where content starts at or after `from`, past blanks and YAML comments; text.size() if nowhere.
+std::size_t next_content(std::string_view text, std::size_t from) {
+  for (std::size_t i = from; i < text.size(); ++i) {
+    if (text[i] == '#') {
+      i = text.find('\n', i);
+      if (i == std::string_view::npos) return text.size();
+    } else if (text[i] != ' ' && text[i] != '\t' && text[i] != '\r' && text[i] != '\n') {
+      return i;
+    }
+  }
+  return text.size();
+}
+
+// A second document (after `---`): a model file holds one.
+YamlSyntaxError second_document(YamlMark mark) {
+  return {"a second document starts here; a model file holds one document (in JSON: one value)", mark};
+}
 
 // An alias inside the node its anchor names: a tree that contains itself.
 YamlSyntaxError cycle(const std::string& anchor, YamlMark mark) {
@@ -146,11 +170,13 @@ class YamlDocument::Builder {
           add(anchored->second, {});
           break;
         }
-        case YAML_DOCUMENT_END_EVENT:
         case YAML_STREAM_END_EVENT:
-          done = true;  // as yaml-cpp's Load: the first document only
+          done = true;
           break;
         case YAML_DOCUMENT_START_EVENT:
+          // Read on to the end of the text: what follows the first document is not ignored. Seen
+          // here, before its content, which yaml-cpp would read after a LibYAML failure.
+          if (have_root) throw second_document(mark_of(event.start_mark));
           have_root = true;
           break;
         default:
@@ -188,9 +214,7 @@ class YamlDocument::Builder {
   }
 
   void open(YamlKind kind, YamlMark mark, std::string anchor) {
-    // Deeper than any model: left to yaml-cpp, which refuses beyond its own limit (and whose
-    // tree the recursive readers then walk within the stack).
-    if (open_.size() >= kMaxDepth) throw LibyamlRefused{};
+    if (open_.size() >= kMaxNestingDepth) throw too_deep(mark);
     // Its parent is set by add() when it closes, at the same place among its siblings.
     open_.push_back({document_.add_node(kind, mark), stack_.size(), std::move(anchor)});
   }
@@ -217,11 +241,13 @@ class YamlDocument::JsonReader {
  public:
   JsonReader(YamlDocument& document, const char* text) : document_(document), scanned_(text) {}
 
-  Id read(simdjson::ondemand::value value) {
+  // `depth`: the containers `value` is in. Each level is a call: the limit keeps the stack.
+  Id read(simdjson::ondemand::value value, std::size_t depth = 0) {
     using simdjson::ondemand::json_type;
     const json_type type = value.type();
     const std::string_view token = value.raw_json_token();
     const YamlMark mark = mark_at(token.data());
+    if ((type == json_type::object || type == json_type::array) && depth >= kMaxNestingDepth) throw too_deep(mark);
     switch (type) {
       case json_type::object: {
         const Id node = document_.add_node(YamlKind::map, mark);
@@ -232,7 +258,7 @@ class YamlDocument::JsonReader {
           const char* key_at = field.key().raw() - 1;  // its opening quote
           const std::string_view key = field.unescaped_key();
           stack_.push_back(document_.add_scalar_at(key, mark_at(key_at)));
-          const Id child = read(field.value());
+          const Id child = read(field.value(), depth + 1);
           stack_.push_back(child);
         }
         return close(node, first);
@@ -242,7 +268,7 @@ class YamlDocument::JsonReader {
         const std::size_t first = stack_.size();
         simdjson::ondemand::array array = value.get_array();
         for (auto item : array) {
-          const Id child = read(item.value());
+          const Id child = read(item.value(), depth + 1);
           stack_.push_back(child);
         }
         return close(node, first);
@@ -267,6 +293,7 @@ class YamlDocument::JsonReader {
   }
 
   // Places come in the order of the text: count lines and characters from the last one.
+ public:
   YamlMark mark_at(const char* at) {
     for (; scanned_ < at; ++scanned_) {
       const auto byte = static_cast<unsigned char>(*scanned_);
@@ -280,6 +307,8 @@ class YamlDocument::JsonReader {
     return {line_, column_};
   }
 
+
+ private:
   YamlDocument& document_;
   const char* scanned_;  // marks are counted up to here
   int line_ = 0, column_ = 0;
@@ -297,8 +326,15 @@ std::optional<YamlDocument> YamlDocument::parse_json(std::string_view text) {
     simdjson::ondemand::document json = parser.iterate(padded);
     JsonReader reader(document, padded.data());
     document.root_ = reader.read(json.get_value());
-    // More after the first value: not JSON (LibYAML then says what it is).
-    if (json.current_location().error() != simdjson::OUT_OF_BOUNDS) return std::nullopt;
+    const auto after = json.current_location();
+    if (after.error() != simdjson::OUT_OF_BOUNDS) {
+      // More after the value than YAML comments: a second value or text, refused here (LibYAML
+      // refuses it too, and yaml-cpp, which reads what LibYAML refuses, would drop it).
+      const std::size_t at = static_cast<std::size_t>(after.value_unsafe() - padded.data());
+      if (const std::size_t more = next_content(text, at); more < text.size()) {
+        throw second_document(reader.mark_at(padded.data() + more));
+      }
+    }
   } catch (const simdjson::simdjson_error&) {
     return std::nullopt;
   }
@@ -346,6 +382,7 @@ class YamlDocument::YamlCppReader {
         return document_.add_scalar_at(node.Scalar(), mark);
       case YAML::NodeType::Sequence:
       case YAML::NodeType::Map: {
+        if (ancestors_.size() >= kMaxNestingDepth) throw too_deep(mark);
         std::vector<Id> children;
         ancestors_.push_back(node);
         for (const auto& entry : node) {
@@ -371,11 +408,15 @@ class YamlDocument::YamlCppReader {
 };
 
 YamlDocument YamlDocument::parse_with_yaml_cpp(std::string_view text) {
+  // The first document only: YAML::LoadAll, which would see a second, loops forever on some
+  // text after the first (found by the fuzzer). LibYAML, which reads first, refuses a second.
   YAML::Node root;
   try {
     root = YAML::Load(std::string(text));
+  } catch (const YAML::DeepRecursion& error) {
+    throw too_deep(mark_of(error.mark));  // yaml-cpp's own message is "bad file"
   } catch (const YAML::ParserException& error) {
-    throw YamlSyntaxError{error.msg, error.mark.is_null() ? YamlMark{} : YamlMark{error.mark.line, error.mark.column}};
+    throw YamlSyntaxError{error.msg, mark_of(error.mark)};
   }
   YamlDocument document;
   document.root_ = YamlCppReader(document, 16 * text.size() + 64).copy(root);

@@ -10,6 +10,7 @@
 // the anchored node itself; an alias inside the node it names is refused (a cycle).
 // The --set overrides edit a document: the nodes they make have no place in the file.
 
+#include <cstddef>
 #include <cstdint>
 #include <optional>
 #include <span>
@@ -27,6 +28,12 @@ struct YamlMark {
 
 enum class YamlKind : std::uint8_t { null, scalar, sequence, map };
 
+// Lists and mappings inside each other deeper than this are refused, in YAML and JSON alike: a
+// model nests about six levels, and the code that walks the tree recurses once per level.
+// yaml-cpp (the fallback parser) stops near 500 levels with "bad file"; 256 keeps every parser
+// below that, so that all refuse at the same place with the same message.
+inline constexpr std::size_t kMaxNestingDepth = 256;
+
 // The parser's own message when a text is not YAML, at its place.
 struct YamlSyntaxError {
   std::string message;
@@ -37,21 +44,25 @@ class YamlDocument {
  public:
   using Id = std::uint32_t;
 
-  // The first document of `text`; an empty text is a null root. Throws YamlSyntaxError with
+  // The one document of `text`; an empty text is a null root. Throws YamlSyntaxError with
   // yaml-cpp's message when it is not YAML (LibYAML tells that it is not; yaml-cpp, which
-  // the messages have always come from, says why). A text that starts with '{' is first read
-  // as JSON with simdjson (ten times LibYAML's speed); what simdjson refuses, LibYAML reads.
+  // the messages have always come from, says why), when LibYAML finds a second document, or
+  // when it nests deeper than kMaxNestingDepth. A text that starts with '{' is first read as JSON
+  // with simdjson (ten times LibYAML's speed); what simdjson refuses, LibYAML reads.
   static YamlDocument parse(std::string_view text);
   // LibYAML alone (then yaml-cpp for what it refuses): never the JSON path.
   static YamlDocument parse_yaml(std::string_view text);
-  // JSON alone (simdjson): nullopt when it is not JSON. The same tree, texts and places as
-  // LibYAML gives for the same text (JSON is YAML).
+  // JSON alone (simdjson): nullopt when it is not JSON (or has more after its value). The same
+  // tree, texts and places as LibYAML gives for the same text (JSON is YAML). Throws
+  // YamlSyntaxError when it nests deeper than kMaxNestingDepth.
   static std::optional<YamlDocument> parse_json(std::string_view text);
   // The same tree through yaml-cpp: the reference parse, and the one for the rare text that
-  // LibYAML rejects and yaml-cpp reads.
+  // LibYAML rejects and yaml-cpp reads. Its first document only (see parse).
   static YamlDocument parse_with_yaml_cpp(std::string_view text);
 
   Id root() const { return root_; }
+  // Nodes are numbered 0 to node_count() − 1 (replaced ones included).
+  std::size_t node_count() const { return nodes_.size(); }
   YamlKind kind(Id node) const { return nodes_[node].kind; }
   YamlMark mark(Id node) const { return {nodes_[node].line, nodes_[node].column}; }
   // The dotted path from the root, e.g. "elements.2.area" (keys by name, items by index); an

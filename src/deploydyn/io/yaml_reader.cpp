@@ -12,6 +12,7 @@
 #include <unordered_set>
 
 #include "deploydyn/io/input_error.hpp"
+#include "deploydyn/io/text_file.hpp"
 
 namespace deploydyn::io {
 namespace {
@@ -42,6 +43,8 @@ std::optional<std::string> closest(std::string_view word,
   std::optional<std::string> best;
   std::size_t best_distance = close_enough + 1;
   for (const auto& candidate : candidates) {
+    // Lengths further apart than that are further in edits (and a pasted text costs no table).
+    if (word.size() > candidate.size() + close_enough || candidate.size() > word.size() + close_enough) continue;
     const std::size_t distance = edit_distance(word, candidate);
     if (distance < best_distance) {
       best = candidate;
@@ -110,7 +113,7 @@ bool read_number(std::string_view text, double& value) {
 std::string describe(const YamlDocument& document, YamlDocument::Id node) {
   switch (document.kind(node)) {
     case YamlKind::scalar:
-      return fmt::format("'{}'", document.scalar(node));
+      return fmt::format("'{}'", excerpt(document.scalar(node)));
     case YamlKind::sequence:
       return "a list";
     case YamlKind::map:
@@ -168,6 +171,34 @@ std::string YamlValue::child_path(std::string_view key) const {
   return here.empty() ? std::string(key) : fmt::format("{}.{}", here, key);
 }
 
+void YamlValue::expect_utf8() const {
+  const YamlDocument& document = *document_;
+  std::vector<bool> seen(document.node_count());  // an alias's node is checked once
+  std::vector<YamlDocument::Id> pending{node_};
+  while (!pending.empty()) {
+    const YamlDocument::Id node = pending.back();
+    pending.pop_back();
+    if (seen[node]) continue;
+    seen[node] = true;
+    const std::string_view text = document.scalar(node);
+    if (!is_utf8(text)) {
+      // Escaped here as well as in the message: the Python error's field and problem are str.
+      source_->fail(document.mark(node), printable(document.path(node)),
+                    fmt::format("must be UTF-8 text, got '{}'", printable(excerpt(text))));
+    }
+    // Children pushed last to first, so that the first in the file is checked first.
+    const bool map = document.kind(node) == YamlKind::map;
+    for (std::size_t i = document.size(node); i-- > 0;) {
+      if (map) {
+        pending.push_back(document.value(node, i));
+        pending.push_back(document.key(node, i));
+      } else {
+        pending.push_back(document.item(node, i));
+      }
+    }
+  }
+}
+
 std::vector<std::pair<std::string, YamlValue>> YamlValue::entries() const {
   if (!is_map()) fail("expected a mapping (name: value, ...), got " + description());
   const YamlDocument& document = *document_;
@@ -181,7 +212,7 @@ std::vector<std::pair<std::string, YamlValue>> YamlValue::entries() const {
       source_->fail(document.mark(key_node), path(), "keys must be plain names, got " + describe(document, key_node));
     }
     if (!seen.insert(key).second) {
-      source_->fail(document.mark(key_node), child_path(key), fmt::format("'{}' is given twice", key));
+      source_->fail(document.mark(key_node), child_path(key), fmt::format("'{}' is given twice", excerpt(key)));
     }
     result.emplace_back(key, child(document.value(node_, i)));
   }
@@ -200,7 +231,7 @@ void YamlValue::expect_keys(std::span<const std::string_view> allowed) const {
     if (std::find(allowed.begin(), allowed.end(), key) != allowed.end()) continue;
     // Report at the key itself: its value may be lines below.
     source_->fail(document_->mark(key_node), child_path(key),
-                  fmt::format("unknown key '{}'{}", key, hint(key, to_strings(allowed))));
+                  fmt::format("unknown key '{}'{}", excerpt(key), hint(key, to_strings(allowed))));
   }
 }
 
@@ -262,31 +293,31 @@ double YamlValue::number(Sign sign, std::string_view unit) const {
   if (!is_scalar() || !read_number(document_->scalar(node_), value)) {
     fail(fmt::format("expected a number{}, got {}", in_unit, description()));
   }
-  const std::string_view scalar = document_->scalar(node_);
-  if (!std::isfinite(value)) fail(fmt::format("must be a finite number, got {}", scalar));
+  const auto shown = [&] { return excerpt(document_->scalar(node_)); };  // made for a message only
+  if (!std::isfinite(value)) fail(fmt::format("must be a finite number, got {}", shown()));
   // Beyond these, products in the solver (m·a, EA·ε, K/M) overflow or lose all digits: a
   // mass of 1e308 kg or an area of 1e-300 m² is a typo, not a structure.
   constexpr double kLargest = 1e100, kSmallest = 1e-100;
   if (std::abs(value) > kLargest || (value != 0.0 && std::abs(value) < kSmallest)) {
     fail(fmt::format("must be 0 or between {:g} and {:g} in magnitude{}, got {}", kSmallest, kLargest,
-                     unit.empty() ? " (SI units)" : in_unit, scalar));
+                     unit.empty() ? " (SI units)" : in_unit, shown()));
   }
   if (sign == Sign::positive && !(value > 0.0)) {
-    fail(fmt::format("must be positive{}, got {}", in_unit, scalar));
+    fail(fmt::format("must be positive{}, got {}", in_unit, shown()));
   }
   if (sign == Sign::non_negative && value < 0.0) {
-    fail(fmt::format("must not be negative{}, got {}", in_unit, scalar));
+    fail(fmt::format("must not be negative{}, got {}", in_unit, shown()));
   }
   return value;
 }
 
 int YamlValue::integer(int min) const {
   const double value = number();
-  const std::string_view scalar = document_->scalar(node_);
-  if (value != std::floor(value)) fail(fmt::format("expected an integer, got {}", scalar));
-  if (value < min) fail(fmt::format("must be at least {}, got {}", min, scalar));
+  const auto shown = [&] { return excerpt(document_->scalar(node_)); };  // made for a message only
+  if (value != std::floor(value)) fail(fmt::format("expected an integer, got {}", shown()));
+  if (value < min) fail(fmt::format("must be at least {}, got {}", min, shown()));
   if (value > std::numeric_limits<int>::max()) {
-    fail(fmt::format("must be at most {}, got {}", std::numeric_limits<int>::max(), scalar));
+    fail(fmt::format("must be at most {}, got {}", std::numeric_limits<int>::max(), shown()));
   }
   return static_cast<int>(value);
 }
@@ -307,7 +338,7 @@ std::size_t YamlValue::choice(std::span<const std::string_view> allowed) const {
   const std::string given = text();
   const auto match = std::find(allowed.begin(), allowed.end(), given);
   if (match == allowed.end()) {
-    fail(fmt::format("must be one of {}, got '{}'{}", join_all(allowed), given,
+    fail(fmt::format("must be one of {}, got '{}'{}", join_all(allowed), excerpt(given),
                      did_you_mean(given, to_strings(allowed))));
   }
   return static_cast<std::size_t>(match - allowed.begin());

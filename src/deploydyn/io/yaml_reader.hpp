@@ -67,6 +67,10 @@ class YamlValue {
   // An error about `key` of this mapping that has no node of its own (e.g. it is missing).
   [[noreturn]] void fail_key(std::string_view key, const std::string& problem) const;
 
+  // Fails at the first text, key or value, at or below this node that is not UTF-8: names and
+  // texts end up in JSON and CSV results, which hold UTF-8 only.
+  void expect_utf8() const;
+
   // Mappings. Keys must be unique; expect_keys also rejects keys not in `allowed`.
   void expect_keys(std::initializer_list<std::string_view> allowed) const;
   void expect_keys(std::span<const std::string_view> allowed) const;
