@@ -10,6 +10,7 @@
 
 #include <benchmark/benchmark.h>
 #include <signal.h>
+#include <spawn.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -29,11 +30,10 @@ class BusyProcess {
  public:
   explicit BusyProcess(bool start) {
     if (!start) return;
-    pid_ = fork();
-    if (pid_ == 0) {
-      volatile unsigned long spin = 0;
-      for (;;) spin = spin + 1;
-    }
+    // A program of its own (not a fork of this one, whose large heap it would share copy on write).
+    static char sh[] = "/bin/sh", dash_c[] = "-c", loop[] = "while :; do :; done";
+    char* argv[] = {sh, dash_c, loop, nullptr};
+    if (posix_spawn(&pid_, "/bin/sh", nullptr, nullptr, argv, environ) != 0) pid_ = -1;
   }
   ~BusyProcess() {
     if (pid_ <= 0) return;

@@ -11,7 +11,9 @@
 #include <vector>
 
 #include "deploydyn/util/helper_thread.hpp"
+#include "deploydyn/util/run_threads.hpp"
 #include "deploydyn/util/side_by_side.hpp"
+#include "deploydyn/util/two_core_choice.hpp"
 
 namespace deploydyn {
 namespace {
@@ -87,6 +89,42 @@ TEST(HelperThread, AnOwnerTakesBackWhatTheHelperHasNotStarted) {
   }
   EXPECT_EQ(ran, 1000);
   EXPECT_LT(by_helper, 1000) << "the owner took back the pieces the helper had not started";
+}
+
+// TwoCoreChoice samples both ways, settles on the faster, tries the other one call in 64, and
+// follows a change of load: here each way's wall time is given, two cores taking 3 ms against
+// 1 ms on one core, then the reverse after 10 trial intervals.
+TEST(TwoCoreChoice, SettlesOnTheFasterWayAndFollowsAChangeOfLoad) {
+  TwoCoreChoice choice;
+  constexpr long every = TwoCoreChoice::kTryOtherEvery;
+  const long change = 10 * every, end = 20 * every;
+  long two_before = 0, two_after_settling = 0;
+  for (long k = 0; k < end; ++k) {
+    const bool two = choice.next_is_two_cores();
+    const bool loaded = k < change;  // two cores slower while another process holds a core
+    choice.record(two, two == loaded ? 3e-3 : 1e-3);
+    if (k >= 6 && k < change) two_before += two;
+    if (k >= change + 4 * every) two_after_settling += two;
+  }
+  EXPECT_EQ(choice.calls()[0] + choice.calls()[1], end);
+  EXPECT_LE(two_before, (change - 6) / every + 1) << "two cores only tried, one call in " << every;
+  EXPECT_GE(two_before, (change - 6) / every - 1);
+  const long settled = end - change - 4 * every;
+  EXPECT_GE(two_after_settling, settled - settled / every - 1) << "two cores taken once they are faster";
+}
+
+// Both ways run each piece once and on one core (or not worth trying) nothing is timed.
+TEST(TwoCoreChoice, RunsEachPieceOnceEitherWay) {
+  TwoCoreChoice choice;
+  int first = 0, second = 0;
+  for (int k = 0; k < 100; ++k) choice.run(true, [&] { ++first; }, [&] { ++second; });
+  EXPECT_EQ(first, 100);
+  EXPECT_EQ(second, 100);
+  EXPECT_EQ(choice.calls()[0] + choice.calls()[1], run_threads() > 1 ? 100 : 0);
+  TwoCoreChoice small;
+  small.run(false, [&] { ++first; }, [&] { ++second; });
+  EXPECT_EQ(small.calls()[0] + small.calls()[1], 0);
+  EXPECT_EQ(first + second, 202);
 }
 
 }  // namespace

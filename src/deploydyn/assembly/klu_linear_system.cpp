@@ -8,8 +8,7 @@
 #include <vector>
 
 #include "deploydyn/assembly/metis_ordering.hpp"
-#include "deploydyn/util/run_threads.hpp"
-#include "deploydyn/util/side_by_side.hpp"
+#include "deploydyn/util/two_core_choice.hpp"
 
 namespace deploydyn {
 namespace {
@@ -52,6 +51,7 @@ struct TwoDomainSolve {
   bool split = false;          // the last full factorization kept the domains apart
   std::vector<double> x;       // the permuted right-hand side
   std::vector<double> second_to_separator;  // the second domain's updates of the separator's rows
+  TwoCoreChoice two_cores;     // the domains side by side when that is faster
 };
 
 int two_domains_for_klu(int n, int* column_start, int* row_index, int* perm, klu_common* common) {
@@ -234,13 +234,12 @@ void KluLinearSystem::solve_two_domains(double* rhs) {
     }
   };
   std::fill(second_to_separator, second_to_separator + (n - separator), 0.0);
-  const bool two_cores = run_threads() > 1;
-  side_by_side(two_cores, [&] { forward(0, d.first, x + separator); },
-               [&] { forward(d.first, separator, second_to_separator); });
+  d.two_cores.run(true, [&] { forward(0, d.first, x + separator); },
+                 [&] { forward(d.first, separator, second_to_separator); });
   for (int k = separator; k < n; ++k) x[k] += second_to_separator[k - separator];
   forward(separator, n, x + separator);
   backward(separator, n);
-  side_by_side(two_cores, [&] { backward(0, d.first); }, [&] { backward(d.first, separator); });
+  d.two_cores.run(true, [&] { backward(0, d.first); }, [&] { backward(d.first, separator); });
   const int* column_order = klu_->symbolic->Q;
   for (int k = 0; k < n; ++k) rhs[column_order[k]] = x[k];
 }

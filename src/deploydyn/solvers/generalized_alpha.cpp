@@ -3,8 +3,7 @@
 #include <algorithm>
 #include <memory>
 
-#include "deploydyn/util/run_threads.hpp"
-#include "deploydyn/util/side_by_side.hpp"
+#include "deploydyn/util/two_core_choice.hpp"
 
 namespace deploydyn {
 namespace {
@@ -61,7 +60,7 @@ class GeneralizedAlphaEquations final : public DiscreteEquations {
     // residual is the same bit for bit. The split gives the cores about equal shares on the
     // 10⁵-bar roof (profile: inertia 5.7 % and constraints 5.1 % of a step against 8.5 % for the
     // internal forces).
-    side_by_side(q.size() >= kTwoCoreResidualDofs && run_threads() > 1, inertia_and_constraints, internal_forces);
+    two_cores_.run(q.size() >= kTwoCoreResidualDofs, inertia_and_constraints, internal_forces);
     r = inertia_ + internal_ - external_ + reaction_;
     if (rate_forces_) {  // dampers, friction: f_d(q, q̇(q)) at the step's end
       rates(q);
@@ -95,6 +94,7 @@ class GeneralizedAlphaEquations final : public DiscreteEquations {
   double stiffness_scale_ = 0.0;   // max diag K at the first step (N/m); 0: not yet known
   Eigen::VectorXd predicted_, history_, external_, acceleration_, inertia_, internal_, reaction_;
   Eigen::VectorXd predicted_rates_, rates_, rate_force_;
+  TwoCoreChoice two_cores_;  // the residual's two halves side by side when that is faster
 };
 
 GeneralizedAlphaCoefficients GeneralizedAlphaCoefficients::from(const IntegratorOptions& o) {
