@@ -544,6 +544,12 @@ std::string YamlDocument::json_text(Id node) const {
 
 void YamlDocument::write_json(Id node, int depth, std::string& out) const {
   const std::string indent(static_cast<std::size_t>(2 * (depth + 1)), ' ');
+  // Before item i: ", " on one line, else a new line at this depth's indent.
+  const auto separate = [&](std::size_t i, bool flat) {
+    if (i > 0) out += ',';
+    if (!flat) out.append("\n").append(indent);
+    else if (i > 0) out += ' ';
+  };
   switch (kind(node)) {
     case YamlKind::scalar: {
       const std::string_view text = scalar(node);
@@ -559,10 +565,10 @@ void YamlDocument::write_json(Id node, int depth, std::string& out) const {
       for (std::size_t i = 0; i < size(node); ++i) flat = flat && kind(item(node, i)) < YamlKind::sequence;
       out += '[';
       for (std::size_t i = 0; i < size(node); ++i) {
-        out += i > 0 ? (flat ? ", " : ",\n" + indent) : (flat ? "" : "\n" + indent);
+        separate(i, flat);
         write_json(item(node, i), depth + 1, out);
       }
-      if (!flat && size(node) > 0) out += "\n" + indent.substr(2);
+      if (!flat && size(node) > 0) out.append("\n").append(indent, 2);
       out += ']';
       return;
     }
@@ -580,12 +586,12 @@ void YamlDocument::write_json(Id node, int depth, std::string& out) const {
       }
       out += '{';
       for (std::size_t i = 0; i < size(node); ++i) {
-        out += i > 0 ? (flat ? ", " : ",\n" + indent) : (flat ? "" : "\n" + indent);
+        separate(i, flat);
         write_json_string(scalar(key(node, i)), out);
         out += ": ";
         write_json(value(node, i), depth + 1, out);
       }
-      if (!flat && size(node) > 0) out += "\n" + indent.substr(2);
+      if (!flat && size(node) > 0) out.append("\n").append(indent, 2);
       out += '}';
       return;
     }
