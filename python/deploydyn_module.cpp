@@ -457,6 +457,14 @@ py::dict continuation_of(const LoadedModel& loaded, const std::string& parameter
 // and per time an empty string or why it failed (its rows are then NaN).
 py::dict modes_at(const LoadedModel& loaded, int n_modes, const std::vector<double>& times) {
   const Assembler assembler(loaded.model);  // std::invalid_argument → ValueError
+  // Checked before the arrays below are allocated for n_modes (natural_modes checks too late).
+  const int n_free = assembler.n_dofs() - assembler.n_equations();
+  if (n_modes > n_free) {
+    throw std::invalid_argument("Model.modes: count must be at most " + std::to_string(n_free) +
+                                " (the model has " + std::to_string(assembler.n_dofs()) +
+                                " coordinates and " + std::to_string(assembler.n_equations()) +
+                                " constraint equations), got " + std::to_string(n_modes));
+  }
   const auto n_t = static_cast<py::ssize_t>(times.size());
   const py::ssize_t n_dofs = assembler.n_dofs();
   py::array_t<double> omega2({n_t, static_cast<py::ssize_t>(n_modes)});

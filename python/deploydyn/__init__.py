@@ -89,6 +89,9 @@ class RunFailed(RuntimeError):
 # file").
 
 _INT_MAX = 2**31 - 1  # the C++ side's int
+# Times of one modal analysis, as the model file's analysis.at allows (docs/model-format.md,
+# "Input limits"): each is a static solve and an eigenproblem.
+_MAX_MODAL_TIMES = 100_000
 
 
 def _shown(value):
@@ -119,6 +122,14 @@ def _number(where, name, value):
     """`value`, checked to be a real number (int or float, numpy's too; not a bool)."""
     if not _is_number(value):
         raise TypeError(f"{where}: {name} must be a number (int or float), not {_shown(value)}")
+    return value
+
+
+def _finite(where, name, value):
+    """A number that is not NaN or infinite, as a float."""
+    value = float(_number(where, name, value))
+    if not math.isfinite(value):
+        raise ValueError(f"{where}: {name} must be a finite number, got {value}")
     return value
 
 
@@ -415,11 +426,11 @@ class Model:
         "axial_forces", "description"), "end" and "message" (how it ended)."""
         where = "Model.continuation"
         parameter = _text(where, "parameter", parameter)
-        end = float(_number(where, "end", end))
-        start = float(_number(where, "start", start))
+        end = _finite(where, "end", end)
+        start = _finite(where, "start", start)
         eigenvalues = _count(where, "eigenvalues", eigenvalues, minimum=0)
         max_steps = _count(where, "max_steps", max_steps)
-        time = float(_number(where, "time", time))
+        time = _finite(where, "time", time)
         if not isinstance(switch_branch, bool):
             raise TypeError(f"{where}: switch_branch must be a bool, not {_shown(switch_branch)}")
         raw = self._core.continuation(parameter, start, end, eigenvalues, max_steps, time, switch_branch)
@@ -436,9 +447,19 @@ class Model:
         computes them. Returns a dict of numpy arrays: "times" (s), "omega2" (rad²/s², times ×
         count, ascending; < 0: unstable), "frequency" (Hz, NaN where ω² < 0), "modes" (times ×
         coordinates × count, M-orthonormal), "coordinates" (labels such as "x.B"), "failures"
-        (per time "" or why no modes were found; those rows are NaN)."""
-        count = _count("Model.modes", "count", count)
-        times = [float(t) for t in _numbers("Model.modes", "at", [at] if _is_number(at) else at)]
+        (per time "" or why no modes were found; those rows are NaN). count: 1 to the model's
+        coordinates − constraint equations; at: a time ≥ 0 or a list of 1 to 100 000 of them,
+        as the model file's analysis.at (ValueError beyond)."""
+        where = "Model.modes"
+        count = _count(where, "count", count)  # at most the free coordinates: checked by _core
+        times = _numbers(where, "at", [at] if _is_number(at) else at)
+        if not 1 <= len(times) <= _MAX_MODAL_TIMES:
+            raise ValueError(f"{where}: at must be a time or a list of 1 to {_MAX_MODAL_TIMES} "
+                             f"times (s), got {len(times)}")
+        for i, t in enumerate(times):
+            times[i] = _finite(where, f"at[{i}]", t)
+            if times[i] < 0:
+                raise ValueError(f"{where}: at[{i}] must be a time ≥ 0 (s), got {times[i]}")
         raw = self._core.modes(count, times)
         omega2 = np.asarray(raw["omega2"])
         with np.errstate(invalid="ignore"):
