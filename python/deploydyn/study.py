@@ -74,7 +74,7 @@ class _Mpi4pyChannel(_core.StudyChannel):
         self._comm.Free()
 
 
-def run_study(file, out=None, jobs=None, resume=False, comm=None):
+def run_study(file, out=None, jobs=None, resume=False, comm=None, stop=None):
     """Runs the study file `file` as `deploydyn study FILE` does: each case into its folder
     under `out` (default: the study file's `out`, else results/<study name>), then study.csv.
     `jobs`: cases at once in this process (default: the study's `jobs`; all at once alone, one
@@ -88,9 +88,15 @@ def run_study(file, out=None, jobs=None, resume=False, comm=None):
     study.csv that cannot be written raises OutputError; failed cases do not raise (their
     status says so), as the command's exit code 1. Over MPI, an error in any process, or a
     process that died (mpirun --enable-recovery), ends every process with MPI_Abort once what
-    could be written is written: study.json then tells what happened."""
+    could be written is written: study.json then tells what happened.
+
+    Ctrl-C (alone, not over MPI) stops the running cases within a fraction of a second, as
+    `stop` (a threading.Event, for a study in another thread) does once set: they end
+    "interrupted", the cases not started are listed as such, study.csv and study.json are
+    written, and the finished cases stay in their folders; then Ctrl-C raises
+    KeyboardInterrupt, `stop` returns the cases."""
     # The package's argument checks; imported here, as the package imports this module.
-    from deploydyn import _count, _path, _shown
+    from deploydyn import _count, _path, _shown, _stop
     where = "run_study"
     file = _path(where, "file", file)
     folder = None if out is None else _path(where, "out", out)
@@ -101,11 +107,12 @@ def run_study(file, out=None, jobs=None, resume=False, comm=None):
     if comm is not None and not all(hasattr(comm, name) for name in ("Get_rank", "Get_size", "Dup")):
         raise TypeError(f"{where}: comm must be an mpi4py communicator (e.g. MPI.COMM_WORLD) or "
                         f"None, not {_shown(comm)}")
+    stop = _stop(where, stop)
     # A communicator of the study's own (collective: every process calls run_study), so that
     # the script's own messages cannot be taken for the study's.
     channel = _Mpi4pyChannel(comm.Dup()) if comm is not None and comm.Get_size() > 1 else None
     try:
-        cases = _core.run_study(file, folder, -1 if jobs is None else jobs, resume, channel)
+        cases = _core.run_study(file, folder, -1 if jobs is None else jobs, resume, channel, stop)
     except BaseException:
         # The other processes may be waiting for this one: end them all rather than hang, as
         # `deploydyn study` does (the error is printed first; mpirun exits non-zero).
