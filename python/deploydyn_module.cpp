@@ -21,10 +21,12 @@
 #include <chrono>
 #include <cstring>
 #include <filesystem>
+#include <future>
 #include <memory>
 #include <optional>
 #include <sstream>
 #include <string>
+#include <thread>
 #include <utility>
 #include <vector>
 
@@ -91,44 +93,94 @@ class MemorySink final : public RecordSink {
   Envelope envelope_;
 };
 
-// Lets Ctrl-C stop a run whose thread has released the GIL: every kCheckInterval the solver's
-// poll (called in every phase: each load step of the initial equilibrium, each time step) takes
-// the GIL and asks Python whether a signal arrived; if so the run stops at its next poll
-// (status "interrupted") and the KeyboardInterrupt is raised when it returns. The progress
-// callback (once per time step) checks too, for a solver that does not poll.
-class InterruptWatch {
+// Stops a long call within a fraction of a second: on Ctrl-C when it was called from Python's
+// main thread (Python runs signal handlers there only), and when the caller's `stop` object
+// (anything with is_set(), e.g. a threading.Event; None: none) is set, from any thread. The
+// work runs on a thread of its own while the caller's thread waits without the GIL and checks
+// every kCheckInterval, so the work needs no hook into Python: it only reads the stop flag
+// (RunControl::stop, ContinuationOptions::stop, StudyControl::stop) and ends "interrupted",
+// keeping what it computed. A KeyboardInterrupt is raised when the call returns; a stop by
+// the `stop` object is not an error: the call returns what it computed.
+class StopWatch {
  public:
   // Often enough that Ctrl-C acts within a fraction of a second; rarely enough that taking the
   // GIL costs nothing measurable.
   static constexpr std::chrono::milliseconds kCheckInterval{50};
 
-  RunControl control() {
+  explicit StopWatch(py::object stop_object = py::none()) : stop_object_(std::move(stop_object)) {}
+  StopWatch(const StopWatch&) = delete;
+  StopWatch& operator=(const StopWatch&) = delete;
+
+  const std::atomic<bool>* flag() const { return &stop_; }
+  RunControl control() const {
     RunControl control;
     control.stop = &stop_;
-    control.poll = [this] { check(); };
-    control.progress = [this](double) { check(); };
     return control;
   }
-  // Without the GIL, from the thread that runs the solver (the one that called the run: Python
-  // runs signal handlers only in the main thread, so a run in another thread is not stopped).
-  void check() {
-    using Clock = std::chrono::steady_clock;
-    constexpr Clock::rep kInterval =
-        std::chrono::duration_cast<Clock::duration>(kCheckInterval).count();
-    const Clock::rep now = Clock::now().time_since_epoch().count();
-    Clock::rep last = last_check_.load(std::memory_order_relaxed);
-    if (now - last < kInterval) return;
-    // Another thread's call won the race: it checks.
-    if (!last_check_.compare_exchange_strong(last, now, std::memory_order_relaxed)) return;
-    if (stop_.load()) return;
-    py::gil_scoped_acquire gil;
-    if (PyErr_CheckSignals() != 0) {
-      error_ = std::make_unique<py::error_already_set>();  // fetches and keeps the exception
-      stop_.store(true);
-    }
+
+  // With the GIL: runs work() to its end, setting the flag on a stop request; the work is
+  // expected to read it and end early.
+  template <class Work>
+  auto run(Work work) {
+    return call(std::move(work), /*abandon_on_stop=*/false);
+  }
+  // For work without a stop point and with nothing to undo (a model read or generated): on
+  // Ctrl-C it is left to finish in the background, its result discarded, and the call raises
+  // KeyboardInterrupt at once.
+  template <class Work>
+  auto run_or_abandon(Work work) {
+    return call(std::move(work), /*abandon_on_stop=*/true);
   }
 
-  // After the run, with the GIL held: re-raises what the signal handler raised, if anything.
+ private:
+  template <class Work>
+  auto call(Work work, bool abandon_on_stop) {
+    using Result = decltype(work());
+    // Shared with the worker thread, which outlives this call when abandoned.
+    auto task = std::make_shared<std::packaged_task<Result()>>(std::move(work));
+    std::future<Result> done = task->get_future();
+    std::thread worker([task] { (*task)(); });
+    bool abandoned = false;
+    {
+      py::gil_scoped_release release;
+      while (done.wait_for(kCheckInterval) != std::future_status::ready) {
+        py::gil_scoped_acquire gil;
+        if (check() && abandon_on_stop && error_) {
+          abandoned = true;
+          break;
+        }
+      }
+    }
+    if (abandoned) {
+      worker.detach();
+    } else {
+      worker.join();
+    }
+    rethrow();
+    return done.get();  // the work's own exception, if it threw
+  }
+
+  // With the GIL: true once a stop was asked for (and the flag set).
+  bool check() {
+    if (stop_.load()) return true;
+    if (PyErr_CheckSignals() != 0) {
+      error_ = std::make_unique<py::error_already_set>();  // fetches and keeps the exception
+    } else if (!stop_object_.is_none()) {
+      try {
+        // Truth as Python's `if`: only error_already_set can come out, never leaving the
+        // worker thread unjoined.
+        if (!py::bool_(stop_object_.attr("is_set")())) return false;
+      } catch (py::error_already_set& e) {
+        error_ = std::make_unique<py::error_already_set>(std::move(e));
+      }
+    } else {
+      return false;
+    }
+    stop_.store(true);
+    return true;
+  }
+
+  // Re-raises what the signal handler (or the stop object) raised, if anything.
   void rethrow() {
     if (error_) {
       error_->restore();
@@ -137,11 +189,8 @@ class InterruptWatch {
     }
   }
 
- private:
+  py::object stop_object_;
   std::atomic<bool> stop_{false};
-  // steady_clock ticks of the last check; atomic, in case poll and progress come from two threads.
-  std::atomic<std::chrono::steady_clock::rep> last_check_{
-      std::chrono::steady_clock::now().time_since_epoch().count()};
   std::unique_ptr<py::error_already_set> error_;
 };
 
@@ -154,21 +203,17 @@ py::dict report_dict(const RunReport& report) {
 
 // A modal analysis in memory, as run_in_memory: modes.csv's columns and rows
 // (output/modes_to_folder.hpp) in place of the history's.
-py::dict modes_in_memory(const LoadedModel& loaded) {
-  InterruptWatch watch;
+py::dict modes_in_memory(const LoadedModel& loaded, const py::object& stop) {
+  StopWatch watch(stop);
   std::vector<double> rows;
-  ModalRun run;
-  {
-    const RunControl control = watch.control();
-    py::gil_scoped_release release;
+  const ModalRun run = watch.run([&] {
     const Assembler assembler(loaded.model);  // std::invalid_argument → ValueError
     int n_frames = 0;
-    run = compute_modes(assembler, control, [&](const EquilibriumModes& at) {
+    return compute_modes(assembler, watch.control(), [&](const EquilibriumModes& at) {
       append_modes_rows(assembler, at, n_frames, rows);
       n_frames += at.modes.ok ? static_cast<int>(at.modes.omega2_rad2_s2.size()) : 0;
     });
-  }
-  watch.rethrow();
+  });
   const std::vector<std::string> columns = modes_columns(loaded.model);
   py::array_t<double> values({static_cast<py::ssize_t>(rows.size() / columns.size()),
                               static_cast<py::ssize_t>(columns.size())});
@@ -182,19 +227,15 @@ py::dict modes_in_memory(const LoadedModel& loaded) {
 
 // Runs in memory: history columns, the history as a (rows × columns) array, the summary JSON
 // text (exactly what summary.json would hold), status and message.
-py::dict run_in_memory(const LoadedModel& loaded) {
-  if (loaded.model.analysis.type == AnalysisType::modal) return modes_in_memory(loaded);
+py::dict run_in_memory(const LoadedModel& loaded, const py::object& stop) {
+  if (loaded.model.analysis.type == AnalysisType::modal) return modes_in_memory(loaded, stop);
   MemorySink sink(loaded.model);
   const std::vector<std::string>& columns = sink.columns();
-  InterruptWatch watch;
-  RunReport report;
-  {
-    const RunControl control = watch.control();
-    py::gil_scoped_release release;
+  StopWatch watch(stop);
+  const RunReport report = watch.run([&] {
     const Assembler assembler(loaded.model);  // std::invalid_argument → ValueError
-    report = run_analysis(assembler, sink, control);
-  }
-  watch.rethrow();
+    return run_analysis(assembler, sink, watch.control());
+  });
   py::array_t<double> values({static_cast<py::ssize_t>(sink.n_rows()),
                               static_cast<py::ssize_t>(columns.size())});
   std::copy(sink.values().begin(), sink.values().end(), values.mutable_data());
@@ -206,15 +247,10 @@ py::dict run_in_memory(const LoadedModel& loaded) {
 }
 
 // Runs into a result folder exactly as `deploydyn run --out folder` does.
-py::dict run_into_folder(const LoadedModel& loaded, const std::filesystem::path& folder) {
-  InterruptWatch watch;
-  RunReport report;
-  {
-    const RunControl control = watch.control();
-    py::gil_scoped_release release;
-    report = run_to_folder(loaded.model, folder, control);
-  }
-  watch.rethrow();
+py::dict run_into_folder(const LoadedModel& loaded, const std::filesystem::path& folder,
+                         const py::object& stop) {
+  StopWatch watch(stop);
+  const RunReport report = watch.run([&] { return run_to_folder(loaded.model, folder, watch.control()); });
   py::dict out = report_dict(report);
   // A modal run's table is modes.csv (output/modes_to_folder.hpp).
   out["history_file"] = folder / (loaded.model.analysis.type == AnalysisType::modal ? kModesFileName
@@ -384,7 +420,7 @@ py::dict analysis_info(const Model& model) {
 // from the model's initial state at μ = start.
 py::dict continuation_of(const LoadedModel& loaded, const std::string& parameter, double start,
                          double end, int n_eigenvalues, int max_steps, double time_s,
-                         bool switch_branch) {
+                         bool switch_branch, const py::object& stop) {
   const std::optional<PathParameter> path_parameter = kPathParameters.find(parameter);
   if (!path_parameter) {
     throw std::invalid_argument("continuation: parameter must be 'thermal', 'load' or 'driver', got '" +
@@ -401,13 +437,13 @@ py::dict continuation_of(const LoadedModel& loaded, const std::string& parameter
   options.switch_branch = switch_branch;
   options.newton = loaded.model.analysis.newton;
   validate(options);  // std::invalid_argument → ValueError
-  ContinuationResult result;
-  {
-    py::gil_scoped_release release;
+  StopWatch watch(stop);
+  options.stop = watch.flag();  // ends the path "stopped", keeping its points
+  const ContinuationResult result = watch.run([&] {
     const auto system = make_linear_system(assembler);
-    result = trace_path(assembler, options, *system, assembler.initial_coordinates(),
-                        Eigen::VectorXd::Zero(assembler.n_equations()));
-  }
+    return trace_path(assembler, options, *system, assembler.initial_coordinates(),
+                      Eigen::VectorXd::Zero(assembler.n_equations()));
+  });
   const auto n_points = static_cast<py::ssize_t>(result.points.size());
   py::array_t<double> mu(n_points), norm(n_points), q({n_points, static_cast<py::ssize_t>(assembler.n_dofs())});
   py::array_t<double> eigenvalues({n_points, static_cast<py::ssize_t>(std::max(n_eigenvalues, 0))});
@@ -455,23 +491,38 @@ py::dict continuation_of(const LoadedModel& loaded, const std::string& parameter
 // Natural modes about the static equilibrium at each time (solvers/modal_analysis.hpp):
 // times, ω² (times × modes), modes (times × coordinates × modes), the coordinates' labels,
 // and per time an empty string or why it failed (its rows are then NaN).
-py::dict modes_at(const LoadedModel& loaded, int n_modes, const std::vector<double>& times) {
+py::dict modes_at(const LoadedModel& loaded, int n_modes, const std::vector<double>& times,
+                  const py::object& stop) {
   const Assembler assembler(loaded.model);  // std::invalid_argument → ValueError
+  // Checked before the arrays below are allocated for n_modes (natural_modes checks too late).
+  const int n_free = assembler.n_dofs() - assembler.n_equations();
+  if (n_modes > n_free) {
+    throw std::invalid_argument("Model.modes: count must be at most " + std::to_string(n_free) +
+                                " (the model has " + std::to_string(assembler.n_dofs()) +
+                                " coordinates and " + std::to_string(assembler.n_equations()) +
+                                " constraint equations), got " + std::to_string(n_modes));
+  }
   const auto n_t = static_cast<py::ssize_t>(times.size());
   const py::ssize_t n_dofs = assembler.n_dofs();
   py::array_t<double> omega2({n_t, static_cast<py::ssize_t>(n_modes)});
   py::array_t<double> shapes({n_t, n_dofs, static_cast<py::ssize_t>(n_modes)});
   std::vector<std::string> failures(times.size());
-  {
-    auto w = omega2.mutable_unchecked<2>();
-    auto phi = shapes.mutable_unchecked<3>();
-    py::gil_scoped_release release;
+  auto w = omega2.mutable_unchecked<2>();
+  auto phi = shapes.mutable_unchecked<3>();
+  StopWatch watch(stop);
+  watch.run([&] {
     const auto system = make_linear_system(assembler);
     ModalOptions options;
     options.n_modes = n_modes;
+    const RunControl control = watch.control();
     for (py::ssize_t i = 0; i < n_t; ++i) {
-      // invalid_argument (too many modes) → ValueError
-      const ModalResult modes = modes_at_time(assembler, times[i], *system, options).modes;
+      // Stopped: the times not reached are failures too, their rows NaN.
+      ModalResult modes;
+      if (control.stop->load()) {
+        modes.message = "stopped before this time";
+      } else {
+        modes = modes_at_time(assembler, times[i], *system, options, control).modes;
+      }
       failures[i] = modes.ok ? "" : modes.message;
       for (py::ssize_t k = 0; k < n_modes; ++k) {
         w(i, k) = modes.ok ? modes.omega2_rad2_s2[k] : std::numeric_limits<double>::quiet_NaN();
@@ -480,7 +531,7 @@ py::dict modes_at(const LoadedModel& loaded, int n_modes, const std::vector<doub
         }
       }
     }
-  }
+  });
   std::vector<std::string> labels;
   for (int j = 0; j < assembler.n_dofs(); ++j) labels.push_back(assembler.dof_map().label(j));
   py::dict out;
@@ -515,25 +566,30 @@ class PythonStudyChannel final : public StudyChannel {
 // distributed study. Process 0 (or the only one) returns each case's name, status, message
 // and process; a worker process returns nothing.
 py::object run_study_file(const std::filesystem::path& file, const std::optional<std::filesystem::path>& out,
-                          int jobs, bool resume, StudyChannel* channel) {
+                          int jobs, bool resume, StudyChannel* channel, const py::object& stop) {
   Study study = load_study(file);
   if (out) study.out_folder = *out;
   if (jobs >= 0) study.jobs = jobs;
   StudyControl control;
   control.resume = resume;
   control.channel = channel;
-  static std::atomic<bool> stop{false};  // Ctrl-C is Python's: a study runs to its end
-  control.stop = &stop;
   std::vector<CaseOutcome> outcomes;
-  {
+  if (channel != nullptr) {
+    // Over MPI the study stays on the thread that called it, which mpi4py's calls through the
+    // channel expect; Ctrl-C goes to mpirun, which ends every process.
     py::gil_scoped_release release;
-    if (channel != nullptr && channel->rank() > 0) {
+    if (channel->rank() > 0) {
       run_study_worker(study, control);
-    } else {
-      outcomes = run_study(study, control);
+      return py::none();
     }
+    outcomes = run_study(study, control);
+  } else {
+    // Stopped: running cases end "interrupted", the others are not started, study.csv and
+    // study.json are written; then KeyboardInterrupt, or the outcomes (stop set).
+    StopWatch watch(stop);
+    control.stop = watch.flag();
+    outcomes = watch.run([&] { return run_study(study, control); });
   }
-  if (channel != nullptr && channel->rank() > 0) return py::none();
   py::list cases;
   for (std::size_t i = 0; i < outcomes.size(); ++i) {
     py::dict c;
@@ -622,16 +678,19 @@ PYBIND11_MODULE(_core, m) {
              return out.str();
            },
            "The model as a model file with every default explicit (save_model)")
-      .def("modes", &modes_at, py::arg("n_modes"), py::arg("times"))
+      .def("modes", &modes_at, py::arg("n_modes"), py::arg("times"), py::arg("stop") = py::none())
       .def("continuation", &continuation_of, py::arg("parameter"), py::arg("start"), py::arg("end"),
-           py::arg("eigenvalues"), py::arg("max_steps"), py::arg("time"), py::arg("switch_branch"))
-      .def("run_in_memory", &run_in_memory)
-      .def("run_into_folder", &run_into_folder, py::arg("folder"));
+           py::arg("eigenvalues"), py::arg("max_steps"), py::arg("time"), py::arg("switch_branch"),
+           py::arg("stop") = py::none())
+      .def("run_in_memory", &run_in_memory, py::arg("stop") = py::none())
+      .def("run_into_folder", &run_into_folder, py::arg("folder"), py::arg("stop") = py::none());
 
   m.def(
       "load_file",
       [](const std::filesystem::path& file, const OverridePairs& overrides) {
-        return LoadedModel{load_model(file, to_overrides(overrides))};
+        StopWatch watch;  // a large file takes seconds: Ctrl-C
+        return watch.run_or_abandon(
+            [file, overrides = to_overrides(overrides)] { return LoadedModel{load_model(file, overrides)}; });
       },
       py::arg("file"), py::arg("overrides") = OverridePairs{});
   m.def(
@@ -639,7 +698,10 @@ PYBIND11_MODULE(_core, m) {
       [](const std::string& text, const std::string& source_name, const OverridePairs& overrides,
          bool with_position) {
         try {
-          return LoadedModel{load_model_from_string(text, source_name, to_overrides(overrides))};
+          StopWatch watch;  // a large text (a roof of 10⁶ units) takes seconds: Ctrl-C
+          return watch.run_or_abandon([text, source_name, overrides = to_overrides(overrides)] {
+            return LoadedModel{load_model_from_string(text, source_name, overrides)};
+          });
         } catch (const InputError& e) {
           if (with_position) throw;
           // Lines of generated text mean nothing to whoever built the model in code.
@@ -661,9 +723,12 @@ PYBIND11_MODULE(_core, m) {
                                       bearings + "'");
         }
         options.bearings = *kind;
-        std::ostringstream out;
-        save_model(make_roof(options), out);  // std::invalid_argument → ValueError
-        return out.str();
+        StopWatch watch;  // 10⁶ units take minutes: Ctrl-C
+        return watch.run_or_abandon([options] {
+          std::ostringstream out;
+          save_model(make_roof(options), out);  // std::invalid_argument → ValueError
+          return out.str();
+        });
       },
       py::arg("units"), py::arg("trusses"), py::arg("delta_t"), py::arg("bearings"),
       "The model file `deploydyn generate roof` writes (generators/roof.hpp)");
@@ -682,7 +747,7 @@ PYBIND11_MODULE(_core, m) {
                                                "How the processes of a study talk; see deploydyn.run_study")
       .def(py::init<>());
   m.def("run_study", &run_study_file, py::arg("file"), py::arg("out"), py::arg("jobs"), py::arg("resume"),
-        py::arg("channel"));
+        py::arg("channel"), py::arg("stop") = py::none());
   m.def(
       "parse_override",
       [](const std::string& text) {

@@ -32,9 +32,13 @@ Errors:
     (`result.ok` is False, `result.summary["failure"]` says where and why), like the CLI's exit
     code 1, and keeps the history up to the failure. `run(check=True)` or
     `result.raise_for_status()` raise `RunFailed` instead.
-  - Ctrl-C during a run (in any phase: the initial equilibrium's load steps too) stops it within
-    a fraction of a second and raises KeyboardInterrupt (a run into a folder keeps what was
-    written, with status "interrupted" in summary.json).
+  - Ctrl-C during a run (in any phase: the initial equilibrium's load steps too), a
+    continuation, modes, run_study (alone, not over MPI), roof or load stops it within a
+    fraction of a second and raises KeyboardInterrupt (a run into a folder keeps what was
+    written, with status "interrupted" in summary.json; a study its finished cases). Python
+    gives Ctrl-C to the main thread only: for a call in another thread, pass
+    `stop=threading.Event()` to run, continuation, modes or run_study; once set, the call ends
+    the same way and returns what it computed (status "interrupted").
 
 Result folders (`read_result`, `folder_status`): a run owns its folder (a lock on
 .deploydyn.lock) and its summary.json says "running" until the run ends, then "completed",
@@ -89,6 +93,9 @@ class RunFailed(RuntimeError):
 # file").
 
 _INT_MAX = 2**31 - 1  # the C++ side's int
+# Times of one modal analysis, as the model file's analysis.at allows (docs/model-format.md,
+# "Input limits"): each is a static solve and an eigenproblem.
+_MAX_MODAL_TIMES = 100_000
 
 
 def _shown(value):
@@ -119,6 +126,14 @@ def _number(where, name, value):
     """`value`, checked to be a real number (int or float, numpy's too; not a bool)."""
     if not _is_number(value):
         raise TypeError(f"{where}: {name} must be a number (int or float), not {_shown(value)}")
+    return value
+
+
+def _finite(where, name, value):
+    """A number that is not NaN or infinite, as a float."""
+    value = float(_number(where, name, value))
+    if not math.isfinite(value):
+        raise ValueError(f"{where}: {name} must be a finite number, got {value}")
     return value
 
 
@@ -161,6 +176,14 @@ def _path(where, name, value):
     if "\0" in path:  # the operating system would see only the part before it
         raise ValueError(f"{where}: {name} must not hold a NUL character (\\0), got {_shown(value)}")
     return pathlib.Path(path)
+
+
+def _stop(where, stop):
+    """The `stop` argument of a long call: None, or what it asks is_set() of (threading.Event)."""
+    if stop is not None and not callable(getattr(stop, "is_set", None)):
+        raise TypeError(f"{where}: stop must be a threading.Event (or any object with is_set()) "
+                        f"or None, not {_shown(stop)}")
+    return stop
 
 
 def _time_function(where, name, value):
@@ -376,31 +399,35 @@ class Model:
         _path("Model.save", "path", path).write_text(self.to_yaml(), encoding="utf-8")
 
     # -- running --------------------------------------------------------------------------------
-    def run(self, out=None, check=False):
+    def run(self, out=None, check=False, stop=None):
         """Run the analysis; return a Result.
 
         out: a folder to write history.csv and summary.json into, as `deploydyn run --out`
         does (the Result then reads them back: the values are the same to the last bit);
         None keeps everything in memory. check: raise RunFailed unless the run completed.
+        stop: a threading.Event (or any object with is_set()); once it is set the run ends
+        within a fraction of a second with status "interrupted", keeping what it computed.
+        The way to stop a run in another thread, which Ctrl-C does not reach.
         A model of analysis type "modal" gives modes.csv's table instead of the history (columns
         frame, t, mode, omega2, frequency, dT_C, position.<driver>; summary["modes"] per time).
         Results that cannot be written raise OutputError (an OSError).
         """
         if not isinstance(check, bool):
             raise TypeError(f"Model.run: check must be a bool, not {_shown(check)}")
+        stop = _stop("Model.run", stop)
         if out is None:
-            raw = self._core.run_in_memory()
+            raw = self._core.run_in_memory(stop)
             result = Result(raw["columns"], raw["values"], json.loads(raw["summary_json"]))
         else:
             out = _path("Model.run", "out", out)
-            raw = self._core.run_into_folder(out)
+            raw = self._core.run_into_folder(out, stop)
             result = _read_result(out, raw["history_file"], raw["summary_file"], stacklevel=3)
         if check:
             result.raise_for_status()
         return result
 
     def continuation(self, parameter, end, start=0.0, eigenvalues=3, max_steps=2000, time=0.0,
-                     switch_branch=False):
+                     switch_branch=False, stop=None):
         """Trace the static equilibrium as `parameter` goes from `start` to `end`, through limit
         points (arc-length continuation, docs/theory.md "Path following and stability"), as a
         model of `analysis: {type: continuation}` does: "thermal" scales every ΔT (μ = 1: the
@@ -412,17 +439,20 @@ class Model:
         N/m, of the tangent stiffness on the constraint-compatible motions; NaN when not
         computed), "n_negative", "q" (points × coordinates), "events" (dicts with "kind"
         limit_point | bifurcation | singular_constraints, "mu", "mu_error", "point", "mode",
-        "axial_forces", "description"), "end" and "message" (how it ended)."""
+        "axial_forces", "description"), "end" and "message" (how it ended: "stopped" once
+        `stop`, a threading.Event as for run, is set)."""
         where = "Model.continuation"
         parameter = _text(where, "parameter", parameter)
-        end = float(_number(where, "end", end))
-        start = float(_number(where, "start", start))
+        end = _finite(where, "end", end)
+        start = _finite(where, "start", start)
         eigenvalues = _count(where, "eigenvalues", eigenvalues, minimum=0)
         max_steps = _count(where, "max_steps", max_steps)
-        time = float(_number(where, "time", time))
+        time = _finite(where, "time", time)
         if not isinstance(switch_branch, bool):
             raise TypeError(f"{where}: switch_branch must be a bool, not {_shown(switch_branch)}")
-        raw = self._core.continuation(parameter, start, end, eigenvalues, max_steps, time, switch_branch)
+        stop = _stop(where, stop)
+        raw = self._core.continuation(parameter, start, end, eigenvalues, max_steps, time, switch_branch,
+                                      stop)
         out = dict(raw)
         for key in ("mu", "displacement_norm", "eigenvalues", "n_negative", "q"):
             out[key] = np.asarray(raw[key])
@@ -430,16 +460,27 @@ class Model:
                          for e in raw["events"]]
         return out
 
-    def modes(self, count=10, at=0.0):
+    def modes(self, count=10, at=0.0, stop=None):
         """Natural frequencies and modes about the static equilibrium at time(s) `at` (the
         thermal state at t = 0, then the drivers moved quasi-statically), as `deploydyn modes`
         computes them. Returns a dict of numpy arrays: "times" (s), "omega2" (rad²/s², times ×
         count, ascending; < 0: unstable), "frequency" (Hz, NaN where ω² < 0), "modes" (times ×
         coordinates × count, M-orthonormal), "coordinates" (labels such as "x.B"), "failures"
-        (per time "" or why no modes were found; those rows are NaN)."""
-        count = _count("Model.modes", "count", count)
-        times = [float(t) for t in _numbers("Model.modes", "at", [at] if _is_number(at) else at)]
-        raw = self._core.modes(count, times)
+        (per time "" or why no modes were found; those rows are NaN). count: 1 to the model's
+        coordinates − constraint equations; at: a time ≥ 0 or a list of 1 to 100 000 of them,
+        as the model file's analysis.at (ValueError beyond). stop: a threading.Event as for
+        run; once set, the times not reached are failures "stopped ..."."""
+        where = "Model.modes"
+        count = _count(where, "count", count)  # at most the free coordinates: checked by _core
+        times = _numbers(where, "at", [at] if _is_number(at) else at)
+        if not 1 <= len(times) <= _MAX_MODAL_TIMES:
+            raise ValueError(f"{where}: at must be a time or a list of 1 to {_MAX_MODAL_TIMES} "
+                             f"times (s), got {len(times)}")
+        for i, t in enumerate(times):
+            times[i] = _finite(where, f"at[{i}]", t)
+            if times[i] < 0:
+                raise ValueError(f"{where}: at[{i}] must be a time ≥ 0 (s), got {times[i]}")
+        raw = self._core.modes(count, times, _stop(where, stop))
         omega2 = np.asarray(raw["omega2"])
         with np.errstate(invalid="ignore"):
             frequency = np.where(omega2 >= 0, np.sqrt(np.abs(omega2)) / (2 * np.pi), np.nan)

@@ -14,7 +14,6 @@ study`): the same C++ runner decides which process runs which case (the next fre
 process 0 alone writes study.csv and study.json.
 """
 import os
-import pathlib
 import socket
 import sys
 import traceback
@@ -75,7 +74,7 @@ class _Mpi4pyChannel(_core.StudyChannel):
         self._comm.Free()
 
 
-def run_study(file, out=None, jobs=None, resume=False, comm=None):
+def run_study(file, out=None, jobs=None, resume=False, comm=None, stop=None):
     """Runs the study file `file` as `deploydyn study FILE` does: each case into its folder
     under `out` (default: the study file's `out`, else results/<study name>), then study.csv.
     `jobs`: cases at once in this process (default: the study's `jobs`; all at once alone, one
@@ -89,16 +88,31 @@ def run_study(file, out=None, jobs=None, resume=False, comm=None):
     study.csv that cannot be written raises OutputError; failed cases do not raise (their
     status says so), as the command's exit code 1. Over MPI, an error in any process, or a
     process that died (mpirun --enable-recovery), ends every process with MPI_Abort once what
-    could be written is written: study.json then tells what happened."""
-    if jobs is not None and (isinstance(jobs, bool) or not isinstance(jobs, int) or jobs < 0):
-        raise TypeError(f"run_study: jobs must be an int ≥ 0, not {type(jobs).__name__} {jobs!r}")
+    could be written is written: study.json then tells what happened.
+
+    Ctrl-C (alone, not over MPI) stops the running cases within a fraction of a second, as
+    `stop` (a threading.Event, for a study in another thread) does once set: they end
+    "interrupted", the cases not started are listed as such, study.csv and study.json are
+    written, and the finished cases stay in their folders; then Ctrl-C raises
+    KeyboardInterrupt, `stop` returns the cases."""
+    # The package's argument checks; imported here, as the package imports this module.
+    from deploydyn import _count, _path, _shown, _stop
+    where = "run_study"
+    file = _path(where, "file", file)
+    folder = None if out is None else _path(where, "out", out)
+    if jobs is not None:
+        jobs = _count(where, "jobs", jobs, minimum=0)
+    if not isinstance(resume, bool):
+        raise TypeError(f"{where}: resume must be a bool, not {_shown(resume)}")
+    if comm is not None and not all(hasattr(comm, name) for name in ("Get_rank", "Get_size", "Dup")):
+        raise TypeError(f"{where}: comm must be an mpi4py communicator (e.g. MPI.COMM_WORLD) or "
+                        f"None, not {_shown(comm)}")
+    stop = _stop(where, stop)
     # A communicator of the study's own (collective: every process calls run_study), so that
     # the script's own messages cannot be taken for the study's.
     channel = _Mpi4pyChannel(comm.Dup()) if comm is not None and comm.Get_size() > 1 else None
-    folder = None if out is None else pathlib.Path(os.fspath(out))
     try:
-        cases = _core.run_study(pathlib.Path(os.fspath(file)), folder, -1 if jobs is None else jobs,
-                                bool(resume), channel)
+        cases = _core.run_study(file, folder, -1 if jobs is None else jobs, resume, channel, stop)
     except BaseException:
         # The other processes may be waiting for this one: end them all rather than hang, as
         # `deploydyn study` does (the error is printed first; mpirun exits non-zero).

@@ -106,3 +106,56 @@ def test_name_not_utf8_is_refused_at_load(tmp_path):
 def test_path_with_nul_is_refused_naming_the_argument():
     with pytest.raises(ValueError, match=r"^load: path must not hold a NUL character"):
         deploydyn.load("a\0b")
+
+
+# Arguments of the entry points (issue 32, item 9): a clear TypeError or ValueError naming the
+# argument and what it takes, before any work; never a MemoryError, an AttributeError or nothing.
+
+@pytest.fixture(scope="module")
+def general(general_model):
+    return deploydyn.load(general_model)
+
+
+def test_modes_count_beyond_the_model_is_refused_before_allocating(general):
+    """count=10⁹ tried to allocate 60 GiB (MemoryError) before the count was checked."""
+    with pytest.raises(ValueError, match=r"^Model.modes: count must be at most 3 \(the model has 8 "
+                                         r"coordinates and 5 constraint equations\), got 1000000000$"):
+        general.modes(count=10**9)
+
+
+@pytest.mark.parametrize("at, message", [
+    ([0.0] * 100_001, r"at must be a time or a list of 1 to 100000 times \(s\), got 100001"),
+    ([], r"at must be a time or a list of 1 to 100000 times \(s\), got 0"),
+    ([0.5, float("nan")], r"at\[1\] must be a finite number, got nan"),
+    (float("inf"), r"at\[0\] must be a finite number, got inf"),
+    (-1, r"at\[0\] must be a time ≥ 0 \(s\), got -1.0"),
+], ids=["too_many", "empty", "nan", "inf", "negative"])
+def test_modes_times_are_checked_as_the_model_files(general, at, message):
+    """As analysis.at in a model file: 1 to 10⁵ finite times ≥ 0 (NaN gave a result of NaN)."""
+    with pytest.raises(ValueError, match="^Model.modes: " + message):
+        general.modes(count=1, at=at)
+
+
+@pytest.mark.parametrize("name", ["time", "start", "end"])
+def test_continuation_refuses_times_and_bounds_that_are_not_finite(general, name):
+    """time=nan was taken and traced a path of NaN."""
+    arguments = {"parameter": "thermal", "end": 1.0, name: float("nan")}
+    with pytest.raises(ValueError, match=rf"^Model.continuation: {name} must be a finite number, got nan$"):
+        general.continuation(**arguments)
+
+
+@pytest.mark.parametrize("arguments, error, message", [
+    ({"file": None}, TypeError, r"file must be a path \(str or pathlib.Path\), not NoneType None"),
+    ({"out": 5}, TypeError, r"out must be a path \(str or pathlib.Path\), not int 5"),
+    ({"comm": 5}, TypeError, r"comm must be an mpi4py communicator \(e.g. MPI.COMM_WORLD\) or None, "
+                             r"not int 5"),
+    ({"jobs": -1}, ValueError, r"jobs must be at least 0, got -1"),
+    ({"resume": "yes"}, TypeError, r"resume must be a bool, not str 'yes'"),
+], ids=["file_none", "out_int", "comm_int", "jobs_negative", "resume_str"])
+def test_run_study_names_the_bad_argument(source_dir, tmp_path, arguments, error, message):
+    """run_study(None) raised os.fspath's message, comm=5 an AttributeError from inside."""
+    arguments = {"file": source_dir / "examples" / "paper" / "general_study.yaml",
+                 "out": tmp_path / "out", **arguments}
+    with pytest.raises(error, match="^run_study: " + message + "$"):
+        deploydyn.run_study(**arguments)
+    assert not (tmp_path / "out").exists()
