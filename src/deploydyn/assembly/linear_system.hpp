@@ -15,12 +15,9 @@
 #include <string>
 #include <vector>
 
-namespace deploydyn {
+#include "deploydyn/model/matrix_entry.hpp"
 
-struct MatrixEntry {
-  int row = 0;
-  int col = 0;
-};
+namespace deploydyn {
 
 struct FactorizationStatus {
   bool ok = true;

@@ -28,7 +28,7 @@
 #include <string_view>
 #include <vector>
 
-#include "deploydyn/assembly/linear_system.hpp"
+#include "deploydyn/model/matrix_entry.hpp"
 #include "deploydyn/constraints/constraint.hpp"
 #include "deploydyn/elements/element_entry.hpp"
 
