@@ -1,7 +1,7 @@
 #pragma once
 // A record sink that keeps nothing: benchmarks of the solver alone.
 
-#include "deploydyn/output/step_record.hpp"
+#include "deploydyn/solvers/step_record.hpp"
 
 namespace deploydyn::bench {
 

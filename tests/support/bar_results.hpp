@@ -1,13 +1,13 @@
 #pragma once
 // A record's bar results as named fields, for tests that check bars (the record keeps every
-// element type's results by quantity: output/step_record.hpp).
+// element type's results by quantity: solvers/step_record.hpp).
 
 #include <algorithm>
 #include <vector>
 
 #include "deploydyn/elements/bar/bar_kind.hpp"
 #include "deploydyn/elements/element_kinds.hpp"
-#include "deploydyn/output/step_record.hpp"
+#include "deploydyn/solvers/step_record.hpp"
 
 namespace deploydyn {
 

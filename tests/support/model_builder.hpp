@@ -12,7 +12,7 @@
 
 #include "deploydyn/assembly/assembler.hpp"
 #include "deploydyn/model/model.hpp"
-#include "deploydyn/output/step_record.hpp"
+#include "deploydyn/solvers/step_record.hpp"
 #include "support/bar_results.hpp"
 #include "deploydyn/solvers/analysis.hpp"
 

@@ -15,7 +15,7 @@
 #include <utility>
 #include <variant>
 
-#include "deploydyn/output/step_record.hpp"
+#include "deploydyn/solvers/step_record.hpp"
 
 namespace deploydyn {
 

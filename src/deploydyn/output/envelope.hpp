@@ -8,7 +8,7 @@
 #include <limits>
 #include <vector>
 
-#include "deploydyn/output/step_record.hpp"
+#include "deploydyn/solvers/step_record.hpp"
 
 namespace deploydyn {
 

@@ -32,7 +32,7 @@
 #include "deploydyn/model/model.hpp"
 #include "deploydyn/output/history_layout.hpp"
 #include "deploydyn/output/mesh_frame.hpp"
-#include "deploydyn/output/step_record.hpp"
+#include "deploydyn/solvers/step_record.hpp"
 
 namespace deploydyn {
 

@@ -22,7 +22,7 @@
 #include <vector>
 
 #include "deploydyn/model/model.hpp"
-#include "deploydyn/output/step_record.hpp"
+#include "deploydyn/solvers/step_record.hpp"
 
 namespace deploydyn {
 

@@ -16,7 +16,7 @@
 #include "deploydyn/elements/element_kinds.hpp"
 #include "deploydyn/model/dof_map.hpp"
 #include "deploydyn/model/model.hpp"
-#include "deploydyn/output/step_record.hpp"
+#include "deploydyn/solvers/step_record.hpp"
 
 namespace deploydyn {
 

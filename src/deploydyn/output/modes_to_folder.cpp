@@ -17,7 +17,7 @@
 #include "deploydyn/output/output_error.hpp"
 #include "deploydyn/output/result_folder.hpp"
 #include "deploydyn/output/run_folder.hpp"
-#include "deploydyn/output/step_record.hpp"
+#include "deploydyn/solvers/step_record.hpp"
 #include "deploydyn/output/summary_writer.hpp"
 #include "deploydyn/output/vtk_writer.hpp"
 

@@ -28,7 +28,7 @@
 #include "deploydyn/model/dof_map.hpp"
 #include "deploydyn/model/model.hpp"
 #include "deploydyn/output/mesh_frame.hpp"
-#include "deploydyn/output/step_record.hpp"
+#include "deploydyn/solvers/step_record.hpp"
 
 namespace deploydyn {
 

@@ -10,7 +10,7 @@
 #include <vector>
 
 #include "deploydyn/assembly/assembler.hpp"
-#include "deploydyn/output/step_record.hpp"
+#include "deploydyn/solvers/step_record.hpp"
 #include "deploydyn/solvers/run_control.hpp"
 
 namespace deploydyn {

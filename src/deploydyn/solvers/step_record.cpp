@@ -1,4 +1,4 @@
-#include "deploydyn/output/step_record.hpp"
+#include "deploydyn/solvers/step_record.hpp"
 
 #include "deploydyn/elements/element_kinds.hpp"
 
