@@ -237,6 +237,21 @@ TEST(CliFaults, AFullDiskLeavesNoUnreadableHistoryH5Listed) {
   }
 }
 
+// Issue 32: --out naming a symbolic link to nothing said only "File exists".
+TEST(CliFaults, AnOutFolderThatIsADanglingLinkIsNamedAsOne) {
+  const ScratchFolder scratch("dangling_out");
+  std::filesystem::create_directories(scratch.path());
+  const auto link = scratch.path() / "results";
+  std::filesystem::create_symlink(scratch.path() / "gone", link);
+  for (const std::string& out : {link.string(), (link / "hot").string()}) {
+    const auto outcome = run_cli("run " + example_path("parallel.yaml") + " --quiet --out " + out);
+    EXPECT_EQ(outcome.exit_code, 3) << outcome.output;
+    const std::string said = "dangling symbolic link (to " + (scratch.path() / "gone").string() + ")";
+    EXPECT_NE(outcome.output.find(said), std::string::npos) << outcome.output;
+    EXPECT_EQ(outcome.output.find("File exists"), std::string::npos) << outcome.output;
+  }
+}
+
 TEST(CliFaults, OutputNamesThatWouldOverwriteEachOtherAreRejected) {
   for (const std::string setting : {"output.history=summary.json", "output.history=model.yaml",
                                      "output.summary=history.csv", "output.history=.deploydyn.lock",
