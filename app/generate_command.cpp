@@ -16,6 +16,7 @@
 #include "deploydyn/output/checked_file.hpp"
 #include "deploydyn/output/output_error.hpp"
 #include "exit_codes.hpp"
+#include "phase_line.hpp"
 
 namespace deploydyn::cli {
 namespace {
@@ -89,8 +90,9 @@ std::string header_comment(const ScissorOptions& scissor, const Model& model) {
 // Writes `text` to the file or stdout; `structure` names the command in messages.
 int write_generated(std::string_view structure, const std::string& text,
                     const std::string& out_file, const Model& model,
-                    std::chrono::steady_clock::time_point start) {
+                    std::chrono::steady_clock::time_point start, PhaseLine& phase) {
   if (out_file.empty()) {
+    phase.clear();
     // A full or closed stdout (`> /dev/full`) must not pass for a written model.
     if (std::fwrite(text.data(), 1, text.size(), stdout) != text.size() ||
         std::fflush(stdout) != 0) {
@@ -101,13 +103,16 @@ int write_generated(std::string_view structure, const std::string& text,
     return kExitSuccess;
   }
   try {
+    phase.show(fmt::format("generate {}: writing {}", structure, out_file));
     // FILE.json: the same model as JSON (without the header's comments), read about twice as
     // fast at 10⁵ bars (docs/performance.md, "Model input").
     write_file(out_file, out_file.ends_with(".json") ? io::YamlDocument::parse(text).json_text() : text);
   } catch (const OutputError& e) {
+    phase.clear();
     fmt::print(stderr, "error: generate {}: {}\n", structure, e.what());
     return kExitOutputFailure;
   }
+  phase.clear();
   const double seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   std::vector<std::string> counts;  // "24 bars", "64 beams"
@@ -239,17 +244,22 @@ int generate_command(const GenerateArguments& arguments) {
     return kExitBadInput;
   }
   const auto start = std::chrono::steady_clock::now();
+  // Near the size limits (10⁷ bars) each phase takes minutes: say which one is running.
+  PhaseLine phase;
+  phase.show(fmt::format("generate {}: building the model", structure));
   Model model;
   std::ostringstream text;
   try {
     model = roof ? make_roof(arguments.roof) : make_scissor(arguments.scissor);
   } catch (const std::invalid_argument& e) {
+    phase.clear();
     fmt::print(stderr, "error: generate {}\n", e.what());
     return kExitBadInput;
   }
+  phase.show(fmt::format("generate {}: {} nodes; writing the model text", structure, model.n_nodes()));
   text << (roof ? header_comment(arguments.roof, model) : header_comment(arguments.scissor, model));
   save_model(model, text);
-  return write_generated(structure, std::move(text).str(), arguments.out_file, model, start);
+  return write_generated(structure, std::move(text).str(), arguments.out_file, model, start, phase);
 }
 
 }  // namespace deploydyn::cli

@@ -12,6 +12,7 @@
 #include <csignal>
 #include <cstdio>
 #include <filesystem>
+#include <new>
 #include <string>
 #include <system_error>
 
@@ -373,6 +374,13 @@ int main(int argc, char** argv) {
   } catch (const std::invalid_argument& e) {
     print_error(model_file + ": " + e.what());
     return kExitBadInput;
+  } catch (const std::bad_alloc&) {
+    // No text may be allocated now: a fixed line, naming what the command was doing.
+    std::fputs(*study ? "error: out of memory while loading or running the study\n"
+               : *generate ? "error: out of memory while generating the model\n"
+                           : "error: out of memory while loading or solving the model\n",
+               stderr);
+    return kExitSolverFailure;
   } catch (const std::system_error& e) {
     // fmt::print throws this when stderr or stdout cannot be written (closed, /dev/full).
     print_error(e.what());

@@ -3,14 +3,33 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <cmath>
+#include <cstdlib>
 
 #include "deploydyn/assembly/assembler.hpp"
 #include "deploydyn/io/input_error.hpp"
 #include "deploydyn/io/model_loader.hpp"
+#include "deploydyn/io/text_file.hpp"
 #include "deploydyn/output/modes_to_folder.hpp"
 #include "exit_codes.hpp"
 
 namespace deploydyn::cli {
+namespace {
+
+// A time for --at, held to a model file's rule for numbers (docs/model-format.md, "Input
+// limits"): a NaN would reach the solver as a NaN matrix, and inf or 1e308 s is no time.
+std::string check_time(const std::string& word) {
+  char* end = nullptr;
+  const double t = std::strtod(word.c_str(), &end);
+  if (end == word.c_str() || *end != '\0') return "expected a time in seconds, got " + io::excerpt(word);
+  constexpr double kLargest = 1e100;
+  if (!std::isfinite(t) || t < 0.0 || t > kLargest) {
+    return fmt::format("a time must be a number from 0 to {:g} s, got {}", kLargest, io::excerpt(word));
+  }
+  return "";
+}
+
+}  // namespace
 
 CLI::App* add_modes_command(CLI::App& app, ModesArguments& arguments) {
   CLI::App* modes = app.add_subcommand(
@@ -23,7 +42,7 @@ CLI::App* add_modes_command(CLI::App& app, ModesArguments& arguments) {
       ->check(CLI::PositiveNumber);
   modes->add_option("--at", arguments.times_s, "Times (s) at which the drivers stand; default: the "
                                                "model's analysis.at, else 0")
-      ->check(CLI::NonNegativeNumber);
+      ->check(CLI::Validator(check_time, "TIME"));
   modes->add_option("--set,-s", arguments.sets, "Override a value of the model: PATH=VALUE (VALUE may be a YAML flow [list] or {mapping})");
   modes->add_option("--out,-o", arguments.out_dir, "Result folder for modes.csv, vtk/ (mode shapes) and summary.json");
   return modes;

@@ -33,7 +33,7 @@ bool launched_by_mpirun() {
 
 #ifdef DEPLOYDYN_WITH_MPI
 
-class MpiChannel final : public StudyChannel {
+class MpiChannel final : public StudyProcesses {
  public:
   MpiChannel() {
     // Only the main thread calls MPI; process 0 runs its own cases on other threads.
@@ -99,6 +99,20 @@ class MpiChannel final : public StudyChannel {
 
   void lost(int rank) override { lost_.push_back(rank); }
 
+  int agree_on_exit(int exit_code, bool& first_rank_failed) override {
+    int worst = 0, first = exit_code;
+    MPI_Allreduce(&exit_code, &worst, 1, MPI_INT, MPI_MAX, MPI_COMM_WORLD);
+    MPI_Bcast(&first, 1, MPI_INT, 0, MPI_COMM_WORLD);
+    first_rank_failed = first != 0;
+    return worst;
+  }
+
+  [[noreturn]] void end_all(int exit_code) override {
+    std::fflush(nullptr);
+    MPI_Abort(MPI_COMM_WORLD, exit_code);
+    std::_Exit(exit_code);  // MPI_Abort does not return; the compiler cannot know
+  }
+
   std::optional<std::pair<long, std::string>> identity(int rank) const override {
     if (rank < 0 || static_cast<std::size_t>(rank) >= pids_.size()) return std::nullopt;
     return std::make_pair(pids_[static_cast<std::size_t>(rank)],
@@ -130,14 +144,14 @@ class MpiChannel final : public StudyChannel {
   std::vector<char> hosts_;  // and host name, kHostLength bytes each
 };
 
-std::unique_ptr<StudyChannel> join_mpi_if_launched() {
+std::unique_ptr<StudyProcesses> join_mpi_if_launched() {
   if (!launched_by_mpirun()) return nullptr;
   return std::make_unique<MpiChannel>();
 }
 
 #else
 
-std::unique_ptr<StudyChannel> join_mpi_if_launched() {
+std::unique_ptr<StudyProcesses> join_mpi_if_launched() {
   if (launched_by_mpirun()) {
     throw std::runtime_error(
         "started by mpirun, but this deploydyn was built without MPI (install libopenmpi-dev and "

@@ -9,8 +9,20 @@
 
 namespace deploydyn::cli {
 
-// The channel when mpirun started this process (its environment says so), else nullptr.
+// The study's processes, besides the cases: how they end together on an error, so that its
+// message is printed once and the processes exit cleanly rather than in MPI_Abort's banner.
+class StudyProcesses : public StudyChannel {
+ public:
+  // Every process calls this with its own error's exit code (0: none). Returns the largest,
+  // and in `first_rank_failed` whether process 0 has one (then it alone tells it).
+  virtual int agree_on_exit(int exit_code, bool& first_rank_failed) = 0;
+  // Ends every process with `exit_code`, for an error only this process knows of; its
+  // message must be printed and flushed before.
+  [[noreturn]] virtual void end_all(int exit_code) = 0;
+};
+
+// The processes when mpirun started this one (its environment says so), else nullptr.
 // Throws std::runtime_error when mpirun started it but this build has no MPI.
-std::unique_ptr<StudyChannel> join_mpi_if_launched();
+std::unique_ptr<StudyProcesses> join_mpi_if_launched();
 
 }  // namespace deploydyn::cli

@@ -6,8 +6,13 @@
 #include <cstdio>
 #include <filesystem>
 #include <memory>
+#include <new>
+#include <string>
 #include <stdexcept>
 
+#include "deploydyn/io/input_error.hpp"
+#include "deploydyn/io/text_file.hpp"
+#include "deploydyn/output/output_error.hpp"
 #include "deploydyn/study/study_loader.hpp"
 #include "deploydyn/study/study_runner.hpp"
 #include "exit_codes.hpp"
@@ -36,17 +41,63 @@ CLI::App* add_study_command(CLI::App& app, StudyArguments& arguments) {
   return study;
 }
 
-int study_command(const StudyArguments& arguments, const std::atomic<bool>& stop) {
-  // Under mpirun every process reads the study; process 0 coordinates and writes study.csv.
-  const std::unique_ptr<StudyChannel> channel = join_mpi_if_launched();
+namespace {
+
+// A folder nobody named that holds an earlier study's results (exit 2, as bad input).
+struct FolderRefused : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
+// The exception being handled, as main() would tell it: its message and exit code.
+struct StudyError {
+  int exit_code = kExitSuccess;
+  std::string message;
+};
+StudyError current_error() {
+  try {
+    throw;
+  } catch (const InputError& e) {
+    return {kExitBadInput, e.what()};
+  } catch (const FolderRefused& e) {
+    return {kExitBadInput, e.what()};
+  } catch (const std::invalid_argument& e) {
+    return {kExitBadInput, e.what()};
+  } catch (const OutputError& e) {
+    return {kExitOutputFailure, e.what()};
+  } catch (const std::bad_alloc&) {
+    return {kExitSolverFailure, "out of memory while loading or running the study"};
+  } catch (const std::exception& e) {
+    return {kExitSolverFailure, e.what()};
+  }
+}
+
+void tell(const std::string& prefix, const StudyError& error) {
+  const std::string line = "error: " + prefix + io::printable(error.message) + "\n";
+  std::fputs(line.c_str(), stderr);
+  std::fflush(stderr);
+}
+
+// The study as the command line asks for it. `checks_folder`: the process that writes the
+// study's folder (the only one, or process 0 under mpirun) refuses one it must not replace.
+Study prepare_study(const StudyArguments& arguments, bool checks_folder) {
   Study study = load_study(arguments.study_file);
   if (!arguments.out_dir.empty()) study.out_folder = arguments.out_dir;
   if (arguments.jobs >= 0) study.jobs = arguments.jobs;
+  // As `run`: a folder nobody named is never replaced silently; it may hold all that is left
+  // of a long study.
+  if (checks_folder && arguments.out_dir.empty() && !study.out_named && !arguments.force && !arguments.resume) {
+    for (const char* file : {kStudyStatusFileName, kStudyTableFileName}) {
+      if (std::filesystem::exists(study.out_folder / file)) {
+        throw FolderRefused(fmt::format("{}/ holds the results of an earlier study ({}); give --out DIR to write "
+                                        "elsewhere, or --force to replace them", study.out_folder.string(), file));
+      }
+    }
+  }
+  return study;
+}
 
-  StudyControl control;
-  control.stop = &stop;
-  control.resume = arguments.resume;
-  control.channel = channel.get();
+int run_prepared_study(Study& study, const StudyArguments& arguments, StudyControl& control,
+                       const StudyChannel* channel) {
   const auto case_done = [&](std::size_t i, const CaseOutcome& outcome) {
     const std::string& name = study.cases[i].name;
     const std::string where = outcome.process > 0 ? fmt::format(" (process {})", outcome.process) : "";
@@ -63,18 +114,6 @@ int study_command(const StudyArguments& arguments, const std::atomic<bool>& stop
     control.case_done = case_done;  // each process tells of its own cases
     run_study_worker(study, control);
     return kExitSuccess;
-  }
-  // As `run`: a folder nobody named is never replaced silently; it may hold all that is left
-  // of a long study.
-  if (arguments.out_dir.empty() && !study.out_named && !arguments.force && !arguments.resume) {
-    for (const char* file : {kStudyStatusFileName, kStudyTableFileName}) {
-      if (std::filesystem::exists(study.out_folder / file)) {
-        fmt::print(stderr, "error: {}/ holds the results of an earlier study ({}); give --out DIR to write "
-                           "elsewhere, or --force to replace them\n", study.out_folder.string(), file);
-        if (channel) throw std::runtime_error("the study's folder is refused (above)");  // ends every process
-        return kExitBadInput;
-      }
-    }
   }
   const int n_jobs = channel ? channel->size() : resolve_jobs(study.jobs, study.cases.size());
   // Process 0 reports the cases it ran itself, and those of workers that died.
@@ -99,6 +138,50 @@ int study_command(const StudyArguments& arguments, const std::atomic<bool>& stop
                channel ? " over MPI processes" : "", study.table_file().string());
   }
   return all_completed ? kExitSuccess : kExitSolverFailure;
+}
+
+}  // namespace
+
+int study_command(const StudyArguments& arguments, const std::atomic<bool>& stop) {
+  // Under mpirun every process reads the study; process 0 coordinates and writes study.csv.
+  const std::unique_ptr<StudyProcesses> processes = join_mpi_if_launched();
+  StudyControl control;
+  control.stop = &stop;
+  control.resume = arguments.resume;
+  control.channel = processes.get();
+  const int rank = processes ? processes->rank() : 0;
+  Study study;
+  StudyError error;
+  try {
+    study = prepare_study(arguments, rank == 0);
+  } catch (...) {
+    error = current_error();
+  }
+  if (!processes) {
+    if (error.exit_code != kExitSuccess) {
+      tell("", error);
+      return error.exit_code;
+    }
+    return run_prepared_study(study, arguments, control, nullptr);
+  }
+  // Errors in the study file, or a refused folder: every process learns of them together, the
+  // message is printed once (by process 0, which has every such error) and all exit cleanly.
+  bool first_rank_failed = false;
+  if (const int worst = processes->agree_on_exit(error.exit_code, first_rank_failed); worst != kExitSuccess) {
+    if (error.exit_code != kExitSuccess && (rank == 0 || !first_rank_failed)) {
+      tell(rank == 0 ? "" : fmt::format("process {}: ", rank), error);
+    }
+    return worst;
+  }
+  // Later errors (the folder in use, an --out that cannot be written) only one process meets,
+  // while the others wait for it: it tells them, then ends every process.
+  try {
+    return run_prepared_study(study, arguments, control, processes.get());
+  } catch (...) {
+    const StudyError late = current_error();
+    tell(rank == 0 ? "" : fmt::format("process {}: ", rank), late);
+    processes->end_all(late.exit_code);
+  }
 }
 
 }  // namespace deploydyn::cli

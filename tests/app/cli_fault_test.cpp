@@ -237,6 +237,39 @@ TEST(CliFaults, AFullDiskLeavesNoUnreadableHistoryH5Listed) {
   }
 }
 
+// Issue 32: --out naming a symbolic link to nothing said only "File exists".
+TEST(CliFaults, AnOutFolderThatIsADanglingLinkIsNamedAsOne) {
+  const ScratchFolder scratch("dangling_out");
+  std::filesystem::create_directories(scratch.path());
+  const auto link = scratch.path() / "results";
+  std::filesystem::create_symlink(scratch.path() / "gone", link);
+  for (const std::string& out : {link.string(), (link / "hot").string()}) {
+    const auto outcome = run_cli("run " + example_path("parallel.yaml") + " --quiet --out " + out);
+    EXPECT_EQ(outcome.exit_code, 3) << outcome.output;
+    const std::string said = "dangling symbolic link (to " + (scratch.path() / "gone").string() + ")";
+    EXPECT_NE(outcome.output.find(said), std::string::npos) << outcome.output;
+    EXPECT_EQ(outcome.output.find("File exists"), std::string::npos) << outcome.output;
+  }
+}
+
+// Issue 32: under a memory cap a study said only "error: std::bad_alloc".
+TEST(CliFaults, OutOfMemorySaysWhatTheCommandWasDoing) {
+  const ScratchFolder folder("out_of_memory");
+  std::filesystem::create_directories(folder.path());
+  const auto study = folder.path() / "s.yaml";
+  std::ofstream(study) << "model: " << example_path("general.yaml")
+                       << "\nsampling: {cases: 100000, temperature: {dT: [0, 10]}, material: {E: 0.01}}\n";
+  const auto studied = testing::run_cli_with_prefix(
+      "prlimit --as=150000000", "study " + study.string() + " --out " + (folder.path() / "out").string());
+  EXPECT_EQ(studied.exit_code, 1) << studied.output;
+  EXPECT_EQ(studied.output, "error: out of memory while loading or running the study\n");
+  const auto generated = testing::run_cli_with_prefix(
+      "prlimit --as=400000000", "generate roof --units 100000 --trusses 10 --out " + (folder.path() / "r.yaml").string());
+  EXPECT_EQ(generated.exit_code, 1) << generated.output;
+  EXPECT_EQ(generated.output, "error: out of memory while generating the model\n");
+  EXPECT_FALSE(std::filesystem::exists(folder.path() / "r.yaml"));
+}
+
 TEST(CliFaults, OutputNamesThatWouldOverwriteEachOtherAreRejected) {
   for (const std::string setting : {"output.history=summary.json", "output.history=model.yaml",
                                      "output.summary=history.csv", "output.history=.deploydyn.lock",

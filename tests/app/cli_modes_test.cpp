@@ -92,5 +92,17 @@ TEST(ModesCommand, BadRequestsExitWithTwo) {
   EXPECT_NE(late.output.find("after the analysis end"), std::string::npos) << late.output;
 }
 
+// Issue 32: nan reached the solver (exit 1, "iteration matrix contains NaN or Inf"), and inf was
+// refused with DBL_MAX's 309 digits.
+TEST(ModesCommand, TimesThatAreNotFiniteOrAbsurdAreRefusedShortly) {
+  for (const std::string at : {"nan", "inf", "-inf", "1e308", "abc"}) {
+    const auto outcome = run_cli("modes " + example_path("parallel.yaml") + " --count 3 --at " + at);
+    EXPECT_EQ(outcome.exit_code, 2) << at << ": " << outcome.output;
+    EXPECT_NE(outcome.output.find("--at"), std::string::npos) << outcome.output;
+    EXPECT_NE(outcome.output.find(at), std::string::npos) << outcome.output;
+    EXPECT_LT(outcome.output.size(), 200u) << outcome.output;
+  }
+}
+
 }  // namespace
 }  // namespace deploydyn

@@ -6,6 +6,7 @@
 #include <array>
 #include <cstdio>
 #include <cstdlib>
+#include <filesystem>
 #include <string>
 
 #include "support/cli.hpp"
@@ -50,6 +51,21 @@ TEST(CliProgress, QuietInAPipe) {
   const testing::CliOutcome o = testing::run_cli(long_run(out).substr(std::string(DEPLOYDYN_CLI).size() + 1));
   EXPECT_EQ(o.exit_code, 0) << o.output;
   EXPECT_EQ(o.output.find("steps/s"), std::string::npos) << o.output;
+}
+
+// Issue 32: generate near its 10⁷-bar limit ran for minutes without a word.
+TEST(CliProgress, GenerateNamesItsPhasesOnATerminalOnly) {
+  if (std::system("command -v script >/dev/null 2>&1") != 0) GTEST_SKIP() << "no `script` to make a terminal";
+  testing::ScratchFolder out("progress_generate");
+  std::filesystem::create_directories(out.path());
+  const std::string arguments = "generate roof --units 200 --trusses 2 --out " + (out.path() / "roof.yaml").string();
+  const std::string shown = on_terminal(std::string(DEPLOYDYN_CLI) + " " + arguments);
+  EXPECT_NE(shown.find("generate roof: building the model"), std::string::npos) << shown;
+  EXPECT_NE(shown.find("writing the model text"), std::string::npos) << shown;
+  EXPECT_NE(shown.find("written in"), std::string::npos) << shown;
+  const testing::CliOutcome piped = testing::run_cli(arguments);
+  EXPECT_EQ(piped.exit_code, 0) << piped.output;
+  EXPECT_EQ(piped.output.find("building the model"), std::string::npos) << piped.output;
 }
 
 }  // namespace

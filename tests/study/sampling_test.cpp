@@ -9,12 +9,15 @@
 
 #include <algorithm>
 #include <cmath>
+#include <fstream>
 #include <numbers>
 #include <numeric>
 #include <set>
 #include <string>
 
+#include "deploydyn/generators/roof.hpp"
 #include "deploydyn/io/input_error.hpp"
+#include "deploydyn/io/model_writer.hpp"
 #include "deploydyn/io/model_loader.hpp"
 #include "deploydyn/study/random_draws.hpp"
 #include "deploydyn/study/sampling_statistics.hpp"
@@ -225,6 +228,26 @@ TEST(SampledStudy, BadSamplingSectionsAreNamedErrors) {
   expect_study_error(head + "sampling:\n  cases: 3\n  temperature: {dT: [160, 100]}\n", 4,
                "sampling.temperature.dT", "low ≤ high");
   expect_study_error(head + "sampling:\n  cases: 3\n  temperature: {dt: 5}\n", 4, "sampling.temperature.dt", "dT");
+}
+
+// Issue 32: cases: 100000000 drew every case in memory (21 GB in 3.5 min) before running one.
+TEST(SampledStudy, CasesAndDrawnValuesAreCappedAtLoad) {
+  const std::string head = "model: general.yaml\n";
+  expect_study_error(head + "sampling:\n  cases: 100000000\n  material: {E: 0.01}\n", 3, "sampling.cases",
+                     "at most 100000");
+  expect_study_error(head + "sampling:\n  cases: 100001\n  material: {E: 0.01}\n", 3, "sampling.cases",
+                     "at most 100000");
+  // A roof of about 1050 bars, each case setting 3 values a bar (ΔT and its own material).
+  RoofOptions options;
+  options.n_units = 350;
+  const std::filesystem::path roof = std::filesystem::temp_directory_path() / "deploydyn_sampling_roof.yaml";
+  {
+    std::ofstream out(roof);
+    save_model(make_roof(options), out);
+  }
+  expect_study_error("model: " + roof.string() + "\nsampling:\n  cases: 5000\n  temperature: {dT: [0, 10]}\n"
+                     "  material: {E: 0.01}\n", 3, "sampling", "at most 10000000 fit in memory");
+  std::filesystem::remove(roof);
 }
 
 // Percentiles as numpy.percentile computes them by default (linear between order statistics).

@@ -82,13 +82,27 @@ std::string with_existing_files(const std::filesystem::path& folder, std::string
   return j.dump(indent, ' ', false, nlohmann::ordered_json::error_handler_t::replace);
 }
 
+// create_directories says only "File exists" when the folder, or a folder above it, is a
+// symbolic link to nothing: name that link instead. Empty when there is none.
+std::string dangling_link(const std::filesystem::path& folder) {
+  for (std::filesystem::path p = folder; !p.empty(); p = p.parent_path()) {
+    std::error_code error;
+    if (std::filesystem::is_symlink(p, error) && !std::filesystem::exists(p, error)) {
+      const std::string link = "a dangling symbolic link (to " + std::filesystem::read_symlink(p, error).string() + ")";
+      return p == folder ? "it is " + link : p.string() + " is " + link;
+    }
+    if (p == p.parent_path()) break;
+  }
+  return "";
+}
+
 }  // namespace
 
 ResultFolder::ResultFolder(std::filesystem::path folder, std::string status_file_name)
     : folder_(std::move(folder)), status_file_name_(std::move(status_file_name)) {
   std::error_code error;
   std::filesystem::create_directories(folder_, error);
-  if (error) throw OutputError("cannot create folder", folder_, error.value());
+  if (error) throw OutputError("cannot create folder", folder_, error.value(), dangling_link(folder_));
   const std::filesystem::path lock_file = folder_ / kLockFileName;
   lock_fd_ = ::open(lock_file.c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0644);
   if (lock_fd_ < 0) throw OutputError("cannot write", lock_file, errno);

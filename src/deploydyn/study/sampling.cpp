@@ -159,6 +159,12 @@ std::vector<DrawnCase> draw_cases(const Sampling& sampling, const Model& nominal
         drawn.drawn.emplace_back("alpha_factor." + member.name, alpha_factor);
       }
     }
+    if (const long long n_values = static_cast<long long>(drawn.overrides.size()) * sampling.n_cases;
+        k == 0 && n_values > kMaxDrawnValues) {
+      throw std::invalid_argument(fmt::format(
+          "cases: {} cases of {} drawn values each are {} values; at most {} fit in memory: draw fewer cases",
+          sampling.n_cases, drawn.overrides.size(), n_values, kMaxDrawnValues));
+    }
     cases.push_back(std::move(drawn));
   }
   return cases;

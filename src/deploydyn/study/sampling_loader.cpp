@@ -96,6 +96,10 @@ Sampling read_sampling(const YamlValue& section) {
                                                                             : SamplingMethod::monte_carlo;
   }
   sampling.n_cases = section.at("cases").integer(1);
+  if (sampling.n_cases > kMaxSampledCases) {
+    section.at("cases").fail(fmt::format("must be at most {}, got {}: the draws of every case are held in memory",
+                                         kMaxSampledCases, sampling.n_cases));
+  }
   if (const auto seed = section.find("seed")) sampling.seed = static_cast<std::uint64_t>(seed->integer(0));
   if (const auto groups = section.find("length_error")) {
     for (const YamlValue& group : groups->items(1, std::numeric_limits<std::size_t>::max(), "member groups")) {
