@@ -254,6 +254,7 @@ TEST(CliFaults, AnOutFolderThatIsADanglingLinkIsNamedAsOne) {
 
 // Issue 32: under a memory cap a study said only "error: std::bad_alloc".
 TEST(CliFaults, OutOfMemorySaysWhatTheCommandWasDoing) {
+  if (testing::kCliUnderAddressSanitizer) GTEST_SKIP() << "AddressSanitizer cannot start under an address-space limit";
   const ScratchFolder folder("out_of_memory");
   std::filesystem::create_directories(folder.path());
   const auto study = folder.path() / "s.yaml";

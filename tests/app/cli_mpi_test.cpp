@@ -39,6 +39,7 @@ std::size_t count(const std::string& text, const std::string& part) {
 
 TEST(CliMpi, ABadStudyFileIsToldOnceAndEveryProcessExitsWithTwo) {
   if (!mpi_available()) GTEST_SKIP() << "needs mpirun and a deploydyn linked with MPI";
+  if (testing::kCliUnderAddressSanitizer) GTEST_SKIP() << "LeakSanitizer reports OpenMPI's own allocations";
   const ScratchFolder folder("mpi_bad_key");
   std::filesystem::create_directories(folder.path());
   const auto study = folder.path() / "bad.yaml";
@@ -51,6 +52,7 @@ TEST(CliMpi, ABadStudyFileIsToldOnceAndEveryProcessExitsWithTwo) {
 
 TEST(CliMpi, AnOutThatCannotBeWrittenIsToldWithExitCodeThree) {
   if (!mpi_available()) GTEST_SKIP() << "needs mpirun and a deploydyn linked with MPI";
+  if (testing::kCliUnderAddressSanitizer) GTEST_SKIP() << "LeakSanitizer reports OpenMPI's own allocations";
   const ScratchFolder folder("mpi_unwritable");
   std::filesystem::create_directories(folder.path());
   std::ofstream(folder.path() / "file") << "a file, not a folder\n";
@@ -63,6 +65,7 @@ TEST(CliMpi, AnOutThatCannotBeWrittenIsToldWithExitCodeThree) {
 
 TEST(CliMpi, AFolderInUseIsToldWithExitCodeThree) {
   if (!mpi_available()) GTEST_SKIP() << "needs mpirun and a deploydyn linked with MPI";
+  if (testing::kCliUnderAddressSanitizer) GTEST_SKIP() << "LeakSanitizer reports OpenMPI's own allocations";
   const ScratchFolder folder("mpi_in_use");
   std::filesystem::create_directories(folder.path());
   // This test holds the folder's lock, as a study running into it would.

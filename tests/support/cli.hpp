@@ -21,6 +21,22 @@ extern char** environ;
 
 namespace deploydyn::testing {
 
+// The CLI under test is built with AddressSanitizer (the asan preset, `make sanitize`). Its
+// shadow memory needs far more address space than a `prlimit --as` leaves, its allocator aborts
+// where the library would throw std::bad_alloc, and LeakSanitizer reports OpenMPI's own
+// allocations at exit: tests of those faults run in the release build only.
+#if defined(__SANITIZE_ADDRESS__)
+inline constexpr bool kCliUnderAddressSanitizer = true;
+#elif defined(__has_feature)
+#if __has_feature(address_sanitizer)
+inline constexpr bool kCliUnderAddressSanitizer = true;
+#else
+inline constexpr bool kCliUnderAddressSanitizer = false;
+#endif
+#else
+inline constexpr bool kCliUnderAddressSanitizer = false;
+#endif
+
 struct CliOutcome {
   int exit_code = -1;
   std::string output;  // stdout and stderr together
