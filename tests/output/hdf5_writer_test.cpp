@@ -186,16 +186,5 @@ TEST(Hdf5Writer, FilesAreListedAndReplacedByTheNextRun) {
   EXPECT_FALSE(std::filesystem::exists(folder.path() / kXdmfFileName));
 }
 
-// What a run checks after a failed write before it lists history.h5: a whole file reads, the
-// same file cut short (as a failed write leaves it) does not.
-TEST(Hdf5Writer, AFileCutShortIsNotReadable) {
-  ScratchFolder folder("hdf5_cut");
-  H5Fclose(run_and_open({"analysis.end=0.2"}, folder.path()));
-  EXPECT_TRUE(hdf5_history_readable(folder.path()));
-  const auto file = folder.path() / kHdf5FileName;
-  std::filesystem::resize_file(file, std::filesystem::file_size(file) / 2);
-  EXPECT_FALSE(hdf5_history_readable(folder.path()));
-}
-
 }  // namespace
 }  // namespace deploydyn

@@ -4,8 +4,6 @@
 #include <hdf5.h>
 
 #include <algorithm>
-#include <cstdlib>
-#include <cstring>
 #include <utility>
 
 #include "deploydyn/output/checked_file.hpp"
@@ -29,25 +27,8 @@ void quiet_hdf5() {
   (void)silenced;
 }
 
-// The operating system's reason for HDF5's last failure: its file driver records it on the
-// error stack ("errno = 27, error message = 'File too large'"). 0 when it gives none.
-int system_reason() {
-  int reason = 0;
-  const H5E_walk2_t find = [](unsigned, const H5E_error2_t* error, void* found) -> herr_t {
-    const char* at = error->desc != nullptr ? std::strstr(error->desc, "errno = ") : nullptr;
-    if (at == nullptr) return 0;
-    *static_cast<int*>(found) = std::atoi(at + std::strlen("errno = "));
-    return 1;  // found: stop the walk
-  };
-  H5Ewalk2(H5E_DEFAULT, H5E_WALK_UPWARD, find, &reason);
-  return reason;
-}
-
-// Called at once after the HDF5 call that failed, while its error stack holds why.
 [[noreturn]] void failed(const std::filesystem::path& file, const std::string& what) {
-  const int reason = system_reason();
-  throw OutputError("cannot write", file, reason,
-                    "HDF5 could not " + what + (reason != 0 ? std::string(": ") + std::strerror(reason) : ""));
+  throw OutputError("cannot write", file, 0, "HDF5 could not " + what);
 }
 
 // An HDF5 identifier closed by `close` at the end of its scope.
@@ -128,7 +109,7 @@ Hdf5Writer::Hdf5Writer(const std::filesystem::path& folder, const Model& model)
   Handle access(H5Pcreate(H5P_FILE_ACCESS), H5Pclose);
   H5Pset_libver_bounds(access.get(), H5F_LIBVER_V18, H5F_LIBVER_LATEST);
   file_ = H5Fcreate(file.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, access.get());
-  if (file_ < 0) failed(file, "create the file");
+  if (file_ < 0) throw OutputError("cannot write", file, 0, "HDF5 could not create the file");
   try {
     datasets_.push_back({"/time", {}});
     datasets_.push_back({"/history", {static_cast<hsize_t>(layout_.columns().size())}});
@@ -324,31 +305,6 @@ std::string Hdf5Writer::xdmf() const {
   }
   text += "    </Grid>\n  </Domain>\n</Xdmf>\n";
   return text;
-}
-
-bool hdf5_history_readable(const std::filesystem::path& folder) {
-  quiet_hdf5();
-  Handle file(H5Fopen((folder / kHdf5FileName).c_str(), H5F_ACC_RDONLY, H5P_DEFAULT), H5Fclose);
-  if (!file.ok()) return false;
-  // The datasets' headers and their last chunks: a write cut short leaves addresses beyond the
-  // end of the file there ("addr overflow").
-  for (const char* path : {"/time", "/history"}) {
-    Handle set(H5Dopen2(file.get(), path, H5P_DEFAULT), H5Dclose);
-    Handle space(set.ok() ? H5Dget_space(set.get()) : -1, H5Sclose);
-    if (!space.ok()) return false;
-    hsize_t shape[2] = {0, 1};
-    const int rank = H5Sget_simple_extent_dims(space.get(), shape, nullptr);
-    if (rank < 1 || rank > 2) return false;
-    if (shape[0] == 0) continue;
-    hsize_t start[2] = {shape[0] - 1, 0}, count[2] = {1, rank == 2 ? shape[1] : 1};
-    std::vector<double> row(count[1]);
-    Handle memory(H5Screate_simple(1, &count[1], nullptr), H5Sclose);
-    if (!memory.ok() || H5Sselect_hyperslab(space.get(), H5S_SELECT_SET, start, nullptr, count, nullptr) < 0 ||
-        H5Dread(set.get(), H5T_NATIVE_DOUBLE, memory.get(), space.get(), H5P_DEFAULT, row.data()) < 0) {
-      return false;
-    }
-  }
-  return true;
 }
 
 }  // namespace deploydyn

@@ -75,8 +75,4 @@ class Hdf5Writer final : public RecordSink {
   std::chrono::steady_clock::time_point last_flush_;
 };
 
-// Whether folder/history.h5 opens and its /time and /history read to their last row: a write
-// that failed part-way (a full disk, a file-size limit) can leave it unreadable.
-bool hdf5_history_readable(const std::filesystem::path& folder);
-
 }  // namespace deploydyn

@@ -1,7 +1,5 @@
 #include "deploydyn/output/run_to_folder.hpp"
 
-#include <fmt/format.h>
-
 #include <algorithm>
 #include <atomic>
 #include <optional>
@@ -41,18 +39,6 @@ class FanOut final : public RecordSink {
  private:
   std::vector<RecordSink*> sinks_;
 };
-
-// After a failed write: history.h5 may be unreadable (a row cut short leaves addresses beyond
-// its end). Such a file is removed with its index, so that the folder lists only files that
-// can be read (history.csv keeps every whole row), and the message says so.
-void drop_unreadable_hdf5(const std::filesystem::path& folder, RunReport& report) {
-  std::error_code error;
-  if (!std::filesystem::exists(folder / kHdf5FileName, error) || hdf5_history_readable(folder)) return;
-  std::filesystem::remove(folder / kHdf5FileName, error);
-  std::filesystem::remove(folder / kXdmfFileName, error);
-  report.message += fmt::format("; {} was left unreadable and is removed with {} (history.csv holds the rows)",
-                                kHdf5FileName, kXdmfFileName);
-}
 
 }  // namespace
 
@@ -99,7 +85,6 @@ RunReport run_to_folder(const Model& model, const std::filesystem::path& folder,
     output_error = error;
     record_output_failure(report, error);
   }
-  if (output_error && model.output.hdf5) drop_unreadable_hdf5(folder, report);
   report.warnings = plausibility_warnings(model, envelope);
   try {  // what was computed, also of a run that failed
     if (!output_error) write_envelope_table(folder / kEnvelopeFileName, model, envelope);
