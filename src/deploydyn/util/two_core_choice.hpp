@@ -25,11 +25,7 @@ class TwoCoreChoice {
   // when `worth_trying` is false or the run has one core.
   template <class First, class Second>
   void run(bool worth_trying, const First& first, const Second& second) {
-    if (!worth_trying || run_threads() < 2) {
-      first();
-      second();
-      return;
-    }
+    if (!worth_trying || run_threads() < 2) return side_by_side(false, first, second);
     const bool two_cores = next_is_two_cores();
     const auto start = std::chrono::steady_clock::now();
     side_by_side(two_cores, first, second);
