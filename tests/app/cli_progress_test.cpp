@@ -14,10 +14,12 @@
 namespace deploydyn {
 namespace {
 
-// 1 250 000 steps of the general linkage: about 2.5 s here, long enough for the line to appear.
+// 1 250 000 steps of the general linkage: about 2.5 s here, long enough for the line to appear;
+// a twentieth of them under the sanitizer, which runs about 20 times slower.
 std::string long_run(const testing::ScratchFolder& out) {
+  const std::string step = testing::kCliUnderAddressSanitizer ? "8e-5" : "4e-6";
   return std::string(DEPLOYDYN_CLI) + " run " + testing::example_path("general.yaml") + " --out " +
-         out.path().string() + " --set analysis.step=4e-6 --set analysis.output_interval=1e-2";
+         out.path().string() + " --set analysis.step=" + step + " --set analysis.output_interval=1e-2";
 }
 
 // Runs `command` on a pseudo-terminal (util-linux `script`), returning what it printed.
