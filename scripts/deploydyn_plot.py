@@ -6,6 +6,9 @@ element or node), each run named by its folder or by --label:
 
     strain.{png,svg}       total and mechanical strain per element (µε)
     force.{png,svg}        axial force per element (N, tension positive)
+    bending.{png,svg}      beams: bending moments, torsional moment (N·m) and shear forces (N)
+    hinge.{png,svg}        hinges: angle (°) and the spring, damper, friction and latch/stop/stick
+                           torques (N·m) that act; latch times marked
     coordinates.{png,svg}  x and y (and z) of the nodes that move (m)
     driver.{png,svg}       driver torque (N·m) or force (N)
     energy.{png,svg}       kinetic and strain energy, external work (J) — with --what energy
@@ -17,9 +20,10 @@ element or node), each run named by its folder or by --label:
     scripts/deploydyn_plot.py results/hot results/cold --out plots
     scripts/deploydyn_plot.py results/hot results/cold --label "ΔT = +130" --label "ΔT = −170" \\
         --what strain driver --element 2 --format png
-A panel shows at most 12 lines: with more members or nodes, those of largest peak |force| or
-motion, and the panel's note says so (--element / --node choose others), so that 10⁴ members
-plot in seconds (bench/plot_bench.py). Each folder's status is printed on stderr (completed, failed, interrupted, running, or killed:
+A member panel names at most 8 members in colour (4 line styles with several runs), those of
+largest peak |value| of its quantity, and shades the range of the others; a coordinate panel
+shows the 12 nodes that move most; notes say so (--element / --node choose others). Legends
+sit beside the axes, never over the data; 10⁴ members plot in seconds (bench/plot_bench.py). Each folder's status is printed on stderr (completed, failed, interrupted, running, or killed:
 the run died without finishing). Runs that did not complete are drawn as far as they got; a
 history whose last row a killed run left incomplete is drawn without that row. The plotting
 core is plot_columns of scripts/plot_paper.py, which draws the paper's figures; histories are
@@ -41,11 +45,13 @@ from plot_paper import MICRO, Panel, Run, plot_columns, read_folder  # noqa: E40
 from structure_view import (Structure, add_view_arguments, axis_labels, force_norm, line_collection,  # noqa: E402
                             project, segments, view_angles)
 
-QUANTITIES = ("strain", "force", "coordinates", "driver", "energy", "structure", "displacement")
-DEFAULT_QUANTITIES = ("strain", "force", "coordinates", "driver", "structure")
-STYLES = ("-", "--", ":", "-.")
+QUANTITIES = ("strain", "force", "bending", "hinge", "coordinates", "driver", "energy", "structure",
+              "displacement")
+DEFAULT_QUANTITIES = ("strain", "force", "bending", "hinge", "coordinates", "driver", "structure")
 MOVES_M = 1e-9  # m: a node that moves less is not shown among the coordinates
-MAX_LINES = 12  # lines per panel: beyond, the largest
+MAX_LINES = 12  # node lines per panel: beyond, those that move most
+MAX_NAMED = 8  # members named in colour in a panel of one run; the rest as a shaded range
+MAX_NAMED_PER_RUN = 4  # with several runs (colour tells the run, line style the member)
 
 
 def read_header(folder):
@@ -74,9 +80,9 @@ def moving_nodes(folders, nodes, axes):
     return moving
 
 
-def largest(folders, names, columns_of_name, count=MAX_LINES):
-    """The `count` names whose columns (columns_of_name(name)) vary or reach most in any run:
-    peak |value| for forces, range for coordinates."""
+def largest(folders, names, columns_of_name, count=None):
+    """The names whose columns (columns_of_name(name)) vary or reach most in any run, largest
+    first (the first `count`): peak |value| for forces, range for coordinates."""
     size = {}
     for folder in folders:
         table = read_folder(pathlib.Path(folder))[2] or {}
@@ -93,9 +99,43 @@ def peak(values):
 
 
 def columns_of(names, prefix, what):
-    """(column, legend label, colour, line style) for each name: line style by name."""
-    return [(f"{prefix}{n}", f"{what} {n}", None, STYLES[i % len(STYLES)])
-            for i, n in enumerate(names)]
+    """(column, legend label) for each name; plot_paper chooses colours and line styles."""
+    return [(f"{prefix}{n}", f"{what} {n}") for n in names]
+
+
+def member_panel(folders, names, prefix, ylabel, chosen=None, scale=1.0, n_runs=1, what="element"):
+    """A panel of one quantity over members: the chosen ones, else the few of largest peak
+    |value| in colour and with names (as many as have a colour of their own: 10 for one run,
+    4 line styles for several) and the rest as one shaded range, so that neither the legend nor
+    the artists grow with the model."""
+    if chosen:
+        return Panel(columns_of(chosen, prefix, what), ylabel, scale)
+    shown = min(len(names), MAX_NAMED if n_runs == 1 else MAX_NAMED_PER_RUN)
+    ranked = largest(folders, names, lambda n: [(f"{prefix}{n}", peak)]) if len(names) > shown else names
+    rest = ranked[shown:]
+    note = f"the {shown} of {len(names)} of largest peak |value| (--element chooses)" if rest else ""
+    return Panel(columns_of(ranked[:shown], prefix, what), ylabel, scale, note=note,
+                 band=[f"{prefix}{n}" for n in rest], band_label=f"the other {len(rest)} (range)")
+
+
+def nonzero(folders, prefix, names):
+    """Whether any run's `prefix<name>` columns leave zero (a damper torque of hinges without
+    dampers does not)."""
+    for folder in folders:
+        table = read_folder(pathlib.Path(folder))[2] or {}
+        if any(f"{prefix}{n}" in table and np.any(table[f"{prefix}{n}"]) for n in names):
+            return True
+    return False
+
+
+def events(folders, labels, what):
+    """{run label: [(time, what)]} of the summaries' events named `what` (e.g. latched)."""
+    marks = {}
+    for label, folder in zip(labels, folders):
+        summary = read_folder(pathlib.Path(folder))[1] or {}
+        marks[label] = [(e["time_s"], what) for e in summary.get("events") or []
+                        if e.get("what") == what and "time_s" in e]
+    return marks
 
 
 def case_names(folders, labels):
@@ -122,50 +162,78 @@ def model_names(folders):
     return names
 
 
-def figures(columns, folders, what, elements, nodes):
-    """{figure name: (panels, ncols)} for the quantities asked for that the history has."""
-    # Drivers by summary.json (a coordinate driver's force.<name> looks like a member's);
-    # members: the elements with strain columns, else the other force columns.
-    drivers = set(names_after(columns, "torque."))
+def driver_names(columns, folders):
+    """The drivers, as the summaries name them; without a summary, the torque columns that are
+    not a beam's (a beam's torque.<name> goes with its moment.<name>)."""
+    drivers, summaries = set(), False
     for folder in folders:
-        summary = read_folder(pathlib.Path(folder))[1] or {}
-        drivers |= set(summary.get("drivers") or {})
+        summary = read_folder(pathlib.Path(folder))[1]
+        if summary is not None and "drivers" in summary:
+            summaries = True
+            drivers |= set(summary.get("drivers") or {})
+    if not summaries:
+        beams = set(names_after(columns, "moment."))
+        drivers = {d for d in names_after(columns, "torque.") if d not in beams}
+    return drivers
+
+
+def figures(columns, folders, what, elements, nodes, labels):
+    """{figure name: (panels, ncols)} for the quantities asked for that the history has."""
+    # A coordinate driver's force.<name> looks like a member's; a 3D beam's torque.<name> like
+    # a driver's.
+    drivers = driver_names(columns, folders)
+    driver_torques = [d for d in names_after(columns, "torque.") if d in drivers]
     driver_forces = [d for d in names_after(columns, "force.") if d in drivers]
     members = names_after(columns, "strain.") or [n for n in names_after(columns, "force.")
                                                   if n not in drivers]
-    note = ""
-    if not elements and len(members) > MAX_LINES:
-        note = (f"the {MAX_LINES} of {len(members)} members of largest peak |force| "
-                "(--element chooses)")
-        members = largest(folders, members, lambda n: [(f"force.{n}", peak)])
-    elements = elements or members
+    beams = names_after(columns, "moment.")
+    hinges = names_after(columns, "hinge_angle.")
+    runs = len(folders)
     axes = [a for a in "xyz" if any(c.startswith(f"{a}.") for c in columns)]
     out = {}
-    if "strain" in what and elements and any(c.startswith("strain.") for c in columns):
-        out["strain"] = ([Panel(columns_of(elements, "strain.", "element"),
-                                "total strain ε (µε)", MICRO, note=note),
-                          Panel(columns_of(elements, "mstrain.", "element"),
-                                "mechanical strain ε − αΔT (µε)", MICRO, note=note)], 1)
-    if "force" in what and elements:
-        out["force"] = ([Panel(columns_of(elements, "force.", "element"),
-                               "axial force (N, tension +)", note=note)], 1)
+
+    def panel(names, prefix, ylabel, scale=1.0, what="element"):
+        chosen = [e for e in elements if e in names] if elements else None
+        return member_panel(folders, names, prefix, ylabel, chosen, scale, runs, what)
+    if "strain" in what and members and any(c.startswith("strain.") for c in columns):
+        out["strain"] = ([panel(members, "strain.", "total strain ε (µε)", MICRO),
+                          panel(members, "mstrain.", "mechanical strain ε − αΔT (µε)", MICRO)], 1)
+    if "force" in what and members:
+        out["force"] = ([panel(members, "force.", "axial force (N, tension +)")], 1)
+    if "bending" in what and beams:
+        panels = [panel(beams, "moment.", "bending moment M_z (N·m)")]
+        for prefix, ylabel in (("moment_y.", "bending moment M_y (N·m)"), ("torque.", "torsional moment (N·m)"),
+                               ("shear.", "shear force V_y (N)"), ("shear_z.", "shear force V_z (N)")):
+            if any(f"{prefix}{b}" in columns for b in beams):
+                panels.append(panel(beams, prefix, ylabel))
+        out["bending"] = (panels, 1)
+    if "hinge" in what and hinges:
+        latched = events(folders, labels, "latched")
+        panels = [panel(hinges, "hinge_angle.", "hinge angle θ (°)", 180.0 / np.pi, "hinge")]
+        for prefix, ylabel in (("spring_torque.", "spring torque (N·m)"),
+                               ("damper_torque.", "damper torque (N·m)"),
+                               ("friction_torque.", "friction torque (N·m)"),
+                               ("lock_torque.", "latch, stop or stick torque (N·m)")):
+            if nonzero(folders, prefix, hinges):
+                panels.append(panel(hinges, prefix, ylabel, what="hinge"))
+        for p in panels:
+            p.vlines = latched
+        out["hinge"] = (panels, 1)
     if "coordinates" in what and axes:
         shown = nodes or moving_nodes(folders, names_after(columns, f"{axes[0]}."), axes)
         node_note = ""
         if not nodes and len(shown) > MAX_LINES:
             node_note = f"the {MAX_LINES} of {len(shown)} moving nodes that move most (--node chooses)"
-            shown = largest(folders, shown, lambda n: [(f"{a}.{n}", np.ptp) for a in axes])
+            shown = largest(folders, shown, lambda n: [(f"{a}.{n}", np.ptp) for a in axes], MAX_LINES)
         if shown:
             out["coordinates"] = ([Panel(columns_of(shown, f"{a}.", "node"), f"{a} (m)",
                                          note=node_note) for a in axes], 1)
     if "driver" in what:
-        torques = names_after(columns, "torque.")
-        forces = driver_forces
         panels = []
-        if torques:
-            panels.append(Panel(columns_of(torques, "torque.", "driver"), "driver torque (N·m)"))
-        if forces:
-            panels.append(Panel(columns_of(forces, "force.", "driver"), "driver force (N)"))
+        if driver_torques:
+            panels.append(Panel(columns_of(driver_torques, "torque.", "driver"), "driver torque (N·m)"))
+        if driver_forces:
+            panels.append(Panel(columns_of(driver_forces, "force.", "driver"), "driver force (N)"))
         if panels:
             out["driver"] = (panels, 1)
     if "energy" in what:
@@ -306,7 +374,7 @@ def main(argv=None):
     out = pathlib.Path(args.out)
     written = []
     for name, (panels, ncols) in figures(columns, [u[1] for u in usable], args.what,
-                                         args.element, args.node).items():
+                                         args.element, args.node, [u[0] for u in usable]).items():
         done = plot_columns(out / f"{name}.{args.format[0]}", runs, panels, title, ncols=ncols,
                             also=args.format[1:])
         if done:

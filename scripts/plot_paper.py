@@ -30,6 +30,7 @@ import textwrap
 from typing import Callable, Optional
 
 import matplotlib
+import numpy as np
 
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402  (after choosing the backend)
@@ -71,7 +72,10 @@ class Panel:
 
     runs: labels of the runs to show here (default all); yscale: "linear" or "symlog" (with
     linthresh); hlines: (value, label) reference lines; note: the legend's title;
-    minus: label of a run whose values (same output times) are subtracted from every run's.
+    minus: label of a run whose values (same output times) are subtracted from every run's;
+    band: more column names, drawn per run as one shaded range (their min to max at each
+    time) labelled band_label, so that thousands of members cost one artist;
+    vlines: {run label: [(time, label)]}: events marked as dotted lines in the run's colour.
     """
     columns: list
     ylabel: str
@@ -82,6 +86,9 @@ class Panel:
     hlines: list = dataclasses.field(default_factory=list)
     note: str = ""
     minus: Optional[str] = None
+    band: list = dataclasses.field(default_factory=list)
+    band_label: str = ""
+    vlines: dict = dataclasses.field(default_factory=dict)
 
 
 @functools.lru_cache(maxsize=None)
@@ -126,32 +133,68 @@ def load_run(run):
     return data
 
 
+COLUMN_STYLES = ("-", "--", ":", "-.")
+
+
+def _column_look(j, n_runs):
+    """Colour and line style of a panel's j-th column: with one run, ten colours before a
+    style repeats; with several, colour tells the run and style the column."""
+    if n_runs == 1:
+        return f"C{j % 10}", COLUMN_STYLES[(j // 10) % len(COLUMN_STYLES)]
+    return None, COLUMN_STYLES[j % len(COLUMN_STYLES)]
+
+
+def _draw_band(ax, panel, run, values_of, colour):
+    """The range of the panel's band columns in one run as one shaded area."""
+    columns = [values_of(name) for name in panel.band]
+    columns = [c for c in columns if c is not None]
+    if not columns:
+        return
+    stacked = np.vstack(columns) * panel.scale
+    ax.fill_between(values_of("t"), stacked.min(axis=0), stacked.max(axis=0), color=colour or "grey",
+                    alpha=0.25, linewidth=0, label=panel.band_label or f"{len(columns)} more (range)")
+
+
 def _draw_panel(ax, panel, runs, data):
-    """Draw one panel: colour by column for one run, else by run (line style by column)."""
+    """Draw one panel: colour by column for one run, else by run (line style by column). The
+    legend goes beside the axes, never over the data."""
     shown = [r for r in runs if panel.runs is None or r.label in panel.runs]
     columns = [(c if isinstance(c, tuple) else (c, c)) + (None, None) for c in panel.columns]
-    column_styles = ["-", "--", ":", "-."]
+    marked = set()
     for i, run in enumerate(shown):
+        table = data[run.label]
+        if panel.minus and panel.minus not in data:
+            print(f"plot: no run {panel.minus} to subtract; panel left out", file=sys.stderr)
+            return
+
+        def values_of(name, table=table):
+            if name not in table:
+                return None
+            if panel.minus and name != "t":
+                return table[name] - data[panel.minus][name]
+            return table[name]
+        run_colour = run.colour or f"C{i}"
         for j, (name, label, colour, style, *_) in enumerate(columns):
-            if name not in data[run.label]:
+            values = values_of(name)
+            if values is None:
                 print(f"plot: {run.folder} has no column {name}", file=sys.stderr)
                 continue
+            default_colour, default_style = _column_look(j, len(shown))
             if len(shown) == 1:
-                colour = colour or f"C{j}"
-                style = style or run.linestyle or column_styles[j % len(column_styles)]
+                colour = colour or default_colour
+                style = style or run.linestyle or default_style
                 text = label
             else:
-                colour = run.colour or f"C{i}"
-                style = run.linestyle or column_styles[j % len(column_styles)]
+                colour = run_colour
+                style = run.linestyle or default_style
                 text = run.label if len(columns) == 1 else f"{run.label}: {label}"
-            values = data[run.label][name]
-            if panel.minus:
-                if panel.minus not in data:
-                    print(f"plot: no run {panel.minus} to subtract; panel left out", file=sys.stderr)
-                    return
-                values = values - data[panel.minus][name]
-            ax.plot(data[run.label]["t"], values * panel.scale,
-                    color=colour, linestyle=style, linewidth=1.6, label=text)
+            ax.plot(table["t"], values * panel.scale, color=colour, linestyle=style, linewidth=1.6, label=text)
+        if panel.band:
+            _draw_band(ax, panel, run, values_of, "grey" if len(shown) == 1 else run_colour)
+        for time, label in panel.vlines.get(run.label, []):
+            ax.axvline(time, color="dimgrey" if len(shown) == 1 else run_colour, linestyle=":", linewidth=1.0,
+                       label=None if label in marked else label)
+            marked.add(label)
     for value, label in panel.hlines:
         ax.axhline(value, color="grey", linestyle=":", linewidth=1.0)
         below = value > 0        # keep the label off the curve that settles on the line
@@ -162,8 +205,8 @@ def _draw_panel(ax, panel, runs, data):
         ax.set_yscale("symlog", linthresh=panel.linthresh)
     ax.set_ylabel(panel.ylabel)
     ax.grid(True, alpha=0.3)
-    ax.legend(fontsize=8, loc="best", framealpha=0.85, title=panel.note or None,
-              title_fontsize=8)
+    ax.legend(fontsize=8, loc="upper left", bbox_to_anchor=(1.01, 1.0), borderaxespad=0.0,
+              title=textwrap.fill(panel.note, 32) if panel.note else None, title_fontsize=8)
 
 
 def plot_columns(out_png, runs, panels, title, ncols=1, xlabel="time t (s)", also=()):
@@ -179,7 +222,7 @@ def plot_columns(out_png, runs, panels, title, ncols=1, xlabel="time t (s)", als
         print(f"plot: no result for {pathlib.Path(out_png).name}, not drawn", file=sys.stderr)
         return None
     nrows = -(-len(panels) // ncols)
-    width = 9.0 if ncols == 1 else 7.0 * ncols
+    width = 11.0 if ncols == 1 else 9.0 * ncols  # room for the legends beside the axes
     fig, axes = plt.subplots(nrows, ncols, figsize=(width, 3.0 * nrows + 1.0),
                              sharex=True, squeeze=False)
     for ax, panel in zip(axes.flat, panels):

@@ -190,5 +190,56 @@ def test_ten_thousand_members_are_drawn_as_one_collection(tmp_path, monkeypatch)
     force_figures = [f for f in figures if any(ax.get_ylabel() == force_panel for ax in f.axes)]
     for ax in force_figures[-1].axes:
         if ax.get_ylabel() == force_panel:
-            assert len(ax.lines) == 12
-            assert "12 of 10000 members" in ax.get_legend().get_title().get_text()
+            assert len(ax.lines) == 8                      # the largest, named
+            assert len(ax.collections) == 1               # the other 9992 as one shaded range
+            legend = ax.get_legend()
+            assert "8 of 10000" in legend.get_title().get_text().replace("\n", " ")
+            assert "the other 9992 (range)" in [t.get_text() for t in legend.get_texts()]
+
+
+def figure_axes(figures, ylabel):
+    """The axes labelled `ylabel` in the last figure that has them."""
+    from matplotlib.figure import Figure
+    found = [ax for f in figures if isinstance(f, Figure) for ax in f.axes if ax.get_ylabel() == ylabel]
+    assert found, ylabel
+    return found[-1]
+
+
+def test_hinge_and_bending_figures_with_legends_beside_the_data(tmp_path, monkeypatch):
+    """Issue 31: the spring-driven mast's hinges (angle, the torques that act, latch times marked)
+    and the 3D frame's beams (moments, torsion, shears) get figures of their own, and no legend
+    covers the axes it explains."""
+    boom, frame = tmp_path / "boom", tmp_path / "frame"
+    run_cli("run", SOURCE_DIR / "examples" / "boom" / "boom.yaml", "--out", boom, "--quiet")
+    run_cli("run", SOURCE_DIR / "examples" / "beams" / "frame3d.yaml", "--out", frame, "--quiet")
+    import json
+    import deploydyn_plot
+    figures = []
+    monkeypatch.setattr(deploydyn_plot.plt, "close", lambda fig=None: figures.append(fig))
+    assert deploydyn_plot.main([str(boom), "--out", str(tmp_path / "b"), "--format", "png"]) == 0
+    assert (tmp_path / "b" / "hinge.png").exists() and not (tmp_path / "b" / "bending.png").exists()
+    angle = figure_axes(figures, "hinge angle θ (°)")
+    latches = [e["time_s"] for e in json.loads((boom / "summary.json").read_text())["events"]
+               if e["what"] == "latched"]
+    assert len(latches) == 4
+    marked = [line for line in angle.lines if line.get_linestyle() == ":"]
+    assert sorted(line.get_xdata()[0] for line in marked) == pytest.approx(sorted(latches))
+    curves = [line for line in angle.lines if line.get_linestyle() != ":"]
+    assert len(curves) == 4 and len({line.get_color() for line in curves}) == 4
+    assert max(abs(line.get_ydata()).max() for line in curves) == pytest.approx(90.0, abs=1.0)  # degrees
+    figure_axes(figures, "spring torque (N·m)")
+    figure_axes(figures, "latch, stop or stick torque (N·m)")
+
+    assert deploydyn_plot.main([str(frame), "--out", str(tmp_path / "f"), "--format", "png"]) == 0
+    assert (tmp_path / "f" / "bending.png").exists() and not (tmp_path / "f" / "hinge.png").exists()
+    torsion = figure_axes(figures, "torsional moment (N·m)")
+    assert {line.get_label() for line in torsion.lines} == {"element a1", "element a2", "element c1",
+                                                             "element c2"}
+    assert not (tmp_path / "f" / "driver.png").exists()   # a 3D beam's torque is not a driver's
+    for figure in figures:
+        if figure is None or not hasattr(figure, "canvas"):
+            continue
+        figure.canvas.draw()
+        for ax in figure.axes:
+            if ax.get_legend() is not None:
+                assert ax.get_legend().get_window_extent().x0 >= ax.get_window_extent().x1 - 1
