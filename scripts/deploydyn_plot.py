@@ -17,6 +17,9 @@ element or node), each run named by its folder or by --label:
                            --azim, --elev), displacements scaled by --scale
     displacement.{png,svg} |u| = |x − X| of the nodes that move most (m; X: model-file position)
 
+A modal folder gets frequencies and mode_shapes (scripts/modes_figures.py), a continuation
+folder path (scripts/path_figures.py) instead.
+
     scripts/deploydyn_plot.py results/hot results/cold --out plots
     scripts/deploydyn_plot.py results/hot results/cold --label "ΔT = +130" --label "ΔT = −170" \\
         --what strain driver --element 2 --format png
@@ -41,9 +44,11 @@ import matplotlib.pyplot as plt  # noqa: E402
 from matplotlib.collections import LineCollection  # noqa: E402
 
 sys.path.insert(0, str(pathlib.Path(__file__).resolve().parent))
-from plot_paper import MICRO, Panel, Run, plot_columns, read_folder  # noqa: E402
+from plot_paper import MICRO, Panel, Run, plot_columns, read_folder, result_folder  # noqa: E402
 from structure_view import (Structure, add_view_arguments, axis_labels, force_norm, line_collection,  # noqa: E402
                             project, segments, view_angles)
+import modes_figures  # noqa: E402
+import path_figures  # noqa: E402
 
 QUANTITIES = ("strain", "force", "bending", "hinge", "coordinates", "driver", "energy", "structure",
               "displacement")
@@ -154,7 +159,7 @@ def model_names(folders):
     """The model names the summaries give, in order, once each."""
     names = []
     for folder in folders:
-        _, summary, _ = read_folder(pathlib.Path(folder))
+        _, summary = result_folder.read_status(pathlib.Path(folder))
         if summary is not None:
             name = summary.get("model") or "(unnamed model)"
             if name not in names:
@@ -340,6 +345,83 @@ def plot_displacement(out, runs, structures, nodes, title, formats):
                         title, also=formats[1:]) is not None
 
 
+def analysis_type(folder):
+    """The analysis a result folder holds (summary.json's analysis.type): "modal",
+    "continuation", or a time history (anything else, also when the summary is unreadable)."""
+    _, summary = result_folder.read_status(pathlib.Path(folder))
+    analysis = (summary or {}).get("analysis")
+    return analysis.get("type") if isinstance(analysis, dict) else None
+
+
+def read_table(file):
+    """A CSV table of numbers as {column: array}; text cells (path.csv's event) as strings."""
+    import csv
+    with open(file, newline="", encoding="utf-8") as stream:
+        rows = list(csv.reader(stream))
+    if not rows:
+        return {}
+    header, body = rows[0], [r for r in rows[1:] if len(r) == len(rows[0])]
+    table = {}
+    for k, name in enumerate(header):
+        cells = [r[k] for r in body]
+        try:
+            table[name] = np.array([float(c) if c else np.nan for c in cells])
+        except ValueError:
+            table[name] = np.array(cells)
+    return table
+
+
+def folder_table(folder, name):
+    """(the folder's table `name` or None with a message, its summary)."""
+    _, summary = result_folder.read_status(pathlib.Path(folder))
+    file = pathlib.Path(folder) / name
+    try:
+        return read_table(file), summary
+    except OSError as error:
+        print(f"plot: {folder}: cannot read {name}: {error}", file=sys.stderr)
+        return None, summary
+
+
+def plot_modal(out, usable, args, title):
+    """frequencies and mode_shapes (scripts/modes_figures.py) of modal folders."""
+    tables = [(label, folder_table(folder, "modes.csv")[0]) for label, folder in usable]
+    tables = [(label, t) for label, t in tables if t and "omega2" in t and len(t["omega2"])]
+    written = []
+    if not tables:
+        return written
+    fig, ax = plt.subplots(figsize=(11.0, 5.0))
+    modes_figures.plot_frequencies(ax, tables)
+    fig.suptitle(title, fontsize=10.5)
+    fig.tight_layout()
+    save(fig, out, "frequencies", args.format)
+    written.append("frequencies")
+    label, folder = usable[0]
+    structure = model_of(folder, args.model)
+    table = dict(tables)[label] if label in dict(tables) else None
+    if structure is not None and table is not None:
+        angles = view_angles(args.view, args.azim, args.elev, structure.dimension)
+        fig = modes_figures.plot_mode_shapes(structure, table, modes_figures.mode_frames(folder, structure), angles)
+        if fig is not None:
+            fig.suptitle(f"{title}: mode shapes of {label}", fontsize=10.5)
+            fig.tight_layout()
+            save(fig, out, "mode_shapes", args.format)
+            written.append("mode_shapes")
+    return written
+
+
+def plot_continuation(out, usable, args, title):
+    """path (scripts/path_figures.py) of continuation folders."""
+    runs = [(label, *folder_table(folder, "path.csv")) for label, folder in usable]
+    fig = plt.figure(figsize=(11.0, 9.0))
+    if not path_figures.plot_path(fig, runs):
+        plt.close(fig)
+        return []
+    fig.suptitle(title, fontsize=10.5)
+    fig.tight_layout()
+    save(fig, out, "path", args.format)
+    return ["path"]
+
+
 def main(argv=None):
     parser = argparse.ArgumentParser(
         description=__doc__.splitlines()[0],
@@ -362,17 +444,24 @@ def main(argv=None):
     args = parser.parse_args(argv)
 
     labels = case_names(args.folders, args.label)
-    headers = [read_header(f) for f in args.folders]
-    usable = [(label, f, h) for label, f, h in zip(labels, args.folders, headers) if h]
+    title = args.title or f"{' / '.join(model_names(args.folders))}: {', '.join(labels)}"
+    out = pathlib.Path(args.out)
+    kinds = [analysis_type(f) for f in args.folders]
+    written = []
+    for kind, draw in (("modal", plot_modal), ("continuation", plot_continuation)):
+        chosen = [(label, f) for label, f, k in zip(labels, args.folders, kinds) if k == kind]
+        if chosen:
+            written += draw(out, chosen, args, title)
+    histories = [(label, f) for label, f, k in zip(labels, args.folders, kinds)
+                 if k not in ("modal", "continuation")]
+    if not histories:
+        return 0 if written else no_result()
+    headers = [read_header(f) for _, f in histories]
+    usable = [(label, f, h) for (label, f), h in zip(histories, headers) if h]
     if not usable:
-        print("plot: no result to draw", file=sys.stderr)
-        return 1
+        return 0 if written else no_result()
     runs = [Run(label, pathlib.Path(folder), incomplete_ok=True) for label, folder, _ in usable]
     columns = usable[0][2]
-    title = args.title or f"{' / '.join(model_names(args.folders))}: {', '.join(labels)}"
-
-    out = pathlib.Path(args.out)
-    written = []
     for name, (panels, ncols) in figures(columns, [u[1] for u in usable], args.what,
                                          args.element, args.node, [u[0] for u in usable]).items():
         done = plot_columns(out / f"{name}.{args.format[0]}", runs, panels, title, ncols=ncols,
@@ -392,6 +481,11 @@ def main(argv=None):
         print("plot: nothing drawn (no matching columns)", file=sys.stderr)
         return 1
     return 0
+
+
+def no_result():
+    print("plot: no result to draw", file=sys.stderr)
+    return 1
 
 
 if __name__ == "__main__":

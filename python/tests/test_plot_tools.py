@@ -243,3 +243,74 @@ def test_hinge_and_bending_figures_with_legends_beside_the_data(tmp_path, monkey
         for ax in figure.axes:
             if ax.get_legend() is not None:
                 assert ax.get_legend().get_window_extent().x0 >= ax.get_window_extent().x1 - 1
+
+
+MISES = """
+name: von Mises truss
+nodes: {A: [-1, 0], B: [1, 0], C: [0, 0.1]}
+materials: {steel: {E: 2.0e11, alpha: 1.2e-5}}
+elements:
+  1: {nodes: [A, C], area: 1.0e-4, material: steel, mass: 1}
+  2: {nodes: [B, C], area: 1.0e-4, material: steel, mass: 1}
+supports: [{node: A}, {node: B}]
+loads: [{node: C, force: [0, -1.0e+4]}]
+analysis: {type: continuation, parameter: load, end: 1.1, eigenvalues: 2}
+"""
+
+
+def test_modal_folders_draw_frequencies_and_mode_shapes(tmp_path, monkeypatch):
+    """Issue 31: a modal folder drew its folded model twice as 't = 0' and 't = 20 s'. Now its
+    frequencies against the driver's position and its mode shapes, read from the VTK frames:
+    the stress-free linkage's equilibrium at t = 0 is its model-file shape, and each shape moves
+    its largest node by a tenth of the shortest bar (output/modes_to_folder.hpp)."""
+    folder = tmp_path / "modal"
+    run_cli("modes", PAPER / "parallel.yaml", "--count", 3, "--at", 0, 1, 2, "--out", folder)
+    import deploydyn_plot
+    import modes_figures
+    figures = []
+    monkeypatch.setattr(deploydyn_plot.plt, "close", lambda fig=None: figures.append(fig))
+    assert deploydyn_plot.main([str(folder), "--out", str(tmp_path / "plots"), "--format", "png"]) == 0
+    assert sorted(p.name for p in (tmp_path / "plots").iterdir()) == ["frequencies.png", "mode_shapes.png"]
+    table = deploydyn_plot.read_table(folder / "modes.csv")
+    ax = figure_axes(figures, "frequency f (Hz); < 0: −√|ω²|/2π")
+    drawn = sorted(y for line in ax.lines if line.get_label().startswith("mode") for y in line.get_ydata())
+    assert drawn == pytest.approx(sorted(table["frequency"]))
+    shapes = [f for f in figures if f is not None and len([a for a in f.axes if a.get_visible()]) == 9]
+    assert shapes                                                   # 3 positions × 3 modes
+    structure = structure_view.Structure(folder / "model.yaml")
+    frames = modes_figures.mode_frames(folder, structure)
+    assert len(frames) == 9
+    assert frames[0][0] == pytest.approx(structure.initial, abs=1e-9)
+    for k in range(3):                         # one equilibrium per position, whatever the mode
+        for mode in (1, 2):
+            assert frames[3 * k + mode][0] == pytest.approx(frames[3 * k][0], abs=1e-9)
+    lengths = [np.linalg.norm(frames[3 * k][0][structure.members[:, 0]] - frames[3 * k][0][structure.members[:, 1]],
+                              axis=1) for k in range(3)]
+    assert lengths[2] == pytest.approx(lengths[0], rel=1e-6)   # rigid bars: the linkage moved, not stretched
+    assert not np.allclose(frames[6][0], frames[0][0])
+
+
+def test_continuation_folders_draw_their_path_and_events(tmp_path, monkeypatch):
+    """Issue 31: a continuation folder printed "no result to draw" and exited 0. Now its path
+    (μ against the displacement), its lowest eigenvalues and the limit points summary.json
+    located, at their μ."""
+    model = tmp_path / "mises.yaml"
+    model.write_text(MISES)
+    folder = tmp_path / "path"
+    run_cli("run", model, "--quiet", "--out", folder)
+    import json
+    import deploydyn_plot
+    figures = []
+    monkeypatch.setattr(deploydyn_plot.plt, "close", lambda fig=None: figures.append(fig))
+    assert deploydyn_plot.main([str(folder), "--out", str(tmp_path / "plots"), "--format", "png"]) == 0
+    assert (tmp_path / "plots" / "path.png").exists()
+    events = json.loads((folder / "summary.json").read_text())["events"]
+    limit_points = sorted(e["mu"] for e in events if e["kind"] == "limit_point")
+    assert len(limit_points) == 2
+    ax = figure_axes(figures, "load factor μ")
+    marked = sorted(line.get_ydata()[0] for line in ax.lines if line.get_linestyle() == ":")
+    assert marked == pytest.approx(limit_points)
+    path = [line for line in ax.lines if line.get_label() == "path"][0]
+    assert max(path.get_ydata()) == pytest.approx(1.1)              # to the end of the range
+    eigen = figure_axes(figures, "lowest eigenvalues (N/m); < 0: unstable")
+    assert min(min(line.get_ydata()) for line in eigen.lines if line.get_label() == "λ1") < 0
