@@ -24,6 +24,7 @@
 #include "deploydyn/io/text_file.hpp"
 #include "deploydyn/output/output_error.hpp"
 #include "deploydyn/output/plausibility.hpp"
+#include "deploydyn/solvers/output_sampling.hpp"
 #include "deploydyn/output/result_folder.hpp"
 #include "deploydyn/output/envelope_table.hpp"
 #include "deploydyn/output/history_layout.hpp"
@@ -295,6 +296,13 @@ int check_command(const std::string& model_file, const std::vector<std::string>&
              assembler.n_unknowns(), a.linear_solver == LinearSolverKind::automatic ? " (automatic)" : "");
   if (const std::string warning = integrator_warning(model); !warning.empty()) {
     fmt::print("warning     {}\n", warning);
+  }
+  RunControl control;
+  control.stop = &g_stop;
+  if (const auto sampling = output_sampling(assembler, control)) {
+    fmt::print("sampling    lowest natural frequency at the start {:.4g} Hz: {:.3g} history rows per period\n",
+               sampling->lowest_frequency_Hz, sampling->samples_per_period());
+    if (const std::string warning = sampling->warning(); !warning.empty()) fmt::print("warning     {}\n", warning);
   }
   return 0;
 }

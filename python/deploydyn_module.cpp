@@ -39,6 +39,7 @@
 #include "deploydyn/output/envelope.hpp"
 #include "deploydyn/output/history_writer.hpp"
 #include "deploydyn/output/modes_to_folder.hpp"
+#include "deploydyn/output/plausibility.hpp"
 #include "deploydyn/output/output_error.hpp"
 #include "deploydyn/output/run_to_folder.hpp"
 #include "deploydyn/output/summary_writer.hpp"
@@ -234,7 +235,11 @@ py::dict run_in_memory(const LoadedModel& loaded, const py::object& stop) {
   StopWatch watch(stop);
   const RunReport report = watch.run([&] {
     const Assembler assembler(loaded.model);  // std::invalid_argument → ValueError
-    return run_analysis(assembler, sink, watch.control());
+    RunReport done = run_analysis(assembler, sink, watch.control());
+    for (std::string& warning : plausibility_warnings(loaded.model, sink.envelope())) {
+      done.warnings.push_back(std::move(warning));
+    }
+    return done;
   });
   py::array_t<double> values({static_cast<py::ssize_t>(sink.n_rows()),
                               static_cast<py::ssize_t>(columns.size())});

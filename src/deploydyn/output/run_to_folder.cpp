@@ -85,7 +85,8 @@ RunReport run_to_folder(const Model& model, const std::filesystem::path& folder,
     output_error = error;
     record_output_failure(report, error);
   }
-  report.warnings = plausibility_warnings(model, envelope);
+  // The run's own (solvers/output_sampling.hpp), then what its extremes show.
+  for (std::string& warning : plausibility_warnings(model, envelope)) report.warnings.push_back(std::move(warning));
   try {  // what was computed, also of a run that failed
     if (!output_error) write_envelope_table(folder / kEnvelopeFileName, model, envelope);
   } catch (const OutputError& error) {

@@ -12,6 +12,7 @@
 #include "deploydyn/solvers/consistent_rates.hpp"
 #include "deploydyn/solvers/continuation.hpp"
 #include "deploydyn/solvers/generalized_alpha.hpp"
+#include "deploydyn/solvers/output_sampling.hpp"
 #include "deploydyn/solvers/static_solver.hpp"
 #include "deploydyn/solvers/step_controller.hpp"
 #include "deploydyn/solvers/time_integrator.hpp"
@@ -367,6 +368,11 @@ RunReport run_analysis(const Assembler& assembler, RecordSink& sink, const RunCo
                  "that no bar, support or driver resists)";
       if (stiffness.null_vector.size() > 0) f.reason += ": " + describe_null_vector(assembler, stiffness.null_vector);
       return fail(f);
+    }
+  }
+  if (dynamic && !free_mechanism) {  // a free mechanism's start is held by a regularization only
+    if (const auto sampling = output_sampling(assembler, state); sampling && !sampling->warning().empty()) {
+      report.warnings.push_back(sampling->warning());
     }
   }
   if (dynamic) {
