@@ -1,0 +1,48 @@
+"""The numbers the documents quote are the program's: each quoted value is read from the
+document's own sentence and compared with a fresh run, so that a slip like the README's "82 Hz"
+(the linkage at ΔT = 0, quoted for the cold one) cannot recur."""
+import re
+
+import pytest
+
+from conftest import SOURCE_DIR, run_cli
+
+README = (SOURCE_DIR / "README.md").read_text(encoding="utf-8")
+TUTORIAL = (SOURCE_DIR / "docs" / "tutorial.md").read_text(encoding="utf-8")
+
+
+def quoted(text, pattern):
+    """The numbers `pattern`'s groups capture in `text` (whitespace in the text may be a line
+    break)."""
+    found = re.search(pattern.replace(" ", r"\s+"), text)
+    assert found, f"the document no longer says: {pattern}"
+    return [float(g) for g in found.groups()]
+
+
+def modes_table(output):
+    """{(t, mode): (ω², f or None)} of `deploydyn modes`' table."""
+    rows = {}
+    for line in output.splitlines():
+        cells = line.split()
+        if len(cells) >= 4 and re.fullmatch(r"[\d.e+-]+", cells[0]) and cells[1].isdigit():
+            rows[float(cells[0]), int(cells[1])] = (float(cells[2]), None if cells[3] == "nan" else float(cells[3]))
+    return rows
+
+
+def test_readme_cold_parallel_linkage_frequencies():
+    start_Hz, later_Hz = quoted(README, r"The cold parallel linkage, for instance, drops from ([\d.]+) Hz "
+                                        r"at 5° \(t = 0\) to ([\d.]+) Hz at t = 0.5 s and is unstable")
+    table = modes_table(run_cli("modes", SOURCE_DIR / "examples" / "paper" / "parallel.yaml", "--count", 1,
+                                "--at", 0, 0.5, 1, "--set", "thermal.dT=-170").stdout)
+    assert table[0.0, 1][1] == pytest.approx(start_Hz, abs=0.05)
+    assert table[0.5, 1][1] == pytest.approx(later_Hz, abs=0.05)
+    assert table[1.0, 1][0] < 0                                  # unstable at t = 1 s
+
+
+def test_tutorial_sampling_line():
+    frequency_Hz, rows = quoted(TUTORIAL, r"`sampling    lowest natural frequency at the start ([\d.]+) Hz: "
+                                          r"([\d.]+) history rows per period`")
+    output = run_cli("check", SOURCE_DIR / "examples" / "tutorial" / "bascule.yaml").stdout
+    assert f"lowest natural frequency at the start {frequency_Hz:g} Hz: {rows:g} history rows per period" in output
+    alias_Hz, = quoted(TUTORIAL, r"a slow wave of about ([\d.]+) Hz")
+    assert abs(50.0 - frequency_Hz) == pytest.approx(alias_Hz, abs=0.5)   # 20 ms rows: 50 Hz sampling
