@@ -16,8 +16,10 @@
 //                                                     force, strains, stress, ΔT, ...)
 //
 // The mesh is a group per output time, not a hyperslab of one dataset: ParaView's default XDMF
-// reader (Xdmf3) reads no hyperslabs. /time and /history grow by a row per output time; every
-// dataset is chunked and compressed with shuffle + deflate. The file
+// reader (Xdmf3, 5.11) skips HyperSlab items; the legacy XDMF reader reads them but logs errors
+// for every step (measured). /time and /history grow by a row per output time, chunked and
+// compressed with shuffle + deflate; a step's mesh array is compact (in its object header,
+// uncompressed) up to kCompactBytes, else one compressed chunk. The file
 // is flushed, and history.xdmf rewritten (whole, then renamed) to name exactly the rows the
 // file holds, at most every kFlushInterval and at the end: a run that stops early leaves both
 // readable (a killed one may lose its last seconds, which history.csv keeps).
