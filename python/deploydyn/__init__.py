@@ -636,12 +636,20 @@ class ModelBuilder:
         self._section("nodes")[_name(where, "name", name)] = spec
         return self
 
-    def material(self, name, E, alpha=0.0, density=None):
-        """E (Pa), alpha (1/°C), density (kg/m³, for bars that give no mass)."""
+    def material(self, name, E, alpha=0.0, density=None, damping=None):
+        """E (Pa), alpha (1/°C), density (kg/m³, for bars that give no mass), damping (material
+        damping of its bars and cables, as the model file's mapping: {"ratio": ζ, "frequency":
+        f (Hz)}, {"loss_factor": η, "frequency": f} or {"time": τ (s)})."""
         where = "ModelBuilder.material"
         spec = {"E": _number(where, "E", E), "alpha": _number(where, "alpha", alpha)}
         if density is not None:
             spec["density"] = _number(where, "density", density)
+        if damping is not None:
+            if not isinstance(damping, dict):
+                raise TypeError(f"{where}: damping must be a dict such as {{'ratio': 0.02, 'frequency': 10}}, "
+                                f"not {type(damping).__name__}")
+            spec["damping"] = {_name(where, "damping key", k): _number(where, f"damping.{k}", v)
+                               for k, v in damping.items()}
         self._section("materials")[_name(where, "name", name)] = spec
         return self
 

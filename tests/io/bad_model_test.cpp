@@ -100,6 +100,8 @@ const BadModelCase kBadModels[] = {
     {"units_not_si.yaml", 1, "units", "only SI is supported"},
     {"output_file_with_folder.yaml", 5, "output.history", "must be a plain file name"},
     {"empty.yaml", 0, "", "expected a mapping with nodes, materials and elements, got nothing"},
+    {"material_damping_two_forms.yaml", 5, "materials.steel.damping", "give one of 'ratio' (damping ratio ζ at"},
+    {"material_damping_without_frequency.yaml", 5, "materials.steel.damping.frequency", "required key is missing"},
     {"end_negative.yaml", 5, "analysis.end", "must be positive (s), got -2"},
     {"rho_inf_out_of_range.yaml", 5, "analysis.integrator.rho_inf",
      "must be in [0, 1] for generalized_alpha, got 1.5"},

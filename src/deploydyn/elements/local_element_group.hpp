@@ -21,6 +21,11 @@
 //   double relative_change(const Vector& q, const Vector& q_before) const;
 //   void results(const State&, std::span<double> out) const;
 //   double reference_length_m() const;
+// and, for an element with material damping (forces on its strain rates), optionally:
+//   bool damped() const;
+//   Vector damping_force(const State&, const Vector& rates) const;       f_d
+//   Matrix damping_tangent(const State&, const Vector& rates, double c_q, double c_v) const;
+//                                                  c_q ∂f_d/∂q + c_v ∂f_d/∂q̇
 
 #include <algorithm>
 #include <utility>
@@ -37,9 +42,16 @@ class LocalElementGroup : public ElementGroup {
   using Vector = typename Element::Vector;
   using Matrix = typename Element::Matrix;
   static constexpr int kDofs = Element::kDofs;
+  static constexpr bool kDampable = requires(const Element& e, const typename Element::State& s, const Vector& v) {
+    e.damping_force(s, v);
+  };
 
   LocalElementGroup(std::vector<Element> elements, MassMatrixKind mass_kind)
-      : elements_(std::move(elements)), mass_kind_(mass_kind) {}
+      : elements_(std::move(elements)), mass_kind_(mass_kind) {
+    if constexpr (kDampable) {
+      damped_ = std::any_of(elements_.begin(), elements_.end(), [](const Element& e) { return e.damped(); });
+    }
+  }
 
   int n_elements() const override { return static_cast<int>(elements_.size()); }
   int n_rigid_body_conditions() const override {
@@ -116,10 +128,25 @@ class LocalElementGroup : public ElementGroup {
                             const TangentWeights& w, std::span<double> values,
                             const int*& slot) const override {
     for (const Element& e : elements_) {
-      Matrix k = w.stiffness * e.tangent(e.evaluate(gather(e, q), t, thermal_factor));
+      const typename Element::State state = e.evaluate(gather(e, q), t, thermal_factor);
+      Matrix k = w.stiffness * e.tangent(state);
       if (w.mass != 0.0) k += w.mass * e.mass(mass_kind_);
+      if constexpr (kDampable) {
+        if (w.rates != nullptr && e.damped()) k += e.damping_tangent(state, gather(e, *w.rates), w.stiffness, w.damping);
+      }
       for (int j = 0; j < kDofs; ++j) {
         for (int i = 0; i < kDofs; ++i) values[*slot++] += k(i, j);
+      }
+    }
+  }
+
+  bool has_rate_forces() const override { return damped_; }
+
+  void add_rate_force(const Eigen::VectorXd& q, const Eigen::VectorXd& v, double t,
+                      Eigen::VectorXd& f) const override {
+    if constexpr (kDampable) {
+      for (const Element& e : elements_) {
+        if (e.damped()) scatter(e, e.damping_force(e.evaluate(gather(e, q), t, 1.0), gather(e, v)), f);
       }
     }
   }
@@ -147,6 +174,7 @@ class LocalElementGroup : public ElementGroup {
  private:
   std::vector<Element> elements_;
   MassMatrixKind mass_kind_;
+  bool damped_ = false;  // some element has material damping
 };
 
 }  // namespace deploydyn

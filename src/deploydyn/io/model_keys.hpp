@@ -18,7 +18,8 @@ inline constexpr std::array<std::string_view, 15> kTopLevel{
     "name",     "description", "units",  "nodes", "materials", "elements",  "thermal", "supports",
     "joints",   "drivers",     "loads",  "gravity", "functions", "analysis", "output"};
 inline constexpr std::array<std::string_view, 2> kNode{"at", "mass"};
-inline constexpr std::array<std::string_view, 3> kMaterial{"E", "alpha", "density"};
+inline constexpr std::array<std::string_view, 4> kMaterial{"E", "alpha", "density", "damping"};
+inline constexpr std::array<std::string_view, 4> kMaterialDamping{"ratio", "loss_factor", "frequency", "time"};
 inline constexpr std::array<std::string_view, 1> kThermal{"dT"};
 inline constexpr std::array<std::string_view, 2> kSupport{"node", "fix"};
 inline constexpr std::array<std::string_view, 3> kJoint{"type", "nodes", "axis"};
@@ -66,10 +67,11 @@ struct Section {
   Keys keys;
 };
 
-inline constexpr std::array<Section, 30> kSections{{
+inline constexpr std::array<Section, 31> kSections{{
     {"top level", "### Top level", kTopLevel},
     {"nodes.NAME", "### `nodes`", kNode},
     {"materials.NAME", "### `materials`", kMaterial},
+    {"materials.NAME.damping", "### `materials`", kMaterialDamping},
     {"thermal", "### `thermal`", kThermal},
     {"supports.N", "### `supports`", kSupport},
     {"joints.NAME", "### `joints`", kJoint},

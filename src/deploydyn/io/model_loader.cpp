@@ -304,9 +304,33 @@ class ModelReader {
       if (const auto density = spec.find("density")) {
         material.density_kg_m3 = density->number(Sign::positive, "kg/m³");
       }
+      if (const auto damping = spec.find("damping")) material.damping_time_s = damping_time(*damping);
       materials_.add(name, spec);
       model_.materials.push_back(material);
     }
+  }
+
+  // Kelvin–Voigt material damping as engineers give it: a damping ratio ζ or a loss factor η at
+  // a frequency f (τ = ζ / (π f) = η / (2π f)), or the damping time τ itself (docs/theory.md,
+  // "Material damping").
+  static double damping_time(const YamlValue& spec) {
+    spec.expect_keys(model_keys::kMaterialDamping);
+    const auto ratio = spec.find("ratio"), loss_factor = spec.find("loss_factor"), time = spec.find("time");
+    const int given = (ratio ? 1 : 0) + (loss_factor ? 1 : 0) + (time ? 1 : 0);
+    if (given != 1) {
+      spec.fail("give one of 'ratio' (damping ratio ζ at 'frequency'), 'loss_factor' (η at 'frequency') or "
+                "'time' (τ in s, the viscous stress τ E dε/dt)");
+    }
+    if (time) {
+      if (spec.find("frequency")) spec.at("frequency").fail("'time' needs no frequency");
+      return time->number(Sign::non_negative, "s");
+    }
+    const double frequency_Hz = spec.at("frequency").number(Sign::positive, "Hz");
+    const double share = ratio ? ratio->number(Sign::non_negative) : loss_factor->number(Sign::non_negative);
+    if (share >= 1.0) {
+      (ratio ? ratio : loss_factor)->fail(fmt::format("must be below 1 (a structure's damping is a few %), got {}", share));
+    }
+    return ratio ? share / (M_PI * frequency_Hz) : share / (2.0 * M_PI * frequency_Hz);
   }
 
   void read_elements(const YamlValue& section) {

@@ -131,6 +131,12 @@ void emit_geometry(YAML::Emitter& out, const Model& model) {
     emit_number(out, "E", material.youngs_modulus_Pa);
     emit_number(out, "alpha", material.expansion_per_C);
     if (material.density_kg_m3) emit_number(out, "density", *material.density_kg_m3);
+    if (material.damping_time_s > 0.0) {  // as its damping time: what a ratio at a frequency gave
+      emit_key(out, "damping");
+      out << YAML::Flow << YAML::BeginMap;
+      emit_number(out, "time", material.damping_time_s);
+      out << YAML::EndMap;
+    }
     out << YAML::EndMap;
   }
   out << YAML::EndMap;

@@ -30,6 +30,10 @@ struct Material {
   double youngs_modulus_Pa = 0.0;
   double expansion_per_C = 0.0;      // α, thermal expansion coefficient (1/°C)
   std::optional<double> density_kg_m3;  // used when an element gives no mass
+  // τ of Kelvin–Voigt material damping: the viscous stress τ E ε̇ on the strain rate (s; 0:
+  // undamped). A damping ratio ζ at frequency f gives τ = ζ / (π f) (docs/theory.md, "Material
+  // damping"); bars and cables use it.
+  double damping_time_s = 0.0;
 };
 
 // Ground support: the chosen coordinates of a node keep their initial values.

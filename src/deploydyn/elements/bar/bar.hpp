@@ -44,6 +44,7 @@ struct Section {
   double axial_stiffness_N = 0.0;   // EA
   double reference_length_m = 0.0;  // L0
   ForceLaw law = ForceLaw::linear;
+  double damping_time_s = 0.0;      // τ of the material's viscous stress τ k ε̇ (0: undamped)
 };
 
 // Strain state of a bar at one configuration.
@@ -121,6 +122,49 @@ ElementMatrix<D> geometric_tangent(const State<D>& s, const Section& section) {
 template <int D>
 ElementMatrix<D> tangent(const State<D>& s, const Section& section) {
   return material_tangent(s, section) + geometric_tangent(s, section);
+}
+
+// Kelvin–Voigt material damping (docs/theory.md, "Material damping"): a viscous stress τ k ε̇
+// on the Green–Lagrange strain rate, with ḋ = v_b − v_a and L̇0 a cable's reeling rate (0 for a
+// bar, whose f_d is then τ K_mat q̇, K_mat the material tangent above):
+//   L0² ε̇ = dᵀḋ − (dᵀd) L̇0 / L0,     f_d = (τ k ε̇ / L0) [−d; d]
+//   ∂f_d/∂q̇ = (τ k / L0³) [ddᵀ −ddᵀ; −ddᵀ ddᵀ],  ∂f_d/∂q = (τ k / L0³) [B −B; −B B],
+//   B = d (ḋ − 2 (L̇0/L0) d)ᵀ + L0² ε̇ I
+// A rigid motion (dᵀḋ = 0) dissipates nothing, nor a cable reeled at constant strain, nor a
+// slack one (k = 0).
+template <int D>
+double strain_rate(const State<D>& s, const Section& section, const Vector<D>& d_rate, double rest_length_rate) {
+  const double l0 = section.reference_length_m;
+  return (s.d.dot(d_rate) - s.d.squaredNorm() * rest_length_rate / l0) / (l0 * l0);
+}
+
+template <int D>
+ElementVector<D> damping_force(const State<D>& s, const Section& section, const ElementVector<D>& v,
+                               double rest_length_rate = 0.0) {
+  const Vector<D> d_rate = v.template tail<D>() - v.template head<D>();
+  const double viscous_pk2_N = section.damping_time_s * s.strain_stiffness_N *
+                               strain_rate<D>(s, section, d_rate, rest_length_rate);
+  const Vector<D> g = (viscous_pk2_N / section.reference_length_m) * s.d;
+  ElementVector<D> f;
+  f << -g, g;
+  return f;
+}
+
+// c_q ∂f_d/∂q + c_v ∂f_d/∂q̇ at rates v: the damping's block of the iteration matrix.
+template <int D>
+ElementMatrix<D> damping_tangent(const State<D>& s, const Section& section, const ElementVector<D>& v,
+                                 double c_q, double c_v, double rest_length_rate = 0.0) {
+  const double l0 = section.reference_length_m;
+  const double scale = section.damping_time_s * s.strain_stiffness_N / (l0 * l0 * l0);
+  const Vector<D> d_rate = v.template tail<D>() - v.template head<D>();
+  const double rate_l0_sq = l0 * l0 * strain_rate<D>(s, section, d_rate, rest_length_rate);
+  const Eigen::Matrix<double, D, D> b =
+      scale * (c_q * (s.d * (d_rate - (2.0 * rest_length_rate / l0) * s.d).transpose() +
+                      rate_l0_sq * Eigen::Matrix<double, D, D>::Identity()) +
+               c_v * s.d * s.d.transpose());
+  ElementMatrix<D> out;
+  out << b, -b, -b, b;
+  return out;
 }
 
 template <int D>

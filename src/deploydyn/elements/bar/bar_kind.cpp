@@ -45,6 +45,11 @@ struct BarRecord {
            bar::internal_force_per_thermal_strain<D>(s, section);
   }
   Matrix tangent(const State& s) const { return bar::tangent<D>(s, section); }
+  bool damped() const { return section.damping_time_s > 0.0; }
+  Vector damping_force(const State& s, const Vector& v) const { return bar::damping_force<D>(s, section, v); }
+  Matrix damping_tangent(const State& s, const Vector& v, double c_q, double c_v) const {
+    return bar::damping_tangent<D>(s, section, v, c_q, c_v);
+  }
   Matrix mass(MassMatrixKind kind) const { return bar::mass_matrix<D>(mass_kg, kind); }
   // The bar's weight is shared equally by its two nodes (docs/theory.md).
   Vector weight(const Eigen::Vector3d& gravity_m_s2) const {
@@ -92,7 +97,8 @@ std::unique_ptr<ElementGroup> make_bars(const Model& model, const DofMap& dofs) 
       bar.dofs[axis] = dofs.index(e.node_a, axis);
       bar.dofs[D + axis] = dofs.index(e.node_b, axis);
     }
-    bar.section = {material.youngs_modulus_Pa * e.area_m2, e.reference_length_m};
+    bar.section = {material.youngs_modulus_Pa * e.area_m2, e.reference_length_m, bar::ForceLaw::linear,
+                   material.damping_time_s};
     bar.mass_kg = e.mass_kg;
     bar.expansion_per_C = material.expansion_per_C;
     bar.area_m2 = e.area_m2;

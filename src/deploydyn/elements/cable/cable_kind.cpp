@@ -26,6 +26,7 @@ struct CableRecord {
   struct State {
     bar::State<D> bar;
     bar::Section section;
+    double rest_length_rate_m_s = 0.0;  // L̇0: reeling, which the material damping leaves alone
   };
 
   std::array<int, kDofs> dofs{};
@@ -33,6 +34,7 @@ struct CableRecord {
   double area_m2 = 0.0;            // A, for the stress N/A
   double mass_kg = 0.0;
   double expansion_per_C = 0.0;                        // α
+  double damping_time_s = 0.0;                         // τ of the material damping
   double initial_rest_length_m = 0.0;                  // L0(0): the length scale
   const TimeFunction* rest_length_m = nullptr;         // L0(t), in the model
   const TimeFunction* temperature_change_C = nullptr;  // ΔT(t), in the model
@@ -40,11 +42,18 @@ struct CableRecord {
   double thermal_strain(double t) const { return expansion_per_C * temperature_change_C->value(t); }
 
   State evaluate(const Vector& q, double t, double thermal_factor) const {
-    const bar::Section section{axial_stiffness_N, rest_length_m->value(t),
-                               bar::ForceLaw::tension_only};
+    const bar::Section section{axial_stiffness_N, rest_length_m->value(t), bar::ForceLaw::tension_only,
+                               damping_time_s};
     return {bar::evaluate<D>(q.template head<D>(), q.template tail<D>(), section,
                              thermal_factor * thermal_strain(t)),
-            section};
+            section, rest_length_m->derivative(t)};
+  }
+  bool damped() const { return damping_time_s > 0.0; }
+  Vector damping_force(const State& s, const Vector& v) const {
+    return bar::damping_force<D>(s.bar, s.section, v, s.rest_length_rate_m_s);
+  }
+  Matrix damping_tangent(const State& s, const Vector& v, double c_q, double c_v) const {
+    return bar::damping_tangent<D>(s.bar, s.section, v, c_q, c_v, s.rest_length_rate_m_s);
   }
   Vector internal_force(const State& s) const { return bar::internal_force<D>(s.bar, s.section); }
   // As the bar's: the factor scales ε_t (theory.md, "Cables", Eq. C4).
@@ -149,6 +158,7 @@ std::unique_ptr<ElementGroup> make_cables(const Model& model, const DofMap& dofs
     cable.area_m2 = e.area_m2;
     cable.mass_kg = e.mass_kg;
     cable.expansion_per_C = material.expansion_per_C;
+    cable.damping_time_s = material.damping_time_s;
     cable.initial_rest_length_m = e.rest_length_m.value(0.0);
     cable.rest_length_m = &e.rest_length_m;
     cable.temperature_change_C = &e.temperature_change_C;
