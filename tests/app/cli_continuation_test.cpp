@@ -98,6 +98,34 @@ TEST(CliContinuation, RunWritesThePathOfTheSnapThrough) {
   EXPECT_TRUE(std::filesystem::exists(out / "model.yaml"));
 }
 
+// stop_at: first_event: the path ends at the first limit point, P*, instead of following the
+// snap-through to 1.1 (or, with few steps, failing on max_steps along the way): a completed
+// run (exit 0) whose summary names the event that ended it, the event the last row of path.csv.
+TEST(CliContinuation, StopAtFirstEventEndsCompletedAtTheLimitPoint) {
+  const ScratchFolder folder("cli_continuation_first_event");
+  std::filesystem::create_directories(folder.path());
+  const auto model_file = folder.path() / "mises.yaml";
+  std::string model = kMisesTruss;
+  const std::string analysis = "eigenvalues: 2}";
+  model.replace(model.find(analysis), analysis.size(), "eigenvalues: 2, stop_at: first_event}");
+  std::ofstream(model_file) << model;
+  const auto out = folder.path() / "out";
+  const auto outcome = run_cli("run " + model_file.string() + " --quiet --out " + out.string());
+  ASSERT_EQ(outcome.exit_code, 0) << outcome.output;
+  const auto summary = nlohmann::json::parse(read_text(out / "summary.json"));
+  EXPECT_EQ(summary["status"], "completed");
+  EXPECT_EQ(summary["path"]["end"], "first_event");
+  EXPECT_EQ(summary["path"]["end_event"], "limit_point");
+  ASSERT_EQ(summary["events"].size(), 1u);
+  const double p_star = closed_form_load_N(kRise_m / std::sqrt(3.0));
+  EXPECT_NEAR(summary["events"][0]["load_N"].get<double>(), p_star, 1e-6 * p_star);
+  std::ifstream path(out / "path.csv");
+  std::string line, last;
+  while (std::getline(path, line)) last = line;
+  EXPECT_EQ(split(last).back(), "limit_point") << last;
+  EXPECT_NE(read_text(out / "model.yaml").find("stop_at: first_event"), std::string::npos);
+}
+
 // A folder where model.yaml cannot be written (a folder of that name stands there): the path
 // never starts, and summary.json says why rather than "failed" with no reason.
 TEST(CliContinuation, AModelFileThatCannotBeWrittenIsTheNamedFailure) {

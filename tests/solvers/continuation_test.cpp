@@ -201,6 +201,14 @@ struct HeatedStrut {
   double critical_factor() const {
     return spring_N_m * bay_m / (2.0 * axial_stiffness_N * expansion_per_C * temperature_change_C);
   }
+  // Thermal continuation to twice the critical heating, two eigenvalues per point.
+  ContinuationOptions options() const {
+    ContinuationOptions o;
+    o.parameter = PathParameter::thermal;
+    o.end = 2.0 * critical_factor();
+    o.n_eigenvalues = 2;
+    return o;
+  }
   Model model() const {
     ModelBuilder m(2);
     const int a = m.node("A", Eigen::Vector3d(0.0, 0.0, 0.0));
@@ -271,6 +279,22 @@ TEST_P(HeatedStrutBifurcation, AtTheClosedFormTemperature) {
   }
 }
 
+// stop_at_first_event: the path ends at the located bifurcation, its last point.
+TEST(Continuation, StopsAtTheFirstEventWhenAsked) {
+  const HeatedStrut strut;
+  const Model model = strut.model();
+  const Assembler assembler(model);
+  ContinuationOptions options = strut.options();
+  options.stop_at_first_event = true;
+  const ContinuationResult result = trace(assembler, options);
+  ASSERT_EQ(result.end, ContinuationEnd::first_event) << result.message;
+  ASSERT_EQ(result.events.size(), 1u);
+  EXPECT_EQ(result.events[0].kind, PathEventKind::bifurcation);
+  EXPECT_EQ(result.events[0].point, static_cast<int>(result.points.size()) - 1);
+  EXPECT_NEAR(result.events[0].parameter, strut.critical_factor(),
+              result.events[0].parameter_error + kEquilibriumMuShare * strut.critical_factor());
+}
+
 // Switched at the bifurcation onto the buckled branch: C moves laterally by w, and with
 // Green–Lagrange bars the branch is closed-form. Lateral equilibrium of C, strut bars
 // (EA/L)(ε − ε_t)·d each and the spring bar C–D (EA_s = kH, L0 = H) along y:
@@ -283,10 +307,7 @@ TEST(Continuation, SwitchesOntoTheBuckledBranchOfTheHeatedStrut) {
   const HeatedStrut strut;
   const Model model = strut.model();
   const Assembler assembler(model);
-  ContinuationOptions options;
-  options.parameter = PathParameter::thermal;
-  options.end = 2.0 * strut.critical_factor();
-  options.n_eigenvalues = 2;
+  ContinuationOptions options = strut.options();
   options.max_step = 0.05;
   options.switch_branch = true;
   const ContinuationResult result = trace(assembler, options);

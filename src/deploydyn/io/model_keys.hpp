@@ -38,8 +38,8 @@ inline constexpr std::array<std::string_view, 4> kIntegrator{"type", "beta", "ga
 inline constexpr std::array<std::string_view, 3> kAdaptive{"tolerance", "min_step", "max_step"};
 inline constexpr std::array<std::string_view, 5> kNewton{"max_iterations", "tol_force",
                                                          "tol_constraint", "tol_displacement", "jacobian"};
-inline constexpr std::array<std::string_view, 9> kContinuation{
-    "type", "parameter", "start", "end", "eigenvalues", "max_steps", "switch_branch", "newton",
+inline constexpr std::array<std::string_view, 10> kContinuation{
+    "type", "parameter", "start", "end", "eigenvalues", "max_steps", "switch_branch", "stop_at", "newton",
     "linear_solver"};
 inline constexpr std::array<std::string_view, 8> kModal{"type", "modes", "at", "shift",
                                                         "load_steps", "mass", "newton", "linear_solver"};

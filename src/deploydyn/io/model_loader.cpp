@@ -711,6 +711,7 @@ class ModelReader {
     if (const auto eigenvalues = spec.find("eigenvalues")) c.n_eigenvalues = eigenvalues->integer(0);
     if (const auto max_steps = spec.find("max_steps")) c.max_steps = max_steps->integer(1);
     if (const auto branch = spec.find("switch_branch")) c.switch_branch = branch->choice({"false", "true"}) == 1;
+    if (const auto stop = spec.find("stop_at")) c.stop_at_first_event = stop->choice({"end", "first_event"}) == 1;
     if (const auto solver = spec.find("linear_solver")) read_linear_solver(*solver);
     if (const auto newton = spec.find("newton")) read_newton(*newton);
   }

@@ -310,6 +310,10 @@ void emit_analysis(YAML::Emitter& out, const Model& model) {
       emit_key(out, "switch_branch");
       out << true;
     }
+    if (c.stop_at_first_event) {
+      emit_key(out, "stop_at");
+      out << "first_event";
+    }
   } else if (analysis.type == AnalysisType::modal) {
     // Only the keys a modal analysis reads (io/model_loader.cpp, read_modal).
     const ModalSettings& modal = analysis.modal;

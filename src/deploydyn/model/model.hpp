@@ -125,6 +125,7 @@ struct ContinuationSettings {
   int n_eigenvalues = 3;   // lowest stability eigenvalues per point in path.csv; 0: none
   int max_steps = 2000;
   bool switch_branch = false;  // follow the first bifurcated branch (solvers/continuation.hpp)
+  bool stop_at_first_event = false;  // `stop_at: first_event`: end there, completed
 };
 // analysis.type: modal (solvers/modal_analysis.hpp): natural frequencies and modes about the
 // static equilibrium at each time (the thermal state at t = 0, then the drivers moved

@@ -80,6 +80,7 @@ ContinuationOptions path_options(const Model& model) {
   options.n_eigenvalues = settings.n_eigenvalues;
   options.max_steps = settings.max_steps;
   options.switch_branch = settings.switch_branch;
+  options.stop_at_first_event = settings.stop_at_first_event;
   options.newton = model.analysis.newton;
   return options;
 }
@@ -101,6 +102,8 @@ std::string path_summary_json(const Assembler& assembler, const ContinuationResu
                {"rejected_steps", result.rejected_steps},
                {"length_scale_m", result.length_scale_m},
                {"wall_time_s", report.wall_time_s}};
+  // stop_at: first_event: which event ended the path (its last point).
+  if (result.end == ContinuationEnd::first_event) j["path"]["end_event"] = to_string(result.events.front().kind);
   ordered_json events = ordered_json::array();
   const std::vector<std::string> names = element_names(model, "axial_force_N");
   for (const PathEvent& e : result.events) {
@@ -110,6 +113,7 @@ std::string path_summary_json(const Assembler& assembler, const ContinuationResu
                           {"mu", e.parameter},
                           {"mu_error", e.parameter_error},
                           {"within_tolerance", e.within_tolerance},
+                          {"located", e.located},
                           {parameter_column(model), e.parameter * unit},
                           {"eigenvalue_N_m", e.eigenvalue_N_m},
                           {"description", e.description},
@@ -169,9 +173,11 @@ RunReport run_path_to_folder(const Model& model, const std::filesystem::path& fo
 
   RunReport report;
   if (traced) {
-    report.status = result.end == ContinuationEnd::reached_end ? RunStatus::completed
-                    : result.end == ContinuationEnd::stopped   ? RunStatus::interrupted
-                                                               : RunStatus::failed;
+    // Ending at the first event is what the model asked for (stop_at: first_event).
+    report.status = result.end == ContinuationEnd::reached_end || result.end == ContinuationEnd::first_event
+                        ? RunStatus::completed
+                    : result.end == ContinuationEnd::stopped ? RunStatus::interrupted
+                                                             : RunStatus::failed;
     report.message = result.message;
     // The first events in words; all of them are in summary.json.
     constexpr std::size_t kEventsInMessage = 3;

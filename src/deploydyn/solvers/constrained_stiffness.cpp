@@ -3,6 +3,8 @@
 #include <Eigen/Eigenvalues>
 #include <Eigen/QR>
 
+#include "deploydyn/solvers/negative_eigenvalues.hpp"
+
 namespace deploydyn {
 
 ConstraintNullSpace constraint_null_space(const Eigen::MatrixXd& jacobian) {
@@ -23,8 +25,8 @@ ConstraintNullSpace constraint_null_space(const Eigen::MatrixXd& jacobian) {
   return result;
 }
 
-ConstrainedSpectrum constrained_spectrum(const Eigen::MatrixXd& stiffness,
-                                         const Eigen::MatrixXd& basis, double zero_tolerance) {
+ConstrainedSpectrum constrained_spectrum(const Eigen::MatrixXd& stiffness, const Eigen::MatrixXd& basis,
+                                         int n_tolerances) {
   ConstrainedSpectrum result;
   if (basis.cols() == 0) return result;
   Eigen::MatrixXd reduced = basis.transpose() * stiffness * basis;
@@ -32,8 +34,13 @@ ConstrainedSpectrum constrained_spectrum(const Eigen::MatrixXd& stiffness,
   const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> solver(reduced);
   result.eigenvalues = solver.eigenvalues();
   result.modes = basis * solver.eigenvectors();
-  for (Eigen::Index i = 0; i < result.eigenvalues.size(); ++i) {
-    if (result.eigenvalues[i] < -zero_tolerance) ++result.n_negative;
+  const Eigen::Index n_values = result.eigenvalues.size();
+  Eigen::Index n_checked = std::min<Eigen::Index>(n_tolerances, n_values);
+  while (n_checked < n_values && result.eigenvalues[n_checked] < 0.0) ++n_checked;
+  result.tolerances_N_m.resize(n_checked);
+  for (Eigen::Index i = 0; i < n_checked; ++i) {
+    result.tolerances_N_m[i] = negative_eigenvalue_tolerance_N_m(absolute_mode_energy_N_m(stiffness, result.modes.col(i)));
+    if (result.eigenvalues[i] < -result.tolerances_N_m[i]) ++result.n_negative;
   }
   return result;
 }

@@ -37,12 +37,16 @@ ConstraintNullSpace constraint_null_space(const Eigen::MatrixXd& jacobian);
 struct ConstrainedSpectrum {
   Eigen::VectorXd eigenvalues;  // of Zᵀ K Z, ascending (N/m)
   Eigen::MatrixXd modes;        // Z ξ_i in the coordinates q, unit length, column i for value i
+  // Of the lowest eigenvalues (every negative one, and more when asked): the round-off of each
+  // one's mode energy (solvers/negative_eigenvalues.hpp), N/m; within ± it of 0 it is zero.
+  Eigen::VectorXd tolerances_N_m;
   int n_negative = 0;           // eigenvalues below −tolerance (the index of the equilibrium)
 };
 
-// Every eigenpair of Zᵀ K Z (K symmetrised). Eigenvalues within `zero_tolerance` (N/m) of zero
-// are not counted as negative.
-ConstrainedSpectrum constrained_spectrum(const Eigen::MatrixXd& stiffness,
-                                         const Eigen::MatrixXd& basis, double zero_tolerance);
+// Every eigenpair of Zᵀ K Z (K symmetrised), with the tolerances of the lowest
+// max(n_tolerances, every negative one). Eigenvalues within the round-off of their mode's
+// energy of zero are not counted as negative.
+ConstrainedSpectrum constrained_spectrum(const Eigen::MatrixXd& stiffness, const Eigen::MatrixXd& basis,
+                                         int n_tolerances = 0);
 
 }  // namespace deploydyn

@@ -18,10 +18,6 @@ namespace {
 // Same round-off floor as NewtonSolver (solvers/newton.hpp): forces left by moving the
 // coordinates by a few units in their last place through the stiffest spring.
 constexpr double kRoundOffShare = 16.0 * std::numeric_limits<double>::epsilon();
-// An eigenvalue of Zᵀ K_T Z within this share of the largest stiffness diagonal counts as zero
-// when negative ones are counted: round-off of K is ~1e-16 of it, and genuine near-critical
-// values of the tests are ≥ 1e-8 of it one step away from a crossing.
-constexpr double kZeroEigenvalueShare = 1e-12;
 // A lowest eigenvalue below this share of the stiffness scale is at the critical point for the
 // step rule on eigenvalue drops: from there a step may cross it.
 constexpr double kCriticalEigenvalueShare = 1e-9;
@@ -103,13 +99,22 @@ class PathTracer {
   };
   std::optional<Trial> step_from(const PathPoint& from, const Tangent& t, double sigma);
   // Locates an event between `from` (σ = 0) and `to` (σ = Δs) and appends it (with its point)
-  // to the result.
-  void locate(const PathPoint& from, const Tangent& t_from, const Trial& to, double ds,
-              PathEventKind kind);
+  // to the result. A bifurcation whose eigenvalue does not change sign between them is not
+  // located: returned instead, for `to` to carry when it joins the path.
+  std::optional<PathEvent> locate(const PathPoint& from, const Tangent& t_from, const Trial& to, double ds,
+                                  PathEventKind kind);
   void record_event(PathEventKind kind, PathPoint point, const Tangent& t, double error);
+  // The event at `point` (its stability analysed anew, with the critical mode), not yet kept.
+  PathEvent make_event(PathEventKind kind, PathPoint& point, const Tangent& t, double error);
+  PathEvent unlocated_bifurcation(const PathPoint& from, const Trial& to);
+  std::string mode_place(const PathEvent& event) const;  // "; critical mode mostly x.N3", or ""
+
   // Appends `point` (and the event located there) to the result and tells options_.on_point.
   void keep(PathPoint point, std::optional<PathEvent> event = std::nullopt);
-  bool land_on_end(const PathPoint& before, const PathPoint& after);
+  // Solves the point at μ_end between `before` and `after` and keeps it, carrying `event`.
+  bool land_on_end(const PathPoint& before, const PathPoint& after, std::optional<PathEvent> event);
+  // Ends the path at its first event (options_.stop_at_first_event).
+  ContinuationResult end_at_first_event();
   // From the bifurcation just recorded (the path's last point and event), a first point on
   // the bifurcated branch: predictor along the critical mode φ (q̇ = ℓ φ, μ̇ = 0), corrector on
   // the plane φᵀ(q − q_p) = 0, which the primary branch crosses only at the bifurcation when
@@ -126,6 +131,7 @@ class PathTracer {
   std::optional<LowestConstrainedStiffness> lowest_;  // the sparse route, when taken
   // The sparse route's last result: where its next shift and start vectors go.
   std::optional<double> last_lowest_;
+  double last_spread_ = 0.0;  // θ_k − θ_1 there
   Eigen::MatrixXd last_modes_;
   double length_ = 1.0, scale_ = 1.0;
   ContinuationResult result_;
@@ -245,12 +251,12 @@ void PathTracer::analyse_dense_stability(PathPoint& point, ConstraintNullSpace* 
   const Eigen::MatrixXd dense = system_.to_dense();
   const ConstraintNullSpace null_space = constraint_null_space(dense.bottomLeftCorner(m, n));
   const Eigen::MatrixXd stiffness = dense.topLeftCorner(n, n);
-  const double zero = kZeroEigenvalueShare * std::max(stiffness.diagonal().cwiseAbs().maxCoeff(), 1.0);
-  ConstrainedSpectrum spectrum = constrained_spectrum(stiffness, null_space.basis, zero);
+  ConstrainedSpectrum spectrum = constrained_spectrum(stiffness, null_space.basis, options_.n_eigenvalues);
   point.constraint_rank = null_space.rank;
   point.n_negative = spectrum.n_negative;
-  point.lowest_eigenvalues =
-      spectrum.eigenvalues.head(std::min<Eigen::Index>(options_.n_eigenvalues, spectrum.eigenvalues.size()));
+  const Eigen::Index n_lowest = std::min<Eigen::Index>(options_.n_eigenvalues, spectrum.eigenvalues.size());
+  point.lowest_eigenvalues = spectrum.eigenvalues.head(n_lowest);
+  point.lowest_tolerances = spectrum.tolerances_N_m.head(n_lowest);
   if (null_space_out != nullptr) *null_space_out = null_space;
   if (spectrum_out != nullptr) *spectrum_out = std::move(spectrum);
 }
@@ -260,16 +266,18 @@ void PathTracer::analyse_sparse_stability(PathPoint& point, ConstrainedSpectrum*
   LowestStiffnessRequest request;
   request.n_values = options_.n_eigenvalues;
   request.stiffness_scale_N_m = scale_;
-  request.zero_tolerance_N_m = kZeroEigenvalueShare * std::max(scale_, 1.0);
   request.expected_lowest_N_m = last_lowest_;
+  request.expected_spread_N_m = last_spread_;
   request.expected_modes = last_modes_;
   ConstrainedSpectrum spectrum = lowest_->compute(system_, request);
   if (spectrum.eigenvalues.size() == 0) return;  // not computed: n_negative stays −1
   last_lowest_ = spectrum.eigenvalues[0];
+  last_spread_ = spectrum.eigenvalues[spectrum.eigenvalues.size() - 1] - spectrum.eigenvalues[0];
   last_modes_ = spectrum.modes;
   point.n_negative = spectrum.n_negative;
   point.index_complete = spectrum.n_negative < spectrum.eigenvalues.size();
   point.lowest_eigenvalues = spectrum.eigenvalues;
+  point.lowest_tolerances = spectrum.tolerances_N_m;
   if (spectrum_out != nullptr) *spectrum_out = std::move(spectrum);
 }
 
@@ -296,6 +304,18 @@ std::optional<PathTracer::Trial> PathTracer::step_from(const PathPoint& from, co
 }
 
 void PathTracer::record_event(PathEventKind kind, PathPoint point, const Tangent& t, double error) {
+  PathEvent event = make_event(kind, point, t, error);
+  keep(std::move(point), std::move(event));
+}
+
+std::string PathTracer::mode_place(const PathEvent& event) const {
+  if (event.mode.size() == 0) return "";
+  Eigen::Index largest = 0;
+  event.mode.cwiseAbs().maxCoeff(&largest);
+  return fmt::format("; critical mode mostly {}", assembler_.dof_map().label(static_cast<int>(largest)));
+}
+
+PathEvent PathTracer::make_event(PathEventKind kind, PathPoint& point, const Tangent& t, double error) {
   PathEvent event;
   event.kind = kind;
   event.parameter = point.parameter;
@@ -318,12 +338,7 @@ void PathTracer::record_event(PathEventKind kind, PathPoint point, const Tangent
   const double thermal_factor = equilibrium_.thermal_factor(point.parameter);
   event.axial_forces_N =
       assembler_.element_quantity("axial_force_N", point.q, equilibrium_.time_s(point.parameter), thermal_factor);
-  std::string where;
-  if (event.mode.size() > 0) {
-    Eigen::Index largest = 0;
-    event.mode.cwiseAbs().maxCoeff(&largest);
-    where = fmt::format("; critical mode mostly {}", assembler_.dof_map().label(static_cast<int>(largest)));
-  }
+  const std::string where = mode_place(event);
   const char* what = kind == PathEventKind::limit_point    ? "limit point (the path turns back in μ)"
                      : kind == PathEventKind::bifurcation ? "bifurcation (a stability eigenvalue crosses zero while μ goes on)"
                                                           : "singular constraint Jacobian (dead centre or redundant constraints, not a structural instability)";
@@ -334,7 +349,7 @@ void PathTracer::record_event(PathEventKind kind, PathPoint point, const Tangent
   event.description = fmt::format("{} at {}{}", what, at, where);
   event.within_tolerance = error <= options_.location_tolerance * range_;
   if (!event.within_tolerance) event.description += " (not located to the tolerance)";
-  keep(std::move(point), std::move(event));
+  return event;
 }
 
 void PathTracer::keep(PathPoint point, std::optional<PathEvent> event) {
@@ -347,8 +362,8 @@ void PathTracer::keep(PathPoint point, std::optional<PathEvent> event) {
   if (options_.on_point) options_.on_point(result_.points.back(), event ? &result_.events.back() : nullptr);
 }
 
-void PathTracer::locate(const PathPoint& from, const Tangent& t_from, const Trial& to, double ds,
-                        PathEventKind kind) {
+std::optional<PathEvent> PathTracer::locate(const PathPoint& from, const Tangent& t_from, const Trial& to,
+                                            double ds, PathEventKind kind) {
   const double tolerance = options_.location_tolerance * range_;
   // The bracket's ends: the function whose sign change is the event, dμ/dσ and the point.
   struct End {
@@ -368,14 +383,31 @@ void PathTracer::locate(const PathPoint& from, const Tangent& t_from, const Tria
   std::optional<Trial> lo_trial, hi_trial;
   End lo{0.0, function(from, t_from), t_from.mu_rate, &from, &t_from};
   End hi{ds, function(to.point, to.tangent), mu_slope(to.tangent), &to.point, &to.tangent};
+  if (kind == PathEventKind::bifurcation &&
+      !(std::isfinite(lo.value) && std::isfinite(hi.value) && std::signbit(lo.value) != std::signbit(hi.value))) {
+    return unlocated_bifurcation(from, to);
+  }
+  // A bifurcation: the eigenvalue's rate along the path, from the bracket's first ends (where
+  // it is far from zero and known to its round-off, unlike within the last, tiny bracket).
+  const double eigenvalue_rate = (hi.value - lo.value) / (to.point.parameter - from.parameter);
   const auto bound = [&] {
-    return kind == PathEventKind::limit_point
-               ? std::max(std::abs(lo.mu_slope), std::abs(hi.mu_slope)) * (hi.sigma - lo.sigma)
-               : std::abs(hi.point->parameter - lo.point->parameter);
+    if (kind == PathEventKind::limit_point) {
+      return std::max(std::abs(lo.mu_slope), std::abs(hi.mu_slope)) * (hi.sigma - lo.sigma);
+    }
+    // The sign change lies between the ends; and near it the computed sign is known only where
+    // |θ| exceeds its round-off, which spans tolerance/|dθ/dμ| in μ.
+    const PathPoint& nearer = std::abs(lo.value) <= std::abs(hi.value) ? *lo.point : *hi.point;
+    const double round_off = crossing < nearer.lowest_tolerances.size() ? nearer.lowest_tolerances[crossing] : 0.0;
+    return std::abs(hi.point->parameter - lo.point->parameter) + round_off / std::abs(eigenvalue_rate);
+  };
+  // Past this the bracket is narrower than the round-off of the eigenvalue's sign: no use going on.
+  const auto bracket = [&] {
+    return kind == PathEventKind::limit_point ? bound() : std::abs(hi.point->parameter - lo.point->parameter);
   };
   double lo_weight = 1.0, hi_weight = 1.0;  // Illinois: halve the end that stays
   int stays = 0;                           // −1: lo stayed last time, +1: hi stayed
-  for (int iteration = 0; iteration < kMaxLocationIterations && bound() > tolerance; ++iteration) {
+  for (int iteration = 0; iteration < kMaxLocationIterations && bracket() > std::max(tolerance, bound() - bracket());
+       ++iteration) {
     if (!std::isfinite(lo.value) || !std::isfinite(hi.value)) break;
     const double f_lo = lo_weight * lo.value, f_hi = hi_weight * hi.value;
     double sigma = (lo.sigma * f_hi - hi.sigma * f_lo) / (f_hi - f_lo);
@@ -416,9 +448,24 @@ void PathTracer::locate(const PathPoint& from, const Tangent& t_from, const Tria
   PathPoint point = *best.point;
   point.event = -1;
   record_event(kind, std::move(point), *best.tangent, bound());
+  return std::nullopt;
 }
 
-bool PathTracer::land_on_end(const PathPoint& before, const PathPoint& after) {
+PathEvent PathTracer::unlocated_bifurcation(const PathPoint& from, const Trial& to) {
+  PathPoint point = to.point;
+  const double width = std::abs(to.point.parameter - from.parameter);
+  PathEvent event = make_event(PathEventKind::bifurcation, point, to.tangent, width);
+  event.located = false;
+  event.within_tolerance = false;
+  event.description = fmt::format(
+      "bifurcation not located: the number of negative stability eigenvalues changes from {} to {} between "
+      "μ = {:.9g} and μ = {:.9g} (a bracket {:.2g} wide, reported at its end), but the eigenvalue that "
+      "crosses does not change sign between them{}",
+      from.n_negative, to.point.n_negative, from.parameter, to.point.parameter, width, mode_place(event));
+  return event;
+}
+
+bool PathTracer::land_on_end(const PathPoint& before, const PathPoint& after, std::optional<PathEvent> event) {
   const double share = (options_.end - before.parameter) / (after.parameter - before.parameter);
   PathPoint p;
   p.q = before.q + share * (after.q - before.q);
@@ -433,7 +480,8 @@ bool PathTracer::land_on_end(const PathPoint& before, const PathPoint& after) {
   p.parameter_rate = after.parameter_rate;
   p.displacement_norm_m = (p.q - reference_q_).norm();
   analyse_stability(p);
-  keep(std::move(p));
+  if (event) event->parameter = p.parameter;
+  keep(std::move(p), std::move(event));
   return true;
 }
 
@@ -567,15 +615,21 @@ ContinuationResult PathTracer::run(const Eigen::VectorXd& q0, const Eigen::Vecto
       continue;
     }
     Trial& next = *trial;
-    // Events between current and next, located before the next point joins the path.
+    // Events between current and next, located before the next point joins the path; one not
+    // located is carried by next.
+    const std::size_t n_events = result_.events.size();
+    std::optional<PathEvent> carried;
     const bool turned = std::signbit(next.tangent.mu_rate) != std::signbit(t->mu_rate);
     if (turned) {
       locate(current, *t, next, ds, PathEventKind::limit_point);
     } else if (current.n_negative >= 0 && next.point.n_negative >= 0 &&
                current.n_negative != next.point.n_negative &&
                (current.index_complete || next.point.index_complete)) {
-      locate(current, *t, next, ds, PathEventKind::bifurcation);
-      if (options_.switch_branch && !switched) {
+      carried = locate(current, *t, next, ds, PathEventKind::bifurcation);
+      if (options_.stop_at_first_event && !carried) return end_at_first_event();
+      if (carried && options_.switch_branch && !switched) {
+        carried->description += "; not switched: the branch point is not located";
+      } else if (options_.switch_branch && !switched) {
         if (std::optional<Trial> branch = switch_branch(ds)) {
           switched = true;
           current = branch->point;
@@ -591,8 +645,9 @@ ContinuationResult PathTracer::run(const Eigen::VectorXd& q0, const Eigen::Vecto
                                         next.point.constraint_rank < current.constraint_rank;
     const bool crosses_end = direction_ * (next.point.parameter - options_.end) >= 0.0 &&
                              direction_ * (current.parameter - options_.end) < 0.0;
+    if (options_.stop_at_first_event && result_.events.size() > n_events) return end_at_first_event();
     if (crosses_end) {
-      if (land_on_end(current, next.point)) {
+      if (land_on_end(current, next.point, std::move(carried))) {
         result_.end = ContinuationEnd::reached_end;
         result_.message = fmt::format("reached μ = {:.6g} in {} steps", options_.end, step + 1);
         return result_;
@@ -611,12 +666,23 @@ ContinuationResult PathTracer::run(const Eigen::VectorXd& q0, const Eigen::Vecto
     }
     current = next.point;
     *t = next.tangent;
-    if (constraints_degenerate) {
+    if (carried) {
+      keep(std::move(next.point), std::move(carried));
+    } else if (constraints_degenerate) {
       record_event(PathEventKind::singular_constraints, std::move(next.point), next.tangent, 0.0);
     } else {
       keep(std::move(next.point));
     }
+    if (options_.stop_at_first_event && result_.events.size() > n_events) return end_at_first_event();
   }
+}
+
+ContinuationResult PathTracer::end_at_first_event() {
+  const PathEvent& event = result_.events.front();
+  result_.end = ContinuationEnd::first_event;
+  result_.message = fmt::format("ended at its first event, a {} at μ = {:.9g} (stop_at: first_event)",
+                                to_string(event.kind), event.parameter);
+  return result_;
 }
 
 }  // namespace
@@ -661,8 +727,8 @@ const char* to_string(PathEventKind kind) {
 }
 
 const char* to_string(ContinuationEnd end) {
-  constexpr const char* kNames[] = {"reached_end",    "max_steps",    "stopped",
-                                    "step_too_small", "start_failed", "singular_constraints"};
+  constexpr const char* kNames[] = {"reached_end",  "max_steps",            "stopped",    "step_too_small",
+                                    "start_failed", "singular_constraints", "first_event"};
   return kNames[static_cast<int>(end)];
 }
 

@@ -42,13 +42,17 @@
 // extrapolated linearly, would reach 0. So steps shrink geometrically onto a critical point
 // (neither rule applies once the eigenvalue is below 1e-9 of the stiffness scale, so that a
 // step can cross it); the run stops below `min_step`. It ends when μ crosses μ_end (the last point solved at μ = μ_end exactly),
-// after `max_steps`, or when *stop becomes true (polled before every step).
+// after `max_steps`, when *stop becomes true (polled before every step), or, with
+// `stop_at_first_event`, at its first event (before any branch switch).
 //
 // Stability, at every point of models with at most `max_stability_dofs` coordinates: the
 // eigenvalues of Zᵀ(K + H(λ))Z, Z an orthonormal basis of null B. Two routes:
 //   dense  (up to `dense_stability_up_to` coordinates; solvers/constrained_stiffness.hpp): Z
 //          from a QR of Bᵀ, every eigenvalue, the rank of B; the count of negative ones is
-//          the equilibrium's index.
+//          the equilibrium's index. An eigenvalue counts as negative below minus the round-off
+//          of its own mode's energy, 16 ε |φ|ᵀ|K_T||φ| (solvers/negative_eigenvalues.hpp): a
+//          scale from the mode, not from the stiffest coordinate, so that a slender member's
+//          bending eigenvalue (10⁻¹³ of EA/L at L/r = 10⁵) is seen whatever EA/EI and the mesh.
 //   sparse (above; solvers/lowest_constrained_stiffness.hpp): the lowest n_eigenvalues = k by
 //          shift-invert Lanczos on the bordered matrix, σ following the previous point's
 //          lowest eigenvalue: one more factorization and a few tens of solves per point. The
@@ -59,8 +63,12 @@
 // predictor length σ from the earlier point (same tangent, same corrector):
 //   limit point   μ̇ changes sign;        |μ − μ*| ≤ max|dμ/dσ| · (σ_hi − σ_lo) at the bracket
 //   bifurcation   the number of negative eigenvalues changes while μ̇ keeps its sign (seen
-//                 when the count is exact at one of the two points at least);
-//                 |μ − μ*| ≤ |μ_hi − μ_lo|
+//                 when the count is exact at one of the two points at least), located only
+//                 when the eigenvalue that crosses changes sign between the two points;
+//                 |μ − μ*| ≤ |μ_hi − μ_lo| + tol/|dθ/dμ|, the bracket plus the stretch of μ
+//                 over which θ lies within its round-off tol of zero (dθ/dμ from the two
+//                 points). Else not located (PathEvent::located false): reported at the later
+//                 point, bound the bracket's width, the message naming both points.
 //   singular constraints   the rank of B drops (a dead centre, redundant constraints):
 //                 not a structural instability, reported at the point, not located (dense
 //                 route only).
@@ -114,6 +122,8 @@ struct ContinuationOptions {
   // predictor along the critical mode, first Δs = max(Δs, initial_step); see
   // PathTracer::switch_branch in continuation.cpp).
   bool switch_branch = false;
+  // End the path at its first event (ContinuationEnd::first_event), the event its last point.
+  bool stop_at_first_event = false;
   NewtonOptions newton;  // tolerances (also of the corrector) and the start/end solves
   const std::atomic<bool>* stop = nullptr;  // polled before every step: Ctrl-C
   std::function<void()> poll;               // called before every step; may set *stop
@@ -133,8 +143,13 @@ struct PathEvent {
   double parameter = 0.0;        // μ at the located point
   double parameter_error = 0.0;  // bound on |μ − μ*| (0 for singular constraints: not located)
   // False when the location stopped (corrector failures, iteration limit) before the bound
-  // reached options.location_tolerance; the bound is still the one reached.
+  // reached options.location_tolerance, or the eigenvalue's round-off alone spans more; the
+  // bound is still true.
   bool within_tolerance = true;
+  // False for a bifurcation whose eigenvalue count changes between two path points while the
+  // eigenvalue does not change sign between them: not located, reported at the later point
+  // with the width of the bracket as parameter_error (the description says what is known).
+  bool located = true;
   int point = -1;                // the located point in ContinuationResult::points
   double eigenvalue_N_m = 0.0;   // the critical eigenvalue of Zᵀ K_T Z there (N/m)
   Eigen::VectorXd mode;          // critical mode in q, unit length (empty: none computed)
@@ -149,6 +164,9 @@ struct PathPoint {
   double displacement_norm_m = 0.0;  // ‖q − q_model‖₂ from the model's initial coordinates
   double parameter_rate = 0.0;       // dμ/ds (sign: the direction of travel)
   Eigen::VectorXd lowest_eigenvalues;  // of Zᵀ K_T Z, ascending, N/m (empty: not computed)
+  // The round-off of each of them (N/m; solvers/negative_eigenvalues.hpp): within ± it of 0 an
+  // eigenvalue is zero, below −it negative.
+  Eigen::VectorXd lowest_tolerances;
   int n_negative = -1;               // negative eigenvalues (-1: not computed)
   // False when n_negative is only a lower bound: the sparse route found every one of its k
   // eigenvalues negative.
@@ -166,6 +184,7 @@ enum class ContinuationEnd {
   step_too_small,        // the corrector failed down to min_step
   start_failed,          // no equilibrium at μ_start from the given state
   singular_constraints,  // B has dependent rows at the start
+  first_event,           // options.stop_at_first_event: the path's last point is its first event
 };
 const char* to_string(ContinuationEnd end);
 

@@ -11,16 +11,21 @@
 // Shift-invert finds the k eigenvalues nearest σ; they are the k lowest when σ lies below every
 // eigenvalue. σ is therefore put below the expected lowest one (the previous point's on a
 // path; else slightly below zero, a millionth of the stiffness scale, where a stable structure
-// has them all above), by half as much again as its distance from zero. An eigenvalue found
+// has them all above), by half as much again as its distance from zero, and at least by a
+// tenth of the expected spread θ_k − θ_1 (when known): near a crossing, σ then stays close to
+// the lowest eigenvalues on the scale of their own spacing, however small they are against
+// the stiffness scale (a slender member). An eigenvalue found
 // below σ shows that σ was not low enough: σ is lowered below it and the solve repeated (as
 // when σ happens to be an eigenvalue and the shifted matrix is singular). What this
 // cannot see is an eigenvalue below σ farther from σ than the k-th above it; along a path,
 // where eigenvalues move continuously and σ follows the lowest, that does not happen unless
 // a step is long against the eigenvalues' motion.
 //
-// The count of negative eigenvalues is then taken among the k computed: it is the true index
-// of the equilibrium when it is below k (an eigenvalue ≥ 0 was found above all negative ones),
-// and only a lower bound when all k are negative.
+// The count of negative eigenvalues is then taken among the k computed, each against the
+// round-off of its own mode's energy (solvers/negative_eigenvalues.hpp, |φ|ᵀ|K_T||φ| summed over
+// the stored entries of K_T): it is the true index of the equilibrium when it is below k (an
+// eigenvalue ≥ 0 was found above all negative ones), and only a lower bound when all k are
+// negative.
 
 #include <Eigen/Core>
 #include <optional>
@@ -35,9 +40,12 @@ namespace deploydyn {
 struct LowestStiffnessRequest {
   int n_values = 3;                 // k
   double stiffness_scale_N_m = 1.0;  // the largest diagonal entry of K_T: sizes σ's margin
-  double zero_tolerance_N_m = 0.0;  // |θ| below it is not counted as negative
   // Where the lowest eigenvalue is expected (N/m); empty: unknown.
   std::optional<double> expected_lowest_N_m;
+  // θ_k − θ_1 expected (N/m), e.g. the previous point's; 0: unknown. Sizes σ's margin below a
+  // lowest eigenvalue near zero from the lowest part of the spectrum instead of the stiffness
+  // scale.
+  double expected_spread_N_m = 0.0;
   // Eigenvectors the wanted ones are expected near (columns), e.g. the previous point's.
   Eigen::MatrixXd expected_modes;
 };
@@ -63,8 +71,17 @@ class LowestConstrainedStiffness {
 
  private:
   int n_dofs_ = 0;
+  // |φ|ᵀ|K_T||φ| from the system's values, with `applied_shift` (σ) taken off the diagonal.
+  double absolute_mode_energy_N_m(LinearSystem& system, const Eigen::VectorXd& mode,
+                                  double applied_shift) const;
+
   int n_free_ = 0;  // coordinates − constraint equations: at most this many eigenvalues
   std::vector<int> diagonal_slots_;  // [coordinate] → index into LinearSystem::values()
+  // Each stored entry of the coordinate block once: (row, col) and its index into values().
+  struct StoredEntry {
+    int row, col, slot;
+  };
+  std::vector<StoredEntry> stiffness_entries_;
   mutable int n_factorizations_ = 0, n_solves_ = 0;
 };
 
