@@ -135,7 +135,12 @@ class YamlDocument::Builder {
     bool have_root = false;
     for (bool done = false; !done;) {
       yaml_event_t event;
-      if (yaml_parser_parse(&parser, &event) == 0) throw LibyamlRefused{};
+      if (yaml_parser_parse(&parser, &event) == 0) {
+        // Refused after the first document's root node ended: text that follows it (`{a: 1} xyz`),
+        // which yaml-cpp would drop.
+        if (root_ && open_.empty()) throw second_document(mark_of(parser.problem_mark));
+        throw LibyamlRefused{};
+      }
       const std::unique_ptr<yaml_event_t, void (*)(yaml_event_t*)> event_guard(&event, yaml_event_delete);
       switch (event.type) {
         case YAML_SCALAR_EVENT: {
