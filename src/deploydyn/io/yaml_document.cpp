@@ -11,6 +11,8 @@
 #include <unordered_map>
 #include <utility>
 
+#include "deploydyn/util/stop_point.hpp"
+
 namespace deploydyn::io {
 namespace {
 
@@ -134,6 +136,7 @@ class YamlDocument::Builder {
     yaml_parser_set_input_string(&parser, reinterpret_cast<const unsigned char*>(text.data()), text.size());
     bool have_root = false;
     for (bool done = false; !done;) {
+      stop_point();  // a model of 10⁶ units is 10⁷ events
       yaml_event_t event;
       if (yaml_parser_parse(&parser, &event) == 0) {
         // Refused after the first document's root node ended: text that follows it (`{a: 1} xyz`),
@@ -263,6 +266,7 @@ class YamlDocument::JsonReader {
           const char* key_at = field.key().raw() - 1;  // its opening quote
           const std::string_view key = field.unescaped_key();
           stack_.push_back(document_.add_scalar_at(key, mark_at(key_at)));
+          stop_point();
           const Id child = read(field.value(), depth + 1);
           stack_.push_back(child);
         }
