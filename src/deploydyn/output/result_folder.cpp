@@ -98,6 +98,15 @@ std::string dangling_link(const std::filesystem::path& folder) {
 
 }  // namespace
 
+bool folder_in_use(const std::filesystem::path& folder) {
+  const int fd = ::open((folder / kLockFileName).c_str(), O_RDONLY | O_CLOEXEC);
+  if (fd < 0) return false;  // no lock file: no run ever owned it
+  // Taken and dropped at once: a run starting into the folder retries its lock meanwhile.
+  const bool owned = ::flock(fd, LOCK_EX | LOCK_NB) != 0 && errno == EWOULDBLOCK;
+  ::close(fd);
+  return owned;
+}
+
 ResultFolder::ResultFolder(std::filesystem::path folder, std::string status_file_name)
     : folder_(std::move(folder)), status_file_name_(std::move(status_file_name)) {
   std::error_code error;

@@ -28,6 +28,10 @@ inline constexpr const char* kRunModelFileName = "model.yaml";
 // short final status may take when the disk is full.
 inline constexpr std::size_t kReservedStatusBytes = 4096;
 
+// Whether a live process owns `folder` (holds its lock): a run still writing it. A status file
+// that says "running" in a folder nobody owns is a killed run's.
+bool folder_in_use(const std::filesystem::path& folder);
+
 class ResultFolder {
  public:
   // Creates `folder` if needed and takes its lock. Throws OutputError when the folder cannot
