@@ -579,7 +579,7 @@ py::object run_study_file(const std::filesystem::path& file, const std::optional
   py::list cases;
   for (std::size_t i = 0; i < outcomes.size(); ++i) {
     py::dict c;
-    c["name"] = study.cases[i].name;
+    c["name"] = study.case_name(i);
     c["status"] = to_string(outcomes[i].status);
     c["message"] = outcomes[i].message;
     c["process"] = outcomes[i].process;
