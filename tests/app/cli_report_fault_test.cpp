@@ -33,23 +33,20 @@ void write_text(const fs::path& file, const std::string& text) {
   out << text;
 }
 
+// The folders of the running test: CTest runs the tests side by side, each in its own process.
+std::string test_name() { return ::testing::UnitTest::GetInstance()->current_test_info()->name(); }
+
 // A completed run of the parallel linkage, copied for each test into its own folder, with an
 // earlier report.html that a failed report must leave as it was.
 class CliReportFaults : public ::testing::Test {
  protected:
-  static void SetUpTestSuite() {
-    run_folder_ = new ScratchFolder("report_fault_run");
-    const auto outcome = run_cli("run " + example_path("parallel.yaml") + " --quiet --out " +
-                                 run_folder_->path().string());
+  void SetUp() override {
+    const auto outcome = run_cli("run " + example_path("parallel.yaml") + " --quiet --out " + run_.path().string());
     ASSERT_EQ(outcome.exit_code, 0) << outcome.output;
-  }
-  static void TearDownTestSuite() {
-    delete run_folder_;
-    run_folder_ = nullptr;
   }
 
   fs::path copy_of_run() {
-    fs::copy(run_folder_->path(), folder_.path(), fs::copy_options::recursive);
+    fs::copy(run_.path(), folder_.path(), fs::copy_options::recursive);
     write_text(report(), kEarlierReport);
     return folder_.path();
   }
@@ -65,11 +62,9 @@ class CliReportFaults : public ::testing::Test {
     EXPECT_FALSE(fs::exists(out.string() + ".tmp")) << "a half-written report is left";
   }
 
-  static ScratchFolder* run_folder_;
-  ScratchFolder folder_{"report_fault"};
+  ScratchFolder run_{"report_fault_run_" + test_name()};
+  ScratchFolder folder_{"report_fault_" + test_name()};
 };
-
-ScratchFolder* CliReportFaults::run_folder_ = nullptr;
 
 TEST_F(CliReportFaults, AReportOfAWholeRunIsWritten) {
   const fs::path folder = copy_of_run();
