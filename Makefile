@@ -1,6 +1,7 @@
 # The two entry points. Each installs what is missing (Debian packages), configures, builds,
 # then runs. `make demo`: the paper's study, the scissor structures and the mast into results/. `make test`: every test.
-# CI also runs `make sanitize` (the tests under ASan + UBSan) and `make fuzz` (60 s of libFuzzer).
+# CI also runs `make sanitize` (the tests under ASan + UBSan) and `make fuzz` (60 s of libFuzzer,
+# shared by its two targets).
 PRESET ?= release
 BUILD  := build/$(PRESET)
 PYTHON := /usr/bin/python3
@@ -48,16 +49,24 @@ sanitize: deps
 	@cmake --build build/asan
 	@ctest --preset asan -j2
 
-# A bounded libFuzzer run of the model loader, seeded with the examples and the bad models.
+# Bounded libFuzzer runs, FUZZ_SECONDS in all: two thirds for the model loader, seeded with the
+# examples and the bad models, one third for study files (fuzz/study_loader_fuzzer.cpp), seeded
+# with the examples' studies and fuzz/seeds/study. Each prints its executions.
+FUZZ_STUDY_SECONDS = $(shell echo $$(( $(FUZZ_SECONDS) / 3 )))
+FUZZ_MODEL_SECONDS = $(shell echo $$(( $(FUZZ_SECONDS) - $(FUZZ_SECONDS) / 3 )))
+FUZZ_STATS := grep -E '^(stat::number_of_executed_units|stat::average_exec_per_sec|==|SUMMARY|Done)'
 fuzz: deps
 	@test -f build/fuzz/build.ninja || cmake --preset fuzz >/dev/null
 	@cmake --build --preset fuzz
-	@rm -rf build/fuzz/corpus && mkdir -p build/fuzz/corpus
+	@rm -rf build/fuzz/corpus build/fuzz/study_corpus && mkdir -p build/fuzz/corpus build/fuzz/study_corpus
 	@cp examples/paper/*.yaml examples/beams/*.yaml examples/petal/*.yaml examples/cables/*.yaml examples/boom/*.yaml examples/tutorial/*.yaml tests/io/bad_models/*.yaml fuzz/seeds/*.json build/fuzz/corpus/
+	@cp examples/*/*_study.yaml fuzz/seeds/study/* build/fuzz/study_corpus/
 	@build/fuzz/model_loader_fuzzer build/fuzz/corpus -dict=fuzz/model.dict -max_len=4096 \
-	  -max_total_time=$(FUZZ_SECONDS) -timeout=10 -rss_limit_mb=4096 -print_final_stats=1 2>&1 \
-	  | grep -E '^(stat::number_of_executed_units|stat::average_exec_per_sec|==|SUMMARY|Done)' ; \
-	  test $${PIPESTATUS[0]} -eq 0
+	  -max_total_time=$(FUZZ_MODEL_SECONDS) -timeout=10 -rss_limit_mb=4096 -print_final_stats=1 2>&1 \
+	  | $(FUZZ_STATS) ; test $${PIPESTATUS[0]} -eq 0
+	@build/fuzz/study_loader_fuzzer build/fuzz/study_corpus -dict=fuzz/study.dict -max_len=4096 \
+	  -max_total_time=$(FUZZ_STUDY_SECONDS) -timeout=10 -rss_limit_mb=4096 -print_final_stats=1 2>&1 \
+	  | $(FUZZ_STATS) ; test $${PIPESTATUS[0]} -eq 0
 
 # The verification manual: builds, runs the Verification* suites, writes docs/verification.md.
 verification: build

@@ -98,13 +98,14 @@ Study prepare_study(const StudyArguments& arguments, bool checks_folder) {
 
 int run_prepared_study(Study& study, const StudyArguments& arguments, StudyControl& control,
                        const StudyChannel* channel) {
-  const auto case_done = [&](std::size_t i, const CaseOutcome& outcome) {
-    const std::string& name = study.cases[i].name;
+  const auto case_done = [&](std::size_t i, const CaseRun& run) {
+    const CaseOutcome& outcome = run.outcome;
+    const std::string name = study.case_name(i);
     const std::string where = outcome.process > 0 ? fmt::format(" (process {})", outcome.process) : "";
     if (outcome.status == RunStatus::completed) {
       if (!arguments.quiet) {
         fmt::print(stderr, "{}{}: {} in {:.3f} s; results in {}\n", name, where, outcome.message,
-                   outcome.report.wall_time_s, study.case_folder(i).string());
+                   run.report.wall_time_s, study.case_folder(i).string());
       }
       return;
     }
@@ -115,10 +116,10 @@ int run_prepared_study(Study& study, const StudyArguments& arguments, StudyContr
     run_study_worker(study, control);
     return kExitSuccess;
   }
-  const int n_jobs = channel ? channel->size() : resolve_jobs(study.jobs, study.cases.size());
+  const int n_jobs = channel ? channel->size() : resolve_jobs(study.jobs, study.n_cases());
   // Process 0 reports the cases it ran itself, and those of workers that died.
-  control.case_done = [&](std::size_t i, const CaseOutcome& outcome) {
-    if (outcome.process == 0 || outcome.lost) case_done(i, outcome);
+  control.case_done = [&](std::size_t i, const CaseRun& run) {
+    if (run.outcome.process == 0 || run.outcome.lost) case_done(i, run);
   };
   const auto start = std::chrono::steady_clock::now();
   const std::vector<CaseOutcome> outcomes = run_study(study, control);
@@ -130,7 +131,8 @@ int run_prepared_study(Study& study, const StudyArguments& arguments, StudyContr
     n_completed += outcome.status == RunStatus::completed ? 1 : 0;
     n_resumed += outcome.resumed ? 1 : 0;
   }
-  const bool all_completed = n_completed == outcomes.size();
+  // A stop while the tables were made leaves every case completed but no study.csv.
+  const bool all_completed = n_completed == outcomes.size() && (control.stop == nullptr || !control.stop->load());
   if (!arguments.quiet || !all_completed) {
     fmt::print(stderr, "{}: {} of {} cases completed{} in {:.3f} s ({} at a time{}); table in {}\n",
                arguments.study_file, n_completed, outcomes.size(),

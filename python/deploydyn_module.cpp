@@ -51,6 +51,7 @@
 #include "deploydyn/study/study_channel.hpp"
 #include "deploydyn/study/study_loader.hpp"
 #include "deploydyn/study/study_runner.hpp"
+#include "deploydyn/util/stop_point.hpp"
 
 namespace py = pybind11;
 using namespace deploydyn;
@@ -100,8 +101,10 @@ class MemorySink final : public RecordSink {
 // work runs on a thread of its own while the caller's thread waits without the GIL and checks
 // every kCheckInterval, so the work needs no hook into Python: it only reads the stop flag
 // (RunControl::stop, ContinuationOptions::stop, StudyControl::stop) and ends "interrupted",
-// keeping what it computed. A KeyboardInterrupt is raised when the call returns; a stop by
-// the `stop` object is not an error: the call returns what it computed.
+// keeping what it computed, or, for a model being read or generated, throws WorkStopped at its
+// next stop_point() (util/stop_point.hpp). Either way the call waits for its thread: no work
+// goes on in the background after it. A KeyboardInterrupt is raised when the call returns; a
+// stop by the `stop` object is not an error: the call returns what it computed.
 class StopWatch {
  public:
   // Often enough that Ctrl-C acts within a fraction of a second; rarely enough that taking the
@@ -120,46 +123,29 @@ class StopWatch {
   }
 
   // With the GIL: runs work() to its end, setting the flag on a stop request; the work is
-  // expected to read it and end early.
+  // expected to read it (or reach a stop_point()) and end early.
   template <class Work>
   auto run(Work work) {
-    return call(std::move(work), /*abandon_on_stop=*/false);
-  }
-  // For work without a stop point and with nothing to undo (a model read or generated): on
-  // Ctrl-C it is left to finish in the background, its result discarded, and the call raises
-  // KeyboardInterrupt at once.
-  template <class Work>
-  auto run_or_abandon(Work work) {
-    return call(std::move(work), /*abandon_on_stop=*/true);
-  }
-
- private:
-  template <class Work>
-  auto call(Work work, bool abandon_on_stop) {
     using Result = decltype(work());
-    // Shared with the worker thread, which outlives this call when abandoned.
-    auto task = std::make_shared<std::packaged_task<Result()>>(std::move(work));
-    std::future<Result> done = task->get_future();
-    std::thread worker([task] { (*task)(); });
-    bool abandoned = false;
+    std::packaged_task<Result()> task(std::move(work));
+    std::future<Result> done = task.get_future();
+    std::thread worker([&task, flag = &stop_] {
+      const StopScope scope(flag);
+      task();
+    });
     {
       py::gil_scoped_release release;
       while (done.wait_for(kCheckInterval) != std::future_status::ready) {
         py::gil_scoped_acquire gil;
-        if (check() && abandon_on_stop && error_) {
-          abandoned = true;
-          break;
-        }
+        check();
       }
     }
-    if (abandoned) {
-      worker.detach();
-    } else {
-      worker.join();
-    }
+    worker.join();
     rethrow();
     return done.get();  // the work's own exception, if it threw
   }
+
+ private:
 
   // With the GIL: true once a stop was asked for (and the flag set).
   bool check() {
@@ -598,7 +584,7 @@ py::object run_study_file(const std::filesystem::path& file, const std::optional
   py::list cases;
   for (std::size_t i = 0; i < outcomes.size(); ++i) {
     py::dict c;
-    c["name"] = study.cases[i].name;
+    c["name"] = study.case_name(i);
     c["status"] = to_string(outcomes[i].status);
     c["message"] = outcomes[i].message;
     c["process"] = outcomes[i].process;
@@ -694,7 +680,7 @@ PYBIND11_MODULE(_core, m) {
       "load_file",
       [](const std::filesystem::path& file, const OverridePairs& overrides) {
         StopWatch watch;  // a large file takes seconds: Ctrl-C
-        return watch.run_or_abandon(
+        return watch.run(
             [file, overrides = to_overrides(overrides)] { return LoadedModel{load_model(file, overrides)}; });
       },
       py::arg("file"), py::arg("overrides") = OverridePairs{});
@@ -704,7 +690,7 @@ PYBIND11_MODULE(_core, m) {
          bool with_position) {
         try {
           StopWatch watch;  // a large text (a roof of 10⁶ units) takes seconds: Ctrl-C
-          return watch.run_or_abandon([text, source_name, overrides = to_overrides(overrides)] {
+          return watch.run([text, source_name, overrides = to_overrides(overrides)] {
             return LoadedModel{load_model_from_string(text, source_name, overrides)};
           });
         } catch (const InputError& e) {
@@ -729,7 +715,7 @@ PYBIND11_MODULE(_core, m) {
         }
         options.bearings = *kind;
         StopWatch watch;  // 10⁶ units take minutes: Ctrl-C
-        return watch.run_or_abandon([options] {
+        return watch.run([options] {
           std::ostringstream out;
           save_model(make_roof(options), out);  // std::invalid_argument → ValueError
           return out.str();

@@ -18,9 +18,10 @@ from conftest import GENERAL
 LATE = 3.0
 
 
-def interrupt(tmp_path, setup, call, delay=0.5):
+def interrupt(tmp_path, setup, call, delay=0.5, then=None):
     """Runs `setup`, then `call` in a new interpreter that sends itself SIGINT `delay` s after
-    the call started; returns how long after the signal KeyboardInterrupt reached the script."""
+    the call started; returns how long after the signal KeyboardInterrupt reached the script,
+    and with `then` (code run after it), also the line that code printed."""
     script = tmp_path / "interrupted.py"
     script.write_text(textwrap.dedent("""\
         import os, signal, sys, threading, time, deploydyn
@@ -34,15 +35,18 @@ def interrupt(tmp_path, setup, call, delay=0.5):
             {call}
         except KeyboardInterrupt:
             print(time.perf_counter() - sent[0], flush=True)
+            {then}
             sys.exit(3)
-        """).format(setup=setup, call=call, delay=delay))
+        """).format(setup=setup, call=call, delay=delay, then="{then}"))
+    script.write_text(script.read_text().replace("{then}", textwrap.indent(then or "pass", " " * 4).lstrip()))
     process = subprocess.Popen([sys.executable, str(script)], stdout=subprocess.PIPE, text=True)
     try:
         output, _ = process.communicate(timeout=120)
     finally:
         process.kill()
     assert process.returncode == 3, f"no KeyboardInterrupt (exit {process.returncode}): {output}"
-    return float(output)
+    lines = output.splitlines()
+    return float(lines[0]) if then is None else (float(lines[0]), lines[1])
 
 
 def test_ctrl_c_stops_a_continuation(tmp_path):
@@ -63,6 +67,29 @@ def test_ctrl_c_stops_a_roof_being_generated(tmp_path):
     """roof(10**6) writes and reads a model of 3·10⁶ bars: minutes, deaf to Ctrl-C."""
     late = interrupt(tmp_path, "", "deploydyn.roof(10**6)")
     assert late < LATE, f"KeyboardInterrupt {late:.2f} s after the signal"
+
+
+@pytest.mark.parametrize("setup, call", [("", "deploydyn.roof(10**6)"),
+                                         ("text = deploydyn._core.roof_yaml(10**5, 1, 130.0, 'sliding')",
+                                          "deploydyn.loads(text)")], ids=["roof", "loads"])
+def test_an_interrupted_model_call_leaves_no_work_behind(tmp_path, setup, call):
+    """roof() and loads() of a large model left their thread reading or generating it in the
+    background after KeyboardInterrupt (a core busy for minutes, its memory growing): now the
+    call stops it before it returns, so that no thread of deploydyn's is left, and no CPU used."""
+    after = textwrap.dedent("""\
+        import json
+        cpu = time.process_time()
+        time.sleep(1.0)
+        print(json.dumps({'threads': len(os.listdir('/proc/self/task')), 'threads_before': threads_before,
+                          'cpu_s': time.process_time() - cpu}), flush=True)
+        """)
+    late, report = interrupt(tmp_path, setup + "\nthreads_before = len(os.listdir('/proc/self/task'))", call,
+                             then=after)
+    assert late < LATE, f"KeyboardInterrupt {late:.2f} s after the signal"
+    report = json.loads(report)
+    # (The Timer thread that sent the signal has ended too.)
+    assert report["threads"] <= report["threads_before"], report
+    assert report["cpu_s"] < 0.2, report
 
 
 def long_study(tmp_path):

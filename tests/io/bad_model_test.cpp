@@ -97,6 +97,7 @@ const BadModelCase kBadModels[] = {
     {"second_document.yaml", 4, "", "a second document starts here; a model file holds one document"},
     {"json_second_value.json", 3, "", "a second document starts here; a model file holds one document (in JSON: one value)"},
     {"json_trailing_text.json", 2, "", "a second document starts here"},
+    {"yaml_flow_trailing_text.yaml", 2, "", "a second document starts here; a model file holds one document"},
     {"units_not_si.yaml", 1, "units", "only SI is supported"},
     {"output_file_with_folder.yaml", 5, "output.history", "must be a plain file name"},
     {"empty.yaml", 0, "", "expected a mapping with nodes, materials and elements, got nothing"},

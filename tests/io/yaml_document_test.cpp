@@ -251,7 +251,8 @@ TEST(YamlDocument, NestingDeeperThanTheLimitIsRefusedByEveryParser) {
 }
 
 // What follows the first document is not dropped: a second document (after ---, even one that
-// is not YAML), or text after a JSON model's closing brace, is refused where it starts. (yaml-cpp
+// is not YAML), or text after a JSON model's or a YAML flow mapping's closing brace, is refused
+// where it starts. (yaml-cpp
 // alone reads the first document only: its LoadAll loops forever on some texts.)
 TEST(YamlDocument, ASecondDocumentIsRefusedWhereItStarts) {
   const std::string refused = "a second document starts here; a model file holds one document (in JSON: one value)";
@@ -260,7 +261,13 @@ TEST(YamlDocument, ASecondDocumentIsRefusedWhereItStarts) {
                                                        {"a: 1\n---\n]\n", "1:0"},
                                                        {"{\"a\": 1} xyz\n", "0:9"},
                                                        {"{\"a\": 1}{\"b\": 2}", "0:8"},
-                                                       {"{\"a\": 1}\n{\"b\": 2}\n", "1:0"}};
+                                                       {"{\"a\": 1}\n{\"b\": 2}\n", "1:0"},
+                                                       // Text after a YAML flow mapping or list (issue 32):
+                                                       {"{a: 1} xyz\n", "0:7"},
+                                                       {"{a: 1}\nxyz\n", "1:0"},
+                                                       {"{a: 1} {b: 2}\n", "0:7"},
+                                                       {"[1, 2] ]\n", "0:7"},
+                                                       {"{\"a\": 1, b: 2} xyz\n", "0:15"}};
   for (const auto& [text, at] : cases) EXPECT_EQ(syntax_error(text, true), refused + " at " + at) << text;
   // An end marker, or a comment after a JSON model, is no second document.
   EXPECT_EQ(syntax_error("a: 1\n...\n", true), "");

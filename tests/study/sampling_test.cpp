@@ -14,6 +14,7 @@
 #include <numeric>
 #include <set>
 #include <string>
+#include <thread>
 
 #include "deploydyn/generators/roof.hpp"
 #include "deploydyn/io/input_error.hpp"
@@ -127,6 +128,16 @@ TEST(RandomDraws, ADrawDependsOnlyOnSeedCaseAndVariable) {
 
 Study load(const std::string& text) { return load_study_from_string(text, "s.yaml", kPaper); }
 
+void expect_same_case(const StudyCase& a, const StudyCase& b) {
+  EXPECT_EQ(a.name, b.name);
+  EXPECT_EQ(a.drawn, b.drawn) << a.name;
+  ASSERT_EQ(a.overrides.size(), b.overrides.size()) << a.name;
+  for (std::size_t o = 0; o < a.overrides.size(); ++o) {
+    EXPECT_EQ(a.overrides[o].path, b.overrides[o].path) << a.name;
+    EXPECT_EQ(a.overrides[o].value, b.overrides[o].value) << a.name;
+  }
+}
+
 double drawn(const StudyCase& c, const std::string& name) {
   for (const auto& [n, v] : c.drawn) {
     if (n == name) return v;
@@ -154,14 +165,15 @@ TEST(SampledStudy, DrawsOverridesOfTheModel) {
       "  length_error: [{elements: ['1', '2'], uniform: 1e-3}]\n"
       "  temperature: {dT: [100, 160], gradient: {direction: [1, 0], dT: [0, 30]}}\n"
       "  material: {E: 0.05, alpha: 0.02}\n");
-  ASSERT_EQ(study.cases.size(), 21u);
-  EXPECT_EQ(study.cases[0].name, "nominal");
-  EXPECT_TRUE(study.cases[0].overrides.empty());
-  EXPECT_EQ(study.cases[1].name, "sample_01");
+  ASSERT_EQ(study.n_cases(), 21u);
+  EXPECT_EQ(study.case_at(0).name, "nominal");
+  EXPECT_TRUE(study.case_at(0).overrides.empty());
+  EXPECT_EQ(study.case_at(1).name, "sample_01");
+  EXPECT_EQ(study.case_name(20), "sample_20");
   EXPECT_EQ(study.reference, 0u);
   const Model nominal = load_model(study.model_file);
-  for (std::size_t i = 1; i < study.cases.size(); ++i) {
-    const StudyCase& c = study.cases[i];
+  for (std::size_t i = 1; i < study.n_cases(); ++i) {
+    const StudyCase c = study.case_at(i);
     const Model model = load_model(study.model_file, c.overrides);  // every case is a valid model
     for (const std::string bar : {"1", "2"}) {
       const double error_m = drawn(c, "length_error_m." + bar);
@@ -190,7 +202,7 @@ TEST(SampledStudy, DrawsOverridesOfTheModel) {
     EXPECT_NEAR(hottest - coldest, gradient_C, 1e-9) << "no scatter: the sides differ by G";
     EXPECT_NEAR(0.5 * (hottest + coldest), uniform_C, 1e-9);
   }
-  EXPECT_EQ(override_value(study.cases[3], "elements.1.material"),
+  EXPECT_EQ(override_value(study.case_at(3), "elements.1.material"),
             nominal.materials[nominal.bars[0].material].name + "_1");
 }
 
@@ -200,14 +212,33 @@ TEST(SampledStudy, LoadsTheSameCasesEveryTime) {
       "model: general.yaml\nsampling: {method: monte_carlo, cases: 5, seed: 8, "
       "length_error: [{elements: '*', normal: 1e-4}]}\n";
   const Study a = load(text), b = load(text);
-  ASSERT_EQ(a.cases.size(), b.cases.size());
-  for (std::size_t i = 0; i < a.cases.size(); ++i) {
-    EXPECT_EQ(a.cases[i].drawn, b.cases[i].drawn);
-    ASSERT_EQ(a.cases[i].overrides.size(), b.cases[i].overrides.size());
-    for (std::size_t o = 0; o < a.cases[i].overrides.size(); ++o) {
-      EXPECT_EQ(a.cases[i].overrides[o].value, b.cases[i].overrides[o].value);
+  ASSERT_EQ(a.n_cases(), b.n_cases());
+  for (std::size_t i = 0; i < a.n_cases(); ++i) expect_same_case(a.case_at(i), b.case_at(i));
+}
+
+// Cases are drawn as they run, not when the study is loaded (issue 32: 10⁸ cases took 21 GB
+// before one ran): by several threads at once, in any order, a case is the one drawn alone in
+// order. Latin hypercube strata too, which each variable orders once for all cases.
+TEST(SampledStudy, CasesDrawnByThreadsInAnyOrderAreTheSame) {
+  const std::string text =
+      "model: general.yaml\nsampling: {cases: 400, seed: 3, length_error: [{elements: '*', normal: 1e-4}], "
+      "temperature: {dT: [0, 50], scatter: 2}, material: {E: 0.01, alpha: 0.01}}\n";
+  const Study alone = load(text), shared = load(text);
+  const long n = static_cast<long>(alone.n_cases());
+  std::vector<StudyCase> in_order, by_threads(alone.n_cases());
+  for (long i = 0; i < n; ++i) in_order.push_back(alone.case_at(static_cast<std::size_t>(i)));
+  {
+    constexpr long kThreads = 4;  // each from the end, every fourth case
+    std::vector<std::jthread> threads;
+    for (long t = 0; t < kThreads; ++t) {
+      threads.emplace_back([&, t] {
+        for (long i = n - 1 - t; i >= 0; i -= kThreads) {
+          by_threads[static_cast<std::size_t>(i)] = shared.case_at(static_cast<std::size_t>(i));
+        }
+      });
     }
   }
+  for (long i = 0; i < n; ++i) expect_same_case(in_order[static_cast<std::size_t>(i)], by_threads[static_cast<std::size_t>(i)]);
 }
 
 using testing::expect_study_error;
@@ -246,7 +277,7 @@ TEST(SampledStudy, CasesAndDrawnValuesAreCappedAtLoad) {
     save_model(make_roof(options), out);
   }
   expect_study_error("model: " + roof.string() + "\nsampling:\n  cases: 5000\n  temperature: {dT: [0, 10]}\n"
-                     "  material: {E: 0.01}\n", 3, "sampling", "at most 10000000 fit in memory");
+                     "  material: {E: 0.01}\n", 3, "sampling", "at most 10000000 are allowed");
   std::filesystem::remove(roof);
 }
 
@@ -279,7 +310,10 @@ TEST(SamplingStatistics, CountsExceedanceAndCasesThatDidNotDeploy) {
   // s1..s3 completed: 10, 20, 30; mean 20, std 10, p50 20, 2 of 3 above 15.
   EXPECT_NE(text.find("peak_force,bar,N,3,20,10,10,11,20,29,29.8,30,15,0.6666666666666666\n"), std::string::npos)
       << text;
-  EXPECT_EQ(samples_csv(study), "case,x\ns1,1\ns2,2\ns3,3\ns4,4\n");
+  EXPECT_EQ(samples_csv(study, results), "case,x\ns1,1\ns2,2\ns3,3\ns4,4\n");
+  // A stopped study's cases that did not start have no row.
+  results[3] = CaseResult::not_run(RunStatus::interrupted, "not started");
+  EXPECT_EQ(samples_csv(study, results), "case,x\ns1,1\ns2,2\ns4,4\n");
 }
 
 }  // namespace

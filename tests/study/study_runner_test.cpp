@@ -188,7 +188,7 @@ TEST(StudyRunner, AFailingCaseDoesNotStopTheOthers) {
       {"jammed", {{"thermal.dT", "-170"}, {"analysis.newton.max_iterations", "1"}}, {}});
   std::atomic<int> n_reported{0};
   StudyControl control;
-  control.case_done = [&](std::size_t, const CaseOutcome&) { ++n_reported; };
+  control.case_done = [&](std::size_t, const CaseRun&) { ++n_reported; };
   const std::vector<CaseOutcome> outcomes = run_study(study, control);
   EXPECT_EQ(n_reported.load(), 5);
   const auto rows = read_table(study.table_file());
@@ -222,7 +222,7 @@ TEST(StudyRunner, AStopLeavesTheRestNotStarted) {
   std::atomic<bool> stop{false};
   StudyControl control;
   control.stop = &stop;
-  control.case_done = [&](std::size_t, const CaseOutcome&) { stop = true; };  // after the first
+  control.case_done = [&](std::size_t, const CaseRun&) { stop = true; };  // after the first
   const std::vector<CaseOutcome> outcomes = run_study(study, control);
   EXPECT_EQ(outcomes[0].status, RunStatus::completed);
   for (std::size_t i : {1u, 2u}) {
@@ -378,11 +378,18 @@ TEST(StudyRunner, AWorkerThatDiesBeforeItsFirstReportIsNoticed) {
 TEST(StudyRunner, CaseResultReadFromTheFolderEqualsTheRunsOwn) {
   ScratchFolder folder("study_case_result");
   const Study study = short_general_study(folder.path(), 1);
-  const std::vector<CaseOutcome> outcomes = run_study(study);
-  for (const CaseOutcome& outcome : outcomes) {
+  // The run's own model, extremes and report are seen by case_done only.
+  std::vector<CaseRun> seen(study.n_cases());
+  StudyControl control;
+  control.case_done = [&](std::size_t i, const CaseRun& run) { seen[i] = run; };
+  const std::vector<CaseOutcome> outcomes = run_study(study, control);
+  for (std::size_t i = 0; i < outcomes.size(); ++i) {
+    const CaseRun& outcome = seen[i];
     ASSERT_TRUE(outcome.model.has_value());
     const Model& model = *outcome.model;
-    const CaseResult& result = outcome.result;
+    const std::optional<CaseResult> read = read_case_result(study.case_folder(i));
+    ASSERT_TRUE(read.has_value());
+    const CaseResult& result = *read;
     ASSERT_EQ(result.peak_force_N.size(), model.bars.size());
     for (std::size_t b = 0; b < model.bars.size(); ++b) {
       EXPECT_EQ(result.peak_force_N[b].name, model.bars[b].name);
@@ -427,8 +434,8 @@ TEST(StudyRunner, ResumeRunsOnlyWhatIsNotCompletedForThisModel) {
   StudyControl control;
   control.resume = true;
   std::vector<std::string> ran;
-  control.case_done = [&](std::size_t i, const CaseOutcome& outcome) {
-    if (!outcome.resumed) ran.push_back(study.cases[i].name);
+  control.case_done = [&](std::size_t i, const CaseRun& run) {
+    if (!run.outcome.resumed) ran.push_back(study.cases[i].name);
   };
   const std::vector<CaseOutcome> outcomes = run_study(study, control);
   EXPECT_EQ(ran, std::vector<std::string>{"cold"});

@@ -107,10 +107,11 @@ PrestressComparison compare_prestress(double sigma_m, RoofBearings bearings) {
   EXPECT_EQ(outcomes[0].status, RunStatus::completed) << outcomes[0].message;
   const testing::CsvTable nominal_history = testing::read_csv_table(study.case_folder(0) / "history.csv");
   PrestressComparison result;
-  for (std::size_t c = 1; c < study.cases.size(); ++c) {
+  for (std::size_t c = 1; c < study.n_cases(); ++c) {
     EXPECT_EQ(outcomes[c].status, RunStatus::completed) << outcomes[c].message;
     if (outcomes[c].status != RunStatus::completed) continue;
-    std::map<std::string, double> drawn(study.cases[c].drawn.begin(), study.cases[c].drawn.end());
+    const StudyCase sampled = study.case_at(c);
+    std::map<std::string, double> drawn(sampled.drawn.begin(), sampled.drawn.end());
     Eigen::VectorXd delta_m(static_cast<Eigen::Index>(nominal.bars.size()));
     for (std::size_t i = 0; i < nominal.bars.size(); ++i) {
       delta_m[static_cast<Eigen::Index>(i)] = drawn.at("length_error_m." + nominal.bars[i].name);

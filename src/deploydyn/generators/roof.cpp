@@ -12,6 +12,8 @@
 #include <utility>
 #include <vector>
 
+#include "deploydyn/util/stop_point.hpp"
+
 namespace deploydyn {
 namespace {
 
@@ -221,6 +223,7 @@ Model make_roof(const RoofOptions& options) {
   truss0_posts.reserve(static_cast<std::size_t>(n_posts));
   for (int j = 0; j < n_trusses; ++j) {
     for (int i = 0; i < n_posts; ++i) {
+      stop_point();
       const Eigen::Vector3d base(i * s, 0.0, j * w);
       build.support(build.node(name("b", j, i), base),
                     bearing_axes(options.bearings, n_units, j, i));
@@ -235,11 +238,13 @@ Model make_roof(const RoofOptions& options) {
   const auto grid = [&](std::string_view prefix, const auto& at, bool with_chords) {
     for (int j = 0; with_chords && j < n_trusses; ++j) {
       for (int i = 0; i + 1 < n_posts; ++i) {
+        stop_point();
         build.bar(name(fmt::format("{}chord", prefix), j, i), at(j, i), at(j, i + 1), s);
       }
     }
     for (int j = 0; j + 1 < n_trusses; ++j) {
       for (int i = 0; i < n_posts; ++i) {
+        stop_point();
         build.bar(name(fmt::format("{}purlin", prefix), j, i), at(j, i), at(j + 1, i), w);
         // t_{i+1}^j–t_i^{j+1}, not t_i^j–t_{i+1}^{j+1}: heated on pinned bearings, it pushes the
         // top nodes of truss j + 1 towards −x, which raises their posts; the other way it

@@ -3,6 +3,7 @@
 #include "deploydyn/elements/element_kinds.hpp"
 #include "deploydyn/model/dof_map.hpp"
 #include "deploydyn/util/overloaded.hpp"
+#include "deploydyn/util/stop_point.hpp"
 
 #include <fmt/format.h>
 #include <yaml-cpp/yaml.h>
@@ -110,6 +111,7 @@ void emit_geometry(YAML::Emitter& out, const Model& model) {
   emit_key(out, "nodes");
   out << YAML::BeginMap;
   for (const Node& node : model.nodes) {
+    stop_point();
     emit_key(out, node.name);
     if (node.point_mass_kg == 0.0) {
       emit_vector(out, node.position_m, model.dimension);
@@ -153,6 +155,7 @@ void emit_geometry(YAML::Emitter& out, const Model& model) {
   out << YAML::BeginMap;
   YamlElementEntry entry(out);
   for (const ElementRef& element : all_elements(model)) {
+    stop_point();
     emit_key(out, element.kind->element_name(model, element.index));
     out << YAML::Flow << YAML::BeginMap;
     if (element.kind != element_kinds().front()) entry.name("type", std::string(element.kind->name()));

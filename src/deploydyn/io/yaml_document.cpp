@@ -11,6 +11,8 @@
 #include <unordered_map>
 #include <utility>
 
+#include "deploydyn/util/stop_point.hpp"
+
 namespace deploydyn::io {
 namespace {
 
@@ -134,8 +136,14 @@ class YamlDocument::Builder {
     yaml_parser_set_input_string(&parser, reinterpret_cast<const unsigned char*>(text.data()), text.size());
     bool have_root = false;
     for (bool done = false; !done;) {
+      stop_point();  // a model of 10⁶ units is 10⁷ events
       yaml_event_t event;
-      if (yaml_parser_parse(&parser, &event) == 0) throw LibyamlRefused{};
+      if (yaml_parser_parse(&parser, &event) == 0) {
+        // Refused after the first document's root node ended: text that follows it (`{a: 1} xyz`),
+        // which yaml-cpp would drop.
+        if (root_ && open_.empty()) throw second_document(mark_of(parser.problem_mark));
+        throw LibyamlRefused{};
+      }
       const std::unique_ptr<yaml_event_t, void (*)(yaml_event_t*)> event_guard(&event, yaml_event_delete);
       switch (event.type) {
         case YAML_SCALAR_EVENT: {
@@ -258,6 +266,7 @@ class YamlDocument::JsonReader {
           const char* key_at = field.key().raw() - 1;  // its opening quote
           const std::string_view key = field.unescaped_key();
           stack_.push_back(document_.add_scalar_at(key, mark_at(key_at)));
+          stop_point();
           const Id child = read(field.value(), depth + 1);
           stack_.push_back(child);
         }

@@ -13,6 +13,7 @@
 
 #include "deploydyn/io/input_error.hpp"
 #include "deploydyn/io/text_file.hpp"
+#include "deploydyn/util/stop_point.hpp"
 
 namespace deploydyn::io {
 namespace {
@@ -224,6 +225,7 @@ void YamlValue::expect_keys(std::initializer_list<std::string_view> allowed) con
 }
 
 void YamlValue::expect_keys(std::span<const std::string_view> allowed) const {
+  stop_point();  // once per node, element, ... read: a large model can be stopped
   entries();  // checks that this is a mapping of unique plain names
   for (std::size_t i = 0; i < document_->size(node_); ++i) {
     const YamlDocument::Id key_node = document_->key(node_, i);

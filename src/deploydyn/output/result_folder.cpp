@@ -67,19 +67,26 @@ std::string host_name() {
   return ::gethostname(name, sizeof name - 1) == 0 ? name : "";
 }
 
-// `status` with its "files" cut to those in `folder`: a run that stopped early never wrote
-// some (envelopes.csv after a failed write), and the status must not claim them. `indent` as
-// nlohmann::json::dump. Text that is not a JSON object is kept as it is.
+// `status` (a JSON object) with its "files" cut to those in `folder`: a run that stopped early
+// never wrote some (envelopes.csv after a failed write), and the status must not claim them.
+// `indent` as nlohmann::json::dump.
+std::string with_existing_files(const std::filesystem::path& folder, nlohmann::ordered_json status, int indent) {
+  if (status.contains("files") && status["files"].is_object()) {
+    nlohmann::ordered_json existing = nlohmann::ordered_json::object();
+    for (const auto& [role, file] : status["files"].items()) {
+      std::error_code error;
+      if (file.is_string() && std::filesystem::exists(folder / file.get<std::string>(), error)) existing[role] = file;
+    }
+    status["files"] = std::move(existing);
+  }
+  return status.dump(indent, ' ', false, nlohmann::ordered_json::error_handler_t::replace);
+}
+
+// The same for a status as text; text that is not a JSON object is kept as it is.
 std::string with_existing_files(const std::filesystem::path& folder, std::string_view status, int indent) {
   nlohmann::ordered_json j = nlohmann::ordered_json::parse(status, nullptr, /*allow_exceptions=*/false);
-  if (!j.is_object() || !j.contains("files") || !j["files"].is_object()) return std::string(status);
-  nlohmann::ordered_json existing = nlohmann::ordered_json::object();
-  for (const auto& [role, file] : j["files"].items()) {
-    std::error_code error;
-    if (file.is_string() && std::filesystem::exists(folder / file.get<std::string>(), error)) existing[role] = file;
-  }
-  j["files"] = existing;
-  return j.dump(indent, ' ', false, nlohmann::ordered_json::error_handler_t::replace);
+  if (!j.is_object()) return std::string(status);
+  return with_existing_files(folder, std::move(j), indent);
 }
 
 // create_directories says only "File exists" when the folder, or a folder above it, is a
@@ -97,6 +104,15 @@ std::string dangling_link(const std::filesystem::path& folder) {
 }
 
 }  // namespace
+
+bool folder_in_use(const std::filesystem::path& folder) {
+  const int fd = ::open((folder / kLockFileName).c_str(), O_RDONLY | O_CLOEXEC);
+  if (fd < 0) return false;  // no lock file: no run ever owned it
+  // Taken and dropped at once: a run starting into the folder retries its lock meanwhile.
+  const bool owned = ::flock(fd, LOCK_EX | LOCK_NB) != 0 && errno == EWOULDBLOCK;
+  ::close(fd);
+  return owned;
+}
 
 ResultFolder::ResultFolder(std::filesystem::path folder, std::string status_file_name)
     : folder_(std::move(folder)), status_file_name_(std::move(status_file_name)) {
@@ -160,11 +176,22 @@ void ResultFolder::start(const std::string& name_key, const std::string& name, c
 }
 
 void ResultFolder::finish(std::string_view final_status, std::string_view short_status) {
+  finish_with([&] { return with_existing_files(folder_, final_status, 2); },
+              [&] { return with_existing_files(folder_, short_status, -1); });
+}
+
+void ResultFolder::finish_json(nlohmann::ordered_json final_status, nlohmann::ordered_json short_status) {
+  finish_with([&] { return with_existing_files(folder_, std::move(final_status), 2); },
+              [&] { return with_existing_files(folder_, std::move(short_status), -1); });
+}
+
+void ResultFolder::finish_with(const std::function<std::string()>& final_text,
+                               const std::function<std::string()>& short_text) {
   try {
-    write_file_atomically(status_file(), with_existing_files(folder_, final_status, 2) + '\n');
+    write_file_atomically(status_file(), final_text() + '\n');
     return;
   } catch (const OutputError& error) {
-    if (write_short_status(with_existing_files(folder_, short_status, -1))) throw;
+    if (write_short_status(short_text())) throw;
     throw OutputError("cannot write", status_file(), 0,
                       std::string(std::strerror(error.error_number())) +
                           ", not even a short status: the folder has no final status (a running one is stale)");

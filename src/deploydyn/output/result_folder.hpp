@@ -14,6 +14,8 @@
 
 #include <cstddef>
 #include <filesystem>
+#include <functional>
+#include <nlohmann/json_fwd.hpp>
 #include <string>
 #include <string_view>
 #include <utility>
@@ -27,6 +29,10 @@ inline constexpr const char* kRunModelFileName = "model.yaml";
 // Room the running status reserves on disk (it is padded with spaces to this size): the most a
 // short final status may take when the disk is full.
 inline constexpr std::size_t kReservedStatusBytes = 4096;
+
+// Whether a live process owns `folder` (holds its lock): a run still writing it. A status file
+// that says "running" in a folder nobody owns is a killed run's.
+bool folder_in_use(const std::filesystem::path& folder);
 
 class ResultFolder {
  public:
@@ -52,8 +58,13 @@ class ResultFolder {
   // small file, and rethrows; if even that fails, throws an OutputError that says the folder has
   // no final status. Either status lists under "files" only the files that exist.
   void finish(std::string_view final_status, std::string_view short_status);
+  // The same for a status made as JSON, which is then not parsed again: a study's lists 10⁵
+  // cases, and an ordered_json object of n keys is parsed in n² key comparisons.
+  void finish_json(nlohmann::ordered_json final_status, nlohmann::ordered_json short_status);
 
  private:
+  // finish() with the status texts made when they are needed.
+  void finish_with(const std::function<std::string()>& final_text, const std::function<std::string()>& short_text);
   bool write_short_status(const std::string& text);  // false: not written
 
   std::filesystem::path folder_;

@@ -373,7 +373,7 @@ std::string float32_base64(std::span<const float> values) { return binary_base64
 
 std::string run_report_html(const fs::path& folder, const ReportOptions& options) {
   if (!fs::is_directory(folder)) throw ReportError(fmt::format("{}: not a folder", folder.string()));
-  const json summary = [&] {
+  json summary = [&] {
     const fs::path file = folder / "summary.json";
     try {
       return json::parse(read_file(file, "the run's summary"));
@@ -381,6 +381,22 @@ std::string run_report_html(const fs::path& folder, const ReportOptions& options
       throw ReportError(fmt::format("{}: not a JSON summary ({})", file.string(), error.what()));
     }
   }();
+  if (!summary.is_object()) {
+    throw ReportError(fmt::format("{}: not a run's summary (a JSON object with status, files, ...)",
+                                  (folder / "summary.json").string()));
+  }
+  // "running": a run is writing the folder (refused: its files change under the report), or it
+  // was killed (reported as such: what it wrote is whole up to a last row, left out below).
+  const bool killed = summary.value("status", json()) == "running";
+  if (killed && folder_in_use(folder)) {
+    throw ReportError(fmt::format("{}: a run is writing this folder (status running, its lock held); report it "
+                                  "when the run has ended",
+                                  folder.string()));
+  }
+  if (killed) {
+    summary["status"] = "killed";
+    summary["message"] = "the run did not finish: its process died without writing a final status";
+  }
   Model model;
   try {
     model = load_model(folder / kRunModelFileName);
@@ -392,7 +408,14 @@ std::string run_report_html(const fs::path& folder, const ReportOptions& options
     throw ReportError(error.what());
   }
   std::string history_name = model.output.history_file;
-  if (summary.contains("files") && summary["files"].contains("history")) history_name = summary["files"]["history"];
+  if (summary.contains("files") && summary["files"].contains("history")) {
+    const json& listed = summary["files"]["history"];
+    if (!listed.is_string() || fs::path(listed.get<std::string>()).has_parent_path()) {
+      throw ReportError(fmt::format("{}: files.history must name a file of the folder, got {}",
+                                    (folder / "summary.json").string(), listed.dump().substr(0, 60)));
+    }
+    history_name = listed.get<std::string>();
+  }
   const History history = read_history(folder / history_name);
   if (history.columns.empty() || history.columns[0] != "t") {
     throw ReportError(fmt::format("{}: not a time history (its first column is not t)", (folder / history_name).string()));

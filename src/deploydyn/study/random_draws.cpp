@@ -34,6 +34,7 @@ double RandomDraws::uniform(std::uint64_t stream, long case_index, long variable
 }
 
 long RandomDraws::stratum(long case_index, long variable) const {
+  const std::lock_guard lock(permutations_mutex_);
   if (permutations_.size() <= static_cast<std::size_t>(variable)) {
     permutations_.resize(static_cast<std::size_t>(variable) + 1);
   }

@@ -10,6 +10,7 @@
 // permutation of that variable, each at a uniform point inside its stratum.
 
 #include <cstdint>
+#include <mutex>
 #include <vector>
 
 namespace deploydyn {
@@ -33,12 +34,14 @@ class RandomDraws {
   // Uniform in (0, 1) from the counters alone.
   double uniform(std::uint64_t stream, long case_index, long variable) const;
   // The stratum of case_index for `variable`: a permutation of 0..n−1 drawn from the seed and
-  // the variable (cached: a study asks for the same variables in every case).
+  // the variable (cached: a study asks for the same variables in every case; the cache is
+  // shared by the threads that draw cases).
   long stratum(long case_index, long variable) const;
 
   SamplingMethod method_;
   std::uint64_t seed_;
   long n_cases_;
+  mutable std::mutex permutations_mutex_;
   mutable std::vector<std::vector<long>> permutations_;  // by variable
 };
 

@@ -12,22 +12,6 @@
 namespace deploydyn {
 namespace {
 
-// A member that can carry a length error, a temperature or a material of its own.
-struct Member {
-  std::string name;
-  int node_a = 0, node_b = 0;
-  int material = 0;
-  std::optional<double> reference_length_m;  // bars and beams
-};
-
-std::vector<Member> members(const Model& model) {
-  std::vector<Member> list;
-  for (const auto& bar : model.bars) list.push_back({bar.name, bar.node_a, bar.node_b, bar.material, bar.reference_length_m});
-  for (const auto& beam : model.beams) list.push_back({beam.name, beam.node_a, beam.node_b, beam.material, beam.reference_length_m});
-  for (const auto& cable : model.cables) list.push_back({cable.name, cable.node_a, cable.node_b, cable.material, std::nullopt});
-  return list;
-}
-
 bool matches(const std::vector<std::string>& patterns, const std::string& name) {
   return std::any_of(patterns.begin(), patterns.end(), [&](const std::string& pattern) {
     return fnmatch(pattern.c_str(), name.c_str(), 0) == 0;
@@ -71,16 +55,27 @@ double Distribution::standard_deviation() const {
   return 0.0;
 }
 
-std::vector<DrawnCase> draw_cases(const Sampling& sampling, const Model& nominal) {
-  const std::vector<Member> all = members(nominal);
-  // Which group sets each member's length error: the first that names it.
-  std::vector<const LengthErrorGroup*> length_group(all.size(), nullptr);
-  for (const LengthErrorGroup& group : sampling.length_errors) {
+SampledCases::SampledCases(const Sampling& sampling, const Model& nominal)
+    : sampling_(sampling), materials_(nominal.materials), draws_(sampling.method, sampling.seed, sampling.n_cases) {
+  struct Ends {
+    int node_a, node_b;
+  };
+  std::vector<Ends> ends;
+  const auto add = [&](const auto& element, std::optional<double> reference_length_m) {
+    members_.push_back({element.name, element.material, reference_length_m, std::nullopt, 0.0, {}});
+    ends.push_back({element.node_a, element.node_b});
+  };
+  for (const auto& bar : nominal.bars) add(bar, bar.reference_length_m);
+  for (const auto& beam : nominal.beams) add(beam, beam.reference_length_m);
+  for (const auto& cable : nominal.cables) add(cable, std::nullopt);
+
+  for (std::size_t g = 0; g < sampling_.length_errors.size(); ++g) {
+    const LengthErrorGroup& group = sampling_.length_errors[g];
     bool any = false;
-    for (std::size_t m = 0; m < all.size(); ++m) {
-      if (!all[m].reference_length_m || !matches(group.elements, all[m].name)) continue;
+    for (Member& member : members_) {
+      if (!member.reference_length_m || !matches(group.elements, member.name)) continue;
       any = true;
-      if (length_group[m] == nullptr) length_group[m] = &group;
+      if (!member.length_group) member.length_group = g;
     }
     if (!any) {
       throw std::invalid_argument(fmt::format("length_error: elements {} match no bar or beam of the model",
@@ -88,86 +83,85 @@ std::vector<DrawnCase> draw_cases(const Sampling& sampling, const Model& nominal
     }
   }
   // The field's coordinate s along its direction, and its range over the members.
-  std::vector<double> s(all.size(), 0.0);
-  double s_min = std::numeric_limits<double>::infinity(), s_max = -s_min;
-  if (sampling.temperature) {
-    const Eigen::Vector3d d = sampling.temperature->direction.normalized();
-    for (std::size_t m = 0; m < all.size(); ++m) {
-      const Eigen::Vector3d midpoint =
-          0.5 * (nominal.nodes[all[m].node_a].position_m + nominal.nodes[all[m].node_b].position_m);
-      s[m] = d.dot(midpoint);
-      s_min = std::min(s_min, s[m]);
-      s_max = std::max(s_max, s[m]);
+  if (sampling_.temperature && !members_.empty()) {
+    const Eigen::Vector3d d = sampling_.temperature->direction.normalized();
+    std::vector<double> s(members_.size());
+    for (std::size_t m = 0; m < members_.size(); ++m) {
+      s[m] = d.dot(0.5 * (nominal.nodes[ends[m].node_a].position_m + nominal.nodes[ends[m].node_b].position_m));
+    }
+    const auto [s_min, s_max] = std::minmax_element(s.begin(), s.end());
+    for (std::size_t m = 0; m < members_.size(); ++m) {
+      members_[m].side = *s_max > *s_min ? (s[m] - *s_min) / (*s_max - *s_min) - 0.5 : 0.0;
     }
   }
-  const bool scatter_materials = sampling.E_cv > 0.0 || sampling.alpha_cv > 0.0;
+  const bool scatter_materials = sampling_.E_cv > 0.0 || sampling_.alpha_cv > 0.0;
+  long long n_values = 0;  // overrides per case
   std::set<std::string> material_names;
   for (const Material& material : nominal.materials) material_names.insert(material.name);
-  std::vector<std::string> own_material(all.size());
-  if (scatter_materials) {
-    for (std::size_t m = 0; m < all.size(); ++m) {
-      own_material[m] = fmt::format("{}_{}", nominal.materials[all[m].material].name, all[m].name);
-      if (material_names.count(own_material[m]) > 0) {
-        throw std::invalid_argument(fmt::format(
-            "material scatter: member {} would get material '{}', a name the model already uses",
-            all[m].name, own_material[m]));
-      }
-    }
-  }
-
-  const RandomDraws draws(sampling.method, sampling.seed, sampling.n_cases);
-  const int digits = static_cast<int>(std::to_string(sampling.n_cases).size());
-  std::vector<DrawnCase> cases;
-  for (long k = 0; k < sampling.n_cases; ++k) {
-    DrawnCase drawn;
-    drawn.name = fmt::format("sample_{:0{}}", k + 1, digits);
-    const auto set = [&](const std::string& path, const std::string& value) { drawn.overrides.emplace_back(path, value); };
-    double uniform_C = 0.0, gradient_C = 0.0;
-    if (sampling.temperature) {
-      uniform_C = sampling.temperature->uniform_C.quantile(draws.probability(k, kUniformTemperature));
-      gradient_C = sampling.temperature->gradient_C.quantile(draws.probability(k, kGradient));
-      drawn.drawn.emplace_back("dT_C", uniform_C);
-      drawn.drawn.emplace_back("gradient_C", gradient_C);
-    }
-    for (std::size_t m = 0; m < all.size(); ++m) {
-      const Member& member = all[m];
-      const std::string element = "elements." + member.name;
-      if (length_group[m] != nullptr) {
-        const double error_m = length_group[m]->error_m.quantile(draws.probability(k, member_variable(m, 0)));
-        set(element + ".length", number(*member.reference_length_m + error_m));
-        drawn.drawn.emplace_back("length_error_m." + member.name, error_m);
-      }
-      if (sampling.temperature) {
-        const double side = s_max > s_min ? (s[m] - s_min) / (s_max - s_min) - 0.5 : 0.0;
-        const double scatter_C = sampling.temperature->scatter_C > 0.0
-                                     ? sampling.temperature->scatter_C * draws.standard_normal(k, member_variable(m, 1))
-                                     : 0.0;
-        const double dT_C = uniform_C + gradient_C * side + scatter_C;
-        set(element + ".dT", number(dT_C));
-        drawn.drawn.emplace_back("dT_C." + member.name, dT_C);
-      }
-      if (scatter_materials) {
-        const Material& material = nominal.materials[member.material];
-        const double e_factor = 1.0 + sampling.E_cv * draws.standard_normal(k, member_variable(m, 2));
-        const double alpha_factor = 1.0 + sampling.alpha_cv * draws.standard_normal(k, member_variable(m, 3));
-        std::string value = fmt::format("{{E: {}, alpha: {}", number(material.youngs_modulus_Pa * e_factor),
-                                        number(material.expansion_per_C * alpha_factor));
-        if (material.density_kg_m3) value += fmt::format(", density: {}", number(*material.density_kg_m3));
-        set("materials." + own_material[m], value + "}");
-        set(element + ".material", own_material[m]);
-        drawn.drawn.emplace_back("E_factor." + member.name, e_factor);
-        drawn.drawn.emplace_back("alpha_factor." + member.name, alpha_factor);
-      }
-    }
-    if (const long long n_values = static_cast<long long>(drawn.overrides.size()) * sampling.n_cases;
-        k == 0 && n_values > kMaxDrawnValues) {
+  for (Member& member : members_) {
+    n_values += (member.length_group ? 1 : 0) + (sampling_.temperature ? 1 : 0) + (scatter_materials ? 2 : 0);
+    if (!scatter_materials) continue;
+    member.own_material = fmt::format("{}_{}", nominal.materials[member.material].name, member.name);
+    if (material_names.count(member.own_material) > 0) {
       throw std::invalid_argument(fmt::format(
-          "cases: {} cases of {} drawn values each are {} values; at most {} fit in memory: draw fewer cases",
-          sampling.n_cases, drawn.overrides.size(), n_values, kMaxDrawnValues));
+          "material scatter: member {} would get material '{}', a name the model already uses", member.name,
+          member.own_material));
     }
-    cases.push_back(std::move(drawn));
   }
-  return cases;
+  if (n_values * sampling_.n_cases > kMaxDrawnValues) {
+    throw std::invalid_argument(fmt::format(
+        "cases: {} cases of {} drawn values each are {} values; at most {} are allowed: draw fewer cases",
+        sampling_.n_cases, n_values, n_values * sampling_.n_cases, kMaxDrawnValues));
+  }
+}
+
+std::string SampledCases::name(long k) const {
+  const int digits = static_cast<int>(std::to_string(sampling_.n_cases).size());
+  return fmt::format("sample_{:0{}}", k + 1, digits);
+}
+
+DrawnCase SampledCases::draw(long k) const {
+  DrawnCase drawn;
+  drawn.name = name(k);
+  const auto set = [&](const std::string& path, const std::string& value) { drawn.overrides.emplace_back(path, value); };
+  double uniform_C = 0.0, gradient_C = 0.0;
+  const std::optional<TemperatureField>& temperature = sampling_.temperature;
+  if (temperature) {
+    uniform_C = temperature->uniform_C.quantile(draws_.probability(k, kUniformTemperature));
+    gradient_C = temperature->gradient_C.quantile(draws_.probability(k, kGradient));
+    drawn.drawn.emplace_back("dT_C", uniform_C);
+    drawn.drawn.emplace_back("gradient_C", gradient_C);
+  }
+  for (std::size_t m = 0; m < members_.size(); ++m) {
+    const Member& member = members_[m];
+    const std::string element = "elements." + member.name;
+    if (member.length_group) {
+      const Distribution& error = sampling_.length_errors[*member.length_group].error_m;
+      const double error_m = error.quantile(draws_.probability(k, member_variable(m, 0)));
+      set(element + ".length", number(*member.reference_length_m + error_m));
+      drawn.drawn.emplace_back("length_error_m." + member.name, error_m);
+    }
+    if (temperature) {
+      const double scatter_C =
+          temperature->scatter_C > 0.0 ? temperature->scatter_C * draws_.standard_normal(k, member_variable(m, 1)) : 0.0;
+      const double dT_C = uniform_C + gradient_C * member.side + scatter_C;
+      set(element + ".dT", number(dT_C));
+      drawn.drawn.emplace_back("dT_C." + member.name, dT_C);
+    }
+    if (!member.own_material.empty()) {
+      const Material& material = materials_[member.material];
+      const double e_factor = 1.0 + sampling_.E_cv * draws_.standard_normal(k, member_variable(m, 2));
+      const double alpha_factor = 1.0 + sampling_.alpha_cv * draws_.standard_normal(k, member_variable(m, 3));
+      std::string value = fmt::format("{{E: {}, alpha: {}", number(material.youngs_modulus_Pa * e_factor),
+                                      number(material.expansion_per_C * alpha_factor));
+      if (material.density_kg_m3) value += fmt::format(", density: {}", number(*material.density_kg_m3));
+      set("materials." + member.own_material, value + "}");
+      set(element + ".material", member.own_material);
+      drawn.drawn.emplace_back("E_factor." + member.name, e_factor);
+      drawn.drawn.emplace_back("alpha_factor." + member.name, alpha_factor);
+    }
+  }
+  return drawn;
 }
 
 }  // namespace deploydyn

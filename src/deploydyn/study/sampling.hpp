@@ -16,6 +16,7 @@
 
 #include <Eigen/Core>
 
+#include <cstddef>
 #include <cstdint>
 #include <optional>
 #include <string>
@@ -58,9 +59,11 @@ struct SamplingLimits {
   std::optional<double> shape_error_m;  // the final shape's largest distance from nominal's
 };
 
-// Limits of a sampled study (docs/model-format.md, "Input limits"). Every case's draws are held
-// in memory before the first case runs, about 150 bytes a drawn value: 10⁵ cases put a
-// probability within about ±0.3 % (1/√n), and 10⁷ drawn values take about 1.5 GB.
+// Limits of a sampled study (docs/model-format.md, "Input limits"). Cases are drawn one at a
+// time as they run (SampledCases), but what a study keeps of each case until its tables are
+// written grows with their number: 10⁵ cases put a probability within about ±0.3 % (1/√n).
+// Drawn values (overrides of all cases) bound samples.csv, made whole before it is written
+// (about 20 bytes a value), and the Latin hypercube's strata orders (8 bytes a case and variable).
 inline constexpr long kMaxSampledCases = 100'000;
 inline constexpr long long kMaxDrawnValues = 10'000'000;
 
@@ -83,10 +86,35 @@ struct DrawnCase {
   std::vector<std::pair<std::string, double>> drawn;
 };
 
-// The drawn cases of `sampling` for the model `nominal` (not nominal itself). Throws
-// std::invalid_argument when a length-error group matches no bar or beam, a member's copy of
-// its material would take a name the model already uses, or the cases would draw more than
-// kMaxDrawnValues values (checked on the first case, before the others are drawn).
-std::vector<DrawnCase> draw_cases(const Sampling& sampling, const Model& nominal);
+// The drawn cases of `sampling` for the model `nominal` (not nominal itself), each drawn when it
+// is asked for, so that a study holds no case before it runs. draw() may be called from any
+// thread, in any order: a case is the same whenever and wherever it is drawn.
+class SampledCases {
+ public:
+  // Throws std::invalid_argument when a length-error group matches no bar or beam, a member's
+  // copy of its material would take a name the model already uses, or the cases would draw
+  // more than kMaxDrawnValues values.
+  SampledCases(const Sampling& sampling, const Model& nominal);
+
+  long n_cases() const { return sampling_.n_cases; }
+  std::string name(long k) const;  // sample_<k + 1>, zero-padded to the width of n_cases
+  DrawnCase draw(long k) const;    // 0 ≤ k < n_cases
+
+ private:
+  // A member that can carry a length error, a temperature or a material of its own.
+  struct Member {
+    std::string name;
+    int material = 0;
+    std::optional<double> reference_length_m;      // bars and beams
+    std::optional<std::size_t> length_group;  // the first of sampling_.length_errors that names it
+    double side = 0.0;                         // (s − s_min)/(s_max − s_min) − ½ of the field
+    std::string own_material;                  // with material scatter
+  };
+
+  Sampling sampling_;
+  std::vector<Material> materials_;  // the nominal model's
+  std::vector<Member> members_;
+  RandomDraws draws_;
+};
 
 }  // namespace deploydyn

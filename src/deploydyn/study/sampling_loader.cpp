@@ -97,7 +97,7 @@ Sampling read_sampling(const YamlValue& section) {
   }
   sampling.n_cases = section.at("cases").integer(1);
   if (sampling.n_cases > kMaxSampledCases) {
-    section.at("cases").fail(fmt::format("must be at most {}, got {}: the draws of every case are held in memory",
+    section.at("cases").fail(fmt::format("must be at most {}, got {}: a study keeps every case's results for its tables",
                                          kMaxSampledCases, sampling.n_cases));
   }
   if (const auto seed = section.find("seed")) sampling.seed = static_cast<std::uint64_t>(seed->integer(0));

@@ -57,15 +57,21 @@ double percentile(std::vector<double> values, double p) {
   return values[below] + (position - static_cast<double>(below)) * (values[above] - values[below]);
 }
 
-std::string samples_csv(const Study& study) {
+std::string samples_csv(const Study& study, const std::vector<CaseResult>& results) {
+  // The columns: every drawn case draws the same values, so the listed cases and the first
+  // drawn one name them all.
   std::vector<std::string> names;
-  for (const StudyCase& c : study.cases) {
+  std::vector<StudyCase> naming = study.cases;
+  if (study.n_cases() > study.cases.size()) naming.push_back(study.case_at(study.cases.size()));
+  for (const StudyCase& c : naming) {
     for (const auto& [name, value] : c.drawn) {
       if (std::find(names.begin(), names.end(), name) == names.end()) names.push_back(name);
     }
   }
   std::string text = fmt::format("case,{}\n", fmt::join(names, ","));
-  for (const StudyCase& c : study.cases) {
+  for (std::size_t i = 0; i < study.n_cases(); ++i) {
+    if (!results.at(i).ran && results[i].status == RunStatus::interrupted) continue;  // not started
+    const StudyCase c = study.case_at(i);
     if (c.drawn.empty()) continue;
     std::map<std::string, double> values(c.drawn.begin(), c.drawn.end());
     text += c.name;
@@ -93,7 +99,7 @@ std::string statistics_csv(const Study& study, const std::vector<CaseResult>& re
   };
   const CaseResult& nominal = results.at(study.reference);
   for (std::size_t i = 0; i < results.size(); ++i) {
-    if (study.cases[i].drawn.empty()) continue;  // nominal
+    if (i == study.reference) continue;  // nominal
     ++n_drawn;
     const CaseResult& r = results[i];
     if (r.status != RunStatus::completed) {

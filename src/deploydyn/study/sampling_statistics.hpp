@@ -1,8 +1,10 @@
 #pragma once
 // What a sampled study (study/sampling.hpp) writes besides study.csv:
 //
-// samples.csv: one row per drawn case (nominal has none): case, then every drawn value by name
-//   (dT_C, gradient_C, length_error_m.<m>, dT_C.<m>, E_factor.<m>, alpha_factor.<m>).
+// samples.csv: one row per drawn case (nominal has none) that started: case, then every drawn
+//   value by name (dT_C, gradient_C, length_error_m.<m>, dT_C.<m>, E_factor.<m>,
+//   alpha_factor.<m>). The cases a stopped study did not start are left out: they are drawn
+//   again when it resumes, and drawing 10⁵ of them would hold up the stop for seconds.
 //
 // statistics.csv: the distribution over the drawn cases of the results that matter, one row per
 //   quantity and item:
@@ -27,7 +29,7 @@ namespace deploydyn {
 inline constexpr const char* kSamplesFileName = "samples.csv";
 inline constexpr const char* kStatisticsFileName = "statistics.csv";
 
-std::string samples_csv(const Study& study);
+std::string samples_csv(const Study& study, const std::vector<CaseResult>& results);
 std::string statistics_csv(const Study& study, const std::vector<CaseResult>& results);
 
 // The p-th percentile (p in [0, 100]) of `values`, linear between order statistics; NaN if empty.

@@ -10,13 +10,31 @@ constexpr std::size_t kCasesPerCore = 4;
 
 }  // namespace
 
+std::size_t Study::n_cases() const {
+  return cases.size() + (drawn ? static_cast<std::size_t>(drawn->n_cases()) : 0);
+}
+
+StudyCase Study::case_at(std::size_t index) const {
+  if (index < cases.size() || !drawn) return cases.at(index);
+  DrawnCase d = drawn->draw(static_cast<long>(index - cases.size()));
+  StudyCase sampled{std::move(d.name), {}, std::move(d.drawn)};
+  sampled.overrides.reserve(d.overrides.size());
+  for (auto& [path, value] : d.overrides) sampled.overrides.push_back({std::move(path), std::move(value)});
+  return sampled;
+}
+
+std::string Study::case_name(std::size_t index) const {
+  if (index < cases.size() || !drawn) return cases.at(index).name;
+  return drawn->name(static_cast<long>(index - cases.size()));
+}
+
 Model Study::case_model(std::size_t index) const {
-  const std::vector<Override>& overrides = cases.at(index).overrides;
+  const std::vector<Override> overrides = case_at(index).overrides;
   return model_source ? model_source->build(overrides) : load_model(model_file, overrides);
 }
 
 std::filesystem::path Study::case_folder(std::size_t index) const {
-  return out_folder / cases.at(index).name;
+  return out_folder / case_name(index);
 }
 
 std::filesystem::path Study::table_file() const { return out_folder / kStudyTableFileName; }

@@ -34,17 +34,24 @@ struct StudyCase {
 
 struct Study {
   std::filesystem::path model_file;
-  std::vector<StudyCase> cases;  // at least one; names unique
+  // The listed cases (at least one; names unique). A sampled study lists "nominal" only and
+  // draws the others as they are asked for (`drawn`): use n_cases() and case_at().
+  std::vector<StudyCase> cases;
   std::filesystem::path out_folder;
   bool out_named = false;  // the study file gave `out`; else out_folder is results/<study name>
   int jobs = 0;               // cases run at once; 0: all (resolve_jobs)
   std::size_t reference = 0;  // index into cases: final shapes are compared with this case's
-  // A sampled study (cases drawn, not listed): cases[0] is "nominal", the others drawn.
+  // A sampled study (cases drawn, not listed): cases[0] is "nominal", then those of `drawn`.
   std::optional<Sampling> sampling;
+  std::shared_ptr<const SampledCases> drawn;
 
   // model_file parsed once (study/study_loader.cpp); without it the file is read per case.
   std::shared_ptr<const ModelSource> model_source;
 
+  std::size_t n_cases() const;
+  // Case `index` (0 ≤ index < n_cases()), drawn if it is a sampled one.
+  StudyCase case_at(std::size_t index) const;
+  std::string case_name(std::size_t index) const;  // without drawing it
   // Case `index`'s model: the model with the case's overrides.
   Model case_model(std::size_t index) const;
   std::filesystem::path case_folder(std::size_t index) const;

@@ -126,24 +126,18 @@ Study read_study(const YamlValue& root, const std::string& source_name,
     if (root.find("reference")) root.at("reference").fail("a sampled study's reference is its nominal case");
     study.sampling = read_sampling(*sampling);
     study.model_source = read_model_source(study.model_file, model_value);
-    const Model nominal = study.model_source->build();
-    std::vector<DrawnCase> drawn;
     try {
-      drawn = draw_cases(*study.sampling, nominal);
+      study.drawn = std::make_shared<const SampledCases>(*study.sampling, study.model_source->build());
     } catch (const std::invalid_argument& e) {
       sampling->fail(e.what());
     }
     study.cases.push_back({"nominal", {}, {}});
-    for (DrawnCase& c : drawn) {
-      StudyCase sampled{std::move(c.name), {}, std::move(c.drawn)};
-      for (auto& [path, value] : c.overrides) sampled.overrides.push_back({std::move(path), std::move(value)});
-      study.cases.push_back(std::move(sampled));
-    }
     // Every drawn case sets the same paths the same way: the first one stands for all.
+    const StudyCase first = study.case_at(1);
     try {
-      study.model_source->build(study.cases[1].overrides);
+      study.model_source->build(first.overrides);
     } catch (const InputError& e) {
-      sampling->fail(fmt::format("the model with {}'s drawn values: {}", study.cases[1].name, e.what()));
+      sampling->fail(fmt::format("the model with {}'s drawn values: {}", first.name, e.what()));
     }
     return study;
   }

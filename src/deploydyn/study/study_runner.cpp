@@ -29,24 +29,28 @@ namespace deploydyn {
 namespace {
 
 constexpr const char* kNotStarted = "not started: the study was interrupted";
+constexpr const char* kTablesNotWritten =
+    "interrupted while study.csv was made from the case folders: the tables were not written; run the study "
+    "again with --resume to write them";
 
-CaseOutcome run_case(const Study& study, std::size_t index, const std::atomic<bool>* stop) {
-  CaseOutcome outcome;
+CaseRun run_case(const Study& study, std::size_t index, const std::atomic<bool>* stop) {
+  CaseRun run;
+  CaseOutcome& outcome = run.outcome;
   if (stop != nullptr && stop->load()) {
     outcome.status = RunStatus::interrupted;
     outcome.message = kNotStarted;
-    return outcome;
+    return run;
   }
   // Everything a case can throw is that case's failure; nothing may leave a worker thread.
   try {
     Model model = study.case_model(index);
     RunControl control;
     control.stop = stop;
-    outcome.report = run_to_folder(model, study.case_folder(index), control, outcome.envelope);
+    run.report = run_to_folder(model, study.case_folder(index), control, run.envelope);
     outcome.ran = true;
-    outcome.status = outcome.report.status;
-    outcome.message = outcome.report.message;
-    outcome.model = std::move(model);
+    outcome.status = run.report.status;
+    outcome.message = run.report.message;
+    run.model = std::move(model);
   } catch (const std::exception& e) {
     outcome.status = RunStatus::failed;
     outcome.message = e.what();
@@ -54,7 +58,7 @@ CaseOutcome run_case(const Study& study, std::size_t index, const std::atomic<bo
     outcome.status = RunStatus::failed;
     outcome.message = "unknown error";
   }
-  return outcome;
+  return run;
 }
 
 std::string host_name() {
@@ -99,12 +103,15 @@ nlohmann::ordered_json study_files(const Study& study) {
   return files;
 }
 
-// study.json at the end: the study's status and each case's; "failed" with `table_error` when
-// study.csv could not be written. `short_form`: the status only, for a disk too full for more.
-std::string study_status_json(const Study& study, const std::vector<CaseOutcome>& outcomes,
-                              const std::string& table_error, bool short_form) {
+// study.json at the end: the study's status and each case's. With `message` (why the tables
+// were not written) "failed", or "interrupted" when `interrupted`. `short_form`: the status
+// only, for a disk too full for more.
+nlohmann::ordered_json study_status_json(const Study& study, const std::vector<CaseOutcome>& outcomes,
+                                         const std::string& message, bool interrupted, bool short_form) {
   bool all_completed = true, any_interrupted = false;
   nlohmann::ordered_json cases = nlohmann::ordered_json::object();
+  auto& entries = cases.get_ref<nlohmann::ordered_json::object_t&>();
+  if (!short_form) entries.reserve(outcomes.size());
   for (std::size_t i = 0; i < outcomes.size(); ++i) {
     all_completed = all_completed && outcomes[i].status == RunStatus::completed;
     any_interrupted = any_interrupted || outcomes[i].status == RunStatus::interrupted;
@@ -114,18 +121,21 @@ std::string study_status_json(const Study& study, const std::vector<CaseOutcome>
                                     {"folder", study.case_folder(i).filename().string()}};
     if (outcomes[i].resumed) entry["resumed"] = true;
     if (outcomes[i].process > 0) entry["process"] = outcomes[i].process;
-    cases[study.cases[i].name] = std::move(entry);
+    // Case names are unique: appended, not looked up (an ordered_json key is found by a linear
+    // search, and 10⁵ cases took 47 s).
+    entries.emplace_back(study.case_name(i), std::move(entry));
   }
   nlohmann::ordered_json j;
   j["study"] = study.model_file.string();
-  j["status"] = !table_error.empty() ? "failed"
-                : all_completed        ? "completed"
-                : any_interrupted      ? "interrupted"
-                                       : "failed";
-  if (!table_error.empty()) j["message"] = table_error;
+  j["status"] = !message.empty() && !interrupted ? "failed"
+                : interrupted                    ? "interrupted"
+                : all_completed                  ? "completed"
+                : any_interrupted                ? "interrupted"
+                                                 : "failed";
+  if (!message.empty()) j["message"] = message;
   j["cases"] = std::move(cases);
-  j["files"] = study_files(study);
-  return j.dump(short_form ? -1 : 2, ' ', false, nlohmann::ordered_json::error_handler_t::replace);
+  j["files"] = study_files(study);  // ResultFolder::finish keeps those that exist
+  return j;
 }
 
 // Process 0 of a distributed study: answers the workers until each has been told to stop,
@@ -191,7 +201,7 @@ void coordinate(StudyChannel& channel, Take take, Done done, std::vector<CaseOut
 }  // namespace
 
 std::vector<CaseOutcome> run_study(const Study& study, const StudyControl& control) {
-  const std::size_t n_cases = study.cases.size();
+  const std::size_t n_cases = study.n_cases();
   ResultFolder folder(study.out_folder, kStudyStatusFileName);
   ResultFolder::Files files;
   const nlohmann::ordered_json listed = study_files(study);
@@ -199,8 +209,10 @@ std::vector<CaseOutcome> run_study(const Study& study, const StudyControl& contr
   folder.start("study", study.model_file.string(), files);
   std::vector<CaseOutcome> outcomes(n_cases);
   std::vector<std::size_t> to_run;
+  const auto stopped = [&] { return control.stop != nullptr && control.stop->load(); };
   for (std::size_t i = 0; i < n_cases; ++i) {
-    if (control.resume && completed_earlier(study, i)) {
+    // Looking through 10⁵ case folders takes a while: a stop leaves the rest not started.
+    if (control.resume && !stopped() && completed_earlier(study, i)) {
       outcomes[i].status = RunStatus::completed;
       outcomes[i].ran = outcomes[i].resumed = true;
       outcomes[i].message = "completed by an earlier run of the study";
@@ -213,16 +225,17 @@ std::vector<CaseOutcome> run_study(const Study& study, const StudyControl& contr
 
   std::atomic<std::size_t> next{0};
   const auto take = [&]() -> long {
-    if (control.stop != nullptr && control.stop->load()) return -1;
+    if (stopped()) return -1;
     const std::size_t k = next++;
     return k < to_run.size() ? static_cast<long>(to_run[k]) : -1;
   };
   std::mutex report_mutex;
-  const auto done = [&](std::size_t i) {
+  // `run`: the case's run in this process; else only its outcome is known.
+  const auto done = [&](std::size_t i, const CaseRun* run = nullptr) {
     if (!control.case_done) return;
     const std::lock_guard lock(report_mutex);
     try {
-      control.case_done(i, outcomes[i]);
+      control.case_done(i, run != nullptr ? *run : CaseRun{outcomes[i], {}, {}, {}});
     } catch (...) {
       // A report that cannot be shown (e.g. stderr closed) must not end the study.
     }
@@ -237,8 +250,9 @@ std::vector<CaseOutcome> run_study(const Study& study, const StudyControl& contr
   const auto work = [&] {
     const RunsOnOneCore one_core(shared_cores);  // the cases share the cores, not one case
     for (long i = take(); i >= 0; i = take()) {
-      outcomes[static_cast<std::size_t>(i)] = run_case(study, static_cast<std::size_t>(i), control.stop);
-      done(static_cast<std::size_t>(i));
+      const CaseRun run = run_case(study, static_cast<std::size_t>(i), control.stop);
+      outcomes[static_cast<std::size_t>(i)] = run.outcome;
+      done(static_cast<std::size_t>(i), &run);
     }
   };
   {
@@ -257,27 +271,36 @@ std::vector<CaseOutcome> run_study(const Study& study, const StudyControl& contr
     }
   }  // joins the helpers
 
+  // study.csv from what the case folders hold. Reading 10⁵ of them takes a while: a stop then
+  // leaves the tables unwritten, and says so. (After a stop while the cases ran, only the cases
+  // that ran are read, each far quicker than it ran: the tables are written.)
+  const bool stopped_in_cases = stopped();
   std::vector<CaseResult> results;
+  results.reserve(n_cases);
   std::optional<OutputError> table_error;
+  bool tables_stopped = false;
   try {
-    for (CaseOutcome& outcome : outcomes) {
-      const std::size_t i = results.size();
+    for (std::size_t i = 0; i < n_cases; ++i) {
+      tables_stopped = !stopped_in_cases && stopped();
+      if (tables_stopped) break;
+      const CaseOutcome& outcome = outcomes[i];
       std::optional<CaseResult> from_folder;
       if (outcome.ran) from_folder = read_case_result(study.case_folder(i));
-      outcome.result = from_folder ? *from_folder : CaseResult::not_run(outcome.status, outcome.message);
-      results.push_back(outcome.result);
+      results.push_back(from_folder ? std::move(*from_folder) : CaseResult::not_run(outcome.status, outcome.message));
     }
-    write_study_table(study.table_file(), study, results);
-    if (study.sampling) {
-      write_file_atomically(study.out_folder / kSamplesFileName, samples_csv(study));
-      write_file_atomically(study.out_folder / kStatisticsFileName, statistics_csv(study, results));
+    if (!tables_stopped) {
+      write_study_table(study.table_file(), study, results);
+      if (study.sampling) {
+        write_file_atomically(study.out_folder / kSamplesFileName, samples_csv(study, results));
+        write_file_atomically(study.out_folder / kStatisticsFileName, statistics_csv(study, results));
+      }
     }
   } catch (const OutputError& error) {
     table_error = error;
   }
-  const std::string why = table_error ? table_error->what() : "";
-  folder.finish(study_status_json(study, outcomes, why, false),
-                study_status_json(study, outcomes, why.substr(0, 2000), true));
+  const std::string why = table_error ? table_error->what() : tables_stopped ? kTablesNotWritten : "";
+  folder.finish_json(study_status_json(study, outcomes, why, tables_stopped, false),
+                     study_status_json(study, outcomes, why.substr(0, 2000), tables_stopped, true));
   if (table_error) throw *table_error;
   return outcomes;
 }
@@ -290,15 +313,16 @@ void run_study_worker(const Study& study, const StudyControl& control) {
   report.host = host_name();
   for (long i = channel.report_and_wait(report); i >= 0; i = channel.report_and_wait(report)) {
     const auto index = static_cast<std::size_t>(i);
-    CaseOutcome outcome = run_case(study, index, control.stop);
-    outcome.process = report.rank;
+    CaseRun run = run_case(study, index, control.stop);
+    const CaseOutcome& outcome = run.outcome;
+    run.outcome.process = report.rank;
     report.finished_case = i;
     report.status = outcome.status;
     report.ran = outcome.ran;
     report.message = outcome.message;
     if (!control.case_done) continue;
     try {
-      control.case_done(index, outcome);
+      control.case_done(index, run);
     } catch (...) {
       // as in run_study: a report that cannot be shown does not end the study
     }

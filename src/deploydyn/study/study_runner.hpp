@@ -33,6 +33,7 @@ namespace deploydyn {
 
 // How one case ended. A case that could not run (its model did not load or build, or the study
 // was stopped before its turn) has no model and no records.
+// A few dozen bytes: run_study keeps one for each of up to 10⁵ cases.
 struct CaseOutcome {
   RunStatus status = RunStatus::failed;
   std::string message;         // the run's one line, or why it could not run
@@ -40,19 +41,24 @@ struct CaseOutcome {
   bool resumed = false;        // skipped: an earlier run of the study completed it
   int process = 0;             // the study process that ran it (0 without MPI)
   bool lost = false;           // its process died while running it
-  // In this process only (not for a case run by another process, or resumed):
+};
+
+// What StudyControl::case_done is told of a case that ended: its outcome, and for a case run in
+// this process (not by another process, nor resumed) what the run had in memory, which the
+// study does not keep.
+struct CaseRun {
+  CaseOutcome outcome;
   std::optional<Model> model;  // as run, overrides applied
   RunReport report;
   Envelope envelope;  // extremes and the last record, as summary.json has them
-  // What study.csv holds of it, read from its folder after it ended.
-  CaseResult result;
 };
 
 struct StudyControl {
   // Called as each case ends, from the thread that ran it; calls never overlap. May be empty.
-  std::function<void(std::size_t case_index, const CaseOutcome& outcome)> case_done;
+  std::function<void(std::size_t case_index, const CaseRun& run)> case_done;
   // Set from elsewhere (a signal handler): running cases stop after their current step and
-  // report `interrupted`, cases not yet started are not started.
+  // report `interrupted`, cases not yet started are not started; set while the case folders
+  // are read for study.csv, the tables are not written (study.json: "interrupted").
   const std::atomic<bool>* stop = nullptr;
   // Skip the cases that an earlier run of the study completed (same model).
   bool resume = false;

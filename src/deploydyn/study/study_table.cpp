@@ -52,9 +52,9 @@ struct DriverColumn {
 }  // namespace
 
 std::string study_table_csv(const Study& study, const std::vector<CaseResult>& outcomes) {
-  if (outcomes.size() != study.cases.size()) {
+  if (outcomes.size() != study.n_cases()) {
     throw std::invalid_argument(fmt::format("study_table_csv: {} outcomes for {} cases",
-                                            outcomes.size(), study.cases.size()));
+                                            outcomes.size(), study.n_cases()));
   }
   // Columns that depend on the cases: overrides in order of first use, drivers by name.
   // (A sampled study's drawn values are in samples.csv, not here: there may be thousands.)
@@ -91,10 +91,10 @@ std::string study_table_csv(const Study& study, const std::vector<CaseResult>& o
   const CaseResult& reference = outcomes[study.reference];
   for (std::size_t i = 0; i < outcomes.size(); ++i) {
     const CaseResult& outcome = outcomes[i];
-    const StudyCase& c = study.cases[i];
     const bool completed = outcome.status == RunStatus::completed && outcome.ran;
-    std::vector<std::string> row{csv_field(c.name), to_string(outcome.status)};
+    std::vector<std::string> row{csv_field(study.case_name(i)), to_string(outcome.status)};
     for (const std::string& path : override_paths) {
+      const StudyCase& c = study.cases[i];  // listed: a sampled study has no override columns
       const auto set = std::find_if(c.overrides.begin(), c.overrides.end(),
                                     [&](const Override& o) { return o.path == path; });
       row.push_back(set == c.overrides.end() ? "" : csv_field(set->value));
