@@ -13,15 +13,15 @@ namespace deploydyn {
 namespace {
 
 // A member that can carry a length error, a temperature or a material of its own.
-struct Member {
+struct SampledMember {
   std::string name;
   int node_a = 0, node_b = 0;
   int material = 0;
   std::optional<double> reference_length_m;  // bars and beams
 };
 
-std::vector<Member> members(const Model& model) {
-  std::vector<Member> list;
+std::vector<SampledMember> members(const Model& model) {
+  std::vector<SampledMember> list;
   for (const auto& bar : model.bars) list.push_back({bar.name, bar.node_a, bar.node_b, bar.material, bar.reference_length_m});
   for (const auto& beam : model.beams) list.push_back({beam.name, beam.node_a, beam.node_b, beam.material, beam.reference_length_m});
   for (const auto& cable : model.cables) list.push_back({cable.name, cable.node_a, cable.node_b, cable.material, std::nullopt});
@@ -72,7 +72,7 @@ double Distribution::standard_deviation() const {
 }
 
 std::vector<DrawnCase> draw_cases(const Sampling& sampling, const Model& nominal) {
-  const std::vector<Member> all = members(nominal);
+  const std::vector<SampledMember> all = members(nominal);
   // Which group sets each member's length error: the first that names it.
   std::vector<const LengthErrorGroup*> length_group(all.size(), nullptr);
   for (const LengthErrorGroup& group : sampling.length_errors) {
@@ -130,7 +130,7 @@ std::vector<DrawnCase> draw_cases(const Sampling& sampling, const Model& nominal
       drawn.drawn.emplace_back("gradient_C", gradient_C);
     }
     for (std::size_t m = 0; m < all.size(); ++m) {
-      const Member& member = all[m];
+      const SampledMember& member = all[m];
       const std::string element = "elements." + member.name;
       if (length_group[m] != nullptr) {
         const double error_m = length_group[m]->error_m.quantile(draws.probability(k, member_variable(m, 0)));
