@@ -125,8 +125,9 @@ supports: [{node: A, fix: [x, y, rotation]}]
 analysis: {type: static, end: 1, step: 0.25}
 )";
 
-// A record with the beam's results set to N and M (everything else 0).
-StepRecord beam_record(const Model& model, double time_s, double axial_force_N, double moment_Nm) {
+// A record with the beam's results set to N and M_z (and M_y in 3D; everything else 0).
+StepRecord beam_record(const Model& model, double time_s, double axial_force_N, double moment_Nm,
+                       double moment_y_Nm = 0.0) {
   StepRecord r;
   r.time_s = time_s;
   r.dimension = model.dimension;
@@ -138,6 +139,10 @@ StepRecord beam_record(const Model& model, double time_s, double axial_force_N, 
     if (kind->name() != "beam") continue;
     results.values[static_cast<std::size_t>(quantity_index(*kind, model.dimension, "axial_force_N"))] = axial_force_N;
     results.values[static_cast<std::size_t>(quantity_index(*kind, model.dimension, "bending_moment_z_Nm"))] = moment_Nm;
+    if (model.dimension == 3) {
+      results.values[static_cast<std::size_t>(quantity_index(*kind, model.dimension, "bending_moment_y_Nm"))] =
+          moment_y_Nm;
+    }
   }
   return r;
 }
@@ -174,6 +179,28 @@ TEST(MemberChecks, TubeFibreStressAndInteractionAreTheHandCalculation) {
   EXPECT_EQ(tension.history(beam, CheckKind::interaction).max, 0.0);
   EXPECT_EQ(tension.history(beam, CheckKind::buckling).max, 0.0);
   EXPECT_NEAR(tension.history(beam, CheckKind::stress).max, stress_Pa / 2.5e8, 1e-12);
+}
+
+TEST(MemberChecks, ThreeDimensionalBeamAddsBothBendingStresses) {
+  // A 20 × 60 mm bar (width along local z, height along y) in tension with moments about both
+  // axes: A = 1.2e-3 m², W_z = w h²/6 = 1.2e-5 m³, W_y = h w²/6 = 4e-6 m³, so
+  // σ = 2000/A + 100/W_z + 30/W_y = 1.667 + 8.333 + 7.5 = 17.5 MPa.
+  const Model model = load_model_from_string(R"(
+nodes: {A: [0, 0, 0], B: [2, 0, 0]}
+materials: {steel: {E: 2.0e11, density: 7850, yield_strength: 2.5e8}}
+sections: {flat: {shape: rectangle, width: 0.02, height: 0.06}}
+elements:
+  b: {type: beam, nodes: [A, B], section: flat, material: steel}
+)", "beam3d.yaml");
+  MemberChecks checks(model);
+  checks.record(beam_record(model, 0.0, 2000.0, 100.0, -30.0));
+  const int beam = member_index(checks, "b");
+  EXPECT_NEAR(checks.history(beam, CheckKind::stress).max * 2.5e8, 17.5e6, 1e-6);
+  EXPECT_EQ(checks.history(beam, CheckKind::buckling).max, 0.0);
+  EXPECT_EQ(checks.history(beam, CheckKind::interaction).max, 0.0);
+  // Buckling about the weak axis: N_cr = π² E (h w³/12) / L².
+  EXPECT_NEAR(checks.members()[static_cast<std::size_t>(beam)].critical_force_N,
+              kPi * kPi * 2e11 * (0.06 * 0.02 * 0.02 * 0.02 / 12) / 4.0, 1e-6);
 }
 
 TEST(MemberChecks, PureEndMomentGivesTheStressMOverW) {
