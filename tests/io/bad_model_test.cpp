@@ -147,6 +147,8 @@ const BadModelCase kBadModels[] = {
     {"member_unknown_element.yaml", 7, "members.strut.elements.1", "unknown element 'b3'; elements are b1, b2"},
     {"member_element_twice.yaml", 8, "members.tie.elements.0",
      "element 'b2' is already in a member (members.strut.elements.1); an element belongs to one member at most"},
+    {"member_not_connected.yaml", 8, "members.strut.elements.1",
+     "element 'b3' shares no node with the member's other elements; a member is one connected part"},
     {"member_mixed_types.yaml", 7, "members.strut.elements.1",
      "element 'c1' is a cable but 'b1' is a bar; a member's elements are of one type"},
     {"section_and_area.yaml", 6, "elements.1.area", "give either 'section' or 'area', not both"},

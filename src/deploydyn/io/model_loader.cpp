@@ -395,6 +395,7 @@ class ModelReader {
         holds_own_name = holds_own_name || element == name;
         member.elements.push_back(index);
       }
+      check_connected(member, spec.at("elements"));
       if (memberable.contains(name) && !holds_own_name) {
         spec.fail(fmt::format("'{}' names an element that this member does not hold, and that element is a "
                               "member of its own by that name; choose another name",
@@ -411,6 +412,48 @@ class ModelReader {
         member.slack_forbidden = slack->choice({"allowed", "forbidden"}) == 1;
       }
       model_.members.push_back(std::move(member));
+    }
+  }
+
+  // A member is one part: its elements joined end to end (or otherwise), none apart.
+  void check_connected(const Member& member, const YamlValue& list) const {
+    const auto ends = [&](int e) -> std::pair<int, int> {
+      const auto i = static_cast<std::size_t>(e);
+      switch (member.kind) {
+        case MemberKind::bar:
+          return {model_.bars[i].node_a, model_.bars[i].node_b};
+        case MemberKind::beam:
+          return {model_.beams[i].node_a, model_.beams[i].node_b};
+        case MemberKind::cable:
+          break;
+      }
+      return {model_.cables[i].node_a, model_.cables[i].node_b};
+    };
+    std::vector<char> reached(member.elements.size(), 0);
+    std::vector<int> nodes{ends(member.elements.front()).first, ends(member.elements.front()).second};
+    reached[0] = 1;
+    for (bool grew = true; grew;) {
+      grew = false;
+      for (std::size_t k = 0; k < member.elements.size(); ++k) {
+        if (reached[k] != 0) continue;
+        const auto [a, b] = ends(member.elements[k]);
+        if (std::find(nodes.begin(), nodes.end(), a) == nodes.end() &&
+            std::find(nodes.begin(), nodes.end(), b) == nodes.end()) {
+          continue;
+        }
+        reached[k] = 1;
+        nodes.push_back(a);
+        nodes.push_back(b);
+        grew = true;
+      }
+    }
+    for (std::size_t k = 0; k < member.elements.size(); ++k) {
+      if (reached[k] == 0) {
+        list.items(1, kUnbounded, "element names")[k].fail(
+            fmt::format("element '{}' shares no node with the member's other elements; a member is one "
+                        "connected part",
+                        list.items(1, kUnbounded, "element names")[k].text()));
+      }
     }
   }
 
