@@ -28,12 +28,13 @@ void CheckHistory::update(double utilization, int where, double t) {
 
 MemberChecks::MemberChecks(const Model& model)
     : dimension_(model.dimension), members_(checked_members(model)) {
-  runs_.resize(members_.size());
-  histories_.resize(members_.size());
+  slots_.resize(members_.size());
   slack_.resize(members_.size());
   for (std::size_t m = 0; m < members_.size(); ++m) {
     for (std::size_t k = 0; k < kNumCheckKinds; ++k) {
-      runs_[m][k] = has_capacity(members_[m], kCheckKinds.value(k), dimension_) ? 1 : 0;
+      const bool runs = has_capacity(members_[m], kCheckKinds.value(k), dimension_);
+      slots_[m][k] = runs ? static_cast<int>(histories_.size()) : -1;
+      if (runs) histories_.emplace_back();
     }
   }
   for (const Driver& d : model.drivers) driver_limits_.push_back(d.effort_limit.value_or(0.0));
@@ -52,11 +53,19 @@ MemberChecks::MemberChecks(const Model& model)
   }
 }
 
+const CheckHistory& MemberChecks::history(int member, CheckKind kind) const {
+  static const CheckHistory kNotRun;
+  const int s = slot(member, kind);
+  return s >= 0 ? histories_[static_cast<std::size_t>(s)] : kNotRun;
+}
+
 void MemberChecks::record(const StepRecord& r) {
   const auto start = std::chrono::steady_clock::now();
   for (std::size_t m = 0; m < members_.size(); ++m) check_member(static_cast<int>(m), r);
   for (std::size_t d = 0; d < drivers_.size() && d < r.driver_efforts.size(); ++d) {
-    if (driver_limits_[d] > 0.0) drivers_[d].update(std::abs(r.driver_efforts[d]) / driver_limits_[d], -1, r.time_s);
+    if (driver_limits_[d] > 0.0) {  // (V7)
+      drivers_[d].update(std::abs(r.driver_efforts[d]) / driver_limits_[d], -1, r.time_s);
+    }
   }
   ++n_records_;
   last_time_s_ = r.time_s;
@@ -69,8 +78,8 @@ void MemberChecks::check_member(int m, const StepRecord& r) {
   const Layout& layout = layouts_[static_cast<std::size_t>(member.kind)];
   if (layout.group < 0 || static_cast<std::size_t>(layout.group) >= r.elements.size()) return;
   const ElementResults& results = r.elements[static_cast<std::size_t>(layout.group)];
-  const auto& run = runs_[static_cast<std::size_t>(m)];
-  const auto runs = [&](CheckKind kind) { return run[static_cast<std::size_t>(kind)] != 0; };
+  const auto& slots = slots_[static_cast<std::size_t>(m)];
+  const auto runs = [&](CheckKind kind) { return slots[static_cast<std::size_t>(kind)] >= 0; };
   // The largest utilization of each check over the member's elements at this step, and where.
   std::array<double, kNumCheckKinds> largest{};
   std::array<int, kNumCheckKinds> where{};
@@ -118,9 +127,8 @@ void MemberChecks::check_member(int m, const StepRecord& r) {
         break;
     }
   }
-  auto& histories = histories_[static_cast<std::size_t>(m)];
   for (std::size_t k = 0; k < kNumCheckKinds; ++k) {
-    if (run[k] != 0 && where[k] >= 0) histories[k].update(largest[k], where[k], r.time_s);
+    if (slots[k] >= 0 && where[k] >= 0) histories_[static_cast<std::size_t>(slots[k])].update(largest[k], where[k], r.time_s);
   }
   if (member.kind != MemberKind::cable) return;
   SlackHistory& s = slack_[static_cast<std::size_t>(m)];

@@ -54,12 +54,9 @@ class MemberChecks final : public RecordSink {
 
   const std::vector<CheckedMember>& members() const { return members_; }
   // Whether `kind` runs on member `member` (its capacity is given): has_capacity.
-  bool runs(int member, CheckKind kind) const {
-    return runs_[static_cast<std::size_t>(member)][static_cast<std::size_t>(kind)] != 0;
-  }
-  const CheckHistory& history(int member, CheckKind kind) const {
-    return histories_[static_cast<std::size_t>(member)][static_cast<std::size_t>(kind)];
-  }
+  bool runs(int member, CheckKind kind) const { return slot(member, kind) >= 0; }
+  // Its history; an empty one (never recorded) when it does not run.
+  const CheckHistory& history(int member, CheckKind kind) const;
   const SlackHistory& slack(int member) const { return slack_[static_cast<std::size_t>(member)]; }
   const CheckHistory& driver(int driver) const { return drivers_[static_cast<std::size_t>(driver)]; }
   bool driver_runs(int driver) const { return driver_limits_[static_cast<std::size_t>(driver)] > 0.0; }
@@ -70,11 +67,16 @@ class MemberChecks final : public RecordSink {
 
  private:
   void check_member(int m, const StepRecord& record);
+  int slot(int member, CheckKind kind) const {
+    return slots_[static_cast<std::size_t>(member)][static_cast<std::size_t>(kind)];
+  }
 
   int dimension_ = 2;
   std::vector<CheckedMember> members_;
-  std::vector<std::array<char, kNumCheckKinds>> runs_;
-  std::vector<std::array<CheckHistory, kNumCheckKinds>> histories_;
+  // Per member and check the index of its history in histories_, or −1 when it does not run:
+  // only the checks that run keep one (a roof's bar has 2 of 6), for memory.
+  std::vector<std::array<int, kNumCheckKinds>> slots_;
+  std::vector<CheckHistory> histories_;
   std::vector<SlackHistory> slack_;
   std::vector<double> driver_limits_;  // 0: none
   std::vector<CheckHistory> drivers_;
