@@ -13,11 +13,14 @@
 #include <cstdio>
 #include <filesystem>
 #include <new>
+#include <optional>
 #include <string>
 #include <system_error>
 
 #include "deploydyn/assembly/assembler.hpp"
 #include "deploydyn/assembly/linear_system_factory.hpp"
+#include "deploydyn/checks/capacities_in_force.hpp"
+#include "deploydyn/checks/verdict.hpp"
 #include "deploydyn/elements/element_kinds.hpp"
 #include "deploydyn/io/input_error.hpp"
 #include "deploydyn/io/model_loader.hpp"
@@ -133,9 +136,15 @@ int run_command(const std::string& model_file, const std::string& out_dir, bool 
   RunControl control;
   control.progress = [&](double t) { progress.update(t); };
   control.stop = &g_stop;
-  const RunReport report = run_to_folder(model, out_dir, control);
+  Envelope envelope;
+  std::optional<Verdict> verdict;
+  const RunReport report = run_to_folder(model, out_dir, control, envelope, &verdict);
   progress.clear();
   for (const std::string& warning : report.warnings) fmt::print(stderr, "warning: {}\n", warning);
+  // The verdict of a time history; one that a check failed is said even with --quiet, as a warning is.
+  if (verdict && (!quiet || (!verdict->deploys && report.status == RunStatus::completed))) {
+    for (const std::string& line : verdict_lines(*verdict)) fmt::print(stderr, "{}\n", line);
+  }
   if (!quiet) {
     for (const std::string& note : report.notes) fmt::print(stderr, "note: {}\n", note);
   }
@@ -294,6 +303,14 @@ int check_command(const std::string& model_file, const std::vector<std::string>&
              : solver == LinearSolverKind::klu_two_domains       ? "KLU (sparse, two domains)"
                                                                  : "UMFPACK (sparse)",
              assembler.n_unknowns(), a.linear_solver == LinearSolverKind::automatic ? " (automatic)" : "");
+  if (a.type == AnalysisType::quasi_static || a.type == AnalysisType::dynamic) {
+    const std::vector<std::string> capacities = capacity_lines(model, [&](const std::vector<std::string>& items) {
+      return listed(items, list_all);
+    });
+    for (std::size_t i = 0; i < capacities.size(); ++i) {
+      fmt::print("{:<12}{}\n", i == 0 ? "members" : i == 1 ? "checks" : "", capacities[i]);
+    }
+  }
   if (const std::string warning = integrator_warning(model); !warning.empty()) {
     fmt::print("warning     {}\n", warning);
   }

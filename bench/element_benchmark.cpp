@@ -27,7 +27,7 @@ enum ElementType { kBar = 0, kBeam = 1 };
 Model chain(ElementType type, int dimension) {
   Model model;
   model.dimension = dimension;
-  model.materials.push_back({"steel", 2.1e11, 1.2e-5, 7850.0});
+  model.materials.push_back({"steel", 2.1e11, 1.2e-5, 7850.0, {}});
   model.temperature_change_C = TimeFunction::constant(50.0);
   for (int i = 0; i <= kChainElements; ++i) {
     const double s = 0.1 * i;

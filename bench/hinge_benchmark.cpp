@@ -25,7 +25,7 @@ Model hinged_chain(int n_bars, int variant) {
   Model model;
   model.name = "hinged chain";
   model.dimension = 2;
-  model.materials.push_back({"steel", 2.1e11, 1.2e-5, 7850.0});
+  model.materials.push_back({"steel", 2.1e11, 1.2e-5, 7850.0, {}});
   model.gravity_m_s2 = Eigen::Vector3d(0.0, -9.81, 0.0);
   for (int i = 0; i <= n_bars; ++i) model.nodes.push_back({"n" + std::to_string(i), Eigen::Vector3d(0.1 * i, 0.0, 0.0), 0.0});
   for (int i = 0; i < n_bars && variant == 3; ++i) {

@@ -8,12 +8,16 @@
 // Counters: ns_per_value (per history.csv value: the same table in both; history.h5 also
 // writes the mesh), bytes_per_value (the file's size per history.csv value; for HDF5 with the
 // mesh and the XDMF index), values (per record).
+// The member checks (checks/member_checks.hpp) on the same roofs:
+//   BM_MemberChecks/N  one step's record checked, every bar with a strength and a second moment
+//                      (buckling and stress run on each); counter ns_per_member.
 
 #include <benchmark/benchmark.h>
 
 #include <filesystem>
 
 #include "deploydyn/assembly/assembler.hpp"
+#include "deploydyn/checks/member_checks.hpp"
 #include "deploydyn/generators/roof.hpp"
 #include "deploydyn/output/hdf5_writer.hpp"
 #include "deploydyn/output/history_writer.hpp"
@@ -116,6 +120,22 @@ void BM_Hdf5Record(benchmark::State& state) {
   });
 }
 BENCHMARK(BM_Hdf5Record)->Arg(100)->Arg(10'000)->Unit(benchmark::kMicrosecond);
+
+void BM_MemberChecks(benchmark::State& state) {
+  RoofSnapshot roof(static_cast<int>(state.range(0)));
+  for (Material& material : roof.model.materials) material.yield_strength_Pa = 3.55e8;
+  for (BarElement& bar : roof.model.bars) bar.inertia_m4 = 1e-8;
+  StepRecord record = make_step_record(*roof.assembler, roof.state);
+  MemberChecks checks(roof.model);
+  for (auto _ : state) {
+    checks.record(record);
+    record.time_s += 1e-3;
+  }
+  state.counters["ns_per_member"] =
+      benchmark::Counter(static_cast<double>(checks.members().size()),
+                         benchmark::Counter::kIsIterationInvariantRate | benchmark::Counter::kInvert);
+}
+BENCHMARK(BM_MemberChecks)->Arg(100)->Arg(10'000)->Unit(benchmark::kMicrosecond);
 
 }  // namespace
 }  // namespace deploydyn

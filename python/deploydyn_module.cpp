@@ -31,6 +31,8 @@
 #include <vector>
 
 #include "deploydyn/assembly/assembler.hpp"
+#include "deploydyn/checks/member_checks.hpp"
+#include "deploydyn/checks/verdict.hpp"
 #include "deploydyn/elements/element_kinds.hpp"
 #include "deploydyn/generators/roof.hpp"
 #include "deploydyn/io/input_error.hpp"
@@ -77,12 +79,14 @@ struct LoadedModel {
 // Records kept in memory: the history as one row-major block, and the envelope for the summary.
 class MemorySink final : public RecordSink {
  public:
-  explicit MemorySink(const Model& model) : layout_(model), n_columns_(layout_.columns().size()) {}
+  explicit MemorySink(const Model& model) : layout_(model), n_columns_(layout_.columns().size()), checks_(model) {}
   void record(const StepRecord& r) override {
     if (r.output) layout_.append_row(r, values_);
     envelope_.record(r);
+    checks_.record(r);
   }
-  bool wants_every_step() const override { return true; }  // for the envelope
+  bool wants_every_step() const override { return true; }  // for the envelope and the checks
+  const MemberChecks& checks() const { return checks_; }
   const std::vector<std::string>& columns() const { return layout_.columns(); }
   std::size_t n_rows() const { return n_columns_ == 0 ? 0 : values_.size() / n_columns_; }
   const std::vector<double>& values() const { return values_; }
@@ -93,6 +97,7 @@ class MemorySink final : public RecordSink {
   std::size_t n_columns_;
   std::vector<double> values_;
   Envelope envelope_;
+  MemberChecks checks_;  // summary.json's verdict, as a run into a folder has it
 };
 
 // Stops a long call within a fraction of a second: on Ctrl-C when it was called from Python's
@@ -233,7 +238,8 @@ py::dict run_in_memory(const LoadedModel& loaded, const py::object& stop) {
   py::dict out = report_dict(report);
   out["columns"] = columns;
   out["values"] = values;
-  out["summary_json"] = summary_json(loaded.model, sink.envelope(), report);
+  const Verdict verdict = make_verdict(loaded.model, sink.checks(), report);
+  out["summary_json"] = summary_json(loaded.model, sink.envelope(), report, &verdict);
   return out;
 }
 

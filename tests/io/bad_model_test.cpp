@@ -145,6 +145,24 @@ const BadModelCase kBadModels[] = {
      "must stay positive (m) at all times, but reaches 0"},
     {"cable_rest_length_reaches_negative.yaml", 9, "elements.c.rest_length",
      "must stay positive (m) at all times, but reaches -0.1"},
+    // Capacities, sections and members (docs/model-format.md, `sections`, `members`).
+    {"negative_yield_strength.yaml", 3, "materials.steel.yield_strength", "must be positive (Pa), got -250"},
+    {"member_unknown_element.yaml", 7, "members.strut.elements.1", "unknown element 'b3'; elements are b1, b2"},
+    {"member_element_twice.yaml", 8, "members.tie.elements.0",
+     "element 'b2' is already in a member (members.strut.elements.1); an element belongs to one member at most"},
+    {"member_not_connected.yaml", 8, "members.strut.elements.1",
+     "element 'b3' shares no node with the member's other elements; a member is one connected part"},
+    {"member_mixed_types.yaml", 7, "members.strut.elements.1",
+     "element 'c1' is a cable but 'b1' is a bar; a member's elements are of one type"},
+    {"section_and_area.yaml", 6, "elements.1.area", "give either 'section' or 'area', not both"},
+    {"section_unknown.yaml", 4, "elements.1.section", "unknown section 'tube'; the model lists no sections"},
+    {"section_wall_too_thick.yaml", 4, "sections.tube.wall_thickness",
+     "must be less than half the outer diameter 0.02 m, got 0.01"},
+    {"buckling_length_factor_on_cable.yaml", 6, "members.guy.buckling_length_factor",
+     "applies to bars and beams; a cable does not buckle"},
+    {"cable_negative_break_load.yaml", 4, "elements.c.break_load", "must be positive (N), got -5000"},
+    {"driver_force_limit_on_turning_driver.yaml", 7, "drivers.motor.force_limit",
+     "unknown key 'force_limit'; did you mean 'torque_limit'?"},
 };
 
 class BadModel : public ::testing::TestWithParam<BadModelCase> {};

@@ -32,6 +32,26 @@ void expect_equal_models(const Model& a, const Model& b) {
     EXPECT_EQ(a.materials[i].youngs_modulus_Pa, b.materials[i].youngs_modulus_Pa);
     EXPECT_EQ(a.materials[i].expansion_per_C, b.materials[i].expansion_per_C);
     EXPECT_EQ(a.materials[i].density_kg_m3, b.materials[i].density_kg_m3);
+    EXPECT_EQ(a.materials[i].yield_strength_Pa, b.materials[i].yield_strength_Pa);
+  }
+  ASSERT_EQ(a.sections.size(), b.sections.size());
+  for (std::size_t i = 0; i < a.sections.size(); ++i) {
+    SCOPED_TRACE("section " + a.sections[i].name);
+    EXPECT_EQ(a.sections[i].name, b.sections[i].name);
+    EXPECT_EQ(a.sections[i].shape, b.sections[i].shape);
+    EXPECT_EQ(a.sections[i].diameter_m, b.sections[i].diameter_m);
+    EXPECT_EQ(a.sections[i].width_m, b.sections[i].width_m);
+    EXPECT_EQ(a.sections[i].height_m, b.sections[i].height_m);
+    EXPECT_EQ(a.sections[i].wall_thickness_m, b.sections[i].wall_thickness_m);
+  }
+  ASSERT_EQ(a.members.size(), b.members.size());
+  for (std::size_t i = 0; i < a.members.size(); ++i) {
+    SCOPED_TRACE("member " + a.members[i].name);
+    EXPECT_EQ(a.members[i].name, b.members[i].name);
+    EXPECT_EQ(a.members[i].kind, b.members[i].kind);
+    EXPECT_EQ(a.members[i].elements, b.members[i].elements);
+    EXPECT_EQ(a.members[i].buckling_length_factor, b.members[i].buckling_length_factor);
+    EXPECT_EQ(a.members[i].slack_forbidden, b.members[i].slack_forbidden);
   }
   ASSERT_EQ(a.n_bars(), b.n_bars());
   for (int i = 0; i < a.n_bars(); ++i) {
@@ -43,6 +63,8 @@ void expect_equal_models(const Model& a, const Model& b) {
     EXPECT_EQ(x.node_b, y.node_b);
     EXPECT_EQ(x.material, y.material);
     EXPECT_EQ(x.area_m2, y.area_m2);
+    EXPECT_EQ(x.section, y.section);
+    EXPECT_EQ(x.inertia_m4, y.inertia_m4);
     EXPECT_EQ(x.mass_kg, y.mass_kg);
     EXPECT_EQ(x.reference_length_m, y.reference_length_m);
     EXPECT_EQ(x.temperature_change_C, y.temperature_change_C);
@@ -61,6 +83,9 @@ void expect_equal_models(const Model& a, const Model& b) {
     EXPECT_EQ(x.inertia_z_m4, y.inertia_z_m4);
     EXPECT_EQ(x.inertia_y_m4, y.inertia_y_m4);
     EXPECT_EQ(x.torsion_m4, y.torsion_m4);
+    EXPECT_EQ(x.section, y.section);
+    EXPECT_EQ(x.section_modulus_z_m3, y.section_modulus_z_m3);
+    EXPECT_EQ(x.section_modulus_y_m3, y.section_modulus_y_m3);
     EXPECT_EQ(x.orientation, y.orientation);
     EXPECT_EQ(x.orientation_given, y.orientation_given);
     EXPECT_EQ(x.shear_factor, y.shear_factor);
@@ -89,6 +114,8 @@ void expect_equal_models(const Model& a, const Model& b) {
     EXPECT_EQ(x.mass_kg, y.mass_kg);
     EXPECT_EQ(x.rest_length_m, y.rest_length_m);
     EXPECT_EQ(x.pretension_N, y.pretension_N);
+    EXPECT_EQ(x.section, y.section);
+    EXPECT_EQ(x.break_load_N, y.break_load_N);
     EXPECT_EQ(x.temperature_change_C, y.temperature_change_C);
     EXPECT_EQ(x.temperature_given, y.temperature_given);
   }
@@ -126,6 +153,7 @@ void expect_equal_models(const Model& a, const Model& b) {
     EXPECT_EQ(x.kind, y.kind);
     EXPECT_EQ(x.reading, y.reading);
     EXPECT_EQ(x.profile, y.profile);
+    EXPECT_EQ(x.effort_limit, y.effort_limit);
     switch (x.kind) {
       case Driver::Kind::bar_angle:
         EXPECT_EQ(x.element, y.element);
@@ -269,6 +297,38 @@ elements:
 supports: [{node: A}, {node: C}]
 )", "cables"));
   expect_round_trip(load_model(fmt::format("{}/examples/cables/guyed_mast.yaml", DEPLOYDYN_SOURCE_DIR)));
+}
+
+// Capacities: sections of every shape, explicit second moments and section moduli, strengths,
+// break loads, effort limits and members; the two examples of the member checks.
+TEST(ModelRoundTrip, SectionsMembersAndCapacities) {
+  expect_round_trip(load_model_from_string(R"(
+nodes: {A: [0, 0], B: [1, 0], C: [2, 0], D: [2, 1], E: [3, 1]}
+materials: {steel: {E: 2.0e11, alpha: 1.2e-5, density: 7850, yield_strength: 3.55e8}}
+sections:
+  tube: {shape: circular_tube, outer_diameter: 0.0483, wall_thickness: 0.0032}
+  box: {shape: rectangular_tube, width: 0.04, height: 0.06, wall_thickness: 0.003}
+  rod: {shape: circle, diameter: 0.006}
+  flat: {shape: rectangle, width: 0.01, height: 0.05}
+elements:
+  b1: {type: beam, nodes: [A, B], section: tube, material: steel}
+  b2: {type: beam, nodes: [B, C], section: box, material: steel}
+  b3: {type: beam, nodes: [C, D], area: 1.0e-3, inertia_z: 2.0e-7, section_modulus_z: 7.7e-6, material: steel}
+  bar: {nodes: [A, D], area: 1.0e-4, inertia: 3.3e-9, material: steel}
+  bar2: {nodes: [B, D], section: flat, material: steel}
+  c: {type: cable, nodes: [D, E], section: rod, material: steel, break_load: 25000}
+members:
+  boom: {elements: [b1, b2], buckling_length_factor: 2}
+  guy: {elements: [c], slack: forbidden}
+supports: [{node: A, fix: [x, y, rotation]}, {node: E}]
+drivers:
+  push: {type: coordinate, node: C, direction: x, profile: 0.0, force_limit: 150.5}
+  turn: {type: bar_angle, element: bar, profile: 0.1, torque_limit: 12}
+)", "capacities"));
+  for (const char* name : {"heated_bay", "guyed_mast"}) {
+    SCOPED_TRACE(name);
+    expect_round_trip(load_model(fmt::format("{}/examples/checks/{}.yaml", DEPLOYDYN_SOURCE_DIR, name)));
+  }
 }
 
 // Hinges of both forms, every key, and the spring-driven mast with end_when.

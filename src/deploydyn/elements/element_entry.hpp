@@ -40,6 +40,8 @@ class ElementEntryReader {
                                                               std::string_view unit) const = 0;
   virtual std::vector<int> nodes(std::string_view key, int count) const = 0;
   virtual int material(std::string_view key) const = 0;  // index into Model::materials
+  // A name from the model's `sections`, as an index into Model::sections; empty when not given.
+  virtual std::optional<int> optional_section(std::string_view key) const = 0;
   virtual TimeFunction function(std::string_view key) const = 0;
   virtual std::optional<TimeFunction> optional_function(std::string_view key) const = 0;
   // A rejected value of `key` (at its line), or a problem with a missing `key` (at the entry's).

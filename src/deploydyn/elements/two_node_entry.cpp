@@ -1,6 +1,7 @@
 #include "deploydyn/elements/two_node_entry.hpp"
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include <optional>
 #include <utility>
@@ -28,6 +29,19 @@ TwoNodeEnds read_two_node_ends(const ElementEntryReader& entry, const Model& mod
                                     type, name_a, model.nodes[out.node_b].name));
   }
   return out;
+}
+
+std::optional<int> read_section(const ElementEntryReader& entry,
+                                std::span<const std::string_view> own_keys) {
+  const std::optional<int> section = entry.optional_section("section");
+  if (!section) return std::nullopt;
+  for (const std::string_view key : own_keys) {
+    if (entry.has(key)) {
+      entry.fail(key, fmt::format("give either 'section' or '{}', not both: the section sets {}", key,
+                                  fmt::join(own_keys, ", ")));
+    }
+  }
+  return section;
 }
 
 GivenMass read_mass(const ElementEntryReader& entry, const Material& material, double area_m2,

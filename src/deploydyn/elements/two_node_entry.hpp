@@ -3,6 +3,8 @@
 // its reference length, mass and own ΔT(t). A type reads its ends first, then its section and
 // material, then the rest (so the first error a file has is reported first, in key order).
 
+#include <optional>
+#include <span>
 #include <string_view>
 
 #include "deploydyn/elements/element_entry.hpp"
@@ -19,6 +21,12 @@ struct TwoNodeEnds {
 // messages ("bar").
 TwoNodeEnds read_two_node_ends(const ElementEntryReader& entry, const Model& model,
                                std::string_view type);
+
+// `section`: the index of the section the element takes its properties from, or empty when it
+// gives its own. `own_keys` are the element's keys a section replaces: giving one of them with
+// `section` is an error at that key.
+std::optional<int> read_section(const ElementEntryReader& entry,
+                                std::span<const std::string_view> own_keys);
 
 struct LengthMassTemperature {
   double reference_length_m = 0.0;  // L0: `length`, or the ends' distance

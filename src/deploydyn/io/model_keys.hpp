@@ -14,22 +14,29 @@ namespace deploydyn::model_keys {
 
 using Keys = std::span<const std::string_view>;
 
-inline constexpr std::array<std::string_view, 15> kTopLevel{
-    "name",     "description", "units",  "nodes", "materials", "elements",  "thermal", "supports",
-    "joints",   "drivers",     "loads",  "gravity", "functions", "analysis", "output"};
+inline constexpr std::array<std::string_view, 17> kTopLevel{
+    "name",    "description", "units",   "nodes",   "materials", "sections", "elements", "members", "thermal",
+    "supports", "joints",     "drivers", "loads",   "gravity",   "functions", "analysis", "output"};
 inline constexpr std::array<std::string_view, 2> kNode{"at", "mass"};
-inline constexpr std::array<std::string_view, 4> kMaterial{"E", "alpha", "density", "damping"};
+inline constexpr std::array<std::string_view, 5> kMaterial{"E", "alpha", "density", "yield_strength", "damping"};
 inline constexpr std::array<std::string_view, 4> kMaterialDamping{"ratio", "loss_factor", "frequency", "time"};
+inline constexpr std::array<std::string_view, 3> kCircularTubeSection{"shape", "outer_diameter", "wall_thickness"};
+inline constexpr std::array<std::string_view, 4> kRectangularTubeSection{"shape", "width", "height",
+                                                                         "wall_thickness"};
+inline constexpr std::array<std::string_view, 2> kCircleSection{"shape", "diameter"};
+inline constexpr std::array<std::string_view, 3> kRectangleSection{"shape", "width", "height"};
+inline constexpr std::array<std::string_view, 3> kMember{"elements", "buckling_length_factor", "slack"};
 inline constexpr std::array<std::string_view, 1> kThermal{"dT"};
 inline constexpr std::array<std::string_view, 2> kSupport{"node", "fix"};
 inline constexpr std::array<std::string_view, 3> kJoint{"type", "nodes", "axis"};
-inline constexpr std::array<std::string_view, 6> kBarAngleDriver{"type", "element", "pivot",
-                                                                  "axis", "profile", "reading"};
-inline constexpr std::array<std::string_view, 5> kHingeAngleDriver{"type", "nodes", "axis", "profile",
-                                                                   "reading"};
-inline constexpr std::array<std::string_view, 4> kRevoluteDriver{"type", "joint", "profile", "reading"};
-inline constexpr std::array<std::string_view, 5> kCoordinateDriver{"type", "node", "direction",
-                                                                   "profile", "reading"};
+inline constexpr std::array<std::string_view, 7> kBarAngleDriver{"type", "element", "pivot", "axis",
+                                                                  "profile", "reading", "torque_limit"};
+inline constexpr std::array<std::string_view, 6> kHingeAngleDriver{"type", "nodes", "axis", "profile",
+                                                                   "reading", "torque_limit"};
+inline constexpr std::array<std::string_view, 5> kRevoluteDriver{"type", "joint", "profile", "reading",
+                                                                 "torque_limit"};
+inline constexpr std::array<std::string_view, 6> kCoordinateDriver{"type", "node", "direction",
+                                                                   "profile", "reading", "force_limit"};
 inline constexpr std::array<std::string_view, 4> kLoad{"node", "force", "moment", "factor"};
 inline constexpr std::array<std::string_view, 11> kAnalysis{
     "type", "end", "end_when", "step", "output_interval", "load_steps", "mass", "integrator", "newton",
@@ -67,11 +74,16 @@ struct Section {
   Keys keys;
 };
 
-inline constexpr std::array<Section, 31> kSections{{
+inline constexpr std::array<Section, 36> kSections{{
     {"top level", "### Top level", kTopLevel},
     {"nodes.NAME", "### `nodes`", kNode},
     {"materials.NAME", "### `materials`", kMaterial},
     {"materials.NAME.damping", "### `materials`", kMaterialDamping},
+    {"sections.NAME (shape: circular_tube)", "### `sections`", kCircularTubeSection},
+    {"sections.NAME (shape: rectangular_tube)", "### `sections`", kRectangularTubeSection},
+    {"sections.NAME (shape: circle)", "### `sections`", kCircleSection},
+    {"sections.NAME (shape: rectangle)", "### `sections`", kRectangleSection},
+    {"members.NAME", "### `members`", kMember},
     {"thermal", "### `thermal`", kThermal},
     {"supports.N", "### `supports`", kSupport},
     {"joints.NAME", "### `joints`", kJoint},

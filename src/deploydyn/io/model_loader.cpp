@@ -77,6 +77,9 @@ class NameIndex {
   int find(const YamlValue& reference) const {
     const std::string name = reference.text();
     const auto found = index_.find(name);
+    if (found == index_.end() && names_.empty()) {
+      reference.fail(fmt::format("unknown {0} '{1}'; the model lists no {0}s", kind_, io::excerpt(name)));
+    }
     if (found == index_.end()) {
       reference.fail(
           fmt::format("unknown {} '{}'; {}s are {}", kind_, io::excerpt(name), kind_, io::join_names(names_)));
@@ -115,11 +118,13 @@ class ModelReader {
     if (const auto functions = root_.find("functions")) read_functions(*functions);
     read_nodes(root_.at("nodes"));
     read_materials(root_.at("materials"));
+    if (const auto sections = root_.find("sections")) read_sections(*sections);
     if (const auto thermal = root_.find("thermal")) {
       thermal->expect_keys(model_keys::kThermal);
       if (const auto dT = thermal->find("dT")) model_.temperature_change_C = function(*dT);
     }
     read_elements(root_.at("elements"));
+    if (const auto members = root_.find("members")) read_members(*members);
     if (const auto supports = root_.find("supports")) read_supports(*supports);
     if (const auto joints = root_.find("joints")) read_joints(*joints);
     if (const auto drivers = root_.find("drivers")) read_drivers(*drivers);
@@ -304,6 +309,9 @@ class ModelReader {
       if (const auto density = spec.find("density")) {
         material.density_kg_m3 = density->number(Sign::positive, "kg/m³");
       }
+      if (const auto strength = spec.find("yield_strength")) {
+        material.yield_strength_Pa = strength->number(Sign::positive, "Pa");
+      }
       if (const auto damping = spec.find("damping")) material.damping_time_s = damping_time(*damping);
       materials_.add(name, spec);
       model_.materials.push_back(material);
@@ -331,6 +339,146 @@ class ModelReader {
       (ratio ? ratio : loss_factor)->fail(fmt::format("must be below 1 (a structure's damping is a few %), got {}", share));
     }
     return ratio ? share / (M_PI * frequency_Hz) : share / (2.0 * M_PI * frequency_Hz);
+  }
+
+  // Cross-sections by shape (model/section.hpp): each shape takes its own dimensions.
+  void read_sections(const YamlValue& section) {
+    for (const auto& [name, spec] : section.entries()) {
+      Section out;
+      out.name = name;
+      out.shape = spec.at("shape").choice(kSectionShapes);
+      const auto dimension = [&](std::string_view key) { return spec.at(key).number(Sign::positive, "m"); };
+      switch (out.shape) {
+        case SectionShape::circular_tube:
+          spec.expect_keys(model_keys::kCircularTubeSection);
+          out.diameter_m = dimension("outer_diameter");
+          out.wall_thickness_m = dimension("wall_thickness");
+          break;
+        case SectionShape::rectangular_tube:
+          spec.expect_keys(model_keys::kRectangularTubeSection);
+          out.width_m = dimension("width");
+          out.height_m = dimension("height");
+          out.wall_thickness_m = dimension("wall_thickness");
+          break;
+        case SectionShape::circle:
+          spec.expect_keys(model_keys::kCircleSection);
+          out.diameter_m = dimension("diameter");
+          break;
+        case SectionShape::rectangle:
+          spec.expect_keys(model_keys::kRectangleSection);
+          out.width_m = dimension("width");
+          out.height_m = dimension("height");
+          break;
+      }
+      if (const std::string problem = section_dimension_problem(out); !problem.empty()) {
+        spec.at("wall_thickness").fail(problem);
+      }
+      out.properties = section_properties(out);
+      sections_.add(name, spec);
+      model_.sections.push_back(std::move(out));
+    }
+  }
+
+  // Members (model/member.hpp): elements of one type, each in one member at most.
+  void read_members(const YamlValue& section) {
+    std::unordered_map<std::string, std::pair<MemberKind, int>> memberable;  // bars, beams, cables
+    const auto add = [&](const auto& elements, MemberKind kind) {
+      for (std::size_t i = 0; i < elements.size(); ++i) memberable.emplace(elements[i].name, std::pair{kind, static_cast<int>(i)});
+    };
+    add(model_.bars, MemberKind::bar);
+    add(model_.beams, MemberKind::beam);
+    add(model_.cables, MemberKind::cable);
+    std::unordered_map<std::string, std::string> member_of;  // element → its member's path
+    for (const auto& [name, spec] : section.entries()) {
+      check_name(name, spec, "member");
+      spec.expect_keys(model_keys::kMember);
+      Member member;
+      member.name = name;
+      std::string first;  // its first element, for the message on a mixed member
+      bool holds_own_name = false;
+      for (const YamlValue& item : spec.at("elements").items(1, kUnbounded, "element names")) {
+        elements_.find(item);  // an unknown name: the message lists the elements
+        const std::string element = item.text();
+        const auto found = memberable.find(element);
+        if (found == memberable.end()) {
+          item.fail(fmt::format("element '{}' is a hinge; members hold bars, beams or cables", element));
+        }
+        const auto [kind, index] = found->second;
+        if (first.empty()) {
+          first = element;
+          member.kind = kind;
+        } else if (kind != member.kind) {
+          item.fail(fmt::format("element '{}' is a {} but '{}' is a {}; a member's elements are of one type",
+                                element, kMemberKinds.name(kind), first, kMemberKinds.name(member.kind)));
+        }
+        if (const auto [previous, added] = member_of.emplace(element, item.path()); !added) {
+          item.fail(fmt::format("element '{}' is already in a member ({}); an element belongs to one member "
+                                "at most",
+                                element, previous->second));
+        }
+        holds_own_name = holds_own_name || element == name;
+        member.elements.push_back(index);
+      }
+      check_connected(member, spec.at("elements"));
+      if (memberable.contains(name) && !holds_own_name) {
+        spec.fail(fmt::format("'{}' names an element that this member does not hold, and that element is a "
+                              "member of its own by that name; choose another name",
+                              name));
+      }
+      if (const auto factor = spec.find("buckling_length_factor")) {
+        if (member.kind == MemberKind::cable) factor->fail("applies to bars and beams; a cable does not buckle");
+        member.buckling_length_factor = factor->number(Sign::positive, "");
+      }
+      if (const auto slack = spec.find("slack")) {
+        if (member.kind != MemberKind::cable) {
+          slack->fail(fmt::format("applies to cables; this member's elements are {}s", kMemberKinds.name(member.kind)));
+        }
+        member.slack_forbidden = slack->choice({"allowed", "forbidden"}) == 1;
+      }
+      model_.members.push_back(std::move(member));
+    }
+  }
+
+  // A member is one part: its elements joined end to end (or otherwise), none apart.
+  void check_connected(const Member& member, const YamlValue& list) const {
+    const auto ends = [&](int e) -> std::pair<int, int> {
+      const auto i = static_cast<std::size_t>(e);
+      switch (member.kind) {
+        case MemberKind::bar:
+          return {model_.bars[i].node_a, model_.bars[i].node_b};
+        case MemberKind::beam:
+          return {model_.beams[i].node_a, model_.beams[i].node_b};
+        case MemberKind::cable:
+          break;
+      }
+      return {model_.cables[i].node_a, model_.cables[i].node_b};
+    };
+    std::vector<char> reached(member.elements.size(), 0);
+    std::vector<int> nodes{ends(member.elements.front()).first, ends(member.elements.front()).second};
+    reached[0] = 1;
+    for (bool grew = true; grew;) {
+      grew = false;
+      for (std::size_t k = 0; k < member.elements.size(); ++k) {
+        if (reached[k] != 0) continue;
+        const auto [a, b] = ends(member.elements[k]);
+        if (std::find(nodes.begin(), nodes.end(), a) == nodes.end() &&
+            std::find(nodes.begin(), nodes.end(), b) == nodes.end()) {
+          continue;
+        }
+        reached[k] = 1;
+        nodes.push_back(a);
+        nodes.push_back(b);
+        grew = true;
+      }
+    }
+    for (std::size_t k = 0; k < member.elements.size(); ++k) {
+      if (reached[k] == 0) {
+        list.items(1, kUnbounded, "element names")[k].fail(
+            fmt::format("element '{}' shares no node with the member's other elements; a member is one "
+                        "connected part",
+                        list.items(1, kUnbounded, "element names")[k].text()));
+      }
+    }
   }
 
   void read_elements(const YamlValue& section) {
@@ -381,6 +529,10 @@ class ModelReader {
       return indices;
     }
     int material(std::string_view key) const override { return reader_.materials_.find(spec_.at(key)); }
+    std::optional<int> optional_section(std::string_view key) const override {
+      const auto value = spec_.find(key);
+      return value ? std::optional<int>(reader_.sections_.find(*value)) : std::nullopt;
+    }
     TimeFunction function(std::string_view key) const override { return reader_.function(spec_.at(key)); }
     std::optional<TimeFunction> optional_function(std::string_view key) const override {
       const auto value = spec_.find(key);
@@ -521,6 +673,10 @@ class ModelReader {
           break;
       }
       driver.profile = function(spec.at("profile"));
+      const bool turns = drives_rotation(driver.kind);
+      if (const auto limit = spec.find(turns ? "torque_limit" : "force_limit")) {
+        driver.effort_limit = limit->number(Sign::positive, turns ? "N·m" : "N");
+      }
       model_.drivers.push_back(driver);
     }
   }
@@ -968,6 +1124,7 @@ class ModelReader {
   FunctionTable functions_;
   NameIndex nodes_{"node"};
   NameIndex materials_{"material"};
+  NameIndex sections_{"section"};
   NameIndex elements_{"element"};
   NameIndex joints_{"joint"};
   mutable std::optional<DofMap> dofs_;  // built on first use, once the elements are read

@@ -133,6 +133,7 @@ void emit_geometry(YAML::Emitter& out, const Model& model) {
     emit_number(out, "E", material.youngs_modulus_Pa);
     emit_number(out, "alpha", material.expansion_per_C);
     if (material.density_kg_m3) emit_number(out, "density", *material.density_kg_m3);
+    if (material.yield_strength_Pa) emit_number(out, "yield_strength", *material.yield_strength_Pa);
     if (material.damping_time_s > 0.0) {  // as its damping time: what a ratio at a frequency gave
       emit_key(out, "damping");
       out << YAML::Flow << YAML::BeginMap;
@@ -142,6 +143,35 @@ void emit_geometry(YAML::Emitter& out, const Model& model) {
     out << YAML::EndMap;
   }
   out << YAML::EndMap;
+
+  if (!model.sections.empty()) {
+    emit_key(out, "sections");
+    out << YAML::BeginMap;
+    for (const Section& section : model.sections) {
+      emit_key(out, section.name);
+      out << YAML::Flow << YAML::BeginMap;
+      emit_key(out, "shape");
+      out << std::string(kSectionShapes.name(section.shape));
+      switch (section.shape) {
+        case SectionShape::circular_tube:
+          emit_number(out, "outer_diameter", section.diameter_m);
+          break;
+        case SectionShape::circle:
+          emit_number(out, "diameter", section.diameter_m);
+          break;
+        case SectionShape::rectangle:
+        case SectionShape::rectangular_tube:
+          emit_number(out, "width", section.width_m);
+          emit_number(out, "height", section.height_m);
+          break;
+      }
+      if (section.shape == SectionShape::circular_tube || section.shape == SectionShape::rectangular_tube) {
+        emit_number(out, "wall_thickness", section.wall_thickness_m);
+      }
+      out << YAML::EndMap;
+    }
+    out << YAML::EndMap;
+  }
 
   emit_key(out, "thermal");
   out << YAML::BeginMap;
@@ -163,6 +193,31 @@ void emit_geometry(YAML::Emitter& out, const Model& model) {
     out << YAML::EndMap;
   }
   out << YAML::EndMap;
+
+  if (!model.members.empty()) {
+    emit_key(out, "members");
+    out << YAML::BeginMap;
+    for (const Member& member : model.members) {
+      emit_key(out, member.name);
+      out << YAML::Flow << YAML::BeginMap;
+      emit_key(out, "elements");
+      out << YAML::Flow << YAML::BeginSeq;
+      for (const int e : member.elements) {
+        out << (member.kind == MemberKind::bar    ? model.bars[e].name
+                : member.kind == MemberKind::beam ? model.beams[e].name
+                                                  : model.cables[e].name);
+      }
+      out << YAML::EndSeq;
+      if (member.kind == MemberKind::cable) {
+        emit_key(out, "slack");
+        out << (member.slack_forbidden ? "forbidden" : "allowed");
+      } else {
+        emit_number(out, "buckling_length_factor", member.buckling_length_factor);
+      }
+      out << YAML::EndMap;
+    }
+    out << YAML::EndMap;
+  }
 }
 
 // A joint's axis is in the file when the loader requires it: in 3D between nodes that both
@@ -264,6 +319,9 @@ void emit_boundary_conditions(YAML::Emitter& out, const Model& model) {
       }
       emit_key(out, "profile");
       emit_function(out, driver.profile);
+      if (driver.effort_limit) {
+        emit_number(out, drives_rotation(driver.kind) ? "torque_limit" : "force_limit", *driver.effort_limit);
+      }
       out << YAML::EndMap;
     }
     out << YAML::EndMap;

@@ -14,6 +14,8 @@
 #include "deploydyn/elements/cable/cable_element.hpp"
 #include "deploydyn/elements/hinge/hinge_element.hpp"
 #include "deploydyn/model/joint.hpp"
+#include "deploydyn/model/member.hpp"
+#include "deploydyn/model/section.hpp"
 #include "deploydyn/model/time_function.hpp"
 #include "deploydyn/util/name_table.hpp"
 
@@ -34,6 +36,9 @@ struct Material {
   // undamped). A damping ratio ζ at frequency f gives τ = ζ / (π f) (docs/theory.md, "Material
   // damping"); bars and cables use it.
   double damping_time_s = 0.0;
+  // f_y: the stress (Pa) the member checks take as the material's capacity, the yield strength
+  // of a metal or a composite's design strength; empty: no stress checks on its members.
+  std::optional<double> yield_strength_Pa;
 };
 
 // Ground support: the chosen coordinates of a node keep their initial values.
@@ -75,6 +80,9 @@ struct Driver {
   std::array<int, 3> hinge_nodes{};  // hinge_angle: A, H, B
   TimeFunction profile;
   DriverReading reading = DriverReading::rate;
+  // The largest |effort| the actuator can give: torque (N·m) when it turns, else force (N);
+  // empty: no effort check.
+  std::optional<double> effort_limit;
 };
 // As model files spell driver types.
 inline constexpr NameTable kDriverKinds{std::array{
@@ -262,10 +270,12 @@ struct Model {
   int dimension = 2;  // 2 or 3
   std::vector<Node> nodes;
   std::vector<Material> materials;
+  std::vector<Section> sections;  // named cross-sections that elements may take
   std::vector<BarElement> bars;
   std::vector<BeamElement> beams;
   std::vector<CableElement> cables;
   std::vector<HingeElement> hinges;
+  std::vector<Member> members;  // as listed in the file; the other elements are members of their own
   std::vector<FixedNode> supports;
   std::vector<Joint> joints;
   std::vector<Driver> drivers;

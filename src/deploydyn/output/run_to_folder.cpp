@@ -6,6 +6,7 @@
 #include <utility>
 #include <vector>
 
+#include "deploydyn/checks/member_checks.hpp"
 #include "deploydyn/output/background_sink.hpp"
 #include "deploydyn/output/envelope.hpp"
 #include "deploydyn/output/envelope_table.hpp"
@@ -49,7 +50,7 @@ RunReport run_to_folder(const Model& model, const std::filesystem::path& folder,
 }
 
 RunReport run_to_folder(const Model& model, const std::filesystem::path& folder,
-                        const RunControl& control, Envelope& envelope) {
+                        const RunControl& control, Envelope& envelope, std::optional<Verdict>* verdict) {
   if (model.analysis.type == AnalysisType::continuation) {
     envelope = Envelope();  // a path has no time history to envelope
     return run_path_to_folder(model, folder, control);
@@ -61,13 +62,14 @@ RunReport run_to_folder(const Model& model, const std::filesystem::path& folder,
   const Assembler assembler(model);  // may throw before any file is touched
   ResultFolder results(folder, model.output.summary_file);
   RunReport report;
+  MemberChecks checks(model);
   std::optional<OutputError> output_error;
   try {
     start_run_folder(results, model, run_files(model));
     HistoryWriter history(folder / model.output.history_file, model);
     if (!history.layout().note().empty()) report.notes.push_back(history.layout().note());
     envelope = Envelope();
-    std::vector<RecordSink*> sinks{&history, &envelope};
+    std::vector<RecordSink*> sinks{&history, &envelope, &checks};
     std::optional<VtkWriter> vtk;
     if (model.output.vtk) sinks.push_back(&vtk.emplace(folder / kVtkFolderName, model));
     std::optional<Hdf5Writer> hdf5;
@@ -93,7 +95,9 @@ RunReport run_to_folder(const Model& model, const std::filesystem::path& folder,
     output_error = error;
     record_output_failure(report, error);
   }
-  results.finish(summary_json(model, envelope, report), short_summary_json(model, report));
+  const Verdict run_verdict = make_verdict(model, checks, report);
+  if (verdict) *verdict = run_verdict;
+  results.finish(summary_json(model, envelope, report, &run_verdict), short_summary_json(model, report));
   if (output_error) throw *output_error;
   return report;
 }

@@ -8,8 +8,10 @@
 // of type modal its modes (output/modes_to_folder.hpp).
 
 #include <filesystem>
+#include <optional>
 
 #include "deploydyn/output/envelope.hpp"
+#include "deploydyn/checks/verdict.hpp"
 #include "deploydyn/solvers/analysis.hpp"
 
 namespace deploydyn {
@@ -21,8 +23,10 @@ RunReport run_to_folder(const Model& model, const std::filesystem::path& folder,
                         const RunControl& control = {});
 
 // Same, and leaves the run's extremes and last record (what summary.json is made of) in
-// `envelope`, for callers that compare runs in memory (study/study_table.hpp).
+// `envelope`, for callers that compare runs in memory (study/study_table.hpp), and, for a time
+// history, its verdict (summary.json's `verdict`, checks/verdict.hpp) in `verdict` when given.
 RunReport run_to_folder(const Model& model, const std::filesystem::path& folder,
-                        const RunControl& control, Envelope& envelope);
+                        const RunControl& control, Envelope& envelope,
+                        std::optional<Verdict>* verdict = nullptr);
 
 }  // namespace deploydyn

@@ -6,6 +6,7 @@
 #include <map>
 #include <nlohmann/json.hpp>
 
+#include "deploydyn/checks/verdict.hpp"
 #include "deploydyn/elements/element_kinds.hpp"
 #include "deploydyn/model/dof_map.hpp"
 #include "deploydyn/output/envelope_table.hpp"
@@ -210,7 +211,8 @@ ordered_json summary_head(const Model& model, const RunReport& report) {
   return j;
 }
 
-std::string summary_json(const Model& model, const Envelope& envelope, const RunReport& report) {
+std::string summary_json(const Model& model, const Envelope& envelope, const RunReport& report,
+                         const Verdict* verdict) {
   ordered_json j = summary_head(model, report);
   j["units"] = {{"length", "m"}, {"force", "N"}, {"torque", "N·m"}, {"time", "s"},
                 {"energy", "J"}, {"temperature_change", "°C"}};
@@ -277,6 +279,7 @@ std::string summary_json(const Model& model, const Envelope& envelope, const Run
   j["wall_time"] = report.wall_time_s;
   j["warnings"] = report.warnings;  // run_warnings (output/plausibility.hpp)
   j["files"] = files(model);
+  if (verdict) j["verdict"] = verdict_json(*verdict);
   return j.dump(2);
 }
 

@@ -22,9 +22,12 @@ namespace deploydyn {
 // output/modes_to_folder.hpp).
 nlohmann::ordered_json summary_head(const Model& model, const RunReport& report);
 
+struct Verdict;
+
 // The final summary (indented, without the final newline). Also what the Python bindings
-// return for a run in memory.
-std::string summary_json(const Model& model, const Envelope& envelope, const RunReport& report);
+// return for a run in memory. With a verdict (checks/verdict.hpp), its `verdict` at the end.
+std::string summary_json(const Model& model, const Envelope& envelope, const RunReport& report,
+                         const Verdict* verdict = nullptr);
 
 // The files of a run's folder by role ("model", "history", "vtk"), as summary.json lists them
 // under "files": what the next run into the folder removes first.

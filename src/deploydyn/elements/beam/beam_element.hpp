@@ -21,6 +21,11 @@ struct BeamElement {
   double inertia_z_m4 = 0.0;      // I_z: bending about local z (in-plane bending in 2D)
   double inertia_y_m4 = 0.0;      // I_y: bending about local y (3D only)
   double torsion_m4 = 0.0;        // J: torsion constant (3D only)
+  int section = -1;               // index into Model::sections when the beam takes one, else -1
+  // W_z, W_y: bending moment over extreme-fibre stress, for the member checks; 0: not known.
+  // A section sets them; inertia_y also in 2D, where only the checks read it (the weak axis).
+  double section_modulus_z_m3 = 0.0;
+  double section_modulus_y_m3 = 0.0;
   Eigen::Vector3d orientation = Eigen::Vector3d::Zero();  // local y hint (3D only)
   bool orientation_given = false;
   double shear_factor = 5.0 / 6.0;  // k_s

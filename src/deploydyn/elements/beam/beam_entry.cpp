@@ -19,10 +19,13 @@ constexpr double kMinOrientationSine = 1e-6;
 
 constexpr ElementField kFields[] = {
     {"nodes", "", "required", "two different node names, at different initial positions"},
-    {"area", "m²", "required", "> 0"},
-    {"inertia_z", "m⁴", "required", "> 0: second moment of area about local z (in-plane bending in 2D)"},
-    {"inertia_y", "m⁴", "required in 3D", "> 0: second moment of area about local y; 3D only"},
-    {"torsion", "m⁴", "required in 3D", "> 0: torsion constant J; 3D only"},
+    {"area", "m²", "required unless `section`", "> 0"},
+    {"inertia_z", "m⁴", "required unless `section`", "> 0: second moment of area about local z (in-plane bending in 2D)"},
+    {"inertia_y", "m⁴", "required in 3D unless `section`", "> 0: second moment of area about local y; 3D only"},
+    {"torsion", "m⁴", "required in 3D unless `section`", "> 0: torsion constant J; 3D only"},
+    {"section", "", "none", "a name from `sections`: area, second moments, torsion constant and section moduli come from it (its height along local y, its width along z); not with the five keys above and below"},
+    {"section_modulus_z", "m³", "none", "> 0: W_z, the moment about local z per unit extreme-fibre stress, for the stress checks; not with `section`"},
+    {"section_modulus_y", "m³", "none", "> 0: W_y, about local y; 3D only; not with `section`"},
     {"orientation", "", "the global axis least aligned with the beam",
      "3D only: a vector [x, y, z] not parallel to the beam; its part normal to the beam is local y"},
     {"material", "", "required", "a name from `materials`"},
@@ -39,7 +42,9 @@ constexpr ElementField kFields[] = {
 };
 
 constexpr std::string_view kOnly3D[] = {"inertia_y", "torsion", "orientation", "height_z",
-                                        "dT_gradient_z"};
+                                        "dT_gradient_z", "section_modulus_y"};
+constexpr std::string_view kSectionKeys[] = {"area", "inertia_z", "inertia_y", "torsion",
+                                             "section_modulus_z", "section_modulus_y"};
 
 // A gradient needs the depth it acts over; a depth without a gradient is harmless.
 void read_gradient(const ElementEntryReader& entry, std::string_view gradient_key,
@@ -80,11 +85,28 @@ void read_entry(const std::string& name, const ElementEntryReader& entry, Model&
   const Eigen::Vector3d chord =
       model.nodes[beam.node_b].position_m - model.nodes[beam.node_a].position_m;
   const double distance = ends.distance_m;
-  beam.area_m2 = entry.number("area", ValueSign::positive, "m²");
-  beam.inertia_z_m4 = entry.number("inertia_z", ValueSign::positive, "m⁴");
+  if (const std::optional<int> section = read_section(entry, kSectionKeys)) {
+    beam.section = *section;
+    const SectionProperties& p = model.sections[static_cast<std::size_t>(*section)].properties;
+    beam.area_m2 = p.area_m2;
+    beam.inertia_z_m4 = p.inertia_z_m4;
+    beam.inertia_y_m4 = p.inertia_y_m4;
+    beam.torsion_m4 = p.torsion_m4;
+    beam.section_modulus_z_m3 = p.section_modulus_z_m3;
+    beam.section_modulus_y_m3 = p.section_modulus_y_m3;
+  } else {
+    beam.area_m2 = entry.number("area", ValueSign::positive, "m²");
+    beam.inertia_z_m4 = entry.number("inertia_z", ValueSign::positive, "m⁴");
+    if (three_d) {
+      beam.inertia_y_m4 = entry.number("inertia_y", ValueSign::positive, "m⁴");
+      beam.torsion_m4 = entry.number("torsion", ValueSign::positive, "m⁴");
+    }
+    beam.section_modulus_z_m3 =
+        entry.optional_number("section_modulus_z", ValueSign::positive, "m³").value_or(0.0);
+    beam.section_modulus_y_m3 =
+        entry.optional_number("section_modulus_y", ValueSign::positive, "m³").value_or(0.0);
+  }
   if (three_d) {
-    beam.inertia_y_m4 = entry.number("inertia_y", ValueSign::positive, "m⁴");
-    beam.torsion_m4 = entry.number("torsion", ValueSign::positive, "m⁴");
     if (const auto orientation = entry.optional_numbers("orientation", 3, "")) {
       beam.orientation = Eigen::Vector3d((*orientation)[0], (*orientation)[1], (*orientation)[2]);
       beam.orientation_given = true;
@@ -123,11 +145,19 @@ void read_entry(const std::string& name, const ElementEntryReader& entry, Model&
 void write_entry(const Model& model, int index, ElementEntryWriter& entry) {
   const BeamElement& beam = model.beams[static_cast<std::size_t>(index)];
   entry.names("nodes", {model.nodes[beam.node_a].name, model.nodes[beam.node_b].name});
-  entry.number("area", beam.area_m2);
-  entry.number("inertia_z", beam.inertia_z_m4);
+  if (beam.section >= 0) {
+    entry.name("section", model.sections[static_cast<std::size_t>(beam.section)].name);
+  } else {
+    entry.number("area", beam.area_m2);
+    entry.number("inertia_z", beam.inertia_z_m4);
+    if (model.dimension == 3) {
+      entry.number("inertia_y", beam.inertia_y_m4);
+      entry.number("torsion", beam.torsion_m4);
+    }
+    if (beam.section_modulus_z_m3 > 0.0) entry.number("section_modulus_z", beam.section_modulus_z_m3);
+    if (beam.section_modulus_y_m3 > 0.0) entry.number("section_modulus_y", beam.section_modulus_y_m3);
+  }
   if (model.dimension == 3) {
-    entry.number("inertia_y", beam.inertia_y_m4);
-    entry.number("torsion", beam.torsion_m4);
     if (beam.orientation_given) {
       entry.numbers("orientation", {beam.orientation[0], beam.orientation[1], beam.orientation[2]});
     }

@@ -1,6 +1,7 @@
 #pragma once
 // What a model file says about one cable: the cable element type's storage in Model::cables.
 
+#include <optional>
 #include <string>
 
 #include "deploydyn/model/time_function.hpp"
@@ -21,6 +22,8 @@ struct CableElement {
   int node_a = 0, node_b = 0;  // indices into Model::nodes
   int material = 0;            // index into Model::materials
   double area_m2 = 0.0;
+  int section = -1;  // index into Model::sections when the cable takes one, else -1
+  std::optional<double> break_load_N;  // the tension at which it breaks; empty: no overload check
   double mass_kg = 0.0;  // total; given, or density · area · L0(0)
   bool mass_given = false;
   TimeFunction rest_length_m;  // L0(t) > 0, m; for `pretension` and the default a constant

@@ -15,7 +15,8 @@ namespace {
 
 constexpr ElementField kFields[] = {
     {"nodes", "", "required", "two different node names, at different initial positions"},
-    {"area", "m²", "required", "> 0"},
+    {"area", "m²", "required unless `section`", "> 0"},
+    {"section", "", "none", "a name from `sections`: the cable's area comes from it; not with `area`"},
     {"material", "", "required", "a name from `materials`"},
     {"rest_length", "m", "distance of the nodes' initial positions",
      "a function > 0 at all times: the rest length L0(t) (a winch); not with `pretension`"},
@@ -25,7 +26,10 @@ constexpr ElementField kFields[] = {
     {"mass", "kg", "`density · area · L0(0)`",
      "> 0; an error if neither it nor a density is given"},
     {"dT", "°C", "`thermal.dT`", "a function: this cable's own ΔT(t)"},
+    {"break_load", "N", "none", "> 0: the tension at which the cable breaks (its minimum breaking load), for the overload check"},
 };
+
+constexpr std::string_view kSectionKeys[] = {"area"};
 
 // The least value a function of time takes: every kind is monotone between the values it
 // names (a table between its points, the steps between their ends).
@@ -56,7 +60,12 @@ void read_entry(const std::string& name, const ElementEntryReader& entry, Model&
   const TwoNodeEnds ends = read_two_node_ends(entry, model, "cable");
   cable.node_a = ends.node_a;
   cable.node_b = ends.node_b;
-  cable.area_m2 = entry.number("area", ValueSign::positive, "m²");
+  if (const std::optional<int> section = read_section(entry, kSectionKeys)) {
+    cable.section = *section;
+    cable.area_m2 = model.sections[static_cast<std::size_t>(*section)].properties.area_m2;
+  } else {
+    cable.area_m2 = entry.number("area", ValueSign::positive, "m²");
+  }
   cable.material = entry.material("material");
   const Material& material = model.materials[cable.material];
 
@@ -90,6 +99,7 @@ void read_entry(const std::string& name, const ElementEntryReader& entry, Model&
   OwnTemperature own = read_own_temperature(entry, model);
   cable.temperature_change_C = std::move(own.change_C);
   cable.temperature_given = own.given;
+  cable.break_load_N = entry.optional_number("break_load", ValueSign::positive, "N");
   model.cables.push_back(std::move(cable));
 }
 
@@ -98,7 +108,11 @@ void read_entry(const std::string& name, const ElementEntryReader& entry, Model&
 void write_entry(const Model& model, int index, ElementEntryWriter& entry) {
   const CableElement& cable = model.cables[static_cast<std::size_t>(index)];
   entry.names("nodes", {model.nodes[cable.node_a].name, model.nodes[cable.node_b].name});
-  entry.number("area", cable.area_m2);
+  if (cable.section >= 0) {
+    entry.name("section", model.sections[static_cast<std::size_t>(cable.section)].name);
+  } else {
+    entry.number("area", cable.area_m2);
+  }
   entry.name("material", model.materials[cable.material].name);
   if (cable.rest_length_from == CableRestLength::pretension) {
     entry.number("pretension", cable.pretension_N);
@@ -107,6 +121,7 @@ void write_entry(const Model& model, int index, ElementEntryWriter& entry) {
   }
   entry.number("mass", cable.mass_kg);
   if (cable.temperature_given) entry.function("dT", cable.temperature_change_C);
+  if (cable.break_load_N) entry.number("break_load", *cable.break_load_N);
 }
 
 }  // namespace deploydyn::cable

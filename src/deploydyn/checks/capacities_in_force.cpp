@@ -1,0 +1,72 @@
+#include "deploydyn/checks/capacities_in_force.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+
+#include "deploydyn/checks/check_kind.hpp"
+#include "deploydyn/checks/member_capacities.hpp"
+
+namespace deploydyn {
+
+std::vector<std::string> capacity_lines(const Model& model,
+                                        const std::function<std::string(const std::vector<std::string>&)>& list) {
+  const std::vector<CheckedMember> members = checked_members(model);
+  std::vector<std::string> lines;
+  std::vector<std::string> listed;
+  for (const CheckedMember& m : members) {
+    if (m.listed) {
+      listed.push_back(fmt::format("{} ({} {}{})", m.name, m.elements.size(), kMemberKinds.name(m.kind),
+                                   m.elements.size() == 1 ? "" : "s"));
+    }
+  }
+  const std::size_t own = members.size() - listed.size();
+  lines.push_back(fmt::format("{}: {}{} {} of {} own", members.size(),
+                              listed.empty() ? "" : fmt::format("{} listed, {}; ", listed.size(), list(listed)),
+                              own, own == 1 ? "element" : "elements", own == 1 ? "its" : "their"));
+  for (std::size_t k = 0; k < kNumCheckKinds; ++k) {
+    const CheckKind kind = kCheckKinds.value(k);
+    const std::string_view name = kCheckKinds.name(kind);
+    if (kind == CheckKind::driver_effort) {
+      if (model.drivers.empty()) continue;
+      std::vector<std::string> limited;
+      for (const Driver& d : model.drivers) {
+        if (d.effort_limit) {
+          limited.push_back(fmt::format("{} {:g} {}", d.name, *d.effort_limit, drives_rotation(d.kind) ? "N·m" : "N"));
+        }
+      }
+      lines.push_back(limited.empty() ? fmt::format("{}: no driver has a torque_limit or force_limit", name)
+                                      : fmt::format("{} on {} of {} drivers: {}", name, limited.size(),
+                                                    model.drivers.size(), list(limited)));
+      continue;
+    }
+    int applies = 0, checked = 0, forbidden = 0;
+    const CheckedMember* weakest = nullptr;  // buckling: the least N_cr
+    for (const CheckedMember& m : members) {
+      const bool cable = m.kind == MemberKind::cable;
+      const bool applicable = kind == CheckKind::cable_break || kind == CheckKind::cable_slack
+                                  ? cable
+                                  : kind == CheckKind::interaction ? m.kind == MemberKind::beam : !cable;
+      if (!applicable) continue;
+      ++applies;
+      if (!has_capacity(m, kind, model.dimension)) continue;
+      ++checked;
+      forbidden += m.slack_forbidden ? 1 : 0;
+      if (!weakest || m.critical_force_N < weakest->critical_force_N) weakest = &m;
+    }
+    if (applies == 0) continue;
+    std::string detail;
+    if (kind == CheckKind::buckling && weakest) {
+      detail = fmt::format("; least N_cr {:.4g} N ({}, K = {:g}, L = {:.4g} m)", weakest->critical_force_N,
+                           weakest->name, weakest->buckling_length_factor, weakest->length_m);
+    }
+    if (kind == CheckKind::cable_slack) {
+      detail = fmt::format(": reported; {} must stay taut (slack: forbidden)", forbidden);
+    }
+    lines.push_back(checked == 0 ? fmt::format("{}: no capacity given on any of {} members", name, applies)
+                                 : fmt::format("{} on {} of {} members{}", name, checked, applies, detail));
+  }
+  return lines;
+}
+
+}  // namespace deploydyn

@@ -1,0 +1,152 @@
+#include "deploydyn/checks/member_capacities.hpp"
+
+#include <algorithm>
+#include <numbers>
+
+namespace deploydyn {
+namespace {
+
+double strength_of(const Model& model, int material) {
+  return model.materials[static_cast<std::size_t>(material)].yield_strength_Pa.value_or(0.0);
+}
+double modulus_of(const Model& model, int material) {
+  return model.materials[static_cast<std::size_t>(material)].youngs_modulus_Pa;
+}
+
+// An element's entry and its least bending stiffness E I (0 when I is unknown), its length.
+struct ElementData {
+  CheckedElement checked;
+  double least_bending_stiffness_Nm2 = 0.0;
+  double length_m = 0.0;
+};
+
+ElementData element_data(const Model& model, MemberKind kind, int index) {
+  ElementData d;
+  d.checked.element = index;
+  const auto i = static_cast<std::size_t>(index);
+  switch (kind) {
+    case MemberKind::bar: {
+      const BarElement& bar = model.bars[i];
+      d.checked.area_m2 = bar.area_m2;
+      d.checked.yield_strength_Pa = strength_of(model, bar.material);
+      d.least_bending_stiffness_Nm2 = modulus_of(model, bar.material) * bar.inertia_m4;
+      d.length_m = bar.reference_length_m;
+      break;
+    }
+    case MemberKind::beam: {
+      const BeamElement& beam = model.beams[i];
+      d.checked.area_m2 = beam.area_m2;
+      d.checked.yield_strength_Pa = strength_of(model, beam.material);
+      d.checked.section_modulus_z_m3 = beam.section_modulus_z_m3;
+      d.checked.section_modulus_y_m3 = beam.section_modulus_y_m3;
+      // The weak axis: I_y is known in 3D, and in 2D when a section gives it.
+      const double least_inertia =
+          beam.inertia_y_m4 > 0.0 ? std::min(beam.inertia_y_m4, beam.inertia_z_m4) : beam.inertia_z_m4;
+      d.least_bending_stiffness_Nm2 = modulus_of(model, beam.material) * least_inertia;
+      d.length_m = beam.reference_length_m;
+      break;
+    }
+    case MemberKind::cable: {
+      const CableElement& cable = model.cables[i];
+      d.checked.area_m2 = cable.area_m2;
+      d.checked.break_load_N = cable.break_load_N.value_or(0.0);
+      d.length_m = cable.rest_length_m.value(0.0);
+      break;
+    }
+  }
+  return d;
+}
+
+CheckedMember checked_member(const Model& model, std::string name, MemberKind kind,
+                             const std::vector<int>& elements, double buckling_length_factor) {
+  CheckedMember member;
+  member.name = std::move(name);
+  member.kind = kind;
+  member.buckling_length_factor = buckling_length_factor;
+  double least_bending_stiffness_Nm2 = -1.0;
+  for (const int e : elements) {
+    const ElementData d = element_data(model, kind, e);
+    member.elements.push_back(d.checked);
+    member.length_m += d.length_m;
+    least_bending_stiffness_Nm2 = least_bending_stiffness_Nm2 < 0.0
+                                      ? d.least_bending_stiffness_Nm2
+                                      : std::min(least_bending_stiffness_Nm2, d.least_bending_stiffness_Nm2);
+  }
+  if (kind != MemberKind::cable && least_bending_stiffness_Nm2 > 0.0) {
+    const double buckling_length_m = buckling_length_factor * member.length_m;
+    member.critical_force_N =
+        std::numbers::pi * std::numbers::pi * least_bending_stiffness_Nm2 / (buckling_length_m * buckling_length_m);
+  }
+  return member;
+}
+
+}  // namespace
+
+const std::string& member_element_name(const Model& model, MemberKind kind, int index) {
+  const auto i = static_cast<std::size_t>(index);
+  switch (kind) {
+    case MemberKind::bar:
+      return model.bars[i].name;
+    case MemberKind::beam:
+      return model.beams[i].name;
+    case MemberKind::cable:
+      break;
+  }
+  return model.cables[i].name;
+}
+
+std::vector<CheckedMember> checked_members(const Model& model) {
+  std::vector<CheckedMember> members;
+  std::vector<char> listed_bars(model.bars.size(), 0), listed_beams(model.beams.size(), 0),
+      listed_cables(model.cables.size(), 0);
+  const auto listed_of = [&](MemberKind kind) -> std::vector<char>& {
+    return kind == MemberKind::bar ? listed_bars : kind == MemberKind::beam ? listed_beams : listed_cables;
+  };
+  for (const Member& m : model.members) {
+    CheckedMember& member = members.emplace_back(
+        checked_member(model, m.name, m.kind, m.elements, m.buckling_length_factor));
+    member.listed = true;
+    member.slack_forbidden = m.slack_forbidden;
+    for (const int e : m.elements) listed_of(m.kind)[static_cast<std::size_t>(e)] = 1;
+  }
+  for (const MemberKind kind : {MemberKind::bar, MemberKind::beam, MemberKind::cable}) {
+    const std::vector<char>& listed = listed_of(kind);
+    for (std::size_t e = 0; e < listed.size(); ++e) {
+      if (listed[e] != 0) continue;
+      const int index = static_cast<int>(e);
+      members.push_back(checked_member(model, member_element_name(model, kind, index), kind, {index}, 1.0));
+    }
+  }
+  return members;
+}
+
+bool has_capacity(const CheckedMember& member, CheckKind kind, int dimension) {
+  const auto any = [&](auto predicate) {
+    return std::any_of(member.elements.begin(), member.elements.end(), predicate);
+  };
+  // A beam's fibre stress needs f_y and the section moduli of the axes it bends about.
+  const auto beam_stress_known = [&](const CheckedElement& e) {
+    return e.yield_strength_Pa > 0.0 && e.section_modulus_z_m3 > 0.0 &&
+           (dimension == 2 || e.section_modulus_y_m3 > 0.0);
+  };
+  switch (kind) {
+    case CheckKind::buckling:
+      return member.kind != MemberKind::cable && member.critical_force_N > 0.0;
+    case CheckKind::stress:
+      if (member.kind == MemberKind::bar) return any([](const CheckedElement& e) { return e.yield_strength_Pa > 0.0; });
+      return member.kind == MemberKind::beam && any(beam_stress_known);
+    case CheckKind::interaction:
+      return member.kind == MemberKind::beam && member.critical_force_N > 0.0 && any(beam_stress_known);
+    case CheckKind::cable_break:
+      return member.kind == MemberKind::cable && any([](const CheckedElement& e) { return e.break_load_N > 0.0; });
+    case CheckKind::cable_slack:
+      return member.kind == MemberKind::cable;
+    case CheckKind::driver_effort:
+      return false;
+  }
+  return false;
+}
+
+bool driver_checked(const Driver& driver) { return driver.effort_limit.has_value(); }
+
+}  // namespace deploydyn

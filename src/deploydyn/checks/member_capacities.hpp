@@ -1,0 +1,47 @@
+#pragma once
+// The members of a model as the checks see them: the file's `members`, and every bar, beam and
+// cable that none of them holds as a member of its own; each with the capacities the model gives
+// (docs/theory.md, "Member checks and the verdict"). A check runs on a member only when its
+// capacity is known (has_capacity); the others are reported as not checked.
+
+#include <string>
+#include <vector>
+
+#include "deploydyn/checks/check_kind.hpp"
+#include "deploydyn/model/model.hpp"
+
+namespace deploydyn {
+
+// One element of a member and what its checks need; 0 where the model does not say.
+struct CheckedElement {
+  int element = 0;                    // index into Model::bars, beams or cables (its member's kind)
+  double area_m2 = 0.0;               // A
+  double yield_strength_Pa = 0.0;     // f_y of its material
+  double section_modulus_z_m3 = 0.0;  // W_z (beams)
+  double section_modulus_y_m3 = 0.0;  // W_y (3D beams)
+  double break_load_N = 0.0;          // cables
+};
+
+struct CheckedMember {
+  std::string name;
+  MemberKind kind = MemberKind::bar;
+  bool listed = false;  // in the file's `members`; else an element of its own
+  std::vector<CheckedElement> elements;
+  double length_m = 0.0;                // L: the sum of its elements' reference lengths
+  double buckling_length_factor = 1.0;  // K
+  // N_cr = π² (EI)_min / (K L)² about the weak axis, the least EI of its elements (V1); 0 when
+  // an element's I is not known (a bar without `inertia` or `section`).
+  double critical_force_N = 0.0;
+  bool slack_forbidden = false;  // cables
+};
+
+std::vector<CheckedMember> checked_members(const Model& model);
+
+// Whether the model gives what `kind` needs on this member (drivers: see driver_checked).
+bool has_capacity(const CheckedMember& member, CheckKind kind, int dimension);
+bool driver_checked(const Driver& driver);
+
+// The name of element `index` of a member of `kind` in `model`.
+const std::string& member_element_name(const Model& model, MemberKind kind, int index);
+
+}  // namespace deploydyn

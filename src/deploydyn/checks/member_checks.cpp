@@ -1,0 +1,146 @@
+#include "deploydyn/checks/member_checks.hpp"
+
+#include <chrono>
+#include <cmath>
+
+#include "deploydyn/elements/element_kinds.hpp"
+
+namespace deploydyn {
+
+void CheckHistory::update(double utilization, int where, double t) {
+  if (!recorded || utilization > max) {
+    max = utilization;
+    time_of_max_s = t;
+    element = where;
+  }
+  if (!exceeded && utilization > 1.0) {
+    exceeded = true;
+    first_exceeded_step_s = t;
+    utilization_at_first = utilization;
+    element_at_first = where;
+    const bool bracketed = recorded && last <= 1.0 && t > last_time_s;
+    first_exceeded_s = bracketed ? last_time_s + (1.0 - last) / (utilization - last) * (t - last_time_s) : t;
+  }
+  recorded = true;
+  last = utilization;
+  last_time_s = t;
+}
+
+MemberChecks::MemberChecks(const Model& model)
+    : dimension_(model.dimension), members_(checked_members(model)) {
+  slots_.resize(members_.size());
+  slack_.resize(members_.size());
+  for (std::size_t m = 0; m < members_.size(); ++m) {
+    for (std::size_t k = 0; k < kNumCheckKinds; ++k) {
+      const bool runs = has_capacity(members_[m], kCheckKinds.value(k), dimension_);
+      slots_[m][k] = runs ? static_cast<int>(histories_.size()) : -1;
+      if (runs) histories_.emplace_back();
+    }
+  }
+  for (const Driver& d : model.drivers) driver_limits_.push_back(d.effort_limit.value_or(0.0));
+  drivers_.resize(model.drivers.size());
+  const auto kinds = element_kinds();
+  for (const MemberKind kind : {MemberKind::bar, MemberKind::beam, MemberKind::cable}) {
+    Layout& layout = layouts_[static_cast<std::size_t>(kind)];
+    for (std::size_t g = 0; g < kinds.size(); ++g) {
+      if (kinds[g]->name() != kMemberKinds.name(kind)) continue;
+      layout.group = static_cast<int>(g);
+      layout.axial_force = quantity_index(*kinds[g], dimension_, "axial_force_N");
+      layout.moment_z = quantity_index(*kinds[g], dimension_, "bending_moment_z_Nm");
+      layout.moment_y = quantity_index(*kinds[g], dimension_, "bending_moment_y_Nm");
+      layout.slack = quantity_index(*kinds[g], dimension_, "slack");
+    }
+  }
+}
+
+const CheckHistory& MemberChecks::history(int member, CheckKind kind) const {
+  static const CheckHistory kNotRun;
+  const int s = slot(member, kind);
+  return s >= 0 ? histories_[static_cast<std::size_t>(s)] : kNotRun;
+}
+
+void MemberChecks::record(const StepRecord& r) {
+  const auto start = std::chrono::steady_clock::now();
+  for (std::size_t m = 0; m < members_.size(); ++m) check_member(static_cast<int>(m), r);
+  for (std::size_t d = 0; d < drivers_.size() && d < r.driver_efforts.size(); ++d) {
+    if (driver_limits_[d] > 0.0) {  // (V7)
+      drivers_[d].update(std::abs(r.driver_efforts[d]) / driver_limits_[d], -1, r.time_s);
+    }
+  }
+  ++n_records_;
+  last_time_s_ = r.time_s;
+  evaluation_time_s_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+// docs/theory.md, "Member checks and the verdict", Eqs. (V1)–(V6).
+void MemberChecks::check_member(int m, const StepRecord& r) {
+  const CheckedMember& member = members_[static_cast<std::size_t>(m)];
+  const Layout& layout = layouts_[static_cast<std::size_t>(member.kind)];
+  if (layout.group < 0 || static_cast<std::size_t>(layout.group) >= r.elements.size()) return;
+  const ElementResults& results = r.elements[static_cast<std::size_t>(layout.group)];
+  const auto& slots = slots_[static_cast<std::size_t>(m)];
+  const auto runs = [&](CheckKind kind) { return slots[static_cast<std::size_t>(kind)] >= 0; };
+  // The largest utilization of each check over the member's elements at this step, and where.
+  std::array<double, kNumCheckKinds> largest{};
+  std::array<int, kNumCheckKinds> where{};
+  where.fill(-1);
+  const auto take = [&](CheckKind kind, double u, int element) {
+    const auto k = static_cast<std::size_t>(kind);
+    if (where[k] < 0 || u > largest[k]) {
+      largest[k] = u;
+      where[k] = element;
+    }
+  };
+  bool slack = false;
+  int first_slack = -1;
+  for (const CheckedElement& e : member.elements) {
+    const double force_N = results.at(e.element, layout.axial_force);
+    const double compression_N = std::max(0.0, -force_N);
+    const double axial_stress_Pa = std::abs(force_N) / e.area_m2;
+    switch (member.kind) {
+      case MemberKind::bar:
+        if (runs(CheckKind::buckling)) take(CheckKind::buckling, compression_N / member.critical_force_N, e.element);  // (V1)
+        if (e.yield_strength_Pa > 0.0) take(CheckKind::stress, axial_stress_Pa / e.yield_strength_Pa, e.element);  // (V2)
+        break;
+      case MemberKind::beam: {
+        if (runs(CheckKind::buckling)) take(CheckKind::buckling, compression_N / member.critical_force_N, e.element);  // (V1)
+        const bool known = e.yield_strength_Pa > 0.0 && e.section_modulus_z_m3 > 0.0 &&
+                           (dimension_ == 2 || e.section_modulus_y_m3 > 0.0);
+        if (!known) break;
+        double bending_stress_Pa = std::abs(results.at(e.element, layout.moment_z)) / e.section_modulus_z_m3;
+        if (dimension_ == 3) bending_stress_Pa += std::abs(results.at(e.element, layout.moment_y)) / e.section_modulus_y_m3;
+        take(CheckKind::stress, (axial_stress_Pa + bending_stress_Pa) / e.yield_strength_Pa, e.element);  // (V3)
+        if (runs(CheckKind::interaction)) {  // (V4): in compression only
+          const double resistance_N = std::min(member.critical_force_N, e.area_m2 * e.yield_strength_Pa);
+          take(CheckKind::interaction,
+               compression_N > 0.0 ? compression_N / resistance_N + bending_stress_Pa / e.yield_strength_Pa : 0.0,
+               e.element);
+        }
+        break;
+      }
+      case MemberKind::cable:
+        if (e.break_load_N > 0.0) take(CheckKind::cable_break, force_N / e.break_load_N, e.element);  // (V5)
+        if (results.at(e.element, layout.slack) != 0.0) {  // (V6)
+          if (!slack) first_slack = e.element;
+          slack = true;
+        }
+        break;
+    }
+  }
+  for (std::size_t k = 0; k < kNumCheckKinds; ++k) {
+    if (slots[k] >= 0 && where[k] >= 0) histories_[static_cast<std::size_t>(slots[k])].update(largest[k], where[k], r.time_s);
+  }
+  if (member.kind != MemberKind::cable) return;
+  SlackHistory& s = slack_[static_cast<std::size_t>(m)];
+  if (n_records_ == 0) s.slack_at_start = slack;
+  if (slack && !s.ever_slack) {
+    s.ever_slack = true;
+    s.first_slack_s = r.time_s;
+    s.first_element = first_slack;
+  }
+  if (slack && n_records_ > 0) s.slack_duration_s += r.time_s - s.last_time_s;
+  s.slack_now = slack;
+  s.last_time_s = r.time_s;
+}
+
+}  // namespace deploydyn

@@ -1,0 +1,98 @@
+#pragma once
+// The member checks at every accepted step (docs/theory.md, "Member checks and the verdict"):
+// a RecordSink that wants every step, fed from the same records as the envelopes
+// (output/envelope.hpp), never only the output times. Per member and check it keeps the largest
+// utilization (1 = at capacity) with its time and element, and when it first exceeded 1; per
+// cable when and for how long it was slack; per driver with a limit its effort's utilization.
+// It reads the element results by their quantity names, through the element interface only.
+
+#include <array>
+#include <vector>
+
+#include "deploydyn/checks/check_kind.hpp"
+#include "deploydyn/checks/member_capacities.hpp"
+#include "deploydyn/solvers/step_record.hpp"
+
+namespace deploydyn {
+
+// One check of one member (or driver) over the steps recorded so far.
+struct CheckHistory {
+  double max = 0.0;            // the largest utilization
+  double time_of_max_s = 0.0;
+  int element = -1;            // where (index within the member's kind); -1 for a driver
+  bool exceeded = false;       // above 1 at some step
+  // The first step above 1, and when the utilization passed 1: linear between that step and the
+  // one before (the step itself when it is the first record or the one before was not below 1).
+  double first_exceeded_s = 0.0;
+  double first_exceeded_step_s = 0.0;
+  double utilization_at_first = 0.0;
+  int element_at_first = -1;
+  bool recorded = false;
+  double last = 0.0;           // at the latest step
+  double last_time_s = 0.0;
+
+  void update(double utilization, int where, double t);
+};
+
+// When a cable member carried no tension (an element of it slack: mechanical strain < 0).
+struct SlackHistory {
+  bool slack_at_start = false;   // at the first record (t = 0, after the initial equilibrium)
+  bool ever_slack = false;
+  double first_slack_s = 0.0;
+  int first_element = -1;        // which of its elements was slack first
+  double slack_duration_s = 0.0;  // the steps that end slack, summed
+  bool slack_now = false;
+  double last_time_s = 0.0;
+};
+
+class MemberChecks final : public RecordSink {
+ public:
+  explicit MemberChecks(const Model& model);
+
+  void record(const StepRecord& record) override;
+  bool wants_every_step() const override { return true; }
+
+  const std::vector<CheckedMember>& members() const { return members_; }
+  // Whether `kind` runs on member `member` (its capacity is given): has_capacity.
+  bool runs(int member, CheckKind kind) const { return slot(member, kind) >= 0; }
+  // Its history; an empty one (never recorded) when it does not run.
+  const CheckHistory& history(int member, CheckKind kind) const;
+  const SlackHistory& slack(int member) const { return slack_[static_cast<std::size_t>(member)]; }
+  const CheckHistory& driver(int driver) const { return drivers_[static_cast<std::size_t>(driver)]; }
+  bool driver_runs(int driver) const { return driver_limits_[static_cast<std::size_t>(driver)] > 0.0; }
+  int n_records() const { return n_records_; }
+  double last_time_s() const { return last_time_s_; }
+  // Wall time spent in record() (s): the checks' own cost, for docs/performance.md.
+  double evaluation_time_s() const { return evaluation_time_s_; }
+
+ private:
+  void check_member(int m, const StepRecord& record);
+  int slot(int member, CheckKind kind) const {
+    return slots_[static_cast<std::size_t>(member)][static_cast<std::size_t>(kind)];
+  }
+
+  int dimension_ = 2;
+  std::vector<CheckedMember> members_;
+  // Per member and check the index of its history in histories_, or −1 when it does not run:
+  // only the checks that run keep one (a roof's bar has 2 of 6), for memory.
+  std::vector<std::array<int, kNumCheckKinds>> slots_;
+  std::vector<CheckHistory> histories_;
+  std::vector<SlackHistory> slack_;
+  std::vector<double> driver_limits_;  // 0: none
+  std::vector<CheckHistory> drivers_;
+  // Where the members' results are in a StepRecord: the group of each kind (bar, beam, cable) in
+  // element_kinds() and its quantities' indices; −1 when absent.
+  struct Layout {
+    int group = -1;
+    int axial_force = -1;  // axial_force_N
+    int moment_z = -1;     // bending_moment_z_Nm
+    int moment_y = -1;     // bending_moment_y_Nm (3D beams)
+    int slack = -1;        // slack (cables)
+  };
+  std::array<Layout, 3> layouts_;  // by MemberKind
+  int n_records_ = 0;
+  double last_time_s_ = 0.0;
+  double evaluation_time_s_ = 0.0;
+};
+
+}  // namespace deploydyn

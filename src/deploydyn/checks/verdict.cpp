@@ -1,0 +1,268 @@
+#include "deploydyn/checks/verdict.hpp"
+
+#include <fmt/format.h>
+#include <fmt/ranges.h>
+
+#include <algorithm>
+
+namespace deploydyn {
+namespace {
+
+using nlohmann::ordered_json;
+
+// The checks that apply to a member of each kind, in CheckKind order.
+std::vector<CheckKind> checks_of(MemberKind kind) {
+  switch (kind) {
+    case MemberKind::bar:
+      return {CheckKind::buckling, CheckKind::stress};
+    case MemberKind::beam:
+      return {CheckKind::buckling, CheckKind::stress, CheckKind::interaction};
+    case MemberKind::cable:
+      break;
+  }
+  return {CheckKind::cable_break, CheckKind::cable_slack};
+}
+
+// What a check needs that the model did not give, for "checks_not_run" and the CLI.
+const char* missing_capacity(CheckKind kind) {
+  switch (kind) {
+    case CheckKind::buckling:
+      return "bars need 'inertia' or a 'section' (beams always have their second moments)";
+    case CheckKind::stress:
+      return "materials need 'yield_strength'; beams also section moduli ('section' or 'section_modulus_z')";
+    case CheckKind::interaction:
+      return "beam members need 'yield_strength' in their material and section moduli";
+    case CheckKind::cable_break:
+      return "cables need 'break_load'";
+    case CheckKind::cable_slack:
+      return "";
+    case CheckKind::driver_effort:
+      return "drivers need 'torque_limit' or 'force_limit'";
+  }
+  return "";
+}
+
+std::string name(CheckKind kind) { return std::string(kCheckKinds.name(kind)); }
+
+void take_overview(CheckOverview& o, const CheckHistory& h, const std::string& member, const std::string& element) {
+  if (!h.recorded) return;
+  if (!o.recorded || h.max > o.max) {
+    o.max = h.max;
+    o.member = member;
+    o.element = element;
+    o.time_s = h.time_of_max_s;
+  }
+  o.recorded = true;
+  if (h.exceeded) ++o.n_exceeded;
+}
+
+std::string failure_sentence(const VerdictFailure& f) {
+  if (f.check == "run") return fmt::format("the run failed at t = {:.6g} s: {}", f.time_s, f.message);
+  if (f.check == name(CheckKind::cable_slack)) {
+    return fmt::format("cable member '{}' goes slack at t = {:.6g} s (its slack is forbidden)", f.member, f.time_s);
+  }
+  const std::string what = f.check == name(CheckKind::driver_effort)
+                               ? fmt::format("the effort of driver '{}' exceeds its limit", f.member)
+                               : fmt::format("{} of member '{}' exceeds its capacity", f.check, f.member);
+  return fmt::format("{} at t = {:.6g} s (utilization {:.3f} at the step to t = {:.6g} s{})", what, f.time_s,
+                     f.utilization.value_or(0.0), f.step_time_s,
+                     f.element.empty() || f.element == f.member ? "" : fmt::format(", element '{}'", f.element));
+}
+
+ordered_json history_json(const CheckHistory& h, const std::string& element) {
+  ordered_json j = {{"utilization", h.max}, {"time_s", h.time_of_max_s}};
+  if (!element.empty()) j["element"] = element;
+  if (h.exceeded) j["first_exceeded_s"] = h.first_exceeded_s;
+  return j;
+}
+
+}  // namespace
+
+Verdict make_verdict(const Model& model, const MemberChecks& checks, const RunReport& report) {
+  Verdict v;
+  std::vector<VerdictFailure> failures;
+  const auto overview = [&](CheckKind kind) -> CheckOverview& { return v.checks[static_cast<std::size_t>(kind)]; };
+  const std::vector<CheckedMember>& members = checks.members();
+  for (std::size_t i = 0; i < members.size(); ++i) {
+    const int m = static_cast<int>(i);
+    const CheckedMember& member = members[i];
+    MemberUtilization utilization{member.name, std::string(kMemberKinds.name(member.kind)), "", 0.0, {}};
+    for (const CheckKind kind : checks_of(member.kind)) {
+      CheckOverview& o = overview(kind);
+      o.applies = true;
+      if (!checks.runs(m, kind)) {
+        ++o.n_without;
+        continue;
+      }
+      ++o.n_checked;
+      if (kind == CheckKind::cable_slack) {
+        const SlackHistory& s = checks.slack(m);
+        if (!s.ever_slack) continue;
+        const std::string element = member_element_name(model, member.kind, s.first_element);
+        v.slack.push_back({member.name, element, s.slack_at_start, s.first_slack_s, s.slack_duration_s,
+                           member.slack_forbidden});
+        if (member.slack_forbidden) {
+          ++o.n_exceeded;
+          failures.push_back({name(kind), member.name, element, s.first_slack_s, s.first_slack_s, std::nullopt, ""});
+        }
+        continue;
+      }
+      const CheckHistory& h = checks.history(m, kind);
+      if (!h.recorded) continue;
+      const std::string element = member_element_name(model, member.kind, h.element);
+      take_overview(o, h, member.name, element);
+      if (h.exceeded) {
+        failures.push_back({name(kind), member.name, member_element_name(model, member.kind, h.element_at_first),
+                            h.first_exceeded_s, h.first_exceeded_step_s, h.utilization_at_first, ""});
+      }
+      utilization.checks.push_back({kind, h, element});
+      if (utilization.governing.empty() || h.max > utilization.max) {
+        utilization.governing = name(kind);
+        utilization.max = h.max;
+      }
+    }
+    if (!utilization.checks.empty()) v.members.push_back(std::move(utilization));
+  }
+  for (std::size_t d = 0; d < model.drivers.size(); ++d) {
+    CheckOverview& o = overview(CheckKind::driver_effort);
+    o.applies = true;
+    const int driver = static_cast<int>(d);
+    if (!checks.driver_runs(driver)) {
+      ++o.n_without;
+      continue;
+    }
+    ++o.n_checked;
+    const CheckHistory& h = checks.driver(driver);
+    if (!h.recorded) continue;
+    take_overview(o, h, model.drivers[d].name, "");
+    if (h.exceeded) {
+      failures.push_back({name(CheckKind::driver_effort), model.drivers[d].name, "", h.first_exceeded_s,
+                          h.first_exceeded_step_s, h.utilization_at_first, ""});
+    }
+    v.members.push_back({model.drivers[d].name, "driver", name(CheckKind::driver_effort), h.max,
+                         {{CheckKind::driver_effort, h, ""}}});
+  }
+  v.n_members = static_cast<int>(v.members.size());
+  std::stable_sort(v.members.begin(), v.members.end(),
+                   [](const MemberUtilization& a, const MemberUtilization& b) { return a.max > b.max; });
+  if (v.members.size() > kVerdictMembers) v.members.resize(kVerdictMembers);
+
+  const auto first = std::min_element(failures.begin(), failures.end(), [](const VerdictFailure& a, const VerdictFailure& b) {
+    return a.time_s < b.time_s;
+  });
+  if (first != failures.end()) v.first_failure = *first;
+  if (report.status == RunStatus::failed && (!v.first_failure || v.first_failure->time_s > report.failure.time_s)) {
+    v.first_failure = VerdictFailure{"run", "", "", report.failure.time_s, report.failure.time_s, std::nullopt,
+                                     report.failure.reason.empty() ? report.message : report.failure.reason};
+  }
+  v.deploys = report.status == RunStatus::completed && !v.first_failure;
+  if (v.first_failure) {
+    v.reason = failure_sentence(*v.first_failure);
+  } else if (report.status == RunStatus::interrupted) {
+    v.reason = fmt::format("the run was interrupted at t = {:.6g} s, before its end: not shown to deploy",
+                           report.time_reached_s);
+  } else {
+    bool any_capacity = false;  // cable slack needs none
+    for (std::size_t k = 0; k < kNumCheckKinds; ++k) {
+      any_capacity = any_capacity || (v.checks[k].n_checked > 0 && kCheckKinds.value(k) != CheckKind::cable_slack);
+    }
+    v.reason = any_capacity ? fmt::format("no check exceeded its capacity in the run to t = {:.6g} s",
+                                          report.time_reached_s)
+                            : "the run completed; the model gives no capacity to check against";
+  }
+  return v;
+}
+
+ordered_json verdict_json(const Verdict& v) {
+  ordered_json j;
+  j["deploys"] = v.deploys;
+  j["reason"] = v.reason;
+  if (v.first_failure) {
+    const VerdictFailure& f = *v.first_failure;
+    ordered_json failure = {{"check", f.check}};
+    if (!f.member.empty()) failure["member"] = f.member;
+    if (!f.element.empty()) failure["element"] = f.element;
+    failure["time_s"] = f.time_s;
+    failure["step_time_s"] = f.step_time_s;
+    failure["utilization"] = f.utilization ? ordered_json(*f.utilization) : ordered_json(nullptr);
+    if (!f.message.empty()) failure["message"] = f.message;
+    j["first_failure"] = failure;
+  } else {
+    j["first_failure"] = nullptr;
+  }
+  ordered_json run = ordered_json::array(), not_run = ordered_json::object(), largest = ordered_json::object();
+  for (std::size_t k = 0; k < kNumCheckKinds; ++k) {
+    const CheckKind kind = kCheckKinds.value(k);
+    const CheckOverview& o = v.checks[k];
+    if (!o.applies) continue;
+    if (o.n_checked == 0) {
+      not_run[name(kind)] = missing_capacity(kind);
+      continue;
+    }
+    run.push_back(name(kind));
+    ordered_json entry = {{"checked", o.n_checked}, {"without_capacity", o.n_without}, {"exceeded", o.n_exceeded}};
+    if (kind == CheckKind::cable_slack) {
+      entry["went_slack"] = v.slack.size();
+    } else if (o.recorded) {
+      entry["max_utilization"] = o.max;
+      entry["member"] = o.member;
+      if (!o.element.empty()) entry["element"] = o.element;
+      entry["time_s"] = o.time_s;
+    }
+    largest[name(kind)] = entry;
+  }
+  j["checks_run"] = run;
+  j["checks_not_run"] = not_run;
+  j["checks"] = largest;
+  ordered_json slack = ordered_json::array();
+  for (const SlackReport& s : v.slack) {
+    slack.push_back({{"member", s.member}, {"element", s.element}, {"from_start", s.from_start},
+                     {"first_time_s", s.first_time_s}, {"duration_s", s.duration_s}, {"forbidden", s.forbidden}});
+  }
+  j["slack"] = slack;
+  ordered_json members = ordered_json::object();
+  for (const MemberUtilization& m : v.members) {
+    ordered_json entry = {{"kind", m.kind}, {"governing", m.governing}, {"utilization", m.max}};
+    for (const MemberUtilization::Entry& e : m.checks) entry[name(e.check)] = history_json(e.history, e.element);
+    members[m.name] = entry;
+  }
+  j["members"] = members;
+  if (static_cast<std::size_t>(v.n_members) > v.members.size()) {
+    j["members_note"] = fmt::format("'members' lists the {} of {} members and drivers of highest utilization",
+                                    v.members.size(), v.n_members);
+  }
+  return j;
+}
+
+std::vector<std::string> verdict_lines(const Verdict& v) {
+  std::vector<std::string> lines;
+  lines.push_back(fmt::format("verdict: {}: {}", v.deploys ? "deploys" : "DOES NOT DEPLOY", v.reason));
+  std::vector<std::string> largest, not_checked;
+  for (std::size_t k = 0; k < kNumCheckKinds; ++k) {
+    const CheckKind kind = kCheckKinds.value(k);
+    const CheckOverview& o = v.checks[k];
+    if (!o.applies || kind == CheckKind::cable_slack) continue;
+    if (o.n_checked == 0) {
+      not_checked.push_back(name(kind));
+    } else if (o.recorded) {
+      largest.push_back(fmt::format("{} {:.3g} ({}, t = {:.4g} s)", name(kind), o.max, o.member, o.time_s));
+    }
+  }
+  if (!largest.empty()) lines.push_back(fmt::format("  largest utilization: {}", fmt::join(largest, "; ")));
+  if (!not_checked.empty()) {
+    lines.push_back(fmt::format("  not checked, no capacity given: {}", fmt::join(not_checked, ", ")));
+  }
+  constexpr std::size_t kShownSlack = 3;
+  for (std::size_t i = 0; i < v.slack.size() && i < kShownSlack; ++i) {
+    const SlackReport& s = v.slack[i];
+    lines.push_back(fmt::format("  cable '{}' slack {} t = {:.4g} s, for {:.4g} s in all{}", s.member,
+                                s.from_start ? "from the start," : "first at", s.first_time_s, s.duration_s,
+                                s.forbidden ? " (forbidden)" : ""));
+  }
+  if (v.slack.size() > kShownSlack) {
+    lines.push_back(fmt::format("  … and {} more slack cables (summary.json, verdict.slack)", v.slack.size() - kShownSlack));
+  }
+  return lines;
+}
+
+}  // namespace deploydyn

@@ -1,0 +1,83 @@
+#pragma once
+// The verdict of a run (docs/theory.md, "Member checks and the verdict"): does the structure
+// deploy, and if not, what fails first, when and by how much; the largest utilization of each
+// check with its governing member; which checks ran and which had no capacity to check against.
+// summary.json's `verdict` (verdict_json) and the CLI's closing lines (verdict_lines).
+
+#include <array>
+#include <nlohmann/json.hpp>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "deploydyn/checks/check_kind.hpp"
+#include "deploydyn/checks/member_checks.hpp"
+#include "deploydyn/solvers/analysis.hpp"
+
+namespace deploydyn {
+
+// A check that exceeded its capacity (or a forbidden slack, or the run itself failing).
+struct VerdictFailure {
+  std::string check;    // a CheckKind's name, or "run"
+  std::string member;   // the member or driver; empty for the run
+  std::string element;  // where in the member; empty for drivers and the run
+  double time_s = 0.0;       // when it passed its capacity (linear between steps)
+  double step_time_s = 0.0;  // the first accepted step beyond it
+  std::optional<double> utilization;  // at that step; none for slack and the run
+  std::string message;       // the run's failure
+};
+
+// One kind of check over every member it applies to.
+struct CheckOverview {
+  bool applies = false;    // the model has members (drivers) of the kind it checks
+  int n_checked = 0;       // members (drivers) whose capacity is given
+  int n_without = 0;       // members it applies to without that capacity
+  int n_exceeded = 0;
+  bool recorded = false;   // a utilization was computed
+  double max = 0.0;        // the largest utilization, and where and when
+  std::string member, element;
+  double time_s = 0.0;
+};
+
+struct SlackReport {
+  std::string member, element;
+  bool from_start = false;
+  double first_time_s = 0.0;
+  double duration_s = 0.0;
+  bool forbidden = false;
+};
+
+// One member's (or driver's) results, for the members most utilized.
+struct MemberUtilization {
+  std::string name;
+  std::string kind;       // bar, beam, cable, driver
+  std::string governing;  // the check of its largest utilization
+  double max = 0.0;
+  struct Entry {
+    CheckKind check;
+    CheckHistory history;
+    std::string element;
+  };
+  std::vector<Entry> checks;
+};
+
+struct Verdict {
+  bool deploys = true;
+  std::string reason;  // one sentence for people
+  std::optional<VerdictFailure> first_failure;
+  std::array<CheckOverview, kNumCheckKinds> checks;  // by CheckKind
+  std::vector<SlackReport> slack;                    // every cable member that went slack
+  std::vector<MemberUtilization> members;            // the most utilized first, at most kVerdictMembers
+  int n_members = 0;                                 // members and checked drivers in all
+};
+
+// summary.json lists this many members of highest utilization.
+inline constexpr std::size_t kVerdictMembers = 20;
+
+Verdict make_verdict(const Model& model, const MemberChecks& checks, const RunReport& report);
+nlohmann::ordered_json verdict_json(const Verdict& verdict);
+// A few lines for the end of `deploydyn run`: the verdict, the largest utilizations, what was
+// not checked, the slack cables.
+std::vector<std::string> verdict_lines(const Verdict& verdict);
+
+}  // namespace deploydyn
