@@ -10,6 +10,7 @@
 #include <csignal>
 #include <fstream>
 #include <string>
+#include <string_view>
 #include <thread>
 #include <vector>
 
@@ -65,15 +66,26 @@ std::vector<LongCommand> long_commands() {
   };
 }
 
+// The fields of a CSV line: commas outside double quotes, plus one (a failed case's message is
+// quoted and may hold commas).
+long n_fields(std::string_view line) {
+  long fields = 1;
+  bool quoted = false;
+  for (const char c : line) {
+    if (c == '"') quoted = !quoted;
+    if (c == ',' && !quoted) ++fields;
+  }
+  return fields;
+}
+
 bool row_complete(const std::string& csv) {
   if (csv.empty() || csv.back() != '\n') return false;
-  const std::size_t header_end = csv.find('\n');
-  const auto n_commas = std::count(csv.begin(), csv.begin() + static_cast<long>(header_end), ',');
+  const std::string_view text(csv);
+  const std::size_t header_end = text.find('\n');
+  const long fields = n_fields(text.substr(0, header_end));
   std::size_t start = header_end + 1;
-  for (std::size_t end; (end = csv.find('\n', start)) != std::string::npos; start = end + 1) {
-    if (std::count(csv.begin() + static_cast<long>(start), csv.begin() + static_cast<long>(end), ',') != n_commas) {
-      return false;
-    }
+  for (std::size_t end; (end = text.find('\n', start)) != std::string_view::npos; start = end + 1) {
+    if (n_fields(text.substr(start, end - start)) != fields) return false;
   }
   return true;
 }

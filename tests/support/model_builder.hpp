@@ -76,7 +76,10 @@ class ModelBuilder {
   // A bar with its own material, so that each bar can have its own E and α.
   int bar(int node_a, int node_b, const BarSpec& spec) {
     const std::string name = std::to_string(model_.n_bars() + 1);
-    model_.materials.push_back({"material " + name, spec.youngs_modulus_Pa, spec.expansion_per_C, {}, {}});
+    Material& material = model_.materials.emplace_back();
+    material.name = "material " + name;
+    material.youngs_modulus_Pa = spec.youngs_modulus_Pa;
+    material.expansion_per_C = spec.expansion_per_C;
     BarElement e;
     e.name = name;
     e.node_a = node_a;
