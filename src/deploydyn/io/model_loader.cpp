@@ -347,7 +347,8 @@ class ModelReader {
       Section out;
       out.name = name;
       out.shape = spec.at("shape").choice(kSectionShapes);
-      const auto dimension = [&](std::string_view key) { return spec.at(key).number(Sign::positive, "m"); };
+      const YamlValue& entry = spec;  // a lambda may not capture a structured binding (clang before 16)
+      const auto dimension = [&](std::string_view key) { return entry.at(key).number(Sign::positive, "m"); };
       switch (out.shape) {
         case SectionShape::circular_tube:
           spec.expect_keys(model_keys::kCircularTubeSection);
