@@ -636,14 +636,17 @@ class ModelBuilder:
         self._section("nodes")[_name(where, "name", name)] = spec
         return self
 
-    def material(self, name, E, alpha=0.0, density=None, damping=None):
+    def material(self, name, E, alpha=0.0, density=None, damping=None, yield_strength=None):
         """E (Pa), alpha (1/°C), density (kg/m³, for bars that give no mass), damping (material
         damping of its bars and cables, as the model file's mapping: {"ratio": ζ, "frequency":
-        f (Hz)}, {"loss_factor": η, "frequency": f} or {"time": τ (s)})."""
+        f (Hz)}, {"loss_factor": η, "frequency": f} or {"time": τ (s)}), yield_strength (Pa, the
+        stress the member checks allow)."""
         where = "ModelBuilder.material"
         spec = {"E": _number(where, "E", E), "alpha": _number(where, "alpha", alpha)}
         if density is not None:
             spec["density"] = _number(where, "density", density)
+        if yield_strength is not None:
+            spec["yield_strength"] = _number(where, "yield_strength", yield_strength)
         if damping is not None:
             if not isinstance(damping, dict):
                 raise TypeError(f"{where}: damping must be a dict such as {{'ratio': 0.02, 'frequency': 10}}, "

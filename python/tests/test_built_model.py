@@ -244,3 +244,25 @@ def test_spring_driven_hinge_latches_and_the_run_ends_there():
     # Released from rest, θ = θ_r − 0.8 cos(ω t) reaches the latch at cos(ω t) = 3/8.
     omega = math.sqrt(10.0 / (1.0 + 0.2 ** 2))
     assert result["t"][-1] == pytest.approx(math.acos(0.3 / 0.8) / omega, abs=2e-3)
+
+
+def test_material_damping_and_strength_reach_the_model_and_the_verdict():
+    """ModelBuilder.material's damping and yield_strength are the model file's keys: the
+    damping time τ = ζ / (π f) is what the run's model writes back, and the strength makes the
+    stress check run, at |σ| = EαΔT of the heated bar held by its pins."""
+    dT, strength = 100.0, 400e6
+    model = (deploydyn.ModelBuilder("damped heated bar")
+             .node("A", 0, 0).node("B", 1.5, 0)
+             .material("steel", E=E, alpha=ALPHA, damping={"ratio": 0.02, "frequency": 10},
+                       yield_strength=strength)
+             .bar("1", "A", "B", area=AREA, material="steel", mass=1.2)
+             .support("A").support("B")
+             .thermal(deploydyn.smooth_step(0, 0, 1, dT))
+             .analysis(type="static", end=1.0, step=0.25)
+             .build())
+    assert "time: " + repr(0.02 / (math.pi * 10))[:8] in model.to_yaml()
+    verdict = model.run(check=True).summary["verdict"]
+    assert verdict["deploys"] is True
+    assert verdict["checks"]["stress"]["max_utilization"] == pytest.approx(E * ALPHA * dT / strength, rel=1e-9)
+    with pytest.raises(TypeError, match="damping must be a dict"):
+        deploydyn.ModelBuilder("x").material("steel", E=E, damping=0.02)
