@@ -33,6 +33,7 @@ core is plot_columns of scripts/plot_paper.py, which draws the paper's figures; 
 read by deploydyn's reader (python/deploydyn/result_folder.py) through it.
 """
 import argparse
+import csv
 import pathlib
 import sys
 
@@ -355,7 +356,6 @@ def analysis_type(folder):
 
 def read_table(file):
     """A CSV table of numbers as {column: array}; text cells (path.csv's event) as strings."""
-    import csv
     with open(file, newline="", encoding="utf-8") as stream:
         rows = list(csv.reader(stream))
     if not rows:

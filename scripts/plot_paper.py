@@ -144,7 +144,7 @@ def _column_look(j, n_runs):
     return None, COLUMN_STYLES[j % len(COLUMN_STYLES)]
 
 
-def _draw_band(ax, panel, run, values_of, colour):
+def _draw_band(ax, panel, values_of, colour):
     """The range of the panel's band columns in one run as one shaded area."""
     columns = [values_of(name) for name in panel.band]
     columns = [c for c in columns if c is not None]
@@ -190,7 +190,7 @@ def _draw_panel(ax, panel, runs, data):
                 text = run.label if len(columns) == 1 else f"{run.label}: {label}"
             ax.plot(table["t"], values * panel.scale, color=colour, linestyle=style, linewidth=1.6, label=text)
         if panel.band:
-            _draw_band(ax, panel, run, values_of, "grey" if len(shown) == 1 else run_colour)
+            _draw_band(ax, panel, values_of, "grey" if len(shown) == 1 else run_colour)
         for time, label in panel.vlines.get(run.label, []):
             ax.axvline(time, color="dimgrey" if len(shown) == 1 else run_colour, linestyle=":", linewidth=1.0,
                        label=None if label in marked else label)
