@@ -1,7 +1,7 @@
 # The two entry points. Each installs what is missing (Debian packages), configures, builds,
 # then runs. `make demo`: the paper's study, the scissor structures and the mast into results/. `make test`: every test.
 # CI also runs `make sanitize` (the tests under ASan + UBSan) and `make fuzz` (60 s of libFuzzer,
-# shared by its two targets).
+# shared by its two targets, built in the sanitizer's build).
 PRESET ?= release
 BUILD  := build/$(PRESET)
 PYTHON := /usr/bin/python3
@@ -39,15 +39,16 @@ bench: build
 	@cmake --build $(BUILD) --target deploydyn_bench
 	@$(PYTHON) scripts/bench_table.py --binary $(BUILD)/bench/deploydyn_bench --repetitions $(BENCH_REPETITIONS)
 
-# The whole test suite built with AddressSanitizer and UndefinedBehaviorSanitizer. The asan and
-# fuzz presets compile at -O1 -g1 (line tables: file and line in every report), which halves
-# their build time against -O2 -g and keeps CI well inside its budget. The asan test preset
-# leaves out the convergence-order studies, the slender-column study and three long 3D beam
-# verifications (about 200 s of the sanitizer's run): they repeat, over many more steps, code
-# that other tests run under it.
+# The whole test suite built with clang's AddressSanitizer and UndefinedBehaviorSanitizer, and in
+# the same build the libFuzzer targets (one compilation of the library serves both). It compiles
+# at -O1 -g1 (line tables: file and line in every report), which halves its build time against
+# -O2 -g. The asan test preset leaves out the convergence-order studies, the slender-column study
+# and three long 3D beam verifications (about 200 s of the sanitizer's run): they repeat, over
+# many more steps, code that other tests run under it.
+SANITIZE_BUILD := build/asan
 sanitize: deps
-	@test -f build/asan/build.ninja || cmake --preset asan >/dev/null
-	@cmake --build build/asan
+	@test -f $(SANITIZE_BUILD)/build.ninja || cmake --preset asan >/dev/null
+	@cmake --build $(SANITIZE_BUILD)
 	@ctest --preset asan -j2
 
 # Bounded libFuzzer runs, FUZZ_SECONDS in all: two thirds for the model loader, seeded with the
@@ -57,15 +58,15 @@ FUZZ_STUDY_SECONDS = $(shell echo $$(( $(FUZZ_SECONDS) / 3 )))
 FUZZ_MODEL_SECONDS = $(shell echo $$(( $(FUZZ_SECONDS) - $(FUZZ_SECONDS) / 3 )))
 FUZZ_STATS := grep -E '^(stat::number_of_executed_units|stat::average_exec_per_sec|==|SUMMARY|Done)'
 fuzz: deps
-	@test -f build/fuzz/build.ninja || cmake --preset fuzz >/dev/null
-	@cmake --build --preset fuzz
-	@rm -rf build/fuzz/corpus build/fuzz/study_corpus && mkdir -p build/fuzz/corpus build/fuzz/study_corpus
-	@cp examples/paper/*.yaml examples/beams/*.yaml examples/petal/*.yaml examples/cables/*.yaml examples/boom/*.yaml examples/tutorial/*.yaml tests/io/bad_models/*.yaml fuzz/seeds/*.json build/fuzz/corpus/
-	@cp examples/*/*_study.yaml fuzz/seeds/study/* build/fuzz/study_corpus/
-	@build/fuzz/model_loader_fuzzer build/fuzz/corpus -dict=fuzz/model.dict -max_len=4096 \
+	@test -f $(SANITIZE_BUILD)/build.ninja || cmake --preset asan >/dev/null
+	@cmake --build $(SANITIZE_BUILD) --target model_loader_fuzzer study_loader_fuzzer
+	@rm -rf $(SANITIZE_BUILD)/corpus $(SANITIZE_BUILD)/study_corpus && mkdir -p $(SANITIZE_BUILD)/corpus $(SANITIZE_BUILD)/study_corpus
+	@cp examples/paper/*.yaml examples/beams/*.yaml examples/petal/*.yaml examples/cables/*.yaml examples/boom/*.yaml examples/tutorial/*.yaml tests/io/bad_models/*.yaml fuzz/seeds/*.json $(SANITIZE_BUILD)/corpus/
+	@cp examples/*/*_study.yaml fuzz/seeds/study/* $(SANITIZE_BUILD)/study_corpus/
+	@$(SANITIZE_BUILD)/model_loader_fuzzer $(SANITIZE_BUILD)/corpus -dict=fuzz/model.dict -max_len=4096 \
 	  -max_total_time=$(FUZZ_MODEL_SECONDS) -timeout=10 -rss_limit_mb=4096 -print_final_stats=1 2>&1 \
 	  | $(FUZZ_STATS) ; test $${PIPESTATUS[0]} -eq 0
-	@build/fuzz/study_loader_fuzzer build/fuzz/study_corpus -dict=fuzz/study.dict -max_len=4096 \
+	@$(SANITIZE_BUILD)/study_loader_fuzzer $(SANITIZE_BUILD)/study_corpus -dict=fuzz/study.dict -max_len=4096 \
 	  -max_total_time=$(FUZZ_STUDY_SECONDS) -timeout=10 -rss_limit_mb=4096 -print_final_stats=1 2>&1 \
 	  | $(FUZZ_STATS) ; test $${PIPESTATUS[0]} -eq 0
 

@@ -2,7 +2,7 @@
 // Model whose mechanics can be built, or be rejected with an InputError. Anything else — a
 // crash, a sanitizer report, another exception — is a bug.
 //
-// Built by the `fuzz` CMake preset (clang); run by `make fuzz` with the examples and the bad
+// Built by the `asan` CMake preset (clang, beside the sanitized tests); run by `make fuzz` with the examples and the bad
 // models as seeds.
 
 #include <cstddef>

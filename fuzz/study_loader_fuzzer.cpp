@@ -4,7 +4,7 @@
 // that grows with `sampling.cases` — is a bug.
 //
 // The study's model is read from examples/paper (the fuzzed text names general.yaml or
-// parallel.yaml there); nothing is written. Built by the `fuzz` CMake preset (clang); run by
+// parallel.yaml there); nothing is written. Built by the `asan` CMake preset (clang); run by
 // `make fuzz` with the examples' study files and fuzz/seeds/study as seeds.
 
 #include <cstddef>
