@@ -121,6 +121,12 @@ int run_prepared_study(Study& study, const StudyArguments& arguments, StudyContr
   control.case_done = [&](std::size_t i, const CaseRun& run) {
     if (run.outcome.process == 0 || run.outcome.lost) case_done(i, run);
   };
+  // Reading 10⁵ case folders takes a while: say what the study is doing after its last case.
+  control.tables_started = [&](std::size_t n_folders) {
+    if (!arguments.quiet && n_folders >= 1000) {
+      fmt::print(stderr, "making {} from {} case folders\n", study.table_file().string(), n_folders);
+    }
+  };
   const auto start = std::chrono::steady_clock::now();
   const std::vector<CaseOutcome> outcomes = run_study(study, control);
   const double wall_s =

@@ -234,6 +234,32 @@ TEST(StudyRunner, AStopLeavesTheRestNotStarted) {
   EXPECT_EQ(rows[1].at("shape_error"), "");
 }
 
+// A signal that arrives after the cases, while study.csv is made from the case folders: the
+// tables are not written (not half-written), study.json says so, and every case folder is kept
+// for `--resume`.
+TEST(StudyRunner, AStopWhileTheTablesAreMadeLeavesNoTableAndKeepsTheCases) {
+  ScratchFolder folder("study_stopped_tables");
+  const Study study = short_general_study(folder.path(), 1);
+  std::atomic<bool> stop{false};
+  StudyControl control;
+  control.stop = &stop;
+  std::size_t announced = 0;
+  control.tables_started = [&](std::size_t n_folders) {
+    announced = n_folders;
+    stop = true;  // what the signal handler does
+  };
+  const std::vector<CaseOutcome> outcomes = run_study(study, control);
+  EXPECT_EQ(announced, study.n_cases());
+  for (std::size_t i = 0; i < study.n_cases(); ++i) {
+    EXPECT_EQ(outcomes[i].status, RunStatus::completed);
+    EXPECT_TRUE(std::filesystem::exists(study.case_folder(i) / "summary.json"));
+  }
+  EXPECT_FALSE(std::filesystem::exists(study.table_file()));
+  const nlohmann::json status = nlohmann::json::parse(read_text(study.out_folder / "study.json"));
+  EXPECT_EQ(status["status"], "interrupted");
+  EXPECT_NE(status.dump().find("the tables were not written"), std::string::npos) << status.dump();
+}
+
 }  // namespace
 }  // namespace deploydyn
 

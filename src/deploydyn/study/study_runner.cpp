@@ -275,6 +275,7 @@ std::vector<CaseOutcome> run_study(const Study& study, const StudyControl& contr
   // leaves the tables unwritten, and says so. (After a stop while the cases ran, only the cases
   // that ran are read, each far quicker than it ran: the tables are written.)
   const bool stopped_in_cases = stopped();
+  if (control.tables_started) control.tables_started(n_cases);
   std::vector<CaseResult> results;
   results.reserve(n_cases);
   std::optional<OutputError> table_error;

@@ -60,6 +60,9 @@ struct StudyControl {
   // report `interrupted`, cases not yet started are not started; set while the case folders
   // are read for study.csv, the tables are not written (study.json: "interrupted").
   const std::atomic<bool>* stop = nullptr;
+  // Called once, after the cases, before study.csv is made from the case folders (for 10⁵ cases
+  // a phase of its own, worth telling the user of). May be empty.
+  std::function<void(std::size_t n_folders)> tables_started;
   // Skip the cases that an earlier run of the study completed (same model).
   bool resume = false;
   // A distributed study: the other processes' channel (rank 0 coordinates). Empty: this process only.
