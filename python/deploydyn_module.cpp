@@ -417,7 +417,7 @@ py::dict analysis_info(const Model& model) {
 // from the model's initial state at μ = start.
 py::dict continuation_of(const LoadedModel& loaded, const std::string& parameter, double start,
                          double end, int n_eigenvalues, int max_steps, double time_s,
-                         bool switch_branch, const py::object& stop) {
+                         bool switch_branch, const std::string& stop_at, const py::object& stop) {
   const std::optional<PathParameter> path_parameter = kPathParameters.find(parameter);
   if (!path_parameter) {
     throw std::invalid_argument("continuation: parameter must be 'thermal', 'load' or 'driver', got '" +
@@ -432,6 +432,10 @@ py::dict continuation_of(const LoadedModel& loaded, const std::string& parameter
   options.max_steps = max_steps;
   options.time_s = time_s;
   options.switch_branch = switch_branch;
+  if (stop_at != "end" && stop_at != "first_event") {
+    throw std::invalid_argument("continuation: stop_at must be 'end' or 'first_event', got '" + stop_at + "'");
+  }
+  options.stop_at_first_event = stop_at == "first_event";
   options.newton = loaded.model.analysis.newton;
   validate(options);  // std::invalid_argument → ValueError
   StopWatch watch(stop);
@@ -678,7 +682,7 @@ PYBIND11_MODULE(_core, m) {
       .def("modes", &modes_at, py::arg("n_modes"), py::arg("times"), py::arg("stop") = py::none())
       .def("continuation", &continuation_of, py::arg("parameter"), py::arg("start"), py::arg("end"),
            py::arg("eigenvalues"), py::arg("max_steps"), py::arg("time"), py::arg("switch_branch"),
-           py::arg("stop") = py::none())
+           py::arg("stop_at"), py::arg("stop") = py::none())
       .def("run_in_memory", &run_in_memory, py::arg("stop") = py::none())
       .def("run_into_folder", &run_into_folder, py::arg("folder"), py::arg("stop") = py::none());
 

@@ -427,7 +427,7 @@ class Model:
         return result
 
     def continuation(self, parameter, end, start=0.0, eigenvalues=3, max_steps=2000, time=0.0,
-                     switch_branch=False, stop=None):
+                     switch_branch=False, stop_at="end", stop=None):
         """Trace the static equilibrium as `parameter` goes from `start` to `end`, through limit
         points (arc-length continuation, docs/theory.md "Path following and stability"), as a
         model of `analysis: {type: continuation}` does: "thermal" scales every ΔT (μ = 1: the
@@ -435,7 +435,9 @@ class Model:
         (s). "driver" follows a quasi-static deployment: μ is the time (s) at which the drivers'
         positions, ΔT(t) and the loads are read (`time` is not used). With `switch_branch`, the
         path leaves at its first bifurcation along the critical mode and follows the bifurcated
-        branch. Returns a dict: "mu", "displacement_norm" (m), "eigenvalues" (points × eigenvalues,
+        branch. stop_at: "end" (the path goes on to `end`) or "first_event" (it ends at its first
+        event, that event its last point, "end" then "first_event"), as the model key `stop_at`.
+        Returns a dict: "mu", "displacement_norm" (m), "eigenvalues" (points × eigenvalues,
         N/m, of the tangent stiffness on the constraint-compatible motions; NaN when not
         computed), "n_negative", "q" (points × coordinates), "events" (dicts with "kind"
         limit_point | bifurcation | singular_constraints, "mu", "mu_error", "point", "mode",
@@ -450,9 +452,11 @@ class Model:
         time = _finite(where, "time", time)
         if not isinstance(switch_branch, bool):
             raise TypeError(f"{where}: switch_branch must be a bool, not {_shown(switch_branch)}")
+        if stop_at not in ("end", "first_event"):
+            raise ValueError(f"{where}: stop_at must be 'end' or 'first_event', not {_shown(stop_at)}")
         stop = _stop(where, stop)
         raw = self._core.continuation(parameter, start, end, eigenvalues, max_steps, time, switch_branch,
-                                      stop)
+                                      stop_at, stop)
         out = dict(raw)
         for key in ("mu", "displacement_norm", "eigenvalues", "n_negative", "q"):
             out[key] = np.asarray(raw[key])

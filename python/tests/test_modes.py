@@ -60,6 +60,22 @@ def test_continuation_finds_the_cold_parallel_jam(source_dir):
         model.continuation("pressure", end=1.0)
 
 
+def test_continuation_can_stop_at_its_first_event(source_dir):
+    """stop_at="first_event": the same path ends at the limit point, that point its last, as the
+    model key `stop_at: first_event` does."""
+    model = deploydyn.load(source_dir / "examples" / "paper" / "parallel.yaml",
+                           overrides={"thermal.dT": -200})
+    whole = model.continuation("thermal", end=1.0, max_steps=3000)
+    first = model.continuation("thermal", end=1.0, max_steps=3000, stop_at="first_event")
+    assert first["end"] == "first_event", first["message"]
+    assert len(first["events"]) == 1 and first["events"][0]["kind"] == "limit_point"
+    assert first["events"][0]["mu"] == pytest.approx(whole["events"][0]["mu"], abs=1e-9)
+    assert first["mu"][-1] == pytest.approx(first["events"][0]["mu"], abs=1e-9)
+    assert len(first["mu"]) < len(whole["mu"])
+    with pytest.raises(ValueError, match="stop_at must be 'end' or 'first_event'"):
+        model.continuation("thermal", end=1.0, stop_at="limit")
+
+
 def test_continuation_in_the_driver_time_deploys_the_parallelogram(source_dir):
     """μ = t: the quasi-static deployment at ΔT = 0 ends with the driven bar D–C turned by
     ∫ω = 0.365 · 4 rad from 5°, and A–B parallel to it (a parallelogram)."""
