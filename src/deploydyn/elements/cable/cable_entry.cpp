@@ -21,7 +21,7 @@ constexpr ElementField kFields[] = {
     {"section", "", "none", "a name from `sections`: the cable's area comes from it; not with `area`"},
     {"material", "", "required", "a name from `materials`"},
     {"rest_length", "m", "distance of the nodes' initial positions",
-     "a function > 0 at all times: the rest length L0(t) (a winch); not with `pretension`"},
+     "a function > 0 at all times (checked at load; a `sum` by the sum of its terms' least values): the rest length L0(t) (a winch); not with `pretension`"},
     {"pretension", "N", "none",
      "≥ 0: the tension of the initial cable at ΔT = 0, which sets a constant L0; not with "
      "`rest_length`"},
