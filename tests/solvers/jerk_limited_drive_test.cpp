@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 
@@ -16,10 +17,14 @@ namespace deploydyn {
 namespace {
 
 constexpr char kLift[] = "1.0471975511965976";  // 60° (rad) in 6 s, as the tutorial
-// The smooth step's first-step torque change is the leaf's inertia about A times its start
-// acceleration, 6·θ/T² = 0.17 rad/s²; the cycloidal's is that at t = h, 2π·θ/T² · sin(2πh/T),
-// 1 % of it at h = 2 ms. The bound leaves a factor 10 above that.
-constexpr double kSmoothStartShare = 0.1;
+// Over the first 24 ms (a period of the leaf's 42 Hz mode) the smooth step's torque rises by up
+// to twice the leaf's inertia about A (≈ 2.6e3 kg·m²) times its start acceleration
+// 6·θ/T² = 0.17 rad/s²: 900 N·m measured. The cycloidal's rises with its acceleration
+// 2π·θ/T² · sin(2πt/T), 2.5 % of the smooth step's at 24 ms: 12 N·m. The bounds leave a factor
+// of about 2 and 4.
+constexpr double kFirstPeriod_s = 0.024;
+constexpr double kSmoothStepRiseAtLeast_Nm = 500.0;
+constexpr double kCycloidalShare = 0.1;
 
 testing::RunResult run_with(const std::string& type) {
   const Model model = load_model(DEPLOYDYN_SOURCE_DIR "/examples/tutorial/bascule.yaml",
@@ -44,13 +49,19 @@ TEST(JerkLimitedDrive, CycloidalProfileStartsWithoutAnAccelerationJump) {
   const testing::RunResult cycloid = run_with("cycloidal");
   ASSERT_EQ(stepped.report.status, RunStatus::completed) << stepped.report.message;
   ASSERT_EQ(cycloid.report.status, RunStatus::completed) << cycloid.report.message;
-  const auto first_step_change = [](const testing::RunResult& run) {
-    return std::abs(run.records.at(1).driver_efforts.at(0) - run.records.at(0).driver_efforts.at(0));
+  const auto rise_in_first_period = [](const testing::RunResult& run) {
+    double rise = 0.0;
+    for (const StepRecord& r : run.records) {
+      if (r.time_s <= kFirstPeriod_s) {
+        rise = std::max(rise, std::abs(r.driver_efforts.at(0) - run.records.at(0).driver_efforts.at(0)));
+      }
+    }
+    return rise;
   };
   // Both start from the leaf's static torque.
   EXPECT_NEAR(cycloid.records.at(0).driver_efforts.at(0), stepped.records.at(0).driver_efforts.at(0), 1e-6);
-  EXPECT_GT(first_step_change(stepped), 100.0);  // N·m: inertia ≈ 1.5e3 kg·m² × 0.17 rad/s²
-  EXPECT_LT(first_step_change(cycloid), kSmoothStartShare * first_step_change(stepped));
+  EXPECT_GT(rise_in_first_period(stepped), kSmoothStepRiseAtLeast_Nm);
+  EXPECT_LT(rise_in_first_period(cycloid), kCycloidalShare * rise_in_first_period(stepped));
 }
 
 }  // namespace
