@@ -356,7 +356,9 @@ TEST(BadModel, FunctionsOfTimeAreBoundedInDepthAndParts) {
       load_model_from_string(text, "functions.yaml");
       ADD_FAILURE() << "loaded: " << text.substr(0, 200);
     } catch (const InputError& error) {
-      if (!field.empty()) EXPECT_EQ(error.field(), field) << error.what();
+      if (!field.empty()) {
+        EXPECT_EQ(error.field(), field) << error.what();
+      }
       EXPECT_NE(error.problem().find("a function may hold at most 10000 parts in all"), std::string::npos)
           << error.what();
     }

@@ -172,8 +172,8 @@ TEST(TimeFunction, PiecewiseTakesEachPieceOnItsIntervalAndHoldsItsEnds) {
 }
 
 TEST(TimeFunction, SumAddsItsTerms) {
-  const auto& terms = std::get<TimeFunction::Sum>(sum_of_kinds().kind()).terms;
   const TimeFunction f = sum_of_kinds();
+  const auto& terms = std::get<TimeFunction::Sum>(f.kind()).terms;
   for (double t = -1.0; t <= 6.0; t += 0.1) {
     double value = 0.0, rate = 0.0, acceleration = 0.0, integral = 0.0;
     for (const TimeFunction& term : terms) {
