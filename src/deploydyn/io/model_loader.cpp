@@ -181,10 +181,7 @@ class ModelReader {
     }
   }
 
-  TimeFunction function(const YamlValue& spec) const {
-    FunctionBudget budget;
-    return read_function(spec, &functions_, budget);
-  }
+  TimeFunction function(const YamlValue& spec) const { return read_function(spec, &functions_); }
 
   // What a function spec may still hold: functions inside piecewise and sum nest and multiply
   // (an alias of YAML repeats a whole subtree), so both are bounded (docs/model-format.md,
@@ -232,7 +229,7 @@ class ModelReader {
     const std::size_t type = spec.at("type").choice({"constant", "smooth_step", "smooth_trapezoid", "paper_eq23",
                                                      "table", "polynomial", "harmonic", "cosine_ramp", "cycloidal",
                                                      "piecewise", "sum"});
-    if (type >= 9) {  // holds functions: one level deeper for them
+    if (type >= 9) {  // piecewise and sum hold functions: one level deeper for them
       spend(budget, {.depth = 1, .parts = 1}, spec);
       ++budget.depth;
       TimeFunction f = type == 9 ? piecewise(spec, named, budget) : sum(spec, named, budget);
