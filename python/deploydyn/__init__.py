@@ -75,6 +75,7 @@ __all__ = [
     "ModelBuilder", "load", "loads", "from_dict", "roof", "read_result", "read_envelopes", "folder_status",
     "run_study",
     "constant", "smooth_step", "smooth_trapezoid", "paper_eq23", "table",
+    "polynomial", "harmonic", "cosine_ramp", "cycloidal", "piecewise", "sum_of",
 ]
 
 
@@ -603,6 +604,69 @@ def table(points):
     return {"type": "table", "points": rows}
 
 
+def _ramp(kind, t0, v0, t1, v1):
+    return {"type": kind, **{name: _number(kind, name, value) for name, value in
+                             (("t0", t0), ("v0", v0), ("t1", t1), ("v1", v1))}}
+
+
+def cosine_ramp(t0, v0, t1, v1):
+    """v0 until t0, v1 from t1, a half cosine in between: v0 + (v1 - v0)(1 - cos(pi s))/2,
+    s = (t - t0)/(t1 - t0). Starts and stops at rest; its acceleration jumps at t0 and t1."""
+    return _ramp("cosine_ramp", t0, v0, t1, v1)
+
+
+def cycloidal(t0, v0, t1, v1):
+    """v0 until t0, v1 from t1, a cycloid in between: v0 + (v1 - v0)(s - sin(2 pi s)/(2 pi)),
+    s = (t - t0)/(t1 - t0). Starts and stops at rest with zero acceleration (jerk-limited): a
+    drive that does not set the structure ringing as smooth_step does."""
+    return _ramp("cycloidal", t0, v0, t1, v1)
+
+
+def polynomial(coefficients, interval=None):
+    """c[0] + c[1] tau + c[2] tau**2 + ... (1 to 16 coefficients). Without `interval`, tau = t
+    at every t; with interval = (t0, t1), tau = t - t0 on it and the function is held at its
+    end values outside."""
+    spec = {"type": "polynomial",
+            "coefficients": [float(c) for c in _numbers("polynomial", "coefficients", coefficients)]}
+    if interval is not None:
+        spec["interval"] = _pair("polynomial", "interval", interval)
+    return spec
+
+
+def harmonic(amplitude, frequency, phase=0.0, offset=0.0):
+    """offset + amplitude * sin(2 pi frequency t + phase); frequency in Hz (> 0), phase in rad."""
+    return {"type": "harmonic", "amplitude": _number("harmonic", "amplitude", amplitude),
+            "frequency": _number("harmonic", "frequency", frequency),
+            "phase": _number("harmonic", "phase", phase),
+            "offset": _number("harmonic", "offset", offset)}
+
+
+def piecewise(pieces):
+    """Each piece (t_from, t_to, function) on [t_from, t_to), the pieces in order, each starting
+    where the one before ends, their values joining; held at the first value before and the last
+    after. A function is a number, a function's name or any of these functions, in the absolute
+    time t."""
+    if isinstance(pieces, (str, bytes, dict)) or not hasattr(pieces, "__iter__"):
+        raise TypeError(f"piecewise: pieces must be a sequence of (t_from, t_to, function), "
+                        f"not {_shown(pieces)}")
+    rows = []
+    for i, piece in enumerate(pieces):
+        if isinstance(piece, (str, bytes, dict)) or not hasattr(piece, "__len__") or len(piece) != 3:
+            raise TypeError(f"piecewise: pieces[{i}] must be a (t_from, t_to, function) triple, "
+                            f"not {_shown(piece)}")
+        t_from, t_to, function = piece
+        rows.append({"from": _number("piecewise", f"pieces[{i}] t_from", t_from),
+                     "to": _number("piecewise", f"pieces[{i}] t_to", t_to),
+                     "function": _time_function("piecewise", f"pieces[{i}] function", function)})
+    return {"type": "piecewise", "pieces": rows}
+
+
+def sum_of(*terms):
+    """The sum of the given functions of time (numbers, names or any of these functions)."""
+    return {"type": "sum",
+            "terms": [_time_function("sum_of", f"terms[{i}]", term) for i, term in enumerate(terms)]}
+
+
 class ModelBuilder:
     """Builds a model in code, in the model file's terms (docs/model-format.md); SI units.
 
@@ -617,7 +681,7 @@ class ModelBuilder:
 
     Functions of time (driver profiles, ΔT, load factors) are a number, the name of a function
     added with `function`, "paper_eq23", or constant/smooth_step/smooth_trapezoid/paper_eq23/
-    table(...). Each method checks the types of its arguments (TypeError naming the method and
+    table/polynomial/harmonic/cosine_ramp/cycloidal/piecewise/sum_of(...). Each method checks the types of its arguments (TypeError naming the method and
     parameter); values are checked at `build`, which checks everything the loader checks.
     """
 

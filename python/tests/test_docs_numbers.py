@@ -1,11 +1,13 @@
 """The numbers the documents quote are the program's: each quoted value is read from the
 document's own sentence and compared with a fresh run, so that a slip like the README's "82 Hz"
 (the linkage at ΔT = 0, quoted for the cold one) cannot recur."""
+import json
 import re
 
+import numpy as np
 import pytest
 
-from conftest import SOURCE_DIR, run_cli
+from conftest import SOURCE_DIR, read_history, run_cli
 
 README = (SOURCE_DIR / "README.md").read_text(encoding="utf-8")
 TUTORIAL = (SOURCE_DIR / "docs" / "tutorial.md").read_text(encoding="utf-8")
@@ -46,3 +48,28 @@ def test_tutorial_sampling_line():
     assert f"lowest natural frequency at the start {frequency_Hz:g} Hz: {rows:g} history rows per period" in output
     alias_Hz, = quoted(TUTORIAL, r"a slow wave of about ([\d.]+) Hz")
     assert abs(50.0 - frequency_Hz) == pytest.approx(alias_Hz, abs=0.5)   # 20 ms rows: 50 Hz sampling
+
+
+def test_tutorial_drive_ringing_and_peaks(tmp_path):
+    """Section 8: the motor torque's ringing and peak with the smooth step and the cycloidal
+    ramp, measured as the tutorial's Python block does."""
+    quotes = {
+        "smooth_step": quoted(TUTORIAL, r"`smooth_step  ringing ±([\d.]+) N·m, peak torque ([\d.]+) N·m`"),
+        "cycloidal": quoted(TUTORIAL, r"`cycloidal    ringing ±([\d.]+) N·m, peak torque ([\d.]+) N·m`"),
+    }
+    profiles = {"smooth_step": [],
+                "cycloidal": ["--set", "drivers.motor.profile={type: cycloidal, t0: 0, v0: 0, t1: 6, "
+                                       "v1: 1.0471975511965976}"]}
+    for run, extra in profiles.items():
+        out = tmp_path / run
+        run_cli("run", SOURCE_DIR / "examples" / "tutorial" / "bascule.yaml", "--out", out, "--quiet",
+                "--set", "analysis.output_interval=0.002", *extra)
+        columns, values = read_history(out / "history.csv")
+        t = values[:, columns.index("t")]
+        torque = values[:, columns.index("torque.motor")]
+        first = t <= 1.0
+        trend = np.polyval(np.polyfit(t[first], torque[first], 3), t[first])
+        ringing = np.abs(torque[first] - trend).max()
+        peak = json.loads((out / "summary.json").read_text(encoding="utf-8"))["drivers"]["motor"]["peak"]
+        assert ringing == pytest.approx(quotes[run][0], abs=0.5), run
+        assert peak == pytest.approx(quotes[run][1], abs=0.5), run

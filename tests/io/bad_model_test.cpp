@@ -88,7 +88,26 @@ const BadModelCase kBadModels[] = {
     {"load_steps_not_integer.yaml", 5, "analysis.load_steps", "expected an integer, got 2.5"},
     {"beta_out_of_range.yaml", 5, "analysis.integrator.beta", "must be in (0, 0.5], got 0.7"},
     {"bad_function_type.yaml", 8, "drivers.motor.profile.type",
-     "must be one of constant, smooth_step, smooth_trapezoid, paper_eq23, table, got 'sine'"},
+     "must be one of constant, smooth_step, smooth_trapezoid, paper_eq23, table, polynomial, harmonic, "
+     "cosine_ramp, cycloidal, piecewise, sum, got 'sine'"},
+    // Functions of time (docs/model-format.md, "Functions of time" and "Input limits").
+    {"harmonic_zero_frequency.yaml", 5, "thermal.dT.frequency", "must be positive (Hz), got 0"},
+    {"harmonic_nan_amplitude.yaml", 5, "thermal.dT.amplitude", "must be a finite number, got .nan"},
+    {"polynomial_no_coefficients.yaml", 5, "thermal.dT.coefficients", "expected a list of 1 to 16 numbers, got 0 item(s)"},
+    {"polynomial_too_many_coefficients.yaml", 5, "thermal.dT.coefficients",
+     "expected a list of 1 to 16 numbers, got 17 item(s)"},
+    {"polynomial_interval_reversed.yaml", 5, "thermal.dT.interval", "expected [t0, t1] with t0 < t1, got [3, 1]"},
+    {"cycloidal_no_duration.yaml", 8, "drivers.motor.profile.t1", "must be after t0 = 2 s, got 2"},
+    {"piecewise_gap.yaml", 9, "thermal.dT.pieces.1.from",
+     "must be the previous piece's `to` = 1 s (pieces follow one another without gap or overlap), got 1.5"},
+    {"piecewise_piece_reversed.yaml", 9, "thermal.dT.pieces.1.to", "must be after from = 1 s, got 0.5"},
+    {"piecewise_jump.yaml", 9, "thermal.dT.pieces.1.function",
+     "starts at 40 where the previous piece ends at 30 (t = 1 s); pieces must join without a jump in value"},
+    {"piecewise_no_pieces.yaml", 5, "thermal.dT.pieces",
+     "expected a list of 1 to 10000 pieces {from, to, function}, got 0 item(s)"},
+    {"sum_no_terms.yaml", 5, "thermal.dT.terms", "expected a list of 1 to 10000 functions, got 0 item(s)"},
+    {"function_nested_too_deep.yaml", 5, "thermal.dT.terms.1.terms.1.terms.1.terms.1",
+     "piecewise and sum may hold one another at most 4 levels deep; this one is level 5"},
     {"table_times_not_increasing.yaml", 10, "thermal.dT.points.2",
      "times must increase strictly, got 1 after 2"},
     {"unknown_function_name.yaml", 7, "thermal.dT", "unknown function 'wram'"},
@@ -319,6 +338,46 @@ TEST(BadModel, ModalTimesAreCapped) {
     EXPECT_EQ(error.field(), "analysis.at") << error.what();
     EXPECT_EQ(error.problem(), "expected a list of 1 to 100000 times (s), got 100001 item(s)") << error.what();
   }
+}
+
+// Functions inside piecewise and sum: at most 10⁴ parts in all, also when YAML aliases repeat
+// one subtree (20⁴ leaves in four levels of 20 aliases each: refused, not expanded), and a named
+// function counts with all its parts.
+TEST(BadModel, FunctionsOfTimeAreBoundedInDepthAndParts) {
+  const std::string model = "nodes: {A: [0, 0], B: [1, 0]}\nmaterials: {steel: {E: 2.0e11}}\n"
+                            "elements: {1: {nodes: [A, B], area: 1.0e-4, material: steel, mass: 1}}\n";
+  const auto sum_of = [](std::size_t n_terms) {
+    std::string terms = "1";
+    for (std::size_t i = 1; i < n_terms; ++i) terms += ", 1";
+    return "{type: sum, terms: [" + terms + "]}";
+  };
+  const auto refuses = [&](const std::string& text, const std::string& field) {
+    try {
+      load_model_from_string(text, "functions.yaml");
+      ADD_FAILURE() << "loaded: " << text.substr(0, 200);
+    } catch (const InputError& error) {
+      if (!field.empty()) {
+        EXPECT_EQ(error.field(), field) << error.what();
+      }
+      EXPECT_NE(error.problem().find("a function may hold at most 10000 parts in all"), std::string::npos)
+          << error.what();
+    }
+  };
+  // The sum itself and 9999 terms: 10⁴ parts.
+  EXPECT_EQ(load_model_from_string(model + "thermal: {dT: " + sum_of(9'999) + "}\n", "functions.yaml")
+                .temperature_change_C.value(0.0),
+            9'999.0);
+  refuses(model + "thermal: {dT: " + sum_of(10'000) + "}\n", "thermal.dT.terms.9999");
+  std::string aliases = "f0: &f0 1\n";
+  for (int level = 1; level <= 4; ++level) {
+    std::string terms = fmt::format("*f{}", level - 1);
+    for (int i = 1; i < 20; ++i) terms += fmt::format(", *f{}", level - 1);
+    aliases += fmt::format("  f{0}: &f{0} {{type: sum, terms: [{1}]}}\n", level, terms);
+  }
+  refuses(model + "functions:\n  " + aliases, "");  // an alias is known by its anchor's path
+  // A name brings its parts along: two of 6000 are too many inside a sum.
+  refuses(model + "functions: {big: " + sum_of(5'999) + "}\nthermal: {dT: {type: sum, terms: [big, big]}}\n",
+          "thermal.dT.terms.1");
 }
 
 // A name becomes a CSV header, a JSON key and (a study case's) a folder name: at most 255 bytes.

@@ -431,6 +431,42 @@ output: {history: run.csv, summary: run.json, vtk: true}
   expect_round_trip(model);
 }
 
+// Every kind of function of time, nested in piecewise and sum, given inline and by name: the
+// reloaded model holds the same functions, number for number.
+TEST(ModelRoundTrip, TimeFunctionsOfEveryKind) {
+  const Model model = load_model_from_string(R"(
+nodes: {A: [0, 0], B: [1, 0], C: [2, 0.5]}
+materials: {steel: {E: 2.0e11, alpha: 1.2e-5}}
+functions:
+  spin_up:
+    type: piecewise
+    pieces:
+      - {from: 0, to: 1.5, function: {type: cycloidal, t0: 0, v0: 0, t1: 1.5, v1: 0.7}}
+      - {from: 1.5, to: 4, function: 0.7}
+      - {from: 4, to: 5.25, function: {type: cosine_ramp, t0: 4, v0: 0.7, t1: 5.25, v1: 0.1}}
+  wobble: {type: harmonic, amplitude: 0.05, frequency: 3.3, phase: 0.1, offset: 0.2}
+elements:
+  1: {nodes: [A, B], area: 1.0e-4, material: steel, mass: 1,
+      dT: {type: polynomial, coefficients: [1, -2.5, 0.3333333333333333], interval: [0.5, 2]}}
+  2: {nodes: [B, C], area: 1.0e-4, material: steel, mass: 1, dT: {type: polynomial, coefficients: [3, 0.1]}}
+supports: [{node: A}]
+drivers:
+  motor: {type: bar_angle, element: 1, pivot: A, profile: spin_up}
+loads:
+  - node: C
+    force: [0, -10]
+    factor:
+      type: sum
+      terms:
+        - wobble
+        - {type: table, points: [[0, 0], [1, 1]]}
+        - {type: sum, terms: [paper_eq23, {type: smooth_step, t0: 0, v0: 0, t1: 1, v1: 2}]}
+)", "every function");
+  expect_round_trip(model);
+  ASSERT_EQ(model.loads.size(), 1u);
+  EXPECT_TRUE(std::holds_alternative<TimeFunction::Sum>(model.loads[0].factor.kind()));
+}
+
 // Beams in 2D beside bars: every 2D beam key, a clamped node, an end moment, and a bar_angle
 // driver on a bar listed after a beam (its index is into Model::bars, not the file order).
 TEST(ModelRoundTrip, Beams2D) {

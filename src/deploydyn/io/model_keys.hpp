@@ -53,10 +53,17 @@ inline constexpr std::array<std::string_view, 8> kModal{"type", "modes", "at", "
 inline constexpr std::array<std::string_view, 5> kOutput{"history", "summary", "vtk", "hdf5", "select"};
 inline constexpr std::array<std::string_view, 3> kOutputSelect{"nodes", "elements", "quantities"};
 inline constexpr std::array<std::string_view, 2> kConstantFunction{"type", "value"};
-inline constexpr std::array<std::string_view, 5> kSmoothStep{"type", "t0", "v0", "t1", "v1"};
+// smooth_step, cosine_ramp and cycloidal: ramps that differ in their shape only
+inline constexpr std::array<std::string_view, 5> kRamp{"type", "t0", "v0", "t1", "v1"};
 // smooth_trapezoid (every key required) and paper_eq23 (every key optional)
 inline constexpr std::array<std::string_view, 4> kSmoothTrapezoid{"type", "amplitude", "rise", "fall"};
 inline constexpr std::array<std::string_view, 2> kTableFunction{"type", "points"};
+inline constexpr std::array<std::string_view, 3> kPolynomialFunction{"type", "coefficients", "interval"};
+inline constexpr std::array<std::string_view, 5> kHarmonicFunction{"type", "amplitude", "frequency", "phase",
+                                                                   "offset"};
+inline constexpr std::array<std::string_view, 2> kPiecewiseFunction{"type", "pieces"};
+inline constexpr std::array<std::string_view, 3> kPiece{"from", "to", "function"};
+inline constexpr std::array<std::string_view, 2> kSumFunction{"type", "terms"};
 inline constexpr std::array<std::string_view, 7> kStudy{"model", "description", "out", "jobs",
                                                         "reference", "cases", "sampling"};
 inline constexpr std::array<std::string_view, 7> kSampling{"method", "cases", "seed", "length_error",
@@ -74,7 +81,7 @@ struct Section {
   Keys keys;
 };
 
-inline constexpr std::array<Section, 36> kSections{{
+inline constexpr std::array<Section, 41> kSections{{
     {"top level", "### Top level", kTopLevel},
     {"nodes.NAME", "### `nodes`", kNode},
     {"materials.NAME", "### `materials`", kMaterial},
@@ -101,9 +108,14 @@ inline constexpr std::array<Section, 36> kSections{{
     {"output", "### `output`", kOutput},
     {"output.select", "#### `select`: what history.csv holds", kOutputSelect},
     {"function (type: constant)", "## Functions of time", kConstantFunction},
-    {"function (type: smooth_step)", "## Functions of time", kSmoothStep},
+    {"function (type: smooth_step, cosine_ramp or cycloidal)", "## Functions of time", kRamp},
     {"function (type: smooth_trapezoid or paper_eq23)", "## Functions of time", kSmoothTrapezoid},
     {"function (type: table)", "## Functions of time", kTableFunction},
+    {"function (type: polynomial)", "## Functions of time", kPolynomialFunction},
+    {"function (type: harmonic)", "## Functions of time", kHarmonicFunction},
+    {"function (type: piecewise)", "## Functions of time", kPiecewiseFunction},
+    {"function (type: piecewise), pieces.N", "## Functions of time", kPiece},
+    {"function (type: sum)", "## Functions of time", kSumFunction},
     {"study file (top level)", "## Load-case studies: `deploydyn study`", kStudy},
     {"sampling", "### Sampled studies", kSampling},
     {"sampling.length_error.N", "### Sampled studies", kLengthError},

@@ -45,6 +45,15 @@ constexpr std::size_t kMaxModalTimes = 100'000;
 // More initial load steps than this is a typo: a millionth of the thermal load is far below
 // what moves a node measurably, and each step costs at least one factorization.
 constexpr int kMaxLoadSteps = 1'000'000;
+// Piecewise and sum inside one another, and the functions a function holds in all: beyond these
+// a profile is generated text gone wrong (or an alias bomb), not a drive.
+constexpr int kMaxFunctionDepth = 4;
+constexpr std::size_t kMaxFunctionParts = 10'000;
+// Degree 15 is far beyond any motion law; higher ones lose every digit to round-off on [0, 10] s.
+constexpr std::size_t kMaxPolynomialCoefficients = 16;
+// Adjacent pieces join when their values at the joint differ by at most this share of the
+// larger (or of 1): round-off of coefficients written with 15 or more digits.
+constexpr double kPieceJoinTolerance = 1e-9;
 // Nodes of a pin joint are "at the same position" up to round-off of the model's size.
 constexpr double kCoincidentShare = 1e-9;
 // A hinge-angle arm shorter across the axis than this share of its length leaves the angle
@@ -94,6 +103,29 @@ class NameIndex {
 };
 
 using FunctionTable = std::map<std::string, TimeFunction, std::less<>>;
+
+// How deep piecewise and sum nest in a function, and how many functions (a table's points each)
+// it holds in all: what the input limits bound.
+struct TimeFunctionSize {
+  int depth = 0;
+  std::size_t parts = 1;
+};
+
+TimeFunctionSize size_of(const TimeFunction& f) {
+  const auto of_parts = [](const std::vector<TimeFunction>& parts) {
+    TimeFunctionSize size{.depth = 1, .parts = 1};
+    for (const TimeFunction& part : parts) {
+      const TimeFunctionSize inner = size_of(part);
+      size.depth = std::max(size.depth, inner.depth + 1);
+      size.parts += inner.parts;
+    }
+    return size;
+  };
+  if (const auto* piecewise = std::get_if<TimeFunction::Piecewise>(&f.kind())) return of_parts(piecewise->pieces);
+  if (const auto* sum = std::get_if<TimeFunction::Sum>(&f.kind())) return of_parts(sum->terms);
+  if (const auto* table = std::get_if<TimeFunction::Table>(&f.kind())) return {.depth = 0, .parts = table->times.size()};
+  return {};
+}
 
 // Reads the model's sections in dependency order: functions and nodes before what refers to them.
 class ModelReader {
@@ -151,51 +183,102 @@ class ModelReader {
 
   TimeFunction function(const YamlValue& spec) const { return read_function(spec, &functions_); }
 
+  // What a function spec may still hold: functions inside piecewise and sum nest and multiply
+  // (an alias of YAML repeats a whole subtree), so both are bounded (docs/model-format.md,
+  // "Input limits").
+  struct FunctionBudget {
+    int depth = 0;          // piecewise and sum around the spec being read
+    std::size_t parts = 0;  // functions read so far, a table's points each
+  };
+
+  static void spend(FunctionBudget& budget, const TimeFunctionSize& size, const YamlValue& spec) {
+    budget.parts += size.parts;
+    // Outside piecewise and sum a table may have any number of points, as before they existed.
+    if (budget.depth > 0 && budget.parts > kMaxFunctionParts) {
+      spec.fail(fmt::format("a function may hold at most {} parts in all (each function inside "
+                            "piecewise and sum, a table's points each); this one holds more",
+                            kMaxFunctionParts));
+    }
+    if (budget.depth + size.depth > kMaxFunctionDepth) {
+      spec.fail(fmt::format("piecewise and sum may hold one another at most {} levels deep; "
+                            "this one is level {}",
+                            kMaxFunctionDepth, budget.depth + size.depth));
+    }
+  }
+
   static TimeFunction read_function(const YamlValue& spec, const FunctionTable* named) {
-    if (spec.is_number()) return TimeFunction::constant(spec.number());
+    FunctionBudget budget;
+    return read_function(spec, named, budget);
+  }
+
+  static TimeFunction read_function(const YamlValue& spec, const FunctionTable* named,
+                                    FunctionBudget& budget) {
+    if (spec.is_number()) {
+      spend(budget, {}, spec);
+      return TimeFunction::constant(spec.number());
+    }
     if (spec.is_scalar()) {
-      const std::string name = spec.text();
-      if (name == kPaperEq23) return TimeFunction::paper_eq23();
-      if (named == nullptr) {
-        spec.fail(
-            fmt::format("unknown function '{}'; entries of 'functions' may name the builtin "
-                        "paper_eq23 but not each other",
-                        io::excerpt(name)));
-      }
-      if (const auto found = named->find(name); found != named->end()) return found->second;
-      std::vector<std::string> known{std::string(kPaperEq23)};
-      for (const auto& entry : *named) known.push_back(entry.first);
-      const std::string nearest = io::did_you_mean(name, known);
-      spec.fail(fmt::format(
-          "unknown function '{}'{}", io::excerpt(name),
-          nearest.empty()
-              ? "; give a number, a mapping with 'type', or one of: " + io::join_names(known)
-              : nearest));
+      const TimeFunction f = named_function(spec, named);
+      spend(budget, size_of(f), spec);
+      return f;
     }
     if (!spec.is_map()) {
       spec.fail("expected a function: a number, a function name or a mapping with 'type', got " +
                 spec.description());
     }
-    switch (spec.at("type").choice(
-        {"constant", "smooth_step", "smooth_trapezoid", "paper_eq23", "table"})) {
+    const std::size_t type = spec.at("type").choice({"constant", "smooth_step", "smooth_trapezoid", "paper_eq23",
+                                                     "table", "polynomial", "harmonic", "cosine_ramp", "cycloidal",
+                                                     "piecewise", "sum"});
+    if (type >= 9) {  // piecewise and sum hold functions: one level deeper for them
+      spend(budget, {.depth = 1, .parts = 1}, spec);
+      ++budget.depth;
+      TimeFunction f = type == 9 ? piecewise(spec, named, budget) : sum(spec, named, budget);
+      --budget.depth;
+      return f;
+    }
+    TimeFunction f;
+    switch (type) {
       case 0:
         spec.expect_keys(model_keys::kConstantFunction);
-        return TimeFunction::constant(spec.at("value").number());
-      case 1:
-        return smooth_step(spec);
-      case 2:
-        return smooth_trapezoid(spec, false);
-      case 3:
-        return smooth_trapezoid(spec, true);
-      default:
-        return table(spec);
+        f = TimeFunction::constant(spec.at("value").number());
+        break;
+      case 1: f = ramp(spec, RampShape::cubic); break;
+      case 2: f = smooth_trapezoid(spec, false); break;
+      case 3: f = smooth_trapezoid(spec, true); break;
+      case 4: f = table(spec); break;
+      case 5: f = polynomial(spec); break;
+      case 6: f = harmonic(spec); break;
+      case 7: f = ramp(spec, RampShape::cosine); break;
+      default: f = ramp(spec, RampShape::cycloidal); break;
     }
+    spend(budget, size_of(f), spec);
+    return f;
   }
 
-  static TimeFunction smooth_step(const YamlValue& spec) {
-    spec.expect_keys(model_keys::kSmoothStep);
-    TimeFunction::SmoothStep f{spec.at("t0").number(Sign::any, "s"), spec.at("v0").number(),
-                               spec.at("t1").number(Sign::any, "s"), spec.at("v1").number()};
+  static TimeFunction named_function(const YamlValue& spec, const FunctionTable* named) {
+    const std::string name = spec.text();
+    if (name == kPaperEq23) return TimeFunction::paper_eq23();
+    if (named == nullptr) {
+      spec.fail(
+          fmt::format("unknown function '{}'; entries of 'functions' may name the builtin "
+                      "paper_eq23 but not each other",
+                      io::excerpt(name)));
+    }
+    if (const auto found = named->find(name); found != named->end()) return found->second;
+    std::vector<std::string> known{std::string(kPaperEq23)};
+    for (const auto& entry : *named) known.push_back(entry.first);
+    const std::string nearest = io::did_you_mean(name, known);
+    spec.fail(fmt::format(
+        "unknown function '{}'{}", io::excerpt(name),
+        nearest.empty() ? "; give a number, a mapping with 'type', or one of: " + io::join_names(known)
+                        : nearest));
+  }
+
+  // smooth_step, cosine_ramp and cycloidal: the same keys, another shape.
+  static TimeFunction ramp(const YamlValue& spec, RampShape shape) {
+    spec.expect_keys(model_keys::kRamp);
+    TimeFunction::Ramp f{spec.at("t0").number(Sign::any, "s"), spec.at("v0").number(),
+                         spec.at("t1").number(Sign::any, "s"), spec.at("v1").number(), shape};
     if (!(f.t1 > f.t0)) {
       spec.at("t1").fail(fmt::format("must be after t0 = {} s, got {}", f.t0, f.t1));
     }
@@ -249,6 +332,72 @@ class ModelReader {
       f.values.push_back(t_and_value[1]);
     }
     return TimeFunction(f);
+  }
+
+  static TimeFunction polynomial(const YamlValue& spec) {
+    spec.expect_keys(model_keys::kPolynomialFunction);
+    TimeFunction::Polynomial f;
+    f.coefficients = spec.at("coefficients").numbers(1, kMaxPolynomialCoefficients, "");
+    if (const auto interval = spec.find("interval")) {
+      const auto times = interval->numbers(2, 2, "s");
+      if (!(times[1] > times[0])) {
+        interval->fail(fmt::format("expected [t0, t1] with t0 < t1, got [{}, {}]", times[0], times[1]));
+      }
+      f.bounded = true;
+      f.start_s = times[0];
+      f.end_s = times[1];
+    }
+    return TimeFunction(f);
+  }
+
+  static TimeFunction harmonic(const YamlValue& spec) {
+    spec.expect_keys(model_keys::kHarmonicFunction);
+    return TimeFunction(TimeFunction::Harmonic{
+        .amplitude = spec.at("amplitude").number(),
+        .frequency_Hz = spec.at("frequency").number(Sign::positive, "Hz"),
+        .phase_rad = spec.number_or("phase", 0.0, Sign::any, "rad"),
+        .offset = spec.number_or("offset", 0.0, Sign::any, "")});
+  }
+
+  // Pieces in order, each starting where the one before ends, joining without a jump in value.
+  static TimeFunction piecewise(const YamlValue& spec, const FunctionTable* named, FunctionBudget& budget) {
+    spec.expect_keys(model_keys::kPiecewiseFunction);
+    TimeFunction::Piecewise f;
+    for (const auto& piece : spec.at("pieces").items(1, kMaxFunctionParts, "pieces {from, to, function}")) {
+      if (!piece.is_map()) piece.fail("expected a piece {from, to, function}, got " + piece.description());
+      piece.expect_keys(model_keys::kPiece);
+      const double from = piece.at("from").number(Sign::any, "s");
+      const double to = piece.at("to").number(Sign::any, "s");
+      if (!f.bounds.empty() && from != f.bounds.back()) {
+        piece.at("from").fail(fmt::format("must be the previous piece's `to` = {} s (pieces follow one another "
+                                          "without gap or overlap), got {}",
+                                          f.bounds.back(), from));
+      }
+      if (!(to > from)) piece.at("to").fail(fmt::format("must be after from = {} s, got {}", from, to));
+      TimeFunction g = read_function(piece.at("function"), named, budget);
+      if (!f.pieces.empty()) {
+        const double left = f.pieces.back().value(from);
+        const double right = g.value(from);
+        if (!(std::abs(right - left) <= kPieceJoinTolerance * std::max({1.0, std::abs(left), std::abs(right)}))) {
+          piece.at("function").fail(fmt::format("starts at {} where the previous piece ends at {} (t = {} s); "
+                                                "pieces must join without a jump in value",
+                                                right, left, from));
+        }
+      }
+      if (f.bounds.empty()) f.bounds.push_back(from);
+      f.bounds.push_back(to);
+      f.pieces.push_back(std::move(g));
+    }
+    return TimeFunction(std::move(f));
+  }
+
+  static TimeFunction sum(const YamlValue& spec, const FunctionTable* named, FunctionBudget& budget) {
+    spec.expect_keys(model_keys::kSumFunction);
+    TimeFunction::Sum f;
+    for (const auto& term : spec.at("terms").items(1, kMaxFunctionParts, "functions")) {
+      f.terms.push_back(read_function(term, named, budget));
+    }
+    return TimeFunction(std::move(f));
   }
 
   // Geometry ----------------------------------------------------------------------------------

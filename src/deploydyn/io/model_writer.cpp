@@ -39,15 +39,15 @@ void emit_vector(YAML::Emitter& out, const Eigen::Vector3d& vector, int dimensio
 }
 
 void emit_function(YAML::Emitter& out, const TimeFunction& function) {
-  const auto begin = [&](const char* type) {
+  const auto begin = [&](std::string_view type) {
     out << YAML::Flow << YAML::BeginMap;
     emit_key(out, "type");
-    out << type;
+    out << std::string(type);
   };
   std::visit(Overloaded{
                  [&](const TimeFunction::Constant& f) { out << number_text(f.value); },
-                 [&](const TimeFunction::SmoothStep& f) {
-                   begin("smooth_step");
+                 [&](const TimeFunction::Ramp& f) {
+                   begin(ramp_type_name(f.shape));
                    emit_number(out, "t0", f.t0);
                    emit_number(out, "v0", f.v0);
                    emit_number(out, "t1", f.t1);
@@ -70,6 +70,47 @@ void emit_function(YAML::Emitter& out, const TimeFunction& function) {
                    for (std::size_t i = 0; i < f.times.size(); ++i) {
                      emit_numbers(out, {f.times[i], f.values[i]});
                    }
+                   out << YAML::EndSeq << YAML::EndMap;
+                 },
+                 [&](const TimeFunction::Polynomial& f) {
+                   begin("polynomial");
+                   emit_key(out, "coefficients");
+                   out << YAML::BeginSeq;
+                   for (const double c : f.coefficients) out << number_text(c);
+                   out << YAML::EndSeq;
+                   if (f.bounded) {
+                     emit_key(out, "interval");
+                     emit_numbers(out, {f.start_s, f.end_s});
+                   }
+                   out << YAML::EndMap;
+                 },
+                 [&](const TimeFunction::Harmonic& f) {
+                   begin("harmonic");
+                   emit_number(out, "amplitude", f.amplitude);
+                   emit_number(out, "frequency", f.frequency_Hz);
+                   emit_number(out, "phase", f.phase_rad);
+                   emit_number(out, "offset", f.offset);
+                   out << YAML::EndMap;
+                 },
+                 [&](const TimeFunction::Piecewise& f) {
+                   begin("piecewise");
+                   emit_key(out, "pieces");
+                   out << YAML::BeginSeq;
+                   for (std::size_t i = 0; i < f.pieces.size(); ++i) {
+                     out << YAML::BeginMap;
+                     emit_number(out, "from", f.bounds[i]);
+                     emit_number(out, "to", f.bounds[i + 1]);
+                     emit_key(out, "function");
+                     emit_function(out, f.pieces[i]);
+                     out << YAML::EndMap;
+                   }
+                   out << YAML::EndSeq << YAML::EndMap;
+                 },
+                 [&](const TimeFunction::Sum& f) {
+                   begin("sum");
+                   emit_key(out, "terms");
+                   out << YAML::BeginSeq;
+                   for (const TimeFunction& term : f.terms) emit_function(out, term);
                    out << YAML::EndSeq << YAML::EndMap;
                  },
              },

@@ -3,10 +3,14 @@
 //
 // Every kind gives the value, the first two derivatives (needed for consistent initial
 // velocities and accelerations of rheonomic constraints) and the integral from 0 to t (needed
-// when a driver's profile is read as an angular velocity, docs/theory.md).
+// when a driver's profile is read as an angular velocity), all in closed form (docs/theory.md,
+// "Functions of time"). Piecewise and Sum hold other functions, so a profile can be built from
+// parts; the loader bounds how deep and how many (docs/model-format.md, "Input limits").
 
 #include <variant>
 #include <vector>
+
+#include "deploydyn/model/ramp_shape.hpp"
 
 namespace deploydyn {
 
@@ -16,12 +20,15 @@ class TimeFunction {
     double value = 0.0;
     bool operator==(const Constant&) const = default;
   };
-  // Cubic step v0 → v1 over [t0, t1], C¹: v0 + (v1 − v0) s²(3 − 2s), s = (t − t0)/(t1 − t0).
-  // Same as the STEP function of ADAMS that the paper uses.
-  struct SmoothStep {
+  // A ramp v0 → v1 over [t0, t1]: v0 + (v1 − v0) h(s), s = (t − t0)/(t1 − t0), held outside; the
+  // shape h decides how smoothly it starts and stops (model/ramp_shape.hpp). With the cubic shape
+  // it is the STEP function of ADAMS that the paper uses, hence the name kept for it.
+  struct Ramp {
     double t0 = 0.0, v0 = 0.0, t1 = 1.0, v1 = 1.0;
-    bool operator==(const SmoothStep&) const = default;
+    RampShape shape = RampShape::cubic;
+    bool operator==(const Ramp&) const = default;
   };
+  using SmoothStep = Ramp;
   // 0 → amplitude by a smooth step over [rise_start, rise_end], held, back to 0 by a smooth step
   // over [fall_start, fall_end]. The paper's Eq. (23) is {0.365, 0, 1, 4, 5}.
   struct SmoothTrapezoid {
@@ -34,7 +41,33 @@ class TimeFunction {
     std::vector<double> times, values;
     bool operator==(const Table&) const = default;
   };
-  using Kind = std::variant<Constant, SmoothStep, SmoothTrapezoid, Table>;
+  // Σ coefficients[k] τᵏ with τ = t − start_s on [start_s, end_s], held at its end values
+  // outside; start_s = −∞ and end_s = +∞ when the polynomial holds everywhere (τ = t).
+  struct Polynomial {
+    std::vector<double> coefficients;
+    bool bounded = false;  // false: everywhere, τ = t
+    double start_s = 0.0, end_s = 0.0;
+    bool operator==(const Polynomial&) const = default;
+  };
+  // offset + amplitude · sin(2π frequency_Hz t + phase_rad).
+  struct Harmonic {
+    double amplitude = 1.0, frequency_Hz = 1.0, phase_rad = 0.0, offset = 0.0;
+    bool operator==(const Harmonic&) const = default;
+  };
+  // pieces[i] on [bounds[i], bounds[i+1]); the first piece's value at bounds.front() held before,
+  // the last piece's value at bounds.back() held after. bounds strictly increasing,
+  // bounds.size() == pieces.size() + 1; the pieces join without a jump in value (loader).
+  struct Piecewise {
+    std::vector<double> bounds;
+    std::vector<TimeFunction> pieces;
+    bool operator==(const Piecewise&) const = default;
+  };
+  // Σ terms[i](t).
+  struct Sum {
+    std::vector<TimeFunction> terms;
+    bool operator==(const Sum&) const = default;
+  };
+  using Kind = std::variant<Constant, Ramp, SmoothTrapezoid, Table, Polynomial, Harmonic, Piecewise, Sum>;
 
   TimeFunction() : kind_(Constant{}) {}
   TimeFunction(Kind kind) : kind_(std::move(kind)) {}  // NOLINT: implicit by design

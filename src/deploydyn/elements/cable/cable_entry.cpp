@@ -3,12 +3,14 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <limits>
 #include <optional>
 #include <utility>
 #include <variant>
 
 #include "deploydyn/elements/cable/cable.hpp"
 #include "deploydyn/elements/two_node_entry.hpp"
+#include "deploydyn/model/least_value.hpp"
 
 namespace deploydyn::cable {
 namespace {
@@ -19,7 +21,7 @@ constexpr ElementField kFields[] = {
     {"section", "", "none", "a name from `sections`: the cable's area comes from it; not with `area`"},
     {"material", "", "required", "a name from `materials`"},
     {"rest_length", "m", "distance of the nodes' initial positions",
-     "a function > 0 at all times: the rest length L0(t) (a winch); not with `pretension`"},
+     "a function > 0 at all times (checked at load; a `sum` by the sum of its terms' least values): the rest length L0(t) (a winch); not with `pretension`"},
     {"pretension", "N", "none",
      "≥ 0: the tension of the initial cable at ΔT = 0, which sets a constant L0; not with "
      "`rest_length`"},
@@ -30,25 +32,7 @@ constexpr ElementField kFields[] = {
 };
 
 constexpr std::string_view kSectionKeys[] = {"area"};
-
-// The least value a function of time takes: every kind is monotone between the values it
-// names (a table between its points, the steps between their ends).
-double least_value(const TimeFunction& f) {
-  return std::visit(
-      [](const auto& kind) -> double {
-        using Kind = std::decay_t<decltype(kind)>;
-        if constexpr (std::is_same_v<Kind, TimeFunction::Constant>) {
-          return kind.value;
-        } else if constexpr (std::is_same_v<Kind, TimeFunction::SmoothStep>) {
-          return std::min(kind.v0, kind.v1);
-        } else if constexpr (std::is_same_v<Kind, TimeFunction::SmoothTrapezoid>) {
-          return std::min(0.0, kind.amplitude);
-        } else {
-          return *std::min_element(kind.values.begin(), kind.values.end());
-        }
-      },
-      f.kind());
-}
+constexpr double kForever_s = std::numeric_limits<double>::infinity();
 
 }  // namespace
 
@@ -78,7 +62,7 @@ void read_entry(const std::string& name, const ElementEntryReader& entry, Model&
                "each sets the cable's rest length");
   }
   if (rest_length_m) {
-    if (const double least = least_value(*rest_length_m); !(least > 0.0)) {
+    if (const double least = least_value(*rest_length_m, -kForever_s, kForever_s); !(least > 0.0)) {
       entry.fail("rest_length",
                  fmt::format("must stay positive (m) at all times, but reaches {}", least));
     }
