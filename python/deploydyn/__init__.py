@@ -706,7 +706,7 @@ class ModelBuilder:
 
     def material(self, name, E, alpha=0.0, density=None, damping=None, yield_strength=None):
         """E (Pa), alpha (1/°C), density (kg/m³, for bars that give no mass), damping (material
-        damping of its bars and cables, as the model file's mapping: {"ratio": ζ, "frequency":
+        damping of its bars, cables and beams, as the model file's mapping: {"ratio": ζ, "frequency":
         f (Hz)}, {"loss_factor": η, "frequency": f} or {"time": τ (s)}), yield_strength (Pa, the
         stress the member checks allow)."""
         where = "ModelBuilder.material"
@@ -935,9 +935,12 @@ class ModelBuilder:
         return self
 
     def analysis(self, **options):
-        """Analysis options as in the file: type ("static"/"dynamic"/"modal"), end, step,
-        output_interval, load_steps, mass, integrator={...}, newton={...}. Their values are
-        checked at `build` (InputError names analysis.<option>)."""
+        """Analysis options as in the file: type ("static"/"dynamic"/"modal"), end, end_when
+        ("end_time"/"all_latched"/"settled"), step, output_interval, load_steps, mass,
+        integrator={...}, newton={...}, rayleigh={"alpha", "beta"} or {"ratios": [ζ1, ζ2],
+        "frequencies": [f1, f2]} (Rayleigh damping), settle={"kinetic_energy", "rate", "hold",
+        "node"} (with end_when="settled"). Their values are checked at `build` (InputError names
+        analysis.<option>)."""
         self._section("analysis").update(_plain(options, "analysis", "ModelBuilder.analysis"))
         return self
 

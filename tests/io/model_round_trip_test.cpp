@@ -207,6 +207,14 @@ void expect_equal_models(const Model& a, const Model& b) {
   EXPECT_EQ(p.adaptive.tolerance_m, q.adaptive.tolerance_m);
   EXPECT_EQ(p.adaptive.min_step_s, q.adaptive.min_step_s);
   EXPECT_EQ(p.adaptive.max_step_s, q.adaptive.max_step_s);
+  EXPECT_EQ(p.end_when, q.end_when);
+  EXPECT_EQ(p.rayleigh.mass_factor_1_s, q.rayleigh.mass_factor_1_s);
+  EXPECT_EQ(p.rayleigh.stiffness_factor_s, q.rayleigh.stiffness_factor_s);
+  EXPECT_EQ(p.rayleigh.stiffness, q.rayleigh.stiffness);
+  EXPECT_EQ(p.settling.kinetic_energy_J, q.settling.kinetic_energy_J);
+  EXPECT_EQ(p.settling.rate, q.settling.rate);
+  EXPECT_EQ(p.settling.hold_s, q.settling.hold_s);
+  EXPECT_EQ(p.settling.node, q.settling.node);
   EXPECT_EQ(p.newton.max_iterations, q.newton.max_iterations);
   EXPECT_EQ(p.newton.force_tolerance, q.newton.force_tolerance);
   EXPECT_EQ(p.newton.constraint_tolerance_m, q.newton.constraint_tolerance_m);
@@ -352,6 +360,19 @@ analysis: {type: dynamic, end: 2, step: 1.0e-3, end_when: all_latched}
       "material: s}}\nanalysis: {end: 1, end_when: all_latched}\n", "end_when");
   EXPECT_EQ(load_model_from_string(saved(model), "saved").analysis.end_when, EndCondition::all_latched);
   expect_round_trip(load_model(fmt::format("{}/examples/boom/boom.yaml", DEPLOYDYN_SOURCE_DIR)));
+}
+
+// Rayleigh damping (written as α, β whatever the file gave) and end_when: settled with its
+// tolerances.
+TEST(ModelRoundTrip, RayleighDampingAndSettling) {
+  const std::string base =
+      "nodes: {A: [0, 0], B: [1, 0]}\nmaterials: {s: {E: 1.0e9, damping: {ratio: 0.01, frequency: 5}}}\n"
+      "elements: {b: {nodes: [A, B], area: 1, mass: 1, material: s}}\n";
+  expect_round_trip(load_model_from_string(
+      base + "analysis: {end: 3, end_when: settled, settle: {kinetic_energy: 1.0e-6, rate: 1.0e-3, hold: 0.5, "
+             "node: B}, rayleigh: {ratios: [0.02, 0.03], frequencies: [1, 10], stiffness: current}}\n",
+      "ratios"));
+  expect_round_trip(load_model_from_string(base + "analysis: {rayleigh: {alpha: 0.3}}\n", "alpha"));
 }
 
 // analysis.type continuation keeps its own keys (parameter, start, end, eigenvalues, max_steps)

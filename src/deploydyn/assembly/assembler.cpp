@@ -186,6 +186,9 @@ Assembler::Assembler(const Model& model) : model_(model), dofs_(model) {
   Eigen::VectorXd unit = Eigen::VectorXd::Ones(n_dofs()), row_sums;
   mass_times(unit, row_sums);  // row sums of M ≥ its diagonal, all entries being ≥ 0
   mass_scale_ = row_sums.size() > 0 && row_sums.maxCoeff() > 0.0 ? row_sums.maxCoeff() : 1.0;
+  if (model.analysis.rayleigh.any()) {
+    rayleigh_ = std::make_unique<RayleighDampingForce>(model.analysis.rayleigh, groups_, initial_coordinates(), 0.0);
+  }
 }
 
 Eigen::VectorXd Assembler::initial_coordinates() const {
@@ -276,10 +279,15 @@ void Assembler::rate_force(const Eigen::VectorXd& q, const Eigen::VectorXd& v, d
                            Eigen::VectorXd& f) const {
   f.setZero(n_dofs());
   for (const auto& group : groups_) group->add_rate_force(q, v, t, f);
+  if (rayleigh_) {
+    Eigen::VectorXd mass_times_v;
+    if (rayleigh_->mass_factor_1_s() != 0.0) mass_times(v, mass_times_v);
+    rayleigh_->add_force(groups_, q, v, t, mass_times_v, f);
+  }
 }
 
 bool Assembler::has_rate_forces() const {
-  return std::any_of(groups_.begin(), groups_.end(), [](const auto& g) { return g->has_rate_forces(); });
+  return rayleigh_ || std::any_of(groups_.begin(), groups_.end(), [](const auto& g) { return g->has_rate_forces(); });
 }
 
 void Assembler::switched_constraint_force(const Eigen::VectorXd& q, double t,
@@ -472,11 +480,15 @@ void Assembler::iteration_matrix(const Eigen::VectorXd& q, double t, double ther
   system.set_zero();
   const std::span<double> values = system.values();
   const int* slot = system.slots().data();
+  // Rayleigh damping's c_D (α M + β K): α into the mass weight, β K onto the elements' entries.
+  MatrixWeights weights = w;
+  if (rayleigh_ && w.rates != nullptr) weights.mass += w.damping * rayleigh_->mass_factor_1_s();
   for (const auto& group : groups_) {
-    group->add_iteration_matrix(q, t, thermal_factor, {w.stiffness, w.mass, w.damping, w.rates},
-                                values, slot);
+    group->add_iteration_matrix(q, t, thermal_factor,
+                                {weights.stiffness, weights.mass, weights.damping, weights.rates}, values, slot);
   }
-  for_each_matrix_block(q, t, lambda, w,
+  if (rayleigh_ && w.rates != nullptr) rayleigh_->add_stiffness_block(groups_, q, t, w.damping, values, system.slots());
+  for_each_matrix_block(q, t, lambda, weights,
                         [&](std::span<const int> rows, std::span<const int> cols, const auto& block) {
                           for (std::size_t j = 0; j < cols.size(); ++j) {
                             for (std::size_t i = 0; i < rows.size(); ++i) values[*slot++] += block(i, j);

@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "deploydyn/assembly/linear_system.hpp"
+#include "deploydyn/assembly/rayleigh_damping.hpp"
 #include "deploydyn/constraints/constraint.hpp"
 #include "deploydyn/constraints/driven_bar_angle.hpp"
 #include "deploydyn/elements/element.hpp"
@@ -64,7 +65,8 @@ class Assembler {
   void external_force(double t, Eigen::VectorXd& f) const;
   void mass_times(const Eigen::VectorXd& a, Eigen::VectorXd& out) const;  // M a
 
-  // The forces that depend on the rates (dampers, sliding friction), f_d(q, q̇, t).
+  // The forces that depend on the rates (dampers, sliding friction, material and Rayleigh
+  // damping), f_d(q, q̇, t).
   void rate_force(const Eigen::VectorXd& q, const Eigen::VectorXd& v, double t,
                   Eigen::VectorXd& f) const;
   bool has_rate_forces() const;
@@ -196,6 +198,7 @@ class Assembler {
   std::vector<int> history_offset_;  // [group] → first entry in MotionState::history
   int n_history_ = 0;
   double mass_scale_ = 1.0;
+  std::unique_ptr<RayleighDampingForce> rayleigh_;  // when model.analysis.rayleigh has any
 };
 
 }  // namespace deploydyn

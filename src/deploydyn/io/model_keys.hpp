@@ -38,9 +38,11 @@ inline constexpr std::array<std::string_view, 5> kRevoluteDriver{"type", "joint"
 inline constexpr std::array<std::string_view, 6> kCoordinateDriver{"type", "node", "direction",
                                                                    "profile", "reading", "force_limit"};
 inline constexpr std::array<std::string_view, 4> kLoad{"node", "force", "moment", "factor"};
-inline constexpr std::array<std::string_view, 11> kAnalysis{
+inline constexpr std::array<std::string_view, 13> kAnalysis{
     "type", "end", "end_when", "step", "output_interval", "load_steps", "mass", "integrator", "newton",
-    "adaptive", "linear_solver"};
+    "adaptive", "linear_solver", "rayleigh", "settle"};
+inline constexpr std::array<std::string_view, 5> kRayleigh{"alpha", "beta", "ratios", "frequencies", "stiffness"};
+inline constexpr std::array<std::string_view, 4> kSettle{"kinetic_energy", "rate", "hold", "node"};
 inline constexpr std::array<std::string_view, 4> kIntegrator{"type", "beta", "gamma", "rho_inf"};
 inline constexpr std::array<std::string_view, 3> kAdaptive{"tolerance", "min_step", "max_step"};
 inline constexpr std::array<std::string_view, 5> kNewton{"max_iterations", "tol_force",
@@ -81,7 +83,7 @@ struct Section {
   Keys keys;
 };
 
-inline constexpr std::array<Section, 41> kSections{{
+inline constexpr std::array<Section, 43> kSections{{
     {"top level", "### Top level", kTopLevel},
     {"nodes.NAME", "### `nodes`", kNode},
     {"materials.NAME", "### `materials`", kMaterial},
@@ -103,6 +105,8 @@ inline constexpr std::array<Section, 41> kSections{{
     {"analysis.integrator", "#### `integrator`", kIntegrator},
     {"analysis.adaptive", "#### `adaptive`", kAdaptive},
     {"analysis.newton", "#### `newton`", kNewton},
+    {"analysis.rayleigh", "#### `rayleigh`", kRayleigh},
+    {"analysis.settle", "#### `settle`", kSettle},
     {"analysis (type: continuation)", "#### `type: continuation`", kContinuation},
     {"analysis (type: modal)", "#### `type: modal`", kModal},
     {"output", "### `output`", kOutput},

@@ -17,6 +17,7 @@
 #include <unordered_map>
 
 #include "deploydyn/assembly/assembler.hpp"
+#include "deploydyn/assembly/rayleigh_damping.hpp"
 #include "deploydyn/elements/element_kinds.hpp"
 #include "deploydyn/io/model_keys.hpp"
 #include "deploydyn/io/text_file.hpp"
@@ -995,6 +996,8 @@ class ModelReader {
     if (const auto integrator = spec.find("integrator")) read_integrator(*integrator);
     if (const auto newton = spec.find("newton")) read_newton(*newton);
     if (const auto adaptive = spec.find("adaptive")) read_adaptive(*adaptive);
+    if (const auto rayleigh = spec.find("rayleigh")) read_rayleigh(*rayleigh);
+    read_settling(spec);
     analysis.output_interval_s = analysis.step_s;
     if (const auto interval = spec.find("output_interval")) read_output_interval(*interval);
   }
@@ -1126,6 +1129,66 @@ class ModelReader {
     if (integrator.gamma < 0.5) {
       spec.at("gamma").fail(fmt::format("must be at least 0.5, got {}", integrator.gamma));
     }
+  }
+
+  // Rayleigh damping C = α M + β K (docs/theory.md, "Rayleigh damping"): α and β, or the
+  // damping ratios at two frequencies that give them.
+  void read_rayleigh(const YamlValue& spec) {
+    spec.expect_keys(model_keys::kRayleigh);
+    RayleighDamping& rayleigh = model_.analysis.rayleigh;
+    const auto ratios = spec.find("ratios");
+    if (ratios) {
+      for (const char* key : {"alpha", "beta"}) {
+        if (spec.find(key)) spec.at(key).fail("give either 'alpha' and 'beta' or 'ratios' and 'frequencies', not both");
+      }
+      const std::vector<YamlValue> zeta = ratios->items(2, 2, "damping ratios ζ1, ζ2");
+      const std::vector<YamlValue> f = spec.at("frequencies").items(2, 2, "frequencies f1 < f2 (Hz)");
+      const double zeta_1 = zeta[0].number(Sign::non_negative), zeta_2 = zeta[1].number(Sign::non_negative);
+      for (const YamlValue& ratio : zeta) {
+        if (ratio.number(Sign::non_negative) >= 1.0) ratio.fail("a damping ratio must be below 1");
+      }
+      const double f_1 = f[0].number(Sign::positive, "Hz"), f_2 = f[1].number(Sign::positive, "Hz");
+      if (!(f_2 > f_1)) f[1].fail(fmt::format("must exceed the first frequency {} Hz, got {}", f_1, f_2));
+      const RayleighFactors factors = rayleigh_factors(zeta_1, 2.0 * M_PI * f_1, zeta_2, 2.0 * M_PI * f_2);
+      if (factors.mass_factor_1_s < 0.0 || factors.stiffness_factor_s < 0.0) {
+        ratios->fail(fmt::format("give α = {:.4g} 1/s and β = {:.4g} s; both must be ≥ 0, which needs "
+                                 "ζ1/ζ2 between f1/f2 = {:.4g} and f2/f1 = {:.4g}, got ζ1/ζ2 = {:.4g}",
+                                 factors.mass_factor_1_s, factors.stiffness_factor_s, f_1 / f_2, f_2 / f_1,
+                                 zeta_1 / zeta_2));
+      }
+      rayleigh.mass_factor_1_s = factors.mass_factor_1_s;
+      rayleigh.stiffness_factor_s = factors.stiffness_factor_s;
+    } else {
+      if (spec.find("frequencies")) spec.at("frequencies").fail("goes with 'ratios'");
+      if (!spec.find("alpha") && !spec.find("beta")) {
+        spec.fail("give 'alpha' (1/s) and/or 'beta' (s), or 'ratios' [ζ1, ζ2] at 'frequencies' [f1, f2] (Hz)");
+      }
+      rayleigh.mass_factor_1_s = spec.number_or("alpha", 0.0, Sign::non_negative, "1/s");
+      rayleigh.stiffness_factor_s = spec.number_or("beta", 0.0, Sign::non_negative, "s");
+    }
+    if (const auto stiffness = spec.find("stiffness")) rayleigh.stiffness = stiffness->choice(kRayleighStiffnesses);
+  }
+
+  // end_when: settled and its tolerances, which go together.
+  void read_settling(const YamlValue& analysis_spec) {
+    AnalysisOptions& analysis = model_.analysis;
+    const auto settle = analysis_spec.find("settle");
+    if (analysis.end_when != EndCondition::settled) {
+      if (settle) settle->fail("goes with end_when: settled");
+      return;
+    }
+    const YamlValue end_when = analysis_spec.at("end_when");
+    if (analysis.type != AnalysisType::dynamic) end_when.fail("settled needs type: dynamic");
+    if (!settle) {
+      end_when.fail("settled needs 'settle: {kinetic_energy: J, rate: m/s, hold: s}' in the analysis, "
+                    "the tolerances it is judged by");
+    }
+    settle->expect_keys(model_keys::kSettle);
+    SettlingOptions& settling = analysis.settling;
+    settling.kinetic_energy_J = settle->at("kinetic_energy").number(Sign::positive, "J");
+    settling.rate = settle->at("rate").number(Sign::positive, "m/s");
+    settling.hold_s = settle->at("hold").number(Sign::positive, "s");
+    if (const auto node = settle->find("node")) settling.node = nodes_.find(*node);
   }
 
   void read_adaptive(const YamlValue& spec) {

@@ -468,6 +468,28 @@ void emit_analysis(YAML::Emitter& out, const Model& model) {
       if (analysis.adaptive.max_step_s > 0.0) emit_number(out, "max_step", analysis.adaptive.max_step_s);
       out << YAML::EndMap;
     }
+    if (analysis.rayleigh.any()) {  // as α and β: what ratios at two frequencies gave
+      emit_key(out, "rayleigh");
+      out << YAML::Flow << YAML::BeginMap;
+      emit_number(out, "alpha", analysis.rayleigh.mass_factor_1_s);
+      emit_number(out, "beta", analysis.rayleigh.stiffness_factor_s);
+      emit_key(out, "stiffness");
+      out << kRayleighStiffnesses.name(analysis.rayleigh.stiffness).data();
+      out << YAML::EndMap;
+    }
+    if (analysis.end_when == EndCondition::settled) {
+      const SettlingOptions& settling = analysis.settling;
+      emit_key(out, "settle");
+      out << YAML::Flow << YAML::BeginMap;
+      emit_number(out, "kinetic_energy", settling.kinetic_energy_J);
+      emit_number(out, "rate", settling.rate);
+      emit_number(out, "hold", settling.hold_s);
+      if (settling.node >= 0) {
+        emit_key(out, "node");
+        out << model.nodes[settling.node].name;
+      }
+      out << YAML::EndMap;
+    }
   }
   emit_key(out, "newton");
   out << YAML::Flow << YAML::BeginMap;

@@ -34,7 +34,7 @@ struct Material {
   std::optional<double> density_kg_m3;  // used when an element gives no mass
   // τ of Kelvin–Voigt material damping: the viscous stress τ E ε̇ on the strain rate (s; 0:
   // undamped). A damping ratio ζ at frequency f gives τ = ζ / (π f) (docs/theory.md, "Material
-  // damping"); bars and cables use it.
+  // damping"); bars, cables and beams (on all their strains) use it.
   double damping_time_s = 0.0;
   // f_y: the stress (Pa) the member checks take as the material's capacity, the yield strength
   // of a metal or a composite's design strength; empty: no stress checks on its members.
@@ -216,18 +216,48 @@ inline constexpr NameTable kLinearSolverKinds{std::array{
 }};
 inline const char* to_string(LinearSolverKind kind) { return kLinearSolverKinds.name(kind).data(); }
 
-// When a dynamic or quasi-static run ends: at end_time, or as soon as every latch of the
-// model's hinges has locked (a spring-driven deployment; end_time is then the limit).
-enum class EndCondition { end_time, all_latched };
+// When a dynamic or quasi-static run ends: at end_time, as soon as every latch of the
+// model's hinges has locked (a spring-driven deployment), or once the structure has settled
+// (SettlingOptions); end_time is then the limit.
+enum class EndCondition { end_time, all_latched, settled };
 inline constexpr NameTable kEndConditions{std::array{
     NamedValue<EndCondition>{EndCondition::end_time, "end_time"},
     NamedValue<EndCondition>{EndCondition::all_latched, "all_latched"},
+    NamedValue<EndCondition>{EndCondition::settled, "settled"},
+}};
+
+// end_when: settled. The structure has settled at the first time t_s from which, for `hold_s`
+// without a break, its kinetic energy stays at or below `kinetic_energy_J` and every rate
+// |q̇_i| at or below `rate` (m/s for positions, 1/s for rotations and frame entries); the run
+// stops at t_s + hold_s and reports t_s as the settling time (docs/theory.md, "Settling").
+struct SettlingOptions {
+  double kinetic_energy_J = 0.0;
+  double rate = 0.0;
+  double hold_s = 0.0;
+  int node = -1;  // whose settled position the summary and the CLI report; -1: none named
+};
+
+// Rayleigh damping C = α M + β K (docs/theory.md, "Rayleigh damping"), on absolute rates: the
+// α part also brakes rigid motion, the deployment itself. 0, 0: none.
+struct RayleighDamping {
+  double mass_factor_1_s = 0.0;     // α (1/s)
+  double stiffness_factor_s = 0.0;  // β (s)
+  // K of the β part: the tangent at the initial state, or at the current one.
+  enum class Stiffness { initial, current };
+  Stiffness stiffness = Stiffness::initial;
+  bool any() const { return mass_factor_1_s > 0.0 || stiffness_factor_s > 0.0; }
+};
+inline constexpr NameTable kRayleighStiffnesses{std::array{
+    NamedValue<RayleighDamping::Stiffness>{RayleighDamping::Stiffness::initial, "initial"},
+    NamedValue<RayleighDamping::Stiffness>{RayleighDamping::Stiffness::current, "current"},
 }};
 
 struct AnalysisOptions {
   AnalysisType type = AnalysisType::dynamic;
   double end_time_s = 1.0;
   EndCondition end_when = EndCondition::end_time;
+  SettlingOptions settling;  // end_when: settled only
+  RayleighDamping rayleigh;
   double step_s = 1e-3;
   double output_interval_s = 0.0;  // 0: every step
   int load_steps = 1;              // initial thermal equilibrium: ΔT applied in this many parts

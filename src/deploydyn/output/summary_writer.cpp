@@ -147,6 +147,19 @@ ordered_json run_end(const Model& model, const Envelope& envelope, const RunRepo
     }
   }
   if (!angles.empty()) end["final_angles_rad"] = angles;
+  // end_when: settled: whether and when; the settled shape is final_positions.
+  if (model.analysis.end_when == EndCondition::settled) {
+    end["settled"] = report.settling_time_s.has_value();
+    if (report.settling_time_s) end["settling_time_s"] = *report.settling_time_s;
+    const int node = model.analysis.settling.node;
+    if (report.settling_time_s && node >= 0 && envelope.n_records() > 0) {
+      const DofMap dofs(model);
+      std::vector<double> x;
+      for (int axis = 0; axis < model.dimension; ++axis) x.push_back(envelope.last().q[dofs.index(node, axis)]);
+      end["settled_node"] = model.nodes[node].name;
+      end["settled_position_m"] = x;
+    }
+  }
   return end;
 }
 

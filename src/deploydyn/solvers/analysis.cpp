@@ -13,6 +13,7 @@
 #include "deploydyn/solvers/continuation.hpp"
 #include "deploydyn/solvers/generalized_alpha.hpp"
 #include "deploydyn/solvers/output_sampling.hpp"
+#include "deploydyn/solvers/settling_watch.hpp"
 #include "deploydyn/solvers/static_solver.hpp"
 #include "deploydyn/solvers/step_controller.hpp"
 #include "deploydyn/solvers/time_integrator.hpp"
@@ -20,6 +21,17 @@
 namespace deploydyn {
 namespace {
 
+
+// "; node TIP at (x, y) m": where the node named for settling came to rest; empty without one.
+std::string settled_position_text(const Assembler& assembler, int node, const Eigen::VectorXd& q) {
+  if (node < 0) return {};
+  const Model& model = assembler.model();
+  std::vector<std::string> coordinates;
+  for (int axis = 0; axis < model.dimension; ++axis) {
+    coordinates.push_back(fmt::format("{:.6g}", q[assembler.dof_map().index(node, axis)]));
+  }
+  return fmt::format("; node {} at ({}) m", model.nodes[node].name, fmt::join(coordinates, ", "));
+}
 
 // Names the unknowns that carry a singular matrix's null vector: coordinates of a free motion
 // ("y.B") and constraints that are redundant or in conflict.
@@ -390,6 +402,8 @@ RunReport run_analysis(const Assembler& assembler, RecordSink& sink, const RunCo
   work.start(state);
   sink.record_state(assembler, state, work.tally());
   const bool end_when_latched = options.end_when == EndCondition::all_latched && assembler.n_latches() > 0;
+  std::optional<SettlingWatch> settling;
+  if (options.end_when == EndCondition::settled && dynamic) settling.emplace(assembler, options.settling);
 
   const std::unique_ptr<TimeIntegrator> integrator = make_time_integrator(assembler, options);
   StepController steps(options);
@@ -425,6 +439,7 @@ RunReport run_analysis(const Assembler& assembler, RecordSink& sink, const RunCo
     ++report.steps;
     switching.keep_events(report.events);
     const bool all_latched = end_when_latched && assembler.n_latched(state.history) == assembler.n_latches();
+    const bool settled = settling && settling->settled_after(state);
     const auto advance_work = [&]() {
       if (switching.projected()) {
         work.advance_through_impact(next, state);
@@ -440,8 +455,8 @@ RunReport run_analysis(const Assembler& assembler, RecordSink& sink, const RunCo
     } else {
       advance_work();
       // A step between output times reaches the envelopes only, so that peaks are not missed;
-      // the end of a run that every latch stopped is an output.
-      sink.record_state(assembler, state, work.tally(), /*output=*/all_latched);
+      // the end of a run that every latch stopped, or that settled, is an output.
+      sink.record_state(assembler, state, work.tally(), /*output=*/all_latched || settled);
     }
     report.time_reached_s = state.time_s;
     if (control.progress) control.progress(state.time_s);
@@ -449,6 +464,14 @@ RunReport run_analysis(const Assembler& assembler, RecordSink& sink, const RunCo
       report.end_reason = "all_latched";
       report.message = fmt::format("completed: every latch ({}) locked at t = {:.6g} s, after {} steps",
                                    assembler.n_latches(), state.time_s, report.steps);
+      return finish(report);
+    }
+    if (settled) {
+      report.end_reason = "settled";
+      report.settling_time_s = settling->calm_since_s();
+      report.message = fmt::format("completed: settled at t = {:.6g} s (held {:.6g} s), after {} steps{}",
+                                   *report.settling_time_s, options.settling.hold_s, report.steps,
+                                   settled_position_text(assembler, options.settling.node, state.q));
       return finish(report);
     }
   }

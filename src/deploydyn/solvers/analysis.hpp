@@ -6,6 +6,7 @@
 //   3. a StepRecord to the sink at t = 0 and at every output interval.
 // How it ended is a RunReport, never an exception: the caller keeps what was written.
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -59,8 +60,11 @@ struct RunReport {
   std::vector<std::string> notes;     // what the user should know of the results (a reduced history)
   std::vector<RunEvent> events;       // in time order
   int mode_switches = 0;              // steps taken again after a latch, stop or stick switched
-  // Why the run ended when it completed: "end_time", or "all_latched" (AnalysisOptions::end_when).
+  // Why the run ended when it completed: "end_time", "all_latched" or "settled"
+  // (AnalysisOptions::end_when).
   std::string end_reason = "end_time";
+  // end_when: settled, when it did: the settling time (the start of the calm held; s).
+  std::optional<double> settling_time_s;
 };
 
 

@@ -34,6 +34,7 @@ struct Section {
   double bending_stiffness_Nm2 = 0.0;  // E I_z
   double reference_length_m = 0.0;     // L0
   double initial_angle_rad = 0.0;      // β0: initial direction of x_b − x_a
+  double damping_time_s = 0.0;         // τ of the material's viscous resultants (0: undamped)
 };
 
 // Thermal strains the configuration is measured against (B5), already scaled.
@@ -101,33 +102,73 @@ inline Vector force_per_thermal_curvature(const State& st, const Section& s) {
   return -s.reference_length_m * s.bending_stiffness_Nm2 * st.d_curvature;
 }
 
-// K = L0 (EA ε_q ε_qᵀ + k_sGA γ_q γ_qᵀ + EI κ_q κ_qᵀ + N ε_qq + V γ_qq)   (B7)
-// with the second derivatives (d = x_b − x_a, θ either nodal rotation):
+// EA ε_q ε_qᵀ + k_sGA γ_q γ_qᵀ + EI κ_q κ_qᵀ: the material part of K / L0 (B7).
+inline Matrix material_part(const State& st, const Section& s) {
+  return s.axial_stiffness_N * st.d_strain * st.d_strain.transpose() +
+         s.shear_stiffness_N * st.d_shear * st.d_shear.transpose() +
+         s.bending_stiffness_Nm2 * st.d_curvature * st.d_curvature.transpose();
+}
+
+// N ε_qq + V γ_qq for any pair of resultants (κ_qq = 0), with (d = x_b − x_a, θ either rotation)
 //   ε_dθ = n / (2 L0),  ε_θθ = −(1 + ε)/4,  γ_dθ = −t / (2 L0),  γ_θθ = −γ/4.
-inline Matrix tangent(const State& st, const Section& s) {
+inline Matrix resultant_hessian(const State& st, const Section& s, double axial_N, double shear_N) {
   const double l0 = s.reference_length_m;
-  Matrix k = s.axial_stiffness_N * st.d_strain * st.d_strain.transpose() +
-             s.shear_stiffness_N * st.d_shear * st.d_shear.transpose() +
-             s.bending_stiffness_Nm2 * st.d_curvature * st.d_curvature.transpose();
-  // Geometric part: N ε_qq + V γ_qq. Per unit d and θ: g_dθ = (N n − V t) / (2 L0).
-  const Eigen::Vector2d g_dtheta = (st.axial_force_N * st.n - st.shear_force_N * st.t) / (2.0 * l0);
-  const double g_thetatheta =
-      -0.25 * (st.axial_force_N * (1.0 + st.strain) + st.shear_force_N * st.shear_strain);
+  const double stretch = 1.0 + st.strain;
+  Matrix h = Matrix::Zero();
+  // Per unit d and θ: g_dθ = (N n − V t) / (2 L0).
+  const Eigen::Vector2d g_dtheta = (axial_N * st.n - shear_N * st.t) / (2.0 * l0);
+  const double g_thetatheta = -0.25 * (axial_N * stretch + shear_N * st.shear_strain);
   constexpr int kPosition[2][2] = {{0, 1}, {3, 4}};
   constexpr int kRotation[2] = {2, 5};
   for (int node = 0; node < 2; ++node) {
     const double sign = node == 0 ? -1.0 : 1.0;  // ∂d/∂x_a = −I, ∂d/∂x_b = I
     for (int axis = 0; axis < 2; ++axis) {
       for (const int r : kRotation) {
-        k(kPosition[node][axis], r) += sign * g_dtheta[axis];
-        k(r, kPosition[node][axis]) += sign * g_dtheta[axis];
+        h(kPosition[node][axis], r) = sign * g_dtheta[axis];
+        h(r, kPosition[node][axis]) = sign * g_dtheta[axis];
       }
     }
   }
   for (const int r : kRotation) {
-    for (const int c : kRotation) k(r, c) += g_thetatheta;
+    for (const int c : kRotation) h(r, c) = g_thetatheta;
   }
-  return l0 * k;
+  return h;
+}
+
+// K = L0 (EA ε_q ε_qᵀ + k_sGA γ_q γ_qᵀ + EI κ_q κ_qᵀ + N ε_qq + V γ_qq)   (B7)
+inline Matrix tangent(const State& st, const Section& s) {
+  return s.reference_length_m *
+         (material_part(st, s) + resultant_hessian(st, s, st.axial_force_N, st.shear_force_N));
+}
+
+// Kelvin–Voigt material damping (docs/theory.md, "Material damping", beams): viscous
+// resultants τ (EA ε̇, k_sGA γ̇, EI κ̇) on the strain rates ε̇ = ε_q·q̇, γ̇ = γ_q·q̇, κ̇ = κ_q·q̇,
+// through the same strain gradients as the elastic ones. The strains are objective, so a rigid
+// motion has zero rates and no damping force.
+//   f_d = τ L0 (EA ε̇ ε_q + k_sGA γ̇ γ_q + EI κ̇ κ_q)          (= τ K_mat q̇)
+//   ∂f_d/∂q̇ = τ L0 (EA ε_q ε_qᵀ + k_sGA γ_q γ_qᵀ + EI κ_q κ_qᵀ)
+//   ∂f_d/∂q = τ L0 [EA (ε̇ ε_qq + ε_q (ε_qq q̇)ᵀ) + k_sGA (γ̇ γ_qq + γ_q (γ_qq q̇)ᵀ)]
+inline Vector damping_force(const State& st, const Section& s, const Vector& v) {
+  const double scale = s.damping_time_s * s.reference_length_m;
+  return scale * (s.axial_stiffness_N * st.d_strain.dot(v) * st.d_strain +
+                  s.shear_stiffness_N * st.d_shear.dot(v) * st.d_shear +
+                  s.bending_stiffness_Nm2 * st.d_curvature.dot(v) * st.d_curvature);
+}
+
+// c_q ∂f_d/∂q + c_v ∂f_d/∂q̇ at rates v: the damping's block of the iteration matrix.
+inline Matrix damping_tangent(const State& st, const Section& s, const Vector& v, double c_q,
+                              double c_v) {
+  Matrix out = c_v * material_part(st, s);
+  if (c_q != 0.0) {
+    const Matrix strain_hessian = resultant_hessian(st, s, 1.0, 0.0);  // ε_qq
+    const Matrix shear_hessian = resultant_hessian(st, s, 0.0, 1.0);   // γ_qq
+    const double axial = s.axial_stiffness_N, shear = s.shear_stiffness_N;
+    out += c_q * (axial * (st.d_strain.dot(v) * strain_hessian +
+                           st.d_strain * (strain_hessian * v).transpose()) +
+                  shear * (st.d_shear.dot(v) * shear_hessian +
+                           st.d_shear * (shear_hessian * v).transpose()));
+  }
+  return s.damping_time_s * s.reference_length_m * out;
 }
 
 // (B8): the translational mass m on x and y, the rotary inertia m_θ = ρ I L0 on θ.

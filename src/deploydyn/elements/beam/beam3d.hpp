@@ -46,6 +46,7 @@ struct Section {
       StrainVector::Zero();         // C: EA, k_sGA_y, k_sGA_z (N), GJ, EI_y, EI_z (N·m²)
   double reference_length_m = 0.0;  // L0
   Eigen::Matrix3d frame = Eigen::Matrix3d::Identity();  // E = [e1 e2 e3], initial
+  double damping_time_s = 0.0;  // τ of the material's viscous resultants τ C ṡ (0: undamped)
 };
 
 // Thermal strains s_t (D4, D5): αΔT and the curvatures of the gradients, already scaled.
@@ -201,6 +202,39 @@ inline ElementMatrix tangent(const State& s, const Section& section) {
       s.gradient.transpose() * section.stiffness.asDiagonal() * s.gradient +
       weighted_strain_hessian(s.resultants, section.frame);
   return l0 * t.transpose() * kz * t;
+}
+
+// Kelvin–Voigt material damping (docs/theory.md, "Material damping", beams): viscous
+// resultants τ C ṡ on the strain rates ṡ = G ż, ż = T q̇, through the same gradients as the
+// elastic ones. The strains are objective (rotating r', d_i, d_i' together keeps them), so a
+// rigid motion dissipates nothing.
+//   f_d = τ L0 Tᵀ Gᵀ C ṡ,   ∂f_d/∂q̇ = τ L0 Tᵀ Gᵀ C G T,
+//   ∂f_d/∂q = τ L0 Tᵀ (Gᵀ C Ġ + Σ_k [C ṡ]_k H_k) T,   row k of Ġ = (H_k ż)ᵀ
+inline ElementVector damping_force(const State& s, const Section& section, const ElementVector& v) {
+  const double l0 = section.reference_length_m;
+  const Eigen::Matrix<double, kIntermediate, kDofs> t = intermediate_map(l0);
+  const StrainVector viscous = section.stiffness.cwiseProduct(s.gradient * (t * v));
+  return section.damping_time_s * l0 * t.transpose() * (s.gradient.transpose() * viscous);
+}
+
+// c_q ∂f_d/∂q + c_v ∂f_d/∂q̇ at rates v: the damping's block of the iteration matrix.
+inline ElementMatrix damping_tangent(const State& s, const Section& section, const ElementVector& v,
+                                     double c_q, double c_v) {
+  const double l0 = section.reference_length_m;
+  const Eigen::Matrix<double, kIntermediate, kDofs> t = intermediate_map(l0);
+  const Eigen::Matrix<double, kIntermediate, 1> z_rate = t * v;
+  IntermediateMatrix kz = c_v * s.gradient.transpose() * section.stiffness.asDiagonal() * s.gradient;
+  if (c_q != 0.0) {
+    const StrainVector viscous = section.stiffness.cwiseProduct(s.gradient * z_rate);
+    StrainGradient gradient_rate;  // Ġ
+    for (int k = 0; k < kStrains; ++k) {
+      gradient_rate.row(k) =
+          (weighted_strain_hessian(StrainVector::Unit(k), section.frame) * z_rate).transpose();
+    }
+    kz += c_q * (s.gradient.transpose() * section.stiffness.asDiagonal() * gradient_rate +
+                 weighted_strain_hessian(viscous, section.frame));
+  }
+  return section.damping_time_s * l0 * t.transpose() * kz * t;
 }
 
 // Rotary inertia per length J = ρ(I_z e2e2ᵀ + I_y e3e3ᵀ) (kg·m), ρ = m/(A L0).

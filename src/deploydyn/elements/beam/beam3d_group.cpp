@@ -61,6 +61,13 @@ struct Beam3dRecord {
     return beam3d::internal_force_per_thermal_strain(s, section, thermal_rate(t));
   }
   Matrix tangent(const State& s) const { return beam3d::tangent(s, section); }
+  bool damped() const { return section.damping_time_s > 0.0; }
+  Vector damping_force(const State& s, const Vector& v) const {
+    return beam3d::damping_force(s, section, v);
+  }
+  Matrix damping_tangent(const State& s, const Vector& v, double c_q, double c_v) const {
+    return beam3d::damping_tangent(s, section, v, c_q, c_v);
+  }
   Matrix mass(MassMatrixKind kind) const {
     return beam3d::mass_matrix(mass_kg, rotary_per_length, section.reference_length_m, kind);
   }
@@ -131,6 +138,7 @@ std::unique_ptr<ElementGroup> make_beam_group_3d(const Model& model, const DofMa
         e.shear_factor * shear * e.area_m2, shear * e.torsion_m4, youngs * e.inertia_y_m4,
         youngs * e.inertia_z_m4;
     beam.section.reference_length_m = e.reference_length_m;
+    beam.section.damping_time_s = material.damping_time_s;
     beam.mass_kg = e.mass_kg;
     beam.rotary_per_length =
         beam3d::rotary_inertia_per_length(e.mass_kg, e.area_m2, e.inertia_y_m4, e.inertia_z_m4,

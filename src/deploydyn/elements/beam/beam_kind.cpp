@@ -56,6 +56,13 @@ struct Beam2dRecord {
                beam2d::force_per_thermal_curvature(s, section);
   }
   Matrix tangent(const State& s) const { return beam2d::tangent(s, section); }
+  bool damped() const { return section.damping_time_s > 0.0; }
+  Vector damping_force(const State& s, const Vector& v) const {
+    return beam2d::damping_force(s, section, v);
+  }
+  Matrix damping_tangent(const State& s, const Vector& v, double c_q, double c_v) const {
+    return beam2d::damping_tangent(s, section, v, c_q, c_v);
+  }
   Matrix mass(MassMatrixKind kind) const {
     return beam2d::mass_matrix(mass_kg, rotary_inertia_kg_m2, kind);
   }
@@ -117,7 +124,8 @@ std::unique_ptr<ElementGroup> make_beam_group_2d(const Model& model, const DofMa
                     .shear_stiffness_N = e.shear_factor * e.shear_modulus_Pa * e.area_m2,
                     .bending_stiffness_Nm2 = material.youngs_modulus_Pa * e.inertia_z_m4,
                     .reference_length_m = e.reference_length_m,
-                    .initial_angle_rad = std::atan2(chord[1], chord[0])};
+                    .initial_angle_rad = std::atan2(chord[1], chord[0]),
+                    .damping_time_s = material.damping_time_s};
     beam.mass_kg = e.mass_kg;
     beam.rotary_inertia_kg_m2 = e.mass_kg * e.inertia_z_m4 / e.area_m2;
     beam.expansion_per_C = material.expansion_per_C;
