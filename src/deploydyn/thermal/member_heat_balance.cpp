@@ -1,5 +1,6 @@
 #include "deploydyn/thermal/member_heat_balance.hpp"
 
+#include <Eigen/Geometry>
 #include <cmath>
 #include <stdexcept>
 #include <fmt/format.h>

@@ -5,6 +5,7 @@
 #include <libnova/solar.h>
 #include <libnova/transform.h>
 
+#include <Eigen/Geometry>
 #include <cmath>
 #include <numbers>
 
