@@ -53,6 +53,8 @@
 #include "deploydyn/study/study_channel.hpp"
 #include "deploydyn/study/study_loader.hpp"
 #include "deploydyn/study/study_runner.hpp"
+#include "deploydyn/thermal/sun_position.hpp"
+#include "deploydyn/thermal/thermal_coupling.hpp"
 #include "deploydyn/util/stop_point.hpp"
 
 namespace py = pybind11;
@@ -225,8 +227,13 @@ py::dict run_in_memory(const LoadedModel& loaded, const py::object& stop) {
   const std::vector<std::string>& columns = sink.columns();
   StopWatch watch(stop);
   const RunReport report = watch.run([&] {
-    const Assembler assembler(loaded.model);  // std::invalid_argument → ValueError
-    RunReport done = run_analysis(assembler, sink, watch.control());
+    // An environment sets the temperatures step by step into a copy of the model
+    // (thermal/thermal_coupling.hpp); the sink records on this thread.
+    std::optional<Model> coupled_model;
+    std::optional<thermal::ThermalCoupling> coupling;
+    if (loaded.model.environment) coupling.emplace(coupled_model.emplace(loaded.model));
+    const Assembler assembler(coupled_model ? *coupled_model : loaded.model);  // std::invalid_argument → ValueError
+    RunReport done = run_analysis(assembler, sink, watch.control(), coupling ? &*coupling : nullptr);
     for (std::string& warning : plausibility_warnings(loaded.model, sink.envelope())) {
       done.warnings.push_back(std::move(warning));
     }
@@ -756,4 +763,17 @@ PYBIND11_MODULE(_core, m) {
         return std::make_pair(o.path, o.value);
       },
       py::arg("text"), "Splits 'PATH=VALUE' as --set does");
+  // For the test against pysolar (python/tests/test_sun_position.py): not part of the API.
+  m.def(
+      "sun_position",
+      [](double latitude_deg, double longitude_deg, int year, int month, int day, int hour, int minute,
+         double second, double utc_offset_h) {
+        const CivilTime local{year, month, day, hour, minute, second};
+        const thermal::SunPosition sun =
+            thermal::sun_position(latitude_deg, longitude_deg, thermal::julian_day_utc(local, utc_offset_h));
+        return std::make_pair(sun.altitude_deg, sun.azimuth_deg);
+      },
+      py::arg("latitude_deg"), py::arg("longitude_deg"), py::arg("year"), py::arg("month"), py::arg("day"),
+      py::arg("hour"), py::arg("minute"), py::arg("second"), py::arg("utc_offset_h"),
+      "(true altitude, azimuth from north towards east) of the sun, degrees, at a local time");
 }

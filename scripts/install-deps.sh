@@ -6,10 +6,10 @@ set -euo pipefail
 packages=(
   build-essential cmake ninja-build pkg-config
   libeigen3-dev libyaml-cpp-dev libyaml-dev libsimdjson-dev libcli11-dev libfmt-dev nlohmann-json3-dev
-  libgtest-dev libgmock-dev libbenchmark-dev libsuitesparse-dev libmetis-dev libspectra-dev
+  libgtest-dev libgmock-dev libbenchmark-dev libsuitesparse-dev libmetis-dev libspectra-dev libnova-dev
   clang libclang-rt-14-dev
   python3 python3-numpy python3-matplotlib
-  python3-dev pybind11-dev python3-pytest python3-pil python3-yaml
+  python3-dev pybind11-dev python3-pytest python3-pil python3-yaml python3-pysolar
   libjs-three chromium chromium-driver python3-selenium
   libopenmpi-dev openmpi-bin python3-mpi4py libhdf5-dev python3-h5py xvfb xauth
   # ParaView's Python (pvpython) also provides VTK's (vtkmodules); it conflicts with python3-vtk9.

@@ -27,6 +27,18 @@ struct BadModelCase {
 std::ostream& operator<<(std::ostream& out, const BadModelCase& bad) { return out << bad.file; }
 
 const BadModelCase kBadModels[] = {
+    {"environment_without_specific_heat.yaml", 3, "materials.alu.specific_heat",
+     "is required by the environment (element 'boom' is of this material)"},
+    {"environment_absorptivity_above_one.yaml", 3, "materials.alu.absorptivity",
+     "must be at most 1 (a share of the incident radiation), got 1.6"},
+    {"environment_with_thermal.yaml", 8, "environment", "sets every member's temperature: remove 'thermal'"},
+    {"environment_element_without_section.yaml", 7, "environment", "but element 'boom' takes none"},
+    {"environment_bad_start.yaml", 11, "environment.start",
+     "expected a local date and time 'YYYY-MM-DD hh:mm[:ss]' (e.g. '2026-07-15 08:00'), got '15.07.2026 08:00'"},
+    {"environment_north_along_up.yaml", 14, "environment.north", "'up' and 'north' must be different axes"},
+    {"environment_in_modal_analysis.yaml", 7, "environment", "not of analysis type modal"},
+    {"environment_overlapping_eclipses.yaml", 11, "environment.eclipses.1",
+     "eclipses must be in time order and must not overlap"},
     {"output_select_unknown_node.yaml", 6, "output.select.nodes.1",
      "'top*' matches no node; give node names, patterns with * or ?, or all, moving"},
     {"output_select_unknown_quantity.yaml", 7, "output.select.quantities.1",

@@ -290,6 +290,45 @@ drivers:
   expect_round_trip(load_model(fmt::format("{}/examples/petal/petal.yaml", DEPLOYDYN_SOURCE_DIR)));
 }
 
+// Environments: an orbit with eclipses, a ground site at a local time with turned axes; the
+// materials' thermal keys.
+TEST(ModelRoundTrip, Environments) {
+  const Model orbit = load_model(fmt::format("{}/examples/thermal/boom_out_of_eclipse.yaml", DEPLOYDYN_SOURCE_DIR));
+  expect_round_trip(orbit);
+  ASSERT_TRUE(orbit.environment);
+  EXPECT_EQ(orbit.environment->orbit.eclipses.size(), 1u);
+  EXPECT_EQ(orbit.materials[0].absorptivity, 0.6);
+  const Model ground = load_model_from_string(R"(
+nodes: {A: [0, 0, 0], B: [1, 0, 0]}
+materials: {alu: {E: 7.0e10, density: 2700, specific_heat: 900, absorptivity: 0.35, emissivity: 0.85}}
+sections: {rod: {shape: rectangle, width: 0.01, height: 0.03}}
+elements: {1: {nodes: [A, B], section: rod, material: alu}}
+supports: [{node: A}, {node: B}]
+environment:
+  type: ground
+  latitude: -33.87
+  longitude: 151.21
+  start: '2026-12-21T14:30:15.5'
+  utc_offset: 11
+  up: y
+  north: -z
+  direct_normal: 900
+  diffuse: 110
+  sky_temperature: 280
+  air_temperature: 303
+  convection: 12
+  reference_temperature: 293.15
+  initial_temperature: 300
+)", "ground environment");
+  expect_round_trip(ground);
+  const GroundEnvironment& site = ground.environment->ground;
+  EXPECT_EQ(site.start.hour, 14);
+  EXPECT_EQ(site.start.second, 15.5);
+  EXPECT_EQ(site.north.axis, 2);
+  EXPECT_EQ(site.north.sign, -1.0);
+  EXPECT_EQ(ground.environment->initial_temperature_K, 300.0);
+}
+
 // Cables: a winch's rest length L0(t), a pretension (written as given, its L0 recomputed to the
 // same bits) and the default rest length.
 TEST(ModelRoundTrip, Cables) {

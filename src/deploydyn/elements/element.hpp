@@ -23,6 +23,7 @@
 #include <Eigen/Core>
 #include <algorithm>
 #include <memory>
+#include <optional>
 #include <span>
 #include <string>
 #include <string_view>
@@ -102,6 +103,13 @@ struct StepEnds {
   bool may_switch = true;
 };
 enum class StepVerdict { accept, redo };
+
+// An element as a lumped body that its environment heats (thermal/): indices into
+// Model::materials and Model::sections (−1: the element takes no section).
+struct HeatedBody {
+  int material = 0;
+  int section = -1;
+};
 
 class ElementGroup {
  public:
@@ -210,6 +218,12 @@ class ElementKind {
   virtual double temperature_change_C(const Model& model, int element, double t) const = 0;
   // Gives every element of this type the temperature change ΔT(t) (°C), as its own.
   virtual void set_temperature_change(Model& model, const TimeFunction& change_C) const = 0;
+  // The element as a body an environment heats; empty for one with no body of its own (a hinge).
+  virtual std::optional<HeatedBody> heated_body(const Model& model, int element) const = 0;
+  // Gives element `element` alone the temperature change ΔT(t) (°C): the environment's coupling
+  // (thermal/thermal_coupling.hpp) sets it each step. A type with no temperature ignores it.
+  virtual void set_element_temperature_change(Model& model, int element,
+                                              const TimeFunction& change_C) const = 0;
   // Unknowns a node of one of its elements carries beyond its position, appended by name
   // (a rotation "rz", a slope "dx/ds"); the bar adds none.
   virtual void add_node_unknowns(const Model& model,

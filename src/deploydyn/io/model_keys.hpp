@@ -14,11 +14,12 @@ namespace deploydyn::model_keys {
 
 using Keys = std::span<const std::string_view>;
 
-inline constexpr std::array<std::string_view, 17> kTopLevel{
+inline constexpr std::array<std::string_view, 18> kTopLevel{
     "name",    "description", "units",   "nodes",   "materials", "sections", "elements", "members", "thermal",
-    "supports", "joints",     "drivers", "loads",   "gravity",   "functions", "analysis", "output"};
+    "environment", "supports", "joints", "drivers", "loads", "gravity", "functions", "analysis", "output"};
 inline constexpr std::array<std::string_view, 2> kNode{"at", "mass"};
-inline constexpr std::array<std::string_view, 5> kMaterial{"E", "alpha", "density", "yield_strength", "damping"};
+inline constexpr std::array<std::string_view, 8> kMaterial{"E",       "alpha",         "density",      "yield_strength",
+                                                          "damping", "specific_heat", "absorptivity", "emissivity"};
 inline constexpr std::array<std::string_view, 4> kMaterialDamping{"ratio", "loss_factor", "frequency", "time"};
 inline constexpr std::array<std::string_view, 3> kCircularTubeSection{"shape", "outer_diameter", "wall_thickness"};
 inline constexpr std::array<std::string_view, 4> kRectangularTubeSection{"shape", "width", "height",
@@ -27,6 +28,13 @@ inline constexpr std::array<std::string_view, 2> kCircleSection{"shape", "diamet
 inline constexpr std::array<std::string_view, 3> kRectangleSection{"shape", "width", "height"};
 inline constexpr std::array<std::string_view, 3> kMember{"elements", "buckling_length_factor", "slack"};
 inline constexpr std::array<std::string_view, 1> kThermal{"dT"};
+inline constexpr std::array<std::string_view, 8> kOrbitEnvironment{
+    "type", "reference_temperature", "initial_temperature", "sun_direction", "solar_constant", "sink_temperature",
+    "eclipses", "penumbra"};
+inline constexpr std::array<std::string_view, 14> kGroundEnvironment{
+    "type",       "reference_temperature", "initial_temperature", "latitude",      "longitude",
+    "start",      "utc_offset",            "up",                  "north",         "direct_normal",
+    "diffuse",    "sky_temperature",       "air_temperature",     "convection"};
 inline constexpr std::array<std::string_view, 2> kSupport{"node", "fix"};
 inline constexpr std::array<std::string_view, 3> kJoint{"type", "nodes", "axis"};
 inline constexpr std::array<std::string_view, 7> kBarAngleDriver{"type", "element", "pivot", "axis",
@@ -83,7 +91,7 @@ struct Section {
   Keys keys;
 };
 
-inline constexpr std::array<Section, 43> kSections{{
+inline constexpr std::array<Section, 45> kSections{{
     {"top level", "### Top level", kTopLevel},
     {"nodes.NAME", "### `nodes`", kNode},
     {"materials.NAME", "### `materials`", kMaterial},
@@ -94,6 +102,8 @@ inline constexpr std::array<Section, 43> kSections{{
     {"sections.NAME (shape: rectangle)", "### `sections`", kRectangleSection},
     {"members.NAME", "### `members`", kMember},
     {"thermal", "### `thermal`", kThermal},
+    {"environment (type: orbit)", "### `environment`", kOrbitEnvironment},
+    {"environment (type: ground)", "### `environment`", kGroundEnvironment},
     {"supports.N", "### `supports`", kSupport},
     {"joints.NAME", "### `joints`", kJoint},
     {"drivers.NAME (type: bar_angle)", "### `drivers`", kBarAngleDriver},

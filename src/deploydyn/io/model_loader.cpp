@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <array>
 #include <charconv>
+#include <cstdio>
 #include <cmath>
 #include <fstream>
 #include <functional>
@@ -157,6 +158,7 @@ class ModelReader {
       if (const auto dT = thermal->find("dT")) model_.temperature_change_C = function(*dT);
     }
     read_elements(root_.at("elements"));
+    if (const auto environment = root_.find("environment")) read_environment(*environment);
     if (const auto members = root_.find("members")) read_members(*members);
     if (const auto supports = root_.find("supports")) read_supports(*supports);
     if (const auto joints = root_.find("joints")) read_joints(*joints);
@@ -168,6 +170,12 @@ class ModelReader {
     model_.analysis.output_interval_s = model_.analysis.step_s;
     if (const auto analysis = root_.find("analysis")) read_analysis(*analysis);
     if (const auto output = root_.find("output")) read_output(*output);
+    if (const auto environment = root_.find("environment");
+        environment && model_.analysis.type != AnalysisType::dynamic && model_.analysis.type != AnalysisType::quasi_static) {
+      environment->fail(fmt::format("sets the temperatures of a time history (analysis type dynamic or static), not of "
+                                    "analysis type {}",
+                                    to_string(model_.analysis.type)));
+    }
     return std::move(model_);
   }
 
@@ -463,8 +471,142 @@ class ModelReader {
         material.yield_strength_Pa = strength->number(Sign::positive, "Pa");
       }
       if (const auto damping = spec.find("damping")) material.damping_time_s = damping_time(*damping);
+      if (const auto heat = spec.find("specific_heat")) material.specific_heat_J_kgK = heat->number(Sign::positive, "J/(kg·K)");
+      if (const auto absorptivity = spec.find("absorptivity")) material.absorptivity = fraction(*absorptivity);
+      if (const auto emissivity = spec.find("emissivity")) material.emissivity = fraction(*emissivity);
       materials_.add(name, spec);
       model_.materials.push_back(material);
+    }
+  }
+
+  // An absorptivity or emissivity: a number in [0, 1].
+  static double fraction(const YamlValue& value) {
+    const double share = value.number(Sign::non_negative, "");
+    if (share > 1.0) value.fail(fmt::format("must be at most 1 (a share of the incident radiation), got {}", share));
+    return share;
+  }
+
+  // The environment (docs/model-format.md, `environment`) ------------------------------------
+
+  void read_environment(const YamlValue& spec) {
+    Environment environment;
+    environment.kind = spec.at("type").choice(kEnvironmentKinds);
+    if (environment.kind == EnvironmentKind::orbit) {
+      spec.expect_keys(model_keys::kOrbitEnvironment);
+      OrbitEnvironment& orbit = environment.orbit;
+      const YamlValue direction = spec.at("sun_direction");
+      Eigen::Vector3d sun = Eigen::Vector3d::Zero();
+      const auto components = direction.numbers(3, 3, "");
+      for (int i = 0; i < 3; ++i) sun[i] = components[static_cast<std::size_t>(i)];
+      if (!(sun.norm() > 0.0)) direction.fail("must not be zero: it points from the structure to the sun");
+      orbit.sun_direction = sun.normalized();
+      orbit.solar_constant_W_m2 = spec.number_or("solar_constant", orbit.solar_constant_W_m2, Sign::non_negative, "W/m²");
+      orbit.sink_temperature_K = spec.number_or("sink_temperature", orbit.sink_temperature_K, Sign::non_negative, "K");
+      orbit.penumbra_s = spec.number_or("penumbra", 0.0, Sign::non_negative, "s");
+      if (const auto eclipses = spec.find("eclipses")) {
+        double last_end_s = -std::numeric_limits<double>::infinity();
+        for (const YamlValue& eclipse : eclipses->items(0, kUnbounded, "[start, end] intervals (s)")) {
+          const auto times = eclipse.numbers(2, 2, "s");
+          if (!(times[1] > times[0])) eclipse.fail(fmt::format("its end ({}) must come after its start ({})", times[1], times[0]));
+          if (!(times[0] > last_end_s)) eclipse.fail("eclipses must be in time order and must not overlap");
+          last_end_s = times[1];
+          orbit.eclipses.push_back({times[0], times[1]});
+        }
+      }
+    } else {
+      spec.expect_keys(model_keys::kGroundEnvironment);
+      GroundEnvironment& ground = environment.ground;
+      const YamlValue latitude = spec.at("latitude");
+      ground.latitude_deg = latitude.number(Sign::any, "°");
+      if (std::abs(ground.latitude_deg) > 90.0) latitude.fail(fmt::format("must be in [−90, 90] degrees, got {}", ground.latitude_deg));
+      const YamlValue longitude = spec.at("longitude");
+      ground.longitude_deg = longitude.number(Sign::any, "°");
+      if (std::abs(ground.longitude_deg) > 180.0) longitude.fail(fmt::format("must be in [−180, 180] degrees (east positive), got {}", ground.longitude_deg));
+      ground.start = civil_time(spec.at("start"));
+      const YamlValue offset = spec.at("utc_offset");
+      ground.utc_offset_h = offset.number(Sign::any, "h");
+      if (std::abs(ground.utc_offset_h) > 14.0) offset.fail(fmt::format("must be in [−14, 14] hours, got {}", ground.utc_offset_h));
+      if (const auto up = spec.find("up")) ground.up = signed_axis(*up);
+      if (const auto north = spec.find("north")) ground.north = signed_axis(*north);
+      if (ground.up.axis == ground.north.axis) {
+        const auto north = spec.find("north");
+        (north ? *north : spec.at("up")).fail("'up' and 'north' must be different axes (north lies in the horizon)");
+      }
+      ground.direct_normal_W_m2 = spec.at("direct_normal").number(Sign::non_negative, "W/m²");
+      ground.diffuse_W_m2 = spec.number_or("diffuse", 0.0, Sign::non_negative, "W/m²");
+      ground.air_temperature_K = spec.at("air_temperature").number(Sign::positive, "K");
+      ground.sky_temperature_K = spec.number_or("sky_temperature", ground.air_temperature_K, Sign::non_negative, "K");
+      ground.convection_W_m2K = spec.number_or("convection", 0.0, Sign::non_negative, "W/(m²·K)");
+    }
+    environment.reference_temperature_K = spec.at("reference_temperature").number(Sign::positive, "K");
+    if (const auto initial = spec.find("initial_temperature")) environment.initial_temperature_K = initial->number(Sign::positive, "K");
+    check_heated_members(spec);
+    model_.environment = environment;
+  }
+
+  // "2026-07-15 08:00" or "2026-07-15T08:00:30": the local civil time at t = 0.
+  static CivilTime civil_time(const YamlValue& value) {
+    const std::string text = value.text();
+    CivilTime time;
+    char separator = 0;
+    int consumed = 0;
+    const int n = std::sscanf(text.c_str(), "%d-%d-%d%c%d:%d%n", &time.year, &time.month, &time.day, &separator,
+                              &time.hour, &time.minute, &consumed);
+    double second = 0.0;
+    int consumed_seconds = 0;
+    const bool with_seconds = n == 6 && std::sscanf(text.c_str() + consumed, ":%lf%n", &second, &consumed_seconds) == 1;
+    const bool whole = n == 6 && static_cast<std::size_t>(consumed + consumed_seconds) == text.size();
+    const bool valid = whole && (separator == ' ' || separator == 'T') && time.month >= 1 && time.month <= 12 &&
+                       time.day >= 1 && time.day <= 31 && time.hour >= 0 && time.hour <= 23 && time.minute >= 0 &&
+                       time.minute <= 59 && second >= 0.0 && second < 60.0;
+    if (!valid) {
+      value.fail(fmt::format("expected a local date and time 'YYYY-MM-DD hh:mm[:ss]' (e.g. '2026-07-15 08:00'), got '{}'",
+                             io::excerpt(text)));
+    }
+    if (with_seconds) time.second = second;
+    return time;
+  }
+
+  // "z", "-y": a global axis and its sense.
+  static SignedAxis signed_axis(const YamlValue& value) {
+    const std::string text = value.text();
+    const std::size_t at = text.starts_with('-') || text.starts_with('+') ? 1 : 0;
+    const std::string_view name = std::string_view(text).substr(at);
+    const std::size_t axis = name == "x" ? 0 : name == "y" ? 1 : name == "z" ? 2 : 3;
+    if (axis == 3) value.fail(fmt::format("expected a global axis: x, y or z, with an optional sign ('-y'), got '{}'", io::excerpt(text)));
+    return {static_cast<int>(axis), text.starts_with('-') ? -1.0 : 1.0};
+  }
+
+  // Every bar, beam and cable becomes a lumped body: its material must say how it takes heat,
+  // and it must take a section (its sunlit width). A member's given ΔT would be overwritten.
+  void check_heated_members(const YamlValue& spec) const {
+    if (root_.find("thermal")) {
+      spec.fail("sets every member's temperature: remove 'thermal' (its ΔT), or this environment");
+    }
+    for (const auto& [name, entry] : root_.at("elements").entries()) {
+      if (const auto dT = entry.is_map() ? entry.find("dT") : std::nullopt) {
+        dT->fail("an element's own ΔT cannot stand beside 'environment', which sets every member's temperature");
+      }
+    }
+    for (const ElementRef& ref : all_elements(model_)) {
+      const std::optional<HeatedBody> body = ref.kind->heated_body(model_, ref.index);
+      if (!body) continue;
+      const std::string& element = ref.kind->element_name(model_, ref.index);
+      if (body->section < 0) {
+        spec.fail(fmt::format("needs every bar, beam and cable to take a section (its sunlit width and "
+                              "perimeter), but element '{}' takes none",
+                              element));
+      }
+      const Material& material = model_.materials[body->material];
+      const YamlValue material_spec = root_.at("materials").at(material.name);
+      for (const auto& [key, value] : {std::pair{"specific_heat", material.specific_heat_J_kgK},
+                                       std::pair{"absorptivity", material.absorptivity},
+                                       std::pair{"emissivity", material.emissivity}}) {
+        if (!value) {
+          material_spec.fail_key(key, fmt::format("is required by the environment (element '{}' is of this material)",
+                                                  element));
+        }
+      }
     }
   }
 

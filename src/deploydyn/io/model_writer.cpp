@@ -148,6 +148,50 @@ class YamlElementEntry final : public ElementEntryWriter {
   YAML::Emitter& out_;
 };
 
+std::string axis_name(const SignedAxis& axis) {
+  return std::string(axis.sign < 0.0 ? "-" : "") + "xyz"[axis.axis];
+}
+
+void emit_environment(YAML::Emitter& out, const Environment& environment) {
+  emit_key(out, "environment");
+  out << YAML::BeginMap;
+  emit_key(out, "type");
+  out << std::string(kEnvironmentKinds.name(environment.kind));
+  emit_number(out, "reference_temperature", environment.reference_temperature_K);
+  if (environment.initial_temperature_K) emit_number(out, "initial_temperature", *environment.initial_temperature_K);
+  if (environment.kind == EnvironmentKind::orbit) {
+    const OrbitEnvironment& orbit = environment.orbit;
+    emit_key(out, "sun_direction");
+    emit_vector(out, orbit.sun_direction, 3);
+    emit_number(out, "solar_constant", orbit.solar_constant_W_m2);
+    emit_number(out, "sink_temperature", orbit.sink_temperature_K);
+    emit_key(out, "eclipses");
+    out << YAML::BeginSeq;
+    for (const EclipseInterval& eclipse : orbit.eclipses) emit_numbers(out, {eclipse.start_s, eclipse.end_s});
+    out << YAML::EndSeq;
+    emit_number(out, "penumbra", orbit.penumbra_s);
+  } else {
+    const GroundEnvironment& ground = environment.ground;
+    emit_number(out, "latitude", ground.latitude_deg);
+    emit_number(out, "longitude", ground.longitude_deg);
+    const CivilTime& start = ground.start;
+    emit_key(out, "start");
+    out << fmt::format("{:04d}-{:02d}-{:02d} {:02d}:{:02d}:{}", start.year, start.month, start.day, start.hour,
+                       start.minute, start.second < 10.0 ? fmt::format("0{}", start.second) : fmt::format("{}", start.second));
+    emit_number(out, "utc_offset", ground.utc_offset_h);
+    emit_key(out, "up");
+    out << axis_name(ground.up);
+    emit_key(out, "north");
+    out << axis_name(ground.north);
+    emit_number(out, "direct_normal", ground.direct_normal_W_m2);
+    emit_number(out, "diffuse", ground.diffuse_W_m2);
+    emit_number(out, "sky_temperature", ground.sky_temperature_K);
+    emit_number(out, "air_temperature", ground.air_temperature_K);
+    emit_number(out, "convection", ground.convection_W_m2K);
+  }
+  out << YAML::EndMap;
+}
+
 void emit_geometry(YAML::Emitter& out, const Model& model) {
   emit_key(out, "nodes");
   out << YAML::BeginMap;
@@ -175,6 +219,9 @@ void emit_geometry(YAML::Emitter& out, const Model& model) {
     emit_number(out, "alpha", material.expansion_per_C);
     if (material.density_kg_m3) emit_number(out, "density", *material.density_kg_m3);
     if (material.yield_strength_Pa) emit_number(out, "yield_strength", *material.yield_strength_Pa);
+    if (material.specific_heat_J_kgK) emit_number(out, "specific_heat", *material.specific_heat_J_kgK);
+    if (material.absorptivity) emit_number(out, "absorptivity", *material.absorptivity);
+    if (material.emissivity) emit_number(out, "emissivity", *material.emissivity);
     if (material.damping_time_s > 0.0) {  // as its damping time: what a ratio at a frequency gave
       emit_key(out, "damping");
       out << YAML::Flow << YAML::BeginMap;
@@ -214,11 +261,15 @@ void emit_geometry(YAML::Emitter& out, const Model& model) {
     out << YAML::EndMap;
   }
 
-  emit_key(out, "thermal");
-  out << YAML::BeginMap;
-  emit_key(out, "dT");
-  emit_function(out, model.temperature_change_C);
-  out << YAML::EndMap;
+  if (model.environment) {
+    emit_environment(out, *model.environment);
+  } else {
+    emit_key(out, "thermal");
+    out << YAML::BeginMap;
+    emit_key(out, "dT");
+    emit_function(out, model.temperature_change_C);
+    out << YAML::EndMap;
+  }
 
   // Every key explicit (ElementKind::write): the reload then needs no recomputation. The type
   // is written for all but the first kind, which is the default.

@@ -13,6 +13,7 @@
 #include "deploydyn/elements/beam/beam_element.hpp"
 #include "deploydyn/elements/cable/cable_element.hpp"
 #include "deploydyn/elements/hinge/hinge_element.hpp"
+#include "deploydyn/model/environment.hpp"
 #include "deploydyn/model/joint.hpp"
 #include "deploydyn/model/member.hpp"
 #include "deploydyn/model/section.hpp"
@@ -39,6 +40,10 @@ struct Material {
   // f_y: the stress (Pa) the member checks take as the material's capacity, the yield strength
   // of a metal or a composite's design strength; empty: no stress checks on its members.
   std::optional<double> yield_strength_Pa;
+  // What an `environment` needs of its members' material (thermal/member_heat_balance.hpp):
+  std::optional<double> specific_heat_J_kgK;  // c
+  std::optional<double> absorptivity;         // α_s, solar, in [0, 1]
+  std::optional<double> emissivity;           // ε, infrared, in [0, 1]
 };
 
 // Ground support: the chosen coordinates of a node keep their initial values.
@@ -312,6 +317,8 @@ struct Model {
   std::vector<NodalLoad> loads;
   Eigen::Vector3d gravity_m_s2 = Eigen::Vector3d::Zero();
   TimeFunction temperature_change_C;  // model-wide ΔT(t), for bars that give none
+  // When given, the members' temperatures come from it, step by step (thermal/), not from ΔT.
+  std::optional<Environment> environment;
   AnalysisOptions analysis;
   OutputOptions output;
 

@@ -18,6 +18,8 @@
 #include "deploydyn/output/result_folder.hpp"
 #include "deploydyn/output/run_folder.hpp"
 #include "deploydyn/output/summary_writer.hpp"
+#include "deploydyn/output/temperature_table.hpp"
+#include "deploydyn/thermal/thermal_coupling.hpp"
 #include "deploydyn/output/hdf5_writer.hpp"
 #include "deploydyn/output/vtk_writer.hpp"
 
@@ -59,7 +61,12 @@ RunReport run_to_folder(const Model& model, const std::filesystem::path& folder,
     envelope = Envelope();  // nor do modes
     return run_modes_to_folder(model, folder, control);
   }
-  const Assembler assembler(model);  // may throw before any file is touched
+  // An environment sets the temperatures step by step, into a copy of the model that the
+  // mechanics is built from (thermal/thermal_coupling.hpp).
+  std::optional<Model> coupled_model;
+  std::optional<thermal::ThermalCoupling> coupling;
+  if (model.environment) coupling.emplace(coupled_model.emplace(model));  // may throw, as the assembler
+  const Assembler assembler(coupled_model ? *coupled_model : model);  // may throw before any file is touched
   ResultFolder results(folder, model.output.summary_file);
   RunReport report;
   MemberChecks checks(model);
@@ -75,12 +82,24 @@ RunReport run_to_folder(const Model& model, const std::filesystem::path& folder,
     std::optional<Hdf5Writer> hdf5;
     if (model.output.hdf5) sinks.push_back(&hdf5.emplace(folder, model));
     FanOut sink(std::move(sinks));
-    // Writing overlaps solving: the records reach the files from a thread of their own.
-    BackgroundSink background(sink);
     std::atomic<bool> stop{false};
-    report = run_analysis(assembler, background,
-                          stop_on_write_failure(control, stop, [&] { return background.failed(); }));
-    background.finish();
+    if (coupling) {
+      // The coupling rewrites the members' ΔT(t) between steps: the records are made on this
+      // thread, before it does.
+      TemperatureTable temperatures(folder / kTemperatureFileName, coupling->member_names());
+      coupling->on_output([&](double time_s, const std::vector<double>& temperatures_K) {
+        temperatures.write_row(time_s, temperatures_K);
+      });
+      coupling->start(0.0);
+      report = run_analysis(assembler, sink, stop_on_write_failure(control, stop, [] { return false; }), &*coupling);
+      coupling->on_output({});
+    } else {
+      // Writing overlaps solving: the records reach the files from a thread of their own.
+      BackgroundSink background(sink);
+      report = run_analysis(assembler, background,
+                            stop_on_write_failure(control, stop, [&] { return background.failed(); }));
+      background.finish();
+    }
     history.flush();
     if (hdf5) hdf5->finish();
   } catch (const OutputError& error) {
@@ -97,7 +116,13 @@ RunReport run_to_folder(const Model& model, const std::filesystem::path& folder,
   }
   const Verdict run_verdict = make_verdict(model, checks, report);
   if (verdict) *verdict = run_verdict;
-  results.finish(summary_json(model, envelope, report, &run_verdict), short_summary_json(model, report));
+  std::string summary = summary_json(model, envelope, report, &run_verdict);
+  if (coupling) {
+    auto j = nlohmann::ordered_json::parse(summary);
+    j["temperatures"] = temperature_summary(*coupling);
+    summary = j.dump(2);
+  }
+  results.finish(summary, short_summary_json(model, report));
   if (output_error) throw *output_error;
   return report;
 }

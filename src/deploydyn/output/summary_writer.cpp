@@ -10,6 +10,7 @@
 #include "deploydyn/elements/element_kinds.hpp"
 #include "deploydyn/model/dof_map.hpp"
 #include "deploydyn/output/envelope_table.hpp"
+#include "deploydyn/output/temperature_table.hpp"
 #include "deploydyn/output/history_layout.hpp"
 #include "deploydyn/output/plausibility.hpp"
 #include "deploydyn/output/result_folder.hpp"
@@ -192,6 +193,7 @@ std::vector<std::pair<std::string, std::string>> run_files(const Model& model) {
   const bool time_history = model.analysis.type == AnalysisType::quasi_static ||
                             model.analysis.type == AnalysisType::dynamic;
   if (time_history) files.emplace_back("envelopes", kEnvelopeFileName);
+  if (time_history && model.environment) files.emplace_back("temperatures", kTemperatureFileName);
   if (model.output.vtk) files.emplace_back("vtk", kVtkFolderName);
   if (model.output.hdf5 && time_history) {
     files.emplace_back("hdf5", kHdf5FileName);

@@ -296,7 +296,8 @@ const char* to_string(RunStatus status) {
   return "unknown";
 }
 
-RunReport run_analysis(const Assembler& assembler, RecordSink& sink, const RunControl& control) {
+RunReport run_analysis(const Assembler& assembler, RecordSink& sink, const RunControl& control,
+                       StepHook* hook) {
   const auto wall_start = std::chrono::steady_clock::now();
   const AnalysisOptions& options = assembler.model().analysis;
   RunReport report;
@@ -416,6 +417,7 @@ RunReport run_analysis(const Assembler& assembler, RecordSink& sink, const RunCo
       return finish(report);
     }
     const double step = steps.next_step(state.time_s);
+    if (hook) hook->before_step(state, step);
     const NewtonResult newton = switching.step(step, state, next, report.mode_switches);
     report.newton_iterations += newton.iterations;
     report.factorizations += newton.factorizations;
@@ -452,11 +454,13 @@ RunReport run_analysis(const Assembler& assembler, RecordSink& sink, const RunCo
       advance_work();
       sink.record_state(assembler, state, work.tally());
       steps.output_written();
+      if (hook) hook->after_step(state, true);
     } else {
       advance_work();
       // A step between output times reaches the envelopes only, so that peaks are not missed;
       // the end of a run that every latch stopped, or that settled, is an output.
       sink.record_state(assembler, state, work.tally(), /*output=*/all_latched || settled);
+      if (hook) hook->after_step(state, all_latched || settled);
     }
     report.time_reached_s = state.time_s;
     if (control.progress) control.progress(state.time_s);

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "deploydyn/assembly/assembler.hpp"
+#include "deploydyn/solvers/step_hook.hpp"
 #include "deploydyn/solvers/step_record.hpp"
 #include "deploydyn/solvers/run_control.hpp"
 
@@ -68,6 +69,8 @@ struct RunReport {
 };
 
 
-RunReport run_analysis(const Assembler& assembler, RecordSink& sink, const RunControl& control = {});
+// `hook`, when given, takes part in every time step (solvers/step_hook.hpp).
+RunReport run_analysis(const Assembler& assembler, RecordSink& sink, const RunControl& control = {},
+                       StepHook* hook = nullptr);
 
 }  // namespace deploydyn

@@ -129,6 +129,12 @@ class BarKind final : public ElementKind {
   void set_temperature_change(Model& model, const TimeFunction& change_C) const override {
     for (BarElement& bar : model.bars) bar.temperature_change_C = change_C;
   }
+  std::optional<HeatedBody> heated_body(const Model& model, int element) const override {
+    return HeatedBody{model.bars[element].material, model.bars[element].section};
+  }
+  void set_element_temperature_change(Model& model, int element, const TimeFunction& change_C) const override {
+    model.bars[element].temperature_change_C = change_C;
+  }
   void add_node_unknowns(const Model&, std::vector<std::vector<std::string>>&) const override {}
   void set_initial_node_unknowns(const Model&, const DofMap&, Eigen::VectorXd&) const override {}
   std::vector<std::unique_ptr<Constraint>> make_constraints(const Model&,

@@ -161,6 +161,12 @@ class BeamKind final : public ElementKind {
   void set_temperature_change(Model& model, const TimeFunction& change_C) const override {
     for (BeamElement& beam : model.beams) beam.temperature_change_C = change_C;
   }
+  std::optional<HeatedBody> heated_body(const Model& model, int element) const override {
+    return HeatedBody{model.beams[element].material, model.beams[element].section};
+  }
+  void set_element_temperature_change(Model& model, int element, const TimeFunction& change_C) const override {
+    model.beams[element].temperature_change_C = change_C;
+  }
   // 2D: the rotation rz; 3D: the nine entries of the node's rotation matrix, row-major.
   void add_node_unknowns(const Model& model,
                          std::vector<std::vector<std::string>>& per_node) const override {

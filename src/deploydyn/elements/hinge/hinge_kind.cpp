@@ -37,6 +37,8 @@ class HingeKind final : public ElementKind {
   // A hinge has no temperature of its own; its friction feels ΔT through the bar A–H.
   double temperature_change_C(const Model&, int, double) const override { return 0.0; }
   void set_temperature_change(Model&, const TimeFunction&) const override {}
+  std::optional<HeatedBody> heated_body(const Model&, int) const override { return std::nullopt; }
+  void set_element_temperature_change(Model&, int, const TimeFunction&) const override {}
   void add_node_unknowns(const Model&, std::vector<std::vector<std::string>>&) const override {}
   void set_initial_node_unknowns(const Model&, const DofMap&, Eigen::VectorXd&) const override {}
   std::vector<std::unique_ptr<Constraint>> make_constraints(const Model&, const DofMap&) const override {

@@ -1,0 +1,38 @@
+#include "deploydyn/output/temperature_table.hpp"
+
+#include <fmt/format.h>
+
+namespace deploydyn {
+
+TemperatureTable::TemperatureTable(const std::filesystem::path& file, const std::vector<std::string>& member_names)
+    : file_(file) {
+  std::string header = "t";
+  for (const std::string& name : member_names) header += ",T." + name;
+  file_.append(header + "\n");
+}
+
+void TemperatureTable::write_row(double time_s, const std::vector<double>& temperatures_K) {
+  std::string row = fmt::format("{}", time_s);
+  for (const double t : temperatures_K) row += fmt::format(",{}", t);
+  file_.append(row + "\n");
+}
+
+nlohmann::ordered_json temperature_summary(const thermal::ThermalCoupling& coupling) {
+  const auto& names = coupling.member_names();
+  nlohmann::ordered_json j;
+  if (names.empty()) return j;
+  j["min_K"] = coupling.coldest().temperature_K;
+  j["min_member"] = names[static_cast<std::size_t>(coupling.coldest().member)];
+  j["min_time_s"] = coupling.coldest().time_s;
+  j["max_K"] = coupling.hottest().temperature_K;
+  j["max_member"] = names[static_cast<std::size_t>(coupling.hottest().member)];
+  j["max_time_s"] = coupling.hottest().time_s;
+  const thermal::HeatTally& tally = coupling.tally();
+  j["absorbed_J"] = tally.absorbed_J;
+  j["emitted_J"] = tally.emitted_J;
+  j["convected_J"] = tally.convected_J;
+  j["stored_J"] = tally.stored_J;
+  return j;
+}
+
+}  // namespace deploydyn

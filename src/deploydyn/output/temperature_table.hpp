@@ -1,0 +1,33 @@
+#pragma once
+// temperatures.csv: the members' temperatures that an `environment` sets (thermal/), streamed
+// with the run at its output times. Columns: t (s), then T.<element> (K) per bar, beam and cable
+// in the order of elements/element_kinds.hpp. A file of its own: history.csv's columns are the
+// mechanics' (output/history_layout.hpp). summary.json lists it under files as "temperatures"
+// and gives the extremes under "temperatures" (temperature_summary).
+
+#include <filesystem>
+#include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
+
+#include "deploydyn/output/checked_file.hpp"
+#include "deploydyn/thermal/thermal_coupling.hpp"
+
+namespace deploydyn {
+
+inline constexpr const char* kTemperatureFileName = "temperatures.csv";
+
+class TemperatureTable {
+ public:
+  // Writes the header. Throws OutputError when the file cannot be written.
+  TemperatureTable(const std::filesystem::path& file, const std::vector<std::string>& member_names);
+  void write_row(double time_s, const std::vector<double>& temperatures_K);
+
+ private:
+  AppendFile file_;
+};
+
+// {"min_K", "min_member", "min_time_s", "max_K", ...} and the heat balance's energies (J).
+nlohmann::ordered_json temperature_summary(const thermal::ThermalCoupling& coupling);
+
+}  // namespace deploydyn
