@@ -172,7 +172,11 @@ class Beam2dGroup : public ::testing::Test {
     model.dimension = 2;
     model.nodes = {{"A", Eigen::Vector3d(0.1, 0.2, 0.0), 0.0},
                    {"B", Eigen::Vector3d(0.9, 0.7, 0.0), 0.0}};
-    model.materials = {{"steel", 2.1e11, 1.2e-5, 7850.0, {}}};
+    Material& steel = model.materials.emplace_back();
+    steel.name = "steel";
+    steel.youngs_modulus_Pa = 2.1e11;
+    steel.expansion_per_C = 1.2e-5;
+    steel.density_kg_m3 = 7850.0;
     BeamElement beam;
     beam.name = "b";
     beam.node_a = 0;

@@ -169,7 +169,7 @@ TEST(BeamMaterialDamping, ARigidMotionOfADeformedBeamHasNoDampingForce) {
     Eigen::Matrix3d w_hat;
     w_hat << 0, -w[2], w[1], w[2], 0, -w[0], -w[1], w[0], 0;
     Eigen::VectorXd rigid3(beam3d::kDofs), straining3 = Eigen::VectorXd::Zero(beam3d::kDofs);
-    for (const auto [position, frame] : {std::pair{beam3d::kPositionA, beam3d::kFrameA},
+    for (const auto& [position, frame] : {std::pair{beam3d::kPositionA, beam3d::kFrameA},
                                          std::pair{beam3d::kPositionB, beam3d::kFrameB}}) {
       rigid3.segment<3>(position) = u3 + w.cross(c3.q.segment<3>(position));
       put_frame(rigid3, frame, w_hat * beam3d::frame_of(c3.q, frame));  // Ṙ = ω̂ R
@@ -191,8 +191,11 @@ Model damped_strip(int n, double damping_time_s) {
   Model model;
   model.name = "damped strip";
   model.dimension = 2;
-  model.materials.push_back({.name = "steel", .youngs_modulus_Pa = kYoungs_Pa, .density_kg_m3 = kDensity_kg_m3});
-  model.materials.back().damping_time_s = damping_time_s;
+  Material& steel = model.materials.emplace_back();
+  steel.name = "steel";
+  steel.youngs_modulus_Pa = kYoungs_Pa;
+  steel.density_kg_m3 = kDensity_kg_m3;
+  steel.damping_time_s = damping_time_s;
   for (int i = 0; i <= n; ++i) {
     model.nodes.push_back({"N" + std::to_string(i), Eigen::Vector3d(kLength_m * i / n, 0.0, 0.0), 0.0});
   }

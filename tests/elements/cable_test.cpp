@@ -51,7 +51,10 @@ class OneCable {
     const double z = dimension == 3 ? 0.3 : 0.0;
     model_.nodes = {{"A", Eigen::Vector3d(0.1, 0.2, z), 0.0},
                     {"B", Eigen::Vector3d(0.9, 0.7, -z), 0.0}};
-    model_.materials = {{"steel", kYoungsModulus_Pa, kAlpha, {}, {}}};
+    Material& steel = model_.materials.emplace_back();
+    steel.name = "steel";
+    steel.youngs_modulus_Pa = kYoungsModulus_Pa;
+    steel.expansion_per_C = kAlpha;
     model_.analysis.mass = MassMatrixKind::consistent;
     if (&kind == &cable_kind()) {
       CableElement cable;

@@ -242,8 +242,11 @@ Model make_scissor(const ScissorOptions& options) {
       "hinges and to their neighbours, opened from {:.6g} to {:.6g} degrees at the central hinges "
       "by a revolute actuator; deployed span {} m",
       form, folded / kDegree, deployed / kDegree, options.span_m);
-  model.materials.push_back(
-      {"steel", kScissorYoungsModulus_Pa, kScissorExpansion_per_C, kScissorDensity_kg_m3});
+  Material& steel = model.materials.emplace_back();
+  steel.name = "steel";
+  steel.youngs_modulus_Pa = kScissorYoungsModulus_Pa;
+  steel.expansion_per_C = kScissorExpansion_per_C;
+  steel.density_kg_m3 = kScissorDensity_kg_m3;
   model.temperature_change_C = TimeFunction::constant(options.delta_t_C);
 
   ScissorBuilder build(options, model);
