@@ -158,8 +158,11 @@ TEST(CliSignals, AStudyOfManyDrawnCasesStartsAtOnceAndStopsOnEverySignal) {
     }
     EXPECT_EQ(folder_status(out, "study.json"), "interrupted");
     const std::string table = read_text(out / "study.csv");
-    EXPECT_TRUE(row_complete(table));
-    EXPECT_EQ(std::count(table.begin(), table.end(), '\n'), 100'002) << "a header and a row per case";
+    // On failure, what the study said of itself: under heavy load this test has found no
+    // study.csv (status "interrupted"), a failure not yet understood.
+    const std::string said = read_text(out / "study.json").substr(0, 1500);
+    EXPECT_TRUE(row_complete(table)) << said;
+    EXPECT_EQ(std::count(table.begin(), table.end(), '\n'), 100'002) << "a header and a row per case; " << said;
   }
 }
 
