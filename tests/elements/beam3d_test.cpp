@@ -12,6 +12,7 @@
 
 #include "deploydyn/constraints/frame_orthonormality.hpp"
 #include "support/finite_difference.hpp"
+#include "support/frames.hpp"
 
 namespace deploydyn {
 namespace {
@@ -34,17 +35,8 @@ beam3d::Section random_section(std::mt19937& rng, const Eigen::Vector3d& chord) 
   return section;
 }
 
-Eigen::Matrix3d random_rotation(std::mt19937& rng, double largest_angle) {
-  std::uniform_real_distribution<double> unit(-1.0, 1.0);
-  const Eigen::Vector3d axis = Eigen::Vector3d(unit(rng), unit(rng), unit(rng)).normalized();
-  return Eigen::AngleAxisd(largest_angle * unit(rng), axis).toRotationMatrix();
-}
-
-void put_frame(Eigen::VectorXd& q, int offset, const Eigen::Matrix3d& r) {
-  for (int row = 0; row < 3; ++row) {
-    for (int col = 0; col < 3; ++col) q[offset + 3 * row + col] = r(row, col);
-  }
-}
+using testing::put_frame;
+using testing::random_rotation;
 
 // A deformed configuration: both frames turned by up to π about random axes and turned further
 // relative to each other (torsion and bending of order 1 rad), the chord stretched by ±20 %,

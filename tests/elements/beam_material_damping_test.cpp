@@ -21,6 +21,7 @@
 #include "deploydyn/solvers/consistent_rates.hpp"
 #include "deploydyn/solvers/generalized_alpha.hpp"
 #include "support/finite_difference.hpp"
+#include "support/frames.hpp"
 #include "support/model_builder.hpp"
 
 namespace deploydyn {
@@ -92,17 +93,8 @@ struct Configuration3d {
   Eigen::VectorXd q{beam3d::kDofs};
 };
 
-Eigen::Matrix3d random_rotation(std::mt19937& rng, double largest_angle) {
-  std::uniform_real_distribution<double> unit(-1.0, 1.0);
-  const Eigen::Vector3d axis = Eigen::Vector3d(unit(rng), unit(rng), unit(rng)).normalized();
-  return Eigen::AngleAxisd(largest_angle * unit(rng), axis).toRotationMatrix();
-}
-
-void put_frame(Eigen::VectorXd& q, int offset, const Eigen::Matrix3d& r) {
-  for (int row = 0; row < 3; ++row) {
-    for (int col = 0; col < 3; ++col) q[offset + 3 * row + col] = r(row, col);
-  }
-}
+using testing::put_frame;
+using testing::random_rotation;
 
 Configuration3d random_configuration_3d(std::mt19937& rng) {
   std::uniform_real_distribution<double> unit(-1.0, 1.0);
