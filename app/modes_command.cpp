@@ -50,6 +50,10 @@ CLI::App* add_modes_command(CLI::App& app, ModesArguments& arguments) {
 
 int modes_command(const ModesArguments& arguments, const std::atomic<bool>& stop) {
   Model model = load_model(arguments.model_file, parse_overrides(arguments.sets));
+  if (model.environment) {
+    fmt::print(stderr, "warning: {}: modes do not use the model's environment: its members are at the reference "
+                       "temperature (ΔT = 0); `run` computes the environment's temperatures\n", arguments.model_file);
+  }
   ModalSettings& modal = model.analysis.modal;
   if (model.analysis.type != AnalysisType::modal) {
     // A time history's model: its drivers are defined up to the analysis end.

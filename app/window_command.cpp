@@ -80,6 +80,10 @@ CLI::App* add_window_command(CLI::App& app, WindowArguments& arguments) {
 int window_command(const WindowArguments& arguments, const std::atomic<bool>& stop) {
   const auto [lo, hi] = parse_range(arguments.range_C);
   const Model model = load_model(arguments.model_file, parse_overrides(arguments.sets));
+  if (model.environment) {
+    fmt::print(stderr, "warning: {}: the window does not use the model's environment: it imposes a uniform ΔT "
+                       "over its range\n", arguments.model_file);
+  }
   WindowOptions options;
   options.coldest_C = lo;
   options.hottest_C = hi;

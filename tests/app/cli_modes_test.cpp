@@ -83,6 +83,22 @@ TEST(ModesCommand, SaysWhenAnEquilibriumIsUnstable) {
   EXPECT_NE(outcome.output.find("unstable (ω² < 0)"), std::string::npos) << outcome.output;
 }
 
+// The environment's temperatures are computed in time by `run`; modes and the window use given
+// ΔT only, and say so rather than ignore the environment silently.
+TEST(ModesCommand, ModesAndWindowSayTheyDoNotUseTheEnvironment) {
+  const std::string model = std::string(DEPLOYDYN_SOURCE_DIR) + "/examples/thermal/boom_out_of_eclipse.yaml";
+  const auto modes = run_cli("modes " + model + " --count 1");
+  EXPECT_EQ(modes.exit_code, 0) << modes.output;
+  EXPECT_NE(modes.output.find("modes do not use the model's environment"), std::string::npos) << modes.output;
+  const auto without = run_cli("modes " + example_path("parallel.yaml") + " --count 1");
+  EXPECT_EQ(without.output.find("environment"), std::string::npos) << without.output;
+  const ScratchFolder folder("window_environment");
+  const auto window = run_cli("window " + model + " --dT=-10:10 --positions 3 --deployments 2 --out " +
+                              folder.path().string());
+  EXPECT_NE(window.output.find("the window does not use the model's environment"), std::string::npos)
+      << window.output;
+}
+
 TEST(ModesCommand, BadRequestsExitWithTwo) {
   const auto too_many = run_cli("modes " + example_path("parallel.yaml") + " --count 4");
   EXPECT_EQ(too_many.exit_code, 2) << too_many.output;
