@@ -704,17 +704,20 @@ class ModelBuilder:
         self._section("nodes")[_name(where, "name", name)] = spec
         return self
 
-    def material(self, name, E, alpha=0.0, density=None, damping=None, yield_strength=None):
+    def material(self, name, E, alpha=0.0, density=None, damping=None, yield_strength=None,
+                 specific_heat=None, absorptivity=None, emissivity=None):
         """E (Pa), alpha (1/°C), density (kg/m³, for bars that give no mass), damping (material
         damping of its bars, cables and beams, as the model file's mapping: {"ratio": ζ, "frequency":
         f (Hz)}, {"loss_factor": η, "frequency": f} or {"time": τ (s)}), yield_strength (Pa, the
-        stress the member checks allow)."""
+        stress the member checks allow); for an `environment`: specific_heat (J/(kg·K)),
+        absorptivity α_s and emissivity ε (both in [0, 1])."""
         where = "ModelBuilder.material"
         spec = {"E": _number(where, "E", E), "alpha": _number(where, "alpha", alpha)}
-        if density is not None:
-            spec["density"] = _number(where, "density", density)
-        if yield_strength is not None:
-            spec["yield_strength"] = _number(where, "yield_strength", yield_strength)
+        for key, value in (("density", density), ("yield_strength", yield_strength),
+                           ("specific_heat", specific_heat), ("absorptivity", absorptivity),
+                           ("emissivity", emissivity)):
+            if value is not None:
+                spec[key] = _number(where, key, value)
         if damping is not None:
             if not isinstance(damping, dict):
                 raise TypeError(f"{where}: damping must be a dict such as {{'ratio': 0.02, 'frequency': 10}}, "
@@ -926,6 +929,18 @@ class ModelBuilder:
     def thermal(self, dT):
         """ΔT(t) (°C) of every bar without its own."""
         self._section("thermal")["dT"] = _time_function("ModelBuilder.thermal", "dT", dT)
+        return self
+
+    def environment(self, type, **keys):
+        """The members' temperatures from their surroundings (docs/theory.md, "Temperatures from
+        the environment"), as the model file's `environment`: type "orbit" (sun_direction,
+        solar_constant, sink_temperature, eclipses, penumbra) or "ground" (latitude, longitude,
+        start, utc_offset, up, north, direct_normal, diffuse, air_temperature, sky_temperature,
+        convection), and reference_temperature and initial_temperature (K). Temperatures in K,
+        fluxes in W/m². Not with `thermal`. Checked at `build` (InputError names
+        environment.<key>)."""
+        where = "ModelBuilder.environment"
+        self._spec["environment"] = {"type": _text(where, "type", type), **_plain(keys, "environment", where)}
         return self
 
     def gravity(self, *g):

@@ -28,3 +28,31 @@ def test_in_memory_and_folder_runs_couple_the_same_temperatures(tmp_path):
     # Started at its stress-free temperature the boom starts unstrained: the strain is thermal.
     still = deploydyn.load(EXAMPLE, overrides=["environment.initial_temperature=293.15"]).run(check=True)
     assert abs(still.history["strain.boom"][0]) < 1e-12
+
+
+def test_the_builder_gives_the_materials_and_environment_of_the_model_file():
+    """ModelBuilder.material's thermal properties and ModelBuilder.environment write the model
+    file's keys: the example with those two parts from the builder runs exactly as the file."""
+    import json
+
+    import yaml
+
+    built = (deploydyn.ModelBuilder("boom")
+             .material("aluminium", E=7.0e10, alpha=ALPHA, density=2700, specific_heat=900,
+                       absorptivity=0.6, emissivity=0.8)
+             .environment("orbit", sun_direction=[1, 0, 0], solar_constant=1361, sink_temperature=3,
+                          eclipses=[[0, 300]], penumbra=30, reference_temperature=REFERENCE_K,
+                          initial_temperature=200)
+             .to_dict())
+    spec = yaml.safe_load(EXAMPLE.read_text())
+    # (PyYAML reads 7.0e10 as text: YAML 1.1 wants a dot before the exponent.)
+    as_numbers = {key: float(value) for key, value in spec["materials"]["aluminium"].items()}
+    assert built["materials"] == {"aluminium": as_numbers}
+    assert built["environment"] == spec["environment"]
+    spec["materials"], spec["environment"] = built["materials"], built["environment"]
+    from_builder = deploydyn.loads(json.dumps(spec)).run(check=True)
+    from_file = deploydyn.load(EXAMPLE).run(check=True)
+    assert list(from_builder.history["strain.boom"]) == list(from_file.history["strain.boom"])
+    hotter = dict(spec, environment=dict(spec["environment"], initial_temperature=250))
+    assert list(deploydyn.loads(json.dumps(hotter)).run(check=True).history["strain.boom"]) != \
+        list(from_file.history["strain.boom"])
