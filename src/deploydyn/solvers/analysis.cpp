@@ -442,26 +442,19 @@ RunReport run_analysis(const Assembler& assembler, RecordSink& sink, const RunCo
     switching.keep_events(report.events);
     const bool all_latched = end_when_latched && assembler.n_latched(state.history) == assembler.n_latches();
     const bool settled = settling && settling->settled_after(state);
-    const auto advance_work = [&]() {
-      if (switching.projected()) {
-        work.advance_through_impact(next, state);
-      } else {
-        work.advance(q_before, state);
-      }
-    };
-    if (steps.reached_output(state.time_s)) {
-      state.time_s = steps.next_output_time();  // exactly, not up to round-off
-      advance_work();
-      sink.record_state(assembler, state, work.tally());
-      steps.output_written();
-      if (hook) hook->after_step(state, true);
+    const bool at_output_time = steps.reached_output(state.time_s);
+    if (at_output_time) state.time_s = steps.next_output_time();  // exactly, not up to round-off
+    if (switching.projected()) {
+      work.advance_through_impact(next, state);
     } else {
-      advance_work();
-      // A step between output times reaches the envelopes only, so that peaks are not missed;
-      // the end of a run that every latch stopped, or that settled, is an output.
-      sink.record_state(assembler, state, work.tally(), /*output=*/all_latched || settled);
-      if (hook) hook->after_step(state, all_latched || settled);
+      work.advance(q_before, state);
     }
+    // A step between output times reaches the envelopes only, so that peaks are not missed;
+    // the end of a run that every latch stopped, or that settled, is an output.
+    const bool output = at_output_time || all_latched || settled;
+    sink.record_state(assembler, state, work.tally(), output);
+    if (at_output_time) steps.output_written();
+    if (hook) hook->after_step(state, output);
     report.time_reached_s = state.time_s;
     if (control.progress) control.progress(state.time_s);
     if (all_latched) {
