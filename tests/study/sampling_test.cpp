@@ -7,6 +7,8 @@
 
 #include <gtest/gtest.h>
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cmath>
 #include <fstream>
@@ -24,6 +26,7 @@
 #include "deploydyn/study/sampling_statistics.hpp"
 #include "deploydyn/study/study_loader.hpp"
 
+#include "support/cli.hpp"
 #include "support/study_error.hpp"
 
 namespace deploydyn {
@@ -206,6 +209,63 @@ TEST(SampledStudy, DrawsOverridesOfTheModel) {
             nominal.materials[nominal.bars[0].material].name + "_1");
 }
 
+// A member takes one length error, shared by its elements in proportion to their lengths; a
+// cable's error goes to its cut length (rest_length); an element in no member is its own.
+const char* const kMembersModel = R"(name: chord of two bars, three cables
+nodes: {A: [0, 0], M: [0.4, 0], B: [1, 0], C: [0.5, 1]}
+materials: {steel: {E: 2.0e11, alpha: 1.2e-5, density: 7850}}
+functions: {winch: {type: smooth_step, t0: 0, v0: 1.2, t1: 1, v1: 1.0}}
+elements:
+  b1: {nodes: [A, M], area: 1.0e-4, material: steel}
+  b2: {nodes: [M, B], area: 1.0e-4, material: steel}
+  b3: {nodes: [A, C], area: 1.0e-4, material: steel}
+  b4: {nodes: [C, B], area: 1.0e-4, material: steel}
+  cut: {type: cable, nodes: [A, B], area: 1.0e-6, material: steel}
+  pulled: {type: cable, nodes: [A, C], area: 1.0e-6, material: steel, pretension: 100}
+  wound: {type: cable, nodes: [C, B], area: 1.0e-6, material: steel, rest_length: winch}
+members:
+  chord: {elements: [b1, b2]}
+supports: [{node: A}, {node: B}]
+)";
+
+TEST(SampledStudy, AMemberTakesOneLengthErrorAndACableItsCutLength) {
+  testing::ScratchFolder folder("sampled_members");
+  std::filesystem::create_directories(folder.path());
+  std::ofstream(folder.path() / "m.yaml") << kMembersModel;
+  const Study study = load_study_from_string(
+      "model: m.yaml\nsampling: {cases: 6, length_error: [{elements: chord, normal: 1e-3}, "
+      "{elements: [b3, cut], uniform: 2e-3}]}\n",
+      "s.yaml", folder.path());
+  const Model nominal = load_model(folder.path() / "m.yaml");
+  for (std::size_t i = 1; i < study.n_cases(); ++i) {
+    const StudyCase c = study.case_at(i);
+    const Model model = load_model(folder.path() / "m.yaml", c.overrides);
+    const double chord_m = drawn(c, "length_error_m.chord");
+    for (const auto& [name, value] : c.drawn) {
+      EXPECT_NE(name, "length_error_m.b1") << "the chord's bars draw no error of their own";
+    }
+    EXPECT_NEAR(model.bars[0].reference_length_m, 0.4 + 0.4 * chord_m, 1e-15);
+    EXPECT_NEAR(model.bars[1].reference_length_m, 0.6 + 0.6 * chord_m, 1e-15);
+    EXPECT_EQ(model.bars[2].reference_length_m, nominal.bars[2].reference_length_m + drawn(c, "length_error_m.b3"));
+    EXPECT_EQ(model.bars[3].reference_length_m, nominal.bars[3].reference_length_m) << "b4 is in no group";
+    const double cut_m = drawn(c, "length_error_m.cut");
+    EXPECT_LE(std::abs(cut_m), 2e-3);
+    EXPECT_EQ(model.cables[0].rest_length_m.value(0.5), 1.0 + cut_m);
+  }
+  // A cable whose cut length follows from its pretension, or changes in time, has none to err.
+  for (const auto& [cable, problem] : {std::pair{"pulled", "pretension"}, std::pair{"wound", "winch"}}) {
+    try {
+      load_study_from_string(
+          fmt::format("model: m.yaml\nsampling: {{cases: 2, length_error: [{{elements: {}, normal: 1e-3}}]}}\n", cable),
+          "s.yaml", folder.path());
+      ADD_FAILURE() << "no error for a length error on " << cable;
+    } catch (const InputError& e) {
+      EXPECT_NE(e.problem().find(problem), std::string::npos) << e.what();
+      EXPECT_NE(e.problem().find(cable), std::string::npos) << e.what();
+    }
+  }
+}
+
 // The same study file gives the same cases, whoever loads it (each MPI process does).
 TEST(SampledStudy, LoadsTheSameCasesEveryTime) {
   const std::string text =
@@ -255,7 +315,7 @@ TEST(SampledStudy, BadSamplingSectionsAreNamedErrors) {
   expect_study_error(head + "sampling:\n  cases: 3\n  length_error:\n    - {elements: '1', normal: 1e-3, uniform: 1e-3}\n",
                5, "sampling.length_error.0.normal", "exactly one");
   expect_study_error(head + "sampling:\n  cases: 3\n  length_error:\n    - {elements: 'beam*', normal: 1e-3}\n", 3,
-               "sampling", "match no bar");
+               "sampling", "match no member");
   expect_study_error(head + "sampling:\n  cases: 3\n  temperature: {dT: [160, 100]}\n", 4,
                "sampling.temperature.dT", "low ≤ high");
   expect_study_error(head + "sampling:\n  cases: 3\n  temperature: {dt: 5}\n", 4, "sampling.temperature.dt", "dT");
@@ -290,6 +350,22 @@ TEST(SamplingStatistics, PercentilesAreLinearBetweenOrderStatistics) {
   EXPECT_TRUE(std::isnan(percentile({}, 50)));
 }
 
+// Wilson's score interval against tabulated values (Newcombe 1998, Table I: 0/10, 1/29 ...)
+// and its closed form at k = 0, (0, z²/(n + z²)).
+TEST(SamplingStatistics, WilsonIntervalMatchesTabulatedValues) {
+  const double z = 1.959963984540054;
+  EXPECT_EQ(wilson_interval(0, 10).low, 0.0);
+  EXPECT_NEAR(wilson_interval(0, 10).high, z * z / (10 + z * z), 1e-15);
+  EXPECT_NEAR(wilson_interval(0, 10).high, 0.2775, 5e-5);
+  EXPECT_NEAR(wilson_interval(1, 29).low, 0.0061, 5e-5);
+  EXPECT_NEAR(wilson_interval(1, 29).high, 0.1718, 5e-5);
+  EXPECT_NEAR(wilson_interval(81, 263).low, 0.2553, 5e-5);
+  EXPECT_NEAR(wilson_interval(81, 263).high, 0.3662, 5e-5);
+  EXPECT_NEAR(wilson_interval(15, 148).low, 0.0624, 5e-5);
+  EXPECT_NEAR(wilson_interval(15, 148).high, 0.1605, 5e-5);
+  EXPECT_EQ(wilson_interval(10, 10).high, 1.0);
+}
+
 // statistics.csv over drawn cases: nominal and cases that did not complete are left out of the
 // peaks (and counted in not_deployed); p_exceed is the fraction above the limit.
 TEST(SamplingStatistics, CountsExceedanceAndCasesThatDidNotDeploy) {
@@ -305,11 +381,24 @@ TEST(SamplingStatistics, CountsExceedanceAndCasesThatDidNotDeploy) {
     results[i].ran = true;
     results[i].peak_force_N = {{"bar", peaks[i]}};
   }
+  // s2's verdict fails its buckling check (utilization 1.5); s3's passes at 0.5.
+  results[2].verdict = CaseResult::Verdict{false, "buckling", "bar", 0.5, {{"buckling", 1.5}}};
+  results[3].verdict = CaseResult::Verdict{true, "", "", 0.0, {{"buckling", 0.5}}};
   const std::string text = statistics_csv(study, results);
-  EXPECT_NE(text.find("not_deployed,*,1,4,0.25,"), std::string::npos) << text;
-  // s1..s3 completed: 10, 20, 30; mean 20, std 10, p50 20, 2 of 3 above 15.
-  EXPECT_NE(text.find("peak_force,bar,N,3,20,10,10,11,20,29,29.8,30,15,0.6666666666666666\n"), std::string::npos)
+  const auto fields = [](ProbabilityInterval i) { return fmt::format("{},{}", i.low, i.high); };
+  EXPECT_NE(text.find(fmt::format("not_deployed,*,1,4,0.25,,,,,,,,,,{}\n", fields(wilson_interval(1, 4)))),
+            std::string::npos)
       << text;
+  // s2 fails its check, s4 its run: 2 of 4.
+  EXPECT_NE(text.find(fmt::format("fails,*,1,4,0.5,,,,,,,,,,{}\n", fields(wilson_interval(2, 4)))), std::string::npos)
+      << text;
+  // s1..s3 completed: 10, 20, 30; mean 20, std 10, p50 20, 2 of 3 above 15.
+  EXPECT_NE(text.find(fmt::format("peak_force,bar,N,3,20,10,10,11,20,29,29.8,30,15,0.6666666666666666,{}\n",
+                                  fields(wilson_interval(2, 3)))),
+            std::string::npos)
+      << text;
+  EXPECT_NE(text.find("utilization,buckling,1,2,1,"), std::string::npos) << text;
+  EXPECT_NE(text.find(fmt::format(",1.5,1,0.5,{}\n", fields(wilson_interval(1, 2)))), std::string::npos) << text;
   EXPECT_EQ(samples_csv(study, results), "case,x\ns1,1\ns2,2\ns3,3\ns4,4\n");
   // A stopped study's cases that did not start have no row.
   results[3] = CaseResult::not_run(RunStatus::interrupted, "not started");

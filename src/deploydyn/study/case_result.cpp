@@ -80,6 +80,23 @@ void read_element_peaks(const std::filesystem::path& file, const std::string& te
   }
 }
 
+CaseResult::Verdict read_verdict(const ordered_json& json) {
+  CaseResult::Verdict verdict;
+  verdict.deploys = json.value("deploys", true);
+  if (json.contains("first_failure") && json["first_failure"].is_object()) {
+    const ordered_json& first = json["first_failure"];
+    verdict.first_check = first.value("check", "");
+    verdict.first_member = first.value("member", "");
+    verdict.first_time_s = first.value("time_s", 0.0);
+  }
+  if (json.contains("checks") && json["checks"].is_object()) {
+    for (const auto& [check, entry] : json["checks"].items()) {
+      if (entry.contains("max_utilization")) verdict.max_utilization.emplace_back(check, entry["max_utilization"].get<double>());
+    }
+  }
+  return verdict;
+}
+
 }  // namespace
 
 CaseResult CaseResult::not_run(RunStatus status, std::string message) {
@@ -123,6 +140,7 @@ std::optional<CaseResult> read_case_result(const std::filesystem::path& folder) 
         result.drivers.push_back({name, driver.value("quantity", "torque") == "torque", driver.value("peak", 0.0)});
       }
     }
+    if (summary.contains("verdict") && summary["verdict"].is_object()) result.verdict = read_verdict(summary["verdict"]);
     if (summary.contains("final_positions")) {
       for (const auto& [name, x] : summary["final_positions"].items()) {
         Eigen::Vector3d position = Eigen::Vector3d::Zero();

@@ -10,6 +10,7 @@
 #include <map>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "deploydyn/solvers/analysis.hpp"
@@ -42,6 +43,16 @@ struct CaseResult {
   };
   std::vector<DriverPeak> drivers;
   std::map<std::string, Eigen::Vector3d> final_positions_m;  // by node name; z = 0 in 2D
+  // summary.json's verdict (docs/theory.md, "Member checks and the verdict"), when it has one.
+  struct Verdict {
+    bool deploys = true;
+    std::string first_check;   // the first failure's check ("run" for the run), empty if none
+    std::string first_member;  // and its member or driver
+    double first_time_s = 0.0;
+    // The largest utilization of each check that computed one, in summary.json's order.
+    std::vector<std::pair<std::string, double>> max_utilization;
+  };
+  std::optional<Verdict> verdict;
 
   // A case that could not run (its model did not load, or it was never started).
   static CaseResult not_run(RunStatus status, std::string message);

@@ -4,6 +4,7 @@
 #include <fnmatch.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <set>
@@ -61,51 +62,102 @@ SampledCases::SampledCases(const Sampling& sampling, const Model& nominal)
     int node_a, node_b;
   };
   std::vector<Ends> ends;
-  const auto add = [&](const auto& element, std::optional<double> reference_length_m) {
-    members_.push_back({element.name, element.material, reference_length_m, std::nullopt, 0.0, {}});
+  // Where each kind's elements start in elements_ (bars, beams, cables), and why an element
+  // cannot take a length error (empty: it can).
+  std::array<std::size_t, 3> first_of_kind{};
+  std::vector<std::string> no_length_error;
+  const auto add = [&](const auto& element, std::string length_key, double length_m, std::string problem) {
+    elements_.push_back({element.name, element.material, 0.0, {}, std::move(length_key), length_m, std::nullopt});
     ends.push_back({element.node_a, element.node_b});
+    no_length_error.push_back(std::move(problem));
   };
-  for (const auto& bar : nominal.bars) add(bar, bar.reference_length_m);
-  for (const auto& beam : nominal.beams) add(beam, beam.reference_length_m);
-  for (const auto& cable : nominal.cables) add(cable, std::nullopt);
+  first_of_kind[static_cast<std::size_t>(MemberKind::bar)] = elements_.size();
+  for (const auto& bar : nominal.bars) add(bar, "length", bar.reference_length_m, "");
+  first_of_kind[static_cast<std::size_t>(MemberKind::beam)] = elements_.size();
+  for (const auto& beam : nominal.beams) add(beam, "length", beam.reference_length_m, "");
+  first_of_kind[static_cast<std::size_t>(MemberKind::cable)] = elements_.size();
+  for (const auto& cable : nominal.cables) {
+    std::string problem;
+    if (cable.rest_length_from == CableRestLength::pretension) {
+      problem = "takes its rest length from its pretension; give its cut length as rest_length (m) to draw an error of it";
+    } else if (!cable.rest_length_m.is_constant()) {
+      problem = "has a rest length that changes in time (a winch); length errors apply to constant cut lengths";
+    }
+    add(cable, "rest_length", cable.rest_length_m.value(0.0), std::move(problem));
+  }
 
-  for (std::size_t g = 0; g < sampling_.length_errors.size(); ++g) {
-    const LengthErrorGroup& group = sampling_.length_errors[g];
-    bool any = false;
-    for (Member& member : members_) {
-      if (!member.reference_length_m || !matches(group.elements, member.name)) continue;
-      any = true;
-      if (!member.length_group) member.length_group = g;
+  // The members: those the file lists, then every element that none of them holds.
+  std::vector<LengthMember> members;
+  std::vector<bool> listed(elements_.size(), false);
+  for (const Member& member : nominal.members) {
+    LengthMember candidate{member.name, 0, {}, 0.0};
+    for (const int e : member.elements) {
+      const std::size_t i = first_of_kind[static_cast<std::size_t>(member.kind)] + static_cast<std::size_t>(e);
+      candidate.elements.push_back(i);
+      listed[i] = true;
     }
-    if (!any) {
-      throw std::invalid_argument(fmt::format("length_error: elements {} match no bar or beam of the model",
-                                              fmt::join(group.elements, ", ")));
+    std::sort(candidate.elements.begin(), candidate.elements.end());
+    members.push_back(std::move(candidate));
+  }
+  for (std::size_t i = 0; i < elements_.size(); ++i) {
+    if (!listed[i]) members.push_back({elements_[i].name, 0, {i}, 0.0});
+  }
+  // A group names a member by its name or an element's; the first group that does gives its δ.
+  std::vector<bool> group_used(sampling_.length_errors.size(), false);
+  for (LengthMember& member : members) {
+    std::optional<std::size_t> group;
+    for (std::size_t g = 0; g < sampling_.length_errors.size(); ++g) {
+      const std::vector<std::string>& patterns = sampling_.length_errors[g].elements;
+      const bool named = matches(patterns, member.name) ||
+                         std::any_of(member.elements.begin(), member.elements.end(),
+                                     [&](std::size_t i) { return matches(patterns, elements_[i].name); });
+      if (!named) continue;
+      group_used[g] = true;
+      if (!group) group = g;
     }
+    if (!group || member.elements.empty()) continue;
+    for (const std::size_t i : member.elements) {
+      if (no_length_error[i].empty()) continue;
+      throw std::invalid_argument(fmt::format("length_error: elements {} name cable {}, which {}",
+                                              fmt::join(sampling_.length_errors[*group].elements, ", "),
+                                              elements_[i].name, no_length_error[i]));
+    }
+    member.group = *group;
+    for (const std::size_t i : member.elements) {
+      member.length_m += elements_[i].length_m;
+      elements_[i].length_member = length_members_.size();
+    }
+    length_members_.push_back(std::move(member));
+  }
+  for (std::size_t g = 0; g < group_used.size(); ++g) {
+    if (group_used[g]) continue;
+    throw std::invalid_argument(fmt::format("length_error: elements {} match no member, bar, beam or cable of the model",
+                                            fmt::join(sampling_.length_errors[g].elements, ", ")));
   }
   // The field's coordinate s along its direction, and its range over the members.
-  if (sampling_.temperature && !members_.empty()) {
+  if (sampling_.temperature && !elements_.empty()) {
     const Eigen::Vector3d d = sampling_.temperature->direction.normalized();
-    std::vector<double> s(members_.size());
-    for (std::size_t m = 0; m < members_.size(); ++m) {
+    std::vector<double> s(elements_.size());
+    for (std::size_t m = 0; m < elements_.size(); ++m) {
       s[m] = d.dot(0.5 * (nominal.nodes[ends[m].node_a].position_m + nominal.nodes[ends[m].node_b].position_m));
     }
     const auto [s_min, s_max] = std::minmax_element(s.begin(), s.end());
-    for (std::size_t m = 0; m < members_.size(); ++m) {
-      members_[m].side = *s_max > *s_min ? (s[m] - *s_min) / (*s_max - *s_min) - 0.5 : 0.0;
+    for (std::size_t m = 0; m < elements_.size(); ++m) {
+      elements_[m].side = *s_max > *s_min ? (s[m] - *s_min) / (*s_max - *s_min) - 0.5 : 0.0;
     }
   }
   const bool scatter_materials = sampling_.E_cv > 0.0 || sampling_.alpha_cv > 0.0;
-  long long n_values = 0;  // overrides per case
   std::set<std::string> material_names;
   for (const Material& material : nominal.materials) material_names.insert(material.name);
-  for (Member& member : members_) {
-    n_values += (member.length_group ? 1 : 0) + (sampling_.temperature ? 1 : 0) + (scatter_materials ? 2 : 0);
+  long long n_values = static_cast<long long>(length_members_.size());  // drawn per case
+  for (Element& own : elements_) {
+    n_values += (sampling_.temperature ? 1 : 0) + (scatter_materials ? 2 : 0);
     if (!scatter_materials) continue;
-    member.own_material = fmt::format("{}_{}", nominal.materials[member.material].name, member.name);
-    if (material_names.count(member.own_material) > 0) {
+    own.own_material = fmt::format("{}_{}", nominal.materials[own.material].name, own.name);
+    if (material_names.count(own.own_material) > 0) {
       throw std::invalid_argument(fmt::format(
-          "material scatter: member {} would get material '{}', a name the model already uses", member.name,
-          member.own_material));
+          "material scatter: member {} would get material '{}', a name the model already uses", own.name,
+          own.own_material));
     }
   }
   if (n_values * sampling_.n_cases > kMaxDrawnValues) {
@@ -124,6 +176,21 @@ DrawnCase SampledCases::draw(long k) const {
   DrawnCase drawn;
   drawn.name = name(k);
   const auto set = [&](const std::string& path, const std::string& value) { drawn.overrides.emplace_back(path, value); };
+  // A member's δ, drawn at its first element and shared by all its elements; each element's
+  // part of it in proportion to its length (the whole δ when the member is one element).
+  std::vector<double> member_error_m(length_members_.size());
+  const auto set_length = [&](std::size_t m, const std::string& element) {
+    const Element& own = elements_[m];
+    const LengthMember& member = length_members_[*own.length_member];
+    if (m == member.elements.front()) {
+      const Distribution& error = sampling_.length_errors[member.group].error_m;
+      member_error_m[*own.length_member] = error.quantile(draws_.probability(k, member_variable(m, 0)));
+      drawn.drawn.emplace_back("length_error_m." + member.name, member_error_m[*own.length_member]);
+    }
+    const double error_m = member_error_m[*own.length_member];
+    const double part_m = member.elements.size() == 1 ? error_m : error_m * (own.length_m / member.length_m);
+    set(element + "." + own.length_key, number(own.length_m + part_m));
+  };
   double uniform_C = 0.0, gradient_C = 0.0;
   const std::optional<TemperatureField>& temperature = sampling_.temperature;
   if (temperature) {
@@ -132,33 +199,28 @@ DrawnCase SampledCases::draw(long k) const {
     drawn.drawn.emplace_back("dT_C", uniform_C);
     drawn.drawn.emplace_back("gradient_C", gradient_C);
   }
-  for (std::size_t m = 0; m < members_.size(); ++m) {
-    const Member& member = members_[m];
-    const std::string element = "elements." + member.name;
-    if (member.length_group) {
-      const Distribution& error = sampling_.length_errors[*member.length_group].error_m;
-      const double error_m = error.quantile(draws_.probability(k, member_variable(m, 0)));
-      set(element + ".length", number(*member.reference_length_m + error_m));
-      drawn.drawn.emplace_back("length_error_m." + member.name, error_m);
-    }
+  for (std::size_t m = 0; m < elements_.size(); ++m) {
+    const Element& own = elements_[m];
+    const std::string element = "elements." + own.name;
+    if (own.length_member) set_length(m, element);
     if (temperature) {
       const double scatter_C =
           temperature->scatter_C > 0.0 ? temperature->scatter_C * draws_.standard_normal(k, member_variable(m, 1)) : 0.0;
-      const double dT_C = uniform_C + gradient_C * member.side + scatter_C;
+      const double dT_C = uniform_C + gradient_C * own.side + scatter_C;
       set(element + ".dT", number(dT_C));
-      drawn.drawn.emplace_back("dT_C." + member.name, dT_C);
+      drawn.drawn.emplace_back("dT_C." + own.name, dT_C);
     }
-    if (!member.own_material.empty()) {
-      const Material& material = materials_[member.material];
+    if (!own.own_material.empty()) {
+      const Material& material = materials_[own.material];
       const double e_factor = 1.0 + sampling_.E_cv * draws_.standard_normal(k, member_variable(m, 2));
       const double alpha_factor = 1.0 + sampling_.alpha_cv * draws_.standard_normal(k, member_variable(m, 3));
       std::string value = fmt::format("{{E: {}, alpha: {}", number(material.youngs_modulus_Pa * e_factor),
                                       number(material.expansion_per_C * alpha_factor));
       if (material.density_kg_m3) value += fmt::format(", density: {}", number(*material.density_kg_m3));
-      set("materials." + member.own_material, value + "}");
-      set(element + ".material", member.own_material);
-      drawn.drawn.emplace_back("E_factor." + member.name, e_factor);
-      drawn.drawn.emplace_back("alpha_factor." + member.name, alpha_factor);
+      set("materials." + own.own_material, value + "}");
+      set(element + ".material", own.own_material);
+      drawn.drawn.emplace_back("E_factor." + own.name, e_factor);
+      drawn.drawn.emplace_back("alpha_factor." + own.name, alpha_factor);
     }
   }
   return drawn;

@@ -2,8 +2,11 @@
 // A sampled study: cases drawn instead of listed (docs/model-format.md, "Sampled studies").
 // Each case is the model with drawn overrides, as `--set` would apply them, so that every case
 // folder's model.yaml is the exact model that ran:
-//   - length errors (m) per member group: elements.<bar>.length = L0 + δ, δ normal (std) or
-//     uniform (± tolerance), for bars and beams;
+//   - length errors (m), one per member (Model::members; an element in none is a member of its
+//     own), matched by a group's names or patterns: δ normal (std) or uniform (± tolerance),
+//     shared among the member's elements in proportion to their lengths,
+//     elements.<e>.length = L_e + δ L_e / L for bars and beams, elements.<e>.rest_length the same
+//     for cables (their cut length);
 //   - a temperature field (°C), each member's own constant ΔT (elements.<m>.dT):
 //       ΔT_m = ΔT_u + G · ((s_m − s_min)/(s_max − s_min) − ½) + σ_T z_m,
 //     ΔT_u uniform over a range (the day's temperature), G uniform over a range (sun on one
@@ -91,7 +94,8 @@ struct DrawnCase {
 // thread, in any order: a case is the same whenever and wherever it is drawn.
 class SampledCases {
  public:
-  // Throws std::invalid_argument when a length-error group matches no bar or beam, a member's
+  // Throws std::invalid_argument when a length-error group matches no member, a matched cable
+  // has no constant cut length of its own (given by its pretension, or a winch), an element's
   // copy of its material would take a name the model already uses, or the cases would draw
   // more than kMaxDrawnValues values.
   SampledCases(const Sampling& sampling, const Model& nominal);
@@ -101,19 +105,30 @@ class SampledCases {
   DrawnCase draw(long k) const;    // 0 ≤ k < n_cases
 
  private:
-  // A member that can carry a length error, a temperature or a material of its own.
-  struct Member {
+  // An element (bar, beam, cable), which can carry a temperature or a material of its own.
+  struct Element {
     std::string name;
     int material = 0;
-    std::optional<double> reference_length_m;      // bars and beams
-    std::optional<std::size_t> length_group;  // the first of sampling_.length_errors that names it
-    double side = 0.0;                         // (s − s_min)/(s_max − s_min) − ½ of the field
-    std::string own_material;                  // with material scatter
+    double side = 0.0;         // (s − s_min)/(s_max − s_min) − ½ of the field
+    std::string own_material;  // with material scatter
+    std::string length_key;    // "length", or a cable's "rest_length"
+    double length_m = 0.0;     // its reference length, or a cable's cut length
+    // The member of length_members_ it belongs to, when a length-error group names that member.
+    std::optional<std::size_t> length_member;
+  };
+  // A member with a length error: one draw, its variable that of its first element (so that a
+  // model without `members` draws what it drew when errors were per element).
+  struct LengthMember {
+    std::string name;
+    std::size_t group = 0;            // the first of sampling_.length_errors that names it
+    std::vector<std::size_t> elements;  // indices into elements_, the first drawing δ
+    double length_m = 0.0;            // L: its elements' lengths summed
   };
 
   Sampling sampling_;
   std::vector<Material> materials_;  // the nominal model's
-  std::vector<Member> members_;
+  std::vector<Element> elements_;
+  std::vector<LengthMember> length_members_;
   RandomDraws draws_;
 };
 

@@ -21,6 +21,14 @@ struct Row {
   std::optional<double> limit;
 };
 
+// p_exceed,p_low,p_high of k in n, or three empty fields when n = 0.
+std::string probability_fields(std::size_t k, std::size_t n) {
+  if (n == 0) return ",,";
+  const ProbabilityInterval interval = wilson_interval(k, n);
+  return fmt::format("{},{},{}", number(static_cast<double>(k) / static_cast<double>(n)), number(interval.low),
+                     number(interval.high));
+}
+
 std::string format_row(const Row& row) {
   const auto n = static_cast<double>(row.values.size());
   double mean = kNaN, deviation = kNaN;
@@ -34,10 +42,10 @@ std::string format_row(const Row& row) {
       deviation = std::sqrt(sum / (n - 1.0));
     }
   }
-  std::string exceed;
+  std::string exceed = ",,";
   if (row.limit && !row.values.empty()) {
     const auto above = std::count_if(row.values.begin(), row.values.end(), [&](double v) { return v > *row.limit; });
-    exceed = number(static_cast<double>(above) / n);
+    exceed = probability_fields(static_cast<std::size_t>(above), row.values.size());
   }
   return fmt::format("{},{},{},{},{},{},{},{},{},{},{},{},{},{}\n", row.quantity, row.item, row.unit,
                      row.values.size(), number(mean), number(deviation), number(percentile(row.values, 0)),
@@ -47,6 +55,17 @@ std::string format_row(const Row& row) {
 }
 
 }  // namespace
+
+ProbabilityInterval wilson_interval(std::size_t k, std::size_t n) {
+  if (n == 0) return {};
+  constexpr double z = 1.959963984540054;  // the standard normal's 97.5 % quantile
+  const double trials = static_cast<double>(n), p = static_cast<double>(k) / trials;
+  const double scale = 1.0 + z * z / trials;
+  const double center = (p + z * z / (2.0 * trials)) / scale;
+  const double half = z / scale * std::sqrt(p * (1.0 - p) / trials + z * z / (4.0 * trials * trials));
+  // At k = 0 (k = n) the bound is exactly 0 (1); the formula leaves round-off there.
+  return {k == 0 ? 0.0 : center - half, k == n ? 1.0 : center + half};
+}
 
 double percentile(std::vector<double> values, double p) {
   if (values.empty()) return kNaN;
@@ -97,14 +116,22 @@ std::string statistics_csv(const Study& study, const std::vector<CaseResult>& re
     rows.push_back(std::move(fresh));
     return rows.back();
   };
+  std::size_t n_fails = 0;   // drawn cases whose verdict says it does not deploy
+  std::vector<Row> utilizations;
   const CaseResult& nominal = results.at(study.reference);
   for (std::size_t i = 0; i < results.size(); ++i) {
     if (i == study.reference) continue;  // nominal
     ++n_drawn;
     const CaseResult& r = results[i];
+    if (r.status != RunStatus::completed || (r.verdict && !r.verdict->deploys)) ++n_fails;
     if (r.status != RunStatus::completed) {
       ++n_failed;
       continue;
+    }
+    if (r.verdict) {
+      for (const auto& [check, utilization] : r.verdict->max_utilization) {
+        row_of(utilizations, check, {"utilization", check, "1", {}, 1.0}).values.push_back(utilization);
+      }
     }
     double most = 0.0;
     for (const NamedPeak& peak : r.peak_force_N) {
@@ -124,9 +151,16 @@ std::string statistics_csv(const Study& study, const std::vector<CaseResult>& re
       if (!std::isnan(error_m)) shape.values.push_back(error_m);
     }
   }
-  std::string text = "quantity,item,unit,n,mean,std,min,p05,p50,p95,p99,max,limit,p_exceed\n";
-  text += fmt::format("not_deployed,*,1,{},{},,,,,,,,,\n", n_drawn,
-                      number(n_drawn > 0 ? static_cast<double>(n_failed) / static_cast<double>(n_drawn) : kNaN));
+  const auto probability_row = [&](const char* quantity, std::size_t k) {
+    const ProbabilityInterval interval = n_drawn > 0 ? wilson_interval(k, n_drawn) : ProbabilityInterval{kNaN, kNaN};
+    return fmt::format("{},*,1,{},{},,,,,,,,,,{},{}\n", quantity, n_drawn,
+                       number(n_drawn > 0 ? static_cast<double>(k) / static_cast<double>(n_drawn) : kNaN),
+                       number(interval.low), number(interval.high));
+  };
+  std::string text = "quantity,item,unit,n,mean,std,min,p05,p50,p95,p99,max,limit,p_exceed,p_low,p_high\n";
+  text += probability_row("not_deployed", n_failed);
+  text += probability_row("fails", n_fails);
+  for (const Row& row : utilizations) text += format_row(row);
   text += format_row(largest);
   for (const Row& row : drivers) text += format_row(row);
   text += format_row(shape);

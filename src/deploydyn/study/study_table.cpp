@@ -49,6 +49,24 @@ struct DriverColumn {
   bool torque = true;
 };
 
+// deploys (yes/no), the first failure's check, member and time, each check's largest utilization;
+// empty for a case without a verdict (it did not run).
+void add_verdict_columns(const std::optional<CaseResult::Verdict>& verdict, const std::vector<std::string>& checks,
+                         std::vector<std::string>& row) {
+  if (!verdict) {
+    row.insert(row.end(), 4 + checks.size(), "");
+    return;
+  }
+  const bool failed = !verdict->first_check.empty();
+  row.insert(row.end(), {verdict->deploys ? "yes" : "no", csv_field(verdict->first_check),
+                         csv_field(verdict->first_member), failed ? number(verdict->first_time_s) : ""});
+  for (const std::string& check : checks) {
+    const auto found = std::find_if(verdict->max_utilization.begin(), verdict->max_utilization.end(),
+                                    [&](const auto& entry) { return entry.first == check; });
+    row.push_back(found == verdict->max_utilization.end() ? "" : number(found->second));
+  }
+}
+
 }  // namespace
 
 std::string study_table_csv(const Study& study, const std::vector<CaseResult>& outcomes) {
@@ -77,6 +95,17 @@ std::string study_table_csv(const Study& study, const std::vector<CaseResult>& o
     }
   }
 
+  // The verdict's columns when a case has one: its checks' largest utilizations by name.
+  const bool verdicts = std::any_of(outcomes.begin(), outcomes.end(),
+                                    [](const CaseResult& outcome) { return outcome.verdict.has_value(); });
+  std::vector<std::string> checks;
+  for (const CaseResult& outcome : outcomes) {
+    if (!outcome.verdict) continue;
+    for (const auto& [check, utilization] : outcome.verdict->max_utilization) {
+      if (std::find(checks.begin(), checks.end(), check) == checks.end()) checks.push_back(check);
+    }
+  }
+
   std::vector<std::string> header{"case", "status"};
   for (const std::string& path : override_paths) header.push_back(csv_field(path));
   header.insert(header.end(),
@@ -84,8 +113,12 @@ std::string study_table_csv(const Study& study, const std::vector<CaseResult>& o
   for (const DriverColumn& d : drivers) {
     header.push_back(csv_field((d.torque ? "peak_torque." : "peak_force.") + d.name));
   }
-  header.insert(header.end(), {"shape_error", "time_reached", "steps", "newton_iterations",
-                               "wall_time", "message"});
+  header.push_back("shape_error");
+  if (verdicts) {
+    header.insert(header.end(), {"deploys", "first_failure", "first_failure_member", "first_failure_time"});
+    for (const std::string& check : checks) header.push_back(csv_field("utilization." + check));
+  }
+  header.insert(header.end(), {"time_reached", "steps", "newton_iterations", "wall_time", "message"});
   std::string text = fmt::format("{}\n", fmt::join(header, ","));
 
   const CaseResult& reference = outcomes[study.reference];
@@ -114,6 +147,7 @@ std::string study_table_csv(const Study& study, const std::vector<CaseResult>& o
     }
     const bool comparable = completed && reference.status == RunStatus::completed;
     row.push_back(number(comparable ? final_shape_error_m(outcome, reference) : kNaN));
+    if (verdicts) add_verdict_columns(outcome.verdict, checks, row);
     const bool ran = outcome.ran;
     row.push_back(ran ? number(outcome.time_reached_s) : "");
     row.push_back(ran ? fmt::format("{}", outcome.steps) : "");
