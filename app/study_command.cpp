@@ -14,6 +14,7 @@
 #include "deploydyn/io/text_file.hpp"
 #include "deploydyn/output/output_error.hpp"
 #include "deploydyn/study/study_loader.hpp"
+#include "deploydyn/study/sampling_statistics.hpp"
 #include "deploydyn/study/study_runner.hpp"
 #include "exit_codes.hpp"
 #include "mpi_channel.hpp"
@@ -96,6 +97,28 @@ Study prepare_study(const StudyArguments& arguments, bool checks_folder) {
   return study;
 }
 
+// The engineer's answer after the cases: how many do not deploy, and for drawn cases the
+// probability of failure with its 95 % interval (docs/theory.md, "Sampled studies").
+void print_verdicts(const Study& study, const std::vector<CaseOutcome>& outcomes) {
+  std::size_t n_completed_failing = 0, n_drawn = 0, n_drawn_failing = 0;
+  for (std::size_t i = 0; i < outcomes.size(); ++i) {
+    const bool completed = outcomes[i].status == RunStatus::completed;
+    n_completed_failing += completed && outcomes[i].does_not_deploy ? 1 : 0;
+    if (i == study.reference) continue;
+    ++n_drawn;
+    n_drawn_failing += outcomes[i].does_not_deploy || !completed ? 1 : 0;
+  }
+  if (n_completed_failing > 0) {
+    fmt::print(stderr, "{} of the completed cases do not deploy: their verdicts are in study.csv (first_failure)\n",
+               n_completed_failing);
+  }
+  if (!study.sampling || n_drawn == 0) return;
+  const ProbabilityInterval interval = wilson_interval(n_drawn_failing, n_drawn);
+  fmt::print(stderr, "probability of failure {:.3g}: {} of {} drawn cases (95 % interval {:.3g} to {:.3g})\n",
+             static_cast<double>(n_drawn_failing) / static_cast<double>(n_drawn), n_drawn_failing, n_drawn,
+             interval.low, interval.high);
+}
+
 int run_prepared_study(Study& study, const StudyArguments& arguments, StudyControl& control,
                        const StudyChannel* channel) {
   const auto case_done = [&](std::size_t i, const CaseRun& run) {
@@ -145,6 +168,8 @@ int run_prepared_study(Study& study, const StudyArguments& arguments, StudyContr
                n_resumed > 0 ? fmt::format(" ({} by an earlier run)", n_resumed) : "", wall_s, n_jobs,
                channel ? " over MPI processes" : "", study.table_file().string());
   }
+  const bool tables_made = control.stop == nullptr || !control.stop->load();
+  if (!arguments.quiet && tables_made) print_verdicts(study, outcomes);
   return all_completed ? kExitSuccess : kExitSolverFailure;
 }
 

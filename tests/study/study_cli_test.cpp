@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include <fmt/format.h>
+
 #include <fstream>
 #include <string>
 
@@ -40,6 +42,48 @@ TEST(StudyCli, AFailedCaseGivesExitCodeOneAfterTheOthersRan) {
   EXPECT_NE(result.output.find("2 of 3 cases completed"), std::string::npos) << result.output;
   EXPECT_TRUE(std::filesystem::exists(out / "cold" / "history.csv"));
   EXPECT_NE(read_text(out / "study.csv").find("\njammed,failed,"), std::string::npos);
+}
+
+// A tie that must stay taut (its slack forbidden), held at 1 m by a strut, cut 1 mm short.
+void write_tie(const std::filesystem::path& folder) {
+  std::filesystem::create_directories(folder);
+  std::ofstream(folder / "tie.yaml") << "nodes: {A: [0, 0], B: [1, 0]}\n"
+                                        "materials: {steel: {E: 2.0e11, alpha: 0, density: 7850}}\n"
+                                        "elements:\n"
+                                        "  strut: {nodes: [A, B], area: 1.0e-3, material: steel}\n"
+                                        "  tie: {type: cable, nodes: [A, B], area: 1.0e-6, material: steel, "
+                                        "rest_length: 0.999}\n"
+                                        "members: {tie: {elements: [tie], slack: forbidden}}\n"
+                                        "supports: [{node: A}, {node: B, fix: [y]}]\n"
+                                        "analysis: {type: static, end: 1, step: 1}\n";
+}
+
+// A case that completes but fails its checks is counted apart, and a sampled study ends with
+// its probability of failure: the share of drawn cases whose verdict is "no" in study.csv.
+TEST(StudyCli, CasesThatDoNotDeployAndTheProbabilityOfFailureAreSaid) {
+  ScratchFolder folder("study_cli_verdicts");
+  write_tie(folder.path());
+  std::ofstream(folder.path() / "listed.yaml")
+      << "model: tie.yaml\ncases:\n  taut: {}\n  slack: {elements.tie.rest_length: 1.002}\n";
+  const auto listed = run_cli("study " + (folder.path() / "listed.yaml").string() + " -o " +
+                              (folder.path() / "listed").string());
+  EXPECT_EQ(listed.exit_code, 0) << listed.output;
+  EXPECT_NE(listed.output.find("1 of the completed cases do not deploy"), std::string::npos) << listed.output;
+  EXPECT_EQ(listed.output.find("probability of failure"), std::string::npos) << listed.output;
+  EXPECT_NE(read_text(folder.path() / "listed" / "study.csv").find("\nslack,completed,1.002,"), std::string::npos);
+
+  std::ofstream(folder.path() / "sampled.yaml")
+      << "model: tie.yaml\nsampling: {cases: 20, seed: 1, length_error: [{elements: tie, normal: 1e-3}]}\n";
+  const auto sampled = run_cli("study " + (folder.path() / "sampled.yaml").string() + " -o " +
+                               (folder.path() / "sampled").string());
+  EXPECT_EQ(sampled.exit_code, 0) << sampled.output;
+  const std::string table = read_text(folder.path() / "sampled" / "study.csv");
+  int n_no = 0;
+  for (std::size_t at = table.find(",no,"); at != std::string::npos; at = table.find(",no,", at + 1)) ++n_no;
+  EXPECT_GT(n_no, 0) << "with δ ~ N(0, a) about 3 of 20 cases go slack";
+  EXPECT_NE(sampled.output.find(fmt::format("probability of failure {:.3g}: {} of 20 drawn cases", n_no / 20.0, n_no)),
+            std::string::npos)
+      << sampled.output;
 }
 
 TEST(StudyCli, AllCompletedIsExitCodeZeroAndQuietIsQuiet) {

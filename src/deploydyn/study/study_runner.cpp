@@ -284,9 +284,10 @@ std::vector<CaseOutcome> run_study(const Study& study, const StudyControl& contr
     for (std::size_t i = 0; i < n_cases; ++i) {
       tables_stopped = !stopped_in_cases && stopped();
       if (tables_stopped) break;
-      const CaseOutcome& outcome = outcomes[i];
+      CaseOutcome& outcome = outcomes[i];
       std::optional<CaseResult> from_folder;
       if (outcome.ran) from_folder = read_case_result(study.case_folder(i));
+      outcome.does_not_deploy = from_folder && from_folder->verdict && !from_folder->verdict->deploys;
       results.push_back(from_folder ? std::move(*from_folder) : CaseResult::not_run(outcome.status, outcome.message));
     }
     if (!tables_stopped) {

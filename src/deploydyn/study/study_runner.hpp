@@ -41,6 +41,8 @@ struct CaseOutcome {
   bool resumed = false;        // skipped: an earlier run of the study completed it
   int process = 0;             // the study process that ran it (0 without MPI)
   bool lost = false;           // its process died while running it
+  // Its verdict (summary.json) says the structure does not deploy: set as the tables are made.
+  bool does_not_deploy = false;
 };
 
 // What StudyControl::case_done is told of a case that ended: its outcome, and for a case run in
