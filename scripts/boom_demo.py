@@ -28,6 +28,7 @@ import matplotlib.pyplot as plt  # noqa: E402  (after choosing the backend)
 ROOT = pathlib.Path(__file__).resolve().parent.parent
 sys.path.insert(0, str(ROOT / "python" / "deploydyn"))
 import result_folder  # noqa: E402
+from demo_verdict import print_verdicts  # noqa: E402
 
 MODEL = ROOT / "examples" / "boom" / "boom.yaml"
 CASES = (("hot", 130.0), ("normal", 0.0), ("cold", -170.0))
@@ -231,6 +232,7 @@ def main():
         analysis = analyse(result)
         analyses.append(analysis)
         write_tables(result, analysis, args.out)
+    print_verdicts([(r["case"], r.get("summary")) for r in results])
     plot(results, analyses, args.out)
     return 0 if all(r["ok"] for r in results) else 1
 

@@ -20,6 +20,7 @@ import sys
 import time
 
 import plot_paper
+from demo_verdict import print_verdicts
 
 ROOT = pathlib.Path(__file__).resolve().parent.parent
 LINKAGES = ("parallel", "general")
@@ -133,6 +134,8 @@ def main():
     print("peak |mechanical strain| per bar, peak |driver torque| over 0-5 s, and how far the final")
     print("shape lies from the normal case's (largest node distance)\n")
     print_table(results)
+    print()
+    print_verdicts([(f"{r['linkage']}/{r['case']}", r["summary"]) for r in results])
     total = sum(r["summary"]["wall_time"] for r in results if r["summary"])
     print(f"\nwall time of the six runs: {total:.3f} s in the solver, {processes:.3f} s for the two "
           "studies (cases in parallel) with process start and result files")

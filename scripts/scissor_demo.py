@@ -25,6 +25,7 @@ import matplotlib.pyplot as plt  # noqa: E402  (after choosing the backend)
 ROOT = pathlib.Path(__file__).resolve().parent.parent
 sys.path.insert(0, str(ROOT / "python" / "deploydyn"))
 import result_folder  # noqa: E402
+from demo_verdict import print_verdicts  # noqa: E402
 
 ALPHA = 1.2e-5  # 1/°C, steel: generators/scissor.hpp
 CASES = (("hot", 130.0), ("normal", 0.0), ("cold", -170.0))
@@ -107,6 +108,7 @@ def print_table(structure, results):
               f"{s['drivers']['motor']['peak'] / 1e3:11.4f} {span(structure, nodes):17.6f} "
               f"{expected:16.6f} {s['newton_iterations_per_step']:11.2f} {s['wall_time']:7.2f}  "
               f"{s['status']}")
+    print_verdicts([(r["case"], r["summary"]) for r in results])
 
 
 def plot(structure, results, out_root):
