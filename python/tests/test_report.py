@@ -13,7 +13,7 @@ import numpy as np
 import pytest
 from PIL import Image
 
-from conftest import GENERAL, run_cli
+from conftest import GENERAL, SOURCE_DIR, run_cli
 
 selenium = pytest.importorskip("selenium", reason="python3-selenium is missing: run scripts/install-deps.sh")
 from selenium import webdriver  # noqa: E402
@@ -129,6 +129,38 @@ def test_the_page_draws_the_linkage_and_the_slider_moves_it(browser, linkage_rep
     assert changed < 0.05 * np.count_nonzero(blocks(drawn(first)) != blocks(drawn(last))), changed
     browser.execute_script("window.deploydynReport.setScale(1)")
 
+    assert severe_messages(browser) == []
+
+
+def test_members_with_capacities_are_coloured_by_utilization(browser, tmp_path):
+    """The heated bay (examples/checks) buckles its link: at the last frame, coloured by
+    utilization, the link is red (over capacity); coloured by force, blue (compression)."""
+    folder = tmp_path / "bay"
+    run_cli("run", SOURCE_DIR / "examples" / "checks" / "heated_bay.yaml", "--out", folder, "--quiet")
+    run_cli("report", folder, "--quiet")
+    open_report(browser, folder / "report.html")
+    report = "window.deploydynReport"
+    frames = browser.execute_script(f"return {report}.frameCount")
+    assert browser.execute_script("return document.getElementById('colour-by-label').hidden") is False
+    names = json.loads(browser.execute_script(
+        "return JSON.stringify(JSON.parse(document.getElementById('deploydyn-data').textContent).members.names)"))
+    link = names.index("link")
+
+    def colour_at_link():
+        browser.execute_script(f"{report}.setFrame({frames - 1})")
+        x, y = browser.execute_script(f"return {report}.memberMidpoints()")[link]
+        pixels = canvas_pixels(browser)
+        i, j = int(round(y)), int(round(x))
+        patch = pixels[max(i - 2, 0):i + 3, max(j - 2, 0):j + 3].reshape(-1, 3)
+        return patch[np.argmin(patch.sum(axis=1))]  # the most saturated pixel: the line, not its edge
+
+    red = colour_at_link()  # a 1-pixel line blends with the white: a hue, not a value
+    assert red[0] > red[1] + 60 and abs(int(red[1]) - int(red[2])) < 20, f"not red (over capacity, not orange): {red}"
+    assert "utilization" in browser.find_element("id", "legend-title").text
+    browser.execute_script(f"{report}.colourBy('force')")
+    blue = colour_at_link()
+    assert blue[2] > blue[0] + 40, f"not blue (compression): {blue}"
+    assert "axial force" in browser.find_element("id", "legend-title").text
     assert severe_messages(browser) == []
 
 

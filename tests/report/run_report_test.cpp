@@ -5,7 +5,9 @@
 #include <gtest/gtest.h>
 
 #include <cstring>
+#include <algorithm>
 #include <filesystem>
+#include <fstream>
 #include <nlohmann/json.hpp>
 #include <string>
 
@@ -94,6 +96,48 @@ TEST(RunReport, NodesWithoutPositionColumnsStayWhereTheModelPutsThem) {
   EXPECT_TRUE(std::isnan(forces[3 * (n_frames - 1) + 1]));
   EXPECT_FALSE(std::isnan(forces[3 * (n_frames - 1)]));
   EXPECT_NE(data["notes"]["animation"].get<std::string>().find("no position in history.csv"), std::string::npos);
+}
+
+std::vector<float> float32_array(const nlohmann::json& base64) {
+  const std::vector<unsigned char> bytes = decode_base64(base64.get<std::string>());
+  std::vector<float> values(bytes.size() / 4);
+  std::memcpy(values.data(), bytes.data(), bytes.size());
+  return values;
+}
+
+// Members are coloured by utilization when the model gives capacities: recomputed from the
+// history's forces, it must give at the last output time what the run's own checks found at
+// that step (summary.json's verdict: the heated bay's link at 1.86 of its Euler load at t = 4 s).
+TEST(RunReport, UtilizationsAtTheFramesAreTheRunsOwnChecks) {
+  const fs::path folder = fs::temp_directory_path() / "deploydyn_report_utilization";
+  fs::remove_all(folder);
+  const Model model = load_model(std::string(DEPLOYDYN_SOURCE_DIR) + "/examples/checks/heated_bay.yaml");
+  ASSERT_EQ(run_to_folder(model, folder).status, RunStatus::completed);
+  const nlohmann::json data = page_data(run_report_html(folder));
+  const auto& animation = data["animation"];
+  ASSERT_TRUE(animation["utilizations"].is_string()) << "the bay's members have capacities";
+  const std::vector<float> utilizations = float32_array(animation["utilizations"]);
+  const std::vector<std::string> names = data["members"]["names"];
+  const std::size_t n_frames = animation["times"].size(), n_members = names.size();
+  ASSERT_EQ(utilizations.size(), n_frames * n_members);
+  const auto link = std::find(names.begin(), names.end(), "link") - names.begin();
+  ASSERT_LT(static_cast<std::size_t>(link), n_members);
+  nlohmann::json summary = nlohmann::json::parse(std::ifstream(folder / "summary.json"));
+  const auto& buckling = summary["verdict"]["checks"]["buckling"];
+  ASSERT_EQ(buckling["member"], "link");
+  ASSERT_EQ(buckling["time_s"].get<double>(), animation["times"].back().get<double>());
+  const double expected = buckling["max_utilization"].get<double>();
+  EXPECT_NEAR(utilizations[(n_frames - 1) * n_members + static_cast<std::size_t>(link)], expected, 1e-6 * expected);
+  EXPECT_NEAR(animation["largest_utilization"].get<double>(), expected, 1e-12 * expected);
+  // A model without capacities has none: the page colours by force.
+  const fs::path plain = fs::temp_directory_path() / "deploydyn_report_no_capacity";
+  fs::remove_all(plain);
+  ASSERT_EQ(run_to_folder(load_model(std::string(DEPLOYDYN_SOURCE_DIR) + "/examples/paper/parallel.yaml",
+                                     parse_overrides({"analysis.end=0.1"})),
+                          plain)
+                .status,
+            RunStatus::completed);
+  EXPECT_TRUE(page_data(run_report_html(plain))["animation"]["utilizations"].is_null());
 }
 
 TEST(RunReport, AFolderThatIsNotARunsNamesTheMissingFile) {

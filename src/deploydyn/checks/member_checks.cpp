@@ -1,7 +1,9 @@
 #include "deploydyn/checks/member_checks.hpp"
 
 #include <chrono>
+#include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "deploydyn/elements/element_kinds.hpp"
 
@@ -24,6 +26,49 @@ void CheckHistory::update(double utilization, int where, double t) {
   recorded = true;
   last = utilization;
   last_time_s = t;
+}
+
+ChecksThatRun checks_that_run(const CheckedMember& member, int dimension) {
+  ChecksThatRun runs{};
+  for (std::size_t k = 0; k < kNumCheckKinds; ++k) runs[k] = has_capacity(member, kCheckKinds.value(k), dimension);
+  return runs;
+}
+
+// docs/theory.md, "Member checks and the verdict", Eqs. (V1)–(V5).
+std::array<double, kNumCheckKinds> element_utilizations(const CheckedMember& member, const CheckedElement& e,
+                                                        const ChecksThatRun& runs, int dimension,
+                                                        const ElementForces& forces) {
+  std::array<double, kNumCheckKinds> u;
+  u.fill(std::numeric_limits<double>::quiet_NaN());
+  const auto set = [&](CheckKind kind, double value) { u[static_cast<std::size_t>(kind)] = value; };
+  const auto running = [&](CheckKind kind) { return runs[static_cast<std::size_t>(kind)]; };
+  const double compression_N = std::max(0.0, -forces.axial_N);
+  const double axial_stress_Pa = std::abs(forces.axial_N) / e.area_m2;
+  switch (member.kind) {
+    case MemberKind::bar:
+      if (running(CheckKind::buckling)) set(CheckKind::buckling, compression_N / member.critical_force_N);  // (V1)
+      if (e.yield_strength_Pa > 0.0) set(CheckKind::stress, axial_stress_Pa / e.yield_strength_Pa);         // (V2)
+      break;
+    case MemberKind::beam: {
+      if (running(CheckKind::buckling)) set(CheckKind::buckling, compression_N / member.critical_force_N);  // (V1)
+      const bool known = e.yield_strength_Pa > 0.0 && e.section_modulus_z_m3 > 0.0 &&
+                         (dimension == 2 || e.section_modulus_y_m3 > 0.0);
+      if (!known) break;
+      double bending_stress_Pa = std::abs(forces.moment_z_Nm) / e.section_modulus_z_m3;
+      if (dimension == 3) bending_stress_Pa += std::abs(forces.moment_y_Nm) / e.section_modulus_y_m3;
+      set(CheckKind::stress, (axial_stress_Pa + bending_stress_Pa) / e.yield_strength_Pa);  // (V3)
+      if (running(CheckKind::interaction)) {  // (V4): in compression only
+        const double resistance_N = std::min(member.critical_force_N, e.area_m2 * e.yield_strength_Pa);
+        set(CheckKind::interaction,
+            compression_N > 0.0 ? compression_N / resistance_N + bending_stress_Pa / e.yield_strength_Pa : 0.0);
+      }
+      break;
+    }
+    case MemberKind::cable:
+      if (e.break_load_N > 0.0) set(CheckKind::cable_break, forces.axial_N / e.break_load_N);  // (V5)
+      break;
+  }
+  return u;
 }
 
 MemberChecks::MemberChecks(const Model& model)
@@ -79,7 +124,6 @@ void MemberChecks::check_member(int m, const StepRecord& r) {
   if (layout.group < 0 || static_cast<std::size_t>(layout.group) >= r.elements.size()) return;
   const ElementResults& results = r.elements[static_cast<std::size_t>(layout.group)];
   const auto& slots = slots_[static_cast<std::size_t>(m)];
-  const auto runs = [&](CheckKind kind) { return slots[static_cast<std::size_t>(kind)] >= 0; };
   // The largest utilization of each check over the member's elements at this step, and where.
   std::array<double, kNumCheckKinds> largest{};
   std::array<int, kNumCheckKinds> where{};
@@ -91,40 +135,22 @@ void MemberChecks::check_member(int m, const StepRecord& r) {
       where[k] = element;
     }
   };
+  ChecksThatRun running{};
+  for (std::size_t k = 0; k < kNumCheckKinds; ++k) running[k] = slots[k] >= 0;
   bool slack = false;
   int first_slack = -1;
   for (const CheckedElement& e : member.elements) {
-    const double force_N = results.at(e.element, layout.axial_force);
-    const double compression_N = std::max(0.0, -force_N);
-    const double axial_stress_Pa = std::abs(force_N) / e.area_m2;
-    switch (member.kind) {
-      case MemberKind::bar:
-        if (runs(CheckKind::buckling)) take(CheckKind::buckling, compression_N / member.critical_force_N, e.element);  // (V1)
-        if (e.yield_strength_Pa > 0.0) take(CheckKind::stress, axial_stress_Pa / e.yield_strength_Pa, e.element);  // (V2)
-        break;
-      case MemberKind::beam: {
-        if (runs(CheckKind::buckling)) take(CheckKind::buckling, compression_N / member.critical_force_N, e.element);  // (V1)
-        const bool known = e.yield_strength_Pa > 0.0 && e.section_modulus_z_m3 > 0.0 &&
-                           (dimension_ == 2 || e.section_modulus_y_m3 > 0.0);
-        if (!known) break;
-        double bending_stress_Pa = std::abs(results.at(e.element, layout.moment_z)) / e.section_modulus_z_m3;
-        if (dimension_ == 3) bending_stress_Pa += std::abs(results.at(e.element, layout.moment_y)) / e.section_modulus_y_m3;
-        take(CheckKind::stress, (axial_stress_Pa + bending_stress_Pa) / e.yield_strength_Pa, e.element);  // (V3)
-        if (runs(CheckKind::interaction)) {  // (V4): in compression only
-          const double resistance_N = std::min(member.critical_force_N, e.area_m2 * e.yield_strength_Pa);
-          take(CheckKind::interaction,
-               compression_N > 0.0 ? compression_N / resistance_N + bending_stress_Pa / e.yield_strength_Pa : 0.0,
-               e.element);
-        }
-        break;
-      }
-      case MemberKind::cable:
-        if (e.break_load_N > 0.0) take(CheckKind::cable_break, force_N / e.break_load_N, e.element);  // (V5)
-        if (results.at(e.element, layout.slack) != 0.0) {  // (V6)
-          if (!slack) first_slack = e.element;
-          slack = true;
-        }
-        break;
+    const ElementForces forces{results.at(e.element, layout.axial_force),
+                               member.kind == MemberKind::beam ? results.at(e.element, layout.moment_z) : 0.0,
+                               member.kind == MemberKind::beam && dimension_ == 3 ? results.at(e.element, layout.moment_y)
+                                                                                  : 0.0};
+    const auto utilizations = element_utilizations(member, e, running, dimension_, forces);
+    for (std::size_t k = 0; k < kNumCheckKinds; ++k) {
+      if (!std::isnan(utilizations[k])) take(kCheckKinds.value(k), utilizations[k], e.element);
+    }
+    if (member.kind == MemberKind::cable && results.at(e.element, layout.slack) != 0.0) {  // (V6)
+      if (!slack) first_slack = e.element;
+      slack = true;
     }
   }
   for (std::size_t k = 0; k < kNumCheckKinds; ++k) {

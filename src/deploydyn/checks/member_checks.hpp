@@ -45,6 +45,25 @@ struct SlackHistory {
   double last_time_s = 0.0;
 };
 
+// The forces an element's checks read at one configuration (tension positive).
+struct ElementForces {
+  double axial_N = 0.0;
+  double moment_z_Nm = 0.0;  // beams
+  double moment_y_Nm = 0.0;  // 3D beams
+};
+
+// Which checks run on a member: has_capacity for each CheckKind.
+using ChecksThatRun = std::array<bool, kNumCheckKinds>;
+ChecksThatRun checks_that_run(const CheckedMember& member, int dimension);
+
+// The utilizations of one element of `member` under `forces`, by CheckKind, Eqs. (V1)–(V5)
+// (docs/theory.md, "Member checks and the verdict"); NaN where a check does not apply to it.
+// Slack (V6) is a state, not a utilization: NaN. The run's checks (MemberChecks) and the
+// report's colours (report/) both take them from here.
+std::array<double, kNumCheckKinds> element_utilizations(const CheckedMember& member, const CheckedElement& element,
+                                                        const ChecksThatRun& runs, int dimension,
+                                                        const ElementForces& forces);
+
 class MemberChecks final : public RecordSink {
  public:
   explicit MemberChecks(const Model& model);

@@ -79,6 +79,14 @@
     for (let k = 0; k < 3; ++k) out[at + k] = grey[k] + w * (end[k] - grey[k]);
   }
 
+  function colourOfUtilization(u, out, at) {
+    // Sequential: light grey (0) – orange (1, at capacity); red beyond capacity; grey for none.
+    if (!Number.isFinite(u)) { out[at] = out[at + 1] = out[at + 2] = 0.6; return; }
+    if (u > 1) { out[at] = 0.75; out[at + 1] = 0.0; out[at + 2] = 0.0; return; }
+    const light = [0.85, 0.85, 0.85], orange = [0.95, 0.55, 0.1], w = Math.max(0, u);
+    for (let k = 0; k < 3; ++k) out[at + k] = light[k] + w * (orange[k] - light[k]);
+  }
+
   function showDeployment() {
     const anim = data.animation;
     const nNodes = data.nodes;
@@ -89,12 +97,30 @@
     const forces = anim.forces ? decode(anim.forces, Float32Array) : null;
     const nFrames = anim.times.length;
     const largest = anim.colour_range_N;  // 99th percentile of |force|; beyond it the colours saturate
-    text('legend-min', `−${formatNumber(largest)}`);
-    text('legend-max', `+${formatNumber(largest)}`);
-    if (anim.largest_force_N > 1.001 * largest) {
-      document.querySelector('#legend .note').textContent +=
-        `; saturated beyond (largest |force| ${formatNumber(anim.largest_force_N)} N)`;
+    const utilizations = anim.utilizations ? decode(anim.utilizations, Float32Array) : null;
+    // With capacities to check against, members are coloured by utilization first.
+    let colourBy = utilizations ? 'utilization' : 'force';
+    function showLegend() {
+      const bar = document.getElementById('legend-bar');
+      if (colourBy === 'utilization') {
+        text('legend-title', 'utilization (1 = at capacity)');
+        bar.style.background = 'linear-gradient(to right, #d9d9d9, #f28c1a 85%, #bf0000 85%)';
+        text('legend-min', '0');
+        text('legend-mid', '1');
+        text('legend-max', '> 1');
+        text('legend-note', `red: over capacity; largest ${formatNumber(anim.largest_utilization)}` +
+             (anim.utilization_note ? `; ${anim.utilization_note}` : ''));
+        return;
+      }
+      text('legend-title', 'axial force (N)');
+      bar.style.background = '';
+      text('legend-min', `−${formatNumber(largest)}`);
+      text('legend-mid', '0');
+      text('legend-max', `+${formatNumber(largest)}`);
+      text('legend-note', 'blue compression, red tension' + (anim.largest_force_N > 1.001 * largest
+        ? `; saturated beyond (largest |force| ${formatNumber(anim.largest_force_N)} N)` : ''));
     }
+    showLegend();
     text('animation-note', anim.note || data.notes.animation || '');
 
     const canvas = document.getElementById('view');
@@ -140,8 +166,11 @@
             vertex[6 * m + 3 * end + axis] = x0 + scale * (positions[base + 3 * node + axis] - x0);
           }
         }
-        const f = forces ? forces[k * nMembers + m] : NaN;
-        colourOf(f, largest, colour, 6 * m);
+        if (colourBy === 'utilization') {
+          colourOfUtilization(utilizations[k * nMembers + m], colour, 6 * m);
+        } else {
+          colourOf(forces ? forces[k * nMembers + m] : NaN, largest, colour, 6 * m);
+        }
         colour.copyWithin(6 * m + 3, 6 * m, 6 * m + 3);
       }
       geometry.attributes.position.needsUpdate = true;
@@ -171,6 +200,15 @@
       setFrame(report.frame);
     });
     document.getElementById('reset-view').addEventListener('click', () => { resetView(); render(); });
+    const colourSelect = document.getElementById('colour-by');
+    document.getElementById('colour-by-label').hidden = !utilizations;
+    report.colourBy = (mode) => {
+      colourBy = utilizations && mode === 'utilization' ? 'utilization' : 'force';
+      colourSelect.value = colourBy;
+      showLegend();
+      setFrame(report.frame);
+    };
+    colourSelect.addEventListener('change', (e) => report.colourBy(e.target.value));
     let playing = false, last = 0;
     const play = document.getElementById('play');
     function tick(now) {

@@ -15,6 +15,7 @@
 
 #include "deploydyn/elements/element_kinds.hpp"
 #include "deploydyn/io/model_loader.hpp"
+#include "deploydyn/report/drawn_utilizations.hpp"
 #include "deploydyn/output/checked_file.hpp"
 #include "deploydyn/output/envelope_table.hpp"
 #include "deploydyn/output/result_folder.hpp"
@@ -131,6 +132,32 @@ Members members_of(const Model& model, const History& history) {
   return m;
 }
 
+// The drawn members' utilizations at the frames (report/drawn_utilizations.hpp), when the
+// model gives a capacity to check against: `utilizations` (Float32, frame after frame) and
+// their largest, else null.
+void add_utilizations(const Model& model, const History& history, const Members& members,
+                      const std::vector<std::size_t>& rows, json& out) {
+  const DrawnUtilizations drawn(model, members.names, [&](const std::string& name) { return history.column(name); });
+  out["utilizations"] = nullptr;
+  if (!drawn.any()) return;
+  std::vector<float> utilizations;
+  utilizations.reserve(rows.size() * members.names.size());
+  double largest = 0.0;
+  for (const std::size_t row : rows) {
+    const auto value = [&](int column) { return history.values[static_cast<std::size_t>(column)][row]; };
+    for (std::size_t m = 0; m < members.names.size(); ++m) {
+      const double u = drawn.at(m, value);
+      if (std::isfinite(u)) largest = std::max(largest, u);
+      utilizations.push_back(static_cast<float>(u));
+    }
+  }
+  out["utilizations"] = float32_base64(utilizations);
+  out["largest_utilization"] = largest;
+  if (drawn.bending_missing()) {
+    out["utilization_note"] = "beams' bending moments are not in history.csv (output.select): their utilizations leave bending out";
+  }
+}
+
 // The page's animation: node positions (x, y, z per node; z = 0 in 2D) and member forces of
 // the chosen rows, and the model-file positions the deformation scale starts from.
 json animation(const Model& model, const History& history, const Members& members, const ReportOptions& options,
@@ -200,6 +227,7 @@ json animation(const Model& model, const History& history, const Members& member
               {"largest_force_N", largest_force},
               {"colour_range_N", colour_range}};
   out["forces"] = any_force ? json(float32_base64(forces)) : json(nullptr);
+  add_utilizations(model, history, members, rows, out);
   return out;
 }
 

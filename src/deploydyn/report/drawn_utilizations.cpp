@@ -1,0 +1,56 @@
+#include "deploydyn/report/drawn_utilizations.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <unordered_map>
+#include <utility>
+
+namespace deploydyn {
+
+DrawnUtilizations::DrawnUtilizations(const Model& model, const std::vector<std::string>& drawn,
+                                     const std::function<int(const std::string&)>& column)
+    : dimension_(model.dimension), members_(checked_members(model)), drawn_(drawn.size()) {
+  std::unordered_map<std::string, std::pair<int, int>> where;  // element name → (member, element)
+  for (std::size_t m = 0; m < members_.size(); ++m) {
+    const CheckedMember& member = members_[m];
+    for (std::size_t e = 0; e < member.elements.size(); ++e) {
+      where.emplace(member_element_name(model, member.kind, member.elements[e].element),
+                    std::pair{static_cast<int>(m), static_cast<int>(e)});
+    }
+  }
+  for (std::size_t i = 0; i < drawn.size(); ++i) {
+    const auto found = where.find(drawn[i]);
+    if (found == where.end()) continue;
+    Drawn& d = drawn_[i];
+    const CheckedMember& member = members_[static_cast<std::size_t>(found->second.first)];
+    d.member = found->second.first;
+    d.element = found->second.second;
+    d.runs = checks_that_run(member, dimension_);
+    d.force = column("force." + drawn[i]);
+    const bool runs_any = std::any_of(d.runs.begin(), d.runs.end(), [](bool r) { return r; });
+    any_ = any_ || (runs_any && d.force >= 0);
+    if (member.kind != MemberKind::beam) continue;
+    d.moment_z = column("moment." + drawn[i]);
+    d.moment_y = dimension_ == 3 ? column("moment_y." + drawn[i]) : -1;
+    const bool stress = d.runs[static_cast<std::size_t>(CheckKind::stress)];
+    bending_missing_ = bending_missing_ || (stress && (d.moment_z < 0 || (dimension_ == 3 && d.moment_y < 0)));
+  }
+}
+
+double DrawnUtilizations::at(std::size_t i, const std::function<double(int column)>& value) const {
+  constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+  const Drawn& d = drawn_[i];
+  if (d.member < 0 || d.force < 0) return kNaN;
+  const CheckedMember& member = members_[static_cast<std::size_t>(d.member)];
+  const ElementForces forces{value(d.force), d.moment_z >= 0 ? value(d.moment_z) : 0.0,
+                             d.moment_y >= 0 ? value(d.moment_y) : 0.0};
+  double largest = kNaN;
+  for (const double u : element_utilizations(member, member.elements[static_cast<std::size_t>(d.element)], d.runs,
+                                             dimension_, forces)) {
+    if (!std::isnan(u) && (std::isnan(largest) || u > largest)) largest = u;
+  }
+  return largest;
+}
+
+}  // namespace deploydyn
