@@ -29,6 +29,7 @@ demo: build
 	$(PYTHON) scripts/scissor_demo.py --cli $(BUILD)/deploydyn --out results/scissor || status=1; \
 	$(PYTHON) scripts/boom_demo.py --cli $(BUILD)/deploydyn --out results/boom || status=1; \
 	$(PYTHON) scripts/checks_demo.py --cli $(BUILD)/deploydyn --out results/checks || status=1; \
+	$(PYTHON) scripts/thermal_demo.py --cli $(BUILD)/deploydyn --out results/thermal || status=1; \
 	exit $$status
 
 test: build
