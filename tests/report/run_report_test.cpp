@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <nlohmann/json.hpp>
 #include <string>
 
@@ -36,6 +37,21 @@ std::vector<unsigned char> decode_base64(const std::string& text) {
     }
   }
   return out;
+}
+
+std::vector<float> float32_array(const nlohmann::json& base64) {
+  const std::vector<unsigned char> bytes = decode_base64(base64.get<std::string>());
+  std::vector<float> values(bytes.size() / 4);
+  std::memcpy(values.data(), bytes.data(), bytes.size());
+  return values;
+}
+
+// The animation's colouring called `name` (report/member_colourings.hpp), or null.
+nlohmann::json colouring(const nlohmann::json& animation, const std::string& name) {
+  for (const auto& c : animation["colourings"]) {
+    if (c["name"] == name) return c;
+  }
+  return nullptr;
 }
 
 TEST(RunReport, FramesAreSpreadEvenlyWithTheFirstAndLastRow) {
@@ -89,20 +105,11 @@ TEST(RunReport, NodesWithoutPositionColumnsStayWhereTheModelPutsThem) {
     }
   }
   // Bar 1 has its force column; bars 2 and 3 none: NaN, drawn grey.
-  const std::vector<unsigned char> force_bytes = decode_base64(animation["forces"].get<std::string>());
-  std::vector<float> forces(force_bytes.size() / 4);
-  std::memcpy(forces.data(), force_bytes.data(), force_bytes.size());
+  const std::vector<float> forces = float32_array(colouring(animation, "force")["values"]);
   ASSERT_EQ(forces.size(), 3 * n_frames);
   EXPECT_TRUE(std::isnan(forces[3 * (n_frames - 1) + 1]));
   EXPECT_FALSE(std::isnan(forces[3 * (n_frames - 1)]));
   EXPECT_NE(data["notes"]["animation"].get<std::string>().find("no position in history.csv"), std::string::npos);
-}
-
-std::vector<float> float32_array(const nlohmann::json& base64) {
-  const std::vector<unsigned char> bytes = decode_base64(base64.get<std::string>());
-  std::vector<float> values(bytes.size() / 4);
-  std::memcpy(values.data(), bytes.data(), bytes.size());
-  return values;
 }
 
 // Members are coloured by utilization when the model gives capacities: recomputed from the
@@ -115,8 +122,10 @@ TEST(RunReport, UtilizationsAtTheFramesAreTheRunsOwnChecks) {
   ASSERT_EQ(run_to_folder(model, folder).status, RunStatus::completed);
   const nlohmann::json data = page_data(run_report_html(folder));
   const auto& animation = data["animation"];
-  ASSERT_TRUE(animation["utilizations"].is_string()) << "the bay's members have capacities";
-  const std::vector<float> utilizations = float32_array(animation["utilizations"]);
+  const nlohmann::json by_utilization = colouring(animation, "utilization");
+  ASSERT_TRUE(by_utilization.is_object()) << "the bay's members have capacities";
+  EXPECT_EQ(animation["colourings"][0]["name"], "utilization") << "offered first";
+  const std::vector<float> utilizations = float32_array(by_utilization["values"]);
   const std::vector<std::string> names = data["members"]["names"];
   const std::size_t n_frames = animation["times"].size(), n_members = names.size();
   ASSERT_EQ(utilizations.size(), n_frames * n_members);
@@ -128,7 +137,7 @@ TEST(RunReport, UtilizationsAtTheFramesAreTheRunsOwnChecks) {
   ASSERT_EQ(buckling["time_s"].get<double>(), animation["times"].back().get<double>());
   const double expected = buckling["max_utilization"].get<double>();
   EXPECT_NEAR(utilizations[(n_frames - 1) * n_members + static_cast<std::size_t>(link)], expected, 1e-6 * expected);
-  EXPECT_NEAR(animation["largest_utilization"].get<double>(), expected, 1e-12 * expected);
+  EXPECT_NEAR(by_utilization["largest"].get<double>(), expected, 1e-6 * expected);
   // A model without capacities has none: the page colours by force.
   const fs::path plain = fs::temp_directory_path() / "deploydyn_report_no_capacity";
   fs::remove_all(plain);
@@ -137,7 +146,41 @@ TEST(RunReport, UtilizationsAtTheFramesAreTheRunsOwnChecks) {
                           plain)
                 .status,
             RunStatus::completed);
-  EXPECT_TRUE(page_data(run_report_html(plain))["animation"]["utilizations"].is_null());
+  const nlohmann::json plain_animation = page_data(run_report_html(plain))["animation"];
+  EXPECT_TRUE(colouring(plain_animation, "utilization").is_null());
+  EXPECT_EQ(plain_animation["colourings"][0]["name"], "force");
+}
+
+// A run with an environment colours its members by temperature: temperatures.csv's values at
+// the frames, on a scale from the coldest to the hottest.
+TEST(RunReport, MembersOfARunWithAnEnvironmentAreColouredByTemperature) {
+  const fs::path folder = fs::temp_directory_path() / "deploydyn_report_temperature";
+  fs::remove_all(folder);
+  const Model model = load_model(std::string(DEPLOYDYN_SOURCE_DIR) + "/examples/thermal/boom_out_of_eclipse.yaml");
+  ASSERT_EQ(run_to_folder(model, folder).status, RunStatus::completed);
+  const nlohmann::json animation = page_data(run_report_html(folder))["animation"];
+  const nlohmann::json by_temperature = colouring(animation, "temperature");
+  ASSERT_TRUE(by_temperature.is_object());
+  const std::vector<float> values = float32_array(by_temperature["values"]);
+  const std::size_t n_frames = animation["times"].size();
+  ASSERT_EQ(values.size(), n_frames);  // one member: the boom
+  std::ifstream in(folder / "temperatures.csv");
+  std::string line;
+  std::getline(in, line);
+  ASSERT_EQ(line, "t,T.boom");
+  std::map<double, double> temperature_at;
+  while (std::getline(in, line)) temperature_at[std::stod(line)] = std::stod(line.substr(line.find(',') + 1));
+  double low = 1e9, high = 0.0;
+  for (std::size_t k = 0; k < n_frames; ++k) {
+    const double expected = temperature_at.at(animation["times"][k].get<double>());
+    EXPECT_EQ(values[k], static_cast<float>(expected)) << "frame " << k;
+    low = std::min(low, expected);
+    high = std::max(high, expected);
+  }
+  EXPECT_EQ(by_temperature["low"].get<double>(), low);
+  EXPECT_EQ(by_temperature["high"].get<double>(), high);
+  EXPECT_LT(low, 200.0) << "cold out of eclipse";
+  EXPECT_GT(high, 260.0) << "warmed broadside to the sun";
 }
 
 TEST(RunReport, AFolderThatIsNotARunsNamesTheMissingFile) {

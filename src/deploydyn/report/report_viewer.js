@@ -70,22 +70,31 @@
   }
 
   // --- 3D deployment -------------------------------------------------------------------------
-  function colourOf(force, largest, out, at) {
-    // Diverging: blue (compression) – grey – red (tension); grey for no force column.
-    if (!Number.isFinite(force) || largest <= 0) { out[at] = out[at + 1] = out[at + 2] = 0.6; return; }
-    const s = Math.max(-1, Math.min(1, force / largest));
-    const grey = [0.73, 0.73, 0.73], blue = [0.13, 0.4, 0.67], red = [0.7, 0.09, 0.17];
-    const end = s < 0 ? blue : red, w = Math.abs(s);
-    for (let k = 0; k < 3; ++k) out[at + k] = grey[k] + w * (end[k] - grey[k]);
-  }
-
-  function colourOfUtilization(u, out, at) {
-    // Sequential: light grey (0) – orange (1, at capacity); red beyond capacity; grey for none.
-    if (!Number.isFinite(u)) { out[at] = out[at + 1] = out[at + 2] = 0.6; return; }
-    if (u > 1) { out[at] = 0.75; out[at + 1] = 0.0; out[at + 2] = 0.0; return; }
-    const light = [0.85, 0.85, 0.85], orange = [0.95, 0.55, 0.1], w = Math.max(0, u);
-    for (let k = 0; k < 3; ++k) out[at + k] = light[k] + w * (orange[k] - light[k]);
-  }
+  // Colour scales (report/member_colourings.hpp); grey for a member without a value.
+  const colourScales = {
+    diverging(v, c, out, at) {  // blue (low) – grey (0) – red (high)
+      const s = Math.max(-1, Math.min(1, v / c.high));
+      const grey = [0.73, 0.73, 0.73], blue = [0.13, 0.4, 0.67], red = [0.7, 0.09, 0.17];
+      const end = s < 0 ? blue : red, w = Math.abs(s);
+      for (let k = 0; k < 3; ++k) out[at + k] = grey[k] + w * (end[k] - grey[k]);
+    },
+    sequential(v, c, out, at) {  // blue (low) – yellow – red (high)
+      const s = c.high > c.low ? Math.max(0, Math.min(1, (v - c.low) / (c.high - c.low))) : 0.5;
+      const stops = [[0.19, 0.21, 0.58], [0.99, 0.75, 0.3], [0.7, 0.09, 0.17]];
+      const [a, b, w] = s < 0.5 ? [stops[0], stops[1], 2 * s] : [stops[1], stops[2], 2 * s - 1];
+      for (let k = 0; k < 3; ++k) out[at + k] = a[k] + w * (b[k] - a[k]);
+    },
+    utilization(v, c, out, at) {  // light grey (0) – orange (1, at capacity); red beyond
+      if (v > 1) { out[at] = 0.75; out[at + 1] = 0.0; out[at + 2] = 0.0; return; }
+      const light = [0.85, 0.85, 0.85], orange = [0.95, 0.55, 0.1], w = Math.max(0, v);
+      for (let k = 0; k < 3; ++k) out[at + k] = light[k] + w * (orange[k] - light[k]);
+    },
+  };
+  const legendGradients = {
+    diverging: 'linear-gradient(to right, #2166ac, #bbbbbb, #b2182b)',
+    sequential: 'linear-gradient(to right, #30358f, #fcbf4d, #b2182b)',
+    utilization: 'linear-gradient(to right, #d9d9d9, #f28c1a 85%, #bf0000 85%)',
+  };
 
   function showDeployment() {
     const anim = data.animation;
@@ -94,31 +103,23 @@
     const nMembers = members.length / 2;
     const initial = decode(anim.initial, Float32Array);
     const positions = decode(anim.positions, Float32Array);
-    const forces = anim.forces ? decode(anim.forces, Float32Array) : null;
     const nFrames = anim.times.length;
-    const largest = anim.colour_range_N;  // 99th percentile of |force|; beyond it the colours saturate
-    const utilizations = anim.utilizations ? decode(anim.utilizations, Float32Array) : null;
+    const colourings = anim.colourings.map((c) => ({ ...c, data: decode(c.values, Float32Array) }));
     // With capacities to check against, members are coloured by utilization first.
-    let colourBy = utilizations ? 'utilization' : 'force';
+    let colouring = colourings[0] || null;
     function showLegend() {
-      const bar = document.getElementById('legend-bar');
-      if (colourBy === 'utilization') {
-        text('legend-title', 'utilization (1 = at capacity)');
-        bar.style.background = 'linear-gradient(to right, #d9d9d9, #f28c1a 85%, #bf0000 85%)';
-        text('legend-min', '0');
-        text('legend-mid', '1');
-        text('legend-max', '> 1');
-        text('legend-note', `red: over capacity; largest ${formatNumber(anim.largest_utilization)}` +
-             (anim.utilization_note ? `; ${anim.utilization_note}` : ''));
-        return;
-      }
-      text('legend-title', 'axial force (N)');
-      bar.style.background = '';
-      text('legend-min', `−${formatNumber(largest)}`);
-      text('legend-mid', '0');
-      text('legend-max', `+${formatNumber(largest)}`);
-      text('legend-note', 'blue compression, red tension' + (anim.largest_force_N > 1.001 * largest
-        ? `; saturated beyond (largest |force| ${formatNumber(anim.largest_force_N)} N)` : ''));
+      const c = colouring;
+      document.getElementById('legend').hidden = !c;
+      if (!c) return;
+      text('legend-title', c.label);
+      document.getElementById('legend-bar').style.background = legendGradients[c.scale];
+      const ends = c.scale === 'utilization' ? ['0', '1', '> 1']
+        : c.scale === 'diverging' ? [formatNumber(c.low), '0', `+${formatNumber(c.high)}`]
+          : [formatNumber(c.low), '', formatNumber(c.high)];
+      text('legend-min', ends[0]);
+      text('legend-mid', ends[1]);
+      text('legend-max', ends[2]);
+      text('legend-note', c.scale === 'utilization' ? `${c.note}; largest ${formatNumber(c.largest)}` : c.note);
     }
     showLegend();
     text('animation-note', anim.note || data.notes.animation || '');
@@ -166,11 +167,9 @@
             vertex[6 * m + 3 * end + axis] = x0 + scale * (positions[base + 3 * node + axis] - x0);
           }
         }
-        if (colourBy === 'utilization') {
-          colourOfUtilization(utilizations[k * nMembers + m], colour, 6 * m);
-        } else {
-          colourOf(forces ? forces[k * nMembers + m] : NaN, largest, colour, 6 * m);
-        }
+        const v = colouring ? colouring.data[k * nMembers + m] : NaN;
+        if (Number.isFinite(v)) colourScales[colouring.scale](v, colouring, colour, 6 * m);
+        else colour[6 * m] = colour[6 * m + 1] = colour[6 * m + 2] = 0.6;
         colour.copyWithin(6 * m + 3, 6 * m, 6 * m + 3);
       }
       geometry.attributes.position.needsUpdate = true;
@@ -201,10 +200,17 @@
     });
     document.getElementById('reset-view').addEventListener('click', () => { resetView(); render(); });
     const colourSelect = document.getElementById('colour-by');
-    document.getElementById('colour-by-label').hidden = !utilizations;
-    report.colourBy = (mode) => {
-      colourBy = utilizations && mode === 'utilization' ? 'utilization' : 'force';
-      colourSelect.value = colourBy;
+    for (const c of colourings) {
+      const option = document.createElement('option');
+      option.value = c.name;
+      option.textContent = c.label;
+      colourSelect.append(option);
+    }
+    document.getElementById('colour-by-label').hidden = colourings.length < 2;
+    report.colourings = colourings.map((c) => c.name);
+    report.colourBy = (name) => {
+      colouring = colourings.find((c) => c.name === name) || colouring;
+      colourSelect.value = colouring ? colouring.name : '';
       showLegend();
       setFrame(report.frame);
     };

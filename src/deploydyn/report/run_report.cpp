@@ -9,13 +9,15 @@
 #include <cstring>
 #include <fstream>
 #include <map>
+#include <optional>
 #include <nlohmann/json.hpp>
 #include <sstream>
 #include <unordered_map>
 
 #include "deploydyn/elements/element_kinds.hpp"
 #include "deploydyn/io/model_loader.hpp"
-#include "deploydyn/report/drawn_utilizations.hpp"
+#include "deploydyn/report/history_table.hpp"
+#include "deploydyn/report/member_colourings.hpp"
 #include "deploydyn/output/checked_file.hpp"
 #include "deploydyn/output/envelope_table.hpp"
 #include "deploydyn/output/result_folder.hpp"
@@ -35,73 +37,7 @@ namespace {
 using nlohmann::json;
 namespace fs = std::filesystem;
 
-std::string read_file(const fs::path& file, const std::string& what) {
-  std::ifstream in(file, std::ios::binary);
-  if (!in) {
-    throw ReportError(fmt::format("{}: cannot read {} (is {} a result folder of `deploydyn run`?)", file.string(),
-                                  what, file.parent_path().string()));
-  }
-  std::stringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
 
-// history.csv: its columns and rows. A last row cut short (a killed run) is left out.
-struct History {
-  std::vector<std::string> columns;
-  std::vector<std::vector<double>> values;  // values[column][row]
-  std::size_t n_rows = 0;
-  bool dropped_last_row = false;
-
-  std::unordered_map<std::string, int> index;  // column name → position
-
-  int column(const std::string& name) const {
-    const auto found = index.find(name);
-    return found == index.end() ? -1 : found->second;
-  }
-};
-
-History read_history(const fs::path& file) {
-  const std::string text = read_file(file, "the history");
-  History h;
-  std::size_t at = text.find('\n');
-  if (at == std::string::npos) throw ReportError(fmt::format("{}: no header row", file.string()));
-  for (std::size_t start = 0; start <= at;) {
-    const std::size_t comma = std::min(text.find(',', start), at);
-    h.columns.push_back(text.substr(start, comma - start));
-    start = comma + 1;
-  }
-  h.values.resize(h.columns.size());
-  for (std::size_t c = 0; c < h.columns.size(); ++c) h.index.emplace(h.columns[c], static_cast<int>(c));
-  std::size_t line = 1;
-  for (std::size_t start = at + 1; start < text.size(); ++line) {
-    const std::size_t end = text.find('\n', start);
-    if (end == std::string::npos) {  // no newline: a row cut short
-      h.dropped_last_row = true;
-      break;
-    }
-    const char* p = text.data() + start;
-    const char* const stop = text.data() + end;
-    std::vector<double> row;
-    row.reserve(h.columns.size());
-    while (p <= stop && row.size() < h.columns.size()) {
-      double v = 0.0;
-      const auto [next, error] = std::from_chars(p, stop, v);
-      if (error != std::errc()) break;
-      row.push_back(v);
-      p = next + 1;  // past the comma (or the newline)
-    }
-    if (row.size() != h.columns.size()) {
-      throw ReportError(fmt::format("{}:{}: a row of {} numbers under a header of {} columns", file.string(),
-                                    line + 1, row.size(), h.columns.size()));
-    }
-    for (std::size_t k = 0; k < row.size(); ++k) h.values[k].push_back(row[k]);
-    ++h.n_rows;
-    start = end + 1;
-  }
-  if (h.n_rows == 0) throw ReportError(fmt::format("{}: no rows: the run wrote no results", file.string()));
-  return h;
-}
 
 template <class T>
 std::string binary_base64(std::span<const T> values) {
@@ -116,10 +52,9 @@ std::string binary_base64(std::span<const T> values) {
 struct Members {
   std::vector<std::int32_t> nodes;  // a, b per member
   std::vector<std::string> names;
-  std::vector<int> force_column;  // −1: none in the history
 };
 
-Members members_of(const Model& model, const History& history) {
+Members members_of(const Model& model) {
   Members m;
   for (const ElementRef& e : all_elements(model)) {
     if (e.kind->n_element_nodes() != 2) continue;  // hinges act between bars: not drawn
@@ -127,44 +62,18 @@ Members members_of(const Model& model, const History& history) {
     m.nodes.push_back(e.kind->element_node(model, e.index, 0));
     m.nodes.push_back(e.kind->element_node(model, e.index, 1));
     m.names.push_back(name);
-    m.force_column.push_back(history.column("force." + name));
   }
   return m;
 }
 
-// The drawn members' utilizations at the frames (report/drawn_utilizations.hpp), when the
-// model gives a capacity to check against: `utilizations` (Float32, frame after frame) and
-// their largest, else null.
-void add_utilizations(const Model& model, const History& history, const Members& members,
-                      const std::vector<std::size_t>& rows, json& out) {
-  const DrawnUtilizations drawn(model, members.names, [&](const std::string& name) { return history.column(name); });
-  out["utilizations"] = nullptr;
-  if (!drawn.any()) return;
-  std::vector<float> utilizations;
-  utilizations.reserve(rows.size() * members.names.size());
-  double largest = 0.0;
-  for (const std::size_t row : rows) {
-    const auto value = [&](int column) { return history.values[static_cast<std::size_t>(column)][row]; };
-    for (std::size_t m = 0; m < members.names.size(); ++m) {
-      const double u = drawn.at(m, value);
-      if (std::isfinite(u)) largest = std::max(largest, u);
-      utilizations.push_back(static_cast<float>(u));
-    }
-  }
-  out["utilizations"] = float32_base64(utilizations);
-  out["largest_utilization"] = largest;
-  if (drawn.bending_missing()) {
-    out["utilization_note"] = "beams' bending moments are not in history.csv (output.select): their utilizations leave bending out";
-  }
-}
-
 // The page's animation: node positions (x, y, z per node; z = 0 in 2D) and member forces of
 // the chosen rows, and the model-file positions the deformation scale starts from.
-json animation(const Model& model, const History& history, const Members& members, const ReportOptions& options,
-               std::string& note) {
+json animation(const Model& model, const HistoryTable& history, const HistoryTable* temperatures,
+               const Members& members, const ReportOptions& options, std::string& note) {
   const std::size_t n_nodes = model.nodes.size();
   const std::size_t n_members = members.names.size();
-  const std::size_t bytes_per_frame = 4 * (3 * n_nodes + n_members);
+  // Float32 positions and at most four colourings a member (report/member_colourings.hpp).
+  const std::size_t bytes_per_frame = 4 * (3 * n_nodes + 4 * n_members);
   std::size_t n_frames = std::min<std::size_t>(static_cast<std::size_t>(options.max_frames), history.n_rows);
   n_frames = std::max<std::size_t>(1, std::min(n_frames, options.max_animation_bytes / std::max<std::size_t>(bytes_per_frame, 1)));
   const std::vector<std::size_t> rows = frame_rows(history.n_rows, n_frames);
@@ -187,13 +96,9 @@ json animation(const Model& model, const History& history, const Members& member
     note += fmt::format(" {} nodes have no position in history.csv and are drawn where model.yaml puts them.",
                         n_missing);
   }
-  std::vector<float> positions, forces;
+  std::vector<float> positions;
   positions.reserve(rows.size() * 3 * n_nodes);
-  const bool any_force = std::any_of(members.force_column.begin(), members.force_column.end(),
-                                     [](int c) { return c >= 0; });
   json times = json::array();
-  double largest_force = 0.0;
-  std::vector<float> magnitudes;  // for the colour scale
   for (const std::size_t row : rows) {
     times.push_back(history.values[0][row]);
     for (std::size_t i = 0; i < n_nodes; ++i) {
@@ -203,32 +108,11 @@ json animation(const Model& model, const History& history, const Members& member
                                    : initial[3 * i + axis]);
       }
     }
-    if (!any_force) continue;
-    for (const int c : members.force_column) {
-      const double f = c >= 0 ? history.values[static_cast<std::size_t>(c)][row] : std::nan("");
-      if (std::isfinite(f)) {
-        largest_force = std::max(largest_force, std::abs(f));
-        magnitudes.push_back(static_cast<float>(std::abs(f)));
-      }
-      forces.push_back(static_cast<float>(f));
-    }
   }
-  // Colours span ± the 99th percentile of |force| over the frames: one member's spike (an
-  // actuator's bar) would otherwise leave every other member grey.
-  double colour_range = largest_force;
-  if (!magnitudes.empty()) {
-    const auto at = magnitudes.begin() + static_cast<std::ptrdiff_t>(0.99 * static_cast<double>(magnitudes.size() - 1));
-    std::nth_element(magnitudes.begin(), at, magnitudes.end());
-    colour_range = *at > 0.0f ? *at : largest_force;
-  }
-  json out = {{"times", times},
-              {"initial", float32_base64(initial)},
-              {"positions", float32_base64(positions)},
-              {"largest_force_N", largest_force},
-              {"colour_range_N", colour_range}};
-  out["forces"] = any_force ? json(float32_base64(forces)) : json(nullptr);
-  add_utilizations(model, history, members, rows, out);
-  return out;
+  return {{"times", times},
+          {"initial", float32_base64(initial)},
+          {"positions", float32_base64(positions)},
+          {"colourings", member_colourings(model, history, members.names, rows, temperatures, note)}};
 }
 
 bool is_position(const std::string& column, const Model& model) {
@@ -243,7 +127,7 @@ bool is_position(const std::string& column, const Model& model) {
 // The columns offered to plot (not positions: the animation shows those), as Float64 arrays,
 // decimated to at most 5000 rows. Within options.max_plot_values: the drivers, energies and
 // reactions, then the elements' forces by peak, then their other quantities.
-json plot_data(const Model& model, const History& history, const ReportOptions& options, std::string& note) {
+json plot_data(const Model& model, const HistoryTable& history, const ReportOptions& options, std::string& note) {
   std::vector<std::string> driver_columns;
   for (const Driver& d : model.drivers) {
     driver_columns.push_back((drives_rotation(d.kind) ? "torque." : "force.") + d.name);
@@ -399,12 +283,23 @@ std::vector<std::size_t> frame_rows(std::size_t n_rows, std::size_t n_frames) {
 
 std::string float32_base64(std::span<const float> values) { return binary_base64<float>(values); }
 
+// temperatures.csv of a run with an environment (summary.json's files.temperatures), if any.
+std::optional<HistoryTable> temperature_table(const fs::path& folder, const json& summary) {
+  if (!summary.contains("files") || !summary["files"].contains("temperatures")) return std::nullopt;
+  const json& listed = summary["files"]["temperatures"];
+  if (!listed.is_string() || fs::path(listed.get<std::string>()).has_parent_path()) {
+    throw ReportError(fmt::format("{}: files.temperatures must name a file of the folder, got {}",
+                                  (folder / "summary.json").string(), listed.dump().substr(0, 60)));
+  }
+  return read_history_table(folder / listed.get<std::string>());
+}
+
 std::string run_report_html(const fs::path& folder, const ReportOptions& options) {
   if (!fs::is_directory(folder)) throw ReportError(fmt::format("{}: not a folder", folder.string()));
   json summary = [&] {
     const fs::path file = folder / "summary.json";
     try {
-      return json::parse(read_file(file, "the run's summary"));
+      return json::parse(read_result_file(file, "the run's summary"));
     } catch (const json::exception& error) {
       throw ReportError(fmt::format("{}: not a JSON summary ({})", file.string(), error.what()));
     }
@@ -444,7 +339,7 @@ std::string run_report_html(const fs::path& folder, const ReportOptions& options
     }
     history_name = listed.get<std::string>();
   }
-  const History history = read_history(folder / history_name);
+  const HistoryTable history = read_history_table(folder / history_name);
   if (history.columns.empty() || history.columns[0] != "t") {
     throw ReportError(fmt::format("{}: not a time history (its first column is not t)", (folder / history_name).string()));
   }
@@ -456,10 +351,11 @@ std::string run_report_html(const fs::path& folder, const ReportOptions& options
   data["summary"] = summary_panel(summary);
   data["dimension"] = model.dimension;
   data["table"] = envelope_table_rows(folder / kEnvelopeFileName, options, table_note);
-  const Members members = members_of(model, history);
+  const Members members = members_of(model);
   data["members"] = {{"nodes", binary_base64<std::int32_t>(members.nodes)}, {"names", members.names}};
   data["nodes"] = model.nodes.size();
-  data["animation"] = animation(model, history, members, options, animation_note);
+  const std::optional<HistoryTable> temperatures = temperature_table(folder, summary);
+  data["animation"] = animation(model, history, temperatures ? &*temperatures : nullptr, members, options, animation_note);
   data["plots"] = plot_data(model, history, options, plot_note);
   data["notes"] = {{"table", table_note}, {"plots", plot_note}, {"animation", animation_note},
                    {"history", history.dropped_last_row ? "The history's last row was cut short (a killed run) "

@@ -6,7 +6,8 @@
 //   - time histories of the history's columns, chosen from a list, in zoomable plots;
 //   - the envelope table (envelopes.csv: extremes over every step), sortable and filtered;
 //   - the deployment in 3D (WebGL through three.js, compiled into the program from Debian's
-//     libjs-three): members as one line set coloured by axial force, a time slider, play,
+//     libjs-three): members as one line set coloured by utilization, axial force, bending
+//     moment or temperature (report/member_colourings.hpp), a time slider, play,
 //     orbit camera and a deformation scale.
 // Data travel as base64 Float32/Float64 arrays in one JSON block; the animation's frames are
 // spread evenly over the history, at most ReportOptions::max_frames and within
@@ -25,7 +26,7 @@ namespace deploydyn {
 
 struct ReportOptions {
   int max_frames = 200;
-  std::size_t max_animation_bytes = std::size_t{64} << 20;  // positions and forces, as Float32
+  std::size_t max_animation_bytes = std::size_t{64} << 20;  // positions and colourings, as Float32
   std::size_t max_plot_values = 1'000'000;                   // history values offered to plot
   std::size_t max_table_rows = 50'000;                       // of envelopes.csv
 };

@@ -1,0 +1,30 @@
+#pragma once
+// What the report's 3D view can colour its members by, each a value per member and frame:
+//   force        axial force (N), diverging blue (compression) – grey – red (tension);
+//   moment       beams' bending moment M_z (N·m), diverging, when the history has it;
+//   utilization  the largest utilization of the member's checks (report/drawn_utilizations.hpp),
+//                light grey 0 – orange 1 – red beyond, when the model gives capacities;
+//   temperature  the member's temperature (K) from temperatures.csv, sequential, when the run
+//                had an environment.
+// Diverging scales span ± the 99th percentile of |value| over the frames: one member's spike (an
+// actuator's bar) would otherwise leave every other member grey. The page offers those present,
+// utilization first.
+
+#include <cstddef>
+#include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
+
+#include "deploydyn/model/model.hpp"
+#include "deploydyn/report/history_table.hpp"
+
+namespace deploydyn {
+
+// A JSON array of {name, label, scale ("diverging", "sequential" or "utilization"), values
+// (base64 Float32, frame after frame, NaN where a member has none), low, high, largest, note}.
+// `rows`: the history rows drawn as frames; `temperatures`: temperatures.csv, or null.
+nlohmann::json member_colourings(const Model& model, const HistoryTable& history,
+                                 const std::vector<std::string>& members, const std::vector<std::size_t>& rows,
+                                 const HistoryTable* temperatures, std::string& note);
+
+}  // namespace deploydyn
