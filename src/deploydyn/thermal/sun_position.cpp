@@ -7,6 +7,7 @@
 
 #include <Eigen/Geometry>
 #include <cmath>
+#include <mutex>
 #include <numbers>
 
 namespace deploydyn::thermal {
@@ -18,7 +19,15 @@ double julian_day_utc(const CivilTime& local, double utc_offset_h, double elapse
 }
 
 SunPosition sun_position(double latitude_deg, double longitude_deg, double julian_day_utc) {
+  // libnova caches its last Earth position and nutation in static variables
+  // (ln_get_earth_helio_coords, ln_get_nutation), the nutation reused for any time within 0.1 day
+  // of the last one asked: an answer would depend on the calls before it (the cases of a study,
+  // run in threads, on each other's). One call at a time, each from an emptied cache: a first
+  // call 1000 days away makes the second compute afresh. (Twice the work; once a step.)
+  static std::mutex libnova;
+  const std::lock_guard<std::mutex> one_at_a_time(libnova);
   ln_equ_posn j2000{};
+  ln_get_solar_equ_coords(julian_day_utc + 1000.0, &j2000);
   ln_get_solar_equ_coords(julian_day_utc, &j2000);
   ln_equ_posn of_date{};
   ln_get_equ_prec(&j2000, julian_day_utc, &of_date);
