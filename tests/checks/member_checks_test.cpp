@@ -218,6 +218,39 @@ TEST(MemberChecks, PureEndMomentGivesTheStressMOverW) {
   EXPECT_TRUE(run.verdict.deploys) << run.verdict.reason;
 }
 
+// Shear forces and a torque join the normal stress by von Mises, (V3a)–(V3c): a 3D tube
+// D = 50 mm, t = 2 mm under N, M_z, V_y and T, against a hand calculation.
+TEST(MemberChecks, ShearAndTorsionJoinTheNormalStressByVonMises) {
+  const Model model = load_model_from_string(R"(
+nodes: {A: [0, 0, 0], B: [3, 0, 0]}
+materials: {steel: {E: 2.0e11, density: 7850, yield_strength: 2.5e8}}
+sections: {tube: {shape: circular_tube, outer_diameter: 0.05, wall_thickness: 0.002}}
+elements:
+  b: {type: beam, nodes: [A, B], section: tube, material: steel}
+)", "tube3d.yaml");
+  StepRecord r = beam_record(model, 0.0, 2000.0, 300.0);
+  const auto kinds = element_kinds();
+  for (std::size_t g = 0; g < kinds.size(); ++g) {
+    if (kinds[g]->name() != "beam") continue;
+    r.elements[g].values[static_cast<std::size_t>(quantity_index(*kinds[g], 3, "shear_force_y_N"))] = -4000.0;
+    r.elements[g].values[static_cast<std::size_t>(quantity_index(*kinds[g], 3, "torque_Nm"))] = 250.0;
+  }
+  MemberChecks checks(model);
+  checks.record(r);
+  // A = 3.0159e-4 m², I = 8.7010e-8 m⁴, W = I/r = 3.4804e-6 m³, J = 2I, W_t = J/r = 6.9608e-6 m³;
+  // Jourawski at the neutral axis: Q = (D³ − d³)/12 = 1.9552e-6 m³, τ_V = V Q / (I (D − d)).
+  const double area_m2 = kPi / 4 * (0.05 * 0.05 - 0.046 * 0.046);
+  const double inertia_m4 = kPi / 64 * (std::pow(0.05, 4) - std::pow(0.046, 4));
+  const double sigma_Pa = 2000.0 / area_m2 + 300.0 / (inertia_m4 / 0.025);
+  const double shear_Pa = 4000.0 * (std::pow(0.05, 3) - std::pow(0.046, 3)) / 12.0 / (inertia_m4 * 0.004);
+  const double torsion_Pa = 250.0 / (2.0 * inertia_m4 / 0.025);
+  EXPECT_NEAR(shear_Pa, 2.0 * 4000.0 / area_m2, 0.01 * 2.0 * 4000.0 / area_m2) << "a thin tube: about 2V/A";
+  const double equivalent_Pa = std::sqrt(sigma_Pa * sigma_Pa + 3.0 * std::pow(shear_Pa + torsion_Pa, 2));
+  const int beam = member_index(checks, "b");
+  EXPECT_NEAR(checks.history(beam, CheckKind::stress).max, equivalent_Pa / 2.5e8, 1e-12);
+  EXPECT_GT(equivalent_Pa, 1.2 * sigma_Pa) << "the shear matters here: the check could tell";
+}
+
 // A cable whose rest length (1.2 m) exceeds its span (1 m): slack from the start, for the whole
 // run. The node it hangs from is held by two bars.
 constexpr const char* kSlackHoist = R"(

@@ -39,6 +39,7 @@ ElementData element_data(const Model& model, MemberKind kind, int index) {
       d.checked.yield_strength_Pa = strength_of(model, beam.material);
       d.checked.section_modulus_z_m3 = beam.section_modulus_z_m3;
       d.checked.section_modulus_y_m3 = beam.section_modulus_y_m3;
+      if (beam.section >= 0) d.checked.shear = section_shear(model.sections[static_cast<std::size_t>(beam.section)]);
       // The weak axis: I_y is known in 3D, and in 2D when a section gives it.
       const double least_inertia =
           beam.inertia_y_m4 > 0.0 ? std::min(beam.inertia_y_m4, beam.inertia_z_m4) : beam.inertia_z_m4;

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "deploydyn/checks/check_kind.hpp"
+#include "deploydyn/checks/section_shear.hpp"
 #include "deploydyn/model/model.hpp"
 
 namespace deploydyn {
@@ -19,6 +20,7 @@ struct CheckedElement {
   double yield_strength_Pa = 0.0;     // f_y of its material
   double section_modulus_z_m3 = 0.0;  // W_z (beams)
   double section_modulus_y_m3 = 0.0;  // W_y (3D beams)
+  SectionShear shear;                 // beams of a section shape; zeros without one
   double break_load_N = 0.0;          // cables
 };
 

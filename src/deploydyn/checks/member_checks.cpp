@@ -56,7 +56,15 @@ std::array<double, kNumCheckKinds> element_utilizations(const CheckedMember& mem
       if (!known) break;
       double bending_stress_Pa = std::abs(forces.moment_z_Nm) / e.section_modulus_z_m3;
       if (dimension == 3) bending_stress_Pa += std::abs(forces.moment_y_Nm) / e.section_modulus_y_m3;
-      set(CheckKind::stress, (axial_stress_Pa + bending_stress_Pa) / e.yield_strength_Pa);  // (V3)
+      // The largest shear stresses added, as if at one point (0 without a section shape)  (V3a), (V3b)
+      const double shear_stress_Pa = std::abs(forces.shear_y_N) * e.shear.per_shear_y +
+                                     std::abs(forces.shear_z_N) * e.shear.per_shear_z +
+                                     std::abs(forces.torque_Nm) * e.shear.per_torque;
+      const double normal_stress_Pa = axial_stress_Pa + bending_stress_Pa;
+      const double equivalent_stress_Pa =  // von Mises                                         (V3c)
+          shear_stress_Pa > 0.0 ? std::sqrt(normal_stress_Pa * normal_stress_Pa + 3.0 * shear_stress_Pa * shear_stress_Pa)
+                                : normal_stress_Pa;
+      set(CheckKind::stress, equivalent_stress_Pa / e.yield_strength_Pa);  // (V3)
       if (running(CheckKind::interaction)) {  // (V4): in compression only
         const double resistance_N = std::min(member.critical_force_N, e.area_m2 * e.yield_strength_Pa);
         set(CheckKind::interaction,
@@ -93,6 +101,9 @@ MemberChecks::MemberChecks(const Model& model)
       layout.axial_force = quantity_index(*kinds[g], dimension_, "axial_force_N");
       layout.moment_z = quantity_index(*kinds[g], dimension_, "bending_moment_z_Nm");
       layout.moment_y = quantity_index(*kinds[g], dimension_, "bending_moment_y_Nm");
+      layout.shear_y = quantity_index(*kinds[g], dimension_, "shear_force_y_N");
+      layout.shear_z = quantity_index(*kinds[g], dimension_, "shear_force_z_N");
+      layout.torque = quantity_index(*kinds[g], dimension_, "torque_Nm");
       layout.slack = quantity_index(*kinds[g], dimension_, "slack");
     }
   }
@@ -140,10 +151,15 @@ void MemberChecks::check_member(int m, const StepRecord& r) {
   bool slack = false;
   int first_slack = -1;
   for (const CheckedElement& e : member.elements) {
-    const ElementForces forces{results.at(e.element, layout.axial_force),
-                               member.kind == MemberKind::beam ? results.at(e.element, layout.moment_z) : 0.0,
-                               member.kind == MemberKind::beam && dimension_ == 3 ? results.at(e.element, layout.moment_y)
-                                                                                  : 0.0};
+    // A quantity the kind does not report (a bar's moment, a 2D beam's torque) is 0.
+    const auto at = [&](int quantity) { return quantity >= 0 ? results.at(e.element, quantity) : 0.0; };
+    const bool beam = member.kind == MemberKind::beam;
+    const ElementForces forces{at(layout.axial_force),
+                               beam ? at(layout.moment_z) : 0.0,
+                               beam ? at(layout.moment_y) : 0.0,
+                               beam ? at(layout.shear_y) : 0.0,
+                               beam ? at(layout.shear_z) : 0.0,
+                               beam ? at(layout.torque) : 0.0};
     const auto utilizations = element_utilizations(member, e, running, dimension_, forces);
     for (std::size_t k = 0; k < kNumCheckKinds; ++k) {
       if (!std::isnan(utilizations[k])) take(kCheckKinds.value(k), utilizations[k], e.element);

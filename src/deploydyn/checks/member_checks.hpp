@@ -50,6 +50,9 @@ struct ElementForces {
   double axial_N = 0.0;
   double moment_z_Nm = 0.0;  // beams
   double moment_y_Nm = 0.0;  // 3D beams
+  double shear_y_N = 0.0;    // beams
+  double shear_z_N = 0.0;    // 3D beams
+  double torque_Nm = 0.0;    // 3D beams
 };
 
 // Which checks run on a member: has_capacity for each CheckKind.
@@ -106,6 +109,9 @@ class MemberChecks final : public RecordSink {
     int axial_force = -1;  // axial_force_N
     int moment_z = -1;     // bending_moment_z_Nm
     int moment_y = -1;     // bending_moment_y_Nm (3D beams)
+    int shear_y = -1;      // shear_force_y_N (beams)
+    int shear_z = -1;      // shear_force_z_N (3D beams)
+    int torque = -1;       // torque_Nm (3D beams)
     int slack = -1;        // slack (cables)
   };
   std::array<Layout, 3> layouts_;  // by MemberKind

@@ -32,9 +32,15 @@ DrawnUtilizations::DrawnUtilizations(const Model& model, const std::vector<std::
     any_ = any_ || (runs_any && d.force >= 0);
     if (member.kind != MemberKind::beam) continue;
     d.moment_z = column("moment." + drawn[i]);
-    d.moment_y = dimension_ == 3 ? column("moment_y." + drawn[i]) : -1;
+    d.shear_y = column("shear." + drawn[i]);
+    if (dimension_ == 3) {
+      d.moment_y = column("moment_y." + drawn[i]);
+      d.shear_z = column("shear_z." + drawn[i]);
+      d.torque = column("torque." + drawn[i]);
+    }
     const bool stress = d.runs[static_cast<std::size_t>(CheckKind::stress)];
-    bending_missing_ = bending_missing_ || (stress && (d.moment_z < 0 || (dimension_ == 3 && d.moment_y < 0)));
+    const bool missing = d.moment_z < 0 || d.shear_y < 0 || (dimension_ == 3 && (d.moment_y < 0 || d.shear_z < 0 || d.torque < 0));
+    forces_missing_ = forces_missing_ || (stress && missing);
   }
 }
 
@@ -43,8 +49,8 @@ double DrawnUtilizations::at(std::size_t i, const std::function<double(int colum
   const Drawn& d = drawn_[i];
   if (d.member < 0 || d.force < 0) return kNaN;
   const CheckedMember& member = members_[static_cast<std::size_t>(d.member)];
-  const ElementForces forces{value(d.force), d.moment_z >= 0 ? value(d.moment_z) : 0.0,
-                             d.moment_y >= 0 ? value(d.moment_y) : 0.0};
+  const auto at = [&](int column) { return column >= 0 ? value(column) : 0.0; };
+  const ElementForces forces{value(d.force), at(d.moment_z), at(d.moment_y), at(d.shear_y), at(d.shear_z), at(d.torque)};
   double largest = kNaN;
   for (const double u : element_utilizations(member, member.elements[static_cast<std::size_t>(d.element)], d.runs,
                                              dimension_, forces)) {

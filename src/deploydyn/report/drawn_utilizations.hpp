@@ -23,9 +23,9 @@ class DrawnUtilizations {
 
   // Whether some drawn element has a check that runs (a capacity given) and its force.
   bool any() const { return any_; }
-  // A beam's stress check runs but its bending moments are not in the history (output.select):
-  // its utilization then leaves bending out.
-  bool bending_missing() const { return bending_missing_; }
+  // A beam's stress check runs but its bending moments, shear forces or torque are not in the
+  // history (output.select): its utilization then leaves them out.
+  bool forces_missing() const { return forces_missing_; }
   // The largest utilization of drawn element `i` at the row whose column values `value` gives;
   // NaN when none of its checks runs or its force is not in the history.
   double at(std::size_t i, const std::function<double(int column)>& value) const;
@@ -35,13 +35,13 @@ class DrawnUtilizations {
     int member = -1;   // into members_; −1: none (a hinge, an element of no checked kind)
     int element = -1;  // into that member's elements
     ChecksThatRun runs{};
-    int force = -1, moment_z = -1, moment_y = -1;  // history columns
+    int force = -1, moment_z = -1, moment_y = -1, shear_y = -1, shear_z = -1, torque = -1;  // history columns
   };
   int dimension_ = 2;
   std::vector<CheckedMember> members_;
   std::vector<Drawn> drawn_;
   bool any_ = false;
-  bool bending_missing_ = false;
+  bool forces_missing_ = false;
 };
 
 }  // namespace deploydyn

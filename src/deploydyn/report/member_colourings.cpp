@@ -82,7 +82,9 @@ json member_colourings(const Model& model, const HistoryTable& history, const st
       for (std::size_t m = 0; m < members.size(); ++m) c.add(drawn.at(m, value));
     }
     std::string what = "red: over capacity";
-    if (drawn.bending_missing()) what += "; beams' bending moments are not in history.csv (output.select): left out";
+    if (drawn.forces_missing()) {
+      what += "; beams' moments, shear forces or torques not in history.csv (output.select) are left out";
+    }
     out.push_back({{"name", "utilization"}, {"label", "utilization (1 = at capacity)"}, {"scale", "utilization"},
                    {"values", float32_base64(c.values)}, {"low", 0.0}, {"high", 1.0},
                    {"largest", c.any ? c.high : 0.0}, {"note", what}});
