@@ -14,10 +14,9 @@
 
 #include "deploydyn/model/model.hpp"
 #include "deploydyn/output/envelope.hpp"
+#include "deploydyn/results/result_file_names.hpp"
 
 namespace deploydyn {
-
-inline constexpr const char* kEnvelopeFileName = "envelopes.csv";
 
 // The unit a quantity's name ends in: "N" for axial_force_N, "N·m" for torque_Nm, "1" for a
 // name without one (strain).

@@ -35,11 +35,9 @@
 #include "deploydyn/output/history_layout.hpp"
 #include "deploydyn/output/mesh_frame.hpp"
 #include "deploydyn/solvers/step_record.hpp"
+#include "deploydyn/results/result_file_names.hpp"
 
 namespace deploydyn {
-
-inline constexpr const char* kHdf5FileName = "history.h5";
-inline constexpr const char* kXdmfFileName = "history.xdmf";
 
 class Hdf5Writer final : public RecordSink {
  public:

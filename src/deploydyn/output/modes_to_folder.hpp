@@ -32,10 +32,9 @@
 #include "deploydyn/assembly/assembler.hpp"
 #include "deploydyn/solvers/analysis.hpp"
 #include "deploydyn/solvers/modal_analysis.hpp"
+#include "deploydyn/results/result_file_names.hpp"
 
 namespace deploydyn {
-
-inline constexpr const char* kModesFileName = "modes.csv";
 
 // One time's outcome, as summary.json lists it.
 struct ModesSummary {

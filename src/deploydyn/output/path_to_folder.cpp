@@ -16,13 +16,12 @@
 #include "deploydyn/output/result_folder.hpp"
 #include "deploydyn/output/run_folder.hpp"
 #include "deploydyn/output/summary_writer.hpp"
+#include "deploydyn/results/result_file_names.hpp"
 
 namespace deploydyn {
 namespace {
 
 using nlohmann::ordered_json;
-
-constexpr const char* kPathFileName = "path.csv";
 
 // What one unit of μ is in the model's terms: ΔT (°C), the largest load entry (N), or 1 s of
 // the deployment time.

@@ -12,10 +12,9 @@
 
 #include "deploydyn/output/checked_file.hpp"
 #include "deploydyn/thermal/thermal_coupling.hpp"
+#include "deploydyn/results/result_file_names.hpp"
 
 namespace deploydyn {
-
-inline constexpr const char* kTemperatureFileName = "temperatures.csv";
 
 class TemperatureTable {
  public:

@@ -20,11 +20,9 @@
 
 #include "deploydyn/output/result_folder.hpp"
 #include "deploydyn/solvers/deployability_window.hpp"
+#include "deploydyn/results/result_file_names.hpp"
 
 namespace deploydyn {
-
-inline constexpr const char* kWindowStatusFileName = "window.json";
-inline constexpr const char* kWindowSamplesFileName = "window.csv";
 
 // What window.json records of how the window was made.
 struct WindowOrigin {
