@@ -25,7 +25,7 @@
 #include "deploydyn/io/yaml_reader.hpp"
 #include "deploydyn/model/dof_map.hpp"
 
-#include "deploydyn/output/history_layout.hpp"
+#include "deploydyn/results/history_layout.hpp"
 #include "deploydyn/results/result_file_names.hpp"
 
 namespace deploydyn {

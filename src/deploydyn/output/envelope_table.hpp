@@ -13,7 +13,7 @@
 #include <string_view>
 
 #include "deploydyn/model/model.hpp"
-#include "deploydyn/output/envelope.hpp"
+#include "deploydyn/results/envelope.hpp"
 #include "deploydyn/results/result_file_names.hpp"
 
 namespace deploydyn {

@@ -32,8 +32,8 @@
 #include <vector>
 
 #include "deploydyn/model/model.hpp"
-#include "deploydyn/output/history_layout.hpp"
-#include "deploydyn/output/mesh_frame.hpp"
+#include "deploydyn/results/history_layout.hpp"
+#include "deploydyn/results/mesh_frame.hpp"
 #include "deploydyn/solvers/step_record.hpp"
 #include "deploydyn/results/result_file_names.hpp"
 

@@ -14,7 +14,7 @@
 
 #include "deploydyn/model/model.hpp"
 #include "deploydyn/output/checked_file.hpp"
-#include "deploydyn/output/history_layout.hpp"
+#include "deploydyn/results/history_layout.hpp"
 #include "deploydyn/solvers/step_record.hpp"
 
 namespace deploydyn {

@@ -11,7 +11,7 @@
 #include <vector>
 
 #include "deploydyn/model/model.hpp"
-#include "deploydyn/output/envelope.hpp"
+#include "deploydyn/results/envelope.hpp"
 #include "deploydyn/solvers/analysis.hpp"
 
 namespace deploydyn {

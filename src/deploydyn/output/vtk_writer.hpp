@@ -27,7 +27,7 @@
 #include "deploydyn/elements/element_kinds.hpp"
 #include "deploydyn/model/dof_map.hpp"
 #include "deploydyn/model/model.hpp"
-#include "deploydyn/output/mesh_frame.hpp"
+#include "deploydyn/results/mesh_frame.hpp"
 #include "deploydyn/solvers/step_record.hpp"
 #include "deploydyn/results/result_file_names.hpp"
 

@@ -17,7 +17,7 @@
 #include "deploydyn/io/model_loader.hpp"
 #include "deploydyn/output/checked_file.hpp"
 #include "deploydyn/output/envelope_table.hpp"
-#include "deploydyn/output/result_folder.hpp"
+#include "deploydyn/runs/result_folder.hpp"
 #include "deploydyn/util/base64.hpp"
 
 namespace deploydyn {

@@ -23,7 +23,7 @@
 #include <vector>
 
 #include "deploydyn/model/model.hpp"
-#include "deploydyn/output/envelope.hpp"
+#include "deploydyn/results/envelope.hpp"
 #include "deploydyn/solvers/analysis.hpp"
 #include "deploydyn/study/case_result.hpp"
 #include "deploydyn/study/study.hpp"

@@ -19,8 +19,8 @@
 #include "deploydyn/io/model_writer.hpp"
 #include "deploydyn/output/checked_file.hpp"
 #include "deploydyn/output/output_error.hpp"
-#include "deploydyn/output/result_folder.hpp"
-#include "deploydyn/output/run_to_folder.hpp"
+#include "deploydyn/runs/result_folder.hpp"
+#include "deploydyn/runs/run_to_folder.hpp"
 #include "support/cli.hpp"
 #include "support/mises_truss.hpp"
 

@@ -10,7 +10,7 @@
 #include <filesystem>
 #include <optional>
 
-#include "deploydyn/output/envelope.hpp"
+#include "deploydyn/results/envelope.hpp"
 #include "deploydyn/checks/verdict.hpp"
 #include "deploydyn/solvers/analysis.hpp"
 

@@ -1,4 +1,4 @@
-#include "deploydyn/output/run_folder.hpp"
+#include "deploydyn/runs/run_folder.hpp"
 
 #include <sstream>
 #include <utility>

@@ -3,7 +3,7 @@
 // row for every point it reached, equal to the points trace_path returns for the same run, and
 // a summary.json that says how it ended.
 
-#include "deploydyn/output/path_to_folder.hpp"
+#include "deploydyn/runs/path_to_folder.hpp"
 
 #include <gtest/gtest.h>
 

@@ -1,4 +1,4 @@
-#include "deploydyn/output/path_to_folder.hpp"
+#include "deploydyn/runs/path_to_folder.hpp"
 
 #include <fmt/format.h>
 
@@ -13,8 +13,8 @@
 #include "deploydyn/elements/element_kinds.hpp"
 #include "deploydyn/output/checked_file.hpp"
 #include "deploydyn/output/output_error.hpp"
-#include "deploydyn/output/result_folder.hpp"
-#include "deploydyn/output/run_folder.hpp"
+#include "deploydyn/runs/result_folder.hpp"
+#include "deploydyn/runs/run_folder.hpp"
 #include "deploydyn/output/summary_writer.hpp"
 #include "deploydyn/results/result_file_names.hpp"
 

@@ -12,7 +12,7 @@
 #include <functional>
 
 #include "deploydyn/model/model.hpp"
-#include "deploydyn/output/result_folder.hpp"
+#include "deploydyn/runs/result_folder.hpp"
 #include "deploydyn/output/output_error.hpp"
 #include "deploydyn/solvers/analysis.hpp"
 #include "deploydyn/solvers/run_control.hpp"

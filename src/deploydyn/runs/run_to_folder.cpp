@@ -1,4 +1,4 @@
-#include "deploydyn/output/run_to_folder.hpp"
+#include "deploydyn/runs/run_to_folder.hpp"
 
 #include <algorithm>
 #include <atomic>
@@ -8,15 +8,15 @@
 
 #include "deploydyn/checks/member_checks.hpp"
 #include "deploydyn/output/background_sink.hpp"
-#include "deploydyn/output/envelope.hpp"
+#include "deploydyn/results/envelope.hpp"
 #include "deploydyn/output/envelope_table.hpp"
 #include "deploydyn/output/history_writer.hpp"
-#include "deploydyn/output/modes_to_folder.hpp"
+#include "deploydyn/runs/modes_to_folder.hpp"
 #include "deploydyn/output/output_error.hpp"
-#include "deploydyn/output/plausibility.hpp"
-#include "deploydyn/output/path_to_folder.hpp"
-#include "deploydyn/output/result_folder.hpp"
-#include "deploydyn/output/run_folder.hpp"
+#include "deploydyn/results/plausibility.hpp"
+#include "deploydyn/runs/path_to_folder.hpp"
+#include "deploydyn/runs/result_folder.hpp"
+#include "deploydyn/runs/run_folder.hpp"
 #include "deploydyn/output/summary_writer.hpp"
 #include "deploydyn/output/temperature_table.hpp"
 #include "deploydyn/thermal/thermal_coupling.hpp"

@@ -1,4 +1,4 @@
-#include "deploydyn/output/modes_to_folder.hpp"
+#include "deploydyn/runs/modes_to_folder.hpp"
 
 #include <fmt/format.h>
 
@@ -15,8 +15,8 @@
 #include "deploydyn/constraints/driver_motion.hpp"
 #include "deploydyn/output/checked_file.hpp"
 #include "deploydyn/output/output_error.hpp"
-#include "deploydyn/output/result_folder.hpp"
-#include "deploydyn/output/run_folder.hpp"
+#include "deploydyn/runs/result_folder.hpp"
+#include "deploydyn/runs/run_folder.hpp"
 #include "deploydyn/solvers/step_record.hpp"
 #include "deploydyn/output/summary_writer.hpp"
 #include "deploydyn/output/vtk_writer.hpp"

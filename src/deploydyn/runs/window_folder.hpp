@@ -18,7 +18,7 @@
 #include <string>
 #include <vector>
 
-#include "deploydyn/output/result_folder.hpp"
+#include "deploydyn/runs/result_folder.hpp"
 #include "deploydyn/solvers/deployability_window.hpp"
 #include "deploydyn/results/result_file_names.hpp"
 
