@@ -196,7 +196,7 @@ py::dict report_dict(const RunReport& report) {
 }
 
 // A modal analysis in memory, as run_in_memory: modes.csv's columns and rows
-// (output/modes_to_folder.hpp) in place of the history's.
+// (runs/modes_to_folder.hpp) in place of the history's.
 py::dict modes_in_memory(const LoadedModel& loaded, const py::object& stop) {
   StopWatch watch(stop);
   std::vector<double> rows;
@@ -256,7 +256,7 @@ py::dict run_into_folder(const LoadedModel& loaded, const std::filesystem::path&
   StopWatch watch(stop);
   const RunReport report = watch.run([&] { return run_to_folder(loaded.model, folder, watch.control()); });
   py::dict out = report_dict(report);
-  // A modal run's table is modes.csv (output/modes_to_folder.hpp).
+  // A modal run's table is modes.csv (runs/modes_to_folder.hpp).
   out["history_file"] = folder / (loaded.model.analysis.type == AnalysisType::modal ? kModesFileName
                                                                                     : loaded.model.output.history_file);
   out["summary_file"] = folder / loaded.model.output.summary_file;

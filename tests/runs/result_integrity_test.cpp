@@ -141,7 +141,7 @@ TEST(RunToFolder, AHistoryThatCannotBeWrittenEndsTheRunAsFailed) {
   EXPECT_FALSE(std::filesystem::exists(folder.path() / "summary.json.tmp"));
 }
 
-// The same for a continuation's path.csv, written point by point (output/path_to_folder.hpp):
+// The same for a continuation's path.csv, written point by point (runs/path_to_folder.hpp):
 // the path stops at the failed write, and every row it kept is whole and in sequence: along the
 // snap-through the apex only goes down, so displacement_norm_m never falls from row to row (a
 // located limit point may equal the point before it to the 12 digits written).

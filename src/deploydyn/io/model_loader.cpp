@@ -1401,7 +1401,7 @@ class ModelReader {
     }
   }
 
-  // output.select (output/history_layout.hpp): names and patterns must each choose something,
+  // output.select (results/history_layout.hpp): names and patterns must each choose something,
   // the words stand alone, families are this model's.
   void read_selection(const YamlValue& spec) {
     spec.expect_keys(model_keys::kOutputSelect);

@@ -1,6 +1,6 @@
 #pragma once
 // envelopes.csv: the extremes of every reported quantity over every step of a run
-// (output/envelope.hpp), one row per item and quantity:
+// (results/envelope.hpp), one row per item and quantity:
 //   item,kind,quantity,unit,min,t_min_s,max,t_max_s
 // kind is the element type (bar, beam, cable, hinge), driver, reaction or node; quantity is
 // the ResultQuantity name (axial_force_N, stress_Pa, ...), torque_Nm | force_N for drivers,

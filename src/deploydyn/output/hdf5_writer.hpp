@@ -8,7 +8,7 @@
 //   /history                   (rows × columns)         history.csv's values (same columns,
 //   /history_columns           (columns)                 same output.select), and their names
 //   /mesh/topology             XDMF "Mixed" cells: per element 2 (polyline), its node count,
-//                              its nodes (output/mesh_frame.hpp: cell i is element i)
+//                              its nodes (results/mesh_frame.hpp: cell i is element i)
 //   /mesh/node_name, /mesh/element_name, /mesh/element_type   (strings)
 //   /mesh/steps/<row>/points          (nodes × 3)     m, current positions (z = 0 in 2D)
 //   /mesh/steps/<row>/displacement_m  (nodes × 3)     m, from the model-file positions

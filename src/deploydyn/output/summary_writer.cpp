@@ -292,7 +292,7 @@ std::string summary_json(const Model& model, const Envelope& envelope, const Run
   j["initial_equilibrium"] = {{"load_steps", report.initial_load_steps},
                               {"newton_iterations", report.initial_iterations}};
   j["wall_time"] = report.wall_time_s;
-  j["warnings"] = report.warnings;  // run_warnings (output/plausibility.hpp)
+  j["warnings"] = report.warnings;  // run_warnings (results/plausibility.hpp)
   j["files"] = files(model);
   if (verdict) j["verdict"] = verdict_json(*verdict);
   return j.dump(2);
