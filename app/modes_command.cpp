@@ -10,7 +10,7 @@
 #include "deploydyn/io/input_error.hpp"
 #include "deploydyn/io/model_loader.hpp"
 #include "deploydyn/io/text_file.hpp"
-#include "deploydyn/output/modes_to_folder.hpp"
+#include "deploydyn/runs/modes_to_folder.hpp"
 #include "exit_codes.hpp"
 
 namespace deploydyn::cli {

@@ -2,7 +2,7 @@
 // `deploydyn modes MODEL [--count N] [--at T ...] [--set PATH=VALUE ...] [--out DIR]`: natural
 // frequencies and modes of the model linearized about its static equilibrium at each time T
 // (the thermal state at t = 0, then the drivers moved quasi-statically to T), as a model of
-// analysis.type modal asks for them (output/modes_to_folder.hpp, which also runs it): --count
+// analysis.type modal asks for them (runs/modes_to_folder.hpp, which also runs it): --count
 // and --at replace its analysis.modes and analysis.at. Prints a table; with --out writes the
 // result folder of such a model (modes.csv, vtk/, summary.json, model.yaml).
 

@@ -10,7 +10,7 @@
 
 #include "deploydyn/io/input_error.hpp"
 #include "deploydyn/io/model_loader.hpp"
-#include "deploydyn/output/window_writer.hpp"
+#include "deploydyn/runs/window_folder.hpp"
 #include "deploydyn/solvers/deployability_window.hpp"
 #include "exit_codes.hpp"
 

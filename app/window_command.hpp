@@ -2,7 +2,7 @@
 // `deploydyn window MODEL [--dT LO:HI] [--positions N] [--set PATH=VALUE ...] [--out DIR]`:
 // the deployability window (solvers/deployability_window.hpp): per side of the ΔT range, the
 // threshold beyond which the deployment jams or snaps and where; the regime at every 10 °C;
-// with --out, window.csv and window.json in a folder it owns (output/window_writer.hpp), which
+// with --out, window.csv and window.json in a folder it owns (runs/window_folder.hpp), which
 // scripts/deploydyn_window.py draws.
 
 #include <CLI/CLI.hpp>

@@ -7,7 +7,7 @@
 #include <filesystem>
 
 #include "deploydyn/io/model_loader.hpp"
-#include "deploydyn/output/run_to_folder.hpp"
+#include "deploydyn/runs/run_to_folder.hpp"
 #include "deploydyn/study/study_loader.hpp"
 #include "deploydyn/study/study_runner.hpp"
 #include "support/null_sink.hpp"

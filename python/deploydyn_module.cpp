@@ -38,12 +38,12 @@
 #include "deploydyn/io/input_error.hpp"
 #include "deploydyn/io/model_loader.hpp"
 #include "deploydyn/io/model_writer.hpp"
-#include "deploydyn/output/envelope.hpp"
+#include "deploydyn/results/envelope.hpp"
 #include "deploydyn/output/history_writer.hpp"
-#include "deploydyn/output/modes_to_folder.hpp"
-#include "deploydyn/output/plausibility.hpp"
+#include "deploydyn/runs/modes_to_folder.hpp"
+#include "deploydyn/results/plausibility.hpp"
 #include "deploydyn/output/output_error.hpp"
-#include "deploydyn/output/run_to_folder.hpp"
+#include "deploydyn/runs/run_to_folder.hpp"
 #include "deploydyn/output/summary_writer.hpp"
 #include "deploydyn/assembly/linear_system_factory.hpp"
 #include "deploydyn/solvers/analysis.hpp"
@@ -196,7 +196,7 @@ py::dict report_dict(const RunReport& report) {
 }
 
 // A modal analysis in memory, as run_in_memory: modes.csv's columns and rows
-// (output/modes_to_folder.hpp) in place of the history's.
+// (runs/modes_to_folder.hpp) in place of the history's.
 py::dict modes_in_memory(const LoadedModel& loaded, const py::object& stop) {
   StopWatch watch(stop);
   std::vector<double> rows;
@@ -256,7 +256,7 @@ py::dict run_into_folder(const LoadedModel& loaded, const std::filesystem::path&
   StopWatch watch(stop);
   const RunReport report = watch.run([&] { return run_to_folder(loaded.model, folder, watch.control()); });
   py::dict out = report_dict(report);
-  // A modal run's table is modes.csv (output/modes_to_folder.hpp).
+  // A modal run's table is modes.csv (runs/modes_to_folder.hpp).
   out["history_file"] = folder / (loaded.model.analysis.type == AnalysisType::modal ? kModesFileName
                                                                                     : loaded.model.output.history_file);
   out["summary_file"] = folder / loaded.model.output.summary_file;

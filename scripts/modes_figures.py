@@ -7,7 +7,7 @@ deploydyn_plot.py:
     mode_shapes.{png,svg}  the mode shapes over the equilibrium they vibrate about, for up to
                            4 driver positions (rows) and 4 modes (columns)
 
-The table is modes.csv (output/modes_to_folder.hpp); the shapes are the frames of its ParaView
+The table is modes.csv (runs/modes_to_folder.hpp); the shapes are the frames of its ParaView
 series vtk/: frame k holds the equilibrium moved along the mode of modes.csv row k until its
 largest nodal displacement component is a tenth of the shortest bar (`Points`) and the mode
 itself (`velocity_m_s`, M-orthonormal), written as VTK XML binary arrays (base64, a UInt64 byte

@@ -6,7 +6,7 @@
                     against μ (< 0: unstable), with the summary's events (limit points,
                     bifurcations, thresholds) marked where they were located
 
-The table is path.csv (output/path_to_folder.hpp): mu, load_N, displacement_norm_m,
+The table is path.csv (runs/path_to_folder.hpp): mu, load_N, displacement_norm_m,
 eigenvalue_<k>_N_m, n_negative, event.
 """
 import numpy as np

@@ -262,7 +262,7 @@ def test_modal_folders_draw_frequencies_and_mode_shapes(tmp_path, monkeypatch):
     """Issue 31: a modal folder drew its folded model twice as 't = 0' and 't = 20 s'. Now its
     frequencies against the driver's position and its mode shapes, read from the VTK frames:
     the stress-free linkage's equilibrium at t = 0 is its model-file shape, and each shape moves
-    its largest node by a tenth of the shortest bar (output/modes_to_folder.hpp)."""
+    its largest node by a tenth of the shortest bar (runs/modes_to_folder.hpp)."""
     folder = tmp_path / "modal"
     run_cli("modes", PAPER / "parallel.yaml", "--count", 3, "--at", 0, 1, 2, "--out", folder)
     import deploydyn_plot

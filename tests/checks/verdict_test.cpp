@@ -12,7 +12,7 @@
 #include <string>
 
 #include "deploydyn/io/model_loader.hpp"
-#include "deploydyn/output/run_to_folder.hpp"
+#include "deploydyn/runs/run_to_folder.hpp"
 #include "deploydyn/output/summary_writer.hpp"
 #include "support/cli.hpp"
 

@@ -16,7 +16,7 @@ file(REMOVE_RECURSE ${PREFIX} ${CONSUMER_BUILD})
 run_step("install" ${CMAKE_COMMAND} --install ${BUILD_DIR} --prefix ${PREFIX})
 
 foreach(file bin/deploydyn include/deploydyn/model/model.hpp include/deploydyn/io/model_loader.hpp
-             include/deploydyn/output/run_to_folder.hpp include/deploydyn/output/vtk_writer.hpp)
+             include/deploydyn/runs/run_to_folder.hpp include/deploydyn/output/vtk_writer.hpp)
   if(NOT EXISTS ${PREFIX}/${file})
     message(FATAL_ERROR "not installed: ${PREFIX}/${file}")
   endif()

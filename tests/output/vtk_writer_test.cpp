@@ -23,7 +23,7 @@
 #include "deploydyn/io/model_loader.hpp"
 #include "deploydyn/io/model_writer.hpp"
 #include "deploydyn/model/dof_map.hpp"
-#include "deploydyn/output/run_to_folder.hpp"
+#include "deploydyn/runs/run_to_folder.hpp"
 #include "support/cli.hpp"
 #include "support/csv_table.hpp"
 #include "support/model_builder.hpp"

@@ -13,7 +13,7 @@
 #include <string>
 
 #include "deploydyn/io/model_loader.hpp"
-#include "deploydyn/output/run_to_folder.hpp"
+#include "deploydyn/runs/run_to_folder.hpp"
 #include "deploydyn/report/run_report.hpp"
 
 namespace deploydyn {

@@ -11,7 +11,7 @@
 
 #include "deploydyn/io/input_error.hpp"
 #include "deploydyn/output/output_error.hpp"
-#include "deploydyn/output/result_folder.hpp"
+#include "deploydyn/runs/result_folder.hpp"
 #include "deploydyn/study/study_loader.hpp"
 #include "deploydyn/study/study_runner.hpp"
 #include "support/cli.hpp"

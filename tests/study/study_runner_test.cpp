@@ -25,7 +25,7 @@
 #include "deploydyn/io/model_loader.hpp"
 #include "deploydyn/model/dof_map.hpp"
 #include "deploydyn/output/output_error.hpp"
-#include "deploydyn/output/run_to_folder.hpp"
+#include "deploydyn/runs/run_to_folder.hpp"
 #include "deploydyn/study/study_loader.hpp"
 #include "support/cli.hpp"
 

@@ -12,7 +12,7 @@
 #include <numbers>
 
 #include "deploydyn/io/model_loader.hpp"
-#include "deploydyn/output/run_to_folder.hpp"
+#include "deploydyn/runs/run_to_folder.hpp"
 #include "support/cli.hpp"
 #include "support/csv_table.hpp"
 

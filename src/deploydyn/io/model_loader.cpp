@@ -25,11 +25,8 @@
 #include "deploydyn/io/yaml_reader.hpp"
 #include "deploydyn/model/dof_map.hpp"
 
-#include "deploydyn/output/envelope_table.hpp"
-#include "deploydyn/output/history_layout.hpp"
-#include "deploydyn/output/result_folder.hpp"
-#include "deploydyn/output/hdf5_writer.hpp"
-#include "deploydyn/output/vtk_writer.hpp"
+#include "deploydyn/results/history_layout.hpp"
+#include "deploydyn/results/result_file_names.hpp"
 
 namespace deploydyn {
 namespace {
@@ -1404,7 +1401,7 @@ class ModelReader {
     }
   }
 
-  // output.select (output/history_layout.hpp): names and patterns must each choose something,
+  // output.select (results/history_layout.hpp): names and patterns must each choose something,
   // the words stand alone, families are this model's.
   void read_selection(const YamlValue& spec) {
     spec.expect_keys(model_keys::kOutputSelect);

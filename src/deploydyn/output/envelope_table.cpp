@@ -8,7 +8,7 @@
 #include "deploydyn/elements/element_kinds.hpp"
 #include "deploydyn/model/dof_map.hpp"
 #include "deploydyn/output/checked_file.hpp"
-#include "deploydyn/output/history_layout.hpp"
+#include "deploydyn/results/history_layout.hpp"
 
 namespace deploydyn {
 namespace {

@@ -1,6 +1,6 @@
 #pragma once
 // envelopes.csv: the extremes of every reported quantity over every step of a run
-// (output/envelope.hpp), one row per item and quantity:
+// (results/envelope.hpp), one row per item and quantity:
 //   item,kind,quantity,unit,min,t_min_s,max,t_max_s
 // kind is the element type (bar, beam, cable, hinge), driver, reaction or node; quantity is
 // the ResultQuantity name (axial_force_N, stress_Pa, ...), torque_Nm | force_N for drivers,
@@ -13,11 +13,10 @@
 #include <string_view>
 
 #include "deploydyn/model/model.hpp"
-#include "deploydyn/output/envelope.hpp"
+#include "deploydyn/results/envelope.hpp"
+#include "deploydyn/results/result_file_names.hpp"
 
 namespace deploydyn {
-
-inline constexpr const char* kEnvelopeFileName = "envelopes.csv";
 
 // The unit a quantity's name ends in: "N" for axial_force_N, "N·m" for torque_Nm, "1" for a
 // name without one (strain).

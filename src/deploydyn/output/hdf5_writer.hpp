@@ -8,7 +8,7 @@
 //   /history                   (rows × columns)         history.csv's values (same columns,
 //   /history_columns           (columns)                 same output.select), and their names
 //   /mesh/topology             XDMF "Mixed" cells: per element 2 (polyline), its node count,
-//                              its nodes (output/mesh_frame.hpp: cell i is element i)
+//                              its nodes (results/mesh_frame.hpp: cell i is element i)
 //   /mesh/node_name, /mesh/element_name, /mesh/element_type   (strings)
 //   /mesh/steps/<row>/points          (nodes × 3)     m, current positions (z = 0 in 2D)
 //   /mesh/steps/<row>/displacement_m  (nodes × 3)     m, from the model-file positions
@@ -32,14 +32,12 @@
 #include <vector>
 
 #include "deploydyn/model/model.hpp"
-#include "deploydyn/output/history_layout.hpp"
-#include "deploydyn/output/mesh_frame.hpp"
+#include "deploydyn/results/history_layout.hpp"
+#include "deploydyn/results/mesh_frame.hpp"
 #include "deploydyn/solvers/step_record.hpp"
+#include "deploydyn/results/result_file_names.hpp"
 
 namespace deploydyn {
-
-inline constexpr const char* kHdf5FileName = "history.h5";
-inline constexpr const char* kXdmfFileName = "history.xdmf";
 
 class Hdf5Writer final : public RecordSink {
  public:

@@ -1,6 +1,6 @@
 #pragma once
 // history.csv (README, "The outputs"): one header row, then one row per output time, with the
-// columns of output/history_layout.hpp (by default t, x.<node>, y.<node>[, z.<node>] ...,
+// columns of results/history_layout.hpp (by default t, x.<node>, y.<node>[, z.<node>] ...,
 // strain.<el>, mstrain.<el>, force.<el> ..., torque.<driver> | force.<driver> ..., kinetic,
 // strain_energy, external_work, dissipated, reaction.<node>.<axis> ...).
 // Rows are gathered and written in whole rows at least every 200 ms of wall time, so a crash
@@ -14,7 +14,7 @@
 
 #include "deploydyn/model/model.hpp"
 #include "deploydyn/output/checked_file.hpp"
-#include "deploydyn/output/history_layout.hpp"
+#include "deploydyn/results/history_layout.hpp"
 #include "deploydyn/solvers/step_record.hpp"
 
 namespace deploydyn {

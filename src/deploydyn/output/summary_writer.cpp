@@ -11,9 +11,9 @@
 #include "deploydyn/model/dof_map.hpp"
 #include "deploydyn/output/envelope_table.hpp"
 #include "deploydyn/output/temperature_table.hpp"
-#include "deploydyn/output/history_layout.hpp"
-#include "deploydyn/output/plausibility.hpp"
-#include "deploydyn/output/result_folder.hpp"
+#include "deploydyn/results/history_layout.hpp"
+#include "deploydyn/results/plausibility.hpp"
+#include "deploydyn/results/result_file_names.hpp"
 #include "deploydyn/output/hdf5_writer.hpp"
 #include "deploydyn/output/vtk_writer.hpp"
 #include "deploydyn/solvers/generalized_alpha.hpp"
@@ -292,7 +292,7 @@ std::string summary_json(const Model& model, const Envelope& envelope, const Run
   j["initial_equilibrium"] = {{"load_steps", report.initial_load_steps},
                               {"newton_iterations", report.initial_iterations}};
   j["wall_time"] = report.wall_time_s;
-  j["warnings"] = report.warnings;  // run_warnings (output/plausibility.hpp)
+  j["warnings"] = report.warnings;  // run_warnings (results/plausibility.hpp)
   j["files"] = files(model);
   if (verdict) j["verdict"] = verdict_json(*verdict);
   return j.dump(2);

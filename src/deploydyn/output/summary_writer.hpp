@@ -1,8 +1,8 @@
 #pragma once
 // summary.json (README, "The outputs"): how the run ended; per element min/max of total and
 // mechanical strain and axial force with their times; per driver the peak effort; final node positions;
-// steps, Newton iterations, rejected steps, wall time; warnings (output/plausibility.hpp);
-// the folder's files by role. Written by ResultFolder (output/result_folder.hpp): "running" at
+// steps, Newton iterations, rejected steps, wall time; warnings (results/plausibility.hpp);
+// the folder's files by role. Written by ResultFolder (runs/result_folder.hpp): "running" at
 // the start of a run, the final status at its end, atomically.
 
 #include <nlohmann/json.hpp>
@@ -11,15 +11,15 @@
 #include <vector>
 
 #include "deploydyn/model/model.hpp"
-#include "deploydyn/output/envelope.hpp"
+#include "deploydyn/results/envelope.hpp"
 #include "deploydyn/solvers/analysis.hpp"
 
 namespace deploydyn {
 
 // How every summary.json begins: "model", "status", "message" and, for a failed run, "failure":
 // its phase and reason, and for a time history where it stopped (time, step, iteration,
-// residuals). Also the start of the path's and the modes' summaries (output/path_to_folder.hpp,
-// output/modes_to_folder.hpp).
+// residuals). Also the start of the path's and the modes' summaries (runs/path_to_folder.hpp,
+// runs/modes_to_folder.hpp).
 nlohmann::ordered_json summary_head(const Model& model, const RunReport& report);
 
 struct Verdict;

@@ -2,7 +2,7 @@
 // temperatures.csv: the members' temperatures that an `environment` sets (thermal/), streamed
 // with the run at its output times. Columns: t (s), then T.<element> (K) per bar, beam and cable
 // in the order of elements/element_kinds.hpp. A file of its own: history.csv's columns are the
-// mechanics' (output/history_layout.hpp). summary.json lists it under files as "temperatures"
+// mechanics' (results/history_layout.hpp). summary.json lists it under files as "temperatures"
 // and gives the extremes under "temperatures" (temperature_summary).
 
 #include <filesystem>
@@ -12,10 +12,9 @@
 
 #include "deploydyn/output/checked_file.hpp"
 #include "deploydyn/thermal/thermal_coupling.hpp"
+#include "deploydyn/results/result_file_names.hpp"
 
 namespace deploydyn {
-
-inline constexpr const char* kTemperatureFileName = "temperatures.csv";
 
 class TemperatureTable {
  public:

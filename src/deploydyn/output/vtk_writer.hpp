@@ -27,15 +27,14 @@
 #include "deploydyn/elements/element_kinds.hpp"
 #include "deploydyn/model/dof_map.hpp"
 #include "deploydyn/model/model.hpp"
-#include "deploydyn/output/mesh_frame.hpp"
+#include "deploydyn/results/mesh_frame.hpp"
 #include "deploydyn/solvers/step_record.hpp"
+#include "deploydyn/results/result_file_names.hpp"
 
 namespace deploydyn {
 
 // "frame_000042.vtu": the file of frame `index` (0-based).
 std::string vtk_frame_file_name(int index);
-inline constexpr const char* kVtkCollectionFileName = "deploydyn.pvd";
-inline constexpr const char* kVtkFolderName = "vtk";  // in a run's result folder
 
 // Removes the frames and collection that a VtkWriter wrote into `folder`, and nothing else
 // there; nothing to do when `folder` does not exist. Throws OutputError when it cannot.

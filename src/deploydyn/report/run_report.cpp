@@ -20,7 +20,7 @@
 #include "deploydyn/report/member_colourings.hpp"
 #include "deploydyn/output/checked_file.hpp"
 #include "deploydyn/output/envelope_table.hpp"
-#include "deploydyn/output/result_folder.hpp"
+#include "deploydyn/runs/result_folder.hpp"
 #include "deploydyn/util/base64.hpp"
 
 namespace deploydyn {

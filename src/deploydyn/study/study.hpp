@@ -21,7 +21,7 @@ namespace deploydyn {
 // The comparison table's file name, in Study::out_folder.
 inline constexpr const char* kStudyTableFileName = "study.csv";
 // The study folder's status, in Study::out_folder: "running" while it runs (the folder is
-// locked, output/result_folder.hpp), then "completed" (every case did), "interrupted" or
+// locked, runs/result_folder.hpp), then "completed" (every case did), "interrupted" or
 // "failed", with each case's status.
 inline constexpr const char* kStudyStatusFileName = "study.json";
 

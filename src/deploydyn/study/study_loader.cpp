@@ -13,7 +13,7 @@
 #include "deploydyn/io/model_keys.hpp"
 #include "deploydyn/io/text_file.hpp"
 #include "deploydyn/io/yaml_reader.hpp"
-#include "deploydyn/output/result_folder.hpp"
+#include "deploydyn/runs/result_folder.hpp"
 #include "deploydyn/study/sampling_loader.hpp"
 
 namespace deploydyn {

@@ -23,7 +23,7 @@
 #include <vector>
 
 #include "deploydyn/model/model.hpp"
-#include "deploydyn/output/envelope.hpp"
+#include "deploydyn/results/envelope.hpp"
 #include "deploydyn/solvers/analysis.hpp"
 #include "deploydyn/study/case_result.hpp"
 #include "deploydyn/study/study.hpp"
@@ -72,7 +72,7 @@ struct StudyControl {
 };
 
 // Runs every case, resolve_jobs(study.jobs, n) at a time, then writes study.csv, in a folder
-// it owns (output/result_folder.hpp; status in study.json). Outcomes are in the study's case
+// it owns (runs/result_folder.hpp; status in study.json). Outcomes are in the study's case
 // order. Throws OutputError when the folder is in use or study.csv cannot be written.
 // With a channel (process 0 of a distributed study) it also hands cases to the other processes
 // as they ask. Under MPI (any channel) this process runs study.jobs cases at a time (0: one). A worker process that

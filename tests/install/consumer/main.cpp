@@ -2,7 +2,7 @@
 // run completed and wrote one history row per output time. Usage: consumer MODEL OUT_DIR.
 
 #include <deploydyn/io/model_loader.hpp>
-#include <deploydyn/output/run_to_folder.hpp>
+#include <deploydyn/runs/run_to_folder.hpp>
 #include <fstream>
 #include <iostream>
 #include <string>

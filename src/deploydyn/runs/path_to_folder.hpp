@@ -1,6 +1,6 @@
 #pragma once
 // A continuation run (analysis.type: continuation, solvers/continuation.hpp) with its results
-// on disk: summary.json saying "running", model.yaml (the model as run) (output/run_folder.hpp),
+// on disk: summary.json saying "running", model.yaml (the model as run) (runs/run_folder.hpp),
 // path.csv (one row per converged point, appended in whole rows as each point is reached, so
 // that a run stopped, failed or killed part-way keeps every point it reached) and summary.json
 // again (how it ended, and the events). What run_to_folder does for this type.
@@ -15,6 +15,7 @@
 //   event                   limit_point, bifurcation, singular_constraints, or empty
 
 #include <filesystem>
+#include <memory>
 #include <string>
 
 #include "deploydyn/solvers/analysis.hpp"
@@ -22,12 +23,16 @@
 
 namespace deploydyn {
 
-// In a folder it owns, as run_to_folder (output/result_folder.hpp). Throws
+// In a folder it owns, as run_to_folder (runs/result_folder.hpp). Throws
 // std::invalid_argument when the model's mechanics cannot be built (before any file is
 // touched), OutputError when the folder is in use or a file cannot be written (summary.json
 // then says "failed" and why, and path.csv keeps the rows written before).
 RunReport run_path_to_folder(const Model& model, const std::filesystem::path& folder,
                              const RunControl& control = {});
+
+class FolderRun;
+// The same as the driver's part (runs/run_folder.hpp), for the table of analysis types.
+std::unique_ptr<FolderRun> make_path_run(const Model& model);
 
 // The continuation that the model's analysis section asks for, from its initial state at t = 0.
 ContinuationOptions path_options(const Model& model);

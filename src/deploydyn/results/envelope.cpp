@@ -1,4 +1,4 @@
-#include "deploydyn/output/envelope.hpp"
+#include "deploydyn/results/envelope.hpp"
 
 #include "deploydyn/elements/element_kinds.hpp"
 

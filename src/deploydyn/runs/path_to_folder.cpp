@@ -1,10 +1,10 @@
-#include "deploydyn/output/path_to_folder.hpp"
+#include "deploydyn/runs/path_to_folder.hpp"
 
 #include <fmt/format.h>
 
-#include <atomic>
 #include <algorithm>
 #include <chrono>
+#include <memory>
 #include <optional>
 #include <nlohmann/json.hpp>
 #include <stdexcept>
@@ -13,16 +13,15 @@
 #include "deploydyn/elements/element_kinds.hpp"
 #include "deploydyn/output/checked_file.hpp"
 #include "deploydyn/output/output_error.hpp"
-#include "deploydyn/output/result_folder.hpp"
-#include "deploydyn/output/run_folder.hpp"
+#include "deploydyn/runs/result_folder.hpp"
+#include "deploydyn/runs/run_folder.hpp"
 #include "deploydyn/output/summary_writer.hpp"
+#include "deploydyn/results/result_file_names.hpp"
 
 namespace deploydyn {
 namespace {
 
 using nlohmann::ordered_json;
-
-constexpr const char* kPathFileName = "path.csv";
 
 // What one unit of μ is in the model's terms: ΔT (°C), the largest load entry (N), or 1 s of
 // the deployment time.
@@ -133,73 +132,96 @@ std::string path_summary_json(const Assembler& assembler, const ContinuationResu
     events.push_back(event);
   }
   j["events"] = events;
-  // What the next run into the folder removes first (output/result_folder.hpp).
+  // What the next run into the folder removes first (runs/result_folder.hpp).
   j["files"] = {{"model", kRunModelFileName}, {"path", kPathFileName}};
   return j.dump(2, ' ', false, ordered_json::error_handler_t::replace);
 }
 
-RunReport run_path_to_folder(const Model& model, const std::filesystem::path& folder,
-                             const RunControl& control) {
-  const auto wall_start = std::chrono::steady_clock::now();
-  const Assembler assembler(model);  // may throw before any file is touched
-  ResultFolder results(folder, model.output.summary_file);
-  std::optional<OutputError> output_error;
-  ContinuationResult result;
-  bool traced = false;  // else the path never started (a file could not be written) and says nothing
-  try {
-    start_run_folder(results, model,
-                     {{"model", kRunModelFileName}, {"path", kPathFileName}, {"history", model.output.history_file}});
-    PathCsv path(folder / kPathFileName, assembler, model.analysis.continuation.n_eigenvalues);
-    std::atomic<bool> stop{false};
-    const RunControl watched = stop_on_write_failure(control, stop, [&] { return output_error.has_value(); });
-    ContinuationOptions options = path_options(model);
-    options.stop = watched.stop;
-    options.poll = watched.poll;  // the Python module looks for Ctrl-C there
+namespace {
+
+// The continuation's part of a run into a folder (runs/run_folder.hpp): path.csv as the path
+// goes, and the path's summary.
+class PathRun final : public FolderRun {
+ public:
+  explicit PathRun(const Model& model)
+      : wall_start_(std::chrono::steady_clock::now()), assembler_(model) {}  // may throw before any file is touched
+
+  ResultFolder::Files files() const override {
+    return {{"model", kRunModelFileName}, {"path", kPathFileName}, {"history", model().output.history_file}};
+  }
+
+  void compute(const std::filesystem::path& folder, const RunControl& control,
+               std::optional<OutputError>& write_failure) override {
+    PathCsv path(folder / kPathFileName, assembler_, model().analysis.continuation.n_eigenvalues);
+    ContinuationOptions options = path_options(model());
+    options.stop = control.stop;
+    options.poll = control.poll;  // the Python module looks for Ctrl-C there
     options.on_point = [&](const PathPoint& point, const PathEvent* event) {
-      if (output_error) return;
+      if (write_failure) return;
       try {
         path.add(point, event);
       } catch (const OutputError& error) {
-        output_error = error;
+        write_failure = error;
       }
     };
-    const auto system = make_linear_system(assembler);
-    result = trace_path(assembler, options, *system, assembler.initial_coordinates(),
-                        Eigen::VectorXd::Zero(assembler.n_equations()));
-    traced = true;
-  } catch (const OutputError& error) {
-    output_error = error;
+    const auto system = make_linear_system(assembler_);
+    result_ = trace_path(assembler_, options, *system, assembler_.initial_coordinates(),
+                         Eigen::VectorXd::Zero(assembler_.n_equations()));
+    traced_ = true;
   }
 
-  RunReport report;
-  if (traced) {
-    // Ending at the first event is what the model asked for (stop_at: first_event).
-    report.status = result.end == ContinuationEnd::reached_end || result.end == ContinuationEnd::first_event
-                        ? RunStatus::completed
-                    : result.end == ContinuationEnd::stopped ? RunStatus::interrupted
-                                                             : RunStatus::failed;
-    report.message = result.message;
-    // The first events in words; all of them are in summary.json.
-    constexpr std::size_t kEventsInMessage = 3;
-    for (std::size_t i = 0; i < std::min(result.events.size(), kEventsInMessage); ++i) {
-      report.message += "; " + result.events[i].description;
+  RunReport end(const std::filesystem::path& /*folder*/, std::optional<OutputError>& write_failure) override {
+    const ContinuationResult& result = result_;
+    RunReport report;
+    if (traced_) {
+      // Ending at the first event is what the model asked for (stop_at: first_event).
+      report.status = result.end == ContinuationEnd::reached_end || result.end == ContinuationEnd::first_event
+                          ? RunStatus::completed
+                      : result.end == ContinuationEnd::stopped ? RunStatus::interrupted
+                                                               : RunStatus::failed;
+      report.message = result.message;
+      // The first events in words; all of them are in summary.json.
+      constexpr std::size_t kEventsInMessage = 3;
+      for (std::size_t i = 0; i < std::min(result.events.size(), kEventsInMessage); ++i) {
+        report.message += "; " + result.events[i].description;
+      }
+      if (result.events.size() > kEventsInMessage) {
+        report.message += fmt::format("; {} more events in summary.json", result.events.size() - kEventsInMessage);
+      }
+      if (report.status == RunStatus::failed) {
+        report.failure.phase = "continuation";
+        report.failure.reason = result.message;
+      }
     }
-    if (result.events.size() > kEventsInMessage) {
-      report.message += fmt::format("; {} more events in summary.json", result.events.size() - kEventsInMessage);
-    }
-    if (report.status == RunStatus::failed) {
-      report.failure.phase = "continuation";
-      report.failure.reason = result.message;
-    }
+    if (write_failure) record_output_failure(report, *write_failure);
+    report.steps = static_cast<int>(result.points.size());
+    report.newton_iterations = result.total_iterations;
+    report.rejected_steps = result.rejected_steps;
+    report.wall_time_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start_).count();
+    return report;
   }
-  if (output_error) record_output_failure(report, *output_error);
-  report.steps = static_cast<int>(result.points.size());
-  report.newton_iterations = result.total_iterations;
-  report.rejected_steps = result.rejected_steps;
-  report.wall_time_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start).count();
-  results.finish(path_summary_json(assembler, result, report), short_summary_json(model, report));
-  if (output_error) throw *output_error;
-  return report;
+
+  std::string summary_json(const RunReport& report) const override {
+    return path_summary_json(assembler_, result_, report);
+  }
+
+ private:
+  const Model& model() const { return assembler_.model(); }
+
+  std::chrono::steady_clock::time_point wall_start_;
+  Assembler assembler_;
+  ContinuationResult result_;
+  bool traced_ = false;  // else the path never started (a file could not be written) and says nothing
+};
+
+}  // namespace
+
+std::unique_ptr<FolderRun> make_path_run(const Model& model) { return std::make_unique<PathRun>(model); }
+
+RunReport run_path_to_folder(const Model& model, const std::filesystem::path& folder,
+                             const RunControl& control) {
+  PathRun run(model);
+  return run_in_folder(model, folder, control, run);
 }
 
 }  // namespace deploydyn

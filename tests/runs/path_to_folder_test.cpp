@@ -1,9 +1,9 @@
-// path.csv is written while the path is traced (output/path_to_folder.hpp): a continuation
+// path.csv is written while the path is traced (runs/path_to_folder.hpp): a continuation
 // stopped part-way (as Ctrl-C stops it) or failed (max_steps reached) leaves a path.csv with a
 // row for every point it reached, equal to the points trace_path returns for the same run, and
 // a summary.json that says how it ended.
 
-#include "deploydyn/output/path_to_folder.hpp"
+#include "deploydyn/runs/path_to_folder.hpp"
 
 #include <gtest/gtest.h>
 

@@ -1,4 +1,4 @@
-#include "deploydyn/output/plausibility.hpp"
+#include "deploydyn/results/plausibility.hpp"
 
 #include <fmt/format.h>
 

@@ -1,6 +1,6 @@
 #pragma once
 // The deployability window's result folder (solvers/deployability_window.hpp), owned as a
-// run's is (output/result_folder.hpp): its lock for the whole computation, so that a second
+// run's is (runs/result_folder.hpp): its lock for the whole computation, so that a second
 // window (or run) into it is refused; window.json saying "running" from the start; then
 //   window.csv   one row per sample: t (s), dT (°C), lowest_eigenvalue (N/m),
 //                peak_axial_force (N), peak_mstrain, driver_effort (N·m or N)
@@ -18,13 +18,11 @@
 #include <string>
 #include <vector>
 
-#include "deploydyn/output/result_folder.hpp"
+#include "deploydyn/runs/result_folder.hpp"
 #include "deploydyn/solvers/deployability_window.hpp"
+#include "deploydyn/results/result_file_names.hpp"
 
 namespace deploydyn {
-
-inline constexpr const char* kWindowStatusFileName = "window.json";
-inline constexpr const char* kWindowSamplesFileName = "window.csv";
 
 // What window.json records of how the window was made.
 struct WindowOrigin {

@@ -19,8 +19,8 @@
 #include "deploydyn/io/model_writer.hpp"
 #include "deploydyn/output/checked_file.hpp"
 #include "deploydyn/output/output_error.hpp"
-#include "deploydyn/output/result_folder.hpp"
-#include "deploydyn/output/run_to_folder.hpp"
+#include "deploydyn/runs/result_folder.hpp"
+#include "deploydyn/runs/run_to_folder.hpp"
 #include "support/cli.hpp"
 #include "support/mises_truss.hpp"
 
@@ -141,7 +141,7 @@ TEST(RunToFolder, AHistoryThatCannotBeWrittenEndsTheRunAsFailed) {
   EXPECT_FALSE(std::filesystem::exists(folder.path() / "summary.json.tmp"));
 }
 
-// The same for a continuation's path.csv, written point by point (output/path_to_folder.hpp):
+// The same for a continuation's path.csv, written point by point (runs/path_to_folder.hpp):
 // the path stops at the failed write, and every row it kept is whole and in sequence: along the
 // snap-through the apex only goes down, so displacement_norm_m never falls from row to row (a
 // located limit point may equal the point before it to the 12 digits written).

@@ -1,4 +1,4 @@
-#include "deploydyn/output/mesh_frame.hpp"
+#include "deploydyn/results/mesh_frame.hpp"
 
 #include <algorithm>
 #include <limits>

@@ -1,10 +1,11 @@
-#include "deploydyn/output/run_folder.hpp"
+#include "deploydyn/runs/run_folder.hpp"
 
 #include <sstream>
 #include <utility>
 
 #include "deploydyn/io/model_writer.hpp"
 #include "deploydyn/output/checked_file.hpp"
+#include "deploydyn/output/summary_writer.hpp"
 #include "deploydyn/output/vtk_writer.hpp"
 
 namespace deploydyn {
@@ -37,6 +38,24 @@ RunControl stop_on_write_failure(const RunControl& control, std::atomic<bool>& s
     if ((control.stop != nullptr && control.stop->load()) || write_failed()) stop.store(true);
   };
   return watched;
+}
+
+RunReport run_in_folder(const Model& model, const std::filesystem::path& folder, const RunControl& control,
+                        FolderRun& run) {
+  ResultFolder results(folder, model.output.summary_file);
+  std::optional<OutputError> write_failure;
+  try {
+    start_run_folder(results, model, run.files());
+    std::atomic<bool> stop{false};
+    const RunControl watched = stop_on_write_failure(control, stop, [&] { return write_failure.has_value(); });
+    run.compute(folder, watched, write_failure);
+  } catch (const OutputError& error) {
+    write_failure = error;
+  }
+  const RunReport report = run.end(folder, write_failure);
+  results.finish(run.summary_json(report), short_summary_json(model, report));
+  if (write_failure) throw *write_failure;
+  return report;
 }
 
 }  // namespace deploydyn

@@ -1,4 +1,4 @@
-#include "deploydyn/output/result_folder.hpp"
+#include "deploydyn/runs/result_folder.hpp"
 
 #include <fcntl.h>
 #include <sys/file.h>

@@ -8,7 +8,7 @@
 #include <vector>
 
 #include "deploydyn/model/model.hpp"
-#include "deploydyn/output/envelope.hpp"
+#include "deploydyn/results/envelope.hpp"
 
 namespace deploydyn {
 

@@ -1,4 +1,4 @@
-#include "deploydyn/output/history_layout.hpp"
+#include "deploydyn/results/history_layout.hpp"
 
 #include <fmt/format.h>
 #include <fnmatch.h>

@@ -4,7 +4,7 @@
 // shapes' VTK series, and the result folder's guarantees (stale files removed, an interrupted
 // run keeps the times it finished).
 
-#include "deploydyn/output/modes_to_folder.hpp"
+#include "deploydyn/runs/modes_to_folder.hpp"
 
 #include <fmt/format.h>
 #include <gtest/gtest.h>
@@ -18,7 +18,7 @@
 #include <vector>
 
 #include "deploydyn/io/model_loader.hpp"
-#include "deploydyn/output/run_to_folder.hpp"
+#include "deploydyn/runs/run_to_folder.hpp"
 #include "support/cli.hpp"
 #include "support/csv_table.hpp"
 

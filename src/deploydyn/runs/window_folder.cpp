@@ -1,4 +1,4 @@
-#include "deploydyn/output/window_writer.hpp"
+#include "deploydyn/runs/window_folder.hpp"
 
 #include <fmt/format.h>
 

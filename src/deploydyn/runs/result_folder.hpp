@@ -20,12 +20,10 @@
 #include <string_view>
 #include <utility>
 #include <vector>
+#include "deploydyn/results/result_file_names.hpp"
 
 namespace deploydyn {
 
-inline constexpr const char* kLockFileName = ".deploydyn.lock";
-// The model as run (overrides applied), in a run's folder.
-inline constexpr const char* kRunModelFileName = "model.yaml";
 // Room the running status reserves on disk (it is padded with spaces to this size): the most a
 // short final status may take when the disk is full.
 inline constexpr std::size_t kReservedStatusBytes = 4096;

@@ -5,7 +5,7 @@
 // to the time). What run_to_folder does for this
 // type, and what `deploydyn modes` and the Python module's Model.modes / Model.run compute.
 //
-// In a result folder (output/run_folder.hpp): summary.json saying "running", model.yaml, then
+// In a result folder (runs/run_folder.hpp): summary.json saying "running", model.yaml, then
 // per time, as soon as its modes are found, its rows of modes.csv and its frames of the mode
 // shapes' ParaView series vtk/deploydyn.pvd (a run stopped part-way keeps every time it
 // finished), and summary.json at the end: status, the frequencies per time, the files.
@@ -26,16 +26,16 @@
 #include <Eigen/Core>
 #include <filesystem>
 #include <functional>
+#include <memory>
 #include <string>
 #include <vector>
 
 #include "deploydyn/assembly/assembler.hpp"
 #include "deploydyn/solvers/analysis.hpp"
 #include "deploydyn/solvers/modal_analysis.hpp"
+#include "deploydyn/results/result_file_names.hpp"
 
 namespace deploydyn {
-
-inline constexpr const char* kModesFileName = "modes.csv";
 
 // One time's outcome, as summary.json lists it.
 struct ModesSummary {
@@ -62,6 +62,10 @@ ModalRun compute_modes(const Assembler& assembler, const RunControl& control, co
 // written (summary.json then says "failed" and why, and the files keep what was written).
 RunReport run_modes_to_folder(const Model& model, const std::filesystem::path& folder,
                               const RunControl& control = {}, const EachModes& each = {});
+
+class FolderRun;
+// The same as the driver's part (runs/run_folder.hpp), for the table of analysis types.
+std::unique_ptr<FolderRun> make_modes_run(const Model& model, EachModes each);
 
 std::vector<std::string> modes_columns(const Model& model);
 // The rows of one time (none when it has no modes), in the order of modes_columns, the first

@@ -1,22 +1,23 @@
-#include "deploydyn/output/modes_to_folder.hpp"
+#include "deploydyn/runs/modes_to_folder.hpp"
 
 #include <fmt/format.h>
 
 #include <algorithm>
-#include <atomic>
 #include <chrono>
 #include <cmath>
 #include <limits>
+#include <memory>
 #include <nlohmann/json.hpp>
 #include <numbers>
 #include <optional>
+#include <utility>
 
 #include "deploydyn/assembly/linear_system_factory.hpp"
 #include "deploydyn/constraints/driver_motion.hpp"
 #include "deploydyn/output/checked_file.hpp"
 #include "deploydyn/output/output_error.hpp"
-#include "deploydyn/output/result_folder.hpp"
-#include "deploydyn/output/run_folder.hpp"
+#include "deploydyn/runs/result_folder.hpp"
+#include "deploydyn/runs/run_folder.hpp"
 #include "deploydyn/solvers/step_record.hpp"
 #include "deploydyn/output/summary_writer.hpp"
 #include "deploydyn/output/vtk_writer.hpp"
@@ -129,33 +130,38 @@ std::string modes_summary_json(const Model& model, const ModalRun& run) {
   }
   j["modes"] = times;
   j["wall_time_s"] = report.wall_time_s;
-  // What the next run into the folder removes first (output/result_folder.hpp).
+  // What the next run into the folder removes first (runs/result_folder.hpp).
   j["files"] = {{"model", kRunModelFileName}, {"modes", kModesFileName}, {"vtk", kVtkFolderName}};
   return j.dump(2, ' ', false, ordered_json::error_handler_t::replace);
 }
 
-RunReport run_modes_to_folder(const Model& model, const std::filesystem::path& folder,
-                              const RunControl& control, const EachModes& each) {
-  const Assembler assembler(model);  // may throw before any file is touched
-  ResultFolder results(folder, model.output.summary_file);
-  std::optional<OutputError> output_error;
-  ModalRun run;
-  try {
-    start_run_folder(results, model,
-                     {{"model", kRunModelFileName}, {"modes", kModesFileName}, {"history", model.output.history_file}});
+namespace {
+
+// The modal analysis' part of a run into a folder (runs/run_folder.hpp): modes.csv and the mode
+// shapes' frames per time as they are found, and the modes' summary.
+class ModesRun final : public FolderRun {
+ public:
+  ModesRun(const Model& model, EachModes each)
+      : assembler_(model), each_(std::move(each)) {}  // may throw before any file is touched
+
+  ResultFolder::Files files() const override {
+    return {{"model", kRunModelFileName}, {"modes", kModesFileName}, {"history", model().output.history_file}};
+  }
+
+  void compute(const std::filesystem::path& folder, const RunControl& control,
+               std::optional<OutputError>& write_failure) override {
+    const Model& model = this->model();
     AppendFile table(folder / kModesFileName);
     table.append(fmt::format("{}\n", fmt::join(modes_columns(model), ",")));
     VtkWriter shapes(folder / kVtkFolderName, model);
-    std::atomic<bool> stop{false};
-    const RunControl watched = stop_on_write_failure(control, stop, [&] { return output_error.has_value(); });
     int n_frames = 0;
     std::vector<double> values;
-    run = compute_modes(assembler, watched, [&](const EquilibriumModes& at) {
-      if (each) each(at);
-      if (output_error) return;
+    run_ = compute_modes(assembler_, control, [&](const EquilibriumModes& at) {
+      if (each_) each_(at);
+      if (write_failure) return;
       try {
         values.clear();
-        append_modes_rows(assembler, at, n_frames, values);
+        append_modes_rows(assembler_, at, n_frames, values);
         const std::size_t n_columns = modes_columns(model).size();
         std::string rows;
         for (std::size_t i = 0; i < values.size(); ++i) {
@@ -164,19 +170,41 @@ RunReport run_modes_to_folder(const Model& model, const std::filesystem::path& f
         table.append(rows);
         if (!at.modes.ok) return;
         for (Eigen::Index k = 0; k < at.modes.modes.cols(); ++k) {
-          shapes.record(mode_frame(assembler, at.equilibrium, at.modes.modes.col(k), n_frames++));
+          shapes.record(mode_frame(assembler_, at.equilibrium, at.modes.modes.col(k), n_frames++));
         }
       } catch (const OutputError& error) {
-        output_error = error;
+        write_failure = error;
       }
     });
-  } catch (const OutputError& error) {
-    output_error = error;
   }
-  if (output_error) record_output_failure(run.report, *output_error);
-  results.finish(modes_summary_json(model, run), short_summary_json(model, run.report));
-  if (output_error) throw *output_error;
-  return run.report;
+
+  RunReport end(const std::filesystem::path& /*folder*/, std::optional<OutputError>& write_failure) override {
+    if (write_failure) record_output_failure(run_.report, *write_failure);
+    return run_.report;
+  }
+
+  std::string summary_json(const RunReport& /*report: run_'s own*/) const override {
+    return modes_summary_json(model(), run_);
+  }
+
+ private:
+  const Model& model() const { return assembler_.model(); }
+
+  Assembler assembler_;
+  EachModes each_;
+  ModalRun run_;
+};
+
+}  // namespace
+
+std::unique_ptr<FolderRun> make_modes_run(const Model& model, EachModes each) {
+  return std::make_unique<ModesRun>(model, std::move(each));
+}
+
+RunReport run_modes_to_folder(const Model& model, const std::filesystem::path& folder,
+                              const RunControl& control, const EachModes& each) {
+  ModesRun run(model, each);
+  return run_in_folder(model, folder, control, run);
 }
 
 }  // namespace deploydyn

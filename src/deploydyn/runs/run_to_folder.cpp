@@ -1,0 +1,198 @@
+#include "deploydyn/runs/run_to_folder.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <atomic>
+#include <iterator>
+#include <memory>
+#include <stdexcept>
+#include <optional>
+#include <utility>
+#include <vector>
+
+#include "deploydyn/checks/member_checks.hpp"
+#include "deploydyn/output/background_sink.hpp"
+#include "deploydyn/results/envelope.hpp"
+#include "deploydyn/output/envelope_table.hpp"
+#include "deploydyn/output/history_writer.hpp"
+#include "deploydyn/runs/modes_to_folder.hpp"
+#include "deploydyn/output/output_error.hpp"
+#include "deploydyn/results/plausibility.hpp"
+#include "deploydyn/runs/path_to_folder.hpp"
+#include "deploydyn/runs/result_folder.hpp"
+#include "deploydyn/runs/run_folder.hpp"
+#include "deploydyn/output/summary_writer.hpp"
+#include "deploydyn/output/temperature_table.hpp"
+#include "deploydyn/thermal/thermal_coupling.hpp"
+#include "deploydyn/output/hdf5_writer.hpp"
+#include "deploydyn/output/vtk_writer.hpp"
+
+namespace deploydyn {
+namespace {
+
+// Sends each record to every sink, in order. Does not own them.
+class FanOut final : public RecordSink {
+ public:
+  explicit FanOut(std::vector<RecordSink*> sinks) : sinks_(std::move(sinks)) {}
+  void record(const StepRecord& r) override {
+    for (RecordSink* sink : sinks_) {
+      if (r.output || sink->wants_every_step()) sink->record(r);
+    }
+  }
+  bool wants_every_step() const override {
+    return std::any_of(sinks_.begin(), sinks_.end(), [](const RecordSink* s) { return s->wants_every_step(); });
+  }
+
+ private:
+  std::vector<RecordSink*> sinks_;
+};
+
+// A time history's part of a run into a folder (runs/run_folder.hpp): history.csv (and VTK,
+// HDF5, temperatures.csv when asked) streamed, envelopes.csv at the end, the member checks'
+// verdict and the envelope in summary.json.
+class HistoryRun final : public FolderRun {
+ public:
+  // The run's extremes and last record are left in `envelope`, its verdict in `verdict` when
+  // given.
+  HistoryRun(const Model& model, Envelope& envelope, std::optional<Verdict>* verdict)
+      : model_(model), envelope_(envelope), verdict_(verdict) {
+    // An environment sets the temperatures step by step, into a copy of the model that the
+    // mechanics is built from (thermal/thermal_coupling.hpp).
+    if (model.environment) coupling_.emplace(coupled_model_.emplace(model));  // may throw, as the assembler
+    assembler_.emplace(coupled_model_ ? *coupled_model_ : model);  // may throw before any file is touched
+  }
+
+  ResultFolder::Files files() const override { return run_files(model_); }
+
+  void compute(const std::filesystem::path& folder, const RunControl& control,
+               std::optional<OutputError>& /*write_failure: every write here throws*/) override {
+    const Model& model = model_;
+    RunReport& report = report_;
+    HistoryWriter history(folder / model.output.history_file, model);
+    if (!history.layout().note().empty()) report.notes.push_back(history.layout().note());
+    envelope_ = Envelope();
+    std::vector<RecordSink*> sinks{&history, &envelope_, &checks_};
+    std::optional<VtkWriter> vtk;
+    if (model.output.vtk) sinks.push_back(&vtk.emplace(folder / kVtkFolderName, model));
+    std::optional<Hdf5Writer> hdf5;
+    if (model.output.hdf5) sinks.push_back(&hdf5.emplace(folder, model));
+    FanOut sink(std::move(sinks));
+    std::atomic<bool> stop{false};
+    if (coupling_) {
+      // The coupling rewrites the members' ΔT(t) between steps: the records are made on this
+      // thread, before it does.
+      TemperatureTable temperatures(folder / kTemperatureFileName, coupling_->member_names());
+      coupling_->on_output([&](double time_s, const std::vector<double>& temperatures_K) {
+        temperatures.write_row(time_s, temperatures_K);
+      });
+      coupling_->start(0.0);
+      report = run_analysis(*assembler_, sink, stop_on_write_failure(control, stop, [] { return false; }), &*coupling_);
+      coupling_->on_output({});
+    } else {
+      // Writing overlaps solving: the records reach the files from a thread of their own.
+      BackgroundSink background(sink);
+      report = run_analysis(*assembler_, background,
+                            stop_on_write_failure(control, stop, [&] { return background.failed(); }));
+      background.finish();
+    }
+    history.flush();
+    if (hdf5) hdf5->finish();
+  }
+
+  RunReport end(const std::filesystem::path& folder, std::optional<OutputError>& write_failure) override {
+    const Model& model = model_;
+    RunReport& report = report_;
+    if (write_failure) record_output_failure(report, *write_failure);
+    // The run's own (solvers/output_sampling.hpp), then what its extremes show.
+    for (std::string& warning : plausibility_warnings(model, envelope_)) report.warnings.push_back(std::move(warning));
+    try {  // what was computed, also of a run that failed
+      if (!write_failure) write_envelope_table(folder / kEnvelopeFileName, model, envelope_);
+    } catch (const OutputError& error) {
+      write_failure = error;
+      record_output_failure(report, error);
+    }
+    run_verdict_ = make_verdict(model, checks_, report);
+    if (verdict_) *verdict_ = run_verdict_;
+    return report;
+  }
+
+  std::string summary_json(const RunReport& report) const override {
+    std::string summary = deploydyn::summary_json(model_, envelope_, report, &run_verdict_);
+    if (coupling_) {
+      auto j = nlohmann::ordered_json::parse(summary);
+      j["temperatures"] = temperature_summary(*coupling_);
+      summary = j.dump(2);
+    }
+    return summary;
+  }
+
+ private:
+  const Model& model_;
+  Envelope& envelope_;
+  std::optional<Verdict>* verdict_;
+  std::optional<Model> coupled_model_;
+  std::optional<thermal::ThermalCoupling> coupling_;
+  std::optional<Assembler> assembler_;
+  MemberChecks checks_{model_};
+  RunReport report_;
+  Verdict run_verdict_;
+};
+
+// What a caller may take from a run besides its folder and report.
+struct RunOutputs {
+  Envelope& envelope;
+  std::optional<Verdict>* verdict;
+};
+
+std::unique_ptr<FolderRun> history_run(const Model& model, RunOutputs outputs) {
+  return std::make_unique<HistoryRun>(model, outputs.envelope, outputs.verdict);
+}
+
+std::unique_ptr<FolderRun> path_run(const Model& model, RunOutputs outputs) {
+  outputs.envelope = Envelope();  // a path has no time history to envelope
+  return make_path_run(model);
+}
+
+std::unique_ptr<FolderRun> modes_run(const Model& model, RunOutputs outputs) {
+  outputs.envelope = Envelope();  // nor do modes
+  return make_modes_run(model, {});
+}
+
+// Every analysis type and how a run of it fills its folder: adding a type is an entry here and
+// its FolderRun (docs/adding-an-analysis.md).
+struct AnalysisRun {
+  AnalysisType type;
+  std::unique_ptr<FolderRun> (*make)(const Model& model, RunOutputs outputs);  // may throw before any file is touched
+};
+
+constexpr AnalysisRun kAnalysisRuns[] = {
+    {AnalysisType::quasi_static, history_run},
+    {AnalysisType::dynamic, history_run},
+    {AnalysisType::continuation, path_run},
+    {AnalysisType::modal, modes_run},
+};
+
+const AnalysisRun& analysis_run(AnalysisType type) {
+  const auto entry = std::ranges::find(kAnalysisRuns, type, &AnalysisRun::type);
+  if (entry == std::end(kAnalysisRuns)) {
+    throw std::logic_error(fmt::format("run_to_folder: no run for analysis type {}", to_string(type)));
+  }
+  return *entry;
+}
+
+}  // namespace
+
+RunReport run_to_folder(const Model& model, const std::filesystem::path& folder,
+                        const RunControl& control) {
+  Envelope envelope;
+  return run_to_folder(model, folder, control, envelope);
+}
+
+RunReport run_to_folder(const Model& model, const std::filesystem::path& folder,
+                        const RunControl& control, Envelope& envelope, std::optional<Verdict>* verdict) {
+  const std::unique_ptr<FolderRun> run = analysis_run(model.analysis.type).make(model, {envelope, verdict});
+  return run_in_folder(model, folder, control, *run);
+}
+
+}  // namespace deploydyn
