@@ -19,8 +19,11 @@ class ModelBuilder:
 
     Functions of time (driver profiles, ΔT, load factors) are a number, the name of a function
     added with `function`, "paper_eq23", or constant/smooth_step/smooth_trapezoid/paper_eq23/
-    table/polynomial/harmonic/cosine_ramp/cycloidal/piecewise/sum_of(...). Each method checks the types of its arguments (TypeError naming the method and
-    parameter); values are checked at `build`, which checks everything the loader checks.
+    table/polynomial/harmonic/cosine_ramp/cycloidal/piecewise/sum_of(...). Each method checks
+    the types of its arguments (TypeError naming the method and parameter); an element's keys
+    are those its type's table in the C++ loader lists (docs/model-format.md), so a new type
+    or key is taken with no change here. Values are checked at `build`, which checks
+    everything the loader checks.
     """
 
     def __init__(self, name="", description=""):
@@ -125,7 +128,8 @@ class ModelBuilder:
         or between two 2D beam nodes, rotation_nodes [A, B]: a torsion spring `stiffness`
         (N·m/rad) unloaded at `rest_angle` (rad), a damper `damping` (N·m·s/rad), Coulomb
         `friction` μ with `pin_radius` (m) pressed by the bar A–H's axial force, end stops
-        `stop_min`/`stop_max` and a `latch` angle (rad); `axis` [ax, ay, az] in 3D."""
+        `stop_min`/`stop_max` and a `latch` angle (rad); `axis` [ax, ay, az] in 3D; other keys
+        of a hinge by name."""
         return self._element("ModelBuilder.hinge", name, "hinge", {},
                              {"nodes": nodes, "rotation_nodes": rotation_nodes,
                               "stiffness": stiffness, "rest_angle": rest_angle, "damping": damping,
