@@ -5,6 +5,7 @@ from deploydyn import _arguments as checked
 from deploydyn._element_fields import element_spec
 from deploydyn._model import from_dict
 
+
 class ModelBuilder:
     """Builds a model in code, in the model file's terms (docs/model-format.md); SI units.
 

@@ -7,6 +7,7 @@ import numbers
 from deploydyn import _arguments as checked
 from deploydyn import _core
 
+
 def value_text(where, path, value):
     """An override value as the text --set takes: numbers in their shortest exact form; a dict
     or list (a function such as smooth_step(...), a list of axes) as a YAML flow value, which

@@ -10,6 +10,7 @@ import numpy as np
 from deploydyn import _arguments as checked
 from deploydyn import result_folder
 
+
 class RunFailed(RuntimeError):
     """A run that did not complete, raised only on request (run(check=True),
     Result.raise_for_status()). `result` holds what was computed up to the failure."""

@@ -2,6 +2,7 @@
 hold (docs/model-format.md, "Functions of time"), with their arguments checked."""
 from deploydyn import _arguments as checked
 
+
 def constant(value):
     """A function of time that is `value` at every t: {"type": "constant", "value": value}."""
     return {"type": "constant", "value": checked.number("constant", "value", value)}
