@@ -756,6 +756,24 @@ PYBIND11_MODULE(_core, m) {
       .def(py::init<>());
   m.def("run_study", &run_study_file, py::arg("file"), py::arg("out"), py::arg("jobs"), py::arg("resume"),
         py::arg("channel"), py::arg("stop") = py::none());
+  // The keys of every element type's entries, from its field table (ElementKind::fields(), as
+  // docs/model-format.md tabulates them): the ModelBuilder checks its element arguments with
+  // them, so that a new type or key needs no Python edit.
+  m.def(
+      "element_fields",
+      [] {
+        py::dict out;
+        for (const ElementKind* kind : element_kinds()) {
+          py::list fields;
+          for (const ElementField& field : kind->fields()) {
+            fields.append(py::make_tuple(std::string(field.key), std::string(field.unit),
+                                         std::string(field.default_value), std::string(field.allowed)));
+          }
+          out[py::str(std::string(kind->name()))] = fields;
+        }
+        return out;
+      },
+      "{element type: [(key, unit, default, allowed), ...]} in the order of element_kinds()");
   m.def(
       "parse_override",
       [](const std::string& text) {

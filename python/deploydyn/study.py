@@ -18,6 +18,7 @@ import socket
 import sys
 import traceback
 
+from deploydyn import _arguments as checked
 from deploydyn import _core
 
 # The tags of the two messages, as app/mpi_channel.cpp uses them over MPI's C API.
@@ -95,19 +96,17 @@ def run_study(file, out=None, jobs=None, resume=False, comm=None, stop=None):
     "interrupted", the cases not started are listed as such, study.csv and study.json are
     written, and the finished cases stay in their folders; then Ctrl-C raises
     KeyboardInterrupt, `stop` returns the cases."""
-    # The package's argument checks; imported here, as the package imports this module.
-    from deploydyn import _count, _path, _shown, _stop
     where = "run_study"
-    file = _path(where, "file", file)
-    folder = None if out is None else _path(where, "out", out)
+    file = checked.path(where, "file", file)
+    folder = None if out is None else checked.path(where, "out", out)
     if jobs is not None:
-        jobs = _count(where, "jobs", jobs, minimum=0)
+        jobs = checked.count(where, "jobs", jobs, minimum=0)
     if not isinstance(resume, bool):
-        raise TypeError(f"{where}: resume must be a bool, not {_shown(resume)}")
+        raise TypeError(f"{where}: resume must be a bool, not {checked.shown(resume)}")
     if comm is not None and not all(hasattr(comm, name) for name in ("Get_rank", "Get_size", "Dup")):
         raise TypeError(f"{where}: comm must be an mpi4py communicator (e.g. MPI.COMM_WORLD) or "
-                        f"None, not {_shown(comm)}")
-    stop = _stop(where, stop)
+                        f"None, not {checked.shown(comm)}")
+    stop = checked.stop(where, stop)
     # A communicator of the study's own (collective: every process calls run_study), so that
     # the script's own messages cannot be taken for the study's.
     channel = _Mpi4pyChannel(comm.Dup()) if comm is not None and comm.Get_size() > 1 else None

@@ -1,0 +1,291 @@
+"""ModelBuilder: a model in code, in the model file's terms; `build` gives it to the loader."""
+import copy
+
+from deploydyn import _arguments as checked
+from deploydyn._element_fields import element_spec
+from deploydyn._model import from_dict
+
+
+class ModelBuilder:
+    """Builds a model in code, in the model file's terms (docs/model-format.md); SI units.
+
+        b = deploydyn.ModelBuilder("heated bar")
+        b.node("A", 0, 0).node("B", 1, 0)
+        b.material("steel", E=2e11, alpha=1.2e-5)
+        b.bar("1", "A", "B", area=1e-4, material="steel", mass=0.785)
+        b.support("A").support("B")
+        b.thermal(100)                              # ΔT (°C) of every bar without its own
+        b.analysis(type="static", end=1.0, step=0.5)
+        model = b.build()
+
+    Functions of time (driver profiles, ΔT, load factors) are a number, the name of a function
+    added with `function`, "paper_eq23", or constant/smooth_step/smooth_trapezoid/paper_eq23/
+    table/polynomial/harmonic/cosine_ramp/cycloidal/piecewise/sum_of(...). Each method checks
+    the types of its arguments (TypeError naming the method and parameter); an element's keys
+    are those its type's table in the C++ loader lists (docs/model-format.md), so a new type
+    or key is taken with no change here. Values are checked at `build`, which checks
+    everything the loader checks.
+    """
+
+    def __init__(self, name="", description=""):
+        name = checked.text("ModelBuilder", "name", name)
+        description = checked.text("ModelBuilder", "description", description)
+        self._spec = {"name": name} if name else {}
+        if description:
+            self._spec["description"] = description
+
+    def _section(self, key, kind=dict):
+        return self._spec.setdefault(key, kind())
+
+    def node(self, name, x, y, z=None, mass=None):
+        """A node at (x, y[, z]) m, with an optional point mass (kg)."""
+        where = "ModelBuilder.node"
+        at = [checked.number(where, axis, value) for axis, value in (("x", x), ("y", y), ("z", z))
+              if value is not None or axis != "z"]
+        spec = at if mass is None else {"at": at, "mass": checked.number(where, "mass", mass)}
+        self._section("nodes")[checked.name(where, "name", name)] = spec
+        return self
+
+    def material(self, name, E, alpha=0.0, density=None, damping=None, yield_strength=None,
+                 specific_heat=None, absorptivity=None, emissivity=None):
+        """E (Pa), alpha (1/°C), density (kg/m³, for bars that give no mass), damping (material
+        damping of its bars, cables and beams, as the model file's mapping: {"ratio": ζ, "frequency":
+        f (Hz)}, {"loss_factor": η, "frequency": f} or {"time": τ (s)}), yield_strength (Pa, the
+        stress the member checks allow); for an `environment`: specific_heat (J/(kg·K)),
+        absorptivity α_s and emissivity ε (both in [0, 1])."""
+        where = "ModelBuilder.material"
+        spec = {"E": checked.number(where, "E", E), "alpha": checked.number(where, "alpha", alpha)}
+        for key, value in (("density", density), ("yield_strength", yield_strength),
+                           ("specific_heat", specific_heat), ("absorptivity", absorptivity),
+                           ("emissivity", emissivity)):
+            if value is not None:
+                spec[key] = checked.number(where, key, value)
+        if damping is not None:
+            if not isinstance(damping, dict):
+                raise TypeError(f"{where}: damping must be a dict such as {{'ratio': 0.02, 'frequency': 10}}, "
+                                f"not {type(damping).__name__}")
+            spec["damping"] = {checked.name(where, "damping key", k): checked.number(where, f"damping.{k}", v)
+                               for k, v in damping.items()}
+        self._section("materials")[checked.name(where, "name", name)] = spec
+        return self
+
+    def _element(self, where, name, type, given, optional, more, type_key=True):
+        """Adds element `name` of `type`: `given` (the method's required parameters, checked
+        even when None), `optional` (its keyword parameters, left out when None) and `more`
+        (other keys by name), all checked against the type's field table."""
+        for key in more:
+            if key in given or key in optional:
+                raise TypeError(f"{where}: {key!r} is a parameter of its own, not for **fields")
+        fields = {**given, **{k: v for k, v in optional.items() if v is not None}, **more}
+        spec = element_spec(where, type, fields)
+        self._section("elements")[checked.name(where, "name", name)] = (
+            {"type": type, **spec} if type_key else spec)
+        return self
+
+    def bar(self, name, node_a, node_b, area, material, mass=None, length=None, dT=None,
+            **fields):
+        """A bar between two nodes: area (m²), mass (kg; default density·area·L0), length
+        (m, the reference length L0; default the nodes' distance), dT (its own ΔT(t), °C); other
+        keys of a bar (e.g. inertia, m⁴) by name, as docs/model-format.md lists them."""
+        where = "ModelBuilder.bar"
+        nodes = [checked.name(where, "node_a", node_a), checked.name(where, "node_b", node_b)]
+        return self._element(where, name, "bar", {"nodes": nodes, "area": area, "material": material},
+                             {"mass": mass, "length": length, "dT": dT}, fields, type_key=False)
+
+    def beam(self, name, node_a, node_b, area, inertia_z, material, shear_factor=None,
+             shear_modulus=None, height_y=None, dT_gradient_y=None, mass=None, length=None,
+             dT=None, **fields):
+        """A geometrically exact beam between two nodes (docs/theory.md, "Beams"): area (m²),
+        inertia_z (m⁴, in-plane bending in 2D), shear_factor (default 5/6), shear_modulus (Pa,
+        default E/2.6), height_y (m) and dT_gradient_y (T(+y) − T(−y), °C, a function of t),
+        mass, length, dT as for `bar`. 3D keys (inertia_y, torsion, orientation, height_z,
+        dT_gradient_z) and the other keys of a beam go by name. Its nodes carry a rotation:
+        clamp one with support(node, fix=["x", "y", "rotation"])."""
+        where = "ModelBuilder.beam"
+        nodes = [checked.name(where, "node_a", node_a), checked.name(where, "node_b", node_b)]
+        return self._element(
+            where, name, "beam",
+            {"nodes": nodes, "area": area, "inertia_z": inertia_z, "material": material},
+            {"shear_factor": shear_factor, "shear_modulus": shear_modulus, "height_y": height_y,
+             "mass": mass, "length": length, "dT_gradient_y": dT_gradient_y, "dT": dT}, fields)
+
+    def cable(self, name, node_a, node_b, area, material, rest_length=None, pretension=None,
+              mass=None, dT=None, **fields):
+        """A tension-only cable between two nodes (docs/theory.md, "Cables"): area (m²),
+        rest_length (m, a number or a function of t: a winch; default the nodes' distance) or
+        pretension (N, the initial cable's tension at ΔT = 0; not both), mass (kg; default
+        density·area·L0(0)), dT (its own ΔT(t), °C); other keys of a cable (e.g. break_load, N)
+        by name."""
+        where = "ModelBuilder.cable"
+        nodes = [checked.name(where, "node_a", node_a), checked.name(where, "node_b", node_b)]
+        return self._element(where, name, "cable", {"nodes": nodes, "area": area, "material": material},
+                             {"pretension": pretension, "mass": mass, "rest_length": rest_length,
+                              "dT": dT}, fields)
+
+    def hinge(self, name, nodes=None, rotation_nodes=None, stiffness=None, rest_angle=None,
+              damping=None, friction=None, pin_radius=None, stop_min=None, stop_max=None,
+              latch=None, axis=None, **fields):
+        """A hinge (docs/theory.md, "Hinges") on the angle at H between bars, nodes [A, H, B],
+        or between two 2D beam nodes, rotation_nodes [A, B]: a torsion spring `stiffness`
+        (N·m/rad) unloaded at `rest_angle` (rad), a damper `damping` (N·m·s/rad), Coulomb
+        `friction` μ with `pin_radius` (m) pressed by the bar A–H's axial force, end stops
+        `stop_min`/`stop_max` and a `latch` angle (rad); `axis` [ax, ay, az] in 3D; other keys
+        of a hinge by name."""
+        return self._element("ModelBuilder.hinge", name, "hinge", {},
+                             {"nodes": nodes, "rotation_nodes": rotation_nodes,
+                              "stiffness": stiffness, "rest_angle": rest_angle, "damping": damping,
+                              "friction": friction, "pin_radius": pin_radius, "stop_min": stop_min,
+                              "stop_max": stop_max, "latch": latch, "axis": axis}, fields)
+
+    def element(self, name, type, **fields):
+        """An element of any type (`type`, e.g. "bar"), its keys as the model file spells them
+        (docs/model-format.md). The keys are those of the type's table in the C++ loader: an
+        unknown type is a ValueError, an unknown key, a missing required one or a value of the
+        wrong kind a TypeError naming it; the loader checks the values at `build`."""
+        where = "ModelBuilder.element"
+        return self._element(where, name, checked.name(where, "type", type), {}, {}, fields)
+
+    def support(self, node, fix=None):
+        """Fix a node's coordinates: all axes, or those in `fix` (e.g. ["y"], or "y"); "rotation"
+        in `fix` clamps a beam's node."""
+        where = "ModelBuilder.support"
+        spec = {"node": checked.name(where, "node", node)}
+        if fix is not None:
+            axes = [fix] if isinstance(fix, str) else fix
+            if not isinstance(axes, (list, tuple)) or not all(isinstance(a, str) for a in axes):
+                raise TypeError(f"{where}: fix must be a list of axis names (\"x\", \"y\", "
+                                f"\"z\"), not {checked.shown(fix)}")
+            spec["fix"] = list(axes)
+        self._section("supports", list).append(spec)
+        return self
+
+    def bar_angle_driver(self, name, element, profile, pivot=None, reading="angular_velocity",
+                         axis=None):
+        """Turn bar `element` about `pivot` (default its first node); reading
+        "angular_velocity" (profile ω(t), rad/s) or "angle" (rad)."""
+        where = "ModelBuilder.bar_angle_driver"
+        spec = {"type": "bar_angle", "element": checked.name(where, "element", element),
+                "profile": checked.time_function(where, "profile", profile),
+                "reading": checked.text(where, "reading", reading)}
+        if pivot is not None:
+            spec["pivot"] = checked.name(where, "pivot", pivot)
+        if axis is not None:
+            spec["axis"] = checked.numbers(where, "axis", axis)
+        self._section("drivers")[checked.name(where, "name", name)] = spec
+        return self
+
+    def joint(self, name, node_a, node_b, type="pin", axis=None):
+        """A pin joint: nodes `node_a` and `node_b` (at one initial position) keep one position;
+        in 3D between beam nodes `axis` [ax, ay, az] is required and stays common."""
+        where = "ModelBuilder.joint"
+        spec = {"type": checked.text(where, "type", type),
+                "nodes": [checked.name(where, "node_a", node_a), checked.name(where, "node_b", node_b)]}
+        if axis is not None:
+            spec["axis"] = checked.numbers(where, "axis", axis)
+        self._section("joints")[checked.name(where, "name", name)] = spec
+        return self
+
+    def revolute_driver(self, name, joint, profile, reading="angular_velocity"):
+        """Turn node B of pin `joint` relative to node A about the joint's axis (nodes with
+        rotations: beams); reading "angular_velocity" (rad/s) or "angle" (rad)."""
+        where = "ModelBuilder.revolute_driver"
+        self._section("drivers")[checked.name(where, "name", name)] = {
+            "type": "revolute", "joint": checked.name(where, "joint", joint),
+            "profile": checked.time_function(where, "profile", profile),
+            "reading": checked.text(where, "reading", reading)}
+        return self
+
+    def hinge_angle_driver(self, name, node_a, hinge, node_b, profile, axis=None,
+                           reading="angular_velocity"):
+        """Drive the angle at `hinge` from hinge→`node_a` to hinge→`node_b`, about `axis`
+        (required in 3D; z in 2D), from its initial value; reading "angular_velocity" (rad/s)
+        or "angle" (rad). Fixes that one angle only."""
+        where = "ModelBuilder.hinge_angle_driver"
+        spec = {"type": "hinge_angle",
+                "nodes": [checked.name(where, "node_a", node_a), checked.name(where, "hinge", hinge),
+                          checked.name(where, "node_b", node_b)],
+                "profile": checked.time_function(where, "profile", profile),
+                "reading": checked.text(where, "reading", reading)}
+        if axis is not None:
+            spec["axis"] = checked.numbers(where, "axis", axis)
+        self._section("drivers")[checked.name(where, "name", name)] = spec
+        return self
+
+    def coordinate_driver(self, name, node, direction, profile, reading="velocity"):
+        """Prescribe coordinate `direction` ("x", "y", "z") of `node`; reading "velocity"
+        (m/s) or "displacement" (m)."""
+        where = "ModelBuilder.coordinate_driver"
+        self._section("drivers")[checked.name(where, "name", name)] = {
+            "type": "coordinate", "node": checked.name(where, "node", node),
+            "direction": checked.text(where, "direction", direction),
+            "profile": checked.time_function(where, "profile", profile),
+            "reading": checked.text(where, "reading", reading)}
+        return self
+
+    def load(self, node, force=None, factor=None, moment=None):
+        """A nodal force (N) and, in 2D on a beam's node, a moment (N·m, counter-clockwise),
+        times factor(t) (default 1)."""
+        where = "ModelBuilder.load"
+        spec = {"node": checked.name(where, "node", node)}
+        if force is not None:
+            spec["force"] = checked.numbers(where, "force", force)
+        if moment is not None:
+            spec["moment"] = checked.number(where, "moment", moment)
+        if factor is not None:
+            spec["factor"] = checked.time_function(where, "factor", factor)
+        self._section("loads", list).append(spec)
+        return self
+
+    def function(self, name, spec):
+        """A named function of time, usable by name in profiles, dT and factors."""
+        where = "ModelBuilder.function"
+        self._section("functions")[checked.name(where, "name", name)] = checked.time_function(where, "spec", spec)
+        return self
+
+    def thermal(self, dT):
+        """ΔT(t) (°C) of every bar without its own."""
+        self._section("thermal")["dT"] = checked.time_function("ModelBuilder.thermal", "dT", dT)
+        return self
+
+    def environment(self, type, **keys):
+        """The members' temperatures from their surroundings (docs/theory.md, "Temperatures from
+        the environment"), as the model file's `environment`: type "orbit" (sun_direction,
+        solar_constant, sink_temperature, eclipses, penumbra) or "ground" (latitude, longitude,
+        start, utc_offset, up, north, direct_normal, diffuse, air_temperature, sky_temperature,
+        convection), and reference_temperature and initial_temperature (K). Temperatures in K,
+        fluxes in W/m². Not with `thermal`. Checked at `build` (InputError names
+        environment.<key>)."""
+        where = "ModelBuilder.environment"
+        self._spec["environment"] = {"type": checked.text(where, "type", type), **checked.plain(keys, "environment", where)}
+        return self
+
+    def gravity(self, *g):
+        """Gravity (m/s²), one component per axis: gravity(0, -9.81) or gravity([0, -9.81])."""
+        values = g[0] if len(g) == 1 and not checked.is_number(g[0]) else g
+        self._spec["gravity"] = checked.numbers("ModelBuilder.gravity", "g", values)
+        return self
+
+    def analysis(self, **options):
+        """Analysis options as in the file: type ("static"/"dynamic"/"modal"), end, end_when
+        ("end_time"/"all_latched"/"settled"), step, output_interval, load_steps, mass,
+        integrator={...}, newton={...}, rayleigh={"alpha", "beta"} or {"ratios": [ζ1, ζ2],
+        "frequencies": [f1, f2]} (Rayleigh damping), settle={"kinetic_energy", "rate", "hold",
+        "node"} (with end_when="settled"). Their values are checked at `build` (InputError names
+        analysis.<option>)."""
+        self._section("analysis").update(checked.plain(options, "analysis", "ModelBuilder.analysis"))
+        return self
+
+    def output(self, **options):
+        """Output options as in the file: history, summary (file names), vtk (bool), select={nodes,
+        elements, quantities} (what history.csv holds: names or patterns, and column families such
+        as "position", "displacement", "force", "stress", "reaction"). Checked at `build`."""
+        self._section("output").update(checked.plain(options, "output", "ModelBuilder.output"))
+        return self
+
+    def to_dict(self):
+        """The model file's content as a dict (a copy)."""
+        return copy.deepcopy(self._spec)
+
+    def build(self, overrides=None):
+        """Check and return the Model; InputError names the field of any mistake."""
+        return from_dict(self._spec, overrides=overrides)
