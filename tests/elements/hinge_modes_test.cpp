@@ -41,7 +41,7 @@ elements:
   a: {nodes: [A, H], area: 1.0e-4, material: steel, mass: 1, dT: 40}
   b: {nodes: [H, B], area: 1.0e-4, material: steel, mass: 1}
   h: {type: hinge, nodes: [A, H, B], stiffness: 7, rest_angle: -2.0, damping: 0.3, friction: 0.2,
-      pin_radius: 0.01, latch: 2.9}
+      pin_radius: 0.01, latch: -2.9}
 supports: [{node: A}]
 )",
                                         "hinge");
@@ -52,14 +52,14 @@ supports: [{node: A}]
     return dynamic_cast<const SwitchingGroup&>(group);
   }
 
-  // Free and sliding in the + direction (friction on), or latched at 2.9 rad (friction off,
+  // Free and sliding in the + direction (friction on), or latched at −2.9 rad (friction off,
   // the lock on).
   std::vector<double> history(HingeMode mode) const {
     const std::unique_ptr<ElementGroup> group = make_group();
     std::vector<double> h(static_cast<std::size_t>(switching(*group).n_history()));
     switching(*group).initial_history(h);
     h[kMode] = static_cast<double>(mode);
-    h[kLockAngle] = 2.9;
+    h[kLockAngle] = -2.9;
     h[kSlip] = 1.0;
     h[kDissipated] = mode == HingeMode::latched ? 0.25 : 0.0;
     return h;
@@ -111,7 +111,7 @@ TEST_F(HingeModes, TwoModeStatesInAnyOrderGiveWhatEachGivesAlone) {
   EXPECT_NE(sliding_alone.results, latched_alone.results);
   EXPECT_FALSE(sliding_alone.lock_active);
   EXPECT_TRUE(latched_alone.lock_active);
-  EXPECT_NE(latched_alone.lock_phi[0], 0.0);  // θ − 2.9 at this q
+  EXPECT_NE(latched_alone.lock_phi[0], 0.0);  // θ + 2.9 at this q
 
   const std::unique_ptr<ElementGroup> group = make_group();
   const auto locks = switching(*group).make_switched_constraints();
