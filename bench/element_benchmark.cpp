@@ -94,7 +94,7 @@ void BM_ElementForce(benchmark::State& state) {
   ChainRun run(type, dimension);
   for (auto _ : state) {
     run.f.setZero();
-    run.group->add_internal_force(run.q, 0.0, 1.0, run.f);
+    run.group->add_internal_force({run.q, 0.0, 1.0}, run.f);
     benchmark::DoNotOptimize(run.f.data());
   }
   report(state, type, dimension);
@@ -108,7 +108,7 @@ void BM_ElementMatrix(benchmark::State& state) {
   for (std::size_t i = 0; i < slots.size(); ++i) slots[i] = static_cast<int>(i);
   for (auto _ : state) {
     const int* slot = slots.data();
-    run.group->add_iteration_matrix(run.q, 0.0, 1.0, {1.0, 1e4}, run.values, slot);
+    run.group->add_iteration_matrix({run.q, 0.0, 1.0}, {1.0, 1e4}, run.values, slot);
     benchmark::DoNotOptimize(run.values.data());
   }
   report(state, type, dimension);

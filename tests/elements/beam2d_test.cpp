@@ -196,7 +196,7 @@ class Beam2dGroup : public ::testing::Test {
 
   Eigen::VectorXd force(const Eigen::VectorXd& q, double t, double factor) const {
     Eigen::VectorXd f = Eigen::VectorXd::Zero(q.size());
-    group_->add_internal_force(q, t, factor, f);
+    group_->add_internal_force({q, t, factor}, f);
     return f;
   }
 
@@ -218,15 +218,15 @@ TEST_F(Beam2dGroup, ThermalForceDerivativeAndRateMatchFiniteDifferences) {
     const Eigen::VectorXd q = random_state(rng) * 0.5;  // any state; the model's L0 is 0.94 m
     const double t = 0.6 + 0.1 * c;
     Eigen::VectorXd derivative = Eigen::VectorXd::Zero(6), rate = Eigen::VectorXd::Zero(6);
-    group_->add_thermal_force_derivative(q, t, 1.0, derivative);
-    group_->add_thermal_force_rate(q, t, rate);
+    group_->add_thermal_force_derivative({q, t, 1.0}, derivative);
+    group_->add_thermal_force_rate({q, t}, rate);
     const double h = 1e-5;
     const Eigen::VectorXd fd_factor = (force(q, t, 1.0 + h) - force(q, t, 1.0 - h)) / (2.0 * h);
     const Eigen::VectorXd fd_time = (force(q, t + h, 1.0) - force(q, t - h, 1.0)) / (2.0 * h);
     EXPECT_LT(relative_error(derivative, fd_factor), kDerivativeTolerance) << "t = " << t;
     EXPECT_LT(relative_error(rate, fd_time), kDerivativeTolerance) << "t = " << t;
     // Energy and force agree through the group too (rotary unknowns gathered in place).
-    const auto energy = [&](const Eigen::VectorXd& y) { return group_->strain_energy(y, t); };
+    const auto energy = [&](const Eigen::VectorXd& y) { return group_->strain_energy({y, t}); };
     EXPECT_LT(relative_error(force(q, t, 1.0), testing::central_gradient(energy, q, kStep)),
               kDerivativeTolerance);
   }

@@ -16,6 +16,7 @@
 #include "deploydyn/elements/bar/bar_kind.hpp"
 #include "deploydyn/elements/cable/cable_kind.hpp"
 #include "deploydyn/elements/element_kinds.hpp"
+#include "deploydyn/elements/switching_group.hpp"
 #include "deploydyn/model/dof_map.hpp"
 #include "support/finite_difference.hpp"
 
@@ -89,7 +90,7 @@ class OneCable {
 
   Eigen::VectorXd force(const Eigen::VectorXd& q, double t, double factor = 1.0) const {
     Eigen::VectorXd f = Eigen::VectorXd::Zero(n());
-    group_->add_internal_force(q, t, factor, f);
+    group_->add_internal_force({q, t, factor}, f);
     return f;
   }
   // The group's iteration-matrix block with c_K = 1, c_M = 0, as a dense matrix.
@@ -100,14 +101,14 @@ class OneCable {
     std::vector<int> slots(entries.size());
     for (std::size_t i = 0; i < slots.size(); ++i) slots[i] = static_cast<int>(i);
     const int* slot = slots.data();
-    group_->add_iteration_matrix(q, t, factor, {1.0, 0.0}, values, slot);
+    group_->add_iteration_matrix({q, t, factor}, {1.0, 0.0}, values, slot);
     Eigen::MatrixXd k = Eigen::MatrixXd::Zero(n(), n());
     for (std::size_t i = 0; i < entries.size(); ++i) k(entries[i].row, entries[i].col) += values[i];
     return k;
   }
   std::vector<double> results(const Eigen::VectorXd& q, double t) const {
     std::vector<double> out(cable_kind().quantities(model_.dimension).size());
-    group_->results(0, ResultPoint{q, t}, out);
+    group_->results(0, {q, t}, out);
     return out;
   }
 
@@ -147,7 +148,7 @@ TEST_P(CableGroup, TautForceIsTheGradientOfStrainEnergy) {
   for (int c = 0; c < kConfigurations; ++c) {
     const double t = time_of(c);
     const Eigen::VectorXd q = taut_configuration(dimension, t, rng);
-    const auto energy = [&](const Eigen::VectorXd& y) { return cable.group().strain_energy(y, t); };
+    const auto energy = [&](const Eigen::VectorXd& y) { return cable.group().strain_energy({y, t}); };
     EXPECT_LT(relative_error(cable.force(q, t), testing::central_gradient(energy, q, kStep)),
               kDerivativeTolerance)
         << "t = " << t << ", q = " << q.transpose();
@@ -177,8 +178,8 @@ TEST_P(CableGroup, ThermalDerivativeAndTimeRateMatchFiniteDifferences) {
     const double t = time_of(c);
     const Eigen::VectorXd q = taut_configuration(dimension, t, rng);
     Eigen::VectorXd by_factor = Eigen::VectorXd::Zero(cable.n()), rate = by_factor;
-    cable.group().add_thermal_force_derivative(q, t, 1.0, by_factor);
-    cable.group().add_thermal_force_rate(q, t, rate);
+    cable.group().add_thermal_force_derivative({q, t, 1.0}, by_factor);
+    cable.group().add_thermal_force_rate({q, t}, rate);
     const Eigen::VectorXd fd_factor =
         (cable.force(q, t, 1.0 + kStep) - cable.force(q, t, 1.0 - kStep)) / (2.0 * kStep);
     const Eigen::VectorXd fd_time = (cable.force(q, t + kStep) - cable.force(q, t - kStep)) / (2.0 * kStep);
@@ -201,7 +202,7 @@ TEST_P(CableGroup, ThermalDerivativeIsTakenAtTheThermalFactor) {
     const Eigen::VectorXd q =
         configuration(dimension, kRestLength_m.value(t) * std::sqrt(1.0 + 1.4 * thermal_strain), rng);
     Eigen::VectorXd by_factor = Eigen::VectorXd::Zero(cable.n());
-    cable.group().add_thermal_force_derivative(q, t, kFactor, by_factor);
+    cable.group().add_thermal_force_derivative({q, t, kFactor}, by_factor);
     const Eigen::VectorXd fd =
         (cable.force(q, t, kFactor + kStep) - cable.force(q, t, kFactor - kStep)) / (2.0 * kStep);
     EXPECT_GT(fd.norm(), 0.0) << "t = " << t;
@@ -246,11 +247,11 @@ TEST_P(CableGroup, SlackCableHasNoForceStiffnessOrEnergyButItsMass) {
     const double t = time_of(c);
     const Eigen::VectorXd q = configuration(dimension, kRestLength_m.value(t) * shortening(rng), rng);
     Eigen::VectorXd by_factor = Eigen::VectorXd::Zero(cable.n()), rate = by_factor;
-    cable.group().add_thermal_force_derivative(q, t, 1.0, by_factor);
-    cable.group().add_thermal_force_rate(q, t, rate);
+    cable.group().add_thermal_force_derivative({q, t, 1.0}, by_factor);
+    cable.group().add_thermal_force_rate({q, t}, rate);
     EXPECT_EQ(cable.force(q, t).norm(), 0.0) << "t = " << t;
     EXPECT_EQ(cable.tangent(q, t).norm(), 0.0) << "t = " << t;
-    EXPECT_EQ(cable.group().strain_energy(q, t), 0.0) << "t = " << t;
+    EXPECT_EQ(cable.group().strain_energy({q, t}), 0.0) << "t = " << t;
     EXPECT_EQ(by_factor.norm(), 0.0) << "t = " << t;
     EXPECT_EQ(rate.norm(), 0.0) << "t = " << t;
     const std::vector<double> r = cable.results(q, t);
@@ -279,7 +280,7 @@ TEST_P(CableGroup, TautCableIsTheBar) {
     const double t = 0.0;  // L0(0) is the bar's reference length
     EXPECT_EQ(cable.force(q, t), bar.force(q, t));
     EXPECT_EQ(cable.tangent(q, t), bar.tangent(q, t));
-    EXPECT_EQ(cable.group().strain_energy(q, t), bar.group().strain_energy(q, t));
+    EXPECT_EQ(cable.group().strain_energy({q, t}), bar.group().strain_energy({q, t}));
     const std::vector<double> r = cable.results(q, t);
     EXPECT_GT(r[2], 0.0) << "axial force";
     EXPECT_EQ(r[3], kRestLength_m.value(t)) << "rest length";
@@ -291,7 +292,9 @@ TEST_P(CableGroup, TautCableIsTheBar) {
 // the mechanical strain; before the first step the start's state is read from q_before.
 TEST(CableHistory, SlackAndTautFlipsAreEvents) {
   const OneCable cable(2);
-  const ElementGroup& group = cable.group();
+  const auto* switching = dynamic_cast<const SwitchingGroup*>(&cable.group());
+  ASSERT_NE(switching, nullptr);  // a cable keeps its slack state
+  const SwitchingGroup& group = *switching;
   ASSERT_EQ(group.n_history(), 1);
   std::vector<double> start(1), after(1);
   group.initial_history(start);
@@ -309,7 +312,7 @@ TEST(CableHistory, SlackAndTautFlipsAreEvents) {
   std::vector<double> before = after;
   group.end_step({0.0, 0.0, taut, v, slack, v, lambda}, before, after, events);
   ASSERT_EQ(events.size(), 1u);
-  EXPECT_EQ(events[0].what, "slack");
+  EXPECT_EQ(events[0].kind, ElementEventKind::slack);
   EXPECT_LT(events[0].value, 0.0);
   EXPECT_EQ(after[0], 1.0);
   before = after;
@@ -318,7 +321,7 @@ TEST(CableHistory, SlackAndTautFlipsAreEvents) {
   before = after;
   group.end_step({0.0, 0.0, slack, v, taut, v, lambda}, before, after, events);
   ASSERT_EQ(events.size(), 2u);
-  EXPECT_EQ(events[1].what, "taut");
+  EXPECT_EQ(events[1].kind, ElementEventKind::taut);
   EXPECT_GT(events[1].value, 0.0);
   EXPECT_EQ(after[0], 0.0);
   // A run that starts slack and stays so reports nothing.

@@ -10,7 +10,9 @@
 
 #include "deploydyn/assembly/assembler.hpp"
 #include "deploydyn/elements/element_kinds.hpp"
+#include "deploydyn/elements/hinge/hinge_history.hpp"
 #include "deploydyn/elements/hinge/hinge_kind.hpp"
+#include "deploydyn/elements/switching_group.hpp"
 #include "deploydyn/io/model_loader.hpp"
 #include "support/finite_difference.hpp"
 
@@ -27,24 +29,31 @@ std::size_t hinge_group_index() {
 
 // The group's iteration-matrix block c_K ∂f/∂q + c_D ∂f/∂q̇ as a dense matrix.
 Eigen::MatrixXd dense_block(const ElementGroup& group, int n_dofs, const Eigen::VectorXd& q,
-                            const Eigen::VectorXd& v, double stiffness_weight, double damping_weight) {
+                            const Eigen::VectorXd& v, std::span<const double> history, double stiffness_weight,
+                            double damping_weight) {
   std::vector<MatrixEntry> entries;
   group.append_matrix_entries(entries);
   std::vector<double> values(entries.size(), 0.0);
   std::vector<int> slots(entries.size());
   for (std::size_t i = 0; i < slots.size(); ++i) slots[i] = static_cast<int>(i);
   const int* slot = slots.data();
-  group.add_iteration_matrix(q, 0.3, 1.0, {stiffness_weight, 0.0, damping_weight, &v}, values, slot);
+  group.add_iteration_matrix({q, 0.3, 1.0, &v, history}, {stiffness_weight, 0.0, damping_weight}, values, slot);
   Eigen::MatrixXd m = Eigen::MatrixXd::Zero(n_dofs, n_dofs);
   for (std::size_t i = 0; i < entries.size(); ++i) m(entries[i].row, entries[i].col) += values[i];
   return m;
 }
 
-Eigen::VectorXd hinge_force(const ElementGroup& group, int n_dofs, const Eigen::VectorXd& q, const Eigen::VectorXd& v) {
+Eigen::VectorXd hinge_force(const ElementGroup& group, int n_dofs, const Eigen::VectorXd& q, const Eigen::VectorXd& v,
+                            std::span<const double> history) {
   Eigen::VectorXd f = Eigen::VectorXd::Zero(n_dofs);
-  group.add_internal_force(q, 0.3, 1.0, f);
-  group.add_rate_force(q, v, 0.3, f);
+  const EvaluationPoint at{q, 0.3, 1.0, &v, history};
+  group.add_internal_force(at, f);
+  group.add_rate_force(at, f);
   return f;
+}
+
+const SwitchingGroup& switching(const ElementGroup& group) {
+  return dynamic_cast<const SwitchingGroup&>(group);  // throws std::bad_cast for a group that does not switch
 }
 
 // Checks f = ∂U/∂q of the spring, ∂f/∂q and ∂f/∂q̇ against central differences at a turned
@@ -59,26 +68,25 @@ void check_derivatives(const std::string& yaml) {
   const Eigen::VectorXd v = Eigen::VectorXd::LinSpaced(n, 0.3, -0.7);
   for (int i = 0; i < n; ++i) q[i] += 0.05 * std::sin(1.0 + 3.0 * i);  // off the initial state
   // Sliding in the + direction: history [mode, lock angle, slip, ...] of the one hinge.
-  std::vector<double> history(static_cast<std::size_t>(group.n_history()));
-  group.initial_history(history);
-  history[0] = 0.0;  // free
-  history[2] = 1.0;  // sliding, friction against θ growing
-  group.use_history(history);
+  std::vector<double> history(static_cast<std::size_t>(switching(group).n_history()));
+  switching(group).initial_history(history);
+  history[hinge::history::kMode] = static_cast<double>(HingeMode::free);
+  history[hinge::history::kSlip] = 1.0;  // sliding, friction against θ growing
 
   // f_spring = ∂U/∂q.
   const Eigen::VectorXd zero = Eigen::VectorXd::Zero(n);
   Eigen::VectorXd spring = Eigen::VectorXd::Zero(n);
-  group.add_internal_force(q, 0.3, 1.0, spring);
+  group.add_internal_force({q, 0.3}, spring);
   const Eigen::VectorXd energy_gradient =
-      testing::central_gradient([&](const Eigen::VectorXd& x) { return group.strain_energy(x, 0.3); }, q, kStep);
+      testing::central_gradient([&](const Eigen::VectorXd& x) { return group.strain_energy({x, 0.3}); }, q, kStep);
   EXPECT_LT((spring - energy_gradient).lpNorm<Eigen::Infinity>(), kTolerance * spring.lpNorm<Eigen::Infinity>());
 
-  const Eigen::MatrixXd dq = testing::central_jacobian([&](const Eigen::VectorXd& x) { return hinge_force(group, n, x, v); }, q, kStep);
-  const Eigen::MatrixXd block_q = dense_block(group, n, q, v, 1.0, 0.0);
+  const Eigen::MatrixXd dq = testing::central_jacobian([&](const Eigen::VectorXd& x) { return hinge_force(group, n, x, v, history); }, q, kStep);
+  const Eigen::MatrixXd block_q = dense_block(group, n, q, v, history, 1.0, 0.0);
   EXPECT_LT((block_q - dq).lpNorm<Eigen::Infinity>(), kTolerance * dq.lpNorm<Eigen::Infinity>())
       << "∂f/∂q\n" << block_q << "\nFD\n" << dq;
-  const Eigen::MatrixXd dv = testing::central_jacobian([&](const Eigen::VectorXd& x) { return hinge_force(group, n, q, x); }, v, kStep);
-  const Eigen::MatrixXd block_v = dense_block(group, n, q, v, 0.0, 1.0);
+  const Eigen::MatrixXd dv = testing::central_jacobian([&](const Eigen::VectorXd& x) { return hinge_force(group, n, q, x, history); }, v, kStep);
+  const Eigen::MatrixXd block_v = dense_block(group, n, q, v, history, 0.0, 1.0);
   EXPECT_LT((block_v - dv).lpNorm<Eigen::Infinity>(), kTolerance * dv.lpNorm<Eigen::Infinity>())
       << "∂f/∂q̇\n" << block_v << "\nFD\n" << dv;
   EXPECT_GT(dv.lpNorm<Eigen::Infinity>(), 0.0);

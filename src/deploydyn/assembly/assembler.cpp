@@ -30,6 +30,44 @@ using LocalJacobian = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0,
                                     kMaxConstraintEquations, kMaxConstraintDofs>;
 
 
+// A group's switched constraint as the solvers see every constraint: evaluated in the modes of
+// the history in force (Assembler::use_history), its group's slice, which it gets as data.
+class SwitchedConstraintInForce final : public Constraint {
+ public:
+  SwitchedConstraintInForce(std::unique_ptr<SwitchedConstraint> constraint, const Assembler& assembler,
+                            std::size_t group)
+      : Constraint(constraint->n_equations(), {constraint->dofs().begin(), constraint->dofs().end()}),
+        constraint_(std::move(constraint)), assembler_(assembler), group_(group) {}
+
+  void evaluate(const Eigen::VectorXd& q, double t, Eigen::Ref<Eigen::VectorXd> phi,
+                Eigen::Ref<Eigen::MatrixXd> jacobian) const override {
+    constraint_->evaluate(at(q, t), phi, jacobian);
+  }
+  bool nonlinear() const override { return constraint_->nonlinear(); }
+  void add_hessian_term(const Eigen::VectorXd& q, double t, Eigen::Ref<const Eigen::VectorXd> lambda,
+                        Eigen::Ref<Eigen::MatrixXd> hessian) const override {
+    constraint_->add_hessian_term(at(q, t), lambda, hessian);
+  }
+  void time_derivatives(const Eigen::VectorXd& q, const Eigen::VectorXd& v, double t,
+                        Eigen::Ref<Eigen::VectorXd> phi_t, Eigen::Ref<Eigen::VectorXd> bias) const override {
+    constraint_->time_derivatives(at(q, t, &v), phi_t, bias);
+  }
+  bool switchable() const override { return true; }
+  bool active() const override { return constraint_->active(assembler_.history_in_force(group_)); }
+  std::string describe(int row) const override {
+    return constraint_->describe(row, assembler_.history_in_force(group_));
+  }
+
+ private:
+  EvaluationPoint at(const Eigen::VectorXd& q, double t, const Eigen::VectorXd* rates = nullptr) const {
+    return {q, t, 1.0, rates, assembler_.history_in_force(group_)};
+  }
+
+  std::unique_ptr<SwitchedConstraint> constraint_;
+  const Assembler& assembler_;
+  std::size_t group_;
+};
+
 std::unique_ptr<Constraint> make_support(const FixedNode& support, const Model& model,
                                          const DofMap& dofs) {
   const Node& node = model.nodes[support.node];
@@ -127,7 +165,10 @@ std::unique_ptr<Constraint> make_driver(const Driver& driver, const Model& model
 }  // namespace
 
 Assembler::Assembler(const Model& model) : model_(model), dofs_(model) {
-  for (const ElementKind* kind : element_kinds()) groups_.push_back(kind->make_group(model, dofs_));
+  for (const ElementKind* kind : element_kinds()) {
+    groups_.push_back(kind->make_group(model, dofs_));
+    switching_.push_back(dynamic_cast<const SwitchingGroup*>(groups_.back().get()));
+  }
   for (const FixedNode& support : model.supports) {
     support_constraint_.push_back(static_cast<int>(constraints_.size()));
     constraints_.push_back(make_support(support, model, dofs_));
@@ -155,19 +196,28 @@ Assembler::Assembler(const Model& model) : model_(model), dofs_(model) {
     first_row_.push_back(n_equations_);
     n_equations_ += c->n_equations();
   }
-  for (const auto& group : groups_) {  // last: switched on and off between steps
-    for (auto& c : group->make_switched_constraints(n_equations_)) {
-      first_row_.push_back(n_equations_);
-      n_equations_ += c->n_equations();
-      n_switched_equations_ += c->n_equations();
-      constraints_.push_back(std::move(c));
+  for (std::size_t g = 0; g < groups_.size(); ++g) {  // last: switched on and off between steps
+    switched_rows_.push_back(n_equations_);
+    if (switching_[g] != nullptr) {
+      for (auto& c : switching_[g]->make_switched_constraints()) {
+        first_row_.push_back(n_equations_);
+        n_equations_ += c->n_equations();
+        n_switched_equations_ += c->n_equations();
+        constraints_.push_back(std::make_unique<SwitchedConstraintInForce>(std::move(c), *this, g));
+      }
     }
+    n_switched_rows_.push_back(n_equations_ - switched_rows_.back());
   }
   for (int index : driver_constraint_) driver_rows_.push_back(first_row_[index]);
-  for (const auto& group : groups_) {
+  for (const SwitchingGroup* group : switching_) {
     history_offset_.push_back(n_history_);
-    n_history_ += group->n_history();
+    history_size_.push_back(group != nullptr ? group->n_history() : 0);
+    n_history_ += history_size_.back();
   }
+  // In force until a run gives its own (use_history): zeros, every hinge free and not sliding
+  // (hinge_history.hpp), as paths and modes see them. Full size: history_in_force() slices it
+  // through the unchecked overload (history_in_force_ is mutable, so not const there).
+  history_in_force_ = Eigen::VectorXd::Zero(n_history_);
 
   for (const auto& group : groups_) n_matrix_entries_ += group->n_matrix_entries();
   for (const Node& node : model.nodes) n_matrix_entries_ += node.point_mass_kg != 0.0 ? model.dimension : 0;
@@ -211,13 +261,15 @@ int Assembler::n_rigid_body_conditions() const {
 void Assembler::internal_force(const Eigen::VectorXd& q, double t, double thermal_factor,
                                Eigen::VectorXd& f) const {
   f.setZero(n_dofs());
-  for (const auto& group : groups_) group->add_internal_force(q, t, thermal_factor, f);
+  for (std::size_t g = 0; g < groups_.size(); ++g) groups_[g]->add_internal_force(point(g, q, t, thermal_factor), f);
 }
 
 void Assembler::thermal_force_derivative(const Eigen::VectorXd& q, double t, double thermal_factor,
                                          Eigen::VectorXd& f) const {
   f.setZero(n_dofs());
-  for (const auto& group : groups_) group->add_thermal_force_derivative(q, t, thermal_factor, f);
+  for (std::size_t g = 0; g < groups_.size(); ++g) {
+    groups_[g]->add_thermal_force_derivative(point(g, q, t, thermal_factor), f);
+  }
 }
 
 void Assembler::static_residual_time_derivative(const Eigen::VectorXd& q, double t,
@@ -225,7 +277,7 @@ void Assembler::static_residual_time_derivative(const Eigen::VectorXd& q, double
                                                 Eigen::VectorXd& dr,
                                                 Eigen::VectorXd& dphi) const {
   dr.setZero(n_dofs());
-  for (const auto& group : groups_) group->add_thermal_force_rate(q, t, dr);
+  for (std::size_t g = 0; g < groups_.size(); ++g) groups_[g]->add_thermal_force_rate(point(g, q, t), dr);
   // Gravity does not change with t; the nodal loads change with their factors.
   add_nodal_loads([&](const NodalLoad& load) { return -load.factor.derivative(t); }, dr);
   Eigen::VectorXd local;
@@ -278,7 +330,7 @@ void Assembler::mass_times(const Eigen::VectorXd& a, Eigen::VectorXd& out) const
 void Assembler::rate_force(const Eigen::VectorXd& q, const Eigen::VectorXd& v, double t,
                            Eigen::VectorXd& f) const {
   f.setZero(n_dofs());
-  for (const auto& group : groups_) group->add_rate_force(q, v, t, f);
+  for (std::size_t g = 0; g < groups_.size(); ++g) groups_[g]->add_rate_force(point(g, q, t, 1.0, &v), f);
   if (rayleigh_) {
     Eigen::VectorXd mass_times_v;
     if (rayleigh_->mass_factor_1_s() != 0.0) mass_times(v, mass_times_v);
@@ -309,12 +361,10 @@ void Assembler::switched_constraint_force(const Eigen::VectorXd& q, double t,
 
 Eigen::VectorXd Assembler::initial_history() const {
   Eigen::VectorXd history = Eigen::VectorXd::Zero(n_history_);
-  for (std::size_t g = 0; g < groups_.size(); ++g) groups_[g]->initial_history(history_slice(history, g));
+  for (std::size_t g = 0; g < groups_.size(); ++g) {
+    if (switching_[g] != nullptr) switching_[g]->initial_history(history_slice(history, g));
+  }
   return history;
-}
-
-void Assembler::use_history(const Eigen::VectorXd& history) const {
-  for (std::size_t g = 0; g < groups_.size(); ++g) groups_[g]->use_history(history_slice(history, g));
 }
 
 StepVerdict Assembler::end_step(const StepEnds& ends, const Eigen::VectorXd& history_before,
@@ -323,9 +373,16 @@ StepVerdict Assembler::end_step(const StepEnds& ends, const Eigen::VectorXd& his
   history_after.resize(n_history_);
   std::vector<StepVerdict> verdicts;
   for (std::size_t g = 0; g < groups_.size(); ++g) {
+    if (switching_[g] == nullptr) {
+      verdicts.push_back(StepVerdict::accept);
+      continue;
+    }
     const std::size_t first = events.size();
-    verdicts.push_back(groups_[g]->end_step(ends, history_slice(history_before, g),
-                                            history_slice(history_after, g), events));
+    StepEnds group_ends = ends;
+    group_ends.switched_multipliers = {ends.lambda_after.data() + switched_rows_[g],
+                                       static_cast<std::size_t>(n_switched_rows_[g])};
+    verdicts.push_back(switching_[g]->end_step(group_ends, history_slice(history_before, g),
+                                               history_slice(history_after, g), events));
     event_groups.insert(event_groups.end(), events.size() - first, static_cast<int>(g));
   }
   if (std::find(verdicts.begin(), verdicts.end(), StepVerdict::redo) == verdicts.end()) {
@@ -343,13 +400,15 @@ StepVerdict Assembler::end_step(const StepEnds& ends, const Eigen::VectorXd& his
 
 int Assembler::n_latches() const {
   int n = 0;
-  for (const auto& group : groups_) n += group->n_latches();
+  for (const SwitchingGroup* group : switching_) n += group != nullptr ? group->n_latches() : 0;
   return n;
 }
 
 int Assembler::n_latched(const Eigen::VectorXd& history) const {
   int n = 0;
-  for (std::size_t g = 0; g < groups_.size(); ++g) n += groups_[g]->n_latched(history_slice(history, g));
+  for (std::size_t g = 0; g < groups_.size(); ++g) {
+    if (switching_[g] != nullptr) n += switching_[g]->n_latched(history_slice(history, g));
+  }
   return n;
 }
 
@@ -483,9 +542,9 @@ void Assembler::iteration_matrix(const Eigen::VectorXd& q, double t, double ther
   // Rayleigh damping's c_D (α M + β K): α into the mass weight, β K onto the elements' entries.
   MatrixWeights weights = w;
   if (rayleigh_ && w.rates != nullptr) weights.mass += w.damping * rayleigh_->mass_factor_1_s();
-  for (const auto& group : groups_) {
-    group->add_iteration_matrix(q, t, thermal_factor,
-                                {weights.stiffness, weights.mass, weights.damping, weights.rates}, values, slot);
+  for (std::size_t g = 0; g < groups_.size(); ++g) {
+    groups_[g]->add_iteration_matrix(point(g, q, t, thermal_factor, weights.rates),
+                                     {weights.stiffness, weights.mass, weights.damping}, values, slot);
   }
   if (rayleigh_ && w.rates != nullptr) rayleigh_->add_stiffness_block(groups_, q, t, w.damping, values, system.slots());
   for_each_matrix_block(q, t, lambda, weights,
@@ -513,7 +572,9 @@ std::vector<MatrixEntry> Assembler::matrix_entries() const {
 
 double Assembler::stiffness_scale(const Eigen::VectorXd& q, double t) const {
   double scale = 0.0;
-  for (const auto& group : groups_) scale = std::max(scale, group->largest_stiffness_diagonal(q, t));
+  for (std::size_t g = 0; g < groups_.size(); ++g) {
+    scale = std::max(scale, groups_[g]->largest_stiffness_diagonal(point(g, q, t)));
+  }
   return scale > 0.0 ? scale : 1.0;
 }
 
@@ -561,7 +622,7 @@ double Assembler::largest_relative_change(const Eigen::VectorXd& q,
 
 double Assembler::strain_energy(const Eigen::VectorXd& q, double t) const {
   double energy = 0.0;
-  for (const auto& group : groups_) energy += group->strain_energy(q, t);
+  for (std::size_t g = 0; g < groups_.size(); ++g) energy += groups_[g]->strain_energy(point(g, q, t));
   return energy;
 }
 

@@ -4,7 +4,9 @@
 //   M q̈ + f_int(q, t) + Bᵀλ = f_ext(t),   Φ(q, t) = 0          (docs/theory.md, paper Eq. 8)
 // Element groups (elements/element.hpp) add their share of each global quantity; constraints
 // return local vectors and matrices, which this class scatters.
-// It holds no solution state: q, q̇, λ are always passed in.
+// It holds no solution state: q, q̇, λ are always passed in. The one exception is the history
+// whose modes the residual and matrix use (use_history): the groups and their switched
+// constraints get it, as data, in every EvaluationPoint the assembler builds.
 
 #include <Eigen/Core>
 #include <array>
@@ -19,6 +21,7 @@
 #include "deploydyn/constraints/constraint.hpp"
 #include "deploydyn/constraints/driven_bar_angle.hpp"
 #include "deploydyn/elements/element.hpp"
+#include "deploydyn/elements/switching_group.hpp"
 #include "deploydyn/model/dof_map.hpp"
 #include "deploydyn/model/model.hpp"
 
@@ -29,6 +32,9 @@ class Assembler {
   // Throws std::invalid_argument for a model whose mechanics cannot be built (e.g. a driven
   // bar along its rotation axis). Keeps a reference to `model`, which must outlive it.
   explicit Assembler(const Model& model);
+  // Not moved: its switched constraints refer back to it (history_in_force).
+  Assembler(Assembler&&) = delete;
+  Assembler& operator=(Assembler&&) = delete;
 
   const Model& model() const { return model_; }
   const DofMap& dof_map() const { return dofs_; }
@@ -76,20 +82,27 @@ class Assembler {
   void switched_constraint_force(const Eigen::VectorXd& q, double t, const Eigen::VectorXd& lambda,
                                  Eigen::VectorXd& f) const;
 
-  // The elements' history (ElementGroup::n_history), each group its slice of
-  // MotionState::history, in the order of element_groups().
+  // The elements' history (SwitchingGroup::n_history), each group its slice of
+  // MotionState::history, in the order of element_groups() (empty for a group that does not
+  // switch).
   int n_history() const { return n_history_; }
   Eigen::VectorXd initial_history() const;
   // (Empty when `history` is, as in a state no run has stepped: a group then reads its initial.)
   std::span<const double> history_slice(const Eigen::VectorXd& history, std::size_t group) const {
     if (history.size() != n_history_) return {};
-    return {history.data() + history_offset_[group], static_cast<std::size_t>(groups_[group]->n_history())};
+    return {history.data() + history_offset_[group], static_cast<std::size_t>(history_size_[group])};
   }
   std::span<double> history_slice(Eigen::VectorXd& history, std::size_t group) const {
-    return {history.data() + history_offset_[group], static_cast<std::size_t>(groups_[group]->n_history())};
+    return {history.data() + history_offset_[group], static_cast<std::size_t>(history_size_[group])};
   }
-  // Before every attempt at a step: the modes the step starts from (ElementGroup::use_history).
-  void use_history(const Eigen::VectorXd& history) const;
+  // Before every attempt at a step: the history whose modes the step runs with, kept (a copy)
+  // and given to the groups and their switched constraints in every evaluation until the next
+  // call. Until the first call, and after one with an empty history: every hinge free.
+  void use_history(const Eigen::VectorXd& history) const { history_in_force_ = history; }
+  // Group `group`'s slice of the history in force.
+  std::span<const double> history_in_force(std::size_t group) const {
+    return history_slice(history_in_force_, group);
+  }
   // After a converged step: the history at its end, the events (with the index of the group
   // each came from), and whether a mode switched so that the step must be redone.
   StepVerdict end_step(const StepEnds& ends, const Eigen::VectorXd& history_before,
@@ -145,7 +158,8 @@ class Assembler {
                        double thermal_factor, std::span<double> out) const {
     groups_[group]->results(element, {q, t, thermal_factor}, out);
   }
-  // The same at a state of a run: with its rates and the elements' history.
+  // The same at a state of a run: with its rates and the elements' history (this one, not the
+  // history in force).
   void element_results(int group, int element, const Eigen::VectorXd& q, const Eigen::VectorXd& v,
                        const Eigen::VectorXd& history, double t, std::span<double> out) const {
     groups_[group]->results(element, {q, t, 1.0, &v, history_slice(history, group)}, out);
@@ -180,6 +194,11 @@ class Assembler {
   // Φ and/or Bᵀλ (null: not wanted), one evaluation per constraint.
   void evaluate_constraints(const Eigen::VectorXd& q, double t, const Eigen::VectorXd* lambda,
                             Eigen::VectorXd* phi, Eigen::VectorXd* f) const;
+  // Where group `group` is evaluated: at the history in force.
+  EvaluationPoint point(std::size_t group, const Eigen::VectorXd& q, double t, double thermal_factor = 1.0,
+                        const Eigen::VectorXd* rates = nullptr) const {
+    return {q, t, thermal_factor, rates, history_in_force(group)};
+  }
   template <class Emit>
   void for_each_matrix_block(const Eigen::VectorXd& q, double t, const Eigen::VectorXd& lambda,
                              const MatrixWeights& weights, Emit&& emit) const;
@@ -195,8 +214,13 @@ class Assembler {
   int n_element_constraints_ = 0;  // constraints the element kinds brought
   int n_switched_equations_ = 0;   // rows of the groups' switched constraints (hinge locks)
   int n_matrix_entries_ = 0;
+  std::vector<const SwitchingGroup*> switching_;  // [group] → its switching half, or null
   std::vector<int> history_offset_;  // [group] → first entry in MotionState::history
+  std::vector<int> history_size_;    // [group] → its entries there
+  std::vector<int> switched_rows_;   // [group] → its switched constraints' first λ row
+  std::vector<int> n_switched_rows_;  // [group] → their rows
   int n_history_ = 0;
+  mutable Eigen::VectorXd history_in_force_;  // use_history
   double mass_scale_ = 1.0;
   std::unique_ptr<RayleighDampingForce> rayleigh_;  // when model.analysis.rayleigh has any
 };

@@ -18,8 +18,8 @@ std::vector<double> RayleighDampingForce::stiffness_values(const Groups& groups,
   for (std::size_t i = 0; i < identity.size(); ++i) identity[i] = static_cast<int>(i);
   const int* slot = identity.data();
   for (const auto& group : groups) {
-    group->add_iteration_matrix(q, t, 1.0, {.stiffness = 1.0, .mass = 0.0, .damping = 0.0, .rates = nullptr},
-                                values, slot);
+    // No rates: K alone, which no mode changes.
+    group->add_iteration_matrix({q, t, 1.0}, {.stiffness = 1.0, .mass = 0.0, .damping = 0.0}, values, slot);
   }
   return values;
 }

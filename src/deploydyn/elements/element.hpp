@@ -15,7 +15,10 @@
 // An element contributes, for  M q̈ + f_int(q, t) + Bᵀλ = f_ext(t)  (docs/theory.md):
 // f_int and its tangent K = ∂f_int/∂q (material + geometric), M, its weight, its strain
 // energy U with f_int = ∂U/∂q, and ∂f_int/∂(thermal factor) for path following in ΔT.
-// Every thermal strain is scaled by a `thermal_factor` (1 in a run).
+// Every thermal strain is scaled by a `thermal_factor` (1 in a run). Each call gets one
+// EvaluationPoint (configuration, rates, time, thermal factor, the group's history) and the
+// group keeps no state between calls. A type whose elements carry modes or a history from step
+// to step also implements SwitchingGroup (elements/switching_group.hpp).
 //
 // Adding a type: its folder elements/<type>/ with a kind and a group, one line in
 // elements/element_kinds.cpp, and its storage in Model (docs/adding-an-element.md).
@@ -32,6 +35,7 @@
 #include "deploydyn/model/matrix_entry.hpp"
 #include "deploydyn/constraints/constraint.hpp"
 #include "deploydyn/elements/element_entry.hpp"
+#include "deploydyn/elements/evaluation_point.hpp"
 
 namespace deploydyn {
 
@@ -63,46 +67,13 @@ struct ElementResults {
 };
 
 // Weights of an element's iteration-matrix block c_K K + c_D D + c_M M, where D = ∂f_d/∂q̇ is
-// the block of the forces f_d(q, q̇, t) that depend on the rates (dampers, friction).
+// the block of the forces f_d(q, q̇, t) that depend on the rates (dampers, friction), added
+// when the evaluation point gives the rates.
 struct TangentWeights {
   double stiffness = 1.0;  // c_K
   double mass = 0.0;       // c_M
   double damping = 0.0;    // c_D = ∂q̇/∂q of the integrator (γ/(β h) for Newmark)
-  const Eigen::VectorXd* rates = nullptr;  // q̇ at the iterate; null: static (no rate forces)
 };
-
-// Where an element's results are evaluated: a configuration, and when known its rates and
-// the group's history (its slice of MotionState::history).
-struct ResultPoint {
-  const Eigen::VectorXd& q;
-  double t = 0.0;
-  double thermal_factor = 1.0;
-  const Eigen::VectorXd* rates = nullptr;
-  std::span<const double> history = {};
-};
-
-// Something that happened to one element in a step: a latch locked, a cable went slack.
-struct ElementEvent {
-  double time_s = 0.0;
-  int element = 0;     // index within its type
-  std::string what;    // "slack", "taut", "latched", "stuck", "slipping", "stop", "released"
-  double value = 0.0;  // worth reporting with it: an angle (rad), a strain
-};
-
-// The two ends of a converged step, which a group with a history looks at.
-struct StepEnds {
-  double time_before_s = 0.0;
-  double time_after_s = 0.0;
-  const Eigen::VectorXd& q_before;
-  const Eigen::VectorXd& v_before;
-  const Eigen::VectorXd& q_after;
-  const Eigen::VectorXd& v_after;
-  const Eigen::VectorXd& lambda_after;
-  // False on the last attempt a step may have (ModeSwitchingStep's limit reached): the groups
-  // must accept it as it is, writing its history and switching nothing.
-  bool may_switch = true;
-};
-enum class StepVerdict { accept, redo };
 
 // An element as a lumped body that its environment heats (thermal/): indices into
 // Model::materials and Model::sections (−1: the element takes no section).
@@ -121,21 +92,18 @@ class ElementGroup {
   virtual int n_rigid_body_conditions() const = 0;
 
   // Each adds its elements' share into the global vector (which the caller has sized).
-  virtual void add_internal_force(const Eigen::VectorXd& q, double t, double thermal_factor,
-                                  Eigen::VectorXd& f) const = 0;
-  // ∂f_int/∂(thermal factor) at q and that factor: the same at every factor where f_int is
-  // linear in it (bars, beams), not for a cable, whose slack state depends on it.
-  virtual void add_thermal_force_derivative(const Eigen::VectorXd& q, double t,
-                                            double thermal_factor, Eigen::VectorXd& f) const = 0;
-  // ∂f_int/∂t at q through the rate of ΔT(t) (a quasi-static deployment in time).
-  virtual void add_thermal_force_rate(const Eigen::VectorXd& q, double t,
-                                      Eigen::VectorXd& f) const = 0;
+  virtual void add_internal_force(const EvaluationPoint& at, Eigen::VectorXd& f) const = 0;
+  // ∂f_int/∂(thermal factor) at the point: the same at every factor where f_int is linear in
+  // it (bars, beams), not for a cable, whose slack state depends on it.
+  virtual void add_thermal_force_derivative(const EvaluationPoint& at, Eigen::VectorXd& f) const = 0;
+  // ∂f_int/∂t at the point through the rate of ΔT(t) (a quasi-static deployment in time).
+  virtual void add_thermal_force_rate(const EvaluationPoint& at, Eigen::VectorXd& f) const = 0;
   virtual void add_mass_times(const Eigen::VectorXd& a, Eigen::VectorXd& out) const = 0;
   // The elements' own weight under gravity g (m/s²).
   virtual void add_weight(const Eigen::Vector3d& gravity_m_s2, Eigen::VectorXd& f) const = 0;
-  virtual double strain_energy(const Eigen::VectorXd& q, double t) const = 0;
-  // Largest |diagonal entry| of the elements' K at q (thermal factor 1): a scale, not a norm.
-  virtual double largest_stiffness_diagonal(const Eigen::VectorXd& q, double t) const = 0;
+  virtual double strain_energy(const EvaluationPoint& at) const = 0;
+  // Largest |diagonal entry| of the elements' K at the point: a scale, not a norm.
+  virtual double largest_stiffness_diagonal(const EvaluationPoint& at) const = 0;
   // How far the elements turn or deform between two configurations, as a share of their size
   // (the bar: max |Δ(x_b − x_a)| / L0): the static solver's load-step rule.
   virtual double largest_relative_change(const Eigen::VectorXd& q,
@@ -145,57 +113,23 @@ class ElementGroup {
   // add_iteration_matrix writes the values, one value per entry at values[*slot++].
   virtual int n_matrix_entries() const = 0;
   virtual void append_matrix_entries(std::vector<MatrixEntry>& entries) const = 0;
-  virtual void add_iteration_matrix(const Eigen::VectorXd& q, double t, double thermal_factor,
-                                    const TangentWeights& weights, std::span<double> values,
-                                    const int*& slot) const = 0;
+  // With the point's rates, also the rate forces' c_K ∂f_d/∂q + c_D ∂f_d/∂q̇.
+  virtual void add_iteration_matrix(const EvaluationPoint& at, const TangentWeights& weights,
+                                    std::span<double> values, const int*& slot) const = 0;
 
   // The quantities of ElementKind::quantities() of element `element`, in that order.
-  virtual void results(int element, const ResultPoint& at, std::span<double> out) const = 0;
+  virtual void results(int element, const EvaluationPoint& at, std::span<double> out) const = 0;
   // Reference length (m) of element `element`: a length scale for step rules and plots; 0 for
   // an element without a length of its own (a hinge between two beam nodes).
   virtual double reference_length_m(int element) const = 0;
 
+  // Forces that depend on the rates q̇, f_d(q, q̇, t) (dampers, sliding friction, material
+  // damping), added to f at a point that gives the rates. Their block goes into
+  // add_iteration_matrix. Statics has none (q̇ = 0). On every group, not only the switching
+  // ones: bars, beams and cables have material damping. Default: none.
   virtual bool has_rate_forces() const { return false; }
-  // Forces that depend on the rates q̇, f_d(q, q̇, t) (dampers, sliding friction): added to f.
-  // Their block c_K ∂f_d/∂q + c_D ∂f_d/∂q̇ goes into add_iteration_matrix when weights.rates is
-  // given. Statics has none (q̇ = 0). Default: none.
-  virtual void add_rate_force(const Eigen::VectorXd& q, const Eigen::VectorXd& v, double t,
-                              Eigen::VectorXd& f) const {
-    (void)q, (void)v, (void)t, (void)f;
-  }
-
-  // Constraints the group switches on and off between steps (a hinge's latch, end stop or
-  // sticking friction: Constraint::switchable), appended by the assembler after every other
-  // constraint, their rows starting at `first_row`. Default: none.
-  virtual std::vector<std::unique_ptr<Constraint>> make_switched_constraints(int first_row) const {
-    (void)first_row;
-    return {};
-  }
-
-  // History: what the elements carry from step to step (a hinge's mode and dissipated energy,
-  // a cable's slack state), doubles in MotionState::history, this group's slice of it.
-  virtual int n_history() const { return 0; }
-  virtual void initial_history(std::span<double> history) const { (void)history; }
-  // Before every attempt at a step: the history it starts from, whose modes the residual and
-  // matrix then use (a group keeps them in mutable members: evaluations are const).
-  virtual void use_history(std::span<const double> history) const { (void)history; }
-  // After a converged step: writes the history at its end into `after` (`before` at its start)
-  // and appends what happened to `events`. Returns redo when a mode switched inside the step
-  // (a latch reached): the step is then taken again from its start with `after` as its
-  // history, which must then differ from `before` only in the modes that switched, and
-  // `events` holds only the switches (so that nothing is counted twice).
-  virtual StepVerdict end_step(const StepEnds& ends, std::span<const double> before,
-                               std::span<double> after, std::vector<ElementEvent>& events) const {
-    (void)ends, (void)before, (void)events;
-    std::copy(before.begin(), before.end(), after.begin());
-    return StepVerdict::accept;
-  }
-  // Latches among its elements, and how many of them have locked in `history`: a run may end
-  // when all have (AnalysisOptions::end_when).
-  virtual int n_latches() const { return 0; }
-  virtual int n_latched(std::span<const double> history) const {
-    (void)history;
-    return 0;
+  virtual void add_rate_force(const EvaluationPoint& at, Eigen::VectorXd& f) const {
+    (void)at, (void)f;
   }
 };
 

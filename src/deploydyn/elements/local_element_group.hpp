@@ -58,25 +58,18 @@ class LocalElementGroup : public ElementGroup {
     return Element::kRigidBodyConditions * n_elements();
   }
 
-  void add_internal_force(const Eigen::VectorXd& q, double t, double thermal_factor,
-                          Eigen::VectorXd& f) const override {
+  void add_internal_force(const EvaluationPoint& at, Eigen::VectorXd& f) const override {
+    for (const Element& e : elements_) scatter(e, e.internal_force(evaluate(e, at)), f);
+  }
+
+  void add_thermal_force_derivative(const EvaluationPoint& at, Eigen::VectorXd& f) const override {
     for (const Element& e : elements_) {
-      scatter(e, e.internal_force(e.evaluate(gather(e, q), t, thermal_factor)), f);
+      scatter(e, e.thermal_force_derivative(evaluate(e, at), at.t), f);
     }
   }
 
-  void add_thermal_force_derivative(const Eigen::VectorXd& q, double t, double thermal_factor,
-                                    Eigen::VectorXd& f) const override {
-    for (const Element& e : elements_) {
-      scatter(e, e.thermal_force_derivative(e.evaluate(gather(e, q), t, thermal_factor), t), f);
-    }
-  }
-
-  void add_thermal_force_rate(const Eigen::VectorXd& q, double t,
-                              Eigen::VectorXd& f) const override {
-    for (const Element& e : elements_) {
-      scatter(e, e.thermal_force_rate(e.evaluate(gather(e, q), t, 1.0), t), f);
-    }
+  void add_thermal_force_rate(const EvaluationPoint& at, Eigen::VectorXd& f) const override {
+    for (const Element& e : elements_) scatter(e, e.thermal_force_rate(evaluate(e, at), at.t), f);
   }
 
   void add_mass_times(const Eigen::VectorXd& a, Eigen::VectorXd& out) const override {
@@ -90,16 +83,16 @@ class LocalElementGroup : public ElementGroup {
     for (const Element& e : elements_) scatter(e, e.weight(gravity_m_s2), f);
   }
 
-  double strain_energy(const Eigen::VectorXd& q, double t) const override {
+  double strain_energy(const EvaluationPoint& at) const override {
     double energy = 0.0;
-    for (const Element& e : elements_) energy += e.strain_energy(e.evaluate(gather(e, q), t, 1.0));
+    for (const Element& e : elements_) energy += e.strain_energy(evaluate(e, at));
     return energy;
   }
 
-  double largest_stiffness_diagonal(const Eigen::VectorXd& q, double t) const override {
+  double largest_stiffness_diagonal(const EvaluationPoint& at) const override {
     double largest = 0.0;
     for (const Element& e : elements_) {
-      const Matrix k = e.tangent(e.evaluate(gather(e, q), t, 1.0));
+      const Matrix k = e.tangent(evaluate(e, at));
       largest = std::max(largest, k.diagonal().cwiseAbs().maxCoeff());
     }
     return largest;
@@ -124,15 +117,14 @@ class LocalElementGroup : public ElementGroup {
     }
   }
 
-  void add_iteration_matrix(const Eigen::VectorXd& q, double t, double thermal_factor,
-                            const TangentWeights& w, std::span<double> values,
-                            const int*& slot) const override {
+  void add_iteration_matrix(const EvaluationPoint& at, const TangentWeights& w,
+                            std::span<double> values, const int*& slot) const override {
     for (const Element& e : elements_) {
-      const typename Element::State state = e.evaluate(gather(e, q), t, thermal_factor);
+      const typename Element::State state = evaluate(e, at);
       Matrix k = w.stiffness * e.tangent(state);
       if (w.mass != 0.0) k += w.mass * e.mass(mass_kind_);
       if constexpr (kDampable) {
-        if (w.rates != nullptr && e.damped()) k += e.damping_tangent(state, gather(e, *w.rates), w.stiffness, w.damping);
+        if (at.rates != nullptr && e.damped()) k += e.damping_tangent(state, gather(e, *at.rates), w.stiffness, w.damping);
       }
       for (int j = 0; j < kDofs; ++j) {
         for (int i = 0; i < kDofs; ++i) values[*slot++] += k(i, j);
@@ -142,18 +134,17 @@ class LocalElementGroup : public ElementGroup {
 
   bool has_rate_forces() const override { return damped_; }
 
-  void add_rate_force(const Eigen::VectorXd& q, const Eigen::VectorXd& v, double t,
-                      Eigen::VectorXd& f) const override {
+  void add_rate_force(const EvaluationPoint& at, Eigen::VectorXd& f) const override {
     if constexpr (kDampable) {
       for (const Element& e : elements_) {
-        if (e.damped()) scatter(e, e.damping_force(e.evaluate(gather(e, q), t, 1.0), gather(e, v)), f);
+        if (e.damped()) scatter(e, e.damping_force(evaluate(e, at), gather(e, *at.rates)), f);
       }
     }
   }
 
-  void results(int element, const ResultPoint& at, std::span<double> out) const override {
+  void results(int element, const EvaluationPoint& at, std::span<double> out) const override {
     const Element& e = elements_[element];
-    e.results(e.evaluate(gather(e, at.q), at.t, at.thermal_factor), out);
+    e.results(evaluate(e, at), out);
   }
 
   double reference_length_m(int element) const override {
@@ -162,6 +153,9 @@ class LocalElementGroup : public ElementGroup {
 
  protected:
   const std::vector<Element>& elements() const { return elements_; }
+  static typename Element::State evaluate(const Element& e, const EvaluationPoint& at) {
+    return e.evaluate(gather(e, at.q), at.t, at.thermal_factor);
+  }
   static Vector gather(const Element& e, const Eigen::VectorXd& x) {
     Vector local;
     for (int i = 0; i < kDofs; ++i) local[i] = x[e.dofs[i]];

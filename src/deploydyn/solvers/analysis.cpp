@@ -138,7 +138,7 @@ class WorkCounter {
   WorkTally tally_;
 };
 
-// One time step of elements with modes (ElementGroup::end_step): a latch, stop or sticking
+// One time step of elements with modes (SwitchingGroup::end_step): a latch, stop or sticking
 // hinge that switched inside the step has the step taken again from its start with the new
 // modes, at most kMaxSwitches times (then the step stands: a hinge chattering between stick
 // and slip). The events of the switches are kept until the step is accepted or dropped. In a
@@ -205,7 +205,7 @@ class ModeSwitchingStep {
     for (std::size_t i = 0; i < events_.size(); ++i) {
       const ElementKind& kind = *kinds[groups_[i]];
       out.push_back({events_[i].time_s, kind.element_name(assembler_.model(), events_[i].element),
-                     std::string(kind.name()), events_[i].what, events_[i].value});
+                     std::string(kind.name()), std::string(to_string(events_[i].kind)), events_[i].value});
     }
     drop_events();
   }

@@ -7,6 +7,7 @@
 #include "deploydyn/elements/cable/cable.hpp"
 #include "deploydyn/elements/cable/cable_entry.hpp"
 #include "deploydyn/elements/local_element_group.hpp"
+#include "deploydyn/elements/switching_group.hpp"
 #include "deploydyn/model/dof_map.hpp"
 #include "deploydyn/model/model.hpp"
 
@@ -110,7 +111,7 @@ constexpr ResultQuantity kQuantities[] = {
 // "taut" event with the mechanical strain at the step's end. The slack state is not a mode of
 // the residual (the law reads the state), so a step is never redone for it.
 template <int D>
-class CableGroup final : public LocalElementGroup<CableRecord<D>> {
+class CableGroup final : public LocalElementGroup<CableRecord<D>>, public SwitchingGroup {
  public:
   using LocalElementGroup<CableRecord<D>>::LocalElementGroup;
 
@@ -133,7 +134,8 @@ class CableGroup final : public LocalElementGroup<CableRecord<D>> {
       after[i] = now.slack ? kSlack : kTaut;
       if (now.slack != was_slack) {
         events.push_back(
-            {ends.time_after_s, e, now.slack ? "slack" : "taut", now.mechanical_strain});
+            {ends.time_after_s, e, now.slack ? ElementEventKind::slack : ElementEventKind::taut,
+             now.mechanical_strain});
       }
     }
     return StepVerdict::accept;

@@ -3,23 +3,15 @@
 #include <algorithm>
 #include <cmath>
 
+#include "deploydyn/elements/hinge/hinge_history.hpp"
 #include "deploydyn/elements/hinge/hinge_lock.hpp"
+#include "deploydyn/elements/hinge/hinge_quantities.hpp"
+#include "deploydyn/elements/switching_group.hpp"
 
 namespace deploydyn {
 namespace {
 
-// A hinge's history (MotionState::history), kHistorySlots doubles in this order.
-enum HistorySlot : int {
-  kMode,         // HingeMode
-  kLockAngle,    // θ_lock (rad) while locked
-  kSlip,         // direction of sliding friction: ±1, 0 before it first slides
-  kDissipated,   // energy dissipated so far (J): damper, friction, the lock engaging
-  kLockTorque,   // λ of the lock at the step's end (N·m, resisting θ growing); 0 when free
-  kLossTorque,   // damper + friction + lock torque at the step's end (resisting): the trapezoid's
-  kLatchedAt,    // time the latch locked (s); −1 before
-  kFrictionSwitched,  // 1 while the step under way is redone after this hinge stuck or slipped
-  kHistorySlots
-};
+using namespace hinge::history;
 
 double sign_of(double x) { return x > 0.0 ? 1.0 : (x < 0.0 ? -1.0 : 0.0); }
 
@@ -33,46 +25,49 @@ struct HingeTorques {
   double friction = 0.0;  // s μ r |N| while sliding
 };
 
-class HingeGroup final : public ElementGroup {
+class HingeGroup final : public ElementGroup, public SwitchingGroup {
  public:
   // `driven`: the model has drivers, whose prescribed motion a held or sticking hinge would
   // make redundant. Then hinges start free and friction slides without sticking; without
   // drivers (a spring-driven deployment) hinges start held, and friction sticks and slips.
   HingeGroup(std::vector<HingeRecord> records, std::vector<std::string> labels, bool driven)
-      : records_(std::move(records)), labels_(std::move(labels)), driven_(driven), lock_row_(records_.size(), -1) {
-    use_history({});  // free until a run gives its history: modes and paths see the springs
+      : records_(std::move(records)), labels_(std::move(labels)), driven_(driven), lock_index_(records_.size(), -1) {
+    int n_locks = 0;
+    for (std::size_t i = 0; i < records_.size(); ++i) {
+      if (records_[i].element->has_lock()) lock_index_[i] = n_locks++;
+    }
   }
 
   int n_elements() const override { return static_cast<int>(records_.size()); }
   int n_rigid_body_conditions() const override { return 0; }
 
-  void add_internal_force(const Eigen::VectorXd& q, double, double, Eigen::VectorXd& f) const override {
+  void add_internal_force(const EvaluationPoint& at, Eigen::VectorXd& f) const override {
     for (const HingeRecord& r : records_) {
       if (r.element->stiffness_Nm_per_rad == 0.0) continue;
-      const HingeKinematics k = r.kinematics(r.gather(q));
+      const HingeKinematics k = r.kinematics(r.gather(at.q));
       scatter(r, spring_torque(r, k.angle_rad) * k.gradient, f);
     }
   }
   // A hinge has no thermal strain (its pin force does, through its bar: friction, a rate force).
-  void add_thermal_force_derivative(const Eigen::VectorXd&, double, double, Eigen::VectorXd&) const override {}
-  void add_thermal_force_rate(const Eigen::VectorXd&, double, Eigen::VectorXd&) const override {}
+  void add_thermal_force_derivative(const EvaluationPoint&, Eigen::VectorXd&) const override {}
+  void add_thermal_force_rate(const EvaluationPoint&, Eigen::VectorXd&) const override {}
   void add_mass_times(const Eigen::VectorXd&, Eigen::VectorXd&) const override {}
   void add_weight(const Eigen::Vector3d&, Eigen::VectorXd&) const override {}
 
-  double strain_energy(const Eigen::VectorXd& q, double) const override {
+  double strain_energy(const EvaluationPoint& at) const override {
     double energy = 0.0;
     for (const HingeRecord& r : records_) {
       const double k = r.element->stiffness_Nm_per_rad;
       if (k == 0.0) continue;
-      const double twist = r.kinematics(r.gather(q)).angle_rad - r.element->rest_angle_rad;
+      const double twist = r.kinematics(r.gather(at.q)).angle_rad - r.element->rest_angle_rad;
       energy += 0.5 * k * twist * twist;
     }
     return energy;
   }
-  double largest_stiffness_diagonal(const Eigen::VectorXd& q, double) const override {
+  double largest_stiffness_diagonal(const EvaluationPoint& at) const override {
     double largest = 0.0;
     for (const HingeRecord& r : records_) {
-      const HingeKinematics k = r.kinematics(r.gather(q));
+      const HingeKinematics k = r.kinematics(r.gather(at.q));
       largest = std::max(largest, r.element->stiffness_Nm_per_rad * k.gradient.cwiseAbs2().maxCoeff());
     }
     return largest;
@@ -95,29 +90,29 @@ class HingeGroup final : public ElementGroup {
   //   K_spring = k (∇θ ∇θᵀ + (θ − θ_r) ∇²θ)
   //   damper   f = c θ̇ ∇θ:       ∂f/∂q = c (∇θ (∇²θ q̇)ᵀ + θ̇ ∇²θ),  ∂f/∂q̇ = c ∇θ ∇θᵀ
   //   friction f = s μ r |N| ∇θ:  ∂f/∂q = s μ r (∇θ ∇|N|ᵀ + |N| ∇²θ)
-  void add_iteration_matrix(const Eigen::VectorXd& q, double t, double, const TangentWeights& w,
-                            std::span<double> values, const int*& slot) const override {
+  void add_iteration_matrix(const EvaluationPoint& at, const TangentWeights& w, std::span<double> values,
+                            const int*& slot) const override {
     for (std::size_t i = 0; i < records_.size(); ++i) {
       const HingeRecord& r = records_[i];
       const HingeElement& e = *r.element;
       const int n = r.n_dofs();
-      const HingeVector q_local = r.gather(q);
+      const HingeVector q_local = r.gather(at.q);
       const HingeKinematics k = r.kinematics(q_local);
       HingeMatrix m = HingeMatrix::Zero(n, n);
       if (e.stiffness_Nm_per_rad != 0.0) {
         m += (w.stiffness * e.stiffness_Nm_per_rad) *
              (k.gradient * k.gradient.transpose() + (k.angle_rad - e.rest_angle_rad) * k.hessian);
       }
-      if (w.rates != nullptr && e.damping_Nms_per_rad != 0.0) {
-        const HingeVector rates = r.gather(*w.rates);
+      if (at.rates != nullptr && e.damping_Nms_per_rad != 0.0) {
+        const HingeVector rates = r.gather(*at.rates);
         const double angular_rate = k.gradient.dot(rates);
         m += (w.stiffness * e.damping_Nms_per_rad) *
              (k.gradient * (k.hessian * rates).transpose() + angular_rate * k.hessian);
         m += (w.damping * e.damping_Nms_per_rad) * k.gradient * k.gradient.transpose();
       }
-      if (w.rates != nullptr && sliding(i)) {
-        const PinForce p = r.pin_force(q_local, t);
-        const double scale = w.stiffness * modes_.slip[i] * e.friction_coefficient * e.pin_radius_m;
+      if (at.rates != nullptr && sliding(i, at)) {
+        const PinForce p = r.pin_force(q_local, at.t);
+        const double scale = w.stiffness * hinge_state(at.history, i).slip * e.friction_coefficient * e.pin_radius_m;
         m += scale * (k.gradient * p.gradient.transpose() + p.magnitude_N * k.hessian);
       }
       for (int col = 0; col < n; ++col) {
@@ -131,20 +126,21 @@ class HingeGroup final : public ElementGroup {
       return r.element->damping_Nms_per_rad > 0.0 || r.element->friction_coefficient > 0.0;
     });
   }
-  void add_rate_force(const Eigen::VectorXd& q, const Eigen::VectorXd& v, double t,
-                      Eigen::VectorXd& f) const override {
+  void add_rate_force(const EvaluationPoint& at, Eigen::VectorXd& f) const override {
     for (std::size_t i = 0; i < records_.size(); ++i) {
       const HingeRecord& r = records_[i];
-      if (r.element->damping_Nms_per_rad == 0.0 && !sliding(i)) continue;
-      const HingeVector q_local = r.gather(q);
+      const bool slides = sliding(i, at);
+      if (r.element->damping_Nms_per_rad == 0.0 && !slides) continue;
+      const HingeVector q_local = r.gather(at.q);
       const HingeKinematics k = r.kinematics(q_local);
-      const HingeTorques torques = rate_torques(r, k, q_local, r.gather(v), t, sliding(i) ? modes_.slip[i] : 0.0);
+      const double slip = slides ? hinge_state(at.history, i).slip : 0.0;
+      const HingeTorques torques = rate_torques(r, k, q_local, r.gather(*at.rates), at.t, slip);
       scatter(r, (torques.damper + torques.friction) * k.gradient, f);
     }
   }
 
   // angle, then the torques on θ in its opening direction (ElementKind::quantities).
-  void results(int element, const ResultPoint& at, std::span<double> out) const override {
+  void results(int element, const EvaluationPoint& at, std::span<double> out) const override {
     const HingeRecord& r = records_[static_cast<std::size_t>(element)];
     const std::span<const double> h = history_of(at.history, element);
     const HingeVector q_local = r.gather(at.q);
@@ -155,26 +151,25 @@ class HingeGroup final : public ElementGroup {
     HingeTorques torques = rate_torques(r, k, q_local, rates, at.t, slip);
     torques.spring = spring_torque(r, k.angle_rad);
     const double lock = h.empty() ? 0.0 : h[kLockTorque];
-    out[0] = k.angle_rad;
-    out[1] = -(torques.spring + torques.damper + torques.friction + lock);
-    out[2] = -torques.spring;
-    out[3] = -torques.damper;
-    out[4] = -torques.friction;
-    out[5] = -lock;
-    out[6] = r.pin_force(q_local, at.t).magnitude_N;
-    out[7] = h.empty() ? 0.0 : h[kDissipated];
-    out[8] = static_cast<double>(mode);
+    out[hinge::kAngle] = k.angle_rad;
+    out[hinge::kTorque] = -(torques.spring + torques.damper + torques.friction + lock);
+    out[hinge::kSpringTorque] = -torques.spring;
+    out[hinge::kDamperTorque] = -torques.damper;
+    out[hinge::kFrictionTorque] = -torques.friction;
+    out[hinge::kLockTorque] = -lock;
+    out[hinge::kPinForce] = r.pin_force(q_local, at.t).magnitude_N;
+    out[hinge::kDissipated] = h.empty() ? 0.0 : h[kDissipated];
+    out[hinge::kState] = static_cast<double>(mode);
   }
   double reference_length_m(int element) const override {
     return records_[static_cast<std::size_t>(element)].reference_length_m;
   }
 
-  std::vector<std::unique_ptr<Constraint>> make_switched_constraints(int first_row) const override {
-    std::vector<std::unique_ptr<Constraint>> locks;
+  // One per hinge with a latch, stops or friction, in the order of lock_index_.
+  std::vector<std::unique_ptr<SwitchedConstraint>> make_switched_constraints() const override {
+    std::vector<std::unique_ptr<SwitchedConstraint>> locks;
     for (std::size_t i = 0; i < records_.size(); ++i) {
-      if (!records_[i].element->has_lock()) continue;
-      lock_row_[i] = first_row + static_cast<int>(locks.size());
-      locks.push_back(std::make_unique<HingeLock>(records_[i], modes_, static_cast<int>(i), labels_[i]));
+      if (lock_index_[i] >= 0) locks.push_back(std::make_unique<HingeLock>(records_[i], static_cast<int>(i), labels_[i]));
     }
     return locks;
   }
@@ -189,19 +184,6 @@ class HingeGroup final : public ElementGroup {
       h[kLatchedAt] = -1.0;
     }
   }
-  // An empty history (no run): every hinge free, friction not sliding yet.
-  void use_history(std::span<const double> history) const override {
-    const std::size_t n = records_.size();
-    modes_.mode.assign(n, HingeMode::free);
-    modes_.lock_angle_rad.assign(n, 0.0);
-    modes_.slip.assign(n, 0.0);
-    for (std::size_t i = 0; i < n && !history.empty(); ++i) {
-      modes_.mode[i] = static_cast<HingeMode>(static_cast<int>(history[i * kHistorySlots + kMode]));
-      modes_.lock_angle_rad[i] = history[i * kHistorySlots + kLockAngle];
-      modes_.slip[i] = history[i * kHistorySlots + kSlip];
-    }
-  }
-
   StepVerdict end_step(const StepEnds& ends, std::span<const double> before, std::span<double> after,
                        std::vector<ElementEvent>& events) const override {
     std::copy(before.begin(), before.end(), after.begin());
@@ -253,10 +235,11 @@ class HingeGroup final : public ElementGroup {
     }
     return torques;
   }
-  // Whether hinge i slides with friction in the step under way.
-  bool sliding(std::size_t i) const {
-    return records_[i].element->friction_coefficient > 0.0 && modes_.mode[i] == HingeMode::free &&
-           modes_.slip[i] != 0.0;
+  // Whether hinge i slides with friction at `at` (in the step under way).
+  bool sliding(std::size_t i, const EvaluationPoint& at) const {
+    if (records_[i].element->friction_coefficient == 0.0) return false;
+    const HingeState s = hinge_state(at.history, i);
+    return s.mode == HingeMode::free && s.slip != 0.0;
   }
   std::span<const double> history_of(std::span<const double> history, int element) const {
     if (history.empty()) return {};
@@ -266,7 +249,8 @@ class HingeGroup final : public ElementGroup {
     for (int i = 0; i < r.n_dofs(); ++i) f[r.dofs[static_cast<std::size_t>(i)]] += local[i];
   }
   double lock_torque(std::size_t i, HingeMode mode, const StepEnds& ends) const {
-    return mode == HingeMode::free || lock_row_[i] < 0 ? 0.0 : ends.lambda_after[lock_row_[i]];
+    return mode == HingeMode::free || lock_index_[i] < 0 ? 0.0
+                                                         : ends.switched_multipliers[static_cast<std::size_t>(lock_index_[i])];
   }
 
   // The switch of hinge i at the end of a step, if any, into `after` and `events`.
@@ -276,7 +260,7 @@ class HingeGroup final : public ElementGroup {
     const HingeElement& e = *r.element;
     const auto mode = static_cast<HingeMode>(static_cast<int>(before[kMode]));
     const double t = ends.time_after_s;
-    const auto to = [&](HingeMode next, double lock_angle, const char* what, double value) {
+    const auto to = [&](HingeMode next, double lock_angle, ElementEventKind what, double value) {
       after[kMode] = static_cast<double>(next);
       after[kLockAngle] = lock_angle;
       events.push_back({t, static_cast<int>(i), what, value});
@@ -291,10 +275,10 @@ class HingeGroup final : public ElementGroup {
       case HingeMode::free: {
         if (e.latch_rad && crossed(angle0, angle1, *e.latch_rad)) {
           after[kLatchedAt] = t;
-          return to(HingeMode::latched, *e.latch_rad, "latched", *e.latch_rad);
+          return to(HingeMode::latched, *e.latch_rad, ElementEventKind::latched, *e.latch_rad);
         }
-        if (e.stop_min_rad && angle1 < *e.stop_min_rad) return to(HingeMode::stop_min, *e.stop_min_rad, "stop", *e.stop_min_rad);
-        if (e.stop_max_rad && angle1 > *e.stop_max_rad) return to(HingeMode::stop_max, *e.stop_max_rad, "stop", *e.stop_max_rad);
+        if (e.stop_min_rad && angle1 < *e.stop_min_rad) return to(HingeMode::stop_min, *e.stop_min_rad, ElementEventKind::stop, *e.stop_min_rad);
+        if (e.stop_max_rad && angle1 > *e.stop_max_rad) return to(HingeMode::stop_max, *e.stop_max_rad, ElementEventKind::stop, *e.stop_max_rad);
         const double slip = before[kSlip];
         // Once per step: a hinge that broke loose in this step slides to its end (measured on a
         // falling chain of 100 hinged bars: without it, hinges went back and forth between
@@ -306,7 +290,7 @@ class HingeGroup final : public ElementGroup {
             const double share = rate0 != rate1 ? std::clamp(rate0 / (rate0 - rate1), 0.0, 1.0) : 0.0;
             const double rest = angle0 + share * (angle1 - angle0);
             after[kFrictionSwitched] = 1.0;
-            return to(HingeMode::stuck, rest, "stuck", rest);
+            return to(HingeMode::stuck, rest, ElementEventKind::stuck, rest);
           }
         }
         return false;
@@ -316,19 +300,19 @@ class HingeGroup final : public ElementGroup {
         if (std::abs(lock) <= capacity || before[kFrictionSwitched] != 0.0) return false;
         after[kSlip] = sign_of(lock);  // it slides the way the lock was holding it from
         after[kFrictionSwitched] = 1.0;
-        return to(HingeMode::free, before[kLockAngle], "slipping", -lock);
+        return to(HingeMode::free, before[kLockAngle], ElementEventKind::slipping, -lock);
       }
       case HingeMode::stop_min:  // a stop only pushes: λ < 0 resists θ falling
         if (lock <= 0.0) return false;
         after[kSlip] = e.friction_coefficient > 0.0 ? 1.0 : 0.0;
-        return to(HingeMode::free, before[kLockAngle], "released", before[kLockAngle]);
+        return to(HingeMode::free, before[kLockAngle], ElementEventKind::released, before[kLockAngle]);
       case HingeMode::stop_max:
         if (lock >= 0.0) return false;
         after[kSlip] = e.friction_coefficient > 0.0 ? -1.0 : 0.0;
-        return to(HingeMode::free, before[kLockAngle], "released", before[kLockAngle]);
+        return to(HingeMode::free, before[kLockAngle], ElementEventKind::released, before[kLockAngle]);
       case HingeMode::held:  // released at t = 0: the first step again, free
         after[kSlip] = e.friction_coefficient > 0.0 ? sign_of(lock) : 0.0;
-        return to(HingeMode::free, before[kLockAngle], "released", -lock);
+        return to(HingeMode::free, before[kLockAngle], ElementEventKind::released, -lock);
       case HingeMode::latched:
         return false;
     }
@@ -366,10 +350,7 @@ class HingeGroup final : public ElementGroup {
   std::vector<HingeRecord> records_;
   std::vector<std::string> labels_;  // "hinge <name>", for messages
   bool driven_ = false;
-  // Set once, when the assembler takes the locks (make_switched_constraints is const).
-  mutable std::vector<int> lock_row_;  // [hinge] → its lock's row in λ, −1 without a lock
-  // The modes of the step under way (use_history); the locks read them.
-  mutable HingeModes modes_;
+  std::vector<int> lock_index_;  // [hinge] → its lock among make_switched_constraints(), −1 without
 };
 
 }  // namespace

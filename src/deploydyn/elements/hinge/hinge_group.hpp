@@ -3,7 +3,7 @@
 // force, the damper and sliding friction as rate forces, and one switched lock per hinge with a
 // latch, stops or friction. Its history per hinge: the mode (free, latched, at a stop,
 // sticking), the lock angle, the sliding direction and the energy dissipated. Between steps it
-// switches the modes (ElementGroup::end_step):
+// switches the modes (SwitchingGroup::end_step):
 //   free → latched       θ crossed the latch angle in the step: the step again, locked there
 //   free → at a stop     θ passed a stop: the step again, held at the stop
 //   free → sticking      θ̇ changed sign while sliding: the step again, held where θ̇ = 0

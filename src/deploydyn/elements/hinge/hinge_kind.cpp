@@ -2,28 +2,16 @@
 
 #include "deploydyn/elements/hinge/hinge_entry.hpp"
 #include "deploydyn/elements/hinge/hinge_group.hpp"
+#include "deploydyn/elements/hinge/hinge_quantities.hpp"
 #include "deploydyn/model/model.hpp"
 
 namespace deploydyn {
 namespace {
 
-// In the order HingeGroup::results writes them.
-constexpr ResultQuantity kQuantities[] = {
-    {"hinge_angle", "angle_rad", true},                // θ
-    {"hinge_torque", "torque_Nm", true},               // the sum of the four below
-    {"spring_torque", "spring_torque_Nm", true},       // k (θ_r − θ)
-    {"damper_torque", "damper_torque_Nm", true},       // −c θ̇
-    {"friction_torque", "friction_torque_Nm", true},   // −s μ r |N| while sliding
-    {"lock_torque", "lock_torque_Nm", true},           // latch, stop or sticking
-    {"pin_force", "pin_force_N", true},                // |N| of the bar A–H
-    {"dissipated", "dissipated_J", true},              // by damper, friction and the lock
-    {"hinge_state", "state", true},                    // 0 free, 1 latched, 2/3 at a stop, 4 sticking, 5 held
-};
-
 class HingeKind final : public ElementKind {
  public:
   std::string_view name() const override { return "hinge"; }
-  std::span<const ResultQuantity> quantities(int) const override { return kQuantities; }
+  std::span<const ResultQuantity> quantities(int) const override { return hinge::kQuantityTable; }
   int n_elements(const Model& model) const override { return static_cast<int>(model.hinges.size()); }
   const std::string& element_name(const Model& model, int element) const override {
     return model.hinges[static_cast<std::size_t>(element)].name;
@@ -42,7 +30,7 @@ class HingeKind final : public ElementKind {
   void add_node_unknowns(const Model&, std::vector<std::vector<std::string>>&) const override {}
   void set_initial_node_unknowns(const Model&, const DofMap&, Eigen::VectorXd&) const override {}
   std::vector<std::unique_ptr<Constraint>> make_constraints(const Model&, const DofMap&) const override {
-    return {};  // its locks are the group's (ElementGroup::make_switched_constraints)
+    return {};  // its locks are the group's (SwitchingGroup::make_switched_constraints)
   }
   std::span<const ElementField> fields() const override { return hinge::entry_fields(); }
   void read(const std::string& name, const ElementEntryReader& entry, Model& model) const override {

@@ -2,40 +2,40 @@
 
 namespace deploydyn {
 
-HingeLock::HingeLock(const HingeRecord& record, const HingeModes& modes, int hinge, std::string label)
-    : Constraint(1, record.dofs), record_(record), modes_(modes), hinge_(hinge), label_(std::move(label)) {}
+HingeLock::HingeLock(const HingeRecord& record, int hinge, std::string label)
+    : SwitchedConstraint(1, record.dofs), record_(record), hinge_(static_cast<std::size_t>(hinge)),
+      label_(std::move(label)) {}
 
-void HingeLock::evaluate(const Eigen::VectorXd& q, double /*t*/, Eigen::Ref<Eigen::VectorXd> phi,
+void HingeLock::evaluate(const EvaluationPoint& at, Eigen::Ref<Eigen::VectorXd> phi,
                          Eigen::Ref<Eigen::MatrixXd> jacobian) const {
-  if (!active()) {
+  const HingeState s = state(at);
+  if (s.mode == HingeMode::free) {
     phi.setZero();
     jacobian.setZero();
     return;
   }
-  const HingeKinematics k = record_.kinematics(record_.gather(q));
-  phi[0] = k.angle_rad - modes_.lock_angle_rad[static_cast<std::size_t>(hinge_)];
+  const HingeKinematics k = record_.kinematics(record_.gather(at.q));
+  phi[0] = k.angle_rad - s.lock_angle_rad;
   jacobian.row(0) = k.gradient.transpose();
 }
 
-void HingeLock::add_hessian_term(const Eigen::VectorXd& q, double /*t*/,
-                                 Eigen::Ref<const Eigen::VectorXd> lambda,
+void HingeLock::add_hessian_term(const EvaluationPoint& at, Eigen::Ref<const Eigen::VectorXd> lambda,
                                  Eigen::Ref<Eigen::MatrixXd> hessian) const {
-  if (!active()) return;
-  hessian += lambda[0] * record_.kinematics(record_.gather(q)).hessian;
+  if (!active(at.history)) return;
+  hessian += lambda[0] * record_.kinematics(record_.gather(at.q)).hessian;
 }
 
-void HingeLock::time_derivatives(const Eigen::VectorXd& q, const Eigen::VectorXd& v, double /*t*/,
-                                 Eigen::Ref<Eigen::VectorXd> phi_t,
+void HingeLock::time_derivatives(const EvaluationPoint& at, Eigen::Ref<Eigen::VectorXd> phi_t,
                                  Eigen::Ref<Eigen::VectorXd> bias) const {
   phi_t.setZero();  // θ_lock does not move
   bias.setZero();
-  if (!active()) return;
-  const HingeVector rates = record_.gather(v);
-  bias[0] = rates.dot(record_.kinematics(record_.gather(q)).hessian * rates);  // q̇ᵀ ∇²θ q̇
+  if (!active(at.history)) return;
+  const HingeVector rates = record_.gather(*at.rates);
+  bias[0] = rates.dot(record_.kinematics(record_.gather(at.q)).hessian * rates);  // q̇ᵀ ∇²θ q̇
 }
 
-std::string HingeLock::describe(int /*row*/) const {
-  switch (modes_.mode[static_cast<std::size_t>(hinge_)]) {
+std::string HingeLock::describe(int /*row*/, std::span<const double> history) const {
+  switch (hinge_state(history, hinge_).mode) {
     case HingeMode::latched: return label_ + " (latched)";
     case HingeMode::stop_min: return label_ + " (at its lower stop)";
     case HingeMode::stop_max: return label_ + " (at its upper stop)";

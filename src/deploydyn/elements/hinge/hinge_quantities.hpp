@@ -1,0 +1,38 @@
+#pragma once
+// The result quantities of a hinge, named once: the slot HingeGroup::results writes each into
+// and the table HingeKind::quantities gives the writers come from this one definition.
+
+#include <array>
+
+#include "deploydyn/elements/element.hpp"
+
+namespace deploydyn::hinge {
+
+enum Quantity : int {
+  kAngle,           // θ
+  kTorque,          // the sum of the four below
+  kSpringTorque,    // k (θ_r − θ)
+  kDamperTorque,    // −c θ̇
+  kFrictionTorque,  // −s μ r |N| while sliding
+  kLockTorque,      // latch, stop or sticking
+  kPinForce,        // |N| of the bar A–H
+  kDissipated,      // by damper, friction and the lock
+  kState,           // HingeMode: 0 free, 1 latched, 2/3 at a stop, 4 sticking, 5 held
+  kQuantities
+};
+
+inline constexpr std::array<ResultQuantity, kQuantities> kQuantityTable = [] {
+  std::array<ResultQuantity, kQuantities> table{};
+  table[kAngle] = {"hinge_angle", "angle_rad", true};
+  table[kTorque] = {"hinge_torque", "torque_Nm", true};
+  table[kSpringTorque] = {"spring_torque", "spring_torque_Nm", true};
+  table[kDamperTorque] = {"damper_torque", "damper_torque_Nm", true};
+  table[kFrictionTorque] = {"friction_torque", "friction_torque_Nm", true};
+  table[kLockTorque] = {"lock_torque", "lock_torque_Nm", true};
+  table[kPinForce] = {"pin_force", "pin_force_N", true};
+  table[kDissipated] = {"dissipated", "dissipated_J", true};
+  table[kState] = {"hinge_state", "state", true};
+  return table;
+}();
+
+}  // namespace deploydyn::hinge
