@@ -1,5 +1,5 @@
 """Reading a result folder: its history (history.csv) and its status, as the folder's files and
-its lock show them (docs/model-format.md, "Result folders"; src/deploydyn/output/result_folder.hpp).
+its lock show them (docs/model-format.md, "Result folders"; src/deploydyn/runs/result_folder.hpp).
 
 Pure Python (numpy only), without the C++ core: the package `deploydyn` re-exports what is
 public here, and scripts/deploydyn_plot.py, deploydyn_animate.py and plot_paper.py load this

@@ -14,6 +14,7 @@
 #include <string_view>
 #include <memory>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "deploydyn/assembly/linear_system.hpp"
@@ -101,7 +102,7 @@ class Assembler {
   void use_history(const Eigen::VectorXd& history) const { history_in_force_ = history; }
   // Group `group`'s slice of the history in force.
   std::span<const double> history_in_force(std::size_t group) const {
-    return history_slice(history_in_force_, group);
+    return history_slice(std::as_const(history_in_force_), group);
   }
   // After a converged step: the history at its end, the events (with the index of the group
   // each came from), and whether a mode switched so that the step must be redone.
@@ -182,7 +183,7 @@ class Assembler {
   int driver_row(int driver) const { return driver_rows_[driver]; }
   // What the supports apply to the structure, −λ of their rows: per support of the model, the
   // force (N) along each fixed axis, then the moment (N·m) on a fixed 2D rotation
-  // (output/history_layout.hpp names them). A 3D beam node's fixed frame reports none.
+  // (results/history_layout.hpp names them). A 3D beam node's fixed frame reports none.
   std::vector<double> support_reactions(const Eigen::VectorXd& lambda) const;
 
   // Plain words for constraint row `row`, e.g. "support D, y" or "driver motor".

@@ -1,7 +1,7 @@
 #pragma once
 // The member checks at every accepted step (docs/theory.md, "Member checks and the verdict"):
 // a RecordSink that wants every step, fed from the same records as the envelopes
-// (output/envelope.hpp), never only the output times. Per member and check it keeps the largest
+// (results/envelope.hpp), never only the output times. Per member and check it keeps the largest
 // utilization (1 = at capacity) with its time and element, and when it first exceeded 1; per
 // cable when and for how long it was slack; per driver with a limit its effort's utilization.
 // It reads the element results by their quantity names, through the element interface only.

@@ -48,7 +48,7 @@ struct ResultQuantity {
   std::string_view name;  // with its unit: VTK cell array, Python ("axial_force_N")
   bool recorded = true;   // written to history, summary and VTK; false: computed on request
   // In history.csv and summary.json unless the model's output selection asks otherwise
-  // (output/history_layout.hpp); envelopes.csv and VTK have every recorded quantity.
+  // (results/history_layout.hpp); envelopes.csv and VTK have every recorded quantity.
   bool by_default = true;
 };
 

@@ -275,7 +275,7 @@ struct AnalysisOptions {
   ModalSettings modal;                // type modal only
 };
 
-// What history.csv holds (output/history_layout.hpp resolves it; docs/model-format.md,
+// What history.csv holds (results/history_layout.hpp resolves it; docs/model-format.md,
 // "Choosing what history.csv holds"). Each list is empty when the model does not choose, and
 // then the default applies: everything for a small model, a reduced set for a large one.
 struct OutputSelection {

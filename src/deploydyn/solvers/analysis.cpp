@@ -302,7 +302,7 @@ RunReport run_analysis(const Assembler& assembler, RecordSink& sink, const RunCo
   const AnalysisOptions& options = assembler.model().analysis;
   RunReport report;
   if (options.type == AnalysisType::continuation || options.type == AnalysisType::modal) {
-    // A path or modes, not a history: output/path_to_folder.hpp and modes_to_folder.hpp run them.
+    // A path or modes, not a history: runs/path_to_folder.hpp and modes_to_folder.hpp run them.
     throw std::invalid_argument(fmt::format("run_analysis: analysis type {} writes {}; run it with run_to_folder",
                                             to_string(options.type),
                                             options.type == AnalysisType::modal ? "modes.csv" : "path.csv"));

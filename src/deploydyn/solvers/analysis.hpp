@@ -57,7 +57,7 @@ struct RunReport {
   int initial_iterations = 0;
   double wall_time_s = 0.0;
   std::vector<std::string> warnings;  // an aliasing output interval (solvers/output_sampling.hpp), implausible
-                                      // states reached (output/plausibility.hpp)
+                                      // states reached (results/plausibility.hpp)
   std::vector<std::string> notes;     // what the user should know of the results (a reduced history)
   std::vector<RunEvent> events;       // in time order
   int mode_switches = 0;              // steps taken again after a latch, stop or stick switched
