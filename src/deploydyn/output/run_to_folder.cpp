@@ -6,6 +6,7 @@
 #include <utility>
 #include <vector>
 
+#include "deploydyn/checks/clearance.hpp"
 #include "deploydyn/checks/member_checks.hpp"
 #include "deploydyn/output/background_sink.hpp"
 #include "deploydyn/output/envelope.hpp"
@@ -70,6 +71,8 @@ RunReport run_to_folder(const Model& model, const std::filesystem::path& folder,
   ResultFolder results(folder, model.output.summary_file);
   RunReport report;
   MemberChecks checks(model);
+  std::optional<ClearanceWatch> clearance;
+  if (model.checks.clearance) clearance.emplace(model);
   std::optional<OutputError> output_error;
   try {
     start_run_folder(results, model, run_files(model));
@@ -77,6 +80,7 @@ RunReport run_to_folder(const Model& model, const std::filesystem::path& folder,
     if (!history.layout().note().empty()) report.notes.push_back(history.layout().note());
     envelope = Envelope();
     std::vector<RecordSink*> sinks{&history, &envelope, &checks};
+    if (clearance) sinks.push_back(&*clearance);
     std::optional<VtkWriter> vtk;
     if (model.output.vtk) sinks.push_back(&vtk.emplace(folder / kVtkFolderName, model));
     std::optional<Hdf5Writer> hdf5;
@@ -114,7 +118,9 @@ RunReport run_to_folder(const Model& model, const std::filesystem::path& folder,
     output_error = error;
     record_output_failure(report, error);
   }
-  const Verdict run_verdict = make_verdict(model, checks, report);
+  const std::optional<ClearanceReport> clearance_report =
+      clearance ? std::optional(clearance->report()) : std::nullopt;
+  const Verdict run_verdict = make_verdict(model, checks, report, clearance_report ? &*clearance_report : nullptr);
   if (verdict) *verdict = run_verdict;
   std::string summary = summary_json(model, envelope, report, &run_verdict);
   if (coupling) {
