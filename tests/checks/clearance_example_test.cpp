@@ -44,10 +44,11 @@ TEST(ClearanceExample, ArmPassesThroughItsBraceAtTheClosedFormTime) {
   EXPECT_EQ(failure["members"], ordered_json({"arm", "brace"}));
   // The gap of the tip to the brace's axis, less both radii (15 and 10 mm), is cos θ + 0.375 m:
   // it is the required 10 mm at cos θ = −0.365. The arm is a stiff bar on an exact driver, so
-  // the solver's motion is the profile's; (C2) interpolates over a 1 ms step.
+  // the solver's motion is the profile's; (C2) interpolates over the 10 ms between measured
+  // steps, where the gap's curvature (≈ 2 m/s²) allows ≈ 2e-5 s.
   const double lost_s = arm_time_at(std::acos(-0.365));
   EXPECT_NEAR(lost_s, 1.65509, 1e-5);
-  EXPECT_NEAR(failure["time_s"].get<double>(), lost_s, 1e-5);
+  EXPECT_NEAR(failure["time_s"].get<double>(), lost_s, 1e-4);
   // From θ = acos(−0.4) on, the axes cross: the tubes overlap by both radii.
   const ordered_json& clearance = verdict["clearance"];
   EXPECT_NEAR(clearance["min_m"].get<double>(), -0.025, 1e-9);
@@ -85,8 +86,10 @@ TEST(ClearanceExample, ParallelLinkageKeepsDeployingWithItsPostsClosestAtTheStar
   EXPECT_EQ(clearance.n_members, 3);
   ASSERT_EQ(clearance.closest.size(), 1u);  // the chord shares a node with each post
   const double b_to_d_m = std::hypot(0.357 - 0.286904073050423, 0.0251008539113255);
-  EXPECT_NEAR(clearance.closest[0].min_distance_m, b_to_d_m - 2.0 * std::sqrt(4.64e-5 / std::numbers::pi), 1e-6);
-  EXPECT_NEAR(clearance.closest[0].time_s, 0.0, 1e-12);
+  // The motor starts from rest: the first few steps keep that distance to round-off (and 1e-11 m
+  // of strain), so the least may be at any of them.
+  EXPECT_NEAR(clearance.closest[0].min_distance_m, b_to_d_m - 2.0 * std::sqrt(4.64e-5 / std::numbers::pi), 1e-9);
+  EXPECT_LE(clearance.closest[0].time_s, 0.01 + 1e-12);
   EXPECT_TRUE(clearance.violations.empty());
 }
 

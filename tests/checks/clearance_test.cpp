@@ -81,34 +81,45 @@ TEST(Clearance, TurningBarPassesAtTheClosedFormClearanceAndTime) {
   EXPECT_NEAR(closest_m, 0.0918034, 1e-7);  // the hand calculation
   EXPECT_DOUBLE_EQ(capsule_radius(model, MemberKind::bar, 0), kRadius);
 
-  // Steps that meet θ = 0: the sampled minimum is the closed form, to round-off.
+  // Measured records (every kStepsPerClearanceQuery-th of steps of 10 ms) that meet θ = 0: the
+  // sampled minimum is the closed form, to round-off.
+  static_assert(kStepsPerClearanceQuery == 10, "the sampling below assumes it");
   const ClearanceReport exact = watch(model, 0.01, 1.0, turn);
   ASSERT_TRUE(exact.applies);
   EXPECT_EQ(exact.n_members, 2);
-  EXPECT_EQ(exact.n_records, 101);
+  EXPECT_EQ(exact.n_records, 11);
   ASSERT_EQ(exact.closest.size(), 1u);
   EXPECT_EQ(exact.closest[0].member_a, "turning");
   EXPECT_EQ(exact.closest[0].member_b, "fixed");
   EXPECT_NEAR(exact.closest[0].min_distance_m, closest_m, 1e-12);
   EXPECT_NEAR(exact.closest[0].time_s, 0.5, 1e-12);
   EXPECT_TRUE(exact.violations.empty());  // no required clearance, and no overlap
-  // (C3): the tip's speed ω L times the step.
+  // (C3): the tip's speed ω L times the time between measured records.
   ASSERT_TRUE(exact.between_steps_m);
-  EXPECT_NEAR(*exact.between_steps_m, kOmega * kLength * 0.01, 1e-12);
+  EXPECT_NEAR(*exact.between_steps_m, kOmega * kLength * 0.1, 1e-12);
 
-  // Steps that straddle it: the sampled minimum lies above the true one by no more than the
-  // bound, at the step nearest to t = ½.
+  // Measured records that straddle it (every 0.13 s): the sampled minimum lies above the true one
+  // by no more than the bound, at the measured record nearest to t = ½.
   const ClearanceReport sampled = watch(model, 0.013, 1.0, turn);
   ASSERT_EQ(sampled.closest.size(), 1u);
   EXPECT_GT(sampled.closest[0].min_distance_m, closest_m);
   EXPECT_LE(sampled.closest[0].min_distance_m - closest_m, *sampled.between_steps_m);
-  EXPECT_NEAR(sampled.closest[0].time_s, 0.494, 1e-12);  // 38 × 0.013, the nearest of the steps
+  EXPECT_NEAR(sampled.closest[0].time_s, 0.52, 1e-12);  // 40 × 0.013
 }
 
 // A fixed bar along x from (0, 0) to (1, 0); a bar across it from (0.5, 1) to (0.5, 2) moves
 // down at 1 m/s. Radii 10 mm: the clearance is 0.98 − t (m).
 constexpr const char* kApproach = R"(
 nodes: {A: [0, 0], B: [1, 0], C: [0.5, 1], D: [0.5, 2]}
+materials: {steel: {E: 2.0e11, density: 7850}}
+sections: {rod: {shape: circle, diameter: 0.02}}
+elements:
+  beam_a: {nodes: [A, B], section: rod, material: steel}
+  bar_b: {nodes: [C, D], section: rod, material: steel}
+)";
+
+constexpr const char* kApproach3d = R"(
+nodes: {A: [0, 0, 0], B: [1, 0, 0], C: [0.5, 1, 0], D: [0.5, 2, 0]}
 materials: {steel: {E: 2.0e11, density: 7850}}
 sections: {rod: {shape: circle, diameter: 0.02}}
 elements:
@@ -125,12 +136,13 @@ void descend(double t, const std::string& node, Eigen::Vector3d& x, Eigen::Vecto
 TEST(Clearance, RequiredClearanceIsPassedAtTheTimeItsLineGives) {
   Model model = load_model_from_string(kApproach, "approach.yaml");
   model.checks.required_clearance_m = 0.1;
-  const ClearanceReport report = watch(model, 0.05, 1.2, descend);
+  const ClearanceReport report = watch(model, 0.005, 1.2, descend);
   ASSERT_EQ(report.violations.size(), 1u);
   const ClearancePair& violation = report.violations[0];
   EXPECT_EQ(violation.member_a, "beam_a");
   EXPECT_EQ(violation.member_b, "bar_b");
-  // 0.98 − t = 0.1 at t = 0.88, between the steps at 0.85 and 0.9: linear, so exact.
+  // Steps of 5 ms, measured every 50 ms. 0.98 − t = 0.1 at t = 0.88, between the measured steps
+  // at 0.85 and 0.9: linear, so exact.
   EXPECT_NEAR(violation.first_violation_s, 0.88, 1e-9);
   // At the end the rod has passed into the bar: an overlap of 0.22 m, FCL's signed distance.
   EXPECT_NEAR(violation.min_distance_m, 0.98 - 1.2, 1e-9);
@@ -154,17 +166,29 @@ TEST(Clearance, RequiredClearanceIsPassedAtTheTimeItsLineGives) {
   EXPECT_NEAR(j["clearance"]["min_m"].get<double>(), -0.22, 1e-9);
 
   // Stopped before the overlap: too close, but no clash.
-  const ClearanceReport close = watch(model, 0.05, 0.95, descend);
+  const ClearanceReport close = watch(model, 0.005, 0.95, descend);
   ASSERT_EQ(close.violations.size(), 1u);
   EXPECT_NEAR(close.violations[0].min_distance_m, 0.98 - 0.95, 1e-9);
   EXPECT_EQ(make_verdict(model, checks, RunReport{}, &close).first_failure->check, kClearance);
 
-  // Without a required clearance only an overlap fails: from 0.98 − t = 0.
+  // Without a required clearance a planar model's overlap is reported, not a violation: its
+  // members may lie in different planes.
   model.checks.required_clearance_m.reset();
-  const ClearanceReport overlap = watch(model, 0.05, 1.2, descend);
+  const ClearanceReport planar = watch(model, 0.005, 1.2, descend);
+  EXPECT_FALSE(planar.watches_violations);
+  EXPECT_TRUE(planar.violations.empty());
+  ASSERT_EQ(planar.closest.size(), 1u);
+  EXPECT_NEAR(planar.closest[0].min_distance_m, 0.98 - 1.2, 1e-9);
+  EXPECT_TRUE(make_verdict(model, checks, RunReport{}, &planar).deploys);
+
+  // In 3D an overlap is a clash, from 0.98 − t = 0.
+  const Model spatial = load_model_from_string(kApproach3d, "approach3d.yaml");
+  const ClearanceReport overlap = watch(spatial, 0.005, 1.2, descend);
+  EXPECT_TRUE(overlap.watches_violations);
   ASSERT_EQ(overlap.violations.size(), 1u);
   EXPECT_NEAR(overlap.violations[0].first_violation_s, 0.98, 1e-9);
-  EXPECT_TRUE(watch(model, 0.05, 0.95, descend).violations.empty());
+  EXPECT_EQ(make_verdict(spatial, MemberChecks(spatial), RunReport{}, &overlap).first_failure->check, kClash);
+  EXPECT_TRUE(watch(spatial, 0.005, 0.95, descend).violations.empty());
 }
 
 TEST(Clearance, PairsThatShareANodeOrAPinJointAreNotMeasured) {

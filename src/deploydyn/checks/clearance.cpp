@@ -28,6 +28,9 @@ constexpr double kInfinity = std::numeric_limits<double>::infinity();
 // boxes are 0 apart: the threshold stays above the limit by this much (m), so that every pair
 // below the limit, overlapping ones too, is measured.
 constexpr double kThresholdMargin_m = 1e-9;
+// The tree of boxes is rebuilt at every this many records and refitted at the others
+// (docs/performance.md, "Clearance").
+constexpr int kRecordsPerRebuild = 50;
 
 int find_root(std::vector<int>& parent, int i) {
   while (parent[static_cast<std::size_t>(i)] != i) {
@@ -162,10 +165,12 @@ struct ClearanceWatch::State {
   std::vector<std::array<int, 2>> node_first;  // per node: q index of x, and how many coordinates
   bool applies = false;
   std::optional<double> required_m;
+  bool watches_violations = false;  // ClearanceReport::watches_violations
   double limit_m = 0.0;  // closer than this violates: the required clearance, else 0 (overlap)
 
   std::vector<std::shared_ptr<fcl::Capsuled>> shapes;
   std::vector<std::unique_ptr<fcl::CollisionObjectd>> objects;
+  std::vector<fcl::CollisionObjectd*> registered;  // objects, as the manager takes them
   fcl::DynamicAABBTreeCollisionManagerd manager;
 
   std::unordered_map<std::uint64_t, PairState> pairs;
@@ -173,10 +178,11 @@ struct ClearanceWatch::State {
   std::vector<std::uint64_t> violations;  // in the order they first violated
   std::unordered_set<std::uint64_t> overlapping_at_start;
   std::vector<std::pair<std::uint64_t, double>> start_overlaps;  // key and distance at the start
-  int n_records = 0;
+  int n_records = 0;  // measured
+  int n_seen = 0;     // every record
   double time_s = 0.0;
   double previous_time_s = 0.0;
-  double previous_speed_m_s = 0.0;
+  double largest_speed_m_s = 0.0;  // since the last measured record, it included
   double between_steps_m = 0.0;
   double evaluation_time_s = 0.0;
 
@@ -190,7 +196,7 @@ struct ClearanceWatch::State {
   // pairs, once there are enough, and never below the limit, so that every violation is seen.
   double threshold() const {
     const double worst = closest.size() < kClosestPairs ? kInfinity : pairs.at(closest.back()).min_distance_m;
-    return std::max(worst, limit_m + kThresholdMargin_m);
+    return std::max(worst, (watches_violations ? limit_m : 0.0) + kThresholdMargin_m);
   }
 
   void take_closest(std::uint64_t k) {
@@ -238,7 +244,7 @@ struct ClearanceWatch::State {
       pair.time_s = time_s;
       take_closest(k);
     }
-    if (!pair.violated && distance_m < limit_m) {  // (C2); linear from the record before when it was measured
+    if (watches_violations && !pair.violated && distance_m < limit_m) {  // (C2); linear from the record before when it was measured
       pair.violated = true;
       const double before_m = pair.previous_distance_m;
       pair.first_violation_s = std::isfinite(before_m) && before_m >= limit_m && n_records > 0
@@ -298,7 +304,15 @@ struct ClearanceWatch::State {
       objects[c]->setTransform(frame);
       objects[c]->computeAABB();
     }
-    manager.update();
+    // Refitting keeps the tree's topology, which a deployment's large motion makes poor (boxes
+    // that were neighbours folded are far apart deployed): rebuilt from the boxes now and then.
+    if (n_records % kRecordsPerRebuild == 0) {
+      manager.clear();
+      manager.registerObjects(registered);
+      manager.setup();
+    } else {
+      manager.update();
+    }
   }
 };
 
@@ -308,6 +322,7 @@ ClearanceWatch::ClearanceWatch(const Model& model) : state_(std::make_unique<Sta
   s.dynamic = model.analysis.type == AnalysisType::dynamic;
   s.required_m = model.checks.required_clearance_m;
   s.limit_m = s.required_m.value_or(0.0);
+  s.watches_violations = s.required_m.has_value() || model.dimension == 3;
   const std::vector<CheckedMember> members = checked_members(model);
   s.joints = member_joints(model, members);
   s.applies = any_pair_apart(s.joints);
@@ -315,7 +330,6 @@ ClearanceWatch::ClearanceWatch(const Model& model) : state_(std::make_unique<Sta
   const DofMap dofs(model);
   for (int n = 0; n < model.n_nodes(); ++n) s.node_first.push_back({dofs.index(n, 0), model.dimension});
   if (!s.applies) return;
-  std::vector<fcl::CollisionObjectd*> registered;
   for (std::size_t m = 0; m < members.size(); ++m) {
     for (const CheckedElement& e : members[m].elements) {
       const int capsule = static_cast<int>(s.capsules.size());
@@ -323,17 +337,10 @@ ClearanceWatch::ClearanceWatch(const Model& model) : state_(std::make_unique<Sta
       s.shapes.push_back(std::make_shared<fcl::Capsuled>(capsule_radius(model, members[m].kind, e.element), 0.0));
       s.objects.push_back(std::make_unique<fcl::CollisionObjectd>(s.shapes.back()));
       s.objects.back()->setUserData(reinterpret_cast<void*>(static_cast<std::intptr_t>(capsule)));
-      registered.push_back(s.objects.back().get());
+      s.registered.push_back(s.objects.back().get());
     }
   }
-  Eigen::VectorXd initial = Eigen::VectorXd::Zero(dofs.n_dofs());
-  for (int n = 0; n < model.n_nodes(); ++n) {
-    for (int i = 0; i < model.dimension; ++i) initial[dofs.index(n, i)] = model.nodes[static_cast<std::size_t>(n)].position_m[i];
-  }
-  for (std::size_t c = 0; c < s.objects.size(); ++c) s.objects[c]->computeAABB();
-  s.manager.registerObjects(registered);
-  s.manager.setup();
-  s.move_capsules(initial);
+  // The manager takes the capsules at the first record, placed (move_capsules).
 }
 
 ClearanceWatch::~ClearanceWatch() = default;
@@ -342,18 +349,18 @@ void ClearanceWatch::record(const StepRecord& r) {
   State& s = *state_;
   if (!s.applies) return;
   const auto start = std::chrono::steady_clock::now();
-  s.time_s = r.time_s;
-  s.move_capsules(r.q);
-  s.manager.distance(&s, &State::visit);
-  if (s.n_records == 0) s.forget_start_overlaps();
-  // (C3): no pair came closer between the records than sampled by more than this.
-  const double speed_m_s = s.largest_speed(r.v);
-  if (s.n_records > 0) {
-    s.between_steps_m = std::max(s.between_steps_m, std::max(speed_m_s, s.previous_speed_m_s) * (r.time_s - s.previous_time_s));
+  // (C3): the fastest node since the last measured record bounds what the records skipped.
+  s.largest_speed_m_s = std::max(s.largest_speed_m_s, s.largest_speed(r.v));
+  if (s.n_seen++ % kStepsPerClearanceQuery == 0) {
+    s.time_s = r.time_s;
+    s.move_capsules(r.q);
+    s.manager.distance(&s, &State::visit);
+    if (s.n_records == 0) s.forget_start_overlaps();
+    if (s.n_records > 0) s.between_steps_m = std::max(s.between_steps_m, s.largest_speed_m_s * (r.time_s - s.previous_time_s));
+    s.largest_speed_m_s = s.largest_speed(r.v);
+    s.previous_time_s = r.time_s;
+    ++s.n_records;
   }
-  s.previous_speed_m_s = speed_m_s;
-  s.previous_time_s = r.time_s;
-  ++s.n_records;
   s.evaluation_time_s += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
@@ -364,6 +371,7 @@ ClearanceReport ClearanceWatch::report() const {
   report.n_members = static_cast<int>(s.member_names.size());
   report.n_capsules = static_cast<int>(s.capsules.size());
   report.required_m = s.required_m;
+  report.watches_violations = s.watches_violations;
   report.n_records = s.n_records;
   const auto pair_of = [&](std::uint64_t k) {
     const State::PairState& p = s.pairs.at(k);

@@ -56,14 +56,20 @@ void take_overview(CheckOverview& o, const CheckHistory& h, const std::string& m
   if (h.exceeded) ++o.n_exceeded;
 }
 
-std::string failure_sentence(const VerdictFailure& f) {
+std::string failure_sentence(const VerdictFailure& f, std::optional<double> required_clearance_m) {
   if (f.pair) {
-    return fmt::format("members '{}' and '{}' {} at t = {:.6g} s (least clearance {:.4g} m at t = {:.6g} s; members "
-                       "are not stopped by each other)",
-                       f.pair->member_a, f.pair->member_b,
-                       f.check == kClash ? "pass through each other (clash), too close from"
-                                         : "come closer than the required clearance",
-                       f.time_s, f.pair->min_distance_m, f.pair->time_s);
+    const ClearancePair& p = *f.pair;
+    if (f.check == kClash) {
+      return fmt::format("members '{}' and '{}' pass through each other (clash){} t = {:.6g} s, overlapping by up to "
+                         "{:.4g} m (at t = {:.6g} s); members are not stopped by each other",
+                         p.member_a, p.member_b,
+                         required_clearance_m ? fmt::format(": closer than the required {:g} m at", *required_clearance_m)
+                                              : " at",
+                         f.time_s, -p.min_distance_m, p.time_s);
+    }
+    return fmt::format("members '{}' and '{}' come closer than the required {:g} m at t = {:.6g} s (least clearance "
+                       "{:.4g} m at t = {:.6g} s)",
+                       p.member_a, p.member_b, required_clearance_m.value_or(0.0), f.time_s, p.min_distance_m, p.time_s);
   }
   if (f.check == "run") return fmt::format("the run failed at t = {:.6g} s: {}", f.time_s, f.message);
   if (f.check == name(CheckKind::cable_slack)) {
@@ -94,6 +100,7 @@ ordered_json clearance_json(const ClearanceReport& c) {
   j["members"] = c.n_members;
   j["capsules"] = c.n_capsules;
   j["required_m"] = c.required_m ? ordered_json(*c.required_m) : ordered_json(nullptr);
+  j["overlap_fails"] = c.watches_violations;
   if (c.closest.empty()) {
     j["min_m"] = nullptr;
   } else {
@@ -212,7 +219,7 @@ Verdict make_verdict(const Model& model, const MemberChecks& checks, const RunRe
   }
   v.deploys = report.status == RunStatus::completed && !v.first_failure;
   if (v.first_failure) {
-    v.reason = failure_sentence(*v.first_failure);
+    v.reason = failure_sentence(*v.first_failure, v.clearance ? v.clearance->required_m : std::nullopt);
   } else if (report.status == RunStatus::interrupted) {
     v.reason = fmt::format("the run was interrupted at t = {:.6g} s, before its end: not shown to deploy",
                            report.time_reached_s);
@@ -326,10 +333,16 @@ std::vector<std::string> verdict_lines(const Verdict& v) {
   if (v.clearance && !v.clearance->closest.empty()) {
     const ClearanceReport& c = *v.clearance;
     const ClearancePair& p = c.closest.front();
-    lines.push_back(fmt::format("  clearance: least {:.4g} m between '{}' and '{}' at t = {:.4g} s{}{}", p.min_distance_m,
+    const bool unchecked_overlap = p.min_distance_m < 0.0 && !c.watches_violations;
+    lines.push_back(fmt::format("  clearance: least {:.4g} m between '{}' and '{}' at t = {:.4g} s{}{}{}", p.min_distance_m,
                                 p.member_a, p.member_b, p.time_s,
                                 c.required_m ? fmt::format(" (required {:.4g} m)", *c.required_m) : "",
-                                c.violations.empty() ? "" : fmt::format("; {} pairs too close", c.violations.size())));
+                                unchecked_overlap ? " (an overlap: not a failure in a planar model without "
+                                                    "checks.clearance_m, its members may lie in different planes)"
+                                                  : "",
+                                c.violations.empty() ? ""
+                                : fmt::format("; {} {} too close", c.violations.size(),
+                                              c.violations.size() == 1 ? "pair" : "pairs")));
   }
   return lines;
 }
