@@ -144,9 +144,9 @@ TEST(Clearance, RequiredClearanceIsPassedAtTheTimeItsLineGives) {
   // Steps of 5 ms, measured every 50 ms. 0.98 − t = 0.1 at t = 0.88, between the measured steps
   // at 0.85 and 0.9: linear, so exact.
   EXPECT_NEAR(violation.first_violation_s, 0.88, 1e-9);
-  // At the end the rod has passed into the bar: an overlap of 0.22 m, FCL's signed distance.
-  EXPECT_NEAR(violation.min_distance_m, 0.98 - 1.2, 1e-9);
-  EXPECT_NEAR(violation.time_s, 1.2, 1e-12);
+  // From t = 1 on the rod's axis crosses the bar's: FCL's signed distance is minus both radii.
+  EXPECT_NEAR(violation.min_distance_m, -0.02, 1e-9);
+  EXPECT_GE(violation.time_s, 1.0 - 1e-9);  // any step from then on, to round-off
 
   // The verdict: a clash (they overlapped), first failing when the clearance was passed.
   const MemberChecks checks(model);
@@ -163,7 +163,7 @@ TEST(Clearance, RequiredClearanceIsPassedAtTheTimeItsLineGives) {
   const nlohmann::ordered_json j = verdict_json(verdict);
   EXPECT_EQ(j["first_failure"]["check"], "clash");
   EXPECT_EQ(j["clearance"]["violations"].size(), 1u);
-  EXPECT_NEAR(j["clearance"]["min_m"].get<double>(), -0.22, 1e-9);
+  EXPECT_NEAR(j["clearance"]["min_m"].get<double>(), -0.02, 1e-9);
 
   // Stopped before the overlap: too close, but no clash.
   const ClearanceReport close = watch(model, 0.005, 0.95, descend);
@@ -178,7 +178,7 @@ TEST(Clearance, RequiredClearanceIsPassedAtTheTimeItsLineGives) {
   EXPECT_FALSE(planar.watches_violations);
   EXPECT_TRUE(planar.violations.empty());
   ASSERT_EQ(planar.closest.size(), 1u);
-  EXPECT_NEAR(planar.closest[0].min_distance_m, 0.98 - 1.2, 1e-9);
+  EXPECT_NEAR(planar.closest[0].min_distance_m, -0.02, 1e-9);
   EXPECT_TRUE(make_verdict(model, checks, RunReport{}, &planar).deploys);
 
   // In 3D an overlap is a clash, from 0.98 − t = 0.
@@ -216,7 +216,7 @@ materials: {steel: {E: 2.0e11, density: 7850}}
 elements:
   a: {nodes: [A, B], area: 1.0e-4, material: steel}
   b: {nodes: [C, D], area: 1.0e-4, material: steel}
-joints: {pin: {nodes: [B, C]}}
+joints: {pin: {type: pin, nodes: [B, C]}}
 )";
   EXPECT_FALSE(clearance_applies(load_model_from_string(pinned, "pinned.yaml")));
   EXPECT_FALSE(watch(load_model_from_string(pinned, "pinned.yaml"), 1.0, 1.0, kAtRest).applies);
