@@ -28,7 +28,7 @@ if(NOT libraries OR NOT configs)
 endif()
 run_step("installed command" ${PREFIX}/bin/deploydyn check ${MODEL})
 
-# Only the prefix: no package registry, and the consumer finds Eigen, yaml-cpp and fmt itself
+# Only the prefix: no package registry, and the consumer finds Eigen, yaml-cpp, fmt and FCL itself
 # through deploydynConfig.cmake.
 run_step("configure consumer" ${CMAKE_COMMAND} -S ${CONSUMER_SOURCE} -B ${CONSUMER_BUILD} -G ${GENERATOR}
          -DCMAKE_BUILD_TYPE=Release -DCMAKE_CXX_COMPILER=${CXX} -DCMAKE_CXX_FLAGS=${CXX_FLAGS}

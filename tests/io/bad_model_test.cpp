@@ -196,6 +196,9 @@ const BadModelCase kBadModels[] = {
     {"buckling_length_factor_on_cable.yaml", 6, "members.guy.buckling_length_factor",
      "applies to bars and beams; a cable does not buckle"},
     {"cable_negative_break_load.yaml", 4, "elements.c.break_load", "must be positive (N), got -5000"},
+    {"checks_negative_clearance.yaml", 6, "checks.clearance_m", "must not be negative (m), got -0.01"},
+    {"checks_clearance_m_without_watch.yaml", 7, "checks.clearance_m",
+     "needs the clearance watch: remove 'clearance: false', or this key"},
     {"driver_force_limit_on_turning_driver.yaml", 7, "drivers.motor.force_limit",
      "unknown key 'force_limit'; did you mean 'torque_limit'?"},
 };

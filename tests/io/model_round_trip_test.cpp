@@ -222,6 +222,8 @@ void expect_equal_models(const Model& a, const Model& b) {
   EXPECT_EQ(a.output.history_file, b.output.history_file);
   EXPECT_EQ(a.output.summary_file, b.output.summary_file);
   EXPECT_EQ(a.output.vtk, b.output.vtk);
+  EXPECT_EQ(a.checks.clearance, b.checks.clearance);
+  EXPECT_EQ(a.checks.required_clearance_m, b.checks.required_clearance_m);
 }
 
 std::string saved(const Model& model) {
@@ -372,7 +374,7 @@ drivers:
   push: {type: coordinate, node: C, direction: x, profile: 0.0, force_limit: 150.5}
   turn: {type: bar_angle, element: bar, profile: 0.1, torque_limit: 12}
 )", "capacities"));
-  for (const char* name : {"heated_bay", "guyed_mast"}) {
+  for (const char* name : {"heated_bay", "guyed_mast", "arm_clash"}) {
     SCOPED_TRACE(name);
     expect_round_trip(load_model(fmt::format("{}/examples/checks/{}.yaml", DEPLOYDYN_SOURCE_DIR, name)));
   }

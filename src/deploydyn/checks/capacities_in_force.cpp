@@ -5,6 +5,7 @@
 #include <algorithm>
 
 #include "deploydyn/checks/check_kind.hpp"
+#include "deploydyn/checks/clearance.hpp"
 #include "deploydyn/checks/member_capacities.hpp"
 
 namespace deploydyn {
@@ -65,6 +66,15 @@ std::vector<std::string> capacity_lines(const Model& model,
     }
     lines.push_back(checked == 0 ? fmt::format("{}: no capacity given on any of {} members", name, applies)
                                  : fmt::format("{} on {} of {} members{}", name, checked, applies, detail));
+  }
+  // docs/model-format.md, `checks`.
+  if (!model.checks.clearance) {
+    lines.push_back("clearance: off (checks.clearance: false)");
+  } else if (clearance_applies(model)) {
+    lines.push_back(model.checks.required_clearance_m
+                        ? fmt::format("clearance between members sharing no joint; required {:g} m",
+                                      *model.checks.required_clearance_m)
+                        : "clearance between members sharing no joint; none required (an overlap fails)");
   }
   return lines;
 }

@@ -56,7 +56,21 @@ void take_overview(CheckOverview& o, const CheckHistory& h, const std::string& m
   if (h.exceeded) ++o.n_exceeded;
 }
 
-std::string failure_sentence(const VerdictFailure& f) {
+std::string failure_sentence(const VerdictFailure& f, std::optional<double> required_clearance_m) {
+  if (f.pair) {
+    const ClearancePair& p = *f.pair;
+    if (f.check == kClash) {
+      return fmt::format("members '{}' and '{}' pass through each other (clash){} t = {:.6g} s, overlapping by up to "
+                         "{:.4g} m (at t = {:.6g} s); members are not stopped by each other",
+                         p.member_a, p.member_b,
+                         required_clearance_m ? fmt::format(": closer than the required {:g} m at", *required_clearance_m)
+                                              : " at",
+                         f.time_s, -p.min_distance_m, p.time_s);
+    }
+    return fmt::format("members '{}' and '{}' come closer than the required {:g} m at t = {:.6g} s (least clearance "
+                       "{:.4g} m at t = {:.6g} s)",
+                       p.member_a, p.member_b, required_clearance_m.value_or(0.0), f.time_s, p.min_distance_m, p.time_s);
+  }
   if (f.check == "run") return fmt::format("the run failed at t = {:.6g} s: {}", f.time_s, f.message);
   if (f.check == name(CheckKind::cable_slack)) {
     return fmt::format("cable member '{}' goes slack at t = {:.6g} s (its slack is forbidden)", f.member, f.time_s);
@@ -76,11 +90,59 @@ ordered_json history_json(const CheckHistory& h, const std::string& element) {
   return j;
 }
 
+ordered_json pair_json(const ClearancePair& p) {
+  return {{"members", {p.member_a, p.member_b}}, {"clearance_m", p.min_distance_m}, {"time_s", p.time_s}};
+}
+
+// docs/model-format.md, summary.json's `verdict.clearance`.
+ordered_json clearance_json(const ClearanceReport& c) {
+  ordered_json j;
+  j["members"] = c.n_members;
+  j["capsules"] = c.n_capsules;
+  j["required_m"] = c.required_m ? ordered_json(*c.required_m) : ordered_json(nullptr);
+  j["overlap_fails"] = c.watches_violations;
+  if (c.closest.empty()) {
+    j["min_m"] = nullptr;
+  } else {
+    j["min_m"] = c.closest.front().min_distance_m;
+    j["pair"] = {c.closest.front().member_a, c.closest.front().member_b};
+    j["time_s"] = c.closest.front().time_s;
+  }
+  j["between_steps_m"] = c.between_steps_m ? ordered_json(*c.between_steps_m) : ordered_json(nullptr);
+  ordered_json closest = ordered_json::array();
+  for (const ClearancePair& p : c.closest) closest.push_back(pair_json(p));
+  j["closest"] = closest;
+  ordered_json violations = ordered_json::array();
+  for (const ClearancePair& p : c.violations) {
+    ordered_json entry = pair_json(p);
+    entry["first_time_s"] = p.first_violation_s;
+    entry["clash"] = p.min_distance_m < 0.0;
+    violations.push_back(entry);
+  }
+  j["violations"] = violations;
+  j["overlapping_at_start"] = c.n_overlapping_at_start;
+  if (c.n_overlapping_at_start > 0) {
+    ordered_json start = ordered_json::array();
+    for (const ClearancePair& p : c.overlapping_at_start) start.push_back({{"members", {p.member_a, p.member_b}}, {"clearance_m", p.min_distance_m}});
+    j["overlapping_at_start_pairs"] = start;
+  }
+  j["note"] = "members are not stopped by each other (no contact response): a negative clearance is an overlap";
+  return j;
+}
+
 }  // namespace
 
-Verdict make_verdict(const Model& model, const MemberChecks& checks, const RunReport& report) {
+Verdict make_verdict(const Model& model, const MemberChecks& checks, const RunReport& report,
+                     const ClearanceReport* clearance) {
   Verdict v;
   std::vector<VerdictFailure> failures;
+  if (clearance && clearance->applies) {
+    v.clearance = *clearance;
+    for (const ClearancePair& p : clearance->violations) {
+      failures.push_back({p.min_distance_m < 0.0 ? kClash : kClearance, p.member_a, "", p.first_violation_s,
+                          p.first_violation_s, std::nullopt, "", p});
+    }
+  }
   const auto overview = [&](CheckKind kind) -> CheckOverview& { return v.checks[static_cast<std::size_t>(kind)]; };
   const std::vector<CheckedMember>& members = checks.members();
   for (std::size_t i = 0; i < members.size(); ++i) {
@@ -103,7 +165,7 @@ Verdict make_verdict(const Model& model, const MemberChecks& checks, const RunRe
                            member.slack_forbidden});
         if (member.slack_forbidden) {
           ++o.n_exceeded;
-          failures.push_back({name(kind), member.name, element, s.first_slack_s, s.first_slack_s, std::nullopt, ""});
+          failures.push_back({name(kind), member.name, element, s.first_slack_s, s.first_slack_s, std::nullopt, "", std::nullopt});
         }
         continue;
       }
@@ -113,7 +175,7 @@ Verdict make_verdict(const Model& model, const MemberChecks& checks, const RunRe
       take_overview(o, h, member.name, element);
       if (h.exceeded) {
         failures.push_back({name(kind), member.name, member_element_name(model, member.kind, h.element_at_first),
-                            h.first_exceeded_s, h.first_exceeded_step_s, h.utilization_at_first, ""});
+                            h.first_exceeded_s, h.first_exceeded_step_s, h.utilization_at_first, "", std::nullopt});
       }
       utilization.checks.push_back({kind, h, element});
       if (utilization.governing.empty() || h.max > utilization.max) {
@@ -137,7 +199,7 @@ Verdict make_verdict(const Model& model, const MemberChecks& checks, const RunRe
     take_overview(o, h, model.drivers[d].name, "");
     if (h.exceeded) {
       failures.push_back({name(CheckKind::driver_effort), model.drivers[d].name, "", h.first_exceeded_s,
-                          h.first_exceeded_step_s, h.utilization_at_first, ""});
+                          h.first_exceeded_step_s, h.utilization_at_first, "", std::nullopt});
     }
     v.members.push_back({model.drivers[d].name, "driver", name(CheckKind::driver_effort), h.max,
                          {{CheckKind::driver_effort, h, ""}}});
@@ -153,11 +215,11 @@ Verdict make_verdict(const Model& model, const MemberChecks& checks, const RunRe
   if (first != failures.end()) v.first_failure = *first;
   if (report.status == RunStatus::failed && (!v.first_failure || v.first_failure->time_s > report.failure.time_s)) {
     v.first_failure = VerdictFailure{"run", "", "", report.failure.time_s, report.failure.time_s, std::nullopt,
-                                     report.failure.reason.empty() ? report.message : report.failure.reason};
+                                     report.failure.reason.empty() ? report.message : report.failure.reason, std::nullopt};
   }
   v.deploys = report.status == RunStatus::completed && !v.first_failure;
   if (v.first_failure) {
-    v.reason = failure_sentence(*v.first_failure);
+    v.reason = failure_sentence(*v.first_failure, v.clearance ? v.clearance->required_m : std::nullopt);
   } else if (report.status == RunStatus::interrupted) {
     v.reason = fmt::format("the run was interrupted at t = {:.6g} s, before its end: not shown to deploy",
                            report.time_reached_s);
@@ -186,6 +248,11 @@ ordered_json verdict_json(const Verdict& v) {
     failure["step_time_s"] = f.step_time_s;
     failure["utilization"] = f.utilization ? ordered_json(*f.utilization) : ordered_json(nullptr);
     if (!f.message.empty()) failure["message"] = f.message;
+    if (f.pair) {
+      failure["members"] = {f.pair->member_a, f.pair->member_b};
+      failure["clearance_m"] = f.pair->min_distance_m;
+      failure["clearance_time_s"] = f.pair->time_s;
+    }
     j["first_failure"] = failure;
   } else {
     j["first_failure"] = nullptr;
@@ -231,6 +298,7 @@ ordered_json verdict_json(const Verdict& v) {
     j["members_note"] = fmt::format("'members' lists the {} of {} members and drivers of highest utilization",
                                     v.members.size(), v.n_members);
   }
+  if (v.clearance) j["clearance"] = clearance_json(*v.clearance);
   return j;
 }
 
@@ -261,6 +329,20 @@ std::vector<std::string> verdict_lines(const Verdict& v) {
   }
   if (v.slack.size() > kShownSlack) {
     lines.push_back(fmt::format("  … and {} more slack cables (summary.json, verdict.slack)", v.slack.size() - kShownSlack));
+  }
+  if (v.clearance && !v.clearance->closest.empty()) {
+    const ClearanceReport& c = *v.clearance;
+    const ClearancePair& p = c.closest.front();
+    const bool unchecked_overlap = p.min_distance_m < 0.0 && !c.watches_violations;
+    lines.push_back(fmt::format("  clearance: least {:.4g} m between '{}' and '{}' at t = {:.4g} s{}{}{}", p.min_distance_m,
+                                p.member_a, p.member_b, p.time_s,
+                                c.required_m ? fmt::format(" (required {:.4g} m)", *c.required_m) : "",
+                                unchecked_overlap ? " (an overlap: not a failure in a planar model without "
+                                                    "checks.clearance_m, its members may lie in different planes)"
+                                                  : "",
+                                c.violations.empty() ? ""
+                                : fmt::format("; {} {} too close", c.violations.size(),
+                                              c.violations.size() == 1 ? "pair" : "pairs")));
   }
   return lines;
 }

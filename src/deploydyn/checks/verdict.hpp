@@ -11,21 +11,30 @@
 #include <vector>
 
 #include "deploydyn/checks/check_kind.hpp"
+#include "deploydyn/checks/clearance.hpp"
 #include "deploydyn/checks/member_checks.hpp"
 #include "deploydyn/solvers/analysis.hpp"
 
 namespace deploydyn {
 
-// A check that exceeded its capacity (or a forbidden slack, or the run itself failing).
+// A check that exceeded its capacity (or a forbidden slack, two members too close, or the run
+// itself failing).
 struct VerdictFailure {
-  std::string check;    // a CheckKind's name, or "run"
+  std::string check;    // a CheckKind's name, "clash" or "clearance" (kClash, kClearance), or "run"
   std::string member;   // the member or driver; empty for the run
   std::string element;  // where in the member; empty for drivers and the run
   double time_s = 0.0;       // when it passed its capacity (linear between steps)
   double step_time_s = 0.0;  // the first accepted step beyond it
   std::optional<double> utilization;  // at that step; none for slack and the run
   std::string message;       // the run's failure
+  // clash and clearance: the pair (member_a is `member`), its least distance and when.
+  std::optional<ClearancePair> pair;
 };
+
+// The verdict's names of a clearance failure: the pair overlapped (passed through each other),
+// or only came closer than the required clearance.
+inline constexpr const char* kClash = "clash";
+inline constexpr const char* kClearance = "clearance";
 
 // One kind of check over every member it applies to.
 struct CheckOverview {
@@ -69,12 +78,15 @@ struct Verdict {
   std::vector<SlackReport> slack;                    // every cable member that went slack
   std::vector<MemberUtilization> members;            // the most utilized first, at most kVerdictMembers
   int n_members = 0;                                 // members and checked drivers in all
+  std::optional<ClearanceReport> clearance;          // when the clearance watch ran
 };
 
 // summary.json lists this many members of highest utilization.
 inline constexpr std::size_t kVerdictMembers = 20;
 
-Verdict make_verdict(const Model& model, const MemberChecks& checks, const RunReport& report);
+// `clearance`: the watch's report, when it ran (its violations fail the verdict).
+Verdict make_verdict(const Model& model, const MemberChecks& checks, const RunReport& report,
+                     const ClearanceReport* clearance = nullptr);
 nlohmann::ordered_json verdict_json(const Verdict& verdict);
 // A few lines for the end of `deploydyn run`: the verdict, the largest utilizations, what was
 // not checked, the slack cables.

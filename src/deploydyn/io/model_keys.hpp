@@ -14,9 +14,10 @@ namespace deploydyn::model_keys {
 
 using Keys = std::span<const std::string_view>;
 
-inline constexpr std::array<std::string_view, 18> kTopLevel{
+inline constexpr std::array<std::string_view, 19> kTopLevel{
     "name",    "description", "units",   "nodes",   "materials", "sections", "elements", "members", "thermal",
-    "environment", "supports", "joints", "drivers", "loads", "gravity", "functions", "analysis", "output"};
+    "environment", "supports", "joints", "drivers", "loads", "gravity", "functions", "analysis", "output",
+    "checks"};
 inline constexpr std::array<std::string_view, 2> kNode{"at", "mass"};
 inline constexpr std::array<std::string_view, 8> kMaterial{"E",       "alpha",         "density",      "yield_strength",
                                                           "damping", "specific_heat", "absorptivity", "emissivity"};
@@ -62,6 +63,7 @@ inline constexpr std::array<std::string_view, 8> kModal{"type", "modes", "at", "
                                                         "load_steps", "mass", "newton", "linear_solver"};
 inline constexpr std::array<std::string_view, 5> kOutput{"history", "summary", "vtk", "hdf5", "select"};
 inline constexpr std::array<std::string_view, 3> kOutputSelect{"nodes", "elements", "quantities"};
+inline constexpr std::array<std::string_view, 2> kChecks{"clearance", "clearance_m"};
 inline constexpr std::array<std::string_view, 2> kConstantFunction{"type", "value"};
 // smooth_step, cosine_ramp and cycloidal: ramps that differ in their shape only
 inline constexpr std::array<std::string_view, 5> kRamp{"type", "t0", "v0", "t1", "v1"};
@@ -91,7 +93,7 @@ struct Section {
   Keys keys;
 };
 
-inline constexpr std::array<Section, 45> kSections{{
+inline constexpr std::array<Section, 46> kSections{{
     {"top level", "### Top level", kTopLevel},
     {"nodes.NAME", "### `nodes`", kNode},
     {"materials.NAME", "### `materials`", kMaterial},
@@ -121,6 +123,7 @@ inline constexpr std::array<Section, 45> kSections{{
     {"analysis (type: modal)", "#### `type: modal`", kModal},
     {"output", "### `output`", kOutput},
     {"output.select", "#### `select`: what history.csv holds", kOutputSelect},
+    {"checks", "### `checks`", kChecks},
     {"function (type: constant)", "## Functions of time", kConstantFunction},
     {"function (type: smooth_step, cosine_ramp or cycloidal)", "## Functions of time", kRamp},
     {"function (type: smooth_trapezoid or paper_eq23)", "## Functions of time", kSmoothTrapezoid},

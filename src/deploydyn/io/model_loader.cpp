@@ -167,6 +167,7 @@ class ModelReader {
     model_.analysis.output_interval_s = model_.analysis.step_s;
     if (const auto analysis = root_.find("analysis")) read_analysis(*analysis);
     if (const auto output = root_.find("output")) read_output(*output);
+    if (const auto checks = root_.find("checks")) read_checks(*checks);
     if (const auto environment = root_.find("environment");
         environment && model_.analysis.type != AnalysisType::dynamic && model_.analysis.type != AnalysisType::quasi_static) {
       environment->fail(fmt::format("sets the temperatures of a time history (analysis type dynamic or static), not of "
@@ -1373,6 +1374,17 @@ class ModelReader {
         spec.number_or("tol_displacement", newton.displacement_tolerance_m, Sign::positive, "m");
   }
 
+  // docs/model-format.md, `checks`.
+  void read_checks(const YamlValue& spec) {
+    spec.expect_keys(model_keys::kChecks);
+    CheckSettings& checks = model_.checks;
+    if (const auto clearance = spec.find("clearance")) checks.clearance = clearance->choice({"false", "true"}) == 1;
+    if (const auto required = spec.find("clearance_m")) {
+      checks.required_clearance_m = required->number(Sign::non_negative, "m");
+      if (!checks.clearance) required->fail("needs the clearance watch: remove 'clearance: false', or this key");
+    }
+  }
+
   void read_output(const YamlValue& spec) {
     spec.expect_keys(model_keys::kOutput);
     OutputOptions& output = model_.output;
@@ -1499,9 +1511,9 @@ std::vector<std::string> split_path(const std::string& path) {
 // analysis.newton.max_iterations=5 works on a file without a newton section. Elsewhere a missing
 // key in the middle of a path is a typo (elements.9.area when there is no element 9).
 bool is_option_section(const std::string& path) {
-  static const std::array<std::string_view, 7> kOptionSections{
+  static const std::array<std::string_view, 8> kOptionSections{
       "analysis", "analysis.integrator", "analysis.newton", "analysis.adaptive", "thermal", "output",
-      "output.select"};
+      "output.select", "checks"};
   return std::find(kOptionSections.begin(), kOptionSections.end(), path) != kOptionSections.end();
 }
 

@@ -581,6 +581,18 @@ void emit_analysis(YAML::Emitter& out, const Model& model) {
   out << YAML::EndMap;
 }
 
+// Only what differs from the defaults, so that a model without `checks` is written as before.
+void emit_checks(YAML::Emitter& out, const CheckSettings& checks) {
+  const CheckSettings defaults;
+  if (checks.clearance == defaults.clearance && !checks.required_clearance_m) return;
+  emit_key(out, "checks");
+  out << YAML::Flow << YAML::BeginMap;
+  emit_key(out, "clearance");
+  out << checks.clearance;
+  if (checks.required_clearance_m) emit_number(out, "clearance_m", *checks.required_clearance_m);
+  out << YAML::EndMap;
+}
+
 }  // namespace
 
 void save_model(const Model& model, std::ostream& out) {
@@ -599,6 +611,7 @@ void save_model(const Model& model, std::ostream& out) {
   emit_geometry(emitter, model);
   emit_boundary_conditions(emitter, model);
   emit_analysis(emitter, model);
+  emit_checks(emitter, model.checks);
   emitter << YAML::EndMap;
   out << emitter.c_str() << '\n';
 }

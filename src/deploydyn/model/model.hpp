@@ -299,6 +299,17 @@ struct OutputOptions {
   OutputSelection select;
 };
 
+// The file's `checks` (docs/model-format.md): what the checks of a run take that is no
+// member's capacity.
+struct CheckSettings {
+  // The clearance watch (checks/clearance.hpp): the least distance between members along the
+  // run. Off, no clearance is computed.
+  bool clearance = true;
+  // The least distance (m) members must keep; a closer pair fails the verdict. Empty: the
+  // clearance is reported, never a failure.
+  std::optional<double> required_clearance_m;
+};
+
 struct Model {
   std::string name;
   std::string description;
@@ -321,6 +332,7 @@ struct Model {
   std::optional<Environment> environment;
   AnalysisOptions analysis;
   OutputOptions output;
+  CheckSettings checks;
 
   int n_nodes() const { return static_cast<int>(nodes.size()); }
   int n_bars() const { return static_cast<int>(bars.size()); }

@@ -11,6 +11,7 @@
 #include <utility>
 #include <vector>
 
+#include "deploydyn/checks/clearance.hpp"
 #include "deploydyn/checks/member_checks.hpp"
 #include "deploydyn/output/background_sink.hpp"
 #include "deploydyn/results/envelope.hpp"
@@ -57,6 +58,7 @@ class HistoryRun final : public FolderRun {
   // given.
   HistoryRun(const Model& model, Envelope& envelope, std::optional<Verdict>* verdict)
       : model_(model), envelope_(envelope), verdict_(verdict) {
+    if (model.checks.clearance) clearance_.emplace(model);
     // An environment sets the temperatures step by step, into a copy of the model that the
     // mechanics is built from (thermal/thermal_coupling.hpp).
     if (model.environment) coupling_.emplace(coupled_model_.emplace(model));  // may throw, as the assembler
@@ -73,6 +75,7 @@ class HistoryRun final : public FolderRun {
     if (!history.layout().note().empty()) report.notes.push_back(history.layout().note());
     envelope_ = Envelope();
     std::vector<RecordSink*> sinks{&history, &envelope_, &checks_};
+    if (clearance_) sinks.push_back(&*clearance_);
     std::optional<VtkWriter> vtk;
     if (model.output.vtk) sinks.push_back(&vtk.emplace(folder / kVtkFolderName, model));
     std::optional<Hdf5Writer> hdf5;
@@ -112,7 +115,8 @@ class HistoryRun final : public FolderRun {
       write_failure = error;
       record_output_failure(report, error);
     }
-    run_verdict_ = make_verdict(model, checks_, report);
+    const std::optional<ClearanceReport> clearance = clearance_ ? std::optional(clearance_->report()) : std::nullopt;
+    run_verdict_ = make_verdict(model, checks_, report, clearance ? &*clearance : nullptr);
     if (verdict_) *verdict_ = run_verdict_;
     return report;
   }
@@ -135,6 +139,7 @@ class HistoryRun final : public FolderRun {
   std::optional<thermal::ThermalCoupling> coupling_;
   std::optional<Assembler> assembler_;
   MemberChecks checks_{model_};
+  std::optional<ClearanceWatch> clearance_;  // when the model's checks ask for it
   RunReport report_;
   Verdict run_verdict_;
 };

@@ -1,0 +1,406 @@
+#include "deploydyn/checks/clearance.hpp"
+
+#include <fcl/broadphase/broadphase_dynamic_AABB_tree.h>
+#include <fcl/geometry/shape/capsule.h>
+#include <fcl/narrowphase/collision_object.h>
+#include <fcl/narrowphase/distance.h>
+
+#include <Eigen/Geometry>
+#include <algorithm>
+#include <array>
+#include <chrono>
+#include <cmath>
+#include <cstdint>
+#include <limits>
+#include <numbers>
+#include <numeric>
+#include <unordered_map>
+#include <unordered_set>
+
+#include "deploydyn/checks/member_capacities.hpp"
+#include "deploydyn/model/dof_map.hpp"
+
+namespace deploydyn {
+namespace {
+
+constexpr double kInfinity = std::numeric_limits<double>::infinity();
+// The broad phase prunes box pairs whose distance is not below its threshold, and overlapping
+// boxes are 0 apart: the threshold stays above the limit by this much (m), so that every pair
+// below the limit, overlapping ones too, is measured.
+constexpr double kThresholdMargin_m = 1e-9;
+// The tree of boxes is rebuilt at every this many records and refitted at the others
+// (docs/performance.md, "Clearance").
+constexpr int kRecordsPerRebuild = 50;
+
+int find_root(std::vector<int>& parent, int i) {
+  while (parent[static_cast<std::size_t>(i)] != i) {
+    parent[static_cast<std::size_t>(i)] = parent[static_cast<std::size_t>(parent[static_cast<std::size_t>(i)])];
+    i = parent[static_cast<std::size_t>(i)];
+  }
+  return i;
+}
+
+std::array<int, 2> element_nodes(const Model& model, MemberKind kind, int element) {
+  const auto e = static_cast<std::size_t>(element);
+  switch (kind) {
+    case MemberKind::bar:
+      return {model.bars[e].node_a, model.bars[e].node_b};
+    case MemberKind::beam:
+      return {model.beams[e].node_a, model.beams[e].node_b};
+    case MemberKind::cable:
+      break;
+  }
+  return {model.cables[e].node_a, model.cables[e].node_b};
+}
+
+// Each member's joints: its nodes, those joined by a pin joint or a rotation hinge counted as
+// one (the exclusion rule, docs/theory.md "Clearance between members"), sorted.
+std::vector<std::vector<int>> member_joints(const Model& model, const std::vector<CheckedMember>& members) {
+  std::vector<int> parent(model.nodes.size());
+  std::iota(parent.begin(), parent.end(), 0);
+  const auto join = [&](int a, int b) { parent[static_cast<std::size_t>(find_root(parent, a))] = find_root(parent, b); };
+  for (const Joint& joint : model.joints) join(joint.nodes[0], joint.nodes[1]);
+  for (const HingeElement& hinge : model.hinges) {
+    if (hinge.form == HingeElement::Form::rotations) join(hinge.nodes[0], hinge.nodes[1]);
+  }
+  std::vector<std::vector<int>> joints(members.size());
+  for (std::size_t m = 0; m < members.size(); ++m) {
+    for (const CheckedElement& e : members[m].elements) {
+      for (const int node : element_nodes(model, members[m].kind, e.element)) joints[m].push_back(find_root(parent, node));
+    }
+    std::sort(joints[m].begin(), joints[m].end());
+    joints[m].erase(std::unique(joints[m].begin(), joints[m].end()), joints[m].end());
+  }
+  return joints;
+}
+
+bool share_a_joint(const std::vector<int>& a, const std::vector<int>& b) {
+  auto i = a.begin();
+  auto j = b.begin();
+  while (i != a.end() && j != b.end()) {
+    if (*i == *j) return true;
+    if (*i < *j) {
+      ++i;
+    } else {
+      ++j;
+    }
+  }
+  return false;
+}
+
+bool any_pair_apart(const std::vector<std::vector<int>>& joints) {
+  for (std::size_t a = 0; a < joints.size(); ++a) {
+    for (std::size_t b = a + 1; b < joints.size(); ++b) {
+      if (!share_a_joint(joints[a], joints[b])) return true;
+    }
+  }
+  return false;
+}
+
+}  // namespace
+
+double capsule_radius(const Model& model, MemberKind kind, int element) {
+  const auto e = static_cast<std::size_t>(element);
+  int section = -1;
+  double area_m2 = 0.0;
+  double height_y_m = 0.0, height_z_m = 0.0;
+  switch (kind) {
+    case MemberKind::bar:
+      section = model.bars[e].section;
+      area_m2 = model.bars[e].area_m2;
+      break;
+    case MemberKind::beam:
+      section = model.beams[e].section;
+      area_m2 = model.beams[e].area_m2;
+      height_y_m = model.beams[e].height_y_m;
+      height_z_m = model.beams[e].height_z_m;
+      break;
+    case MemberKind::cable:
+      section = model.cables[e].section;
+      area_m2 = model.cables[e].area_m2;
+      break;
+  }
+  if (section >= 0) {
+    const Section& s = model.sections[static_cast<std::size_t>(section)];
+    switch (s.shape) {
+      case SectionShape::circle:
+      case SectionShape::circular_tube:
+        return 0.5 * s.diameter_m;
+      case SectionShape::rectangle:
+      case SectionShape::rectangular_tube:
+        return 0.5 * std::hypot(s.width_m, s.height_m);
+    }
+  }
+  if (height_y_m > 0.0 || height_z_m > 0.0) return 0.5 * std::hypot(height_y_m, height_z_m);
+  return std::sqrt(area_m2 / std::numbers::pi);
+}
+
+bool clearance_applies(const Model& model) {
+  const std::vector<CheckedMember> members = checked_members(model);
+  return any_pair_apart(member_joints(model, members));
+}
+
+// What the watch keeps, and FCL's objects.
+struct ClearanceWatch::State {
+  // One pair of members over the run (key: a · n_members + b, a < b).
+  struct PairState {
+    double min_distance_m = kInfinity;
+    double time_s = 0.0;
+    bool violated = false;
+    double first_violation_s = 0.0;
+    int record = -1;             // the last record that measured it
+    double record_distance_m = kInfinity;  // its least distance at that record
+    double previous_distance_m = kInfinity;  // at the record before, when measured
+  };
+  struct Capsule {
+    int member = 0;
+    std::array<int, 2> nodes{};
+  };
+
+  int dimension = 2;
+  bool dynamic = false;
+  std::vector<std::string> member_names;
+  std::vector<std::vector<int>> joints;  // per member
+  std::vector<Capsule> capsules;
+  std::vector<std::array<int, 2>> node_first;  // per node: q index of x, and how many coordinates
+  bool applies = false;
+  std::optional<double> required_m;
+  bool watches_violations = false;  // ClearanceReport::watches_violations
+  double limit_m = 0.0;  // closer than this violates: the required clearance, else 0 (overlap)
+
+  std::vector<std::shared_ptr<fcl::Capsuled>> shapes;
+  std::vector<std::unique_ptr<fcl::CollisionObjectd>> objects;
+  std::vector<fcl::CollisionObjectd*> registered;  // objects, as the manager takes them
+  fcl::DynamicAABBTreeCollisionManagerd manager;
+
+  std::unordered_map<std::uint64_t, PairState> pairs;
+  std::vector<std::uint64_t> closest;     // at most kClosestPairs, by min_distance_m
+  std::vector<std::uint64_t> violations;  // in the order they first violated
+  std::unordered_set<std::uint64_t> overlapping_at_start;
+  std::vector<std::pair<std::uint64_t, double>> start_overlaps;  // key and distance at the start
+  int n_records = 0;  // measured
+  int n_seen = 0;     // every record
+  double time_s = 0.0;
+  double previous_time_s = 0.0;
+  double largest_speed_m_s = 0.0;  // since the last measured record, it included
+  double between_steps_m = 0.0;
+  double evaluation_time_s = 0.0;
+
+  std::uint64_t key(int a, int b) const {
+    return static_cast<std::uint64_t>(a) * member_names.size() + static_cast<std::uint64_t>(b);
+  }
+  int first_of(std::uint64_t k) const { return static_cast<int>(k / member_names.size()); }
+  int second_of(std::uint64_t k) const { return static_cast<int>(k % member_names.size()); }
+
+  // The distance below which a pair can change what is reported: the worst of the closest
+  // pairs, once there are enough, and never below the limit, so that every violation is seen.
+  double threshold() const {
+    const double worst = closest.size() < kClosestPairs ? kInfinity : pairs.at(closest.back()).min_distance_m;
+    return std::max(worst, (watches_violations ? limit_m : 0.0) + kThresholdMargin_m);
+  }
+
+  void take_closest(std::uint64_t k) {
+    const auto by_distance = [&](std::uint64_t a, std::uint64_t b) {
+      return pairs.at(a).min_distance_m < pairs.at(b).min_distance_m;
+    };
+    if (std::find(closest.begin(), closest.end(), k) == closest.end()) closest.push_back(k);
+    std::sort(closest.begin(), closest.end(), by_distance);
+    if (closest.size() > kClosestPairs) closest.pop_back();
+  }
+
+  void measure(int capsule_a, int capsule_b) {
+    int a = capsules[static_cast<std::size_t>(capsule_a)].member;
+    int b = capsules[static_cast<std::size_t>(capsule_b)].member;
+    if (a == b) return;
+    if (a > b) std::swap(a, b);
+    if (share_a_joint(joints[static_cast<std::size_t>(a)], joints[static_cast<std::size_t>(b)])) return;
+    const std::uint64_t k = key(a, b);
+    if (overlapping_at_start.contains(k)) return;
+    fcl::DistanceRequestd request;
+    fcl::DistanceResultd result;
+    fcl::distance(objects[static_cast<std::size_t>(capsule_a)].get(), objects[static_cast<std::size_t>(capsule_b)].get(),
+                  request, result);
+    const double distance_m = result.min_distance;
+    if (n_records == 0 && distance_m < 0.0) {
+      overlapping_at_start.insert(k);
+      start_overlaps.emplace_back(k, distance_m);
+      return;
+    }
+    auto found = pairs.find(k);
+    if (found == pairs.end()) {
+      if (distance_m >= threshold()) return;
+      found = pairs.emplace(k, PairState{}).first;
+    }
+    PairState& pair = found->second;
+    if (pair.record != n_records) {
+      pair.previous_distance_m = pair.record == n_records - 1 ? pair.record_distance_m : kInfinity;
+      pair.record = n_records;
+      pair.record_distance_m = distance_m;
+    } else {
+      pair.record_distance_m = std::min(pair.record_distance_m, distance_m);
+    }
+    if (distance_m < pair.min_distance_m) {
+      pair.min_distance_m = distance_m;
+      pair.time_s = time_s;
+      take_closest(k);
+    }
+    if (watches_violations && !pair.violated && distance_m < limit_m) {  // (C2); linear from the record before when it was measured
+      pair.violated = true;
+      const double before_m = pair.previous_distance_m;
+      pair.first_violation_s = std::isfinite(before_m) && before_m >= limit_m && n_records > 0
+                                   ? previous_time_s + (before_m - limit_m) / (before_m - distance_m) * (time_s - previous_time_s)
+                                   : time_s;
+      violations.push_back(k);
+    }
+  }
+
+  static bool visit(fcl::CollisionObjectd* o1, fcl::CollisionObjectd* o2, void* data, double& distance) {
+    auto& state = *static_cast<State*>(data);
+    state.measure(static_cast<int>(reinterpret_cast<std::intptr_t>(o1->getUserData())),
+                  static_cast<int>(reinterpret_cast<std::intptr_t>(o2->getUserData())));
+    distance = state.threshold();
+    return false;
+  }
+
+  // A pair that overlaps at the start and was measured before that was known: forgotten.
+  void forget_start_overlaps() {
+    for (const std::uint64_t k : overlapping_at_start) pairs.erase(k);
+    const auto gone = [&](std::uint64_t k) { return overlapping_at_start.contains(k); };
+    std::erase_if(violations, gone);
+    closest.clear();
+    for (const auto& [k, pair] : pairs) take_closest(k);
+  }
+
+  Eigen::Vector3d position(const Eigen::VectorXd& q, int node) const {
+    const auto [first, count] = node_first[static_cast<std::size_t>(node)];
+    Eigen::Vector3d x = Eigen::Vector3d::Zero();
+    for (int i = 0; i < count; ++i) x[i] = q[first + i];
+    return x;
+  }
+
+  double largest_speed(const Eigen::VectorXd& v) const {
+    double largest = 0.0;
+    if (v.size() == 0) return 0.0;
+    for (std::size_t n = 0; n < node_first.size(); ++n) {
+      largest = std::max(largest, position(v, static_cast<int>(n)).norm());
+    }
+    return largest;
+  }
+
+  void move_capsules(const Eigen::VectorXd& q) {
+    for (std::size_t c = 0; c < capsules.size(); ++c) {
+      const Eigen::Vector3d a = position(q, capsules[c].nodes[0]);
+      const Eigen::Vector3d b = position(q, capsules[c].nodes[1]);
+      const Eigen::Vector3d along = b - a;
+      const double length_m = along.norm();
+      // FCL's capsule lies along its frame's z, centred on its origin.
+      fcl::Transform3d frame = fcl::Transform3d::Identity();
+      if (length_m > 0.0) {
+        frame.linear() = Eigen::Quaterniond::FromTwoVectors(Eigen::Vector3d::UnitZ(), along / length_m).toRotationMatrix();
+      }
+      frame.translation() = 0.5 * (a + b);
+      shapes[c]->lz = length_m;
+      shapes[c]->computeLocalAABB();
+      objects[c]->setTransform(frame);
+      objects[c]->computeAABB();
+    }
+    // Refitting keeps the tree's topology, which a deployment's large motion makes poor (boxes
+    // that were neighbours folded are far apart deployed): rebuilt from the boxes now and then.
+    if (n_records % kRecordsPerRebuild == 0) {
+      manager.clear();
+      manager.registerObjects(registered);
+      manager.setup();
+    } else {
+      manager.update();
+    }
+  }
+};
+
+ClearanceWatch::ClearanceWatch(const Model& model) : state_(std::make_unique<State>()) {
+  State& s = *state_;
+  s.dimension = model.dimension;
+  s.dynamic = model.analysis.type == AnalysisType::dynamic;
+  s.required_m = model.checks.required_clearance_m;
+  s.limit_m = s.required_m.value_or(0.0);
+  s.watches_violations = s.required_m.has_value() || model.dimension == 3;
+  const std::vector<CheckedMember> members = checked_members(model);
+  s.joints = member_joints(model, members);
+  s.applies = any_pair_apart(s.joints);
+  for (const CheckedMember& m : members) s.member_names.push_back(m.name);
+  const DofMap dofs(model);
+  for (int n = 0; n < model.n_nodes(); ++n) s.node_first.push_back({dofs.index(n, 0), model.dimension});
+  if (!s.applies) return;
+  for (std::size_t m = 0; m < members.size(); ++m) {
+    for (const CheckedElement& e : members[m].elements) {
+      const int capsule = static_cast<int>(s.capsules.size());
+      s.capsules.push_back({static_cast<int>(m), element_nodes(model, members[m].kind, e.element)});
+      s.shapes.push_back(std::make_shared<fcl::Capsuled>(capsule_radius(model, members[m].kind, e.element), 0.0));
+      s.objects.push_back(std::make_unique<fcl::CollisionObjectd>(s.shapes.back()));
+      s.objects.back()->setUserData(reinterpret_cast<void*>(static_cast<std::intptr_t>(capsule)));
+      s.registered.push_back(s.objects.back().get());
+    }
+  }
+  // The manager takes the capsules at the first record, placed (move_capsules).
+}
+
+ClearanceWatch::~ClearanceWatch() = default;
+
+void ClearanceWatch::record(const StepRecord& r) {
+  State& s = *state_;
+  if (!s.applies) return;
+  const auto start = std::chrono::steady_clock::now();
+  // (C3): the fastest node since the last measured record bounds what the records skipped.
+  s.largest_speed_m_s = std::max(s.largest_speed_m_s, s.largest_speed(r.v));
+  if (s.n_seen++ % kStepsPerClearanceQuery == 0) {
+    s.time_s = r.time_s;
+    s.move_capsules(r.q);
+    s.manager.distance(&s, &State::visit);
+    if (s.n_records == 0) s.forget_start_overlaps();
+    if (s.n_records > 0) s.between_steps_m = std::max(s.between_steps_m, s.largest_speed_m_s * (r.time_s - s.previous_time_s));
+    s.largest_speed_m_s = s.largest_speed(r.v);
+    s.previous_time_s = r.time_s;
+    ++s.n_records;
+  }
+  s.evaluation_time_s += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+ClearanceReport ClearanceWatch::report() const {
+  const State& s = *state_;
+  ClearanceReport report;
+  report.applies = s.applies;
+  report.n_members = static_cast<int>(s.member_names.size());
+  report.n_capsules = static_cast<int>(s.capsules.size());
+  report.required_m = s.required_m;
+  report.watches_violations = s.watches_violations;
+  report.n_records = s.n_records;
+  const auto pair_of = [&](std::uint64_t k) {
+    const State::PairState& p = s.pairs.at(k);
+    return ClearancePair{s.member_names[static_cast<std::size_t>(s.first_of(k))],
+                         s.member_names[static_cast<std::size_t>(s.second_of(k))],
+                         p.min_distance_m,
+                         p.time_s,
+                         p.violated,
+                         p.first_violation_s};
+  };
+  for (const std::uint64_t k : s.closest) report.closest.push_back(pair_of(k));
+  for (const std::uint64_t k : s.violations) report.violations.push_back(pair_of(k));
+  std::stable_sort(report.violations.begin(), report.violations.end(),
+                   [](const ClearancePair& a, const ClearancePair& b) { return a.first_violation_s < b.first_violation_s; });
+  report.n_overlapping_at_start = static_cast<int>(s.overlapping_at_start.size());
+  for (const auto& [k, distance_m] : s.start_overlaps) {
+    if (report.overlapping_at_start.size() >= kReportedStartOverlaps) break;
+    const auto named = [&](const ClearancePair& p) {
+      return p.member_a == s.member_names[static_cast<std::size_t>(s.first_of(k))] &&
+             p.member_b == s.member_names[static_cast<std::size_t>(s.second_of(k))];
+    };
+    if (std::any_of(report.overlapping_at_start.begin(), report.overlapping_at_start.end(), named)) continue;
+    report.overlapping_at_start.push_back({s.member_names[static_cast<std::size_t>(s.first_of(k))],
+                                           s.member_names[static_cast<std::size_t>(s.second_of(k))], distance_m,
+                                           0.0, false, 0.0});
+  }
+  if (s.dynamic) report.between_steps_m = s.between_steps_m;
+  report.evaluation_time_s = s.evaluation_time_s;
+  return report;
+}
+
+}  // namespace deploydyn

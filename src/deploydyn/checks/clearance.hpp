@@ -1,0 +1,87 @@
+#pragma once
+// The clearance watch (docs/theory.md, "Clearance between members"): the least distance between
+// members along the whole run. Each element is a capsule, the segment between its nodes grown by
+// its section's outer radius (capsule_radius); a pair of members that share a node, a joint or a
+// hinge is not watched, nor are the elements of one member among themselves. A RecordSink that
+// wants every step, as MemberChecks does, and measures at every kStepsPerClearanceQuery-th. It
+// only watches: members are not stopped by each other
+// (no contact response), so a clash is reported, never prevented.
+//
+// The broad phase and the capsule distances are FCL's (libfcl-dev), behind this header: what
+// includes it does not see FCL.
+
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "deploydyn/model/model.hpp"
+#include "deploydyn/solvers/step_record.hpp"
+
+namespace deploydyn {
+
+// One pair of members over the run.
+struct ClearancePair {
+  std::string member_a, member_b;
+  double min_distance_m = 0.0;  // the least distance of their surfaces; < 0: they overlap
+  double time_s = 0.0;          // when (the step)
+  bool violated = false;        // closer than the required clearance (or overlapping) at some step
+  double first_violation_s = 0.0;  // when first (linear between steps when both are known)
+};
+
+struct ClearanceReport {
+  bool applies = false;  // two members that share no joint: something to watch
+  int n_members = 0;
+  int n_capsules = 0;
+  std::optional<double> required_m;  // the file's checks.clearance_m
+  // Whether pairs closer than the required clearance (else: overlapping) are violations: always
+  // in 3D; in 2D only with a required clearance, as a planar model's members may lie in
+  // different planes of the real structure (its layers), where an overlap is no clash.
+  bool watches_violations = false;
+  int n_records = 0;  // the records measured
+  std::vector<ClearancePair> closest;     // the kClosestPairs closest pairs, the closest first
+  std::vector<ClearancePair> violations;  // every pair that came too close, the first first (watches_violations)
+  // Pairs that overlap already at the first record (crossing bracing, links of a planar model
+  // that lie in different planes): not watched after it, as a structure that is built so.
+  std::vector<ClearancePair> overlapping_at_start;
+  int n_overlapping_at_start = 0;
+  // How much closer than sampled any pair may have come between two measured records: max over
+  // them of the largest node speed since the one before times the time between (Eq. (C3));
+  // empty when not a dynamic analysis.
+  std::optional<double> between_steps_m;
+  double evaluation_time_s = 0.0;  // wall time in record() (s), for docs/performance.md
+};
+
+inline constexpr std::size_t kClosestPairs = 5;
+// The watch measures at every this many steps (the first included): at every step it would cost
+// about as much as the step itself (docs/performance.md, "Clearance"); the bound between_steps_m
+// covers the steps in between (docs/theory.md, Eq. (C3)).
+inline constexpr int kStepsPerClearanceQuery = 10;
+inline constexpr std::size_t kReportedStartOverlaps = 5;
+
+// The capsule radius of an element (m): its section's outer size (half the diameter; half the
+// diagonal of a rectangle, which the capsule then encloses), else a beam's given heights, else
+// √(A/π), the solid circle of its area.
+double capsule_radius(const Model& model, MemberKind kind, int element);
+
+// Whether the model has two members that could meet: a pair that shares no node.
+bool clearance_applies(const Model& model);
+
+class ClearanceWatch final : public RecordSink {
+ public:
+  explicit ClearanceWatch(const Model& model);
+  ~ClearanceWatch() override;
+  ClearanceWatch(const ClearanceWatch&) = delete;
+  ClearanceWatch& operator=(const ClearanceWatch&) = delete;
+
+  void record(const StepRecord& record) override;
+  bool wants_every_step() const override { return true; }
+
+  ClearanceReport report() const;
+
+ private:
+  struct State;
+  std::unique_ptr<State> state_;
+};
+
+}  // namespace deploydyn

@@ -1,0 +1,261 @@
+// The clearance watch (checks/clearance.hpp) against closed forms (docs/theory.md, "Clearance
+// between members"): a bar turning past another in a parallel plane comes closest at the
+// distance of its tip from the other's axis, minus both radii, when it passes; a bar moving
+// straight at another passes the required clearance at the time the line of its distance gives;
+// pairs that share a node or a pin joint, and the elements of one member, are not measured.
+// The records are made here, from the motion in closed form, so that nothing but the watch is
+// tested; tests/checks/clearance_example_test.cpp runs a model through the solver.
+
+#include "deploydyn/checks/clearance.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <functional>
+#include <numbers>
+#include <string>
+
+#include "deploydyn/checks/member_checks.hpp"
+#include "deploydyn/checks/verdict.hpp"
+#include "deploydyn/io/model_loader.hpp"
+#include "deploydyn/model/dof_map.hpp"
+
+namespace deploydyn {
+namespace {
+
+// Node positions and velocities at time t, by node name.
+using Motion = std::function<void(double t, const std::string& node, Eigen::Vector3d& x, Eigen::Vector3d& v)>;
+
+StepRecord record_at(const Model& model, const DofMap& dofs, double t, const Motion& motion) {
+  StepRecord r;
+  r.time_s = t;
+  r.dimension = model.dimension;
+  r.q = Eigen::VectorXd::Zero(dofs.n_dofs());
+  r.v = Eigen::VectorXd::Zero(dofs.n_dofs());
+  for (int n = 0; n < model.n_nodes(); ++n) {
+    const Node& node = model.nodes[static_cast<std::size_t>(n)];
+    Eigen::Vector3d x = node.position_m, v = Eigen::Vector3d::Zero();
+    motion(t, node.name, x, v);
+    for (int i = 0; i < model.dimension; ++i) {
+      r.q[dofs.index(n, i)] = x[i];
+      r.v[dofs.index(n, i)] = v[i];
+    }
+  }
+  return r;
+}
+
+// Feeds the watch the records at t = 0, dt, 2 dt, ... up to end.
+ClearanceReport watch(const Model& model, double dt, double end, const Motion& motion) {
+  const DofMap dofs(model);
+  ClearanceWatch clearance(model);
+  const int n_steps = static_cast<int>(std::llround(end / dt));
+  for (int k = 0; k <= n_steps; ++k) clearance.record(record_at(model, dofs, k * dt, motion));
+  return clearance.report();
+}
+
+const Motion kAtRest = [](double, const std::string&, Eigen::Vector3d&, Eigen::Vector3d&) {};
+
+// A 1 m bar OT turning in the plane z = 0 about z through O at ω = 1 rad/s, angle θ = ω (t − ½);
+// a fixed bar along y at x = X = 1.1 m in the plane z = d = 0.05 m. Both tubes of 20 mm: r = 10 mm.
+// The tip is closest when θ = 0: √(d² + (X − L)²) − 2 r = 0.091803 m at t = ½ s.
+constexpr const char* kTurningBar = R"(
+nodes: {O: [0, 0, 0], T: [1, 0, 0], P: [1.1, -1, 0.05], Q: [1.1, 1, 0.05]}
+materials: {steel: {E: 2.0e11, density: 7850}}
+sections: {tube: {shape: circular_tube, outer_diameter: 0.02, wall_thickness: 0.002}}
+elements:
+  turning: {nodes: [O, T], section: tube, material: steel}
+  fixed: {nodes: [P, Q], section: tube, material: steel}
+)";
+constexpr double kOmega = 1.0, kLength = 1.0, kOffset = 0.05, kAcross = 1.1, kRadius = 0.01;
+
+void turn(double t, const std::string& node, Eigen::Vector3d& x, Eigen::Vector3d& v) {
+  if (node != "T") return;
+  const double theta = kOmega * (t - 0.5);
+  x = kLength * Eigen::Vector3d(std::cos(theta), std::sin(theta), 0.0);
+  v = kOmega * kLength * Eigen::Vector3d(-std::sin(theta), std::cos(theta), 0.0);
+}
+
+TEST(Clearance, TurningBarPassesAtTheClosedFormClearanceAndTime) {
+  const Model model = load_model_from_string(kTurningBar, "turning.yaml");
+  const double closest_m = std::hypot(kOffset, kAcross - kLength) - 2 * kRadius;
+  EXPECT_NEAR(closest_m, 0.0918034, 1e-7);  // the hand calculation
+  EXPECT_DOUBLE_EQ(capsule_radius(model, MemberKind::bar, 0), kRadius);
+
+  // Measured records (every kStepsPerClearanceQuery-th of steps of 10 ms) that meet θ = 0: the
+  // sampled minimum is the closed form, to round-off.
+  static_assert(kStepsPerClearanceQuery == 10, "the sampling below assumes it");
+  const ClearanceReport exact = watch(model, 0.01, 1.0, turn);
+  ASSERT_TRUE(exact.applies);
+  EXPECT_EQ(exact.n_members, 2);
+  EXPECT_EQ(exact.n_records, 11);
+  ASSERT_EQ(exact.closest.size(), 1u);
+  EXPECT_EQ(exact.closest[0].member_a, "turning");
+  EXPECT_EQ(exact.closest[0].member_b, "fixed");
+  EXPECT_NEAR(exact.closest[0].min_distance_m, closest_m, 1e-12);
+  EXPECT_NEAR(exact.closest[0].time_s, 0.5, 1e-12);
+  EXPECT_TRUE(exact.violations.empty());  // no required clearance, and no overlap
+  // (C3): the tip's speed ω L times the time between measured records.
+  ASSERT_TRUE(exact.between_steps_m);
+  EXPECT_NEAR(*exact.between_steps_m, kOmega * kLength * 0.1, 1e-12);
+
+  // Measured records that straddle it (every 0.13 s): the sampled minimum lies above the true one
+  // by no more than the bound, at the measured record nearest to t = ½.
+  const ClearanceReport sampled = watch(model, 0.013, 1.0, turn);
+  ASSERT_EQ(sampled.closest.size(), 1u);
+  EXPECT_GT(sampled.closest[0].min_distance_m, closest_m);
+  EXPECT_LE(sampled.closest[0].min_distance_m - closest_m, *sampled.between_steps_m);
+  EXPECT_NEAR(sampled.closest[0].time_s, 0.52, 1e-12);  // 40 × 0.013
+}
+
+// A fixed bar along x from (0, 0) to (1, 0); a bar across it from (0.5, 1) to (0.5, 2) moves
+// down at 1 m/s. Radii 10 mm: the clearance is 0.98 − t (m).
+constexpr const char* kApproach = R"(
+nodes: {A: [0, 0], B: [1, 0], C: [0.5, 1], D: [0.5, 2]}
+materials: {steel: {E: 2.0e11, density: 7850}}
+sections: {rod: {shape: circle, diameter: 0.02}}
+elements:
+  beam_a: {nodes: [A, B], section: rod, material: steel}
+  bar_b: {nodes: [C, D], section: rod, material: steel}
+)";
+
+constexpr const char* kApproach3d = R"(
+nodes: {A: [0, 0, 0], B: [1, 0, 0], C: [0.5, 1, 0], D: [0.5, 2, 0]}
+materials: {steel: {E: 2.0e11, density: 7850}}
+sections: {rod: {shape: circle, diameter: 0.02}}
+elements:
+  beam_a: {nodes: [A, B], section: rod, material: steel}
+  bar_b: {nodes: [C, D], section: rod, material: steel}
+)";
+
+void descend(double t, const std::string& node, Eigen::Vector3d& x, Eigen::Vector3d& v) {
+  if (node != "C" && node != "D") return;
+  x.y() -= t;
+  v = Eigen::Vector3d(0.0, -1.0, 0.0);
+}
+
+TEST(Clearance, RequiredClearanceIsPassedAtTheTimeItsLineGives) {
+  Model model = load_model_from_string(kApproach, "approach.yaml");
+  model.checks.required_clearance_m = 0.1;
+  const ClearanceReport report = watch(model, 0.005, 1.2, descend);
+  ASSERT_EQ(report.violations.size(), 1u);
+  const ClearancePair& violation = report.violations[0];
+  EXPECT_EQ(violation.member_a, "beam_a");
+  EXPECT_EQ(violation.member_b, "bar_b");
+  // Steps of 5 ms, measured every 50 ms. 0.98 − t = 0.1 at t = 0.88, between the measured steps
+  // at 0.85 and 0.9: linear, so exact.
+  EXPECT_NEAR(violation.first_violation_s, 0.88, 1e-9);
+  // From t = 1 on the rod's axis crosses the bar's: FCL's signed distance is minus both radii.
+  EXPECT_NEAR(violation.min_distance_m, -0.02, 1e-9);
+  EXPECT_GE(violation.time_s, 1.0 - 1e-9);  // any step from then on, to round-off
+
+  // The verdict: a clash (they overlapped), first failing when the clearance was passed.
+  const MemberChecks checks(model);
+  const Verdict verdict = make_verdict(model, checks, RunReport{}, &report);
+  EXPECT_FALSE(verdict.deploys);
+  ASSERT_TRUE(verdict.first_failure);
+  EXPECT_EQ(verdict.first_failure->check, kClash);
+  EXPECT_EQ(verdict.first_failure->member, "beam_a");
+  ASSERT_TRUE(verdict.first_failure->pair);
+  EXPECT_EQ(verdict.first_failure->pair->member_b, "bar_b");
+  EXPECT_NEAR(verdict.first_failure->time_s, 0.88, 1e-9);
+  EXPECT_NE(verdict.reason.find("members 'beam_a' and 'bar_b' pass through each other"), std::string::npos)
+      << verdict.reason;
+  const nlohmann::ordered_json j = verdict_json(verdict);
+  EXPECT_EQ(j["first_failure"]["check"], "clash");
+  EXPECT_EQ(j["clearance"]["violations"].size(), 1u);
+  EXPECT_NEAR(j["clearance"]["min_m"].get<double>(), -0.02, 1e-9);
+
+  // Stopped before the overlap: too close, but no clash.
+  const ClearanceReport close = watch(model, 0.005, 0.95, descend);
+  ASSERT_EQ(close.violations.size(), 1u);
+  EXPECT_NEAR(close.violations[0].min_distance_m, 0.98 - 0.95, 1e-9);
+  EXPECT_EQ(make_verdict(model, checks, RunReport{}, &close).first_failure->check, kClearance);
+
+  // Without a required clearance a planar model's overlap is reported, not a violation: its
+  // members may lie in different planes.
+  model.checks.required_clearance_m.reset();
+  const ClearanceReport planar = watch(model, 0.005, 1.2, descend);
+  EXPECT_FALSE(planar.watches_violations);
+  EXPECT_TRUE(planar.violations.empty());
+  ASSERT_EQ(planar.closest.size(), 1u);
+  EXPECT_NEAR(planar.closest[0].min_distance_m, -0.02, 1e-9);
+  EXPECT_TRUE(make_verdict(model, checks, RunReport{}, &planar).deploys);
+
+  // In 3D an overlap is a clash, from 0.98 − t = 0.
+  const Model spatial = load_model_from_string(kApproach3d, "approach3d.yaml");
+  const ClearanceReport overlap = watch(spatial, 0.005, 1.2, descend);
+  EXPECT_TRUE(overlap.watches_violations);
+  ASSERT_EQ(overlap.violations.size(), 1u);
+  EXPECT_NEAR(overlap.violations[0].first_violation_s, 0.98, 1e-9);
+  EXPECT_EQ(make_verdict(spatial, MemberChecks(spatial), RunReport{}, &overlap).first_failure->check, kClash);
+  EXPECT_TRUE(watch(spatial, 0.005, 0.95, descend).violations.empty());
+}
+
+TEST(Clearance, PairsThatShareANodeOrAPinJointAreNotMeasured) {
+  // a and b meet at B in a narrow V, c lies just beyond their open ends: only (a, c) and (b, c).
+  const Model v_shape = load_model_from_string(R"(
+nodes: {A: [0, 0.05], B: [1, 0], C: [0, -0.05], D: [-0.2, -1], E: [-0.2, 1]}
+materials: {steel: {E: 2.0e11, density: 7850}}
+sections: {rod: {shape: circle, diameter: 0.02}}
+elements:
+  a: {nodes: [A, B], section: rod, material: steel}
+  b: {nodes: [B, C], section: rod, material: steel}
+  c: {nodes: [D, E], section: rod, material: steel}
+)", "v.yaml");
+  const ClearanceReport report = watch(v_shape, 1.0, 1.0, kAtRest);
+  ASSERT_EQ(report.closest.size(), 2u);
+  for (const ClearancePair& p : report.closest) {
+    EXPECT_EQ(p.member_b, "c");
+    EXPECT_NEAR(p.min_distance_m, 0.2 - 0.02, 1e-12);
+  }
+
+  // Two bars pinned to each other by a joint between two nodes: nothing to watch.
+  const char* pinned = R"(
+nodes: {A: [0, 0], B: [1, 0], C: [1, 0], D: [2, 0.5]}
+materials: {steel: {E: 2.0e11, density: 7850}}
+elements:
+  a: {nodes: [A, B], area: 1.0e-4, material: steel}
+  b: {nodes: [C, D], area: 1.0e-4, material: steel}
+joints: {pin: {type: pin, nodes: [B, C]}}
+)";
+  EXPECT_FALSE(clearance_applies(load_model_from_string(pinned, "pinned.yaml")));
+  EXPECT_FALSE(watch(load_model_from_string(pinned, "pinned.yaml"), 1.0, 1.0, kAtRest).applies);
+}
+
+TEST(Clearance, ElementsOfOneMemberAreNotMeasuredAgainstEachOther) {
+  // One member folded in a Z: its first and last elements lie 10 mm apart, no other member.
+  const Model model = load_model_from_string(R"(
+nodes: {A: [0, 0], B: [1, 0], C: [0, 0.01], D: [1, 0.02]}
+materials: {steel: {E: 2.0e11, density: 7850}}
+elements:
+  e1: {nodes: [A, B], area: 1.0e-4, material: steel}
+  e2: {nodes: [B, C], area: 1.0e-4, material: steel}
+  e3: {nodes: [C, D], area: 1.0e-4, material: steel}
+members: {arm: {elements: [e1, e2, e3]}}
+)", "z.yaml");
+  EXPECT_FALSE(clearance_applies(model));
+  const ClearanceReport report = watch(model, 1.0, 1.0, kAtRest);
+  EXPECT_FALSE(report.applies);
+  EXPECT_TRUE(report.closest.empty());
+}
+
+TEST(Clearance, PairsOverlappingFromTheStartAreReportedNotWatched) {
+  // Crossed bracing in one plane: the two diagonals cross at the start, and stay so.
+  const Model model = load_model_from_string(R"(
+nodes: {A: [0, 0], B: [1, 1], C: [0, 1], D: [1, 0]}
+materials: {steel: {E: 2.0e11, density: 7850}}
+elements:
+  d1: {nodes: [A, B], area: 1.0e-4, material: steel}
+  d2: {nodes: [C, D], area: 1.0e-4, material: steel}
+)", "x.yaml");
+  EXPECT_NEAR(capsule_radius(model, MemberKind::bar, 0), std::sqrt(1.0e-4 / std::numbers::pi), 1e-15);
+  const ClearanceReport report = watch(model, 0.1, 1.0, kAtRest);
+  EXPECT_EQ(report.n_overlapping_at_start, 1);
+  ASSERT_EQ(report.overlapping_at_start.size(), 1u);
+  EXPECT_NEAR(report.overlapping_at_start[0].min_distance_m, -2 * std::sqrt(1.0e-4 / std::numbers::pi), 1e-12);
+  EXPECT_TRUE(report.violations.empty());
+  EXPECT_TRUE(report.closest.empty());
+}
+
+}  // namespace
+}  // namespace deploydyn
