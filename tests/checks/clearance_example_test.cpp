@@ -13,7 +13,7 @@
 
 #include "deploydyn/checks/verdict.hpp"
 #include "deploydyn/io/model_loader.hpp"
-#include "deploydyn/output/run_to_folder.hpp"
+#include "deploydyn/runs/run_to_folder.hpp"
 #include "support/cli.hpp"
 
 namespace deploydyn {
