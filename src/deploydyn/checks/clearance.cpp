@@ -387,16 +387,13 @@ ClearanceReport ClearanceWatch::report() const {
   std::stable_sort(report.violations.begin(), report.violations.end(),
                    [](const ClearancePair& a, const ClearancePair& b) { return a.first_violation_s < b.first_violation_s; });
   report.n_overlapping_at_start = static_cast<int>(s.overlapping_at_start.size());
-  for (const auto& [k, distance_m] : s.start_overlaps) {
+  for (const auto& [key, distance_m] : s.start_overlaps) {
     if (report.overlapping_at_start.size() >= kReportedStartOverlaps) break;
-    const auto named = [&](const ClearancePair& p) {
-      return p.member_a == s.member_names[static_cast<std::size_t>(s.first_of(k))] &&
-             p.member_b == s.member_names[static_cast<std::size_t>(s.second_of(k))];
-    };
+    const std::string& a = s.member_names[static_cast<std::size_t>(s.first_of(key))];
+    const std::string& b = s.member_names[static_cast<std::size_t>(s.second_of(key))];
+    const auto named = [&](const ClearancePair& p) { return p.member_a == a && p.member_b == b; };
     if (std::any_of(report.overlapping_at_start.begin(), report.overlapping_at_start.end(), named)) continue;
-    report.overlapping_at_start.push_back({s.member_names[static_cast<std::size_t>(s.first_of(k))],
-                                           s.member_names[static_cast<std::size_t>(s.second_of(k))], distance_m,
-                                           0.0, false, 0.0});
+    report.overlapping_at_start.push_back({a, b, distance_m, 0.0, false, 0.0});
   }
   if (s.dynamic) report.between_steps_m = s.between_steps_m;
   report.evaluation_time_s = s.evaluation_time_s;
