@@ -141,7 +141,8 @@ int run_command(const std::string& model_file, const std::string& out_dir, bool 
   const RunReport report = run_to_folder(model, out_dir, control, envelope, &verdict);
   progress.clear();
   for (const std::string& warning : report.warnings) fmt::print(stderr, "warning: {}\n", warning);
-  // The verdict of a time history; one that a check failed is said even with --quiet, as a warning is.
+  // The verdict of a time history or a path; one that a check failed is said even with --quiet, as a
+  // warning is.
   if (verdict && (!quiet || (!verdict->deploys && report.status == RunStatus::completed))) {
     for (const std::string& line : verdict_lines(*verdict)) fmt::print(stderr, "{}\n", line);
   }

@@ -8,6 +8,7 @@
 #include <optional>
 #include <stdexcept>
 
+#include "deploydyn/checks/window_verdicts.hpp"
 #include "deploydyn/io/input_error.hpp"
 #include "deploydyn/io/model_loader.hpp"
 #include "deploydyn/runs/window_folder.hpp"
@@ -91,10 +92,13 @@ int window_command(const WindowArguments& arguments, const std::atomic<bool>& st
   options.n_deployments = arguments.n_deployments;
   options.stop = &stop;
   validate(options);
+  WindowVerdicts deployment_verdicts(model);
+  deployment_verdicts.watch(options);
   // The folder is taken before the long computation: a second window into it is refused now.
   std::optional<WindowFolder> folder;
   if (!arguments.out_dir.empty()) folder.emplace(arguments.out_dir, WindowOrigin{arguments.model_file, arguments.sets, options});
   const WindowResult window = deployability_window(model, options);
+  const std::vector<Verdict> verdicts = deployment_verdicts.verdicts(window);
   fmt::print("{}: deployability window, uniform ΔT {:+g} … {:+g} °C, {} driver positions over {:g} s\n",
              arguments.model_file, lo, hi, window.times_s.size(), model.analysis.end_time_s);
   fmt::print("{}\n{}\n", side_line("cold", window.cold), side_line("hot", window.hot));
@@ -105,14 +109,17 @@ int window_command(const WindowArguments& arguments, const std::atomic<bool>& st
     previous = regime;
   }
   if (!window.deployments.empty()) fmt::print("quasi-static deployments (0 → {:g} s):\n", model.analysis.end_time_s);
-  for (const WindowDeployment& d : window.deployments) fmt::print("  {}\n", deployment_line(d));
+  for (std::size_t i = 0; i < window.deployments.size(); ++i) {
+    fmt::print("  {}\n", deployment_line(window.deployments[i]));
+    if (i < verdicts.size()) fmt::print("      {}\n", verdict_lines(verdicts[i]).front());
+  }
   for (const WindowSide* side : {&window.cold, &window.hot}) {
     for (const std::string& failure : side->failures) fmt::print(stderr, "warning: {}\n", failure);
   }
   for (const WindowDeployment& d : window.deployments) {
     if (!d.failure.empty()) fmt::print(stderr, "warning: ΔT = {:+g} °C: {}\n", d.delta_t_C, d.failure);
   }
-  if (folder) folder->write(window, kRegimeStep_C);
+  if (folder) folder->write(window, kRegimeStep_C, verdicts);
   const bool complete = !window.stopped && window.cold.failures.empty() && window.hot.failures.empty() &&
                         std::all_of(window.deployments.begin(), window.deployments.end(),
                                     [](const WindowDeployment& d) { return d.failure.empty(); });

@@ -31,7 +31,7 @@
 #include <vector>
 
 #include "deploydyn/assembly/assembler.hpp"
-#include "deploydyn/checks/clearance.hpp"
+#include "deploydyn/checks/verdict_watch.hpp"
 #include "deploydyn/checks/member_checks.hpp"
 #include "deploydyn/checks/verdict.hpp"
 #include "deploydyn/elements/element_kinds.hpp"
@@ -82,20 +82,14 @@ struct LoadedModel {
 // Records kept in memory: the history as one row-major block, and the envelope for the summary.
 class MemorySink final : public RecordSink {
  public:
-  explicit MemorySink(const Model& model) : layout_(model), n_columns_(layout_.columns().size()), checks_(model) {
-    if (model.checks.clearance) clearance_.emplace(model);
-  }
+  explicit MemorySink(const Model& model) : layout_(model), n_columns_(layout_.columns().size()), verdict_watch_(model) {}
   void record(const StepRecord& r) override {
     if (r.output) layout_.append_row(r, values_);
     envelope_.record(r);
-    checks_.record(r);
-    if (clearance_) clearance_->record(r);
+    verdict_watch_.record(r);
   }
   bool wants_every_step() const override { return true; }  // for the envelope and the checks
-  const MemberChecks& checks() const { return checks_; }
-  std::optional<ClearanceReport> clearance() const {
-    return clearance_ ? std::optional(clearance_->report()) : std::nullopt;
-  }
+  const VerdictWatch& verdict_watch() const { return verdict_watch_; }
   const std::vector<std::string>& columns() const { return layout_.columns(); }
   std::size_t n_rows() const { return n_columns_ == 0 ? 0 : values_.size() / n_columns_; }
   const std::vector<double>& values() const { return values_; }
@@ -106,8 +100,7 @@ class MemorySink final : public RecordSink {
   std::size_t n_columns_;
   std::vector<double> values_;
   Envelope envelope_;
-  MemberChecks checks_;  // summary.json's verdict, as a run into a folder has it
-  std::optional<ClearanceWatch> clearance_;
+  VerdictWatch verdict_watch_;  // summary.json's verdict, as a run into a folder has it
 };
 
 // Stops a long call within a fraction of a second: on Ctrl-C when it was called from Python's
@@ -253,8 +246,7 @@ py::dict run_in_memory(const LoadedModel& loaded, const py::object& stop) {
   py::dict out = report_dict(report);
   out["columns"] = columns;
   out["values"] = values;
-  const std::optional<ClearanceReport> clearance = sink.clearance();
-  const Verdict verdict = make_verdict(loaded.model, sink.checks(), report, clearance ? &*clearance : nullptr);
+  const Verdict verdict = sink.verdict_watch().verdict(report);
   out["summary_json"] = summary_json(loaded.model, sink.envelope(), report, &verdict);
   return out;
 }

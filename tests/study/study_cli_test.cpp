@@ -4,8 +4,13 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
+#include <cmath>
 #include <fstream>
+#include <map>
+#include <sstream>
 #include <string>
+#include <vector>
 
 #include "support/cli.hpp"
 
@@ -84,6 +89,39 @@ TEST(StudyCli, CasesThatDoNotDeployAndTheProbabilityOfFailureAreSaid) {
   EXPECT_NE(sampled.output.find(fmt::format("probability of failure {:.3g}: {} of 20 drawn cases", n_no / 20.0, n_no)),
             std::string::npos)
       << sampled.output;
+}
+
+// study.csv's min_clearance: the arm of examples/checks/arm_clash.yaml swings by the cosine ramp
+// θ(t) = 60° (1 − cos(π t / 2)) and clashes with its brace; stopped at t = 1 s (θ = 60°) it is
+// closest to the brace's foot P = (−0.4, 0.5) at its end: |P × (cos θ, sin θ)| − r_arm − r_brace =
+// 0.4 sin 60° + 0.5 cos 60° − 0.025 m (the foot projects inside the arm).
+TEST(StudyCli, StudyTableGivesEachCaseItsLeastClearance) {
+  ScratchFolder folder("study_cli_clearance");
+  std::filesystem::create_directories(folder.path());
+  std::ofstream(folder.path() / "study.yaml") << "model: " << DEPLOYDYN_SOURCE_DIR
+                                              << "/examples/checks/arm_clash.yaml\n"
+                                                 "cases:\n  half: {analysis.end: 1.0}\n  full: {}\n";
+  const auto result = run_cli("study " + (folder.path() / "study.yaml").string() + " -q -o " +
+                              (folder.path() / "out").string());
+  EXPECT_EQ(result.exit_code, 0) << result.output;
+  std::istringstream table(read_text(folder.path() / "out" / "study.csv"));
+  std::string header, line;
+  std::getline(table, header);
+  std::vector<std::string> columns;
+  std::istringstream names(header);
+  for (std::string name; std::getline(names, name, ',');) columns.push_back(name);
+  const auto column = std::find(columns.begin(), columns.end(), "min_clearance");
+  ASSERT_NE(column, columns.end()) << header;
+  std::map<std::string, double> least_m;
+  while (std::getline(table, line)) {
+    std::vector<std::string> cells;
+    std::istringstream fields(line);
+    for (std::string cell; std::getline(fields, cell, ',');) cells.push_back(cell);
+    least_m[cells[0]] = std::stod(cells.at(static_cast<std::size_t>(column - columns.begin())));
+  }
+  constexpr double kDegree = 3.14159265358979323846 / 180;
+  EXPECT_NEAR(least_m.at("half"), 0.4 * std::sin(60 * kDegree) + 0.5 * std::cos(60 * kDegree) - 0.025, 1e-6);
+  EXPECT_NEAR(least_m.at("full"), -0.025, 1e-6);  // the axes cross: overlapping by both radii
 }
 
 TEST(StudyCli, AllCompletedIsExitCodeZeroAndQuietIsQuiet) {

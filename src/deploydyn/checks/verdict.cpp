@@ -56,30 +56,32 @@ void take_overview(CheckOverview& o, const CheckHistory& h, const std::string& m
   if (h.exceeded) ++o.n_exceeded;
 }
 
-std::string failure_sentence(const VerdictFailure& f, std::optional<double> required_clearance_m) {
+std::string failure_sentence(const VerdictFailure& f, std::optional<double> required_clearance_m,
+                             const VerdictAbscissa& along) {
   if (f.pair) {
     const ClearancePair& p = *f.pair;
     if (f.check == kClash) {
-      return fmt::format("members '{}' and '{}' pass through each other (clash){} t = {:.6g} s, overlapping by up to "
-                         "{:.4g} m (at t = {:.6g} s); members are not stopped by each other",
+      return fmt::format("members '{}' and '{}' pass through each other (clash){} {}, overlapping by up to "
+                         "{:.4g} m (at {}); members are not stopped by each other",
                          p.member_a, p.member_b,
                          required_clearance_m ? fmt::format(": closer than the required {:g} m at", *required_clearance_m)
                                               : " at",
-                         f.time_s, -p.min_distance_m, p.time_s);
+                         along.at(f.time_s), -p.min_distance_m, along.at(p.time_s));
     }
-    return fmt::format("members '{}' and '{}' come closer than the required {:g} m at t = {:.6g} s (least clearance "
-                       "{:.4g} m at t = {:.6g} s)",
-                       p.member_a, p.member_b, required_clearance_m.value_or(0.0), f.time_s, p.min_distance_m, p.time_s);
+    return fmt::format("members '{}' and '{}' come closer than the required {:g} m at {} (least clearance "
+                       "{:.4g} m at {})",
+                       p.member_a, p.member_b, required_clearance_m.value_or(0.0), along.at(f.time_s), p.min_distance_m,
+                       along.at(p.time_s));
   }
-  if (f.check == "run") return fmt::format("the run failed at t = {:.6g} s: {}", f.time_s, f.message);
+  if (f.check == "run") return fmt::format("{} failed at {}: {}", along.of, along.at(f.time_s), f.message);
   if (f.check == name(CheckKind::cable_slack)) {
-    return fmt::format("cable member '{}' goes slack at t = {:.6g} s (its slack is forbidden)", f.member, f.time_s);
+    return fmt::format("cable member '{}' goes slack at {} (its slack is forbidden)", f.member, along.at(f.time_s));
   }
   const std::string what = f.check == name(CheckKind::driver_effort)
                                ? fmt::format("the effort of driver '{}' exceeds its limit", f.member)
                                : fmt::format("{} of member '{}' exceeds its capacity", f.check, f.member);
-  return fmt::format("{} at t = {:.6g} s (utilization {:.3f} at the step to t = {:.6g} s{})", what, f.time_s,
-                     f.utilization.value_or(0.0), f.step_time_s,
+  return fmt::format("{} at {} (utilization {:.3f} at the step to {}{})", what, along.at(f.time_s),
+                     f.utilization.value_or(0.0), along.at(f.step_time_s),
                      f.element.empty() || f.element == f.member ? "" : fmt::format(", element '{}'", f.element));
 }
 
@@ -132,9 +134,14 @@ ordered_json clearance_json(const ClearanceReport& c) {
 
 }  // namespace
 
+std::string VerdictAbscissa::at(double value, int digits) const {
+  return fmt::format("{} = {:.{}g}{}", name, value, digits, unit.empty() ? "" : " " + unit);
+}
+
 Verdict make_verdict(const Model& model, const MemberChecks& checks, const RunReport& report,
-                     const ClearanceReport* clearance) {
+                     const ClearanceReport* clearance, const VerdictAbscissa& along) {
   Verdict v;
+  v.along = along;
   std::vector<VerdictFailure> failures;
   if (clearance && clearance->applies) {
     v.clearance = *clearance;
@@ -219,18 +226,18 @@ Verdict make_verdict(const Model& model, const MemberChecks& checks, const RunRe
   }
   v.deploys = report.status == RunStatus::completed && !v.first_failure;
   if (v.first_failure) {
-    v.reason = failure_sentence(*v.first_failure, v.clearance ? v.clearance->required_m : std::nullopt);
+    v.reason = failure_sentence(*v.first_failure, v.clearance ? v.clearance->required_m : std::nullopt, along);
   } else if (report.status == RunStatus::interrupted) {
-    v.reason = fmt::format("the run was interrupted at t = {:.6g} s, before its end: not shown to deploy",
-                           report.time_reached_s);
+    v.reason = fmt::format("{} was interrupted at {}, before its end: not shown to deploy", along.of,
+                           along.at(report.time_reached_s));
   } else {
     bool any_capacity = false;  // cable slack needs none
     for (std::size_t k = 0; k < kNumCheckKinds; ++k) {
       any_capacity = any_capacity || (v.checks[k].n_checked > 0 && kCheckKinds.value(k) != CheckKind::cable_slack);
     }
-    v.reason = any_capacity ? fmt::format("no check exceeded its capacity in the run to t = {:.6g} s",
-                                          report.time_reached_s)
-                            : "the run completed; the model gives no capacity to check against";
+    v.reason = any_capacity ? fmt::format("no check exceeded its capacity in {} to {}", along.of,
+                                          along.at(report.time_reached_s))
+                            : fmt::format("{} completed; the model gives no capacity to check against", along.of);
   }
   return v;
 }
@@ -239,6 +246,10 @@ ordered_json verdict_json(const Verdict& v) {
   ordered_json j;
   j["deploys"] = v.deploys;
   j["reason"] = v.reason;
+  if (!v.along.is_time()) {  // a path's verdict: its "time" keys hold the path's abscissa
+    j["along"] = {{"quantity", v.along.name}, {"unit", v.along.unit},
+                  {"note", "the keys ending in _s hold this quantity, not a time"}};
+  }
   if (v.first_failure) {
     const VerdictFailure& f = *v.first_failure;
     ordered_json failure = {{"check", f.check}};
@@ -304,7 +315,10 @@ ordered_json verdict_json(const Verdict& v) {
 
 std::vector<std::string> verdict_lines(const Verdict& v) {
   std::vector<std::string> lines;
-  lines.push_back(fmt::format("verdict: {}: {}", v.deploys ? "deploys" : "DOES NOT DEPLOY", v.reason));
+  // Along a thermal or load path there is no deployment, only checks that pass or fail.
+  const char* outcome = v.along.is_time() ? (v.deploys ? "deploys" : "DOES NOT DEPLOY")
+                                          : (v.deploys ? "every check passes" : "A CHECK FAILS");
+  lines.push_back(fmt::format("verdict: {}: {}", outcome, v.reason));
   std::vector<std::string> largest, not_checked;
   for (std::size_t k = 0; k < kNumCheckKinds; ++k) {
     const CheckKind kind = kCheckKinds.value(k);
@@ -313,7 +327,7 @@ std::vector<std::string> verdict_lines(const Verdict& v) {
     if (o.n_checked == 0) {
       not_checked.push_back(name(kind));
     } else if (o.recorded) {
-      largest.push_back(fmt::format("{} {:.3g} ({}, t = {:.4g} s)", name(kind), o.max, o.member, o.time_s));
+      largest.push_back(fmt::format("{} {:.3g} ({}, {})", name(kind), o.max, o.member, v.along.at(o.time_s, 4)));
     }
   }
   if (!largest.empty()) lines.push_back(fmt::format("  largest utilization: {}", fmt::join(largest, "; ")));
@@ -323,8 +337,9 @@ std::vector<std::string> verdict_lines(const Verdict& v) {
   constexpr std::size_t kShownSlack = 3;
   for (std::size_t i = 0; i < v.slack.size() && i < kShownSlack; ++i) {
     const SlackReport& s = v.slack[i];
-    lines.push_back(fmt::format("  cable '{}' slack {} t = {:.4g} s, for {:.4g} s in all{}", s.member,
-                                s.from_start ? "from the start," : "first at", s.first_time_s, s.duration_s,
+    lines.push_back(fmt::format("  cable '{}' slack {} {}, for {:.4g}{} in all{}", s.member,
+                                s.from_start ? "from the start," : "first at", v.along.at(s.first_time_s, 4),
+                                s.duration_s, v.along.unit.empty() ? "" : " " + v.along.unit,
                                 s.forbidden ? " (forbidden)" : ""));
   }
   if (v.slack.size() > kShownSlack) {
@@ -334,8 +349,8 @@ std::vector<std::string> verdict_lines(const Verdict& v) {
     const ClearanceReport& c = *v.clearance;
     const ClearancePair& p = c.closest.front();
     const bool unchecked_overlap = p.min_distance_m < 0.0 && !c.watches_violations;
-    lines.push_back(fmt::format("  clearance: least {:.4g} m between '{}' and '{}' at t = {:.4g} s{}{}{}", p.min_distance_m,
-                                p.member_a, p.member_b, p.time_s,
+    lines.push_back(fmt::format("  clearance: least {:.4g} m between '{}' and '{}' at {}{}{}{}", p.min_distance_m,
+                                p.member_a, p.member_b, v.along.at(p.time_s, 4),
                                 c.required_m ? fmt::format(" (required {:.4g} m)", *c.required_m) : "",
                                 unchecked_overlap ? " (an overlap: not a failure in a planar model without "
                                                     "checks.clearance_m, its members may lie in different planes)"

@@ -36,6 +36,17 @@ struct VerdictFailure {
 inline constexpr const char* kClash = "clash";
 inline constexpr const char* kClearance = "clearance";
 
+// What the verdict's times measure: the time t (s) of a run, or the parameter of a path (a
+// continuation's ΔT or load factor; a driver path's is its time), in the verdict's sentences
+// ("at ΔT = +41.2 °C") and, in summary.json, named by `along` (the keys ending in _s then hold it).
+struct VerdictAbscissa {
+  std::string name = "t";
+  std::string unit = "s";     // empty: none
+  std::string of = "the run";  // what went along it, in sentences: "the run", "the path"
+  bool is_time() const { return name == "t"; }
+  std::string at(double value, int digits = 6) const;  // "t = 1.25 s"
+};
+
 // One kind of check over every member it applies to.
 struct CheckOverview {
   bool applies = false;    // the model has members (drivers) of the kind it checks
@@ -79,14 +90,16 @@ struct Verdict {
   std::vector<MemberUtilization> members;            // the most utilized first, at most kVerdictMembers
   int n_members = 0;                                 // members and checked drivers in all
   std::optional<ClearanceReport> clearance;          // when the clearance watch ran
+  VerdictAbscissa along;                             // what its times measure
 };
 
 // summary.json lists this many members of highest utilization.
 inline constexpr std::size_t kVerdictMembers = 20;
 
-// `clearance`: the watch's report, when it ran (its violations fail the verdict).
+// `clearance`: the watch's report, when it ran (its violations fail the verdict); `along`: what
+// the records' times measured (a path's report gives its last abscissa as time_reached_s).
 Verdict make_verdict(const Model& model, const MemberChecks& checks, const RunReport& report,
-                     const ClearanceReport* clearance = nullptr);
+                     const ClearanceReport* clearance = nullptr, const VerdictAbscissa& along = {});
 nlohmann::ordered_json verdict_json(const Verdict& verdict);
 // A few lines for the end of `deploydyn run`: the verdict, the largest utilizations, what was
 // not checked, the slack cables.

@@ -10,6 +10,7 @@
 #include <stdexcept>
 
 #include "deploydyn/assembly/linear_system_factory.hpp"
+#include "deploydyn/checks/verdict_watch.hpp"
 #include "deploydyn/elements/element_kinds.hpp"
 #include "deploydyn/output/checked_file.hpp"
 #include "deploydyn/output/output_error.hpp"
@@ -85,7 +86,7 @@ ContinuationOptions path_options(const Model& model) {
 }
 
 std::string path_summary_json(const Assembler& assembler, const ContinuationResult& result,
-                              const RunReport& report) {
+                              const RunReport& report, const Verdict* verdict) {
   const Model& model = assembler.model();
   const ContinuationSettings& settings = model.analysis.continuation;
   const double unit = parameter_unit(assembler);
@@ -132,6 +133,7 @@ std::string path_summary_json(const Assembler& assembler, const ContinuationResu
     events.push_back(event);
   }
   j["events"] = events;
+  if (verdict != nullptr) j["verdict"] = verdict_json(*verdict);
   // What the next run into the folder removes first (runs/result_folder.hpp).
   j["files"] = {{"model", kRunModelFileName}, {"path", kPathFileName}};
   return j.dump(2, ' ', false, ordered_json::error_handler_t::replace);
@@ -143,8 +145,12 @@ namespace {
 // goes, and the path's summary.
 class PathRun final : public FolderRun {
  public:
-  explicit PathRun(const Model& model)
-      : wall_start_(std::chrono::steady_clock::now()), assembler_(model) {}  // may throw before any file is touched
+  // The path's verdict is left in `verdict` when given.
+  PathRun(const Model& model, std::optional<Verdict>* verdict)
+      : wall_start_(std::chrono::steady_clock::now()),
+        assembler_(model),  // may throw before any file is touched
+        verdict_(verdict),
+        watch_(model) {}
 
   ResultFolder::Files files() const override {
     return {{"model", kRunModelFileName}, {"path", kPathFileName}, {"history", model().output.history_file}};
@@ -157,6 +163,7 @@ class PathRun final : public FolderRun {
     options.stop = control.stop;
     options.poll = control.poll;  // the Python module looks for Ctrl-C there
     options.on_point = [&](const PathPoint& point, const PathEvent* event) {
+      check(point, options);
       if (write_failure) return;
       try {
         path.add(point, event);
@@ -198,29 +205,64 @@ class PathRun final : public FolderRun {
     report.newton_iterations = result.total_iterations;
     report.rejected_steps = result.rejected_steps;
     report.wall_time_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start_).count();
+    RunReport reached = report;  // the verdict says how far along the path it got
+    reached.time_reached_s = last_abscissa_;
+    path_verdict_ = watch_.verdict(reached, abscissa());
+    if (verdict_) *verdict_ = path_verdict_;
     return report;
   }
 
   std::string summary_json(const RunReport& report) const override {
-    return path_summary_json(assembler_, result_, report);
+    return path_summary_json(assembler_, result_, report, &path_verdict_);
   }
 
  private:
   const Model& model() const { return assembler_.model(); }
 
+  // What the path's verdict measures along: the drivers' time, the ΔT, or the load factor μ.
+  VerdictAbscissa abscissa() const {
+    switch (model().analysis.continuation.parameter) {
+      case PathParameter::driver:
+        return {"t", "s", "the path"};
+      case PathParameter::thermal:
+        return {"ΔT", "°C", "the path"};
+      case PathParameter::load:
+        break;
+    }
+    return {"μ", "", "the path"};
+  }
+
+  // The member checks (and the clearance watch) at each point, as at a run's steps: at rest,
+  // at the drivers' time and ΔT scale of the point (solvers/parametrized_equilibrium.hpp).
+  void check(const PathPoint& point, const ContinuationOptions& options) {
+    const double time_s = options.parameter == PathParameter::driver ? point.parameter : options.time_s;
+    const double thermal_factor = options.parameter == PathParameter::thermal ? point.parameter : 1.0;
+    StepRecord record = make_path_record(assembler_, point.q, point.lambda, time_s, thermal_factor);
+    last_abscissa_ = options.parameter == PathParameter::thermal ? point.parameter * parameter_unit(assembler_)
+                                                                 : point.parameter;
+    record.time_s = last_abscissa_;
+    watch_.record(record);
+  }
+
   std::chrono::steady_clock::time_point wall_start_;
   Assembler assembler_;
   ContinuationResult result_;
   bool traced_ = false;  // else the path never started (a file could not be written) and says nothing
+  std::optional<Verdict>* verdict_;
+  VerdictWatch watch_;
+  double last_abscissa_ = 0.0;
+  Verdict path_verdict_;
 };
 
 }  // namespace
 
-std::unique_ptr<FolderRun> make_path_run(const Model& model) { return std::make_unique<PathRun>(model); }
+std::unique_ptr<FolderRun> make_path_run(const Model& model, std::optional<Verdict>* verdict) {
+  return std::make_unique<PathRun>(model, verdict);
+}
 
 RunReport run_path_to_folder(const Model& model, const std::filesystem::path& folder,
                              const RunControl& control) {
-  PathRun run(model);
+  PathRun run(model, nullptr);
   return run_in_folder(model, folder, control, run);
 }
 

@@ -16,12 +16,15 @@
 
 #include <filesystem>
 #include <memory>
+#include <optional>
 #include <string>
 
 #include "deploydyn/solvers/analysis.hpp"
 #include "deploydyn/solvers/continuation.hpp"
 
 namespace deploydyn {
+
+struct Verdict;
 
 // In a folder it owns, as run_to_folder (runs/result_folder.hpp). Throws
 // std::invalid_argument when the model's mechanics cannot be built (before any file is
@@ -31,13 +34,15 @@ RunReport run_path_to_folder(const Model& model, const std::filesystem::path& fo
                              const RunControl& control = {});
 
 class FolderRun;
-// The same as the driver's part (runs/run_folder.hpp), for the table of analysis types.
-std::unique_ptr<FolderRun> make_path_run(const Model& model);
+// The same as the driver's part (runs/run_folder.hpp), for the table of analysis types; the
+// path's verdict (its member checks at every point) is left in `verdict` when given.
+std::unique_ptr<FolderRun> make_path_run(const Model& model, std::optional<Verdict>* verdict = nullptr);
 
 // The continuation that the model's analysis section asks for, from its initial state at t = 0.
 ContinuationOptions path_options(const Model& model);
 
+// `verdict`: summary.json's `verdict`, when given.
 std::string path_summary_json(const Assembler& assembler, const ContinuationResult& result,
-                              const RunReport& report);
+                              const RunReport& report, const Verdict* verdict = nullptr);
 
 }  // namespace deploydyn

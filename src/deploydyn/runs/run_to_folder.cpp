@@ -11,8 +11,7 @@
 #include <utility>
 #include <vector>
 
-#include "deploydyn/checks/clearance.hpp"
-#include "deploydyn/checks/member_checks.hpp"
+#include "deploydyn/checks/verdict_watch.hpp"
 #include "deploydyn/output/background_sink.hpp"
 #include "deploydyn/results/envelope.hpp"
 #include "deploydyn/output/envelope_table.hpp"
@@ -58,7 +57,6 @@ class HistoryRun final : public FolderRun {
   // given.
   HistoryRun(const Model& model, Envelope& envelope, std::optional<Verdict>* verdict)
       : model_(model), envelope_(envelope), verdict_(verdict) {
-    if (model.checks.clearance) clearance_.emplace(model);
     // An environment sets the temperatures step by step, into a copy of the model that the
     // mechanics is built from (thermal/thermal_coupling.hpp).
     if (model.environment) coupling_.emplace(coupled_model_.emplace(model));  // may throw, as the assembler
@@ -74,8 +72,7 @@ class HistoryRun final : public FolderRun {
     HistoryWriter history(folder / model.output.history_file, model);
     if (!history.layout().note().empty()) report.notes.push_back(history.layout().note());
     envelope_ = Envelope();
-    std::vector<RecordSink*> sinks{&history, &envelope_, &checks_};
-    if (clearance_) sinks.push_back(&*clearance_);
+    std::vector<RecordSink*> sinks{&history, &envelope_, &verdict_watch_};
     std::optional<VtkWriter> vtk;
     if (model.output.vtk) sinks.push_back(&vtk.emplace(folder / kVtkFolderName, model));
     std::optional<Hdf5Writer> hdf5;
@@ -115,8 +112,7 @@ class HistoryRun final : public FolderRun {
       write_failure = error;
       record_output_failure(report, error);
     }
-    const std::optional<ClearanceReport> clearance = clearance_ ? std::optional(clearance_->report()) : std::nullopt;
-    run_verdict_ = make_verdict(model, checks_, report, clearance ? &*clearance : nullptr);
+    run_verdict_ = verdict_watch_.verdict(report);
     if (verdict_) *verdict_ = run_verdict_;
     return report;
   }
@@ -138,8 +134,7 @@ class HistoryRun final : public FolderRun {
   std::optional<Model> coupled_model_;
   std::optional<thermal::ThermalCoupling> coupling_;
   std::optional<Assembler> assembler_;
-  MemberChecks checks_{model_};
-  std::optional<ClearanceWatch> clearance_;  // when the model's checks ask for it
+  VerdictWatch verdict_watch_{model_};
   RunReport report_;
   Verdict run_verdict_;
 };
@@ -156,7 +151,7 @@ std::unique_ptr<FolderRun> history_run(const Model& model, RunOutputs outputs) {
 
 std::unique_ptr<FolderRun> path_run(const Model& model, RunOutputs outputs) {
   outputs.envelope = Envelope();  // a path has no time history to envelope
-  return make_path_run(model);
+  return make_path_run(model, outputs.verdict);
 }
 
 std::unique_ptr<FolderRun> modes_run(const Model& model, RunOutputs outputs) {

@@ -56,7 +56,8 @@ std::string samples_csv(const WindowResult& window) {
   return csv;
 }
 
-std::string window_json(const WindowOrigin& origin, const WindowResult& window, double regime_step_C) {
+std::string window_json(const WindowOrigin& origin, const WindowResult& window, double regime_step_C,
+                        const std::vector<Verdict>& verdicts) {
   ordered_json j = origin_json(origin, window.stopped ? "interrupted" : "completed",
                                window.stopped ? "interrupted; the samples computed until then are kept" : "");
   j["units"] = {{"dT", "°C"}, {"t", "s"}, {"eigenvalue", "N/m"}, {"force", "N"}};
@@ -71,7 +72,8 @@ std::string window_json(const WindowOrigin& origin, const WindowResult& window, 
   }
   j["regimes"] = regimes;
   ordered_json deployments = ordered_json::array();
-  for (const WindowDeployment& d : window.deployments) {
+  for (std::size_t i = 0; i < window.deployments.size(); ++i) {
+    const WindowDeployment& d = window.deployments[i];
     deployments.push_back({{"dT", d.delta_t_C},
                            {"regime", d.regime()},
                            {"completed", d.completed},
@@ -81,7 +83,8 @@ std::string window_json(const WindowOrigin& origin, const WindowResult& window, 
                            {"peak_driver_effort", d.peak_driver_effort},
                            {"lowest_eigenvalue", std::isnan(d.lowest_eigenvalue_N_m) ? ordered_json(nullptr)
                                                                                      : ordered_json(d.lowest_eigenvalue_N_m)},
-                           {"failure", d.failure}});
+                           {"failure", d.failure},
+                           {"verdict", i < verdicts.size() ? verdict_json(verdicts[i]) : ordered_json(nullptr)}});
   }
   j["deployments"] = deployments;
   j["files"] = {{"samples", kWindowSamplesFileName}};
@@ -95,7 +98,7 @@ WindowFolder::WindowFolder(const std::filesystem::path& folder, WindowOrigin ori
   folder_.start("model", origin_.model_file, {{"samples", kWindowSamplesFileName}});
 }
 
-void WindowFolder::write(const WindowResult& window, double regime_step_C) {
+void WindowFolder::write(const WindowResult& window, double regime_step_C, const std::vector<Verdict>& verdicts) {
   try {
     write_file_atomically(folder_.path() / kWindowSamplesFileName, samples_csv(window));
   } catch (const OutputError& error) {
@@ -103,7 +106,7 @@ void WindowFolder::write(const WindowResult& window, double regime_step_C) {
     folder_.finish(failed, failed);
     throw;
   }
-  const std::string json = window_json(origin_, window, regime_step_C);
+  const std::string json = window_json(origin_, window, regime_step_C, verdicts);
   folder_.finish(json, text(origin_json(origin_, "failed", "window.json could not be written in full")));
 }
 

@@ -11,13 +11,16 @@
 //                each driver position, positions that failed; the regime at every
 //                `regime_step_C` of ΔT; and per deployed ΔT level its regime, where it stopped
 //                (jam or snap: kind, t), peak |axial force|, peak mechanical strain, peak
-//                driver effort and lowest stability eigenvalue.
+//                driver effort and lowest stability eigenvalue, and its verdict (as a
+//                run's summary.json has it, of its member checks along the deployment;
+//                checks/window_verdicts.hpp).
 // The deployments' path points are samples in window.csv too (rows at their ΔT level).
 
 #include <filesystem>
 #include <string>
 #include <vector>
 
+#include "deploydyn/checks/verdict.hpp"
 #include "deploydyn/runs/result_folder.hpp"
 #include "deploydyn/solvers/deployability_window.hpp"
 #include "deploydyn/results/result_file_names.hpp"
@@ -39,7 +42,8 @@ class WindowFolder {
 
   // window.csv, then the final window.json. Throws OutputError when a file cannot be written
   // (window.json then says "failed" and why, as far as it can be written).
-  void write(const WindowResult& window, double regime_step_C);
+  // `verdicts`: per deployment, in its order.
+  void write(const WindowResult& window, double regime_step_C, const std::vector<Verdict>& verdicts);
 
  private:
   ResultFolder folder_;

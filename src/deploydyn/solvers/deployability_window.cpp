@@ -95,9 +95,11 @@ void trace_side(const Assembler& assembler, LinearSystem& system, double time_s,
 }
 
 // The deployment at the uniform ΔT of `assembler`'s model: ΔT reached at t = 0, then the
-// drivers followed from 0 to `end_s`; the path's samples go to `samples`.
+// drivers followed from 0 to `end_s`; the path's samples go to `samples`, its points to `sink`
+// when given.
 WindowDeployment deploy(const Assembler& assembler, LinearSystem& system, double delta_t_C,
-                        double end_s, const WindowOptions& options, std::vector<WindowSample>& samples) {
+                        double end_s, const WindowOptions& options, std::vector<WindowSample>& samples,
+                        RecordSink* sink) {
   WindowDeployment deployment;
   deployment.delta_t_C = delta_t_C;
   ContinuationOptions heat, drive;
@@ -140,6 +142,7 @@ WindowDeployment deploy(const Assembler& assembler, LinearSystem& system, double
       deployment.lowest_eigenvalue_N_m = s.lowest_eigenvalue_N_m;
     }
     samples.push_back(s);
+    if (sink != nullptr) sink->record(make_path_record(assembler, point.q, point.lambda, point.parameter, 1.0));
   }
   if (!deployed.events.empty()) {
     const PathEvent& event = deployed.events.front();
@@ -232,8 +235,9 @@ WindowResult deployability_window(const Model& model, const WindowOptions& optio
     const Model heated = with_uniform_temperature(model, delta_t_C);
     const Assembler assembler(heated);
     const auto system = make_linear_system(assembler);
+    RecordSink* sink = options.deployment_sink ? options.deployment_sink(j) : nullptr;
     window.deployments.push_back(
-        deploy(assembler, *system, delta_t_C, model.analysis.end_time_s, options, window.samples));
+        deploy(assembler, *system, delta_t_C, model.analysis.end_time_s, options, window.samples, sink));
   }
   return window;
 }

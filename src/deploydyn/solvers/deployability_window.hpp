@@ -21,6 +21,7 @@
 // up to it, the peak member force and actuator effort say how stressed it is.
 
 #include <atomic>
+#include <functional>
 #include <limits>
 #include <optional>
 #include <string>
@@ -28,6 +29,7 @@
 
 #include "deploydyn/model/model.hpp"
 #include "deploydyn/solvers/continuation.hpp"
+#include "deploydyn/solvers/step_record.hpp"
 
 namespace deploydyn {
 
@@ -41,6 +43,10 @@ struct WindowOptions {
   double max_step = 0.002;
   int max_steps = 2000;
   const std::atomic<bool>* stop = nullptr;
+  // Where the points of the deployment at ΔT level `level` (0 the coldest) go, on the branch it
+  // started on, as records at rest at their driver time (make_path_record): the checks of its
+  // verdict (checks/window_verdicts.hpp). Unset, or nullptr for a level: not recorded.
+  std::function<RecordSink*(int level)> deployment_sink;
 };
 
 // Throws std::invalid_argument naming the option and what is allowed.

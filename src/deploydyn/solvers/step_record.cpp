@@ -4,14 +4,19 @@
 
 namespace deploydyn {
 
-StepRecord make_step_record(const Assembler& assembler, const MotionState& state,
-                            const WorkTally& work, bool output) {
+namespace {
+
+// The records' common part: time, coordinates and rates, every element's results as
+// `results_of(group, element, out)` gives them, the drivers' efforts and the support reactions.
+template <class ResultsOf>
+StepRecord record_of(const Assembler& assembler, double time_s, const Eigen::VectorXd& q, const Eigen::VectorXd& v,
+                     const Eigen::VectorXd& lambda, bool output, ResultsOf&& results_of) {
   StepRecord record;
-  record.time_s = state.time_s;
+  record.time_s = time_s;
   record.output = output;
   record.dimension = assembler.model().dimension;
-  record.q = state.q;
-  record.v = state.v;
+  record.q = q;
+  record.v = v;
   const auto kinds = element_kinds();
   record.elements.resize(kinds.size());
   for (std::size_t g = 0; g < kinds.size(); ++g) {
@@ -20,17 +25,29 @@ StepRecord make_step_record(const Assembler& assembler, const MotionState& state
     results.n_quantities = static_cast<int>(kinds[g]->quantities(record.dimension).size());
     results.values.resize(static_cast<std::size_t>(group.n_elements() * results.n_quantities));
     for (int e = 0; e < group.n_elements(); ++e) {
-      assembler.element_results(static_cast<int>(g), e, state.q, state.v, state.history, state.time_s,
-                    std::span<double>(results.values).subspan(
-                        static_cast<std::size_t>(e * results.n_quantities),
-                        static_cast<std::size_t>(results.n_quantities)));
+      results_of(static_cast<int>(g), e,
+                 std::span<double>(results.values)
+                     .subspan(static_cast<std::size_t>(e * results.n_quantities),
+                              static_cast<std::size_t>(results.n_quantities)));
     }
   }
   const int n_drivers = static_cast<int>(assembler.model().drivers.size());
   for (int d = 0; d < n_drivers; ++d) {
-    record.driver_efforts.push_back(assembler.driver_effort(d, state.q, state.time_s, state.lambda));
+    record.driver_efforts.push_back(assembler.driver_effort(d, q, time_s, lambda));
   }
-  record.reactions = assembler.support_reactions(state.lambda);
+  record.reactions = assembler.support_reactions(lambda);
+  return record;
+}
+
+}  // namespace
+
+StepRecord make_step_record(const Assembler& assembler, const MotionState& state,
+                            const WorkTally& work, bool output) {
+  StepRecord record = record_of(assembler, state.time_s, state.q, state.v, state.lambda, output,
+                                [&](int group, int element, std::span<double> out) {
+                                  assembler.element_results(group, element, state.q, state.v, state.history,
+                                                            state.time_s, out);
+                                });
   record.external_work_J = work.external_J;
   record.dissipated_J = work.dissipated_J;
   if (!output) return record;  // for the envelopes, which track no energies: two passes saved
@@ -39,6 +56,14 @@ StepRecord make_step_record(const Assembler& assembler, const MotionState& state
   record.kinetic_energy_J = 0.5 * state.v.dot(momentum);
   record.strain_energy_J = assembler.strain_energy(state.q, state.time_s);
   return record;
+}
+
+StepRecord make_path_record(const Assembler& assembler, const Eigen::VectorXd& q, const Eigen::VectorXd& lambda,
+                            double time_s, double thermal_factor) {
+  const Eigen::VectorXd at_rest = Eigen::VectorXd::Zero(q.size());
+  return record_of(assembler, time_s, q, at_rest, lambda, false, [&](int group, int element, std::span<double> out) {
+    assembler.element_results(group, element, q, time_s, thermal_factor, out);
+  });
 }
 
 }  // namespace deploydyn

@@ -39,6 +39,13 @@ struct StepRecord {
 StepRecord make_step_record(const Assembler& assembler, const MotionState& state,
                             const WorkTally& work = {}, bool output = true);
 
+// The record of an equilibrium on a path (a continuation, a deployment of the window): at rest,
+// the drivers at `time_s`, every ΔT scaled by `thermal_factor` (Assembler::internal_force), the
+// elements' history in force. What the checks read (elements, driver efforts, reactions); it is
+// not an output row (record.output false), and has no energies.
+StepRecord make_path_record(const Assembler& assembler, const Eigen::VectorXd& q, const Eigen::VectorXd& lambda,
+                            double time_s, double thermal_factor);
+
 // Receives the records of a run as they are computed: those of the output times, and, when it
 // wants them, those of every step in between (record.output false), so that peaks are the
 // peaks of the solution, not of its samples.

@@ -94,6 +94,10 @@ CaseResult::Verdict read_verdict(const ordered_json& json) {
       if (entry.contains("max_utilization")) verdict.max_utilization.emplace_back(check, entry["max_utilization"].get<double>());
     }
   }
+  if (json.contains("clearance") && json["clearance"].is_object() && json["clearance"].contains("min_m") &&
+      json["clearance"]["min_m"].is_number()) {
+    verdict.min_clearance_m = json["clearance"]["min_m"].get<double>();
+  }
   return verdict;
 }
 

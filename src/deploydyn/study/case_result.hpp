@@ -51,6 +51,9 @@ struct CaseResult {
     double first_time_s = 0.0;
     // The largest utilization of each check that computed one, in summary.json's order.
     std::vector<std::pair<std::string, double>> max_utilization;
+    // The least clearance between members (m; < 0: an overlap), when the clearance watch measured
+    // a pair (summary.json verdict.clearance.min_m).
+    std::optional<double> min_clearance_m;
   };
   std::optional<Verdict> verdict;
 

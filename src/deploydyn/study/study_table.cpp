@@ -49,12 +49,12 @@ struct DriverColumn {
   bool torque = true;
 };
 
-// deploys (yes/no), the first failure's check, member and time, each check's largest utilization;
-// empty for a case without a verdict (it did not run).
+// deploys (yes/no), the first failure's check, member and time, each check's largest utilization,
+// and the least clearance when `clearance`; empty for a case without a verdict (it did not run).
 void add_verdict_columns(const std::optional<CaseResult::Verdict>& verdict, const std::vector<std::string>& checks,
-                         std::vector<std::string>& row) {
+                         bool clearance, std::vector<std::string>& row) {
   if (!verdict) {
-    row.insert(row.end(), 4 + checks.size(), "");
+    row.insert(row.end(), 4 + checks.size() + (clearance ? 1 : 0), "");
     return;
   }
   const bool failed = !verdict->first_check.empty();
@@ -65,6 +65,7 @@ void add_verdict_columns(const std::optional<CaseResult::Verdict>& verdict, cons
                                     [&](const auto& entry) { return entry.first == check; });
     row.push_back(found == verdict->max_utilization.end() ? "" : number(found->second));
   }
+  if (clearance) row.push_back(verdict->min_clearance_m ? number(*verdict->min_clearance_m) : "");
 }
 
 }  // namespace
@@ -98,6 +99,9 @@ std::string study_table_csv(const Study& study, const std::vector<CaseResult>& o
   // The verdict's columns when a case has one: its checks' largest utilizations by name.
   const bool verdicts = std::any_of(outcomes.begin(), outcomes.end(),
                                     [](const CaseResult& outcome) { return outcome.verdict.has_value(); });
+  const bool clearances = std::any_of(outcomes.begin(), outcomes.end(), [](const CaseResult& outcome) {
+    return outcome.verdict && outcome.verdict->min_clearance_m;
+  });
   std::vector<std::string> checks;
   for (const CaseResult& outcome : outcomes) {
     if (!outcome.verdict) continue;
@@ -117,6 +121,7 @@ std::string study_table_csv(const Study& study, const std::vector<CaseResult>& o
   if (verdicts) {
     header.insert(header.end(), {"deploys", "first_failure", "first_failure_member", "first_failure_time"});
     for (const std::string& check : checks) header.push_back(csv_field("utilization." + check));
+    if (clearances) header.push_back("min_clearance");
   }
   header.insert(header.end(), {"time_reached", "steps", "newton_iterations", "wall_time", "message"});
   std::string text = fmt::format("{}\n", fmt::join(header, ","));
@@ -147,7 +152,7 @@ std::string study_table_csv(const Study& study, const std::vector<CaseResult>& o
     }
     const bool comparable = completed && reference.status == RunStatus::completed;
     row.push_back(number(comparable ? final_shape_error_m(outcome, reference) : kNaN));
-    if (verdicts) add_verdict_columns(outcome.verdict, checks, row);
+    if (verdicts) add_verdict_columns(outcome.verdict, checks, clearances, row);
     const bool ran = outcome.ran;
     row.push_back(ran ? number(outcome.time_reached_s) : "");
     row.push_back(ran ? fmt::format("{}", outcome.steps) : "");
