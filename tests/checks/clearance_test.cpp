@@ -10,10 +10,22 @@
 
 #include <gtest/gtest.h>
 
+#include <fcl/geometry/shape/capsule.h>
+#include <fcl/narrowphase/collision_object.h>
+#include <fcl/narrowphase/distance.h>
+#include <fmt/format.h>
+
+#include <Eigen/Geometry>
+#include <algorithm>
 #include <cmath>
 #include <functional>
+#include <limits>
+#include <memory>
 #include <numbers>
+#include <optional>
+#include <random>
 #include <string>
+#include <vector>
 
 #include "deploydyn/checks/member_checks.hpp"
 #include "deploydyn/checks/verdict.hpp"
@@ -81,10 +93,9 @@ TEST(Clearance, TurningBarPassesAtTheClosedFormClearanceAndTime) {
   EXPECT_NEAR(closest_m, 0.0918034, 1e-7);  // the hand calculation
   EXPECT_DOUBLE_EQ(capsule_radius(model, MemberKind::bar, 0), kRadius);
 
-  // Measured records (every kStepsPerClearanceQuery-th of steps of 10 ms) that meet θ = 0: the
-  // sampled minimum is the closed form, to round-off.
-  static_assert(kStepsPerClearanceQuery == 10, "the sampling below assumes it");
-  const ClearanceReport exact = watch(model, 0.01, 1.0, turn);
+  // Records every 0.1 s, one of them at θ = 0: the sampled minimum is the closed form, to
+  // round-off.
+  const ClearanceReport exact = watch(model, 0.1, 1.0, turn);
   ASSERT_TRUE(exact.applies);
   EXPECT_EQ(exact.n_members, 2);
   EXPECT_EQ(exact.n_records, 11);
@@ -94,13 +105,13 @@ TEST(Clearance, TurningBarPassesAtTheClosedFormClearanceAndTime) {
   EXPECT_NEAR(exact.closest[0].min_distance_m, closest_m, 1e-12);
   EXPECT_NEAR(exact.closest[0].time_s, 0.5, 1e-12);
   EXPECT_TRUE(exact.violations.empty());  // no required clearance, and no overlap
-  // (C3): the tip's speed ω L times the time between measured records.
+  // (C3): the tip's speed ω L times the time between records.
   ASSERT_TRUE(exact.between_steps_m);
   EXPECT_NEAR(*exact.between_steps_m, kOmega * kLength * 0.1, 1e-12);
 
-  // Measured records that straddle it (every 0.13 s): the sampled minimum lies above the true one
-  // by no more than the bound, at the measured record nearest to t = ½.
-  const ClearanceReport sampled = watch(model, 0.013, 1.0, turn);
+  // Records that straddle it (every 0.13 s): the sampled minimum lies above the true one by no
+  // more than the bound, at the record nearest to t = ½.
+  const ClearanceReport sampled = watch(model, 0.13, 1.04, turn);
   ASSERT_EQ(sampled.closest.size(), 1u);
   EXPECT_GT(sampled.closest[0].min_distance_m, closest_m);
   EXPECT_LE(sampled.closest[0].min_distance_m - closest_m, *sampled.between_steps_m);
@@ -141,8 +152,8 @@ TEST(Clearance, RequiredClearanceIsPassedAtTheTimeItsLineGives) {
   const ClearancePair& violation = report.violations[0];
   EXPECT_EQ(violation.member_a, "beam_a");
   EXPECT_EQ(violation.member_b, "bar_b");
-  // Steps of 5 ms, measured every 50 ms. 0.98 − t = 0.1 at t = 0.88, between the measured steps
-  // at 0.85 and 0.9: linear, so exact.
+  // Steps of 5 ms. 0.98 − t = 0.1 at t = 0.88, a step (to round-off): (C2) between it and the
+  // next, or the one before, is linear, so exact.
   EXPECT_NEAR(violation.first_violation_s, 0.88, 1e-9);
   // From t = 1 on the rod's axis crosses the bar's: FCL's signed distance is minus both radii.
   EXPECT_NEAR(violation.min_distance_m, -0.02, 1e-9);
@@ -255,6 +266,112 @@ elements:
   EXPECT_NEAR(report.overlapping_at_start[0].min_distance_m, -2 * std::sqrt(1.0e-4 / std::numbers::pi), 1e-12);
   EXPECT_TRUE(report.violations.empty());
   EXPECT_TRUE(report.closest.empty());
+}
+
+// Forty free bars (1 m, radius 10 mm) in a 2 m cube, each node wandering on its own sinusoid by up
+// to 0.3 m: the watch, which measures only its Verlet list's pairs between broad phases, reports
+// the same closest pairs and violations as every pair measured at every record (FCL's capsule
+// distance, fcl::distance) does.
+TEST(Clearance, VerletListReportsWhatEveryPairAtEveryRecordGives) {
+  constexpr int kBars = 40;
+  std::mt19937 random(7);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  std::string nodes, elements;
+  std::vector<Eigen::Vector3d> start, amplitude, phase;
+  for (int b = 0; b < kBars; ++b) {
+    const Eigen::Vector3d a(2 * unit(random), 2 * unit(random), 2 * unit(random));
+    Eigen::Vector3d direction(unit(random) - 0.5, unit(random) - 0.5, unit(random) - 0.5);
+    direction.normalize();
+    for (const Eigen::Vector3d& x : {a, Eigen::Vector3d(a + direction)}) {
+      nodes += fmt::format("n{}: [{}, {}, {}], ", start.size(), x.x(), x.y(), x.z());
+      start.push_back(x);
+      amplitude.push_back(0.3 * Eigen::Vector3d(unit(random), unit(random), unit(random)));
+      phase.push_back(6.0 * Eigen::Vector3d(unit(random), unit(random), unit(random)));
+    }
+    elements += fmt::format("  b{}: {{nodes: [n{}, n{}], section: rod, material: steel}}\n", b, 2 * b, 2 * b + 1);
+  }
+  const Model model = load_model_from_string(
+      fmt::format("nodes: {{{}}}\nmaterials: {{steel: {{E: 2.0e11, density: 7850}}}}\n"
+                  "sections: {{rod: {{shape: circle, diameter: 0.02}}}}\nchecks: {{clearance_m: 0.05}}\nelements:\n{}",
+                  nodes, elements),
+      "wandering.yaml");
+  const Motion wander = [&](double t, const std::string& node, Eigen::Vector3d& x, Eigen::Vector3d& v) {
+    const auto n = static_cast<std::size_t>(std::stoi(node.substr(1)));
+    for (int i = 0; i < 3; ++i) {
+      x[i] = start[n][i] + amplitude[n][i] * std::sin(2.0 * t + phase[n][i]);
+      v[i] = 2.0 * amplitude[n][i] * std::cos(2.0 * t + phase[n][i]);
+    }
+  };
+  constexpr double kStep_s = 0.01, kEnd_s = 3.0;
+  const ClearanceReport report = watch(model, kStep_s, kEnd_s, wander);
+  EXPECT_GT(report.n_lists, 1);                   // the nodes moved beyond the skin
+  EXPECT_LT(report.n_lists, report.n_records / 2);  // and the list spared most broad phases
+
+  // Every pair at every record, by FCL's capsule distance.
+  struct Brute {
+    double min_m = std::numeric_limits<double>::infinity(), time_s = 0.0;
+    double previous_m = std::numeric_limits<double>::infinity();
+    std::optional<double> first_violation_s;
+    bool overlapping_at_start = false;
+  };
+  std::vector<Brute> brute(kBars * kBars);
+  const DofMap dofs(model);
+  const auto n_steps = static_cast<int>(std::llround(kEnd_s / kStep_s));
+  for (int k = 0; k <= n_steps; ++k) {
+    const double t = k * kStep_s;
+    const StepRecord r = record_at(model, dofs, t, wander);
+    const auto x = [&](int node) { return Eigen::Vector3d(r.q.segment<3>(dofs.index(node, 0))); };
+    for (int a = 0; a < kBars; ++a) {
+      for (int b = a + 1; b < kBars; ++b) {
+        const auto capsule = [&](int bar) {
+          const Eigen::Vector3d p = x(2 * bar), q = x(2 * bar + 1);
+          fcl::Transform3d frame = fcl::Transform3d::Identity();
+          frame.linear() = Eigen::Quaterniond::FromTwoVectors(Eigen::Vector3d::UnitZ(), (q - p).normalized()).toRotationMatrix();
+          frame.translation() = 0.5 * (p + q);
+          return fcl::CollisionObjectd(std::make_shared<fcl::Capsuled>(0.01, (q - p).norm()), frame);
+        };
+        fcl::DistanceRequestd request;
+        fcl::DistanceResultd result;
+        const fcl::CollisionObjectd ca = capsule(a), cb = capsule(b);
+        fcl::distance(&ca, &cb, request, result);
+        const double d = result.min_distance;
+        Brute& pair = brute[static_cast<std::size_t>(a * kBars + b)];
+        if (k == 0 && d < 0.0) pair.overlapping_at_start = true;  // reported, not watched
+        if (pair.overlapping_at_start) continue;
+        if (d < pair.min_m) {
+          pair.min_m = d;
+          pair.time_s = t;
+        }
+        if (!pair.first_violation_s && d < 0.05) {
+          pair.first_violation_s = k == 0 ? t : t - kStep_s + (pair.previous_m - 0.05) / (pair.previous_m - d) * kStep_s;
+        }
+        pair.previous_m = d;
+      }
+    }
+  }
+  std::vector<std::pair<double, std::size_t>> order;
+  int n_violations = 0;
+  for (std::size_t i = 0; i < brute.size(); ++i) {
+    if (std::isfinite(brute[i].min_m) && !brute[i].overlapping_at_start) order.emplace_back(brute[i].min_m, i);
+    if (brute[i].first_violation_s) ++n_violations;
+  }
+  std::sort(order.begin(), order.end());
+  ASSERT_EQ(report.closest.size(), kClosestPairs);
+  for (std::size_t i = 0; i < kClosestPairs; ++i) {
+    const std::size_t pair = order[i].second;
+    EXPECT_EQ(report.closest[i].member_a, fmt::format("b{}", pair / kBars));
+    EXPECT_EQ(report.closest[i].member_b, fmt::format("b{}", pair % kBars));
+    EXPECT_NEAR(report.closest[i].min_distance_m, brute[pair].min_m, 1e-12);
+    EXPECT_DOUBLE_EQ(report.closest[i].time_s, brute[pair].time_s);
+  }
+  ASSERT_GT(n_violations, 0);
+  ASSERT_EQ(static_cast<int>(report.violations.size()), n_violations);
+  for (const ClearancePair& v : report.violations) {
+    const Brute& pair = brute[static_cast<std::size_t>(std::stoi(v.member_a.substr(1)) * kBars + std::stoi(v.member_b.substr(1)))];
+    ASSERT_TRUE(pair.first_violation_s) << v.member_a << " " << v.member_b;
+    EXPECT_NEAR(v.first_violation_s, *pair.first_violation_s, 1e-9);
+    EXPECT_NEAR(v.min_distance_m, pair.min_m, 1e-12);
+  }
 }
 
 }  // namespace

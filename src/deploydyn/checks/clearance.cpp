@@ -3,7 +3,7 @@
 #include <fcl/broadphase/broadphase_dynamic_AABB_tree.h>
 #include <fcl/geometry/shape/capsule.h>
 #include <fcl/narrowphase/collision_object.h>
-#include <fcl/narrowphase/distance.h>
+#include <fcl/narrowphase/detail/primitive_shape_algorithm/capsule_capsule.h>
 
 #include <Eigen/Geometry>
 #include <algorithm>
@@ -14,6 +14,7 @@
 #include <limits>
 #include <numbers>
 #include <numeric>
+#include <optional>
 #include <unordered_map>
 #include <unordered_set>
 
@@ -28,9 +29,10 @@ constexpr double kInfinity = std::numeric_limits<double>::infinity();
 // boxes are 0 apart: the threshold stays above the limit by this much (m), so that every pair
 // below the limit, overlapping ones too, is measured.
 constexpr double kThresholdMargin_m = 1e-9;
-// The tree of boxes is rebuilt at every this many records and refitted at the others
-// (docs/performance.md, "Clearance").
-constexpr int kRecordsPerRebuild = 50;
+// The Verlet list's skin, as a share of the mean capsule length (docs/performance.md,
+// "Clearance"): the list holds the pairs within the threshold plus the skin, and is made again
+// once a node has moved half the skin.
+constexpr double kSkinPerLength = 0.05;
 
 int find_root(std::vector<int>& parent, int i) {
   while (parent[static_cast<std::size_t>(i)] != i) {
@@ -155,6 +157,7 @@ struct ClearanceWatch::State {
   struct Capsule {
     int member = 0;
     std::array<int, 2> nodes{};
+    double radius_m = 0.0;
   };
 
   int dimension = 2;
@@ -173,13 +176,21 @@ struct ClearanceWatch::State {
   std::vector<fcl::CollisionObjectd*> registered;  // objects, as the manager takes them
   fcl::DynamicAABBTreeCollisionManagerd manager;
 
+  // The Verlet list (docs/theory.md, "The broad phase"): the capsule pairs that were within the
+  // threshold plus the skin when it was made, and the coordinates then.
+  std::vector<std::array<int, 2>> near;
+  Eigen::VectorXd q_listed;
+  double skin_m = 0.0;
+  int n_lists = 0;
+  const Eigen::VectorXd* q = nullptr;  // the record being measured
+  Eigen::VectorXd q_previous;          // the record before, for (C2)
+
   std::unordered_map<std::uint64_t, PairState> pairs;
   std::vector<std::uint64_t> closest;     // at most kClosestPairs, by min_distance_m
   std::vector<std::uint64_t> violations;  // in the order they first violated
   std::unordered_set<std::uint64_t> overlapping_at_start;
   std::vector<std::pair<std::uint64_t, double>> start_overlaps;  // key and distance at the start
-  int n_records = 0;  // measured
-  int n_seen = 0;     // every record
+  int n_records = 0;
   double time_s = 0.0;
   double previous_time_s = 0.0;
   double largest_speed_m_s = 0.0;  // since the last measured record, it included
@@ -208,27 +219,45 @@ struct ClearanceWatch::State {
     if (closest.size() > kClosestPairs) closest.pop_back();
   }
 
-  void measure(int capsule_a, int capsule_b) {
+  // The pair of members of two capsules, or none when the pair is not watched (one member, a
+  // shared joint, overlapping from the start).
+  std::optional<std::uint64_t> watched_pair(int capsule_a, int capsule_b) const {
     int a = capsules[static_cast<std::size_t>(capsule_a)].member;
     int b = capsules[static_cast<std::size_t>(capsule_b)].member;
-    if (a == b) return;
+    if (a == b) return std::nullopt;
     if (a > b) std::swap(a, b);
-    if (share_a_joint(joints[static_cast<std::size_t>(a)], joints[static_cast<std::size_t>(b)])) return;
+    if (share_a_joint(joints[static_cast<std::size_t>(a)], joints[static_cast<std::size_t>(b)])) return std::nullopt;
     const std::uint64_t k = key(a, b);
-    if (overlapping_at_start.contains(k)) return;
-    fcl::DistanceRequestd request;
-    fcl::DistanceResultd result;
-    fcl::distance(objects[static_cast<std::size_t>(capsule_a)].get(), objects[static_cast<std::size_t>(capsule_b)].get(),
-                  request, result);
-    const double distance_m = result.min_distance;
+    if (overlapping_at_start.contains(k)) return std::nullopt;
+    return k;
+  }
+
+  // (C1) at coordinates `at`: Ericson's segment–segment distance as FCL computes it.
+  double distance(int capsule_a, int capsule_b, const Eigen::VectorXd& at) const {
+    const Capsule& a = capsules[static_cast<std::size_t>(capsule_a)];
+    const Capsule& b = capsules[static_cast<std::size_t>(capsule_b)];
+    double s = 0.0, t = 0.0;
+    Eigen::Vector3d on_a, on_b;
+    const double squared_m2 = fcl::detail::closestPtSegmentSegment(
+        position(at, a.nodes[0]), position(at, a.nodes[1]), position(at, b.nodes[0]), position(at, b.nodes[1]), &s, &t,
+        &on_a, &on_b);
+    return std::sqrt(squared_m2) - a.radius_m - b.radius_m;
+  }
+
+  // Measures a pair of capsules at the record; its distance, or NaN when it is not watched.
+  double measure(int capsule_a, int capsule_b) {
+    const std::optional<std::uint64_t> watched = watched_pair(capsule_a, capsule_b);
+    if (!watched) return std::numeric_limits<double>::quiet_NaN();
+    const std::uint64_t k = *watched;
+    const double distance_m = distance(capsule_a, capsule_b, *q);
     if (n_records == 0 && distance_m < 0.0) {
       overlapping_at_start.insert(k);
       start_overlaps.emplace_back(k, distance_m);
-      return;
+      return std::numeric_limits<double>::quiet_NaN();
     }
     auto found = pairs.find(k);
     if (found == pairs.end()) {
-      if (distance_m >= threshold()) return;
+      if (distance_m >= threshold()) return distance_m;
       found = pairs.emplace(k, PairState{}).first;
     }
     PairState& pair = found->second;
@@ -244,22 +273,60 @@ struct ClearanceWatch::State {
       pair.time_s = time_s;
       take_closest(k);
     }
-    if (watches_violations && !pair.violated && distance_m < limit_m) {  // (C2); linear from the record before when it was measured
+    if (watches_violations && !pair.violated && distance_m < limit_m) {
       pair.violated = true;
-      const double before_m = pair.previous_distance_m;
+      // (C2), linear from the record before: the pair's distance then, measured then or, when it
+      // was farther than mattered, now at that record's coordinates.
+      const double before_m = n_records == 0 ? kInfinity
+                              : std::isfinite(pair.previous_distance_m) ? pair.previous_distance_m
+                                                                        : distance(capsule_a, capsule_b, q_previous);
       pair.first_violation_s = std::isfinite(before_m) && before_m >= limit_m && n_records > 0
                                    ? previous_time_s + (before_m - limit_m) / (before_m - distance_m) * (time_s - previous_time_s)
                                    : time_s;
       violations.push_back(k);
     }
+    return distance_m;
   }
 
-  static bool visit(fcl::CollisionObjectd* o1, fcl::CollisionObjectd* o2, void* data, double& distance) {
+  // The broad phase's visit of two boxes closer than its pruning distance: measured, and kept in
+  // the list when within the threshold plus the skin. The threshold only falls, during the walk
+  // and over the run, so the list holds every pair that can matter until a node has moved half
+  // the skin (docs/theory.md, "The broad phase").
+  static bool visit(fcl::CollisionObjectd* o1, fcl::CollisionObjectd* o2, void* data, double& pruning_m) {
     auto& state = *static_cast<State*>(data);
-    state.measure(static_cast<int>(reinterpret_cast<std::intptr_t>(o1->getUserData())),
-                  static_cast<int>(reinterpret_cast<std::intptr_t>(o2->getUserData())));
-    distance = state.threshold();
+    const int a = static_cast<int>(reinterpret_cast<std::intptr_t>(o1->getUserData()));
+    const int b = static_cast<int>(reinterpret_cast<std::intptr_t>(o2->getUserData()));
+    const double distance_m = state.measure(a, b);
+    if (distance_m < state.threshold() + state.skin_m) state.near.push_back({a, b});
+    pruning_m = state.threshold() + state.skin_m;
     return false;
+  }
+
+  // The broad phase at record coordinates `q`: every pair of boxes closer than the threshold plus
+  // the skin measured, and the list made of them.
+  void make_list(const Eigen::VectorXd& q_now) {
+    move_capsules(q_now);
+    near.clear();
+    manager.distance(this, &State::visit);
+    q_listed = q_now;
+    ++n_lists;
+  }
+
+  // The list's pairs alone.
+  void measure_listed() {
+    for (const auto& [a, b] : near) measure(a, b);
+  }
+
+  // How far the farthest node has moved since the list was made (m).
+  double moved_since_list(const Eigen::VectorXd& q_now) const {
+    double farthest_m2 = 0.0;
+    for (std::size_t n = 0; n < node_first.size(); ++n) {
+      const auto [first, count] = node_first[n];
+      double squared_m2 = 0.0;
+      for (int i = 0; i < count; ++i) squared_m2 += std::pow(q_now[first + i] - q_listed[first + i], 2);
+      farthest_m2 = std::max(farthest_m2, squared_m2);
+    }
+    return std::sqrt(farthest_m2);
   }
 
   // A pair that overlaps at the start and was measured before that was known: forgotten.
@@ -267,6 +334,7 @@ struct ClearanceWatch::State {
     for (const std::uint64_t k : overlapping_at_start) pairs.erase(k);
     const auto gone = [&](std::uint64_t k) { return overlapping_at_start.contains(k); };
     std::erase_if(violations, gone);
+    std::erase_if(near, [&](const std::array<int, 2>& pair) { return !watched_pair(pair[0], pair[1]); });
     closest.clear();
     for (const auto& [k, pair] : pairs) take_closest(k);
   }
@@ -287,10 +355,10 @@ struct ClearanceWatch::State {
     return largest;
   }
 
-  void move_capsules(const Eigen::VectorXd& q) {
+  void move_capsules(const Eigen::VectorXd& q_now) {
     for (std::size_t c = 0; c < capsules.size(); ++c) {
-      const Eigen::Vector3d a = position(q, capsules[c].nodes[0]);
-      const Eigen::Vector3d b = position(q, capsules[c].nodes[1]);
+      const Eigen::Vector3d a = position(q_now, capsules[c].nodes[0]);
+      const Eigen::Vector3d b = position(q_now, capsules[c].nodes[1]);
       const Eigen::Vector3d along = b - a;
       const double length_m = along.norm();
       // FCL's capsule lies along its frame's z, centred on its origin.
@@ -304,15 +372,11 @@ struct ClearanceWatch::State {
       objects[c]->setTransform(frame);
       objects[c]->computeAABB();
     }
-    // Refitting keeps the tree's topology, which a deployment's large motion makes poor (boxes
-    // that were neighbours folded are far apart deployed): rebuilt from the boxes now and then.
-    if (n_records % kRecordsPerRebuild == 0) {
-      manager.clear();
-      manager.registerObjects(registered);
-      manager.setup();
-    } else {
-      manager.update();
-    }
+    // Built anew from the boxes: a refitted tree keeps a topology that a deployment's large
+    // motion spoils (boxes that were neighbours folded are far apart deployed).
+    manager.clear();
+    manager.registerObjects(registered);
+    manager.setup();
   }
 };
 
@@ -333,14 +397,22 @@ ClearanceWatch::ClearanceWatch(const Model& model) : state_(std::make_unique<Sta
   for (std::size_t m = 0; m < members.size(); ++m) {
     for (const CheckedElement& e : members[m].elements) {
       const int capsule = static_cast<int>(s.capsules.size());
-      s.capsules.push_back({static_cast<int>(m), element_nodes(model, members[m].kind, e.element)});
-      s.shapes.push_back(std::make_shared<fcl::Capsuled>(capsule_radius(model, members[m].kind, e.element), 0.0));
+      const double radius_m = capsule_radius(model, members[m].kind, e.element);
+      s.capsules.push_back({static_cast<int>(m), element_nodes(model, members[m].kind, e.element), radius_m});
+      s.shapes.push_back(std::make_shared<fcl::Capsuled>(radius_m, 0.0));
       s.objects.push_back(std::make_unique<fcl::CollisionObjectd>(s.shapes.back()));
       s.objects.back()->setUserData(reinterpret_cast<void*>(static_cast<std::intptr_t>(capsule)));
       s.registered.push_back(s.objects.back().get());
     }
   }
-  // The manager takes the capsules at the first record, placed (move_capsules).
+  // The manager takes the capsules at the first record, placed (move_capsules); the skin is a
+  // share of their mean length in the model.
+  double total_length_m = 0.0;
+  for (const State::Capsule& c : s.capsules) {
+    total_length_m += (model.nodes[static_cast<std::size_t>(c.nodes[1])].position_m -
+                       model.nodes[static_cast<std::size_t>(c.nodes[0])].position_m).norm();
+  }
+  s.skin_m = kSkinPerLength * total_length_m / static_cast<double>(std::max<std::size_t>(1, s.capsules.size()));
 }
 
 ClearanceWatch::~ClearanceWatch() = default;
@@ -351,16 +423,20 @@ void ClearanceWatch::record(const StepRecord& r) {
   const auto start = std::chrono::steady_clock::now();
   // (C3): the fastest node since the last measured record bounds what the records skipped.
   s.largest_speed_m_s = std::max(s.largest_speed_m_s, s.largest_speed(r.v));
-  if (s.n_seen++ % kStepsPerClearanceQuery == 0) {
-    s.time_s = r.time_s;
-    s.move_capsules(r.q);
-    s.manager.distance(&s, &State::visit);
-    if (s.n_records == 0) s.forget_start_overlaps();
-    if (s.n_records > 0) s.between_steps_m = std::max(s.between_steps_m, s.largest_speed_m_s * (r.time_s - s.previous_time_s));
-    s.largest_speed_m_s = s.largest_speed(r.v);
-    s.previous_time_s = r.time_s;
-    ++s.n_records;
+  s.time_s = r.time_s;
+  s.q = &r.q;
+  if (s.n_records == 0 || s.moved_since_list(r.q) > 0.5 * s.skin_m) {
+    s.make_list(r.q);
+  } else {
+    s.measure_listed();
   }
+  s.q = nullptr;
+  s.q_previous = r.q;
+  if (s.n_records == 0) s.forget_start_overlaps();
+  if (s.n_records > 0) s.between_steps_m = std::max(s.between_steps_m, s.largest_speed_m_s * (r.time_s - s.previous_time_s));
+  s.largest_speed_m_s = s.largest_speed(r.v);
+  s.previous_time_s = r.time_s;
+  ++s.n_records;
   s.evaluation_time_s += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
@@ -373,6 +449,7 @@ ClearanceReport ClearanceWatch::report() const {
   report.required_m = s.required_m;
   report.watches_violations = s.watches_violations;
   report.n_records = s.n_records;
+  report.n_lists = s.n_lists;
   const auto pair_of = [&](std::uint64_t k) {
     const State::PairState& p = s.pairs.at(k);
     return ClearancePair{s.member_names[static_cast<std::size_t>(s.first_of(k))],

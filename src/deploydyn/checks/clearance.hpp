@@ -3,9 +3,10 @@
 // members along the whole run. Each element is a capsule, the segment between its nodes grown by
 // its section's outer radius (capsule_radius); a pair of members that share a node, a joint or a
 // hinge is not watched, nor are the elements of one member among themselves. A RecordSink that
-// wants every step, as MemberChecks does, and measures at every kStepsPerClearanceQuery-th. It
-// only watches: members are not stopped by each other
-// (no contact response), so a clash is reported, never prevented.
+// wants every step, as MemberChecks does, and measures at every one: the broad phase makes a
+// list of the pairs near enough to matter (a Verlet list), and only they are measured until a
+// node has moved half its skin. It only watches: members are not stopped by each other (no
+// contact response), so a clash is reported, never prevented.
 //
 // The broad phase and the capsule distances are FCL's (libfcl-dev), behind this header: what
 // includes it does not see FCL.
@@ -38,25 +39,22 @@ struct ClearanceReport {
   // in 3D; in 2D only with a required clearance, as a planar model's members may lie in
   // different planes of the real structure (its layers), where an overlap is no clash.
   bool watches_violations = false;
-  int n_records = 0;  // the records measured
+  int n_records = 0;  // the records measured: every one
+  int n_lists = 0;    // of them, those that ran the broad phase and made the list anew
   std::vector<ClearancePair> closest;     // the kClosestPairs closest pairs, the closest first
   std::vector<ClearancePair> violations;  // every pair that came too close, the first first (watches_violations)
   // Pairs that overlap already at the first record (crossing bracing, links of a planar model
   // that lie in different planes): not watched after it, as a structure that is built so.
   std::vector<ClearancePair> overlapping_at_start;
   int n_overlapping_at_start = 0;
-  // How much closer than sampled any pair may have come between two measured records: max over
-  // them of the largest node speed since the one before times the time between (Eq. (C3));
-  // empty when not a dynamic analysis.
+  // How much closer than sampled any pair may have come between two records: max over them of
+  // the largest node speed at either times the time between (Eq. (C3)); empty when not a
+  // dynamic analysis.
   std::optional<double> between_steps_m;
   double evaluation_time_s = 0.0;  // wall time in record() (s), for docs/performance.md
 };
 
 inline constexpr std::size_t kClosestPairs = 5;
-// The watch measures at every this many steps (the first included): at every step it would cost
-// about as much as the step itself (docs/performance.md, "Clearance"); the bound between_steps_m
-// covers the steps in between (docs/theory.md, Eq. (C3)).
-inline constexpr int kStepsPerClearanceQuery = 10;
 inline constexpr std::size_t kReportedStartOverlaps = 5;
 
 // The capsule radius of an element (m): its section's outer size (half the diameter; half the
