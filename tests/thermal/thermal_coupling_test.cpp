@@ -2,6 +2,9 @@
 // a member that turns changes its absorbed flux as its angle to the sun says; the heat balance
 // closes over a run; the example boom's strain is α (T − T_ref) at every output, its
 // temperatures cool end-on to the sun and warm broadside towards the radiative equilibrium.
+// With shadows, a member that leaves another's shadow takes the sun as the geometry says; with
+// section gradients, a clamped tube in the sun takes the moment E I α D / d of its sun-to-shade
+// difference D.
 
 #include "deploydyn/thermal/thermal_coupling.hpp"
 
@@ -12,6 +15,7 @@
 #include <numbers>
 
 #include "deploydyn/io/model_loader.hpp"
+#include "deploydyn/thermal/section_temperature_difference.hpp"
 #include "deploydyn/runs/run_to_folder.hpp"
 #include "support/cli.hpp"
 #include "support/csv_table.hpp"
@@ -89,6 +93,126 @@ TEST(ThermalCoupling, BoomLeavingEclipseCoolsEndOnAndWarmsBroadside) {
   // The stored energy is m c (T_end − T_0): the tally sums the right steps.
   const double capacity_J_K = 2700.0 * std::numbers::pi * (0.02 * 0.02 - 0.018 * 0.018) / 4.0 * 900.0;
   EXPECT_NEAR(stored_J, capacity_J_K * (previous_K - 200.0), 1e-9 * std::abs(stored_J));
+}
+
+// Two steel tubes (d = 0.02 m) 1 m long in orbit, the sun straight above (+z): `lit` at z = 0,
+// `cover` 0.1 m above it.
+Model shaded_pair(const std::string& shadows) {
+  return load_model_from_string(R"(
+nodes: {A: [0, 0, 0], B: [1, 0, 0], C: [0, 0, 0.1], D: [1, 0, 0.1]}
+materials:
+  steel: {E: 2.0e11, alpha: 1.2e-5, density: 7850, specific_heat: 490, absorptivity: 0.5, emissivity: 0.8}
+sections: {tube: {shape: circular_tube, outer_diameter: 0.02, wall_thickness: 0.001}}
+elements:
+  lit: {nodes: [A, B], section: tube, material: steel}
+  cover: {nodes: [C, D], section: tube, material: steel}
+supports: [{node: A}, {node: B}, {node: C}, {node: D}]
+environment: {type: orbit, sun_direction: [0, 0, 1], reference_temperature: 293.15, )" + shadows + R"(}
+analysis: {type: static, end: 100, step: 1}
+)", "shaded_pair.yaml");
+}
+
+TEST(ThermalCoupling, AMemberLeavingAnothersShadowTakesTheSunAsTheGeometrySays) {
+  Model model = shaded_pair("shadows: {every: 1, samples_along: 4, samples_across: 8}");
+  ThermalCoupling coupling(model);
+  ASSERT_TRUE(coupling.has_shadows());
+  EXPECT_EQ(coupling.shadowed_fractions(), (std::vector<double>{1.0, 0.0}));  // at t = 0
+  const DofMap dofs(model);
+  MotionState state;
+  state.q = Eigen::VectorXd::Zero(dofs.n_dofs());
+  for (int node = 0; node < 4; ++node) {
+    for (int k = 0; k < 3; ++k) state.q[dofs.index(node, k)] = model.nodes[node].position_m[k];
+  }
+  // The cover slides sideways at 1 mm/s: its shadow leaves the lit tube's strip |y| ≤ r after
+  // 2 r / v = 20 s. Shadows are cast from the step's start, the sun taken over the step.
+  const double speed_m_s = 1e-3, radius_m = 0.01, full_W = 0.5 * 1361.0 * 0.02 * 1.0;
+  double previous_K = coupling.temperatures_K()[0];
+  for (int step = 0; step < 30; ++step) {
+    const double offset_m = speed_m_s * step;
+    const double overlap = std::max(0.0, 2.0 * radius_m - offset_m) / (2.0 * radius_m);
+    const double before_J = coupling.tally().absorbed_J;
+    state.time_s = step;
+    coupling.before_step(state, 1.0);
+    const double lit_W = (coupling.tally().absorbed_J - before_J) - full_W;  // the cover is in full sun
+    EXPECT_NEAR(lit_W / full_W, 1.0 - overlap, 1.0 / 8 + 1e-12) << "offset " << offset_m;
+    if (offset_m >= 2.0 * radius_m) {
+      EXPECT_NEAR(lit_W, full_W, 1e-12);  // out of the shadow
+    }
+    if (offset_m == 0.0) {
+      EXPECT_EQ(lit_W, 0.0);  // fully shadowed: no direct light
+    }
+    state.time_s = step + 1.0;
+    for (const int node : {2, 3}) state.q[dofs.index(node, 1)] = speed_m_s * (step + 1);
+    coupling.after_step(state, false);
+    const double now_K = coupling.temperatures_K()[0];
+    // In full shadow it only radiates; once the sun reaches it, it warms.
+    if (offset_m == 0.0) {
+      EXPECT_LT(now_K, previous_K);
+    }
+    if (offset_m >= 0.5 * radius_m) {
+      EXPECT_GT(now_K, previous_K) << "offset " << offset_m;
+    }
+    previous_K = now_K;
+  }
+  EXPECT_EQ(coupling.most_shadowed().temperature_K, 1.0);
+  EXPECT_EQ(coupling.member_names()[static_cast<std::size_t>(coupling.most_shadowed().member)], "lit");
+}
+
+TEST(ThermalCoupling, ShadowsEveryNStepsKeepTheLastFractionsBetween) {
+  Model model = shaded_pair("shadows: {every: 5}");
+  ThermalCoupling coupling(model);
+  const DofMap dofs(model);
+  MotionState state;
+  state.q = Eigen::VectorXd::Zero(dofs.n_dofs());
+  for (int node = 0; node < 4; ++node) {
+    for (int k = 0; k < 3; ++k) state.q[dofs.index(node, k)] = model.nodes[node].position_m[k];
+  }
+  for (const int node : {2, 3}) state.q[dofs.index(node, 1)] = 1.0;  // the cover moved far away
+  for (int step = 1; step <= 5; ++step) {
+    coupling.before_step(state, 1.0);
+    coupling.after_step(state, false);
+    EXPECT_EQ(coupling.shadowed_fractions()[0], step < 5 ? 1.0 : 0.0) << step;
+  }
+}
+
+// A clamped 2D tube broadside to the sun, its sun-to-shade difference on: at every output its
+// bending moment is E I α D / d with D from temperatures.csv (the beam's curvature α D / d
+// held at zero); and D approaches the closed form D*.
+TEST(ThermalCoupling, AClampedTubeInTheSunTakesTheMomentOfItsSectionDifference) {
+  const Model model = load_model_from_string(R"(
+nodes: {A: [0, 0], B: [1, 0]}
+materials:
+  alu: {E: 7.0e10, alpha: 2.3e-5, density: 2700, specific_heat: 900, absorptivity: 0.6, emissivity: 0.8, conductivity: 10}
+sections: {tube: {shape: circular_tube, outer_diameter: 0.02, wall_thickness: 0.001}}
+elements:
+  boom: {type: beam, nodes: [A, B], section: tube, material: alu}
+supports: [{node: A, fix: [x, y, rz]}, {node: B, fix: [x, y, rz]}]
+environment: {type: orbit, sun_direction: [0, 1, 0], reference_temperature: 293.15, section_gradients: true}
+analysis: {type: static, end: 3000, step: 10, output_interval: 100}
+)", "clamped_tube.yaml");
+  testing::ScratchFolder folder("thermal_section_gradient");
+  const RunReport report = run_to_folder(model, folder.path());
+  ASSERT_EQ(report.status, RunStatus::completed) << report.message;
+  const testing::CsvTable temperatures = testing::read_csv_table(folder.path() / "temperatures.csv");
+  const testing::CsvTable history = testing::read_csv_table(folder.path() / "history.csv");
+  ASSERT_EQ(temperatures.columns, (std::vector<std::string>{"t", "T.boom", "dT_section.boom"}));
+  const double d = 0.02, e = 7.0e10, alpha = 2.3e-5;
+  const double inertia = std::numbers::pi / 64.0 * (std::pow(d, 4) - std::pow(d - 0.002, 4));
+  for (std::size_t row = 1; row < temperatures.rows.size(); ++row) {
+    const double difference_K = temperatures.at(row, "dT_section.boom");
+    const double t = temperatures.at(row, "t");
+    EXPECT_GT(difference_K, 0.0) << t;
+    EXPECT_NEAR(std::abs(history.at(row, "moment.boom")), e * inertia * alpha * difference_K / d,
+                1e-6 * e * inertia * alpha * difference_K / d) << t;
+  }
+  // After ≫ τ: the steady D* at the final mean temperature.
+  const std::size_t last = temperatures.rows.size() - 1;
+  RoundSectionBody tube{0.01, 0.001, 10.0, 2700.0 * 900.0, 0.6, 0.8};
+  const SectionDifferenceLaw law = section_difference_law(tube, 1361.0, temperatures.at(last, "T.boom"), 0.0);
+  EXPECT_NEAR(temperatures.at(last, "dT_section.boom"), law.steady_K, 1e-3 * law.steady_K);
+  const nlohmann::json summary = nlohmann::json::parse(testing::read_text(folder.path() / "summary.json"));
+  EXPECT_NEAR(summary.at("temperatures").at("section_difference_max_K").get<double>(),
+              temperatures.at(last, "dT_section.boom"), 0.05);
 }
 
 TEST(ThermalCoupling, RunsWithoutAnEnvironmentAreUntouched) {
