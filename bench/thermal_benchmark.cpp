@@ -8,7 +8,8 @@
 //                     heat balance and ΔT(t), the shadows recomputed; `gradients:1` also the beams'
 //                     sun-to-shade differences
 // Arguments: roofs as BM_RoofStep's (units, trusses: 10 × 3, 10 × 26, 10 × 263 units of
-// 10 trusses, ≈ 10², 10³, 10⁴ bars, and the planar 10⁴-unit roof), the arch as BM_ScissorStep's.
+// 10 trusses, ≈ 10², 10³, 10⁴ bars, and the planar 10⁴-unit roof); units 0 the scissor ring
+// example, 1000 the arch of BM_ScissorStep.
 // Sun oblique to every member family; steel tubes 20 mm × 0.8 mm.
 
 #include <benchmark/benchmark.h>
@@ -16,6 +17,7 @@
 #include <vector>
 
 #include "deploydyn/generators/scissor.hpp"
+#include "deploydyn/io/model_loader.hpp"
 #include "deploydyn/model/dof_map.hpp"
 #include "deploydyn/thermal/member_shadows.hpp"
 #include "deploydyn/thermal/thermal_coupling.hpp"
@@ -56,7 +58,14 @@ Model roof(int units, int trusses) {
   return model;
 }
 
+// units 0: examples/scissor/ring.yaml, the largest scissor example; else a polar arch as
+// BM_ScissorStep's.
 Model arch(int units, bool gradients) {
+  if (units == 0) {
+    Model ring = load_model(std::string(DEPLOYDYN_SOURCE_DIR) + "/examples/scissor/ring.yaml");
+    put_in_the_sun(ring, gradients);
+    return ring;
+  }
   ScissorOptions options;
   options.form = ScissorForm::polar;
   options.n_units = units;
@@ -131,8 +140,14 @@ void BM_ScissorThermalStep(benchmark::State& state) {
 
 BENCHMARK(BM_Shadows)->Apply(roof_sizes);
 BENCHMARK(BM_ThermalStep)->Apply(roof_sizes);
-BENCHMARK(BM_ScissorShadows)->ArgName("units")->Arg(1000)->Unit(benchmark::kMicrosecond);
-BENCHMARK(BM_ScissorThermalStep)->ArgNames({"units", "gradients"})->Args({1000, 0})->Args({1000, 1})->Unit(benchmark::kMicrosecond);
+BENCHMARK(BM_ScissorShadows)->ArgName("units")->Arg(0)->Arg(1000)->Unit(benchmark::kMicrosecond);
+BENCHMARK(BM_ScissorThermalStep)
+    ->ArgNames({"units", "gradients"})
+    ->Args({0, 0})
+    ->Args({0, 1})
+    ->Args({1000, 0})
+    ->Args({1000, 1})
+    ->Unit(benchmark::kMicrosecond);
 
 }  // namespace
 }  // namespace deploydyn
