@@ -63,10 +63,10 @@ TEST(MemberShadows, AnEdgeAcrossTheMemberIsWithinOneRowAlong) {
   // The upper member covers x in [0, 0.5]: half the lower one's length.
   MemberShadows shadows(2, 8, 4);
   const std::array<MemberCapsule, 2> members{MemberCapsule{{0, 0, 0}, {1, 0, 0}, kRadius_m},
-                                             MemberCapsule{{-0.1, 0, 0.1}, {0.5 - kRadius_m, 0, 0.1}, kRadius_m}};
+                                             MemberCapsule{{-0.1, 0, 0.1}, {0.5, 0, 0.1}, kRadius_m}};
   EXPECT_EQ(shadowed(shadows, members)[0], 0.5);
   // An oblique sun moves the shadow along: from (x, 0, 0.1) towards −s it lands 0.1 · tan(30°)
-  // further in +x, covering [0, 0.5577] (its cap's round edge within a sample row).
+  // further in +x, covering [0, 0.5577].
   const Eigen::Vector3d sun(-std::sin(std::numbers::pi / 6), 0.0, std::cos(std::numbers::pi / 6));
   MemberShadows fine(2, 64, 4);
   EXPECT_NEAR(shadowed(fine, members, sun)[0], 0.5 + 0.1 * std::tan(std::numbers::pi / 6), 1.0 / 64 + 1e-12);

@@ -29,8 +29,8 @@ void skip_own_member(const RTCFilterFunctionNArguments* args) {
 struct MemberShadows::Scene {
   RTCDevice device = nullptr;
   RTCScene scene = nullptr;
-  RTCGeometry curves = nullptr;  // one round linear segment per member, vertices 2i and 2i + 1
-  float* vertices = nullptr;     // x, y, z, r per vertex
+  RTCGeometry strips = nullptr;  // one quad per member, its silhouette: vertices 4i … 4i + 3
+  float* vertices = nullptr;     // x, y, z (and Embree's padding) per vertex
 
   ~Scene() {
     if (scene != nullptr) rtcReleaseScene(scene);
@@ -62,17 +62,17 @@ MemberShadows::MemberShadows(int n_members, int samples_along, int samples_acros
     rtcCommitScene(scene_->scene);
     return;
   }
-  scene_->curves = rtcNewGeometry(scene_->device, RTC_GEOMETRY_TYPE_ROUND_LINEAR_CURVE);
+  scene_->strips = rtcNewGeometry(scene_->device, RTC_GEOMETRY_TYPE_QUAD);
+  // 16 bytes a vertex: Embree reads vertex buffers in 16-byte loads.
   scene_->vertices = static_cast<float*>(rtcSetNewGeometryBuffer(
-      scene_->curves, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT4, 4 * sizeof(float), 2 * static_cast<std::size_t>(n_members)));
-  auto* segments = static_cast<unsigned*>(rtcSetNewGeometryBuffer(
-      scene_->curves, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT, sizeof(unsigned), static_cast<std::size_t>(n_members)));
-  // Segments that share no vertex: every member is a capsule of its own, caps at both ends.
-  for (int i = 0; i < n_members; ++i) segments[i] = 2 * static_cast<unsigned>(i);
-  rtcSetGeometryOccludedFilterFunction(scene_->curves, skip_own_member);
-  rtcSetGeometryBuildQuality(scene_->curves, RTC_BUILD_QUALITY_LOW);
-  rtcAttachGeometry(scene_->scene, scene_->curves);
-  rtcReleaseGeometry(scene_->curves);  // the scene holds it
+      scene_->strips, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, 4 * sizeof(float), 4 * static_cast<std::size_t>(n_members)));
+  auto* corners = static_cast<unsigned*>(rtcSetNewGeometryBuffer(
+      scene_->strips, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT4, 4 * sizeof(unsigned), static_cast<std::size_t>(n_members)));
+  for (unsigned i = 0; i < 4 * static_cast<unsigned>(n_members); ++i) corners[i] = i;
+  rtcSetGeometryOccludedFilterFunction(scene_->strips, skip_own_member);
+  rtcSetGeometryBuildQuality(scene_->strips, RTC_BUILD_QUALITY_LOW);
+  rtcAttachGeometry(scene_->scene, scene_->strips);
+  rtcReleaseGeometry(scene_->strips);  // the scene holds it
 }
 
 MemberShadows::~MemberShadows() = default;
@@ -84,21 +84,34 @@ void MemberShadows::compute(std::span<const MemberCapsule> members, const Eigen:
                                             members.size(), shadowed_fraction.size(), n_members_));
   }
   if (n_members_ == 0) return;
-  float* v = scene_->vertices;
-  for (const MemberCapsule& member : members) {
-    for (const Eigen::Vector3d* end : {&member.end_a_m, &member.end_b_m}) {
-      *v++ = static_cast<float>((*end)[0]);
-      *v++ = static_cast<float>((*end)[1]);
-      *v++ = static_cast<float>((*end)[2]);
-      *v++ = static_cast<float>(member.radius_m);
-    }
-  }
-  rtcUpdateGeometryBuffer(scene_->curves, RTC_BUFFER_TYPE_VERTEX, 0);
-  rtcCommitGeometry(scene_->curves);
-  rtcCommitScene(scene_->scene);
-
   const Eigen::Vector3d sun = sun_direction.normalized();
   const double n_samples = static_cast<double>(samples_along_) * samples_across_;
+  // Each member's silhouette as the sun sees it: the strip through its axis, 2r wide along
+  // e = d × s / |d × s| (a member end-on to the sun: a strip of no width).
+  std::vector<Eigen::Vector3d>& half_widths = half_widths_;
+  half_widths.resize(members.size());
+  float* v = scene_->vertices;
+  for (std::size_t i = 0; i < members.size(); ++i) {
+    const MemberCapsule& member = members[i];
+    const Eigen::Vector3d across = (member.end_b_m - member.end_a_m).cross(sun);
+    const double across_norm = across.norm();
+    half_widths[i] = across_norm > 1e-9 * (member.end_b_m - member.end_a_m).norm()
+                         ? Eigen::Vector3d(member.radius_m / across_norm * across)
+                         : Eigen::Vector3d::Zero();
+    for (const Eigen::Vector3d& corner : {Eigen::Vector3d(member.end_a_m - half_widths[i]),
+                                          Eigen::Vector3d(member.end_b_m - half_widths[i]),
+                                          Eigen::Vector3d(member.end_b_m + half_widths[i]),
+                                          Eigen::Vector3d(member.end_a_m + half_widths[i])}) {
+      *v++ = static_cast<float>(corner[0]);
+      *v++ = static_cast<float>(corner[1]);
+      *v++ = static_cast<float>(corner[2]);
+      *v++ = 0.0f;
+    }
+  }
+  rtcUpdateGeometryBuffer(scene_->strips, RTC_BUFFER_TYPE_VERTEX, 0);
+  rtcCommitGeometry(scene_->strips);
+  rtcCommitScene(scene_->scene);
+
   SelfExcludingContext context;
   rtcInitIntersectContext(&context.embree);
   RTCRay ray{};
@@ -108,14 +121,11 @@ void MemberShadows::compute(std::span<const MemberCapsule> members, const Eigen:
   for (int i = 0; i < n_members_; ++i) {
     const MemberCapsule& member = members[static_cast<std::size_t>(i)];
     const Eigen::Vector3d axis = member.end_b_m - member.end_a_m;
-    // Across the sunlit strip: ⟂ to the axis and to the sun, |axis × s| = L |sin θ|.
-    const Eigen::Vector3d across = axis.cross(sun);
-    const double across_norm = across.norm();
-    if (!(across_norm > 1e-9 * axis.norm())) {
+    const Eigen::Vector3d& half_width = half_widths[static_cast<std::size_t>(i)];
+    if (half_width.isZero()) {
       shadowed_fraction[static_cast<std::size_t>(i)] = 0.0;
       continue;
     }
-    const Eigen::Vector3d half_width = member.radius_m * across / across_norm;
     context.self = static_cast<unsigned>(i);
     int shadowed = 0;
     for (int a = 0; a < samples_along_; ++a) {

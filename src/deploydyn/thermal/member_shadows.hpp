@@ -3,19 +3,21 @@
 // between members"), by ray casting with Embree (Debian libembree-dev, the one file that
 // includes it is member_shadows.cpp).
 //
-// Each member is a capsule of its section's outer radius r around its axis a → b (Embree's
-// round linear curve). Its sunlit face, as the sun sees it, is the strip of width 2r along the
-// axis in the plane through the axis normal to s⊥ (the sun's direction s less its component
-// along the axis). Samples at the centres of an n_along × n_across grid on that strip each
-// cast a ray towards the sun; a ray that meets any other member is in shadow, one that meets
-// only its own member is not (self-occlusion excluded). The shadowed fraction
+// Each member is a cylinder of its section's outer radius r around its axis a → b. The sun sees
+// it as its silhouette, the strip of width 2r along the axis in the plane through the axis
+// normal to s⊥ (the sun's direction s less its component along the axis); that strip, a quad,
+// is what the ray caster holds of the member (Embree's quads: a third of the cost of its round
+// curves, measured; the cylinder's ends are flat). Samples at the centres of an n_along ×
+// n_across grid on the strip each cast a ray towards the sun; a ray that meets any other
+// member's strip is in shadow, its own strip is excluded (an occlusion filter). The shadowed
+// fraction
 //
 //     f_sh = (rays in shadow) / (n_along · n_across)
 //
 // is the share of the member's projected area A_proj = 2r L |sin θ| in shadow, with a sampling
 // error below one row or column of the grid at each shadow edge: |Δf| ≤ 1/n_across for an
 // edge along the member, 1/n_along across it. A member end-on to the sun (|sin θ| < 1e-9) has
-// no sunlit strip: f_sh = 0 (it absorbs no direct light anyway).
+// no sunlit strip: f_sh = 0 (it absorbs no direct light anyway), and it casts no shadow.
 
 #include <Eigen/Core>
 #include <memory>
@@ -31,7 +33,7 @@ struct ShadowOptions {
   int samples_across = 4;  // samples across its sunlit width
 };
 
-// One member's axis in the current configuration and its outer radius.
+// One member's axis in the current configuration and its outer radius (m).
 struct MemberCapsule {
   Eigen::Vector3d end_a_m = Eigen::Vector3d::Zero();
   Eigen::Vector3d end_b_m = Eigen::Vector3d::Zero();
@@ -59,6 +61,7 @@ class MemberShadows {
   int n_members_ = 0;
   int samples_along_ = 0;
   int samples_across_ = 0;
+  std::vector<Eigen::Vector3d> half_widths_;  // work space: r e per member
 };
 
 }  // namespace deploydyn::thermal
