@@ -6,6 +6,7 @@
 #include <Eigen/Geometry>
 #include <limits>
 #include <stdexcept>
+#include <vector>
 
 namespace deploydyn::thermal {
 namespace {
@@ -88,8 +89,7 @@ void MemberShadows::compute(std::span<const MemberCapsule> members, const Eigen:
   const double n_samples = static_cast<double>(samples_along_) * samples_across_;
   // Each member's silhouette as the sun sees it: the strip through its axis, 2r wide along
   // e = d × s / |d × s| (a member end-on to the sun: a strip of no width).
-  std::vector<Eigen::Vector3d>& half_widths = half_widths_;
-  half_widths.resize(members.size());
+  std::vector<Eigen::Vector3d> half_widths(members.size());  // r e per member
   float* v = scene_->vertices;
   for (std::size_t i = 0; i < members.size(); ++i) {
     const MemberCapsule& member = members[i];

@@ -61,7 +61,6 @@ class MemberShadows {
   int n_members_ = 0;
   int samples_along_ = 0;
   int samples_across_ = 0;
-  std::vector<Eigen::Vector3d> half_widths_;  // work space: r e per member
 };
 
 }  // namespace deploydyn::thermal
