@@ -131,17 +131,17 @@ TEST(ThermalCoupling, AMemberLeavingAnothersShadowTakesTheSunAsTheGeometrySays) 
     const double before_J = coupling.tally().absorbed_J;
     state.time_s = step;
     coupling.before_step(state, 1.0);
+    state.time_s = step + 1.0;
+    for (const int node : {2, 3}) state.q[dofs.index(node, 1)] = speed_m_s * (step + 1);
+    coupling.after_step(state, false);  // the tally of the step, then the shadows at its end
     const double lit_W = (coupling.tally().absorbed_J - before_J) - full_W;  // the cover is in full sun
     EXPECT_NEAR(lit_W / full_W, 1.0 - overlap, 1.0 / 8 + 1e-12) << "offset " << offset_m;
     if (offset_m >= 2.0 * radius_m) {
-      EXPECT_NEAR(lit_W, full_W, 1e-12);  // out of the shadow
+      EXPECT_NEAR(lit_W, full_W, 1e-9);  // out of the shadow
     }
     if (offset_m == 0.0) {
-      EXPECT_EQ(lit_W, 0.0);  // fully shadowed: no direct light
+      EXPECT_NEAR(lit_W, 0.0, 1e-9);  // fully shadowed: no direct light
     }
-    state.time_s = step + 1.0;
-    for (const int node : {2, 3}) state.q[dofs.index(node, 1)] = speed_m_s * (step + 1);
-    coupling.after_step(state, false);
     const double now_K = coupling.temperatures_K()[0];
     // In full shadow it only radiates; once the sun reaches it, it warms.
     if (offset_m == 0.0) {
