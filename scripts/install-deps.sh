@@ -6,7 +6,7 @@ set -euo pipefail
 packages=(
   build-essential cmake ninja-build pkg-config
   libeigen3-dev libyaml-cpp-dev libyaml-dev libsimdjson-dev libcli11-dev libfmt-dev nlohmann-json3-dev
-  libgtest-dev libgmock-dev libbenchmark-dev libsuitesparse-dev libmetis-dev libspectra-dev libnova-dev libfcl-dev
+  libgtest-dev libgmock-dev libbenchmark-dev libsuitesparse-dev libmetis-dev libspectra-dev libnova-dev libfcl-dev libembree-dev
   clang libclang-rt-14-dev
   python3 python3-numpy python3-matplotlib
   python3-dev pybind11-dev python3-pytest python3-pil python3-yaml python3-pysolar

@@ -2,6 +2,7 @@
 // a member that turns changes its absorbed flux as its angle to the sun says; the heat balance
 // closes over a run; the example boom's strain is α (T − T_ref) at every output, its
 // temperatures cool end-on to the sun and warm broadside towards the radiative equilibrium.
+// With shadows, a member that leaves another's shadow takes the sun as the geometry says.
 
 #include "deploydyn/thermal/thermal_coupling.hpp"
 
@@ -10,6 +11,7 @@
 
 #include <cmath>
 #include <numbers>
+#include <stdexcept>
 
 #include "deploydyn/io/model_loader.hpp"
 #include "deploydyn/runs/run_to_folder.hpp"
@@ -89,6 +91,95 @@ TEST(ThermalCoupling, BoomLeavingEclipseCoolsEndOnAndWarmsBroadside) {
   // The stored energy is m c (T_end − T_0): the tally sums the right steps.
   const double capacity_J_K = 2700.0 * std::numbers::pi * (0.02 * 0.02 - 0.018 * 0.018) / 4.0 * 900.0;
   EXPECT_NEAR(stored_J, capacity_J_K * (previous_K - 200.0), 1e-9 * std::abs(stored_J));
+}
+
+// Two steel tubes (d = 0.02 m) 1 m long in orbit, the sun straight above (+z): `lit` at z = 0,
+// `cover` 0.1 m above it.
+Model shaded_pair() {
+  return load_model_from_string(R"(
+nodes: {A: [0, 0, 0], B: [1, 0, 0], C: [0, 0, 0.1], D: [1, 0, 0.1]}
+materials:
+  steel: {E: 2.0e11, alpha: 1.2e-5, density: 7850, specific_heat: 490, absorptivity: 0.5, emissivity: 0.8}
+sections: {tube: {shape: circular_tube, outer_diameter: 0.02, wall_thickness: 0.001}}
+elements:
+  lit: {nodes: [A, B], section: tube, material: steel}
+  cover: {nodes: [C, D], section: tube, material: steel}
+supports: [{node: A}, {node: B}, {node: C}, {node: D}]
+environment: {type: orbit, sun_direction: [0, 0, 1], reference_temperature: 293.15, initial_temperature: 150}
+analysis: {type: static, end: 100, step: 1}
+)", "shaded_pair.yaml");
+}
+
+TEST(ThermalCoupling, AMemberLeavingAnothersShadowTakesTheSunAsTheGeometrySays) {
+  Model model = shaded_pair();
+  ThermalCoupling coupling(model, ShadowOptions{.every_steps = 1, .samples_along = 4, .samples_across = 8});
+  ASSERT_TRUE(coupling.has_shadows());
+  EXPECT_EQ(coupling.shadowed_fractions(), (std::vector<double>{1.0, 0.0}));  // at t = 0
+  const DofMap dofs(model);
+  MotionState state;
+  state.q = Eigen::VectorXd::Zero(dofs.n_dofs());
+  for (int node = 0; node < 4; ++node) {
+    for (int k = 0; k < 3; ++k) state.q[dofs.index(node, k)] = model.nodes[node].position_m[k];
+  }
+  // The cover slides sideways at 1 mm/s: its shadow leaves the lit tube's strip |y| ≤ r after
+  // 2 r / v = 20 s. Shadows are cast from the step's start, the sun taken over the step.
+  const double speed_m_s = 1e-3, radius_m = 0.01, full_W = 0.5 * 1361.0 * 0.02 * 1.0;
+  double previous_K = coupling.temperatures_K()[0];
+  for (int step = 0; step < 30; ++step) {
+    const double offset_m = speed_m_s * step;
+    const double overlap = std::max(0.0, 2.0 * radius_m - offset_m) / (2.0 * radius_m);
+    const double before_J = coupling.tally().absorbed_J;
+    state.time_s = step;
+    coupling.before_step(state, 1.0);
+    state.time_s = step + 1.0;
+    for (const int node : {2, 3}) state.q[dofs.index(node, 1)] = speed_m_s * (step + 1);
+    coupling.after_step(state, false);  // the tally of the step, then the shadows at its end
+    const double lit_W = (coupling.tally().absorbed_J - before_J) - full_W;  // the cover is in full sun
+    EXPECT_NEAR(lit_W / full_W, 1.0 - overlap, 1.0 / 8 + 1e-12) << "offset " << offset_m;
+    if (offset_m >= 2.0 * radius_m) {
+      EXPECT_NEAR(lit_W, full_W, 1e-9);  // out of the shadow
+    }
+    if (offset_m == 0.0) {
+      EXPECT_NEAR(lit_W, 0.0, 1e-9);  // fully shadowed: no direct light
+    }
+    const double now_K = coupling.temperatures_K()[0];
+    // In full shadow it only radiates; once the sun reaches it, it warms.
+    if (offset_m == 0.0) {
+      EXPECT_LT(now_K, previous_K);
+    }
+    if (offset_m >= radius_m) {
+      EXPECT_GT(now_K, previous_K) << "offset " << offset_m;
+    }
+    previous_K = now_K;
+  }
+  EXPECT_EQ(coupling.most_shadowed().temperature_K, 1.0);
+  EXPECT_EQ(coupling.member_names()[static_cast<std::size_t>(coupling.most_shadowed().member)], "lit");
+}
+
+TEST(ThermalCoupling, ShadowsEveryNStepsKeepTheLastFractionsBetween) {
+  Model model = shaded_pair();
+  ThermalCoupling coupling(model, ShadowOptions{.every_steps = 5});
+  const DofMap dofs(model);
+  MotionState state;
+  state.q = Eigen::VectorXd::Zero(dofs.n_dofs());
+  for (int node = 0; node < 4; ++node) {
+    for (int k = 0; k < 3; ++k) state.q[dofs.index(node, k)] = model.nodes[node].position_m[k];
+  }
+  for (const int node : {2, 3}) state.q[dofs.index(node, 1)] = 1.0;  // the cover moved far away
+  for (int step = 1; step <= 5; ++step) {
+    coupling.before_step(state, 1.0);
+    coupling.after_step(state, false);
+    EXPECT_EQ(coupling.shadowed_fractions()[0], step < 5 ? 1.0 : 0.0) << step;
+  }
+}
+
+TEST(ThermalCoupling, WithoutShadowsNothingIsShadowedAndNoColumnIsAdded) {
+  Model model = shaded_pair();
+  ThermalCoupling coupling(model);
+  EXPECT_FALSE(coupling.has_shadows());
+  EXPECT_EQ(coupling.shadowed_fractions(), (std::vector<double>{0.0, 0.0}));
+  EXPECT_TRUE(coupling.extra_column_names().empty());
+  EXPECT_THROW(ThermalCoupling(model, ShadowOptions{.every_steps = 0}), std::invalid_argument);
 }
 
 TEST(ThermalCoupling, RunsWithoutAnEnvironmentAreUntouched) {

@@ -4,16 +4,20 @@
 
 namespace deploydyn {
 
-TemperatureTable::TemperatureTable(const std::filesystem::path& file, const std::vector<std::string>& member_names)
+TemperatureTable::TemperatureTable(const std::filesystem::path& file, const std::vector<std::string>& member_names,
+                                   const std::vector<std::string>& extra_columns)
     : file_(file) {
   std::string header = "t";
   for (const std::string& name : member_names) header += ",T." + name;
+  for (const std::string& name : extra_columns) header += "," + name;
   file_.append(header + "\n");
 }
 
-void TemperatureTable::write_row(double time_s, const std::vector<double>& temperatures_K) {
+void TemperatureTable::write_row(double time_s, const std::vector<double>& temperatures_K,
+                                 const std::vector<double>& extra) {
   std::string row = fmt::format("{}", time_s);
   for (const double t : temperatures_K) row += fmt::format(",{}", t);
+  for (const double value : extra) row += fmt::format(",{}", value);
   file_.append(row + "\n");
 }
 
@@ -32,6 +36,12 @@ nlohmann::ordered_json temperature_summary(const thermal::ThermalCoupling& coupl
   j["emitted_J"] = tally.emitted_J;
   j["convected_J"] = tally.convected_J;
   j["stored_J"] = tally.stored_J;
+  if (coupling.has_shadows()) {
+    const thermal::TemperatureExtreme& shade = coupling.most_shadowed();
+    j["shadowed_max"] = shade.temperature_K;
+    j["shadowed_max_member"] = names[static_cast<std::size_t>(shade.member)];
+    j["shadowed_max_time_s"] = shade.time_s;
+  }
   return j;
 }
 

@@ -82,9 +82,10 @@ class HistoryRun final : public FolderRun {
     if (coupling_) {
       // The coupling rewrites the members' ΔT(t) between steps: the records are made on this
       // thread, before it does.
-      TemperatureTable temperatures(folder / kTemperatureFileName, coupling_->member_names());
+      TemperatureTable temperatures(folder / kTemperatureFileName, coupling_->member_names(),
+                                    coupling_->extra_column_names());
       coupling_->on_output([&](double time_s, const std::vector<double>& temperatures_K) {
-        temperatures.write_row(time_s, temperatures_K);
+        temperatures.write_row(time_s, temperatures_K, coupling_->extra_column_values());
       });
       coupling_->start(0.0);
       report = run_analysis(*assembler_, sink, stop_on_write_failure(control, stop, [] { return false; }), &*coupling_);

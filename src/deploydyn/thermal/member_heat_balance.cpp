@@ -14,10 +14,12 @@ double projected_area_m2(const LumpedMember& member, const Eigen::Vector3d& axis
 }
 
 double absorbed_power_W(const LumpedMember& member, const Eigen::Vector3d& axis, const Surroundings& around) {
+  // Shadows hide the sun's disk; the diffuse light comes from the whole sky, which thin
+  // members hardly hide from each other.
   const double lit = 1.0 - member.shadowed_fraction;
   const double direct_W = around.direct_W_m2 * projected_area_m2(member, axis, around.sun_direction);
   const double diffuse_W = around.diffuse_W_m2 * member.sunlit_width_m * axis.norm();
-  return member.absorptivity * lit * (direct_W + diffuse_W);
+  return member.absorptivity * (lit * direct_W + diffuse_W);
 }
 
 double emitted_power_W(const LumpedMember& member, double temperature_K, const Surroundings& around) {

@@ -4,12 +4,13 @@
 // Aerospace Applications", 1996, ch. 2; Boley & Weiner, "Theory of Thermal Stresses", 1960):
 //
 //   m c dT/dt = Q_abs − ε σ A_rad (T⁴ − T_sink⁴) − h A_rad (T − T_air)
-//   Q_abs     = α_s (S w L |sin θ| + D w L)                                  (absorbed, W)
+//   Q_abs     = α_s ((1 − f_sh) S w L |sin θ| + D w L)                       (absorbed, W)
 //
 // with S the direct solar flux (W/m²), θ the angle between the member's axis and the sun
 // direction, w the sunlit width (a tube's outer diameter, a rectangle's depth), L the length,
 // D the diffuse flux, A_rad = (section perimeter) L the surface that radiates and convects.
-// A member lit over a share s of its length (shadows, not yet computed) absorbs (1 − s) of it.
+// A member whose sunlit area is in shadow over a share f_sh (thermal/member_shadows.hpp) takes
+// (1 − f_sh) of the direct light; the diffuse light comes from the whole sky.
 //
 // The temperature advances by backward Euler, solved per member by a scalar Newton iteration:
 // unconditionally stable, monotone, first order in the step h.
@@ -27,7 +28,7 @@ struct LumpedMember {
   double emissivity = 0.0;         // ε
   double sunlit_width_m = 0.0;     // w
   double surface_area_m2 = 0.0;    // A_rad: perimeter × L
-  double shadowed_fraction = 0.0;  // s ∈ [0, 1]: the share of its length in shadow
+  double shadowed_fraction = 0.0;  // f_sh ∈ [0, 1]: the share of its sunlit area in shadow
 };
 
 // What surrounds the member at one time.

@@ -34,7 +34,7 @@ double required(const std::optional<double>& value, const Material& material, co
 
 }  // namespace
 
-ThermalCoupling::ThermalCoupling(Model& model) : model_(model), dofs_(model) {
+ThermalCoupling::ThermalCoupling(Model& model, std::optional<ShadowOptions> shadows) : model_(model), dofs_(model) {
   if (!model.environment) throw std::invalid_argument("ThermalCoupling: the model has no environment");
   for (const ElementRef& ref : all_elements(model)) {
     const std::optional<HeatedBody> heated = ref.kind->heated_body(model, ref.index);
@@ -63,9 +63,21 @@ ThermalCoupling::ThermalCoupling(Model& model) : model_(model), dofs_(model) {
     if (!(member.body.heat_capacity_J_K > 0.0)) {
       throw std::invalid_argument(fmt::format("member '{}' has no mass: its heat capacity m c would be 0", name));
     }
+    member.outer_radius_m = 0.5 * width_m;
     names_.push_back(name);
   }
   const Environment& environment = *model.environment;
+  shadowed_.assign(members_.size(), 0.0);
+  if (shadows) {
+    if (shadows->every_steps < 1) {
+      throw std::invalid_argument(fmt::format("ThermalCoupling: shadows every {} steps; at least 1", shadows->every_steps));
+    }
+    shadow_every_steps_ = shadows->every_steps;
+    shadows_ = std::make_unique<MemberShadows>(static_cast<int>(members_.size()), shadows->samples_along,
+                                               shadows->samples_across);
+    capsules_.resize(members_.size());
+    update_shadows(nullptr, 0.0);
+  }
   const double initial_K = environment.initial_temperature_K.value_or(environment.reference_temperature_K);
   temperatures_K_.assign(members_.size(), initial_K);
   pending_K_ = temperatures_K_;
@@ -81,17 +93,46 @@ void ThermalCoupling::start(double time_s) {
   if (on_output_) on_output_(time_s, temperatures_K_);
 }
 
+Eigen::Vector3d ThermalCoupling::axis_at(const Eigen::VectorXd& q, const HeatedElement& member) const {
+  Eigen::Vector3d axis = Eigen::Vector3d::Zero();
+  for (int k = 0; k < model_.dimension; ++k) {
+    axis[k] = q[dofs_.index(member.node_b, k)] - q[dofs_.index(member.node_a, k)];
+  }
+  return axis;
+}
+
+// From the configuration q (nullptr: the nodes as the file places them) and the sun at time_s.
+void ThermalCoupling::update_shadows(const Eigen::VectorXd* q, double time_s) {
+  for (std::size_t i = 0; i < members_.size(); ++i) {
+    const HeatedElement& member = members_[i];
+    MemberCapsule& capsule = capsules_[i];
+    if (q == nullptr) {
+      capsule.end_a_m = model_.nodes[member.node_a].position_m;
+      capsule.end_b_m = model_.nodes[member.node_b].position_m;
+    } else {
+      for (int k = 0; k < model_.dimension; ++k) {
+        capsule.end_a_m[k] = (*q)[dofs_.index(member.node_a, k)];
+        capsule.end_b_m[k] = (*q)[dofs_.index(member.node_b, k)];
+      }
+    }
+    capsule.radius_m = member.outer_radius_m;
+  }
+  shadows_->compute(capsules_, surroundings_at(*model_.environment, time_s).sun_direction, shadowed_);
+  for (std::size_t i = 0; i < members_.size(); ++i) {
+    members_[i].body.shadowed_fraction = shadowed_[i];
+    if (most_shadowed_.member < 0 || shadowed_[i] > most_shadowed_.temperature_K) {
+      most_shadowed_ = {shadowed_[i], static_cast<int>(i), time_s};
+    }
+  }
+}
+
 void ThermalCoupling::before_step(const MotionState& start, double step_s) {
   const double end_s = start.time_s + step_s;
   const Surroundings around = surroundings_at(*model_.environment, end_s);
-  const int dimension = model_.dimension;
   pending_tally_ = tally_;
   for (std::size_t i = 0; i < members_.size(); ++i) {
     const HeatedElement& member = members_[i];
-    Eigen::Vector3d axis = Eigen::Vector3d::Zero();
-    for (int k = 0; k < dimension; ++k) {
-      axis[k] = start.q[dofs_.index(member.node_b, k)] - start.q[dofs_.index(member.node_a, k)];
-    }
+    const Eigen::Vector3d axis = axis_at(start.q, member);
     const double absorbed_W = absorbed_power_W(member.body, axis, around);
     const double t1 = backward_euler_step(member.body, temperatures_K_[i], step_s, absorbed_W, around);
     pending_K_[i] = t1;
@@ -107,6 +148,8 @@ void ThermalCoupling::after_step(const MotionState& end, bool output) {
   temperatures_K_ = pending_K_;
   tally_ = pending_tally_;
   time_s_ = end.time_s;
+  ++accepted_steps_;
+  if (shadows_ && accepted_steps_ % shadow_every_steps_ == 0) update_shadows(&end.q, end.time_s);
   track_extremes(end.time_s);
   if (output && on_output_) on_output_(end.time_s, temperatures_K_);
 }
@@ -126,6 +169,18 @@ void ThermalCoupling::track_extremes(double time_s) {
     if (first || t < coldest_.temperature_K) coldest_ = {t, static_cast<int>(i), time_s};
     if (first || t > hottest_.temperature_K) hottest_ = {t, static_cast<int>(i), time_s};
   }
+}
+
+std::vector<std::string> ThermalCoupling::extra_column_names() const {
+  std::vector<std::string> columns;
+  if (shadows_) {
+    for (const std::string& name : names_) columns.push_back("shade." + name);
+  }
+  return columns;
+}
+
+std::vector<double> ThermalCoupling::extra_column_values() const {
+  return shadows_ ? shadowed_ : std::vector<double>{};
 }
 
 }  // namespace deploydyn::thermal

@@ -7,10 +7,17 @@
 // interface, ΔT(t) = T − T_ref varying linearly from T_n to T_n+1 over the step
 // (ElementKind::set_element_temperature_change), as it sees a given ΔT(t) table.
 //
+// With shadow options (docs/theory.md, "Shadows between members") it casts rays from every
+// member towards the sun at t = 0 and after every `every_steps` accepted steps
+// (thermal/member_shadows.hpp), from the configuration reached; the steps between use the last
+// shadowed fractions.
+//
 // It writes the ΔT functions of `model`, which must be the model the run's Assembler is built
 // from and must outlive the run; it reads nothing of the mechanics but the node positions in q.
 
 #include <functional>
+#include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -19,6 +26,7 @@
 #include "deploydyn/model/model.hpp"
 #include "deploydyn/solvers/step_hook.hpp"
 #include "deploydyn/thermal/member_heat_balance.hpp"
+#include "deploydyn/thermal/member_shadows.hpp"
 
 namespace deploydyn::thermal {
 
@@ -42,7 +50,9 @@ class ThermalCoupling final : public StepHook {
  public:
   // Throws std::invalid_argument when the model has no environment, or a member's material or
   // section lacks what the heat balance needs (naming the member and the key).
-  explicit ThermalCoupling(Model& model);
+  // With `shadows`, the members shade each other. Throws std::invalid_argument also for sample
+  // counts or an interval below 1.
+  explicit ThermalCoupling(Model& model, std::optional<ShadowOptions> shadows = std::nullopt);
 
   // Called on every accepted output (t = 0 first, then every output time): time and the
   // members' temperatures (K).
@@ -60,13 +70,26 @@ class ThermalCoupling final : public StepHook {
   const TemperatureExtreme& hottest() const { return hottest_; }
   const HeatTally& tally() const { return tally_; }
 
+  // Shadows: every member's shadowed fraction f_sh (0 without shadows) and its largest value
+  // over the run (its member and time; `member` −1 without shadows).
+  const std::vector<double>& shadowed_fractions() const { return shadowed_; }
+  bool has_shadows() const { return shadows_ != nullptr; }
+  const TemperatureExtreme& most_shadowed() const { return most_shadowed_; }
+  // The columns temperatures.csv adds after the temperatures, and their values now:
+  // shade.<member> with shadows.
+  std::vector<std::string> extra_column_names() const;
+  std::vector<double> extra_column_values() const;
+
  private:
   struct HeatedElement {
     const ElementKind* kind = nullptr;
     int index = 0;
     int node_a = 0, node_b = 0;
     LumpedMember body;
+    double outer_radius_m = 0.0;  // of the capsule that casts and takes shadows
   };
+  Eigen::Vector3d axis_at(const Eigen::VectorXd& q, const HeatedElement& member) const;
+  void update_shadows(const Eigen::VectorXd* q, double time_s);
   void set_temperature_changes(double t0, double t1);
   void track_extremes(double time_s);
 
@@ -80,6 +103,13 @@ class ThermalCoupling final : public StepHook {
   double time_s_ = 0.0;
   TemperatureExtreme coldest_, hottest_;
   OutputCallback on_output_;
+
+  std::unique_ptr<MemberShadows> shadows_;  // when the environment asks for shadows
+  int shadow_every_steps_ = 1;
+  long accepted_steps_ = 0;
+  std::vector<double> shadowed_;            // f_sh per member
+  std::vector<MemberCapsule> capsules_;     // work space of update_shadows
+  TemperatureExtreme most_shadowed_{0.0, -1, 0.0};  // its temperature_K: the fraction
 };
 
 }  // namespace deploydyn::thermal

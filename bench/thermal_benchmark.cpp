@@ -1,0 +1,141 @@
+// The thermal part of a step (thermal/thermal_coupling.hpp) with shadows cast every step, on
+// the roofs and the scissor arch whose mechanical steps BM_RoofStep and BM_ScissorStep time
+// (docs/performance.md, "Thermal coupling and shadows"): the target is the whole thermal part
+// ≤ 20 % of a mechanical step.
+//   BM_Shadows        one shadow update alone (MemberShadows::compute: the Embree scene rebuilt
+//                     for the members' positions, n_along × n_across rays per member)
+//   BM_ThermalStep    the coupling's whole step (before_step + after_step): every member's
+//                     heat balance and ΔT(t), the shadows recomputed
+// Arguments: roofs as BM_RoofStep's (units, trusses: 10 × 3, 10 × 26, 10 × 263 units of
+// 10 trusses, ≈ 10², 10³, 10⁴ bars, and the planar 10⁴-unit roof); units 0 the scissor ring
+// example, 1000 the arch of BM_ScissorStep.
+// Sun oblique to every member family; steel tubes 20 mm × 0.8 mm.
+
+#include <benchmark/benchmark.h>
+
+#include <vector>
+
+#include "deploydyn/generators/scissor.hpp"
+#include "deploydyn/io/model_loader.hpp"
+#include "deploydyn/model/dof_map.hpp"
+#include "deploydyn/thermal/member_shadows.hpp"
+#include "deploydyn/thermal/thermal_coupling.hpp"
+#include "support/cold_roof.hpp"
+
+namespace deploydyn {
+namespace {
+
+// Every bar and beam a steel tube 20 mm × 0.8 mm in orbit, the sun oblique to all of them.
+void put_in_the_sun(Model& model) {
+  Section tube;
+  tube.name = "tube";
+  tube.shape = SectionShape::circular_tube;
+  tube.diameter_m = 0.02;
+  tube.wall_thickness_m = 0.0008;
+  tube.properties = section_properties(tube);
+  model.sections.push_back(tube);
+  const int section = static_cast<int>(model.sections.size()) - 1;
+  for (BarElement& bar : model.bars) bar.section = section;
+  for (BeamElement& beam : model.beams) beam.section = section;
+  for (Material& material : model.materials) {
+    material.specific_heat_J_kgK = 490.0;
+    material.absorptivity = 0.5;
+    material.emissivity = 0.85;
+  }
+  Environment environment;
+  environment.kind = EnvironmentKind::orbit;
+  environment.orbit.sun_direction = Eigen::Vector3d(0.3, 0.8, 0.5).normalized();
+  model.environment = environment;
+}
+
+Model roof(int units, int trusses) {
+  Model model = bench::cold_pinned_roof(units, trusses);
+  put_in_the_sun(model);
+  return model;
+}
+
+// units 0: examples/scissor/ring.yaml, the largest scissor example; else a polar arch as
+// BM_ScissorStep's.
+Model arch(int units) {
+  if (units == 0) {
+    Model ring = load_model(std::string(DEPLOYDYN_SOURCE_DIR) + "/examples/scissor/ring.yaml");
+    put_in_the_sun(ring);
+    return ring;
+  }
+  ScissorOptions options;
+  options.form = ScissorForm::polar;
+  options.n_units = units;
+  options.span_m = 2.0 * units;  // as BM_ScissorStep's
+  options.delta_t_C = 0.0;
+  Model model = make_scissor(options);
+  put_in_the_sun(model);
+  return model;
+}
+
+// The positions of the model's nodes as the unknowns q (the rest 0).
+Eigen::VectorXd node_positions(const Model& model) {
+  const DofMap dofs(model);
+  Eigen::VectorXd q = Eigen::VectorXd::Zero(dofs.n_dofs());
+  for (int node = 0; node < model.n_nodes(); ++node) {
+    for (int k = 0; k < model.dimension; ++k) q[dofs.index(node, k)] = model.nodes[node].position_m[k];
+  }
+  return q;
+}
+
+void time_thermal_step(benchmark::State& state, Model model) {
+  thermal::ThermalCoupling coupling(model, thermal::ShadowOptions{});
+  MotionState at;
+  at.q = node_positions(model);
+  const double h = 1e-3;
+  for (auto _ : state) {
+    coupling.before_step(at, h);
+    coupling.after_step(at, false);
+  }
+  state.counters["members"] = static_cast<double>(coupling.member_names().size());
+  double shaded = 0.0;
+  for (const double f : coupling.shadowed_fractions()) shaded += f;
+  state.counters["mean_shadowed"] = shaded / static_cast<double>(coupling.member_names().size());
+}
+
+void time_shadows(benchmark::State& state, const Model& model) {
+  const thermal::ShadowOptions options;
+  std::vector<thermal::MemberCapsule> capsules;
+  for (const BarElement& bar : model.bars) {
+    capsules.push_back({model.nodes[bar.node_a].position_m, model.nodes[bar.node_b].position_m, 0.01});
+  }
+  for (const BeamElement& beam : model.beams) {
+    capsules.push_back({model.nodes[beam.node_a].position_m, model.nodes[beam.node_b].position_m, 0.01});
+  }
+  thermal::MemberShadows shadows(static_cast<int>(capsules.size()), options.samples_along, options.samples_across);
+  std::vector<double> fractions(capsules.size());
+  for (auto _ : state) {
+    shadows.compute(capsules, model.environment->orbit.sun_direction, fractions);
+    benchmark::DoNotOptimize(fractions.data());
+  }
+  state.counters["members"] = static_cast<double>(capsules.size());
+  state.counters["rays"] = static_cast<double>(capsules.size() * options.samples_along * options.samples_across);
+}
+
+void roof_sizes(benchmark::internal::Benchmark* b) {
+  b->ArgNames({"units", "trusses"});
+  for (const int units : {3, 26, 263}) b->Args({units, 10});
+  b->Args({10000, 1});
+  b->Unit(benchmark::kMicrosecond);
+}
+
+void BM_Shadows(benchmark::State& state) {
+  time_shadows(state, roof(static_cast<int>(state.range(0)), static_cast<int>(state.range(1))));
+}
+void BM_ThermalStep(benchmark::State& state) {
+  time_thermal_step(state, roof(static_cast<int>(state.range(0)), static_cast<int>(state.range(1))));
+}
+void BM_ScissorShadows(benchmark::State& state) { time_shadows(state, arch(static_cast<int>(state.range(0)))); }
+void BM_ScissorThermalStep(benchmark::State& state) { time_thermal_step(state, arch(static_cast<int>(state.range(0)))); }
+
+BENCHMARK(BM_Shadows)->Apply(roof_sizes);
+BENCHMARK(BM_ThermalStep)->Apply(roof_sizes);
+BENCHMARK(BM_ScissorShadows)->ArgName("units")->Arg(0)->Arg(1000)->Unit(benchmark::kMicrosecond);
+BENCHMARK(BM_ScissorThermalStep)->ArgName("units")->Arg(0)->Arg(1000)->Unit(benchmark::kMicrosecond);
+
+}  // namespace
+}  // namespace deploydyn

@@ -1,0 +1,102 @@
+// Shadows between members (thermal/member_shadows.hpp) against the geometry of their
+// silhouettes: a member behind a parallel one of the same width is fully shadowed, half
+// shadowed when offset by half its width; at any offset the fraction is within the sampling
+// error 1/n_across of the overlap of the two strips; a member never shades itself.
+
+#include "deploydyn/thermal/member_shadows.hpp"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <numbers>
+#include <stdexcept>
+
+namespace deploydyn::thermal {
+namespace {
+
+constexpr double kRadius_m = 0.01;
+const Eigen::Vector3d kSunAbove = Eigen::Vector3d::UnitZ();
+
+// The lit member along x at z = 0, and one above it (towards the sun) offset by `offset_m` in y.
+std::array<MemberCapsule, 2> lit_and_above(double offset_m) {
+  return {MemberCapsule{{0, 0, 0}, {1, 0, 0}, kRadius_m}, MemberCapsule{{0, offset_m, 0.1}, {1, offset_m, 0.1}, kRadius_m}};
+}
+
+// The share of the lower member's sunlit strip (width 2r) that the upper one's covers.
+double strip_overlap(double offset_m) { return std::max(0.0, 2.0 * kRadius_m - std::abs(offset_m)) / (2.0 * kRadius_m); }
+
+std::array<double, 2> shadowed(MemberShadows& shadows, const std::array<MemberCapsule, 2>& members,
+                               const Eigen::Vector3d& sun = kSunAbove) {
+  std::array<double, 2> fractions{-1.0, -1.0};
+  shadows.compute(members, sun, fractions);
+  return fractions;
+}
+
+TEST(MemberShadows, MemberBehindAParallelOneOfTheSameWidthIsFullyShadowed) {
+  MemberShadows shadows(2, 8, 4);
+  const auto fractions = shadowed(shadows, lit_and_above(0.0));
+  EXPECT_EQ(fractions[0], 1.0);
+  EXPECT_EQ(fractions[1], 0.0);  // the upper one, in full sun: the lower one is behind it
+}
+
+TEST(MemberShadows, OffsetByHalfItsWidthIsHalfShadowed) {
+  for (const int across : {2, 4, 8}) {
+    MemberShadows shadows(2, 8, across);
+    EXPECT_EQ(shadowed(shadows, lit_and_above(kRadius_m))[0], 0.5) << across;  // an even grid: exact
+    EXPECT_EQ(shadowed(shadows, lit_and_above(-kRadius_m))[0], 0.5) << across;
+  }
+}
+
+TEST(MemberShadows, AnyOffsetIsWithinTheSamplingErrorOfTheStripsOverlap) {
+  for (const int across : {1, 3, 4, 16}) {
+    MemberShadows shadows(2, 8, across);
+    for (double offset = -2.5 * kRadius_m; offset <= 2.5 * kRadius_m; offset += 0.05 * kRadius_m) {
+      const double f = shadowed(shadows, lit_and_above(offset))[0];
+      EXPECT_LE(std::abs(f - strip_overlap(offset)), 1.0 / across) << "across " << across << ", offset " << offset;
+    }
+  }
+}
+
+TEST(MemberShadows, AnEdgeAcrossTheMemberIsWithinOneRowAlong) {
+  // The upper member covers x in [0, 0.5]: half the lower one's length.
+  MemberShadows shadows(2, 8, 4);
+  const std::array<MemberCapsule, 2> members{MemberCapsule{{0, 0, 0}, {1, 0, 0}, kRadius_m},
+                                             MemberCapsule{{-0.1, 0, 0.1}, {0.5, 0, 0.1}, kRadius_m}};
+  EXPECT_EQ(shadowed(shadows, members)[0], 0.5);
+  // An oblique sun moves the shadow along: from (x, 0, 0.1) towards −s it lands 0.1 · tan(30°)
+  // further in +x, covering [0, 0.5577].
+  const Eigen::Vector3d sun(-std::sin(std::numbers::pi / 6), 0.0, std::cos(std::numbers::pi / 6));
+  MemberShadows fine(2, 64, 4);
+  EXPECT_NEAR(shadowed(fine, members, sun)[0], 0.5 + 0.1 * std::tan(std::numbers::pi / 6), 1.0 / 64 + 1e-12);
+}
+
+TEST(MemberShadows, AMemberDoesNotShadeItself) {
+  MemberShadows shadows(1, 8, 4);
+  std::array<double, 1> fraction{-1.0};
+  const std::array<MemberCapsule, 1> alone{MemberCapsule{{0, 0, 0}, {1, 0.2, 0.3}, kRadius_m}};
+  for (const Eigen::Vector3d& sun : {Eigen::Vector3d(0, 0, 1), Eigen::Vector3d(1, 1, 1).normalized(),
+                                     Eigen::Vector3d(1, 0.2, 0.3).normalized()}) {
+    shadows.compute(alone, sun, fraction);
+    EXPECT_EQ(fraction[0], 0.0);
+  }
+}
+
+TEST(MemberShadows, TheSunBelowLeavesTheUpperMemberInTheLowerOnesShadow) {
+  MemberShadows shadows(2, 8, 4);
+  const auto fractions = shadowed(shadows, lit_and_above(0.0), -kSunAbove);
+  EXPECT_EQ(fractions[0], 0.0);
+  EXPECT_EQ(fractions[1], 1.0);
+}
+
+TEST(MemberShadows, SamplesAndSizesAreChecked) {
+  EXPECT_THROW(MemberShadows(2, 0, 4), std::invalid_argument);
+  EXPECT_THROW(MemberShadows(2, 4, 0), std::invalid_argument);
+  MemberShadows shadows(3, 4, 4);
+  std::array<double, 2> fractions{};
+  EXPECT_THROW(shadows.compute(lit_and_above(0.0), kSunAbove, fractions), std::invalid_argument);
+}
+
+}  // namespace
+}  // namespace deploydyn::thermal
