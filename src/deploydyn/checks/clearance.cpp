@@ -178,7 +178,12 @@ struct ClearanceWatch::State {
 
   // The Verlet list (docs/theory.md, "The broad phase"): the capsule pairs that were within the
   // threshold plus the skin when it was made, and the coordinates then.
-  std::vector<std::array<int, 2>> near;
+  struct NearPair {
+    int capsule_a = 0, capsule_b = 0;
+    std::uint64_t key = 0;       // their members' pair
+    PairState* pair = nullptr;   // its state once it mattered (an unordered_map's stay put)
+  };
+  std::vector<NearPair> near;
   Eigen::VectorXd q_listed;
   double skin_m = 0.0;
   int n_lists = 0;
@@ -244,23 +249,23 @@ struct ClearanceWatch::State {
     return std::sqrt(squared_m2) - a.radius_m - b.radius_m;
   }
 
-  // Measures a pair of capsules at the record; its distance, or NaN when it is not watched.
-  double measure(int capsule_a, int capsule_b) {
-    const std::optional<std::uint64_t> watched = watched_pair(capsule_a, capsule_b);
-    if (!watched) return std::numeric_limits<double>::quiet_NaN();
-    const std::uint64_t k = *watched;
-    const double distance_m = distance(capsule_a, capsule_b, *q);
+  // Takes a watched pair's distance at the record (`pair`: its state when known); returns its
+  // state, or none while it does not matter (or overlaps at the start).
+  PairState* take(std::uint64_t k, PairState* known, int capsule_a, int capsule_b, double distance_m) {
     if (n_records == 0 && distance_m < 0.0) {
       overlapping_at_start.insert(k);
       start_overlaps.emplace_back(k, distance_m);
-      return std::numeric_limits<double>::quiet_NaN();
+      return nullptr;
     }
-    auto found = pairs.find(k);
-    if (found == pairs.end()) {
-      if (distance_m >= threshold()) return distance_m;
-      found = pairs.emplace(k, PairState{}).first;
+    if (known == nullptr) {
+      auto found = pairs.find(k);
+      if (found == pairs.end()) {
+        if (distance_m >= threshold()) return nullptr;
+        found = pairs.emplace(k, PairState{}).first;
+      }
+      known = &found->second;
     }
-    PairState& pair = found->second;
+    PairState& pair = *known;
     if (pair.record != n_records) {
       pair.previous_distance_m = pair.record == n_records - 1 ? pair.record_distance_m : kInfinity;
       pair.record = n_records;
@@ -285,7 +290,7 @@ struct ClearanceWatch::State {
                                    : time_s;
       violations.push_back(k);
     }
-    return distance_m;
+    return known;
   }
 
   // The broad phase's visit of two boxes closer than its pruning distance: measured, and kept in
@@ -296,8 +301,11 @@ struct ClearanceWatch::State {
     auto& state = *static_cast<State*>(data);
     const int a = static_cast<int>(reinterpret_cast<std::intptr_t>(o1->getUserData()));
     const int b = static_cast<int>(reinterpret_cast<std::intptr_t>(o2->getUserData()));
-    const double distance_m = state.measure(a, b);
-    if (distance_m < state.threshold() + state.skin_m) state.near.push_back({a, b});
+    if (const std::optional<std::uint64_t> k = state.watched_pair(a, b)) {
+      const double distance_m = state.distance(a, b, *state.q);
+      PairState* pair = state.take(*k, nullptr, a, b, distance_m);
+      if (distance_m < state.threshold() + state.skin_m) state.near.push_back({a, b, *k, pair});
+    }
     pruning_m = state.threshold() + state.skin_m;
     return false;
   }
@@ -314,7 +322,13 @@ struct ClearanceWatch::State {
 
   // The list's pairs alone.
   void measure_listed() {
-    for (const auto& [a, b] : near) measure(a, b);
+    // The threshold only falls during the record: the one at its start lets through no fewer.
+    const double threshold_m = threshold();
+    for (NearPair& p : near) {
+      const double distance_m = distance(p.capsule_a, p.capsule_b, *q);
+      if (p.pair == nullptr && distance_m >= threshold_m) continue;
+      p.pair = take(p.key, p.pair, p.capsule_a, p.capsule_b, distance_m);
+    }
   }
 
   // How far the farthest node has moved since the list was made (m).
@@ -334,7 +348,7 @@ struct ClearanceWatch::State {
     for (const std::uint64_t k : overlapping_at_start) pairs.erase(k);
     const auto gone = [&](std::uint64_t k) { return overlapping_at_start.contains(k); };
     std::erase_if(violations, gone);
-    std::erase_if(near, [&](const std::array<int, 2>& pair) { return !watched_pair(pair[0], pair[1]); });
+    std::erase_if(near, [&](const NearPair& p) { return overlapping_at_start.contains(p.key); });
     closest.clear();
     for (const auto& [k, pair] : pairs) take_closest(k);
   }
