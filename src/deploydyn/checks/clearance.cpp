@@ -198,7 +198,7 @@ struct ClearanceWatch::State {
   int n_records = 0;
   double time_s = 0.0;
   double previous_time_s = 0.0;
-  double largest_speed_m_s = 0.0;  // since the last measured record, it included
+  double largest_speed_m_s = 0.0;  // at the last record
   double between_steps_m = 0.0;
   double evaluation_time_s = 0.0;
 
@@ -435,8 +435,8 @@ void ClearanceWatch::record(const StepRecord& r) {
   State& s = *state_;
   if (!s.applies) return;
   const auto start = std::chrono::steady_clock::now();
-  // (C3): the fastest node since the last measured record bounds what the records skipped.
-  s.largest_speed_m_s = std::max(s.largest_speed_m_s, s.largest_speed(r.v));
+  // (C3): the faster of this record's and the last one's fastest node bounds what the steps hide.
+  const double speed_m_s = s.largest_speed(r.v);
   s.time_s = r.time_s;
   s.q = &r.q;
   if (s.n_records == 0 || s.moved_since_list(r.q) > 0.5 * s.skin_m) {
@@ -447,8 +447,10 @@ void ClearanceWatch::record(const StepRecord& r) {
   s.q = nullptr;
   s.q_previous = r.q;
   if (s.n_records == 0) s.forget_start_overlaps();
-  if (s.n_records > 0) s.between_steps_m = std::max(s.between_steps_m, s.largest_speed_m_s * (r.time_s - s.previous_time_s));
-  s.largest_speed_m_s = s.largest_speed(r.v);
+  if (s.n_records > 0) {
+    s.between_steps_m = std::max(s.between_steps_m, std::max(s.largest_speed_m_s, speed_m_s) * (r.time_s - s.previous_time_s));
+  }
+  s.largest_speed_m_s = speed_m_s;
   s.previous_time_s = r.time_s;
   ++s.n_records;
   s.evaluation_time_s += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

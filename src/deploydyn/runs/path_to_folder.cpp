@@ -18,6 +18,7 @@
 #include "deploydyn/runs/run_folder.hpp"
 #include "deploydyn/output/summary_writer.hpp"
 #include "deploydyn/results/result_file_names.hpp"
+#include "deploydyn/solvers/parametrized_equilibrium.hpp"
 
 namespace deploydyn {
 namespace {
@@ -162,8 +163,9 @@ class PathRun final : public FolderRun {
     ContinuationOptions options = path_options(model());
     options.stop = control.stop;
     options.poll = control.poll;  // the Python module looks for Ctrl-C there
+    const ParametrizedEquilibrium at_point(assembler_, options.parameter, options.time_s);
     options.on_point = [&](const PathPoint& point, const PathEvent* event) {
-      check(point, options);
+      check(point, at_point);
       if (write_failure) return;
       try {
         path.add(point, event);
@@ -233,13 +235,11 @@ class PathRun final : public FolderRun {
   }
 
   // The member checks (and the clearance watch) at each point, as at a run's steps: at rest,
-  // at the drivers' time and ΔT scale of the point (solvers/parametrized_equilibrium.hpp).
-  void check(const PathPoint& point, const ContinuationOptions& options) {
-    const double time_s = options.parameter == PathParameter::driver ? point.parameter : options.time_s;
-    const double thermal_factor = options.parameter == PathParameter::thermal ? point.parameter : 1.0;
-    StepRecord record = make_path_record(assembler_, point.q, point.lambda, time_s, thermal_factor);
-    last_abscissa_ = options.parameter == PathParameter::thermal ? point.parameter * parameter_unit(assembler_)
-                                                                 : point.parameter;
+  // at the drivers' time and ΔT scale of the point, as the path's equilibrium reads them.
+  void check(const PathPoint& point, const ParametrizedEquilibrium& at) {
+    const double mu = point.parameter;
+    StepRecord record = make_path_record(assembler_, point.q, point.lambda, at.time_s(mu), at.thermal_factor(mu));
+    last_abscissa_ = at.parameter() == PathParameter::thermal ? mu * parameter_unit(assembler_) : mu;
     record.time_s = last_abscissa_;
     watch_.record(record);
   }
