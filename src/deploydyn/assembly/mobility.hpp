@@ -22,7 +22,7 @@ namespace deploydyn {
 // element span (r/L)² (r its radius of gyration) between axial and bending entries: 1e-4 at
 // r/L = 0.01, far above the tolerance; round-off in B and K is ~1e-15.
 inline constexpr double kRankTolerance = 1e-9;
-inline constexpr int kMaxRankUnknowns = 1500;
+inline constexpr int kMaxRankUnknowns = 800;  // a dense QR of ~2n × n: ~0.1 s at 800
 
 struct Mobility {
   int by_count = 0;  // Assembler::rigid_mobility(), the drivers' equations included
