@@ -303,7 +303,7 @@ elements:
   b1: {type: beam, nodes: [A, B], material: steel, area: 1.0e-4, inertia_y: 1.0e-8, inertia_z: 1.0e-8, torsion: 2.0e-8}
   b2: {type: beam, nodes: [C, D], material: steel, area: 1.0e-4, inertia_y: 1.0e-8, inertia_z: 1.0e-8, torsion: 2.0e-8}
   bar: {nodes: [E, A], material: steel, area: 1.0e-4}
-supports: [{node: A, axis: [0, 1, 1], offset: [0, 0, -0.05]}]
+supports: [{node: A, axis: [0, 0.6, 0.8], offset: [0, 0, -0.05]}]
 joints:
   lug: {type: ball, nodes: [B, C], offsets: [[0, 0, 0.1], [0, 0, 0]]}
   end: {type: ball, nodes: [D, E]}
