@@ -273,7 +273,7 @@ int check_command(const std::string& model_file, const std::vector<std::string>&
                "constraint Jacobian with the {} rigid, tolerance {:g}){}\n",
                left, elements_word, kRankTolerance,
                redundant == 0 ? std::string(": the count above is exact")
-                              : fmt::format(": {} equations are redundant there (special geometry such as parallel "
+                              : fmt::format(": over-constrained by {} redundant equations there (special geometry such as parallel "
                                             "or meeting axes, or more supports than needed), which the count by "
                                             "types cannot see; {}; the redundancy lets members carry self-stress, "
                                             "e.g. from a thermal strain it blocks",
