@@ -19,6 +19,7 @@
 
 #include "deploydyn/assembly/assembler.hpp"
 #include "deploydyn/assembly/linear_system_factory.hpp"
+#include "deploydyn/assembly/mobility.hpp"
 #include "deploydyn/checks/capacities_in_force.hpp"
 #include "deploydyn/checks/verdict.hpp"
 #include "deploydyn/elements/element_kinds.hpp"
@@ -182,12 +183,17 @@ int check_command(const std::string& model_file, const std::vector<std::string>&
   for (const FixedNode& s : model.supports) {
     for (int axis = 0; axis < model.dimension; ++axis) support_rows += s.axes[axis] ? 1 : 0;
     if (s.rotation) support_rows += model.dimension == 2 ? 1 : 3;
+    if (s.axis) support_rows += 2;  // a hinge to ground
   }
   int joint_rows = 0;
   for (const Joint& joint : model.joints) {
     const bool keeps_axis = model.dimension == 3 && assembler.dof_map().index(joint.nodes[0], "R11") >= 0 &&
                             assembler.dof_map().index(joint.nodes[1], "R11") >= 0;
-    joint_rows += model.dimension + (keeps_axis ? 2 : 0);
+    const int frame_rows = joint.kind == Joint::Kind::ball        ? 0
+                           : joint.kind == Joint::Kind::universal ? 1
+                           : keeps_axis                           ? 2
+                                                                  : 0;
+    joint_rows += model.dimension + frame_rows;
   }
   int element_rows = 0;  // constraints the elements bring: a 3D beam node's frame RᵀR = I
   for (const ElementKind* kind : element_kinds()) {
@@ -221,6 +227,7 @@ int check_command(const std::string& model_file, const std::vector<std::string>&
   }
   const std::string elements_word = fmt::format("{}", fmt::join(kinds_present, " and "));
   const int free_motion = assembler.rigid_mobility() + driver_rows;  // before the drivers
+  const Mobility rank = mobility(assembler);
   const auto driver_list = [&] {
     std::vector<std::string> out;
     for (const Driver& d : model.drivers) out.push_back(fmt::format("{} ({})", d.name, kDriverKinds.name(d.kind)));
@@ -257,7 +264,24 @@ int check_command(const std::string& model_file, const std::vector<std::string>&
              free_motion - driver_rows == 0 ? " (driven mechanism, kinematically determinate)"
              : free_motion - driver_rows > 0
                  ? " (free motion left: a dynamic run is needed)"
+             : rank.by_rank && *rank.by_rank >= 0
+                 ? " (by types alone; the rank below decides)"
                  : fmt::format(" (over-constrained with rigid {0}: {0} will be strained)", elements_word));
+  if (rank.by_rank) {
+    const int redundant = rank.n_redundant();
+    const int left = *rank.by_rank;
+    fmt::print("rank        {} free motions after the drivers at the initial configuration (rank of the "
+               "constraint Jacobian with the {} rigid, tolerance {:g}){}\n",
+               left, elements_word, kRankTolerance,
+               redundant == 0 ? std::string(": the count above is exact")
+                              : fmt::format(": over-constrained by {} redundant equations there (special geometry such as parallel "
+                                            "or meeting axes, or more supports than needed), which the count by "
+                                            "types cannot see; {}; the redundancy lets members carry self-stress, "
+                                            "e.g. from a thermal strain it blocks",
+                                            redundant,
+                                            left == 0 ? "driven mechanism, kinematically determinate"
+                                                      : "free motion left: a dynamic run is needed"));
+  }
   fmt::print("thermal     ΔT(0) = {:g} °C on {} without their own\n", model.temperature_change_C.value(0.0),
              elements_word);
   if (a.type == AnalysisType::continuation) {

@@ -323,6 +323,8 @@ py::list elements_info(const Model& model) {
   return out;
 }
 
+py::list vector_info(const Eigen::Vector3d& v);
+
 py::list supports_info(const Model& model) {
   py::list out;
   for (const FixedNode& support : model.supports) {
@@ -334,6 +336,8 @@ py::list supports_info(const Model& model) {
     py::dict d;
     d["node"] = model.nodes[support.node].name;
     d["fix"] = axes;
+    if (support.axis) d["axis"] = vector_info(*support.axis);
+    if (!support.offset_m.isZero(0.0)) d["offset"] = vector_info(support.offset_m);
     out.append(d);
   }
   return out;
@@ -355,8 +359,15 @@ py::list joints_info(const Model& model) {
     py::list nodes;
     for (const int node : joint.nodes) nodes.append(model.nodes[node].name);
     d["nodes"] = nodes;
-    if (model.dimension == 3 && dofs.index(joint.nodes[0], "R11") >= 0 && dofs.index(joint.nodes[1], "R11") >= 0) {
+    if (joint.kind == Joint::Kind::pin && model.dimension == 3 && dofs.index(joint.nodes[0], "R11") >= 0 &&
+        dofs.index(joint.nodes[1], "R11") >= 0) {
       d["axis"] = vector_info(joint.axis);
+    }
+    if (joint.kind == Joint::Kind::universal) {
+      d["arms"] = py::make_tuple(vector_info(joint.arms[0]), vector_info(joint.arms[1]));
+    }
+    if (joint.has_offsets()) {
+      d["offsets"] = py::make_tuple(vector_info(joint.offsets_m[0]), vector_info(joint.offsets_m[1]));
     }
     out.append(d);
   }

@@ -145,9 +145,11 @@ class ModelBuilder:
         where = "ModelBuilder.element"
         return self._element(where, name, checked.name(where, "type", type), {}, {}, fields)
 
-    def support(self, node, fix=None):
+    def support(self, node, fix=None, axis=None, offset=None):
         """Fix a node's coordinates: all axes, or those in `fix` (e.g. ["y"], or "y"); "rotation"
-        in `fix` clamps a beam's node."""
+        in `fix` clamps a beam's node. On a 3D beam node, `axis` [ax, ay, az] makes it a hinge
+        to ground (the frame turns about that global axis only) and `offset` [ox, oy, oz] (m)
+        holds the point x + R·offset instead of the node (docs/model-format.md, `supports`)."""
         where = "ModelBuilder.support"
         spec = {"node": checked.name(where, "node", node)}
         if fix is not None:
@@ -156,6 +158,10 @@ class ModelBuilder:
                 raise TypeError(f"{where}: fix must be a list of axis names (\"x\", \"y\", "
                                 f"\"z\"), not {checked.shown(fix)}")
             spec["fix"] = list(axes)
+        if axis is not None:
+            spec["axis"] = checked.numbers(where, "axis", axis)
+        if offset is not None:
+            spec["offset"] = checked.numbers(where, "offset", offset)
         self._section("supports", list).append(spec)
         return self
 
@@ -174,16 +180,35 @@ class ModelBuilder:
         self._section("drivers")[checked.name(where, "name", name)] = spec
         return self
 
-    def joint(self, name, node_a, node_b, type="pin", axis=None):
-        """A pin joint: nodes `node_a` and `node_b` (at one initial position) keep one position;
-        in 3D between beam nodes `axis` [ax, ay, az] is required and stays common."""
+    def joint(self, name, node_a, node_b, type="pin", axis=None, arms=None, offsets=None):
+        """A joint: nodes `node_a` and `node_b` (at one initial position) keep one position.
+        `type` "pin": in 3D between beam nodes `axis` [ax, ay, az] is required and stays
+        common; "ball": positions only; "universal" (3D beam nodes): `arms` [u, w], the cross's
+        arm fixed in A's frame and the one in B's, perpendicular. `offsets` [o_A, o_B] (m):
+        the joint acts at x + R·o of each node (3D beam nodes; docs/model-format.md, `joints`)."""
         where = "ModelBuilder.joint"
         spec = {"type": checked.text(where, "type", type),
                 "nodes": [checked.name(where, "node_a", node_a), checked.name(where, "node_b", node_b)]}
         if axis is not None:
             spec["axis"] = checked.numbers(where, "axis", axis)
+        for key, pair in (("arms", arms), ("offsets", offsets)):
+            if pair is None:
+                continue
+            if isinstance(pair, (str, bytes)) or not hasattr(pair, "__iter__") or len(list(pair)) != 2:
+                raise TypeError(f"{where}: {key} must be two vectors [[x, y, z], [x, y, z]], "
+                                f"not {checked.shown(pair)}")
+            spec[key] = [checked.numbers(where, f"{key}[{i}]", v) for i, v in enumerate(pair)]
         self._section("joints")[checked.name(where, "name", name)] = spec
         return self
+
+    def ball_joint(self, name, node_a, node_b, offsets=None):
+        """A spherical joint: the two nodes (or their offset points) keep one position."""
+        return self.joint(name, node_a, node_b, type="ball", offsets=offsets)
+
+    def universal_joint(self, name, node_a, node_b, arms, offsets=None):
+        """A Cardan joint between 3D beam nodes: one position, and the cross's arms `arms`
+        [u, w] (u fixed in A's frame, w in B's, perpendicular) stay perpendicular."""
+        return self.joint(name, node_a, node_b, type="universal", arms=arms, offsets=offsets)
 
     def revolute_driver(self, name, joint, profile, reading="angular_velocity"):
         """Turn node B of pin `joint` relative to node A about the joint's axis (nodes with

@@ -89,12 +89,14 @@ class Model:
 
     @property
     def supports(self):
-        """[{"node": name, "fix": ["x", "y"]}, ...]."""
+        """[{"node": name, "fix": ["x", "y"], and "axis" (a hinge to ground), "offset" (m) when
+        given}, ...]."""
         return self._core.supports
 
     @property
     def joints(self):
-        """{name: {"type": "pin", "nodes": [A, B], and "axis" (3D, between beam nodes)}}."""
+        """{name: {"type": "pin", "ball" or "universal", "nodes": [A, B], and "axis" (a pin in
+        3D between beam nodes), "arms" (universal), "offsets" (m, when given)}}."""
         return {j["name"]: j for j in self._core.joints}
 
     @property

@@ -266,3 +266,42 @@ def test_material_damping_and_strength_reach_the_model_and_the_verdict():
     assert verdict["checks"]["stress"]["max_utilization"] == pytest.approx(E * ALPHA * dT / strength, rel=1e-9)
     with pytest.raises(TypeError, match="damping must be a dict"):
         deploydyn.ModelBuilder("x").material("steel", E=E, damping=0.02)
+
+
+def test_ball_and_universal_joints_and_a_hinge_to_ground_reach_the_model():
+    # The Cardan shaft of examples/joints/cardan_shaft.yaml, built in code: the output (30° from
+    # the input) turns unevenly, tan ψ = tan φ / cos β (docs/theory.md, Eq. J3).
+    beta = math.pi / 6
+    c, s = math.cos(beta), math.sin(beta)
+    shaft = dict(material="steel", area=7.07e-4, inertia_y=3.98e-8, inertia_z=3.98e-8, torsion=7.95e-8)
+    model = (deploydyn.ModelBuilder("cardan")
+             .node("G0", -1.2, 0, 0).node("G1", -1, 0, 0).node("S0", -1, 0, 0).node("S1", 0, 0, 0)
+             .node("T0", 0, 0, 0).node("T1", c, s, 0).node("P", 0, 0, 0)
+             .material("steel", E=E, density=7850)
+             .beam("stub", "G0", "G1", **shaft).beam("input", "S0", "S1", **shaft)
+             .beam("output", "T0", "T1", **shaft).bar("lug", "P", "T1", area=AREA, material="steel")
+             .support("G1", fix=["x", "y", "z", "rotation"])
+             .support("T1", axis=[c, s, 0], offset=[0, 0, 0])
+             .joint("motor_hinge", "G1", "S0", axis=[1, 0, 0])
+             .universal_joint("cross", "S1", "T0", arms=[[0, 1, 0], [0, 0, 1]])
+             .ball_joint("lug_end", "T0", "P")
+             .revolute_driver("motor", "motor_hinge", deploydyn.smooth_step(0, 0, 1, 1.0), reading="angle")
+             .analysis(type="static", end=1.0, step=0.25)
+             .build())
+    assert model.joints["cross"]["type"] == "universal"
+    assert [list(arm) for arm in model.joints["cross"]["arms"]] == [[0, 1, 0], [0, 0, 1]]
+    assert model.joints["lug_end"]["type"] == "ball"
+    assert model.supports[1]["axis"] == pytest.approx([c, s, 0])
+    assert "universal" in model.to_yaml()
+    result = model.run(check=True)
+    # The output turns about its axis: T0's third director column turned from z by ψ.
+    phi = 1.0
+    psi = math.atan2(math.sin(phi), c * math.cos(phi))
+    z_turned = np.array([result[f"R{i}3.T0"][-1] for i in (1, 2, 3)])
+    assert z_turned @ np.array([0, 0, 1]) == pytest.approx(math.cos(psi), abs=1e-6)
+
+
+def test_joint_arms_must_be_two_vectors():
+    builder = deploydyn.ModelBuilder("bad")
+    with pytest.raises(TypeError, match="arms must be two vectors"):
+        builder.joint("j", "A", "B", type="universal", arms=[0, 1, 0])

@@ -12,7 +12,9 @@
 #include "deploydyn/constraints/driven_bar_angle.hpp"
 #include "deploydyn/constraints/driven_hinge_angle.hpp"
 #include "deploydyn/constraints/driven_revolute.hpp"
+#include "deploydyn/constraints/frame_support.hpp"
 #include "deploydyn/constraints/pin_joint.hpp"
+#include "deploydyn/constraints/point_joint.hpp"
 #include "deploydyn/constraints/prescribed_coordinates.hpp"
 #include "support/finite_difference.hpp"
 
@@ -68,6 +70,41 @@ std::vector<Case> cases() {
   out.push_back({"pin joint 3D with rotations",
                  std::make_unique<PinJoint>(std::vector<int>{8, 0, 5}, std::vector<int>{2, 4, 1}, frame_a, frame_b,
                                             tilted_axis, "pin")});
+  // Ball, universal and offset joints (point_joint.hpp), supports through a frame (frame_support.hpp).
+  const std::vector<int> position_a{8, 0, 5}, position_b{2, 4, 1};
+  const Eigen::Vector3d offset_a(0.3, -0.2, 0.7), offset_b(-0.5, 0.1, 0.25);
+  const Eigen::Vector3d arm_a = Eigen::Vector3d(1.0, 2.0, -0.5).normalized();
+  const Eigen::Vector3d arm_b = arm_a.cross(Eigen::Vector3d(0.2, -0.4, 1.0)).normalized();
+  out.push_back({"ball joint 2D", std::make_unique<PointJoint>(PointJoint::Side{{6, 7}, {}, {}},
+                                                               PointJoint::Side{{1, 3}, {}, {}},
+                                                               std::vector<std::pair<Eigen::Vector3d, Eigen::Vector3d>>{}, "b")});
+  out.push_back({"ball joint 3D, offset on A only",
+                 std::make_unique<PointJoint>(PointJoint::Side{position_a, frame_a, offset_a},
+                                              PointJoint::Side{position_b, {}, {}},
+                                              std::vector<std::pair<Eigen::Vector3d, Eigen::Vector3d>>{}, "b")});
+  out.push_back({"ball joint 3D, offsets on both",
+                 std::make_unique<PointJoint>(PointJoint::Side{position_a, frame_a, offset_a},
+                                              PointJoint::Side{position_b, frame_b, offset_b},
+                                              std::vector<std::pair<Eigen::Vector3d, Eigen::Vector3d>>{}, "b")});
+  out.push_back({"universal joint with offsets",
+                 std::make_unique<PointJoint>(PointJoint::Side{position_a, frame_a, offset_a},
+                                              PointJoint::Side{position_b, frame_b, offset_b},
+                                              std::vector<std::pair<Eigen::Vector3d, Eigen::Vector3d>>{{arm_a, arm_b}},
+                                              "u")});
+  const Eigen::Vector3d pin_axis = tilted_axis.normalized();
+  const Eigen::Vector3d pin_normal = normal_to(pin_axis);
+  out.push_back({"pin joint with offsets",
+                 std::make_unique<PointJoint>(PointJoint::Side{position_a, frame_a, offset_a},
+                                              PointJoint::Side{position_b, frame_b, {}},
+                                              std::vector<std::pair<Eigen::Vector3d, Eigen::Vector3d>>{
+                                                  {pin_axis, pin_normal}, {pin_axis, pin_axis.cross(pin_normal)}},
+                                              "p")});
+  out.push_back({"support with offset, hinge axis", std::make_unique<FrameSupport>(
+                                                        position_a, frame_a, Eigen::Vector3d(0.1, 0.2, 0.3), offset_a,
+                                                        std::vector<int>{0, 2}, tilted_axis, "s")});
+  out.push_back({"support: hinge axis only", std::make_unique<FrameSupport>(position_b, frame_b, Eigen::Vector3d::Zero(),
+                                                                           Eigen::Vector3d::Zero(), std::vector<int>{},
+                                                                           tilted_axis, "s")});
   out.push_back({"revolute 2D", std::make_unique<DrivenRevolute>(std::vector<int>{19}, std::vector<int>{23},
                                                                  Eigen::Vector3d::UnitZ(), driver_motion(), "r")});
   out.push_back({"revolute 3D",

@@ -143,6 +143,8 @@ void expect_equal_models(const Model& a, const Model& b) {
     EXPECT_EQ(a.supports[i].node, b.supports[i].node);
     EXPECT_EQ(a.supports[i].axes, b.supports[i].axes);
     EXPECT_EQ(a.supports[i].rotation, b.supports[i].rotation);
+    EXPECT_EQ(a.supports[i].axis, b.supports[i].axis);
+    EXPECT_EQ(a.supports[i].offset_m, b.supports[i].offset_m);
   }
   ASSERT_EQ(a.drivers.size(), b.drivers.size());
   for (std::size_t i = 0; i < a.drivers.size(); ++i) {
@@ -180,6 +182,8 @@ void expect_equal_models(const Model& a, const Model& b) {
     EXPECT_EQ(a.joints[i].kind, b.joints[i].kind);
     EXPECT_EQ(a.joints[i].nodes, b.joints[i].nodes);
     EXPECT_EQ(a.joints[i].axis, b.joints[i].axis);
+    EXPECT_EQ(a.joints[i].arms, b.joints[i].arms);
+    EXPECT_EQ(a.joints[i].offsets_m, b.joints[i].offsets_m);
   }
   ASSERT_EQ(a.loads.size(), b.loads.size());
   for (std::size_t i = 0; i < a.loads.size(); ++i) {
@@ -290,6 +294,20 @@ drivers:
   push: {type: coordinate, node: D, direction: x, profile: 0.1}
 )", "2D joints"));
   expect_round_trip(load_model(fmt::format("{}/examples/petal/petal.yaml", DEPLOYDYN_SOURCE_DIR)));
+  // Ball and universal joints, offsets, a hinge to ground and an offset support.
+  expect_round_trip(load_model(fmt::format("{}/examples/joints/cardan_shaft.yaml", DEPLOYDYN_SOURCE_DIR)));
+  expect_round_trip(load_model_from_string(R"(
+nodes: {A: [0, 0, 0], B: [1, 0, 0], C: [1, 0, 0.1], D: [2, 0, 0.1], E: [2, 0, 0.1]}
+materials: {steel: {E: 2.0e11, density: 7800}}
+elements:
+  b1: {type: beam, nodes: [A, B], material: steel, area: 1.0e-4, inertia_y: 1.0e-8, inertia_z: 1.0e-8, torsion: 2.0e-8}
+  b2: {type: beam, nodes: [C, D], material: steel, area: 1.0e-4, inertia_y: 1.0e-8, inertia_z: 1.0e-8, torsion: 2.0e-8}
+  bar: {nodes: [E, A], material: steel, area: 1.0e-4}
+supports: [{node: A, axis: [0, 0.6, 0.8], offset: [0, 0, -0.05]}]
+joints:
+  lug: {type: ball, nodes: [B, C], offsets: [[0, 0, 0.1], [0, 0, 0]]}
+  end: {type: ball, nodes: [D, E]}
+)", "3D ball joints and offsets"));
 }
 
 // Environments: an orbit with eclipses, a ground site at a local time with turned axes; the

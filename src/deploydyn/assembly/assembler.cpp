@@ -1,5 +1,6 @@
 #include "deploydyn/assembly/assembler.hpp"
 
+#include <Eigen/Geometry>
 #include <algorithm>
 #include <array>
 #include <cassert>
@@ -10,7 +11,9 @@
 #include "deploydyn/constraints/driven_hinge_angle.hpp"
 #include "deploydyn/constraints/driven_revolute.hpp"
 #include "deploydyn/constraints/frame_orthonormality.hpp"
+#include "deploydyn/constraints/frame_support.hpp"
 #include "deploydyn/constraints/pin_joint.hpp"
+#include "deploydyn/constraints/point_joint.hpp"
 #include "deploydyn/constraints/prescribed_coordinates.hpp"
 #include "deploydyn/elements/beam/beam3d_group.hpp"
 #include "deploydyn/elements/element_kinds.hpp"
@@ -68,9 +71,20 @@ class SwitchedConstraintInForce final : public Constraint {
   std::size_t group_;
 };
 
+std::vector<int> position_dofs(int node, const Model& model, const DofMap& dofs);
+
+// A support's held position: the node's coordinates, or with an offset the point x + R o.
 std::unique_ptr<Constraint> make_support(const FixedNode& support, const Model& model,
                                          const DofMap& dofs) {
   const Node& node = model.nodes[support.node];
+  if (!support.offset_m.isZero(0.0)) {
+    std::vector<int> held;
+    for (int axis = 0; axis < 3; ++axis) {
+      if (support.axes[axis]) held.push_back(axis);
+    }
+    return std::make_unique<FrameSupport>(position_dofs(support.node, model, dofs), frame_dofs(dofs, support.node),
+                                          node.position_m, support.offset_m, held, std::nullopt, node.name);
+  }
   std::vector<int> rows;
   std::vector<double> initial;
   std::vector<std::string> labels;
@@ -112,8 +126,27 @@ std::unique_ptr<Constraint> make_joint(const Joint& joint, const Model& model, c
     rotation_b = rotation_dofs(b, model, dofs);
     if (rotation_a.empty() || rotation_b.empty()) rotation_a.clear(), rotation_b.clear();
   }
-  return std::make_unique<PinJoint>(position_dofs(a, model, dofs), position_dofs(b, model, dofs),
-                                    rotation_a, rotation_b, joint.axis, "joint " + joint.name);
+  const std::string label = "joint " + joint.name;
+  if (joint.kind == Joint::Kind::pin && !joint.has_offsets()) {
+    return std::make_unique<PinJoint>(position_dofs(a, model, dofs), position_dofs(b, model, dofs),
+                                      rotation_a, rotation_b, joint.axis, label);
+  }
+  // Ball and universal joints, and pins with offsets (constraints/point_joint.hpp).
+  std::vector<std::pair<Eigen::Vector3d, Eigen::Vector3d>> pairs;
+  if (joint.kind == Joint::Kind::universal) pairs.emplace_back(joint.arms[0], joint.arms[1]);
+  if (joint.kind == Joint::Kind::pin && !rotation_a.empty()) {
+    const Eigen::Vector3d b1 = normal_to(joint.axis);
+    pairs.emplace_back(joint.axis, b1);
+    pairs.emplace_back(joint.axis, joint.axis.cross(b1));
+  }
+  // A frame is needed where an offset acts or a pair turns (the loader has checked that it is there).
+  const bool frames_needed = !pairs.empty();
+  auto side = [&](int node, int k) {
+    PointJoint::Side out{position_dofs(node, model, dofs), {}, joint.offsets_m[static_cast<std::size_t>(k)]};
+    if (frames_needed || !out.offset_m.isZero(0.0)) out.frame = frame_dofs(dofs, node);
+    return out;
+  };
+  return std::make_unique<PointJoint>(side(a, 0), side(b, 1), std::move(pairs), label);
 }
 
 std::unique_ptr<Constraint> make_driver(const Driver& driver, const Model& model,
@@ -179,6 +212,12 @@ Assembler::Assembler(const Model& model) : model_(model), dofs_(model) {
                                     ": fixes the rotation of a node that no beam holds");
       }
       constraints_.push_back(std::make_unique<FrameClamp>(std::move(frame), model.nodes[support.node].name));
+    }
+    if (support.axis) {  // a hinge to ground: the frame turns about the axis only (theory J5)
+      constraints_.push_back(std::make_unique<FrameSupport>(
+          position_dofs(support.node, model, dofs_), frame_dofs(dofs_, support.node),
+          model.nodes[support.node].position_m, Eigen::Vector3d::Zero(), std::vector<int>{}, support.axis,
+          model.nodes[support.node].name));
     }
   }
   for (const Joint& joint : model.joints) constraints_.push_back(make_joint(joint, model, dofs_));

@@ -36,8 +36,8 @@ inline constexpr std::array<std::string_view, 14> kGroundEnvironment{
     "type",       "reference_temperature", "initial_temperature", "latitude",      "longitude",
     "start",      "utc_offset",            "up",                  "north",         "direct_normal",
     "diffuse",    "sky_temperature",       "air_temperature",     "convection"};
-inline constexpr std::array<std::string_view, 2> kSupport{"node", "fix"};
-inline constexpr std::array<std::string_view, 3> kJoint{"type", "nodes", "axis"};
+inline constexpr std::array<std::string_view, 4> kSupport{"node", "fix", "axis", "offset"};
+inline constexpr std::array<std::string_view, 5> kJoint{"type", "nodes", "axis", "arms", "offsets"};
 inline constexpr std::array<std::string_view, 7> kBarAngleDriver{"type", "element", "pivot", "axis",
                                                                   "profile", "reading", "torque_limit"};
 inline constexpr std::array<std::string_view, 6> kHingeAngleDriver{"type", "nodes", "axis", "profile",

@@ -12,6 +12,7 @@
 #include <functional>
 #include <limits>
 #include <map>
+#include <numbers>
 #include <optional>
 #include <sstream>
 #include <tuple>
@@ -55,6 +56,8 @@ constexpr std::size_t kMaxPolynomialCoefficients = 16;
 constexpr double kPieceJoinTolerance = 1e-9;
 // Nodes of a pin joint are "at the same position" up to round-off of the model's size.
 constexpr double kCoincidentShare = 1e-9;
+// A universal joint's arms are perpendicular when |cos| ≤ this (typed unit vectors to 6 digits).
+constexpr double kPerpendicularArms = 1e-6;
 // A hinge-angle arm shorter across the axis than this share of its length leaves the angle
 // undefined (as constraints/driven_hinge_angle.cpp decides).
 constexpr double kArmAcrossAxisShare = 1e-8;
@@ -870,6 +873,17 @@ class ModelReader {
           support.axes[static_cast<std::size_t>(axis(name))] = true;
         }
       }
+      if (const auto hinge_axis = spec.find("axis")) {
+        support.axis = axis_vector(*hinge_axis, "a support turns nothing about an axis (fix 'rotation' holds rz)");
+        check_frame(*hinge_axis, support.node, "a hinge to ground turns a 3D beam node's frame about the axis");
+        if (support.rotation) {
+          hinge_axis->fail("'fix' already holds the frame ('rotation'); give either 'rotation' (a clamp) or "
+                           "'axis' (a hinge to ground)");
+        }
+      }
+      if (const auto offset = spec.find("offset")) {
+        support.offset_m = offset_vector(*offset, support.node);
+      }
       model_.supports.push_back(support);
     }
   }
@@ -889,6 +903,22 @@ class ModelReader {
   bool has_rotations(int node) const {
     if (!dofs_) dofs_.emplace(model_);
     return dofs_->index(node, model_.dimension == 2 ? "rz" : "R11") >= 0;
+  }
+
+  // Keys that act through a node's frame (a hinge axis, a rigid offset) need a 3D beam node.
+  void check_frame(const YamlValue& where, int node, std::string_view why) const {
+    if (model_.dimension != 3 || !has_rotations(node)) {
+      where.fail(fmt::format("node '{}' has no frame: {}, and only 3D beam nodes carry one",
+                             model_.nodes[static_cast<std::size_t>(node)].name, why));
+    }
+  }
+
+  // A rigid offset [ox, oy, oz] (m) from `node` to where a joint or support acts.
+  Eigen::Vector3d offset_vector(const YamlValue& value, int node) const {
+    const auto components = value.numbers(3, 3, "m");
+    const Eigen::Vector3d offset(components[0], components[1], components[2]);
+    if (!offset.isZero(0.0)) check_frame(value, node, "an offset turns with the node's frame");
+    return offset;
   }
 
   // A unit axis from [ax, ay, az] (3D models only; `what` says what it is for in 2D's error).
@@ -915,13 +945,24 @@ class ModelReader {
       const Node& a = model_.nodes[joint.nodes[0]];
       const Node& b = model_.nodes[joint.nodes[1]];
       if (joint.nodes[0] == joint.nodes[1]) {
-        nodes.fail(fmt::format("joins node '{}' to itself; a pin joins two different nodes", a.name));
+        nodes.fail(fmt::format("joins node '{}' to itself; a joint joins two different nodes", a.name));
       }
-      if (const double gap = (b.position_m - a.position_m).norm(); gap > kCoincidentShare * size_m) {
-        nodes.fail(fmt::format("nodes '{}' and '{}' are {:.6g} m apart; a pin joins two nodes at the "
-                               "same initial position",
-                               a.name, b.name, gap));
+      if (const auto offsets = spec.find("offsets")) {
+        const auto pair = offsets->items(2, 2, "two offsets [[ox, oy, oz], [ox, oy, oz]] (m), from A and from B");
+        for (std::size_t k = 0; k < 2; ++k) joint.offsets_m[k] = offset_vector(pair[k], joint.nodes[k]);
       }
+      const Eigen::Vector3d point_a = a.position_m + joint.offsets_m[0], point_b = b.position_m + joint.offsets_m[1];
+      if (const double gap = (point_b - point_a).norm(); gap > kCoincidentShare * size_m) {
+        nodes.fail(fmt::format("nodes '{}' and '{}' are {:.6g} m apart{}; a joint joins two nodes at the "
+                               "same initial position (or, with 'offsets', two offset points)",
+                               a.name, b.name, gap, joint.has_offsets() ? " with their offsets" : ""));
+      }
+      if (joint.kind != Joint::Kind::pin) {
+        read_ball_or_universal(spec, joint);
+        model_.joints.push_back(joint);
+        continue;
+      }
+      if (const auto arms = spec.find("arms")) arms->fail("only a universal joint has arms; a pin turns about 'axis'");
       const bool keeps_axis =
           model_.dimension == 3 && has_rotations(joint.nodes[0]) && has_rotations(joint.nodes[1]);
       if (const auto axis = spec.find("axis")) {
@@ -937,6 +978,33 @@ class ModelReader {
                                           a.name, b.name));
       }
       model_.joints.push_back(joint);
+    }
+  }
+
+  // A ball joint keeps the points together only; a universal joint also its cross's arms
+  // perpendicular, one fixed in each node's frame (docs/theory.md, Eq. J3).
+  void read_ball_or_universal(const YamlValue& spec, Joint& joint) const {
+    const std::string_view type = kJointKinds.name(joint.kind);
+    if (const auto axis = spec.find("axis")) {
+      axis->fail(fmt::format("a {} joint has no axis ({}); a revolute joint is type 'pin'", type,
+                             joint.kind == Joint::Kind::ball ? "it turns freely" : "its cross's two arms are 'arms'"));
+    }
+    if (joint.kind == Joint::Kind::ball) {
+      if (const auto arms = spec.find("arms")) arms->fail("only a universal joint has arms; a ball joint turns freely");
+      return;
+    }
+    const auto found = spec.find("arms");
+    if (!found) {
+      spec.fail_key("arms", "required for a universal joint: [[ux, uy, uz], [wx, wy, wz]], the cross's arm fixed "
+                            "in A's frame and the one fixed in B's, perpendicular");
+    }
+    const YamlValue& arms = *found;
+    for (std::size_t k = 0; k < 2; ++k) check_frame(arms, joint.nodes[k], "a universal joint's arm turns with it");
+    const auto pair = arms.items(2, 2, "two arms [[ux, uy, uz], [wx, wy, wz]]: one fixed in A's frame, one in B's");
+    for (std::size_t k = 0; k < 2; ++k) joint.arms[k] = axis_vector(pair[k], "");
+    if (const double cosine = joint.arms[0].dot(joint.arms[1]); std::abs(cosine) > kPerpendicularArms) {
+      arms.fail(fmt::format("the arms must be perpendicular (the cross of a Cardan joint); their angle is {:.6g}°",
+                            std::acos(std::clamp(cosine, -1.0, 1.0)) * 180.0 / std::numbers::pi));
     }
   }
 
@@ -1012,6 +1080,10 @@ class ModelReader {
     const YamlValue joint_name = spec.at("joint");
     driver.joint = joints_.find(joint_name);
     const Joint& joint = model_.joints[static_cast<std::size_t>(driver.joint)];
+    if (joint.kind != Joint::Kind::pin) {
+      joint_name.fail(fmt::format("joint '{}' is a {} joint; a revolute driver turns a pin joint about its axis",
+                                  joint.name, kJointKinds.name(joint.kind)));
+    }
     for (const int node : joint.nodes) {
       if (!has_rotations(node)) {
         joint_name.fail(fmt::format(

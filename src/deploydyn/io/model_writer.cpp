@@ -336,7 +336,16 @@ void emit_boundary_conditions(YAML::Emitter& out, const Model& model) {
         }
       }
       if (support.rotation) out << "rotation";
-      out << YAML::EndSeq << YAML::EndMap;
+      out << YAML::EndSeq;
+      if (support.axis) {
+        emit_key(out, "axis");
+        emit_vector(out, *support.axis, 3);
+      }
+      if (!support.offset_m.isZero(0.0)) {
+        emit_key(out, "offset");
+        emit_vector(out, support.offset_m, 3);
+      }
+      out << YAML::EndMap;
     }
     out << YAML::EndSeq;
   }
@@ -353,9 +362,21 @@ void emit_boundary_conditions(YAML::Emitter& out, const Model& model) {
       emit_key(out, "nodes");
       out << YAML::Flow << YAML::BeginSeq << model.nodes[joint.nodes[0]].name
           << model.nodes[joint.nodes[1]].name << YAML::EndSeq;
-      if (has_axis(model, dofs, joint)) {
+      if (joint.kind == Joint::Kind::pin && has_axis(model, dofs, joint)) {
         emit_key(out, "axis");
         emit_vector(out, joint.axis, 3);
+      }
+      if (joint.kind == Joint::Kind::universal) {
+        emit_key(out, "arms");
+        out << YAML::Flow << YAML::BeginSeq;
+        for (const Eigen::Vector3d& arm : joint.arms) emit_vector(out, arm, 3);
+        out << YAML::EndSeq;
+      }
+      if (joint.has_offsets()) {
+        emit_key(out, "offsets");
+        out << YAML::Flow << YAML::BeginSeq;
+        for (const Eigen::Vector3d& offset : joint.offsets_m) emit_vector(out, offset, 3);
+        out << YAML::EndSeq;
       }
       out << YAML::EndMap;
     }

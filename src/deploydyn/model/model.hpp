@@ -51,6 +51,11 @@ struct FixedNode {
   int node = 0;
   std::array<bool, 3> axes{true, true, true};  // x, y, z fixed
   bool rotation = false;  // the node's rotation unknowns fixed too (2D: rz; a beam's node)
+  // 3D beam nodes (docs/theory.md, "Ball and universal joints, hinges to ground, offsets"):
+  // the frame turns only about this axis (unit, global): a revolute hinge to ground.
+  std::optional<Eigen::Vector3d> axis{};
+  // The held point is x + R·offset (m, in the node's initial frame: the global axes at the start).
+  Eigen::Vector3d offset_m = Eigen::Vector3d::Zero();
 };
 
 // How a driver's profile f(t) is read.
