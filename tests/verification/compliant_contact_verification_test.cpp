@@ -90,7 +90,7 @@ Contact run_contact(const std::string& contact, double step_s, double rho_inf = 
   const auto& t = c.time_s;
   const auto& d = c.penetration_rad;
   bool in = false, done = false;
-  for (std::size_t i = 1; i < t.size() && !done; ++i) {
+  for (std::size_t i = 2; i + 1 < t.size() && !done; ++i) {
     if (c.lock_torque_Nm[i] > c.peak_Nm) {
       c.peak_Nm = c.lock_torque_Nm[i];
       c.peak_time_s = t[i];
