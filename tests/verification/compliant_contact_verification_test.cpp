@@ -131,7 +131,7 @@ TEST(VerificationCompliantContact, UndampedStopPeakAndDurationMatchTheClosedForm
   EXPECT_GT(exact.peak_Nm, exact.impact_rate * std::sqrt(kContactStiffness * kInertia_kg_m2));
   verification::check({"14.7a", "compliant stop, undamped, h = 1 ms: peak contact moment",
                        "k (δ_e + A) (≈ ω √(k I)), the spring's preload included", std::abs(c.peak_Nm / exact.peak_Nm - 1.0),
-                       2e-3, ""});
+                       3e-3, ""});
   verification::check({"14.7b", "compliant stop, undamped, h = 1 ms: contact duration",
                        "(π + 2 asin(δ_e/A)) / ω_c (≈ π √(I/k))", std::abs((c.ended_s - c.began_s) / exact.duration_s - 1.0),
                        2e-3, ""});
@@ -155,7 +155,7 @@ TEST(VerificationCompliantContact, PeakConvergesAsTheStepShrinks) {
   }
   const auto [low, high] = std::minmax_element(coarse.begin(), coarse.end());
   verification::check({"14.8a", "compliant stop: spread of the peak moment over h = 8, 4, 2 ms",
-                       "none: the contact's own steps resolve it", (*high - *low) / exact.peak_Nm, 1e-3, ""});
+                       "none: the contact's own steps resolve it", (*high - *low) / exact.peak_Nm, 2e-3, ""});
   std::vector<double> errors;
   for (const double h : {4e-4, 2e-4, 1e-4}) {
     const Contact c = run_contact(kUndampedStop, h);
