@@ -437,6 +437,19 @@ StepVerdict Assembler::end_step(const StepEnds& ends, const Eigen::VectorXd& his
   return StepVerdict::redo;
 }
 
+StepLimit Assembler::step_limit(const StepEnds& ends, const Eigen::VectorXd& history_before,
+                                const Eigen::VectorXd& history_after) const {
+  StepLimit least;
+  for (std::size_t g = 0; g < groups_.size(); ++g) {
+    if (switching_[g] == nullptr) continue;
+    const StepLimit limit = switching_[g]->step_limit(ends, history_slice(history_before, g),
+                                                      history_slice(history_after, g));
+    least.retry_s = std::min(least.retry_s, limit.retry_s);
+    least.next_s = std::min(least.next_s, limit.next_s);
+  }
+  return least;
+}
+
 int Assembler::n_latches() const {
   int n = 0;
   for (const SwitchingGroup* group : switching_) n += group != nullptr ? group->n_latches() : 0;

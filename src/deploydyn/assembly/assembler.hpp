@@ -109,6 +109,9 @@ class Assembler {
   StepVerdict end_step(const StepEnds& ends, const Eigen::VectorXd& history_before,
                        Eigen::VectorXd& history_after, std::vector<ElementEvent>& events,
                        std::vector<int>& event_groups) const;
+  // After an accepted step (end_step): the groups' least StepLimit (SwitchingGroup::step_limit).
+  StepLimit step_limit(const StepEnds& ends, const Eigen::VectorXd& history_before,
+                       const Eigen::VectorXd& history_after) const;
   // Latches in the model, and how many have locked in `history`.
   int n_latches() const;
   int n_latched(const Eigen::VectorXd& history) const;

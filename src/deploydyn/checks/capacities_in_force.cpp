@@ -41,6 +41,30 @@ std::vector<std::string> capacity_lines(const Model& model,
                                                     model.drivers.size(), list(limited)));
       continue;
     }
+    if (kind == CheckKind::latch_load || kind == CheckKind::stop_load) {  // listed once a hinge gives one
+      const bool latch = kind == CheckKind::latch_load;
+      std::vector<std::string> given;
+      int with = 0;
+      for (const HingeElement& h : model.hinges) {
+        if (!(latch ? h.latch_rad.has_value() : h.stop_min_rad || h.stop_max_rad)) continue;
+        ++with;
+        const std::optional<double>& capacity = latch ? h.latch_capacity_Nm : h.stop_capacity_Nm;
+        if (capacity) given.push_back(fmt::format("{} {:g} N·m", h.name, *capacity));
+      }
+      if (!given.empty()) {
+        lines.push_back(fmt::format("{} on {} of {} hinges with {}: {}", name, given.size(), with,
+                                    latch ? "a latch" : "stops", list(given)));
+      }
+      continue;
+    }
+    if (kind == CheckKind::jam) {
+      std::vector<std::string> watched;
+      for (const HingeElement& h : model.hinges) {
+        if (h.jam_time_s) watched.push_back(fmt::format("{} {:g} s", h.name, *h.jam_time_s));
+      }
+      if (!watched.empty()) lines.push_back(fmt::format("{} on {} hinges (jam_time): {}", name, watched.size(), list(watched)));
+      continue;
+    }
     int applies = 0, checked = 0, forbidden = 0;
     const CheckedMember* weakest = nullptr;  // buckling: the least N_cr
     for (const CheckedMember& m : members) {

@@ -15,8 +15,11 @@ enum class CheckKind {
   cable_break,    // T / break load (V5)
   cable_slack,    // when and how long a cable carries no tension (V6)
   driver_effort,  // |torque or force| / the driver's limit (V7)
+  latch_load,     // a hinge's latch: |lock torque or contact moment| / latch_capacity (V9)
+  stop_load,      // a hinge's end stops: the same over stop_capacity (V9)
+  jam,            // a hinge stuck by friction short of its latch: too long, or at the end (V10)
 };
-inline constexpr std::size_t kNumCheckKinds = 6;
+inline constexpr std::size_t kNumCheckKinds = 9;
 inline constexpr NameTable kCheckKinds{std::array{
     NamedValue<CheckKind>{CheckKind::buckling, "buckling"},
     NamedValue<CheckKind>{CheckKind::stress, "stress"},
@@ -24,6 +27,9 @@ inline constexpr NameTable kCheckKinds{std::array{
     NamedValue<CheckKind>{CheckKind::cable_break, "cable_break"},
     NamedValue<CheckKind>{CheckKind::cable_slack, "cable_slack"},
     NamedValue<CheckKind>{CheckKind::driver_effort, "driver_effort"},
+    NamedValue<CheckKind>{CheckKind::latch_load, "latch_load"},
+    NamedValue<CheckKind>{CheckKind::stop_load, "stop_load"},
+    NamedValue<CheckKind>{CheckKind::jam, "jam"},
 }};
 
 }  // namespace deploydyn

@@ -92,7 +92,26 @@ MemberChecks::MemberChecks(const Model& model)
   }
   for (const Driver& d : model.drivers) driver_limits_.push_back(d.effort_limit.value_or(0.0));
   drivers_.resize(model.drivers.size());
+  for (const HingeElement& h : model.hinges) {
+    hinge_capacities_.push_back({h.latch_rad ? h.latch_capacity_Nm.value_or(0.0) : 0.0,
+                                 h.stop_min_rad || h.stop_max_rad ? h.stop_capacity_Nm.value_or(0.0) : 0.0});
+  }
+  hinges_.resize(model.hinges.size());
+  for (const HingeElement& h : model.hinges) {
+    jam_times_.push_back(h.jam_time_s.value_or(0.0));
+    const double latch = h.latch_rad.value_or(0.0);
+    latches_.push_back({latch, latch > h.initial_angle_rad ? 1.0 : -1.0});
+  }
+  jams_.resize(model.hinges.size());
   const auto kinds = element_kinds();
+  for (std::size_t g = 0; g < kinds.size(); ++g) {
+    if (kinds[g]->name() != "hinge") continue;
+    hinge_group_ = static_cast<int>(g);
+    latch_load_ = quantity_index(*kinds[g], dimension_, "latch_torque_Nm");
+    stop_load_ = quantity_index(*kinds[g], dimension_, "stop_torque_Nm");
+    hinge_angle_ = quantity_index(*kinds[g], dimension_, "angle_rad");
+    hinge_state_ = quantity_index(*kinds[g], dimension_, "state");
+  }
   for (const MemberKind kind : {MemberKind::bar, MemberKind::beam, MemberKind::cable}) {
     Layout& layout = layouts_[static_cast<std::size_t>(kind)];
     for (std::size_t g = 0; g < kinds.size(); ++g) {
@@ -121,6 +140,32 @@ void MemberChecks::record(const StepRecord& r) {
   for (std::size_t d = 0; d < drivers_.size() && d < r.driver_efforts.size(); ++d) {
     if (driver_limits_[d] > 0.0) {  // (V7)
       drivers_[d].update(std::abs(r.driver_efforts[d]) / driver_limits_[d], -1, r.time_s);
+    }
+  }
+  if (hinge_group_ >= 0 && static_cast<std::size_t>(hinge_group_) < r.elements.size()) {  // (V9)
+    const ElementResults& results = r.elements[static_cast<std::size_t>(hinge_group_)];
+    for (std::size_t h = 0; h < hinges_.size(); ++h) {
+      for (std::size_t k = 0; k < 2; ++k) {
+        const double capacity = hinge_capacities_[h][k];
+        if (capacity > 0.0) hinges_[h][k].update(results.at(static_cast<int>(h), k == 0 ? latch_load_ : stop_load_) / capacity, -1, r.time_s);
+      }
+      if (jam_times_[h] > 0.0) {  // (V10): state 4 is HingeMode::stuck
+        JamHistory& j = jams_[h];
+        const double angle = results.at(static_cast<int>(h), hinge_angle_);
+        // stuck short of the latch, not held by a compliant latch's catch
+        const bool stuck = results.at(static_cast<int>(h), hinge_state_) == 4.0 &&
+                           latches_[h][1] * (latches_[h][0] - angle) > 0.0 &&
+                           results.at(static_cast<int>(h), latch_load_) == 0.0;
+        if (stuck && !j.stuck_now) j.stuck_since_s = r.time_s;
+        j.stuck_now = stuck;
+        j.angle_rad = angle;
+        if (stuck && !j.jammed && r.time_s - j.stuck_since_s > jam_times_[h]) {
+          j.jammed = true;
+          j.jammed_s = j.stuck_since_s + jam_times_[h];
+          j.jammed_since_s = j.stuck_since_s;
+          j.jammed_angle_rad = j.angle_rad;
+        }
+      }
     }
   }
   ++n_records_;

@@ -11,9 +11,21 @@
 
 #include "deploydyn/checks/check_kind.hpp"
 #include "deploydyn/checks/member_capacities.hpp"
+#include "deploydyn/model/model.hpp"
 #include "deploydyn/solvers/step_record.hpp"
 
 namespace deploydyn {
+
+// A hinge watched for a jam (V10): stuck by friction, short of its latch.
+struct JamHistory {
+  bool stuck_now = false;
+  double stuck_since_s = 0.0;   // when the present sticking began
+  double angle_rad = 0.0;       // where it sticks (the last record's angle)
+  bool jammed = false;          // stuck longer than the hinge's jam_time
+  double jammed_s = 0.0;        // when it passed jam_time
+  double jammed_since_s = 0.0;  // and since when it was stuck then
+  double jammed_angle_rad = 0.0;
+};
 
 // One check of one member (or driver) over the steps recorded so far.
 struct CheckHistory {
@@ -82,6 +94,14 @@ class MemberChecks final : public RecordSink {
   const SlackHistory& slack(int member) const { return slack_[static_cast<std::size_t>(member)]; }
   const CheckHistory& driver(int driver) const { return drivers_[static_cast<std::size_t>(driver)]; }
   bool driver_runs(int driver) const { return driver_limits_[static_cast<std::size_t>(driver)] > 0.0; }
+  // A hinge's latch_load or stop_load (V9): whether it runs (the capacity is given) and its history.
+  bool hinge_runs(int hinge, CheckKind kind) const { return hinge_capacity(hinge, kind) > 0.0; }
+  // A hinge with a jam_time: its jam watch (V10); whether it runs.
+  bool jam_runs(int hinge) const { return jam_times_[static_cast<std::size_t>(hinge)] > 0.0; }
+  const JamHistory& jam(int hinge) const { return jams_[static_cast<std::size_t>(hinge)]; }
+  const CheckHistory& hinge(int hinge, CheckKind kind) const {
+    return hinges_[static_cast<std::size_t>(hinge)][kind == CheckKind::latch_load ? 0 : 1];
+  }
   int n_records() const { return n_records_; }
   double last_time_s() const { return last_time_s_; }
   // Wall time spent in record() (s): the checks' own cost, for docs/performance.md.
@@ -102,6 +122,16 @@ class MemberChecks final : public RecordSink {
   std::vector<SlackHistory> slack_;
   std::vector<double> driver_limits_;  // 0: none
   std::vector<CheckHistory> drivers_;
+  double hinge_capacity(int hinge, CheckKind kind) const {
+    return hinge_capacities_[static_cast<std::size_t>(hinge)][kind == CheckKind::latch_load ? 0 : 1];
+  }
+  std::vector<std::array<double, 2>> hinge_capacities_;  // [hinge] → latch, stop capacity (N·m); 0: none
+  std::vector<std::array<CheckHistory, 2>> hinges_;
+  int hinge_group_ = -1, latch_load_ = -1, stop_load_ = -1;  // in a StepRecord
+  int hinge_angle_ = -1, hinge_state_ = -1;
+  std::vector<double> jam_times_;  // [hinge] → jam_time (s); 0: not watched
+  std::vector<std::array<double, 2>> latches_;  // [hinge] → latch angle, +1 reached from below (−1 above)
+  std::vector<JamHistory> jams_;
   // Where the members' results are in a StepRecord: the group of each kind (bar, beam, cable) in
   // element_kinds() and its quantities' indices; −1 when absent.
   struct Layout {

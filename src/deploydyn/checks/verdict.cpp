@@ -4,6 +4,7 @@
 #include <fmt/ranges.h>
 
 #include <algorithm>
+#include <numbers>
 
 namespace deploydyn {
 namespace {
@@ -38,6 +39,12 @@ const char* missing_capacity(CheckKind kind) {
       return "";
     case CheckKind::driver_effort:
       return "drivers need 'torque_limit' or 'force_limit'";
+    case CheckKind::latch_load:
+      return "hinges with a latch need 'latch_capacity'";
+    case CheckKind::stop_load:
+      return "hinges with stops need 'stop_capacity'";
+    case CheckKind::jam:
+      return "hinges with friction and a latch need 'jam_time'";
   }
   return "";
 }
@@ -74,6 +81,13 @@ std::string failure_sentence(const VerdictFailure& f, std::optional<double> requ
                        along.at(p.time_s));
   }
   if (f.check == "run") return fmt::format("{} failed at {}: {}", along.of, along.at(f.time_s), f.message);
+  if (f.check == name(CheckKind::latch_load) || f.check == name(CheckKind::stop_load)) {
+    return fmt::format("the {} of hinge '{}' carries more than its capacity at {} (utilization {:.3f} at the "
+                       "step to t = {:.6g} s)",
+                       f.check == name(CheckKind::latch_load) ? "latch" : "stop", f.member, along.at(f.time_s),
+                       f.utilization.value_or(0.0), f.step_time_s);
+  }
+  if (f.check == name(CheckKind::jam)) return fmt::format("hinge '{}' jammed at {}: {}", f.member, along.at(f.time_s), f.message);
   if (f.check == name(CheckKind::cable_slack)) {
     return fmt::format("cable member '{}' goes slack at {} (its slack is forbidden)", f.member, along.at(f.time_s));
   }
@@ -211,6 +225,75 @@ Verdict make_verdict(const Model& model, const MemberChecks& checks, const RunRe
     v.members.push_back({model.drivers[d].name, "driver", name(CheckKind::driver_effort), h.max,
                          {{CheckKind::driver_effort, h, ""}}});
   }
+  // Latch and stop loads (V9): only in a model that gives a hinge such a capacity.
+  for (const CheckKind kind : {CheckKind::latch_load, CheckKind::stop_load}) {
+    const bool latch = kind == CheckKind::latch_load;
+    const auto has = [latch](const HingeElement& h) { return latch ? h.latch_rad.has_value() : h.stop_min_rad || h.stop_max_rad; };
+    const bool any_capacity = std::any_of(model.hinges.begin(), model.hinges.end(), [&](const HingeElement& h) {
+      return has(h) && (latch ? h.latch_capacity_Nm : h.stop_capacity_Nm);
+    });
+    if (!any_capacity) continue;
+    CheckOverview& o = overview(kind);
+    o.applies = true;
+    for (std::size_t i = 0; i < model.hinges.size(); ++i) {
+      const HingeElement& hinge = model.hinges[i];
+      if (!has(hinge)) continue;
+      if (!checks.hinge_runs(static_cast<int>(i), kind)) {
+        ++o.n_without;
+        continue;
+      }
+      ++o.n_checked;
+      const CheckHistory& h = checks.hinge(static_cast<int>(i), kind);
+      if (!h.recorded) continue;
+      take_overview(o, h, hinge.name, "");
+      if (h.exceeded) {
+        failures.push_back({name(kind), hinge.name, "", h.first_exceeded_s, h.first_exceeded_step_s, h.utilization_at_first,
+                            "", std::nullopt});
+      }
+      const auto listed = std::find_if(v.members.begin(), v.members.end(),
+                                       [&](const MemberUtilization& m) { return m.kind == "hinge" && m.name == hinge.name; });
+      MemberUtilization& entry = listed != v.members.end() ? *listed : v.members.emplace_back(
+                                                                           MemberUtilization{hinge.name, "hinge", "", 0.0, {}});
+      entry.checks.push_back({kind, h, ""});
+      if (entry.governing.empty() || h.max > entry.max) {
+        entry.governing = name(kind);
+        entry.max = h.max;
+      }
+    }
+  }
+  // Jams (V10): only in a model that gives a hinge a jam_time.
+  if (std::any_of(model.hinges.begin(), model.hinges.end(), [](const HingeElement& h) { return h.jam_time_s.has_value(); })) {
+    CheckOverview& o = overview(CheckKind::jam);
+    o.applies = true;
+    const bool spring_driven = model.drivers.empty() && report.status == RunStatus::completed;
+    for (std::size_t i = 0; i < model.hinges.size(); ++i) {
+      const HingeElement& hinge = model.hinges[i];
+      if (hinge.friction_coefficient == 0.0 || !hinge.latch_rad) continue;
+      if (!checks.jam_runs(static_cast<int>(i))) {
+        ++o.n_without;
+        continue;
+      }
+      ++o.n_checked;
+      const JamHistory& j = checks.jam(static_cast<int>(i));
+      std::optional<JamReport> jam;
+      if (j.jammed) {
+        jam = JamReport{hinge.name, j.jammed_s, j.jammed_since_s, j.jammed_angle_rad, 0.0, false};
+      } else if (j.stuck_now && spring_driven) {
+        jam = JamReport{hinge.name, j.stuck_since_s, j.stuck_since_s, j.angle_rad, 0.0, true};
+      }
+      if (!jam) continue;
+      jam->short_of_latch_rad = std::abs(*hinge.latch_rad - jam->angle_rad);
+      ++o.n_exceeded;
+      const std::string what = fmt::format(
+          "stuck by friction at θ = {:.6g} rad, {:.4g} rad ({:.3g}°) short of its latch at {:.6g} rad, {}", jam->angle_rad,
+          jam->short_of_latch_rad, jam->short_of_latch_rad * 180.0 / std::numbers::pi, *hinge.latch_rad,
+          jam->at_end ? fmt::format("from t = {:.6g} s to the end of the run", jam->stuck_since_s)
+                      : fmt::format("since t = {:.6g} s, longer than its jam_time {:g} s", jam->stuck_since_s,
+                                    *hinge.jam_time_s));
+      failures.push_back({name(CheckKind::jam), hinge.name, "", jam->time_s, jam->time_s, std::nullopt, what, std::nullopt});
+      v.jams.push_back(*jam);
+    }
+  }
   v.n_members = static_cast<int>(v.members.size());
   std::stable_sort(v.members.begin(), v.members.end(),
                    [](const MemberUtilization& a, const MemberUtilization& b) { return a.max > b.max; });
@@ -281,6 +364,8 @@ ordered_json verdict_json(const Verdict& v) {
     ordered_json entry = {{"checked", o.n_checked}, {"without_capacity", o.n_without}, {"exceeded", o.n_exceeded}};
     if (kind == CheckKind::cable_slack) {
       entry["went_slack"] = v.slack.size();
+    } else if (kind == CheckKind::jam) {
+      entry["jammed"] = v.jams.size();
     } else if (o.recorded) {
       entry["max_utilization"] = o.max;
       entry["member"] = o.member;
@@ -298,6 +383,15 @@ ordered_json verdict_json(const Verdict& v) {
                      {"first_time_s", s.first_time_s}, {"duration_s", s.duration_s}, {"forbidden", s.forbidden}});
   }
   j["slack"] = slack;
+  if (v.checks[static_cast<std::size_t>(CheckKind::jam)].applies) {
+    ordered_json jams = ordered_json::array();
+    for (const JamReport& jam : v.jams) {
+      jams.push_back({{"hinge", jam.hinge}, {"time_s", jam.time_s}, {"stuck_since_s", jam.stuck_since_s},
+                      {"angle_rad", jam.angle_rad}, {"short_of_latch_rad", jam.short_of_latch_rad},
+                      {"at_end", jam.at_end}});
+    }
+    j["jams"] = jams;
+  }
   ordered_json members = ordered_json::object();
   for (const MemberUtilization& m : v.members) {
     ordered_json entry = {{"kind", m.kind}, {"governing", m.governing}, {"utilization", m.max}};

@@ -67,6 +67,16 @@ struct SlackReport {
   bool forbidden = false;
 };
 
+// A hinge stuck by friction short of its latch (V10): for longer than its jam_time, or at the end.
+struct JamReport {
+  std::string hinge;
+  double time_s = 0.0;          // when it counts as jammed (stuck since + jam_time, or since, at the end)
+  double stuck_since_s = 0.0;
+  double angle_rad = 0.0;
+  double short_of_latch_rad = 0.0;  // how far from its latch angle
+  bool at_end = false;          // still stuck at the end of a spring-driven run
+};
+
 // One member's (or driver's) results, for the members most utilized.
 struct MemberUtilization {
   std::string name;
@@ -87,6 +97,7 @@ struct Verdict {
   std::optional<VerdictFailure> first_failure;
   std::array<CheckOverview, kNumCheckKinds> checks;  // by CheckKind
   std::vector<SlackReport> slack;                    // every cable member that went slack
+  std::vector<JamReport> jams;                       // every hinge that jammed
   std::vector<MemberUtilization> members;            // the most utilized first, at most kVerdictMembers
   int n_members = 0;                                 // members and checked drivers in all
   std::optional<ClearanceReport> clearance;          // when the clearance watch ran

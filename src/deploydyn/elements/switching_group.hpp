@@ -7,6 +7,7 @@
 // its switched constraints as data, in their EvaluationPoint: nothing is pushed in beforehand.
 
 #include <Eigen/Core>
+#include <limits>
 #include <memory>
 #include <span>
 #include <vector>
@@ -34,6 +35,13 @@ struct StepEnds {
 };
 enum class StepVerdict { accept, redo };
 
+// How long time steps may be for a group's elements to be resolved in time (a compliant
+// contact: docs/theory.md, "Compliant stops and latches"); infinity: no limit.
+struct StepLimit {
+  double retry_s = std::numeric_limits<double>::infinity();  // the step just taken again, this long
+  double next_s = std::numeric_limits<double>::infinity();   // the longest next step
+};
+
 class SwitchingGroup {
  public:
   virtual ~SwitchingGroup() = default;
@@ -48,6 +56,14 @@ class SwitchingGroup {
   // `events` holds only the switches (so that nothing is counted twice).
   virtual StepVerdict end_step(const StepEnds& ends, std::span<const double> before,
                                std::span<double> after, std::vector<ElementEvent>& events) const = 0;
+
+  // After an accepted end_step of a dynamic run (`before` and `after` its history): whether the
+  // step must be taken again shorter, and how long the next may be. Default: no limit.
+  virtual StepLimit step_limit(const StepEnds& ends, std::span<const double> before,
+                               std::span<const double> after) const {
+    (void)ends, (void)before, (void)after;
+    return {};
+  }
 
   // Constraints the modes switch on and off (a hinge's lock), appended by the assembler after
   // every other constraint. Default: none (a cable's slack state switches no constraint).

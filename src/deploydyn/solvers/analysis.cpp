@@ -436,6 +436,20 @@ RunReport run_analysis(const Assembler& assembler, RecordSink& sink, const RunCo
       ++report.rejected_steps;
       continue;
     }
+    if (dynamic) {
+      // A compliant contact begun or under way: the step again shorter, landing where it began
+      // or resolving it, and the next steps capped (docs/theory.md, "Compliant stops and latches").
+      const StepLimit limit = assembler.step_limit(
+          StepEnds{state.time_s, next.time_s, state.q, state.v, next.q, next.v, next.lambda}, state.history,
+          next.history);
+      if (limit.retry_s < step) {
+        switching.drop_events();
+        ++report.rejected_steps;
+        steps.limit_steps(limit.retry_s);
+        continue;
+      }
+      steps.limit_steps(limit.next_s);
+    }
     std::swap(state, next);
     const Eigen::VectorXd& q_before = next.q;
     ++report.steps;

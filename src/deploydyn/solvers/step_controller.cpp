@@ -29,7 +29,8 @@ StepController::StepController(const AnalysisOptions& options)
 
 double StepController::next_step(double t) const {
   const double remaining = next_output_s_ - t;
-  return remaining <= step_s_ * (1.0 + kSliver) ? remaining : step_s_;
+  const double step = std::min(step_s_, cap_s_);
+  return remaining <= step * (1.0 + kSliver) ? remaining : step;
 }
 
 bool StepController::reached_output(double t) const {

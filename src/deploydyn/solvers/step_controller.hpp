@@ -5,7 +5,10 @@
 //   factor = 0.9 (tolerance / e)^(1/3),  limited to [0.2, 2],
 // since the local error of a second-order scheme grows like h³ (Hairer, Nørsett & Wanner,
 // Solving ODEs I, §II.4). A Newton failure halves the step. Steps never go below min_step
-// nor above max_step, and are shortened to land exactly on the output times.
+// nor above max_step, and are shortened to land exactly on the output times. Fixed or
+// adaptive, the elements may cap them (limit_steps: a compliant contact resolved in time).
+
+#include <limits>
 
 #include "deploydyn/model/model.hpp"
 
@@ -26,12 +29,16 @@ class StepController {
   bool cut_after_failure(double tried_step);
   // After a converged step: whether to keep it (always, when not adaptive); sets the next step.
   bool accept(double tried_step, double error_m);
+  // Caps the steps from now on at `max_step_s` (s) until the next call (infinity: no cap): the
+  // elements' resolution in time (SwitchingGroup::step_limit), over the tolerance's choice.
+  void limit_steps(double max_step_s) { cap_s_ = max_step_s; }
 
  private:
   bool adaptive_;
   double tolerance_m_, min_step_s_, max_step_s_;
   double end_s_, output_interval_s_;
   double step_s_;
+  double cap_s_ = std::numeric_limits<double>::infinity();
   double next_output_s_;
   int outputs_written_ = 0;
 };

@@ -7,6 +7,8 @@
 #include <optional>
 #include <string>
 
+#include "deploydyn/elements/hinge/hinge_contact.hpp"
+
 namespace deploydyn {
 
 // A hinge: a torsion spring, a viscous damper, Coulomb friction, end stops and a latch acting
@@ -30,10 +32,22 @@ struct HingeElement {
   double pin_radius_m = 0.0;            // r
   std::optional<double> stop_min_rad, stop_max_rad;  // end stops (θ stays within)
   std::optional<double> latch_rad;      // locks for good when θ reaches it
+  // Compliant stops (both) and latch: a contact moment instead of the rigid lock (hinge_contact.hpp).
+  HingeContact stop_contact, latch_contact;
+  // Load capacities (N·m) of the stops and the latch, for the verdict's checks.
+  std::optional<double> stop_capacity_Nm, latch_capacity_Nm;
+  // With friction and a latch: stuck short of the latch longer than this (s), or at the end of a
+  // spring-driven run, is a jam in the verdict (the `jam` check); none: not checked.
+  std::optional<double> jam_time_s;
 
-  // Whether it needs a lock: to stick, stop, latch, or to hold a spring until released.
+  bool rigid_stops() const { return (stop_min_rad || stop_max_rad) && !stop_contact.compliant(); }
+  bool rigid_latch() const { return latch_rad && !latch_contact.compliant(); }
+  bool compliant() const {
+    return ((stop_min_rad || stop_max_rad) && stop_contact.compliant()) || (latch_rad && latch_contact.compliant());
+  }
+  // Whether it needs a lock: to stick, stop, latch rigidly, or to hold a spring until released.
   bool has_lock() const {
-    return friction_coefficient > 0.0 || stop_min_rad || stop_max_rad || latch_rad || stiffness_Nm_per_rad > 0.0;
+    return friction_coefficient > 0.0 || rigid_stops() || rigid_latch() || stiffness_Nm_per_rad > 0.0;
   }
 };
 

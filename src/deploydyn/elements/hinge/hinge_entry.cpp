@@ -24,7 +24,48 @@ constexpr ElementField kFields[] = {
     {"stop_min", "rad", "none", "lower end stop; below the initial angle"},
     {"stop_max", "rad", "none", "upper end stop; above the initial angle and stop_min"},
     {"latch", "rad", "none", "the hinge locks for good when θ reaches it; not the initial angle, within the stops"},
+    {"stop_stiffness", "N·m/rad", "none (rigid)", "> 0: the stops are compliant, contact moment k δ + c δ̇ on the penetration δ past them (pushes only); needs a stop"},
+    {"stop_damping", "N·m·s/rad", "0", "≥ 0: c of the stops' contact; needs `stop_stiffness`; not with `stop_restitution`"},
+    {"stop_restitution", "", "none", "e in (0, 1]: the stops' contact damps as Hunt–Crossley's, rebounding at e times the impact rate; needs `stop_stiffness`; not with `stop_damping`"},
+    {"stop_capacity", "N·m", "none", "> 0: the load the stops carry, for the `stop_load` check; needs a stop"},
+    {"latch_stiffness", "N·m/rad", "none (rigid)", "> 0: the latch is compliant: a contact past it, and once θ passed it (the catch engaged) a spring both ways about it; needs `latch`"},
+    {"latch_damping", "N·m·s/rad", "0", "≥ 0: c of the latch's contact; needs `latch_stiffness`; not with `latch_restitution`"},
+    {"latch_restitution", "", "none", "e in (0, 1]: the latch's contact damps as Hunt–Crossley's; needs `latch_stiffness`; not with `latch_damping`"},
+    {"latch_capacity", "N·m", "none", "> 0: the load the latch carries, for the `latch_load` check; needs `latch`"},
+    {"jam_time", "s", "none", "> 0: stuck by friction short of the latch for longer than this, or at the end of a run without drivers, is a jam (the `jam` check); needs `friction` and `latch`"},
 };
+
+// A compliant stop or latch: `<what>_stiffness`, `_damping`, `_restitution` (docs/theory.md,
+// "Compliant stops and latches"), and its capacity; `present`: the hinge has that stop or latch.
+HingeContact read_contact(const ElementEntryReader& entry, const std::string& what, bool present,
+                          std::optional<double>& capacity_Nm) {
+  const std::string stiffness = what + "_stiffness", damping = what + "_damping",
+                    restitution = what + "_restitution", capacity = what + "_capacity";
+  const std::string needs = what == "latch" ? "a `latch`" : "a stop (`stop_min` or `stop_max`)";
+  for (const std::string& key : {stiffness, damping, restitution, capacity}) {
+    if (entry.has(key) && !present) entry.fail(key, fmt::format("needs {} on this hinge", needs));
+  }
+  HingeContact contact;
+  contact.stiffness_Nm_per_rad = entry.optional_number(stiffness, ValueSign::positive, "N·m/rad").value_or(0.0);
+  for (const std::string& key : {damping, restitution}) {
+    if (entry.has(key) && contact.stiffness_Nm_per_rad == 0.0) {
+      entry.fail(key, fmt::format("needs `{}` (N·m/rad): a rigid {} has no contact to damp (it is perfectly "
+                                  "inelastic)", stiffness, what));
+    }
+  }
+  contact.damping_Nms_per_rad = entry.optional_number(damping, ValueSign::non_negative, "N·m·s/rad").value_or(0.0);
+  if ((contact.restitution = entry.optional_number(restitution, ValueSign::any, ""))) {
+    if (entry.has(damping)) entry.fail(restitution, fmt::format("give `{}` or `{}`, not both", damping, restitution));
+    const double e = *contact.restitution;
+    if (!(e > 0.0 && e <= 1.0)) {
+      entry.fail(restitution, fmt::format("must lie in (0, 1], got {}: 1 rebounds elastically; 0, perfectly "
+                                          "inelastic, is the rigid {} (no `{}`)", e, what, stiffness));
+    }
+    contact.hunt_crossley_factor = hunt_crossley_factor(e);
+  }
+  capacity_Nm = entry.optional_number(capacity, ValueSign::positive, "N·m");
+  return contact;
+}
 
 // Angles are continued from the initial one: a value more than π away is never reached.
 void check_reachable(const ElementEntryReader& entry, std::string_view key, double angle, double initial) {
@@ -124,6 +165,13 @@ void read_entry(const std::string& name, const ElementEntryReader& entry, Model&
       entry.fail("latch", "lies beyond an end stop: it would never be reached");
     }
   }
+  h.stop_contact = read_contact(entry, "stop", h.stop_min_rad || h.stop_max_rad, h.stop_capacity_Nm);
+  h.latch_contact = read_contact(entry, "latch", h.latch_rad.has_value(), h.latch_capacity_Nm);
+  if ((h.jam_time_s = entry.optional_number("jam_time", ValueSign::positive, "s"))) {
+    if (h.friction_coefficient == 0.0 || !h.latch_rad) {
+      entry.fail("jam_time", "needs `friction` and a `latch`: a jam is a hinge stuck by friction short of its latch");
+    }
+  }
   model.hinges.push_back(std::move(h));
 }
 
@@ -144,6 +192,20 @@ void write_entry(const Model& model, int index, ElementEntryWriter& entry) {
   if (h.stop_min_rad) entry.number("stop_min", *h.stop_min_rad);
   if (h.stop_max_rad) entry.number("stop_max", *h.stop_max_rad);
   if (h.latch_rad) entry.number("latch", *h.latch_rad);
+  const auto write_contact = [&](const std::string& what, const HingeContact& c, const std::optional<double>& capacity) {
+    if (c.compliant()) {
+      entry.number(what + "_stiffness", c.stiffness_Nm_per_rad);
+      if (c.restitution) {
+        entry.number(what + "_restitution", *c.restitution);
+      } else {
+        entry.number(what + "_damping", c.damping_Nms_per_rad);
+      }
+    }
+    if (capacity) entry.number(what + "_capacity", *capacity);
+  };
+  write_contact("stop", h.stop_contact, h.stop_capacity_Nm);
+  write_contact("latch", h.latch_contact, h.latch_capacity_Nm);
+  if (h.jam_time_s) entry.number("jam_time", *h.jam_time_s);
 }
 
 }  // namespace deploydyn::hinge

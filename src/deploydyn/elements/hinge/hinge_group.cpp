@@ -2,7 +2,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 
+#include "deploydyn/elements/hinge/hinge_contact.hpp"
 #include "deploydyn/elements/hinge/hinge_history.hpp"
 #include "deploydyn/elements/hinge/hinge_lock.hpp"
 #include "deploydyn/elements/hinge/hinge_quantities.hpp"
@@ -17,6 +19,34 @@ double sign_of(double x) { return x > 0.0 ? 1.0 : (x < 0.0 ? -1.0 : 0.0); }
 
 // Whether θ went from θ0 to θ1 through `angle` (or ended on it).
 bool crossed(double angle0, double angle1, double angle) { return (angle0 - angle) * (angle1 - angle) <= 0.0 && angle0 != angle; }
+
+// docs/theory.md, "Compliant stops and latches": the steps of a contact's first
+// kResolvedDurations durations are at most 1/kStepsPerContact of it; the least impact rate ω0
+// that the Hunt–Crossley law divides by (rad/s).
+constexpr double kStepsPerContact = 40.0;
+constexpr double kResolvedDurations = 2.0;
+constexpr double kLeastImpactRate = 1e-6;
+// A step that begins a contact lands where it began (the step again, as long as that) unless
+// its free part is shorter than this share of a contact step.
+constexpr double kLandingShare = 0.1;
+
+// A compliant stop or latch of a hinge: penetration δ = direction (θ − angle).
+struct ContactSite {
+  const HingeContact* law = nullptr;
+  double angle_rad = 0.0;
+  double direction = 1.0;  // +1: resists θ growing past it; −1: θ falling
+  bool latch = false;
+};
+
+// The contact torques of one hinge on θ (resisting θ growing, as T in f = T ∂θ/∂q).
+struct ContactTorques {
+  double total = 0.0;
+  double elastic = 0.0;            // the k δ parts: an internal force with energy ½ k δ²
+  double elastic_per_angle = 0.0;  // ∂(elastic)/∂θ
+  double per_angle = 0.0;          // ∂(total)/∂θ
+  double per_rate = 0.0;           // ∂(total)/∂θ̇
+  double latch_Nm = 0.0, stop_Nm = 0.0;  // the moments on the latch and on the stops (≥ 0)
+};
 
 // Torques of one hinge on θ at one configuration, resisting θ growing (as f = T ∂θ/∂q).
 struct HingeTorques {
@@ -36,16 +66,30 @@ class HingeGroup final : public ElementGroup, public SwitchingGroup {
     for (std::size_t i = 0; i < records_.size(); ++i) {
       if (records_[i].element->has_lock()) lock_index_[i] = n_locks++;
     }
+    sites_.resize(records_.size());
+    for (std::size_t i = 0; i < records_.size(); ++i) {
+      const HingeElement& e = *records_[i].element;
+      if (e.stop_contact.compliant()) {
+        if (e.stop_min_rad) sites_[i].push_back({&e.stop_contact, *e.stop_min_rad, -1.0, false});
+        if (e.stop_max_rad) sites_[i].push_back({&e.stop_contact, *e.stop_max_rad, 1.0, false});
+      }
+      if (e.latch_rad && e.latch_contact.compliant()) {
+        sites_[i].push_back({&e.latch_contact, *e.latch_rad, *e.latch_rad > e.initial_angle_rad ? 1.0 : -1.0, true});
+      }
+    }
   }
 
   int n_elements() const override { return static_cast<int>(records_.size()); }
   int n_rigid_body_conditions() const override { return 0; }
 
   void add_internal_force(const EvaluationPoint& at, Eigen::VectorXd& f) const override {
-    for (const HingeRecord& r : records_) {
-      if (r.element->stiffness_Nm_per_rad == 0.0) continue;
+    for (std::size_t i = 0; i < records_.size(); ++i) {
+      const HingeRecord& r = records_[i];
+      if (r.element->stiffness_Nm_per_rad == 0.0 && sites_[i].empty()) continue;
       const HingeKinematics k = r.kinematics(r.gather(at.q));
-      scatter(r, spring_torque(r, k.angle_rad) * k.gradient, f);
+      double torque = spring_torque(r, k.angle_rad);
+      if (!sites_[i].empty()) torque += contact_torques(i, history_of(at.history, static_cast<int>(i)), k.angle_rad, 0.0).elastic;
+      scatter(r, torque * k.gradient, f);
     }
   }
   // A hinge has no thermal strain (its pin force does, through its bar: friction, a rate force).
@@ -56,19 +100,32 @@ class HingeGroup final : public ElementGroup, public SwitchingGroup {
 
   double strain_energy(const EvaluationPoint& at) const override {
     double energy = 0.0;
-    for (const HingeRecord& r : records_) {
+    for (std::size_t i = 0; i < records_.size(); ++i) {
+      const HingeRecord& r = records_[i];
       const double k = r.element->stiffness_Nm_per_rad;
-      if (k == 0.0) continue;
-      const double twist = r.kinematics(r.gather(at.q)).angle_rad - r.element->rest_angle_rad;
-      energy += 0.5 * k * twist * twist;
+      if (k == 0.0 && sites_[i].empty()) continue;
+      const double angle = r.kinematics(r.gather(at.q)).angle_rad;
+      const double twist = angle - r.element->rest_angle_rad;
+      if (k != 0.0) energy += 0.5 * k * twist * twist;
+      for (const ContactSite& s : sites_[i]) {  // ½ k δ² of an engaged contact
+        const double penetration = s.direction * (angle - s.angle_rad);
+        if (penetration > 0.0 || two_sided(s, history_of(at.history, static_cast<int>(i)))) {
+          energy += 0.5 * s.law->stiffness_Nm_per_rad * penetration * penetration;
+        }
+      }
     }
     return energy;
   }
   double largest_stiffness_diagonal(const EvaluationPoint& at) const override {
     double largest = 0.0;
-    for (const HingeRecord& r : records_) {
+    for (std::size_t i = 0; i < records_.size(); ++i) {
+      const HingeRecord& r = records_[i];
       const HingeKinematics k = r.kinematics(r.gather(at.q));
-      largest = std::max(largest, r.element->stiffness_Nm_per_rad * k.gradient.cwiseAbs2().maxCoeff());
+      double stiffness = r.element->stiffness_Nm_per_rad;
+      if (!sites_[i].empty()) {
+        stiffness += contact_torques(i, history_of(at.history, static_cast<int>(i)), k.angle_rad, 0.0).elastic_per_angle;
+      }
+      largest = std::max(largest, stiffness * k.gradient.cwiseAbs2().maxCoeff());
     }
     return largest;
   }
@@ -103,6 +160,19 @@ class HingeGroup final : public ElementGroup, public SwitchingGroup {
         m += (w.stiffness * e.stiffness_Nm_per_rad) *
              (k.gradient * k.gradient.transpose() + (k.angle_rad - e.rest_angle_rad) * k.hessian);
       }
+      if (!sites_[i].empty()) {  // T(θ, θ̇) ∇θ: ∂T/∂θ ∇θ∇θᵀ + T ∇²θ + ∂T/∂θ̇ (∇θ (∇²θ q̇)ᵀ, ∇θ∇θᵀ)
+        const std::span<const double> h = history_of(at.history, static_cast<int>(i));
+        if (at.rates == nullptr) {
+          const ContactTorques c = contact_torques(i, h, k.angle_rad, 0.0);
+          m += w.stiffness * (c.elastic_per_angle * k.gradient * k.gradient.transpose() + c.elastic * k.hessian);
+        } else {
+          const HingeVector rates = r.gather(*at.rates);
+          const ContactTorques c = contact_torques(i, h, k.angle_rad, k.gradient.dot(rates));
+          m += w.stiffness * (c.per_angle * k.gradient * k.gradient.transpose() + c.total * k.hessian +
+                              c.per_rate * k.gradient * (k.hessian * rates).transpose());
+          m += (w.damping * c.per_rate) * k.gradient * k.gradient.transpose();
+        }
+      }
       if (at.rates != nullptr && e.damping_Nms_per_rad != 0.0) {
         const HingeVector rates = r.gather(*at.rates);
         const double angular_rate = k.gradient.dot(rates);
@@ -123,19 +193,26 @@ class HingeGroup final : public ElementGroup, public SwitchingGroup {
 
   bool has_rate_forces() const override {
     return std::any_of(records_.begin(), records_.end(), [](const HingeRecord& r) {
-      return r.element->damping_Nms_per_rad > 0.0 || r.element->friction_coefficient > 0.0;
+      return r.element->damping_Nms_per_rad > 0.0 || r.element->friction_coefficient > 0.0 || r.element->compliant();
     });
   }
   void add_rate_force(const EvaluationPoint& at, Eigen::VectorXd& f) const override {
     for (std::size_t i = 0; i < records_.size(); ++i) {
       const HingeRecord& r = records_[i];
       const bool slides = sliding(i, at);
-      if (r.element->damping_Nms_per_rad == 0.0 && !slides) continue;
+      if (r.element->damping_Nms_per_rad == 0.0 && !slides && sites_[i].empty()) continue;
       const HingeVector q_local = r.gather(at.q);
       const HingeKinematics k = r.kinematics(q_local);
       const double slip = slides ? hinge_state(at.history, i).slip : 0.0;
-      const HingeTorques torques = rate_torques(r, k, q_local, r.gather(*at.rates), at.t, slip);
-      scatter(r, (torques.damper + torques.friction) * k.gradient, f);
+      const HingeVector rates = r.gather(*at.rates);
+      const HingeTorques torques = rate_torques(r, k, q_local, rates, at.t, slip);
+      double torque = torques.damper + torques.friction;
+      if (!sites_[i].empty()) {  // the contacts' damping: what is not k δ
+        const ContactTorques c =
+            contact_torques(i, history_of(at.history, static_cast<int>(i)), k.angle_rad, k.gradient.dot(rates));
+        torque += c.total - c.elastic;
+      }
+      scatter(r, torque * k.gradient, f);
     }
   }
 
@@ -150,7 +227,12 @@ class HingeGroup final : public ElementGroup, public SwitchingGroup {
     const HingeVector rates = at.rates != nullptr ? r.gather(*at.rates) : HingeVector::Zero(r.n_dofs());
     HingeTorques torques = rate_torques(r, k, q_local, rates, at.t, slip);
     torques.spring = spring_torque(r, k.angle_rad);
-    const double lock = h.empty() ? 0.0 : h[kLockTorque];
+    double lock = h.empty() ? 0.0 : h[kLockTorque];
+    ContactTorques contact;
+    if (!sites_[static_cast<std::size_t>(element)].empty()) {
+      contact = contact_torques(static_cast<std::size_t>(element), h, k.angle_rad, k.gradient.dot(rates));
+      lock += contact.total;
+    }
     out[hinge::kAngle] = k.angle_rad;
     out[hinge::kTorque] = -(torques.spring + torques.damper + torques.friction + lock);
     out[hinge::kSpringTorque] = -torques.spring;
@@ -160,6 +242,9 @@ class HingeGroup final : public ElementGroup, public SwitchingGroup {
     out[hinge::kPinForce] = r.pin_force(q_local, at.t).magnitude_N;
     out[hinge::kDissipated] = h.empty() ? 0.0 : h[kDissipated];
     out[hinge::kState] = static_cast<double>(mode);
+    const double rigid = h.empty() ? 0.0 : std::abs(h[kLockTorque]);
+    out[hinge::kLatchLoad] = mode == HingeMode::latched ? rigid : contact.latch_Nm;
+    out[hinge::kStopLoad] = mode == HingeMode::stop_min || mode == HingeMode::stop_max ? rigid : contact.stop_Nm;
   }
   double reference_length_m(int element) const override {
     return records_[static_cast<std::size_t>(element)].reference_length_m;
@@ -182,6 +267,7 @@ class HingeGroup final : public ElementGroup, public SwitchingGroup {
       h[kMode] = initial_mode(records_[i]);
       h[kLockAngle] = records_[i].element->initial_angle_rad;
       h[kLatchedAt] = -1.0;
+      h[kContactSince] = -1.0;
     }
   }
   StepVerdict end_step(const StepEnds& ends, std::span<const double> before, std::span<double> after,
@@ -198,8 +284,36 @@ class HingeGroup final : public ElementGroup, public SwitchingGroup {
     for (std::size_t i = 0; i < records_.size(); ++i) {
       accumulate(i, ends, before.subspan(i * kHistorySlots, kHistorySlots),
                  after.subspan(i * kHistorySlots, kHistorySlots));
+      if (!sites_[i].empty()) {
+        track_contacts(i, ends, before.subspan(i * kHistorySlots, kHistorySlots),
+                       after.subspan(i * kHistorySlots, kHistorySlots), events);
+      }
     }
     return StepVerdict::accept;
+  }
+
+  // docs/theory.md, "Compliant stops and latches": a step in which a contact began is taken
+  // again to land where it began, or as long as a contact step; a contact's steps are at most
+  // its estimated duration / kStepsPerContact while it is resolved.
+  StepLimit step_limit(const StepEnds& ends, std::span<const double> before,
+                       std::span<const double> after) const override {
+    StepLimit limit;
+    const double h = ends.time_after_s - ends.time_before_s;
+    for (std::size_t i = 0; i < records_.size(); ++i) {
+      if (sites_[i].empty()) continue;
+      const std::span<const double> b = before.subspan(i * kHistorySlots, kHistorySlots);
+      const std::span<const double> a = after.subspan(i * kHistorySlots, kHistorySlots);
+      if (!(a[kContactDuration] > 0.0)) continue;  // no contact yet
+      const double contact_step = a[kContactDuration] / kStepsPerContact;
+      if (a[kContactSince] >= 0.0) limit.next_s = std::min(limit.next_s, contact_step);
+      // Resolved in this step: a contact under way at its start, or one that began in it.
+      const double began = a[kContactSince] >= 0.0 ? a[kContactSince] : b[kContactSince];
+      if (began < 0.0 && b[kContactSince] < 0.0) continue;
+      const double free_part = std::max(0.0, std::min(began, ends.time_after_s) - ends.time_before_s);
+      if (h - free_part <= contact_step * (1.0 + 1e-9)) continue;
+      limit.retry_s = std::min(limit.retry_s, free_part > kLandingShare * contact_step ? free_part : contact_step);
+    }
+    return limit;
   }
 
   int n_latches() const override {
@@ -209,7 +323,8 @@ class HingeGroup final : public ElementGroup, public SwitchingGroup {
   int n_latched(std::span<const double> history) const override {
     int n = 0;
     for (std::size_t i = 0; i < records_.size() && !history.empty(); ++i) {
-      n += static_cast<HingeMode>(static_cast<int>(history[i * kHistorySlots + kMode])) == HingeMode::latched;
+      n += static_cast<HingeMode>(static_cast<int>(history[i * kHistorySlots + kMode])) == HingeMode::latched ||
+           history[i * kHistorySlots + kLatchImpactOver] != 0.0;
     }
     return n;
   }
@@ -253,6 +368,70 @@ class HingeGroup final : public ElementGroup, public SwitchingGroup {
                                                          : ends.switched_multipliers[static_cast<std::size_t>(lock_index_[i])];
   }
 
+  // A latch whose catch has engaged acts both ways (docs/theory.md, "Compliant stops and latches").
+  static bool two_sided(const ContactSite& s, std::span<const double> h) {
+    return s.latch && !h.empty() && h[kLatchedAt] >= 0.0;
+  }
+  static double impact_rate(std::span<const double> h) {
+    return std::max(h.empty() ? 0.0 : h[kImpactRate], kLeastImpactRate);
+  }
+  // Eqs. (H1), (H3) of docs/theory.md for every compliant stop and latch of hinge i at θ, θ̇.
+  ContactTorques contact_torques(std::size_t i, std::span<const double> h, double angle, double rate) const {
+    ContactTorques c;
+    for (const ContactSite& s : sites_[i]) {
+      const bool both_ways = two_sided(s, h);
+      const double penetration = s.direction * (angle - s.angle_rad);
+      const ContactMoment m = contact_moment(*s.law, penetration, s.direction * rate, impact_rate(h), both_ways);
+      c.total += s.direction * m.moment_Nm;
+      c.elastic += s.direction * m.elastic_Nm;
+      if (both_ways || penetration > 0.0) c.elastic_per_angle += s.law->stiffness_Nm_per_rad;
+      c.per_angle += m.per_penetration;
+      c.per_rate += m.per_rate;
+      (s.latch ? c.latch_Nm : c.stop_Nm) += std::abs(m.moment_Nm);
+    }
+    return c;
+  }
+
+  // After an accepted step of hinge i: when a contact began (and a compliant latch caught), its
+  // impact rate, its duration estimated from the step, and whether it is still resolved.
+  // The duration from the step's impulse: I = ∫M dt / |Δδ̇| (trapezoid), π √(I/k).
+  void track_contacts(std::size_t i, const StepEnds& ends, std::span<const double> before, std::span<double> after,
+                      std::vector<ElementEvent>& events) const {
+    const HingeRecord& r = records_[i];
+    const HingeKinematics k0 = r.kinematics(r.gather(ends.q_before)), k1 = r.kinematics(r.gather(ends.q_after));
+    const double rate0 = k0.gradient.dot(r.gather(ends.v_before)), rate1 = k1.gradient.dot(r.gather(ends.v_after));
+    const double t0 = ends.time_before_s, t1 = ends.time_after_s;
+    bool touching = false;
+    for (const ContactSite& s : sites_[i]) {
+      const bool both_ways = two_sided(s, before);
+      const double depth0 = s.direction * (k0.angle_rad - s.angle_rad), depth1 = s.direction * (k1.angle_rad - s.angle_rad);
+      if (!both_ways && depth0 <= 0.0 && depth1 <= 0.0) continue;
+      touching = touching || both_ways || depth1 > 0.0;
+      const bool begins = !both_ways && depth0 <= 0.0;
+      const double share = begins ? depth0 / (depth0 - depth1) : 0.0;  // of the step before it began
+      if (begins) after[kContactSince] = t0 + share * (t1 - t0);
+      const double moment0 =
+          begins ? 0.0 : contact_moment(*s.law, depth0, s.direction * rate0, impact_rate(before), both_ways).moment_Nm;
+      const double moment1 = contact_moment(*s.law, depth1, s.direction * rate1, impact_rate(before), both_ways).moment_Nm;
+      const double impulse = 0.5 * (moment0 + moment1) * (1.0 - share) * (t1 - t0);
+      const double slowed = s.direction * (rate0 - rate1);
+      if (impulse > 0.0 && slowed > 0.0) {
+        after[kContactDuration] = std::numbers::pi * std::sqrt(impulse / slowed / s.law->stiffness_Nm_per_rad);
+      }
+      if (s.latch && before[kLatchedAt] < 0.0 && depth1 > 0.0) {  // the catch engages
+        after[kLatchedAt] = t1;
+        events.push_back({t1, static_cast<int>(i), ElementEventKind::latched, s.angle_rad});
+      }
+      if (!both_ways && depth1 <= 0.0) after[kContactSince] = -1.0;  // it let go
+    }
+    const double since = after[kContactSince];
+    if (since >= 0.0 && after[kContactDuration] > 0.0 && t1 - since >= kResolvedDurations * after[kContactDuration]) {
+      after[kContactSince] = -1.0;  // resolved: its steps are free again
+      if (after[kLatchedAt] >= 0.0) after[kLatchImpactOver] = 1.0;
+    }
+    if (!touching) after[kImpactRate] = std::abs(rate1);  // ω0 of the next contact, if it begins now
+  }
+
   // The switch of hinge i at the end of a step, if any, into `after` and `events`.
   bool switch_mode(std::size_t i, const StepEnds& ends, std::span<const double> before,
                    std::span<double> after, std::vector<ElementEvent>& events) const {
@@ -273,12 +452,12 @@ class HingeGroup final : public ElementGroup, public SwitchingGroup {
     const double lock = lock_torque(i, mode, ends);
     switch (mode) {
       case HingeMode::free: {
-        if (e.latch_rad && crossed(angle0, angle1, *e.latch_rad)) {
+        if (e.rigid_latch() && crossed(angle0, angle1, *e.latch_rad)) {
           after[kLatchedAt] = t;
           return to(HingeMode::latched, *e.latch_rad, ElementEventKind::latched, *e.latch_rad);
         }
-        if (e.stop_min_rad && angle1 < *e.stop_min_rad) return to(HingeMode::stop_min, *e.stop_min_rad, ElementEventKind::stop, *e.stop_min_rad);
-        if (e.stop_max_rad && angle1 > *e.stop_max_rad) return to(HingeMode::stop_max, *e.stop_max_rad, ElementEventKind::stop, *e.stop_max_rad);
+        if (e.rigid_stops() && e.stop_min_rad && angle1 < *e.stop_min_rad) return to(HingeMode::stop_min, *e.stop_min_rad, ElementEventKind::stop, *e.stop_min_rad);
+        if (e.rigid_stops() && e.stop_max_rad && angle1 > *e.stop_max_rad) return to(HingeMode::stop_max, *e.stop_max_rad, ElementEventKind::stop, *e.stop_max_rad);
         const double slip = before[kSlip];
         // Once per step: a hinge that broke loose in this step slides to its end (measured on a
         // falling chain of 100 hinged bars: without it, hinges went back and forth between
@@ -332,7 +511,11 @@ class HingeGroup final : public ElementGroup, public SwitchingGroup {
     const double slip = mode == HingeMode::free && r.element->friction_coefficient > 0.0 ? before[kSlip] : 0.0;
     const HingeTorques torques = rate_torques(r, k1, q1, v1, ends.time_after_s, slip);
     const double lock = lock_torque(i, mode, ends);
-    const double loss = torques.damper + torques.friction + lock;
+    double loss = torques.damper + torques.friction + lock;
+    if (!sites_[i].empty()) {  // the contacts' damping, with the modes of the step (before)
+      const ContactTorques c = contact_torques(i, before, k1.angle_rad, k1.gradient.dot(v1));
+      loss += c.total - c.elastic;
+    }
     after[kDissipated] = before[kDissipated] + 0.5 * (before[kLossTorque] + loss) * (k1.angle_rad - angle0);
     after[kLossTorque] = loss;
     after[kLockTorque] = lock;
@@ -351,6 +534,7 @@ class HingeGroup final : public ElementGroup, public SwitchingGroup {
   std::vector<std::string> labels_;  // "hinge <name>", for messages
   bool driven_ = false;
   std::vector<int> lock_index_;  // [hinge] → its lock among make_switched_constraints(), −1 without
+  std::vector<std::vector<ContactSite>> sites_;  // [hinge] → its compliant stops and latch
 };
 
 }  // namespace

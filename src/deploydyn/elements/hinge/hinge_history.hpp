@@ -24,6 +24,11 @@ enum Slot : int {
   kLossTorque,   // damper + friction + lock torque at the step's end (resisting): the trapezoid's
   kLatchedAt,    // time the latch locked (s); −1 before
   kFrictionSwitched,  // 1 while the step under way is redone after this hinge stuck or slipped
+  // Compliant stops and latches (hinge_contact.hpp); kLatchedAt is when a compliant latch caught.
+  kImpactRate,        // |θ̇| (rad/s) when the contact under way began: ω0 of the Hunt–Crossley law
+  kContactSince,      // when the contact under way began (s), while its steps are refined; −1 else
+  kContactDuration,   // its duration π √(I/k) as estimated from the last step in contact (s); 0: none yet
+  kLatchImpactOver,   // 1 once a compliant latch's first impact is over (end_when: all_latched)
   kHistorySlots
 };
 }  // namespace hinge::history

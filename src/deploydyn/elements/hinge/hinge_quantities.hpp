@@ -14,10 +14,14 @@ enum Quantity : int {
   kSpringTorque,    // k (θ_r − θ)
   kDamperTorque,    // −c θ̇
   kFrictionTorque,  // −s μ r |N| while sliding
-  kLockTorque,      // latch, stop or sticking
+  kLockTorque,      // latch, stop or sticking; a compliant stop's or latch's contact moment
   kPinForce,        // |N| of the bar A–H
   kDissipated,      // by damper, friction and the lock
   kState,           // HingeMode: 0 free, 1 latched, 2/3 at a stop, 4 sticking, 5 held
+  // For the checks, not written: the load on the latch and on the stops (≥ 0), the rigid lock's
+  // |λ| or the compliant contact moment.
+  kLatchLoad,
+  kStopLoad,
   kQuantities
 };
 
@@ -32,6 +36,8 @@ inline constexpr std::array<ResultQuantity, kQuantities> kQuantityTable = [] {
   table[kPinForce] = {"pin_force", "pin_force_N", true};
   table[kDissipated] = {"dissipated", "dissipated_J", true};
   table[kState] = {"hinge_state", "state", true};
+  table[kLatchLoad] = {"latch_load", "latch_torque_Nm", false};
+  table[kStopLoad] = {"stop_load", "stop_torque_Nm", false};
   return table;
 }();
 
