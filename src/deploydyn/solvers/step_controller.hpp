@@ -11,6 +11,13 @@
 
 namespace deploydyn {
 
+// What the controller carries from step to step: a restarted run takes it on
+// (solvers/restart_state.hpp), so that it steps as the run it continues would have.
+struct StepControllerMemory {
+  double step_s = 0.0;
+  long outputs_written = 0;
+};
+
 class StepController {
  public:
   explicit StepController(const AnalysisOptions& options);
@@ -27,13 +34,16 @@ class StepController {
   // After a converged step: whether to keep it (always, when not adaptive); sets the next step.
   bool accept(double tried_step, double error_m);
 
+  StepControllerMemory memory() const { return {step_s_, outputs_written_}; }
+  void restore(const StepControllerMemory& memory);
+
  private:
   bool adaptive_;
   double tolerance_m_, min_step_s_, max_step_s_;
   double end_s_, output_interval_s_;
   double step_s_;
   double next_output_s_;
-  int outputs_written_ = 0;
+  long outputs_written_ = 0;
 };
 
 }  // namespace deploydyn
