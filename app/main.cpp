@@ -31,6 +31,7 @@
 #include "deploydyn/runs/result_folder.hpp"
 #include "deploydyn/output/envelope_table.hpp"
 #include "deploydyn/results/history_layout.hpp"
+#include "deploydyn/runs/restart_from_folder.hpp"
 #include "deploydyn/runs/run_to_folder.hpp"
 #include "exit_codes.hpp"
 #include "generate_command.hpp"

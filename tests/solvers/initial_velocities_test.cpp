@@ -10,6 +10,7 @@
 #include "deploydyn/assembly/assembler.hpp"
 #include "deploydyn/solvers/analysis.hpp"
 #include "deploydyn/solvers/initial_velocities.hpp"
+#include "deploydyn/solvers/restart_state.hpp"
 #include "support/model_builder.hpp"
 
 namespace deploydyn {
@@ -19,7 +20,9 @@ using testing::ModelBuilder;
 using testing::RecordCollector;
 
 constexpr double kLength_m = 1.0, kMass_kg = 2.0, kSpin_rad_s = 3.0;
-// Largest relative change of the angular momentum over the run: MEASURED
+// Largest relative change of the angular momentum over the run: generalized-α (ρ∞ = 0.9) conserves
+// it only to its error; measured TBD.
+constexpr double kAngularMomentumDrift = 1e-6;
 
 Model free_bar() {
   ModelBuilder b(2);

@@ -17,6 +17,7 @@
 #include "deploydyn/runs/run_folder.hpp"
 #include "deploydyn/output/summary_writer.hpp"
 #include "deploydyn/results/result_file_names.hpp"
+#include "deploydyn/solvers/hinge_poses.hpp"
 
 namespace deploydyn {
 namespace {
@@ -144,7 +145,11 @@ namespace {
 class PathRun final : public FolderRun {
  public:
   explicit PathRun(const Model& model)
-      : wall_start_(std::chrono::steady_clock::now()), assembler_(model) {}  // may throw before any file is touched
+      : wall_start_(std::chrono::steady_clock::now()), assembler_(model) {  // may throw before any file is touched
+    if (const std::string why = spring_driven_limit(model, "a continuation"); !why.empty()) {
+      throw std::invalid_argument(why);
+    }
+  }
 
   ResultFolder::Files files() const override {
     return {{"model", kRunModelFileName}, {"path", kPathFileName}, {"history", model().output.history_file}};

@@ -9,6 +9,7 @@
 #include <optional>
 
 #include "deploydyn/assembly/assembler.hpp"
+#include "deploydyn/runs/run_to_folder.hpp"
 #include "deploydyn/solvers/restart_state.hpp"
 
 namespace deploydyn {
@@ -24,5 +25,11 @@ struct RestartOptions {
 
 // Throws std::invalid_argument when the folder holds no state this model can start from.
 RestartState restart_state_for(const Model& model, const Assembler& assembler, const RestartOptions& options);
+
+// run_to_folder (runs/run_to_folder.hpp) for a time history that starts from a state an earlier
+// run kept, or keeps every output time's state; a modal analysis takes the modes of that state.
+// Throws std::invalid_argument, before any file is touched, when the state does not fit.
+RunReport run_to_folder(const Model& model, const std::filesystem::path& folder, const RunControl& control,
+                        Envelope& envelope, std::optional<Verdict>* verdict, const RestartOptions& restart);
 
 }  // namespace deploydyn

@@ -23,7 +23,6 @@
 
 #include "deploydyn/checks/verdict.hpp"
 #include "deploydyn/results/envelope.hpp"
-#include "deploydyn/runs/restart_from_folder.hpp"
 #include "deploydyn/solvers/analysis.hpp"
 
 namespace deploydyn {
@@ -40,11 +39,5 @@ RunReport run_to_folder(const Model& model, const std::filesystem::path& folder,
 RunReport run_to_folder(const Model& model, const std::filesystem::path& folder,
                         const RunControl& control, Envelope& envelope,
                         std::optional<Verdict>* verdict = nullptr);
-
-// Same, for a time history that starts from a state an earlier run kept, or keeps every output
-// time's state (runs/restart_from_folder.hpp); a modal analysis takes the modes of that state.
-// Throws std::invalid_argument, before any file is touched, when the state does not fit.
-RunReport run_to_folder(const Model& model, const std::filesystem::path& folder, const RunControl& control,
-                        Envelope& envelope, std::optional<Verdict>* verdict, const RestartOptions& restart);
 
 }  // namespace deploydyn

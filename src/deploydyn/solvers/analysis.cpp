@@ -14,6 +14,7 @@
 #include "deploydyn/solvers/continuation.hpp"
 #include "deploydyn/solvers/generalized_alpha.hpp"
 #include "deploydyn/solvers/output_sampling.hpp"
+#include "deploydyn/solvers/restart_state.hpp"
 #include "deploydyn/solvers/settling_watch.hpp"
 #include "deploydyn/solvers/static_solver.hpp"
 #include "deploydyn/solvers/step_controller.hpp"
@@ -303,6 +304,11 @@ const char* to_string(RunStatus status) {
     case RunStatus::interrupted: return "interrupted";
   }
   return "unknown";
+}
+
+RunReport run_analysis(const Assembler& assembler, RecordSink& sink, const RunControl& control,
+                       StepHook* hook) {
+  return run_analysis(assembler, sink, control, hook, RunStart{}, nullptr);
 }
 
 RunReport run_analysis(const Assembler& assembler, RecordSink& sink, const RunControl& control,

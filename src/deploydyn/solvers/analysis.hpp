@@ -11,7 +11,6 @@
 #include <vector>
 
 #include "deploydyn/assembly/assembler.hpp"
-#include "deploydyn/solvers/restart_state.hpp"
 #include "deploydyn/solvers/step_hook.hpp"
 #include "deploydyn/solvers/step_record.hpp"
 #include "deploydyn/solvers/run_control.hpp"
@@ -70,20 +69,8 @@ struct RunReport {
 };
 
 
-// Where a run starts when not at rest in the model's initial equilibrium.
-struct RunStart {
-  // A state another run of the same model kept: the run continues it bit for bit, with no
-  // initial equilibrium and no initial rates (solvers/restart_state.hpp).
-  const RestartState* state = nullptr;
-  // Dynamic runs: velocities q̇ to start with from the initial equilibrium, made consistent
-  // with the constraints (solvers/consistent_rates.hpp, initialise_rates_from; docs/theory.md,
-  // "Initial velocities"); solvers/initial_velocities.hpp makes them of a rigid spin.
-  const Eigen::VectorXd* velocities = nullptr;
-};
-
-// `hook`, when given, takes part in every time step (solvers/step_hook.hpp). `states`, when
-// given, receives the states this run may be restarted from.
+// `hook`, when given, takes part in every time step (solvers/step_hook.hpp).
 RunReport run_analysis(const Assembler& assembler, RecordSink& sink, const RunControl& control = {},
-                       StepHook* hook = nullptr, const RunStart& start = {}, RestartSink* states = nullptr);
+                       StepHook* hook = nullptr);
 
 }  // namespace deploydyn

@@ -1,6 +1,7 @@
 #include "deploydyn/solvers/hinge_poses.hpp"
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include <algorithm>
 #include <cmath>
@@ -115,6 +116,20 @@ EquilibriumModes modes_in_pose(const Assembler& assembler, double time_s, HingeH
   out.equilibrium = state;
   out.modes = natural_modes(assembler, out.equilibrium, system, options);
   return out;
+}
+
+std::string spring_driven_limit(const Model& model, std::string_view analysis) {
+  if (!model.drivers.empty()) return {};
+  std::vector<std::string> sprung;
+  for (const HingeElement& e : model.hinges) {
+    if (e.stiffness_Nm_per_rad > 0.0 && e.has_lock()) sprung.push_back(e.name);
+  }
+  if (sprung.empty()) return {};
+  return fmt::format("{} follows equilibria that drivers or ΔT move; this model is spring-driven (hinges {} with "
+                     "springs, no drivers): free, its hinges have no static equilibrium (their springs turn them "
+                     "until a latch or stop holds them), and held, nothing moves them. Its deployment: deploydyn "
+                     "run; the modes of its stowed and deployed states: deploydyn modes --hinges held or latched",
+                     analysis, fmt::join(sprung, ", "));
 }
 
 EquilibriumModes modes_from_state(const Assembler& assembler, const MotionState& kept, LinearSystem& system,

@@ -15,6 +15,8 @@
 
 #include <Eigen/Core>
 #include <array>
+#include <string>
+#include <string_view>
 
 #include "deploydyn/assembly/assembler.hpp"
 #include "deploydyn/solvers/modal_analysis.hpp"
@@ -49,5 +51,11 @@ EquilibriumModes modes_in_pose(const Assembler& assembler, double time_s, HingeH
 // and hinge modes: latched hinges stay latched, free ones turn to equilibrium).
 EquilibriumModes modes_from_state(const Assembler& assembler, const MotionState& kept, LinearSystem& system,
                                   const ModalOptions& options, const RunControl& control = {});
+
+// Why `analysis` (a continuation, a deployability window) cannot follow a spring-driven model:
+// one whose hinges have springs and locks and that has no drivers. Its springs have no static
+// equilibrium while its hinges are free, and no driver moves it quasi-statically, so there is no
+// equilibrium path; empty for any other model.
+std::string spring_driven_limit(const Model& model, std::string_view analysis);
 
 }  // namespace deploydyn

@@ -15,6 +15,7 @@
 #include <optional>
 #include <vector>
 
+#include "deploydyn/solvers/analysis.hpp"
 #include "deploydyn/solvers/motion_state.hpp"
 #include "deploydyn/solvers/step_controller.hpp"
 #include "deploydyn/solvers/step_record.hpp"
@@ -40,5 +41,21 @@ class RestartSink {
   virtual bool wants_every_output() const = 0;
   virtual void keep(const RestartState& state) = 0;
 };
+
+// Where a run starts when not at rest in the model's initial equilibrium.
+struct RunStart {
+  // A state another run of the same model kept: the run continues it bit for bit, with no
+  // initial equilibrium and no initial rates.
+  const RestartState* state = nullptr;
+  // Dynamic runs: velocities q̇ to start with from the initial equilibrium, made consistent
+  // with the constraints (solvers/consistent_rates.hpp, initialise_rates_from; docs/theory.md,
+  // "Restart and initial velocities"); solvers/initial_velocities.hpp makes them of a rigid spin.
+  const Eigen::VectorXd* velocities = nullptr;
+};
+
+// run_analysis (solvers/analysis.hpp) from `start`; `states`, when given, receives the states
+// this run may be restarted from.
+RunReport run_analysis(const Assembler& assembler, RecordSink& sink, const RunControl& control, StepHook* hook,
+                       const RunStart& start, RestartSink* states = nullptr);
 
 }  // namespace deploydyn
