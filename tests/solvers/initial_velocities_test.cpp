@@ -53,7 +53,7 @@ TEST(InitialVelocities, SpinningFreeBarKeepsItsAngularMomentum) {
   const Model model = free_bar();
   const Assembler assembler(model);
   const Eigen::VectorXd v =
-      spin_velocities(model, assembler.dof_map(), assembler.initial_coordinates(), {Eigen::Vector3d::UnitZ(), kSpin_rad_s});
+      spin_velocities(model, assembler.dof_map(), assembler.initial_coordinates(), {Eigen::Vector3d::UnitZ(), kSpin_rad_s, Eigen::Vector3d::Zero()});
   RecordCollector sink;
   const RunReport report = run_analysis(assembler, sink, {}, nullptr, RunStart{nullptr, &v});
   ASSERT_EQ(report.status, RunStatus::completed) << report.message;
@@ -78,10 +78,10 @@ TEST(InitialVelocities, SpinningFreeBarKeepsItsAngularMomentum) {
 // v_B = v0_B + ½ v0_A.
 TEST(InitialVelocities, AForbiddenVelocityIsProjected) {
   Model model = free_bar();
-  model.supports.push_back({0, {true, true, true}});
+  model.supports.push_back({0, {true, true, true}, false});
   const Assembler assembler(model);
   const Eigen::VectorXd v =
-      spin_velocities(model, assembler.dof_map(), assembler.initial_coordinates(), {Eigen::Vector3d::UnitZ(), kSpin_rad_s});
+      spin_velocities(model, assembler.dof_map(), assembler.initial_coordinates(), {Eigen::Vector3d::UnitZ(), kSpin_rad_s, Eigen::Vector3d::Zero()});
   RecordCollector sink;
   const RunReport report = run_analysis(assembler, sink, {}, nullptr, RunStart{nullptr, &v});
   ASSERT_EQ(report.status, RunStatus::completed) << report.message;
