@@ -86,7 +86,7 @@ int window_command(const WindowArguments& arguments, const std::atomic<bool>& st
                        "over its range\n", arguments.model_file);
   }
   if (const std::string why = spring_driven_limit(model, "the deployability window"); !why.empty()) {
-    throw std::invalid_argument(why);
+    throw InputError(arguments.model_file, 0, 0, "", why);
   }
   WindowOptions options;
   options.coldest_C = lo;
