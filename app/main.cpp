@@ -32,6 +32,7 @@
 #include "deploydyn/runs/result_folder.hpp"
 #include "deploydyn/output/envelope_table.hpp"
 #include "deploydyn/results/history_layout.hpp"
+#include "deploydyn/runs/restart_from_folder.hpp"
 #include "deploydyn/runs/run_to_folder.hpp"
 #include "exit_codes.hpp"
 #include "generate_command.hpp"
@@ -123,7 +124,7 @@ std::vector<std::string> earlier_results(const std::filesystem::path& folder, co
 // never over the results of an earlier run there unless `force`: they may be all that is
 // left of a long run, and the user named no folder to replace.
 int run_command(const std::string& model_file, const std::string& out_dir, bool out_given, bool force,
-                const std::vector<std::string>& sets, bool quiet) {
+                const std::vector<std::string>& sets, bool quiet, const RestartOptions& restart) {
   const Model model = load_model(model_file, parse_overrides(sets));
   if (!out_given && !force) {
     if (const auto found = earlier_results(out_dir, model); !found.empty()) {
@@ -139,7 +140,7 @@ int run_command(const std::string& model_file, const std::string& out_dir, bool 
   control.stop = &g_stop;
   Envelope envelope;
   std::optional<Verdict> verdict;
-  const RunReport report = run_to_folder(model, out_dir, control, envelope, &verdict);
+  const RunReport report = run_to_folder(model, out_dir, control, envelope, &verdict, restart);
   progress.clear();
   for (const std::string& warning : report.warnings) fmt::print(stderr, "warning: {}\n", warning);
   // The verdict of a time history or a path; one that a check failed is said even with --quiet, as a
@@ -373,6 +374,17 @@ int main(int argc, char** argv) {
                 "Without --out: replace the results of an earlier run in ./results (else refused)");
   run->add_option("--set,-s", sets, "Override a value of the model: PATH=VALUE, e.g. thermal.dT=130 or 'supports.1.fix=[y]'");
   run->add_flag("--quiet,-q", quiet, "No progress or closing line on stderr");
+  // Restart (docs/model-format.md, "Restart"; runs/restart_from_folder.hpp).
+  RestartOptions restart;
+  CLI::Option* restart_from =
+      run->add_option("--restart-from", restart.from_folder,
+                      "Start from the last state a run of this model kept in this result folder (its states.bin), "
+                      "and continue it");
+  double restart_at_s = 0.0;
+  run->add_option("--at", restart_at_s, "With --restart-from: the kept output time (s) to start from instead")
+      ->needs(restart_from);
+  run->add_flag("--keep-every-state", restart.keep_every_output,
+                "Keep every output time's state in states.bin (else the last only), for restarts at any of them");
 
   CLI::App* check = app.add_subcommand("check", "Validate a model and print a one-screen summary");
   check->add_option("model", model_file, "Model file (YAML or JSON)")->required();
@@ -408,7 +420,8 @@ int main(int argc, char** argv) {
   try {
     // Every command that computes for long stops on a signal the same way: at its next step.
     if (*run || *modes || *window || *study) stop_on_signals();
-    if (*run) return run_command(model_file, out_dir, run->count("--out") > 0, force, sets, quiet);
+    if (run->count("--at") > 0) restart.time_s = restart_at_s;
+    if (*run) return run_command(model_file, out_dir, run->count("--out") > 0, force, sets, quiet, restart);
     if (*generate) return cli::generate_command(generate_arguments);
     if (*modes) return cli::modes_command(modes_arguments, g_stop);
     if (*report) return cli::report_command(report_arguments);

@@ -5,12 +5,14 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
+#include <optional>
 
 #include "deploydyn/assembly/assembler.hpp"
 #include "deploydyn/io/input_error.hpp"
 #include "deploydyn/io/model_loader.hpp"
 #include "deploydyn/io/text_file.hpp"
 #include "deploydyn/runs/modes_to_folder.hpp"
+#include "deploydyn/runs/restart_from_folder.hpp"
 #include "exit_codes.hpp"
 
 namespace deploydyn::cli {
@@ -43,6 +45,12 @@ CLI::App* add_modes_command(CLI::App& app, ModesArguments& arguments) {
   modes->add_option("--at", arguments.times_s, "Times (s) at which the drivers stand; default: the "
                                                "model's analysis.at, else 0")
       ->check(CLI::Validator(check_time, "TIME"));
+  modes->add_option("--hinges", arguments.hinges, "What holds the hinges: free (default), held (stowed, as a "
+                                                 "hold-down holds them) or latched (deployed)")
+      ->check(CLI::IsMember({"free", "held", "latched"}));
+  modes->add_option("--from", arguments.from_folder, "A run's result folder: the modes about the last state it kept "
+                                                     "(its states.bin), with its hinges as they were")
+      ->check(CLI::ExistingDirectory);
   modes->add_option("--set,-s", arguments.sets, "Override a value of the model: PATH=VALUE (VALUE may be a YAML flow [list] or {mapping})");
   modes->add_option("--out,-o", arguments.out_dir, "Result folder for modes.csv, vtk/ (mode shapes) and summary.json");
   return modes;
@@ -68,6 +76,9 @@ int modes_command(const ModesArguments& arguments, const std::atomic<bool>& stop
   }
   if (!arguments.times_s.empty()) modal.times_s = arguments.times_s;
   if (arguments.n_modes > 0) modal.n_modes = arguments.n_modes;
+  ModesStart start;
+  if (!arguments.hinges.empty()) start.hinges = kHingeHolds.find(arguments.hinges).value();
+  start.from_folder = arguments.from_folder;
   const Assembler assembler(model);
   if (const int n_free = assembler.n_dofs() - assembler.n_equations(); modal.n_modes > n_free) {
     throw InputError(fmt::format("--count {}", modal.n_modes), 0, 0, "",
@@ -89,9 +100,11 @@ int modes_command(const ModesArguments& arguments, const std::atomic<bool>& stop
   };
   RunControl control;
   control.stop = &stop;
+  std::optional<RestartState> kept;  // --from: its last state
+  if (!start.from_folder.empty()) kept = restart_state_for(model, assembler, RestartOptions{start.from_folder, std::nullopt, false});
   const RunReport report = arguments.out_dir.empty()
-                               ? compute_modes(assembler, control, print).report
-                               : run_modes_to_folder(model, arguments.out_dir, control, print);
+                               ? compute_modes(assembler, control, kept ? &*kept : nullptr, start.hinges, print).report
+                               : run_modes_to_folder(model, arguments.out_dir, control, print, start);
   if (report.status == RunStatus::completed) return kExitSuccess;
   // A failed time already said why; an interruption says how far it got.
   if (report.status == RunStatus::interrupted) fmt::print(stderr, "{}: {}\n", arguments.model_file, report.message);

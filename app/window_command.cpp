@@ -13,6 +13,7 @@
 #include "deploydyn/io/model_loader.hpp"
 #include "deploydyn/runs/window_folder.hpp"
 #include "deploydyn/solvers/deployability_window.hpp"
+#include "deploydyn/solvers/hinge_poses.hpp"
 #include "exit_codes.hpp"
 
 namespace deploydyn::cli {
@@ -84,6 +85,9 @@ int window_command(const WindowArguments& arguments, const std::atomic<bool>& st
   if (model.environment) {
     fmt::print(stderr, "warning: {}: the window does not use the model's environment: it imposes a uniform ΔT "
                        "over its range\n", arguments.model_file);
+  }
+  if (const std::string why = spring_driven_limit(model, "the deployability window"); !why.empty()) {
+    throw InputError(arguments.model_file, 0, 0, "", why);
   }
   WindowOptions options;
   options.coldest_C = lo;

@@ -176,6 +176,7 @@ FactorizationStatus KluLinearSystem::factorize_fully() {
   }
   klu_rcond(k.symbolic, k.numeric, &k.common);
   reciprocal_condition_at_full_ = k.common.rcond;
+  values_at_full_.assign(values_.begin(), values_.begin() + column_start_.back());
   if (!(k.common.rcond > kSingularReciprocalCondition)) {
     const double rcond = k.common.rcond;
     klu_free_numeric(&k.numeric, &k.common);
@@ -185,6 +186,14 @@ FactorizationStatus KluLinearSystem::factorize_fully() {
   FactorizationStatus status;
   status.reciprocal_condition = k.common.rcond;
   return status;
+}
+
+void KluLinearSystem::restore_pivot_memory(std::span<const double> memory) {
+  if (factored_size() == 0 || memory.size() != static_cast<std::size_t>(column_start_.back())) return;
+  const std::vector<double> values = values_;
+  std::copy(memory.begin(), memory.end(), values_.begin());
+  factorize_fully();
+  values_ = values;
 }
 
 double KluLinearSystem::factor_nonzeros() const {

@@ -32,6 +32,13 @@ class KluLinearSystem final : public SparseLinearSystem {
   KluOrdering ordering() const { return ordering_; }
   bool solves_by_two_domains() const;
 
+  // What one factorization hands on to the next: the pivot order of the last full
+  // factorization, which refactorizations keep. pivot_memory() gives the values of the matrix
+  // that made it; restore_pivot_memory factorizes them again, so that a restarted run pivots,
+  // and rounds, as the run it continues did (solvers/restart_state.hpp).
+  std::vector<double> pivot_memory() const { return values_at_full_; }
+  void restore_pivot_memory(std::span<const double> memory);
+
  protected:
   void analyze_pattern() override;
   FactorizationStatus factorize_pattern() override;
@@ -45,6 +52,7 @@ class KluLinearSystem final : public SparseLinearSystem {
   KluOrdering requested_ordering_;
   KluOrdering ordering_ = KluOrdering::amd;
   double reciprocal_condition_at_full_ = 0.0;
+  std::vector<double> values_at_full_;  // pivot_memory
   int full_factorizations_ = 0;
 };
 

@@ -1474,13 +1474,14 @@ class ModelReader {
           std::tuple{summary, output.summary_file, output.history_file}}) {
       if (!value) continue;
       const std::vector<std::string> taken{kRunModelFileName, kLockFileName, kVtkFolderName, kEnvelopeFileName,
-                                           kHdf5FileName,     kXdmfFileName, other,          other + ".tmp"};
+                                           kHdf5FileName,     kXdmfFileName, kStateFileName, other, other + ".tmp"};
       if (std::find(taken.begin(), taken.end(), name) != taken.end()) {
         value->fail(fmt::format("'{}' is taken in the result folder; the run writes {} (model), "
-                                "{} (summary), {} (history), {} (envelopes), {} (lock), {}/ (VTK) "
-                                "and {}, {} (HDF5)",
+                                "{} (summary), {} (history), {} (envelopes), {} (lock), {}/ (VTK), "
+                                "{}, {} (HDF5) and {} (states)",
                                 name, kRunModelFileName, output.summary_file, output.history_file,
-                                kEnvelopeFileName, kLockFileName, kVtkFolderName, kHdf5FileName, kXdmfFileName));
+                                kEnvelopeFileName, kLockFileName, kVtkFolderName, kHdf5FileName, kXdmfFileName,
+                                kStateFileName));
       }
     }
   }

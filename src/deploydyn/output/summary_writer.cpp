@@ -194,6 +194,8 @@ std::vector<std::pair<std::string, std::string>> run_files(const Model& model) {
                             model.analysis.type == AnalysisType::dynamic;
   if (time_history) files.emplace_back("envelopes", kEnvelopeFileName);
   if (time_history && model.environment) files.emplace_back("temperatures", kTemperatureFileName);
+  // A run with an environment carries the members' temperatures too: no restart (yet).
+  if (time_history && !model.environment) files.emplace_back("states", kStateFileName);
   if (model.output.vtk) files.emplace_back("vtk", kVtkFolderName);
   if (model.output.hdf5 && time_history) {
     files.emplace_back("hdf5", kHdf5FileName);

@@ -15,6 +15,8 @@ inline constexpr const char* kEnvelopeFileName = "envelopes.csv";
 inline constexpr const char* kHdf5FileName = "history.h5";
 inline constexpr const char* kXdmfFileName = "history.xdmf";
 inline constexpr const char* kTemperatureFileName = "temperatures.csv";
+// The states a time history may be restarted from (output/state_file.hpp).
+inline constexpr const char* kStateFileName = "states.bin";
 inline constexpr const char* kVtkFolderName = "vtk";  // in a run's result folder
 inline constexpr const char* kVtkCollectionFileName = "deploydyn.pvd";  // in kVtkFolderName
 // analysis.type: continuation's and modal's tables.

@@ -16,8 +16,10 @@
 #include "deploydyn/constraints/driver_motion.hpp"
 #include "deploydyn/output/checked_file.hpp"
 #include "deploydyn/output/output_error.hpp"
+#include "deploydyn/runs/restart_from_folder.hpp"
 #include "deploydyn/runs/result_folder.hpp"
 #include "deploydyn/runs/run_folder.hpp"
+#include "deploydyn/solvers/hinge_poses.hpp"
 #include "deploydyn/solvers/step_record.hpp"
 #include "deploydyn/output/summary_writer.hpp"
 #include "deploydyn/output/vtk_writer.hpp"
@@ -69,6 +71,11 @@ void append_modes_rows(const Assembler& assembler, const EquilibriumModes& at, i
 }
 
 ModalRun compute_modes(const Assembler& assembler, const RunControl& control, const EachModes& each) {
+  return compute_modes(assembler, control, nullptr, HingeHold::free, each);
+}
+
+ModalRun compute_modes(const Assembler& assembler, const RunControl& control, const RestartState* kept,
+                       HingeHold hinges, const EachModes& each) {
   const auto wall_start = std::chrono::steady_clock::now();
   const ModalSettings& settings = assembler.model().analysis.modal;
   ModalOptions options;
@@ -77,9 +84,12 @@ ModalRun compute_modes(const Assembler& assembler, const RunControl& control, co
   const auto system = make_linear_system(assembler);
   ModalRun run;
   std::vector<std::string> failures;
-  for (const double t : settings.times_s) {
+  // A kept state: its modes, at its time.
+  const std::vector<double> times = kept ? std::vector<double>{kept->motion.time_s} : settings.times_s;
+  for (const double t : times) {
     if (stop_requested(control)) break;
-    const EquilibriumModes at = modes_at_time(assembler, t, *system, options, control);
+    const EquilibriumModes at = kept ? modes_from_state(assembler, kept->motion, *system, options, control)
+                                     : modes_in_pose(assembler, t, hinges, *system, options, control);
     if (at.stopped) break;
     run.times.push_back({t, at.modes.omega2_rad2_s2, at.modes.ok ? "" : at.modes.message});
     if (!at.modes.ok) failures.push_back(fmt::format("t = {} s: {}", t, at.modes.message));
@@ -89,17 +99,17 @@ ModalRun compute_modes(const Assembler& assembler, const RunControl& control, co
   }
   RunReport& report = run.report;
   report.time_reached_s = run.times.empty() ? 0.0 : run.times.back().time_s;
-  if (run.times.size() < settings.times_s.size()) {
+  if (run.times.size() < times.size()) {
     report.status = RunStatus::interrupted;
-    report.message = fmt::format("interrupted after {} of {} times", run.times.size(), settings.times_s.size());
+    report.message = fmt::format("interrupted after {} of {} times", run.times.size(), times.size());
   } else if (!failures.empty()) {
     report.status = RunStatus::failed;
     report.failure.phase = "modal analysis";
     report.failure.reason = fmt::format("{}", fmt::join(failures, "; "));
-    report.message = fmt::format("no modes at {} of {} times: {}", failures.size(), settings.times_s.size(),
+    report.message = fmt::format("no modes at {} of {} times: {}", failures.size(), times.size(),
                                  report.failure.reason);
   } else {
-    report.message = fmt::format("{} modes at each of {} times", settings.n_modes, settings.times_s.size());
+    report.message = fmt::format("{} modes at each of {} times", settings.n_modes, times.size());
   }
   report.wall_time_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start).count();
   return run;
@@ -141,8 +151,10 @@ namespace {
 // shapes' frames per time as they are found, and the modes' summary.
 class ModesRun final : public FolderRun {
  public:
-  ModesRun(const Model& model, EachModes each)
-      : assembler_(model), each_(std::move(each)) {}  // may throw before any file is touched
+  ModesRun(const Model& model, EachModes each, const ModesStart& start)
+      : assembler_(model), each_(std::move(each)), start_(start) {  // may throw before any file is touched
+    if (!start.from_folder.empty()) kept_ = restart_state_for(model, assembler_, RestartOptions{start.from_folder, std::nullopt, false});
+  }
 
   ResultFolder::Files files() const override {
     return {{"model", kRunModelFileName}, {"modes", kModesFileName}, {"history", model().output.history_file}};
@@ -156,7 +168,7 @@ class ModesRun final : public FolderRun {
     VtkWriter shapes(folder / kVtkFolderName, model);
     int n_frames = 0;
     std::vector<double> values;
-    run_ = compute_modes(assembler_, control, [&](const EquilibriumModes& at) {
+    run_ = compute_modes(assembler_, control, kept_ ? &*kept_ : nullptr, start_.hinges, [&](const EquilibriumModes& at) {
       if (each_) each_(at);
       if (write_failure) return;
       try {
@@ -192,18 +204,20 @@ class ModesRun final : public FolderRun {
 
   Assembler assembler_;
   EachModes each_;
+  ModesStart start_;
+  std::optional<RestartState> kept_;  // start_.from_folder's last state
   ModalRun run_;
 };
 
 }  // namespace
 
-std::unique_ptr<FolderRun> make_modes_run(const Model& model, EachModes each) {
-  return std::make_unique<ModesRun>(model, std::move(each));
+std::unique_ptr<FolderRun> make_modes_run(const Model& model, EachModes each, const ModesStart& start) {
+  return std::make_unique<ModesRun>(model, std::move(each), start);
 }
 
 RunReport run_modes_to_folder(const Model& model, const std::filesystem::path& folder,
-                              const RunControl& control, const EachModes& each) {
-  ModesRun run(model, each);
+                              const RunControl& control, const EachModes& each, const ModesStart& start) {
+  ModesRun run(model, each, start);
   return run_in_folder(model, folder, control, run);
 }
 

@@ -32,6 +32,8 @@
 
 #include "deploydyn/assembly/assembler.hpp"
 #include "deploydyn/solvers/analysis.hpp"
+#include "deploydyn/solvers/hinge_poses.hpp"
+#include "deploydyn/solvers/restart_state.hpp"
 #include "deploydyn/solvers/modal_analysis.hpp"
 #include "deploydyn/results/result_file_names.hpp"
 
@@ -56,16 +58,28 @@ using EachModes = std::function<void(const EquilibriumModes&)>;
 // is found (may be empty). Throws std::invalid_argument when the model's mechanics cannot be
 // built.
 ModalRun compute_modes(const Assembler& assembler, const RunControl& control, const EachModes& each);
+// The same with the hinges held as `hinges` says (solvers/hinge_poses.hpp), or, given a state
+// a run kept, the modes of that state at its time (the model's times are not used).
+ModalRun compute_modes(const Assembler& assembler, const RunControl& control, const RestartState* kept,
+                       HingeHold hinges, const EachModes& each);
+
+// Where a modal analysis starts besides its model: what holds the hinges, or a run's result
+// folder whose last state it takes (runs/restart_from_folder.hpp).
+struct ModesStart {
+  HingeHold hinges = HingeHold::free;
+  std::filesystem::path from_folder;
+};
 
 // The same in a folder it owns, as run_to_folder. Throws std::invalid_argument as above
 // (before any file is touched), OutputError when the folder is in use or a file cannot be
 // written (summary.json then says "failed" and why, and the files keep what was written).
 RunReport run_modes_to_folder(const Model& model, const std::filesystem::path& folder,
-                              const RunControl& control = {}, const EachModes& each = {});
+                              const RunControl& control = {}, const EachModes& each = {},
+                              const ModesStart& start = {});
 
 class FolderRun;
 // The same as the driver's part (runs/run_folder.hpp), for the table of analysis types.
-std::unique_ptr<FolderRun> make_modes_run(const Model& model, EachModes each);
+std::unique_ptr<FolderRun> make_modes_run(const Model& model, EachModes each, const ModesStart& start = {});
 
 std::vector<std::string> modes_columns(const Model& model);
 // The rows of one time (none when it has no modes), in the order of modes_columns, the first

@@ -19,6 +19,7 @@
 #include "deploydyn/output/summary_writer.hpp"
 #include "deploydyn/results/result_file_names.hpp"
 #include "deploydyn/solvers/parametrized_equilibrium.hpp"
+#include "deploydyn/solvers/hinge_poses.hpp"
 
 namespace deploydyn {
 namespace {
@@ -151,7 +152,11 @@ class PathRun final : public FolderRun {
       : wall_start_(std::chrono::steady_clock::now()),
         assembler_(model),  // may throw before any file is touched
         verdict_(verdict),
-        watch_(model) {}
+        watch_(model) {
+    if (const std::string why = spring_driven_limit(model, "a continuation"); !why.empty()) {
+      throw std::invalid_argument(why);
+    }
+  }
 
   ResultFolder::Files files() const override {
     return {{"model", kRunModelFileName}, {"path", kPathFileName}, {"history", model().output.history_file}};

@@ -20,7 +20,9 @@
 #include "deploydyn/output/output_error.hpp"
 #include "deploydyn/results/plausibility.hpp"
 #include "deploydyn/runs/path_to_folder.hpp"
+#include "deploydyn/runs/restart_from_folder.hpp"
 #include "deploydyn/runs/result_folder.hpp"
+#include "deploydyn/output/state_file.hpp"
 #include "deploydyn/runs/run_folder.hpp"
 #include "deploydyn/output/summary_writer.hpp"
 #include "deploydyn/output/temperature_table.hpp"
@@ -55,12 +57,14 @@ class HistoryRun final : public FolderRun {
  public:
   // The run's extremes and last record are left in `envelope`, its verdict in `verdict` when
   // given.
-  HistoryRun(const Model& model, Envelope& envelope, std::optional<Verdict>* verdict)
-      : model_(model), envelope_(envelope), verdict_(verdict) {
+  HistoryRun(const Model& model, Envelope& envelope, std::optional<Verdict>* verdict, const RestartOptions& restart)
+      : model_(model), envelope_(envelope), verdict_(verdict), keep_every_output_(restart.keep_every_output) {
     // An environment sets the temperatures step by step, into a copy of the model that the
     // mechanics is built from (thermal/thermal_coupling.hpp).
     if (model.environment) coupling_.emplace(coupled_model_.emplace(model));  // may throw, as the assembler
     assembler_.emplace(coupled_model_ ? *coupled_model_ : model);  // may throw before any file is touched
+    // Read before the folder is touched: a run may restart from its own folder's end.
+    if (restart.restart()) start_ = restart_state_for(model, *assembler_, restart);
   }
 
   ResultFolder::Files files() const override { return run_files(model_); }
@@ -79,6 +83,7 @@ class HistoryRun final : public FolderRun {
     if (model.output.hdf5) sinks.push_back(&hdf5.emplace(folder, model));
     FanOut sink(std::move(sinks));
     std::atomic<bool> stop{false};
+    std::optional<OutputError> state_failure;
     if (coupling_) {
       // The coupling rewrites the members' ΔT(t) between steps: the records are made on this
       // thread, before it does.
@@ -91,14 +96,21 @@ class HistoryRun final : public FolderRun {
       report = run_analysis(*assembler_, sink, stop_on_write_failure(control, stop, [] { return false; }), &*coupling_);
       coupling_->on_output({});
     } else {
+      StateFileWriter states(folder / kStateFileName,
+                             {assembler_->n_dofs(), assembler_->n_equations(), assembler_->n_history()},
+                             keep_every_output_);
       // Writing overlaps solving: the records reach the files from a thread of their own.
       BackgroundSink background(sink);
       report = run_analysis(*assembler_, background,
-                            stop_on_write_failure(control, stop, [&] { return background.failed(); }));
+                            stop_on_write_failure(control, stop,
+                                                  [&] { return background.failed() || states.failure().has_value(); }),
+                            nullptr, RunStart{start_ ? &*start_ : nullptr, nullptr}, &states);
       background.finish();
+      state_failure = states.failure();
     }
     history.flush();
     if (hdf5) hdf5->finish();
+    if (state_failure) throw *state_failure;
   }
 
   RunReport end(const std::filesystem::path& folder, std::optional<OutputError>& write_failure) override {
@@ -136,6 +148,8 @@ class HistoryRun final : public FolderRun {
   std::optional<thermal::ThermalCoupling> coupling_;
   std::optional<Assembler> assembler_;
   VerdictWatch verdict_watch_{model_};
+  bool keep_every_output_;
+  std::optional<RestartState> start_;  // where the run starts, when it restarts
   RunReport report_;
   Verdict run_verdict_;
 };
@@ -144,20 +158,24 @@ class HistoryRun final : public FolderRun {
 struct RunOutputs {
   Envelope& envelope;
   std::optional<Verdict>* verdict;
+  const RestartOptions& restart;
 };
 
 std::unique_ptr<FolderRun> history_run(const Model& model, RunOutputs outputs) {
-  return std::make_unique<HistoryRun>(model, outputs.envelope, outputs.verdict);
+  return std::make_unique<HistoryRun>(model, outputs.envelope, outputs.verdict, outputs.restart);
 }
 
 std::unique_ptr<FolderRun> path_run(const Model& model, RunOutputs outputs) {
   outputs.envelope = Envelope();  // a path has no time history to envelope
+  if (outputs.restart.restart()) throw std::invalid_argument("restart folder (--restart-from): a continuation starts from the model's initial equilibrium; restarts are for dynamic, static and modal analyses");
   return make_path_run(model, outputs.verdict);
 }
 
 std::unique_ptr<FolderRun> modes_run(const Model& model, RunOutputs outputs) {
   outputs.envelope = Envelope();  // nor do modes
-  return make_modes_run(model, {});
+  ModesStart start;
+  start.from_folder = outputs.restart.from_folder;
+  return make_modes_run(model, {}, start);
 }
 
 // Every analysis type and how a run of it fills its folder: adding a type is an entry here and
@@ -192,7 +210,12 @@ RunReport run_to_folder(const Model& model, const std::filesystem::path& folder,
 
 RunReport run_to_folder(const Model& model, const std::filesystem::path& folder,
                         const RunControl& control, Envelope& envelope, std::optional<Verdict>* verdict) {
-  const std::unique_ptr<FolderRun> run = analysis_run(model.analysis.type).make(model, {envelope, verdict});
+  return run_to_folder(model, folder, control, envelope, verdict, RestartOptions{});
+}
+
+RunReport run_to_folder(const Model& model, const std::filesystem::path& folder, const RunControl& control,
+                        Envelope& envelope, std::optional<Verdict>* verdict, const RestartOptions& restart) {
+  const std::unique_ptr<FolderRun> run = analysis_run(model.analysis.type).make(model, {envelope, verdict, restart});
   return run_in_folder(model, folder, control, *run);
 }
 

@@ -7,12 +7,14 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "deploydyn/assembly/klu_linear_system.hpp"
 #include "deploydyn/assembly/linear_system_factory.hpp"
 #include "deploydyn/elements/element_kinds.hpp"
 #include "deploydyn/solvers/consistent_rates.hpp"
 #include "deploydyn/solvers/continuation.hpp"
 #include "deploydyn/solvers/generalized_alpha.hpp"
 #include "deploydyn/solvers/output_sampling.hpp"
+#include "deploydyn/solvers/restart_state.hpp"
 #include "deploydyn/solvers/settling_watch.hpp"
 #include "deploydyn/solvers/static_solver.hpp"
 #include "deploydyn/solvers/step_controller.hpp"
@@ -98,6 +100,14 @@ class WorkCounter {
   explicit WorkCounter(const Assembler& assembler)
       : assembler_(assembler), dissipative_(assembler.has_rate_forces() || assembler.n_history() > 0) {}
   void start(const MotionState& s) { forces(s, applied_, lost_); }
+  // Where a restarted run takes over the tally (solvers/restart_state.hpp).
+  void resume(const RestartState& r) {
+    tally_ = r.work;
+    applied_ = r.applied_force_N;
+    lost_ = r.lost_force_N;
+  }
+  const Eigen::VectorXd& applied_force() const { return applied_; }
+  const Eigen::VectorXd& lost_force() const { return lost_; }
   void advance(const Eigen::VectorXd& q_before, const MotionState& s) {
     forces(s, applied_next_, lost_next_);
     tally_.external_J += 0.5 * (applied_ + applied_next_).dot(s.q - q_before);
@@ -298,6 +308,12 @@ const char* to_string(RunStatus status) {
 
 RunReport run_analysis(const Assembler& assembler, RecordSink& sink, const RunControl& control,
                        StepHook* hook) {
+  return run_analysis(assembler, sink, control, hook, RunStart{}, nullptr);
+}
+
+RunReport run_analysis(const Assembler& assembler, RecordSink& sink, const RunControl& control,
+                       StepHook* hook, const RunStart& run_start, RestartSink* states) {
+  const RestartState* start = run_start.state;
   const auto wall_start = std::chrono::steady_clock::now();
   const AnalysisOptions& options = assembler.model().analysis;
   RunReport report;
@@ -321,6 +337,13 @@ RunReport run_analysis(const Assembler& assembler, RecordSink& sink, const RunCo
   };
 
   MotionState state;
+  const bool dynamic = options.type == AnalysisType::dynamic;
+  if (start != nullptr) {
+    // A state another run kept: no initial equilibrium, no initial rates.
+    state = start->motion;
+    assembler.use_history(state.history);
+    if (auto* klu = dynamic_cast<KluLinearSystem*>(&system)) klu->restore_pivot_memory(start->pivot_memory);
+  } else {
   state.time_s = 0.0;
   state.q = assembler.initial_coordinates();
   state.v = Eigen::VectorXd::Zero(assembler.n_dofs());
@@ -330,7 +353,6 @@ RunReport run_analysis(const Assembler& assembler, RecordSink& sink, const RunCo
   state.history = assembler.initial_history();
   assembler.use_history(state.history);
 
-  const bool dynamic = options.type == AnalysisType::dynamic;
   const bool free_mechanism = dynamic && assembler.rigid_mobility() > 0;
   LoadPath initial_path = LoadPath::thermal_ramp(0.0);
   if (free_mechanism) {
@@ -389,7 +411,9 @@ RunReport run_analysis(const Assembler& assembler, RecordSink& sink, const RunCo
     }
   }
   if (dynamic) {
-    const FactorizationStatus status = initialise_rates(assembler, system, state);
+    const FactorizationStatus status =
+        run_start.velocities != nullptr ? initialise_rates_from(assembler, system, *run_start.velocities, state)
+                                        : initialise_rates(assembler, system, state);
     if (!status.ok) {
       FailureReport f;
       f.phase = "initial rates";
@@ -398,9 +422,14 @@ RunReport run_analysis(const Assembler& assembler, RecordSink& sink, const RunCo
       return fail(f);
     }
   }
+  }  // the initial state
 
   WorkCounter work(assembler);
-  work.start(state);
+  if (start != nullptr) {
+    work.resume(*start);
+  } else {
+    work.start(state);
+  }
   sink.record_state(assembler, state, work.tally());
   const bool end_when_latched = options.end_when == EndCondition::all_latched && assembler.n_latches() > 0;
   std::optional<SettlingWatch> settling;
@@ -408,13 +437,40 @@ RunReport run_analysis(const Assembler& assembler, RecordSink& sink, const RunCo
 
   const std::unique_ptr<TimeIntegrator> integrator = make_time_integrator(assembler, options);
   StepController steps(options);
+  if (start != nullptr) {
+    steps.restore(start->steps);
+    integrator->restore(start->integrator_memory);
+    if (settling) settling->resume(start->calm_since_s);
+    report.time_reached_s = state.time_s;
+  }
+  // The state a restart would take on (solvers/restart_state.hpp).
+  const auto keep_state = [&] {
+    if (states == nullptr) return;
+    RestartState kept;
+    kept.motion = state;
+    kept.work = work.tally();
+    kept.applied_force_N = work.applied_force();
+    kept.lost_force_N = work.lost_force();
+    kept.steps = steps.memory();
+    if (settling) kept.calm_since_s = settling->calm_since_s();
+    kept.integrator_memory = integrator->memory();
+    // Only KLU hands its pivot order on from one factorization to the next.
+    if (const auto* klu = dynamic_cast<const KluLinearSystem*>(&system)) kept.pivot_memory = klu->pivot_memory();
+    states->keep(kept);
+  };
+  // The last state reached is kept however the run ends, unless it was kept as an output.
+  bool last_kept = false;
+  const auto finish_keeping = [&](RunReport& r) -> RunReport {
+    if (!last_kept) keep_state();
+    return finish(r);
+  };
   MotionState next;  // the step's trial state; swapped with `state` when accepted
   ModeSwitchingStep switching(assembler, *integrator, system, dynamic);
   while (state.time_s < options.end_time_s) {
     if (stop_requested(control)) {
       report.status = RunStatus::interrupted;
       report.message = fmt::format("interrupted at t = {:.6g} s", state.time_s);
-      return finish(report);
+      return finish_keeping(report);
     }
     const double step = steps.next_step(state.time_s);
     if (hook) hook->before_step(state, step);
@@ -428,7 +484,10 @@ RunReport run_analysis(const Assembler& assembler, RecordSink& sink, const RunCo
         ++report.rejected_steps;
         continue;
       }
-      return fail(describe_failure(assembler, "time step", state.time_s + step, report.steps + 1, newton));
+      report.status = RunStatus::failed;
+      report.failure = describe_failure(assembler, "time step", state.time_s + step, report.steps + 1, newton);
+      report.message = failure_message(report.failure);
+      return finish_keeping(report);
     }
     const double error_m = switching.projected() ? 0.0 : integrator->local_error(step, state, next);
     if (!steps.accept(step, error_m)) {
@@ -469,13 +528,15 @@ RunReport run_analysis(const Assembler& assembler, RecordSink& sink, const RunCo
     sink.record_state(assembler, state, work.tally(), output);
     if (at_output_time) steps.output_written();
     if (hook) hook->after_step(state, output);
+    last_kept = output && states != nullptr && states->wants_every_output();
+    if (last_kept) keep_state();
     report.time_reached_s = state.time_s;
     if (control.progress) control.progress(state.time_s);
     if (all_latched) {
       report.end_reason = "all_latched";
       report.message = fmt::format("completed: every latch ({}) locked at t = {:.6g} s, after {} steps",
                                    assembler.n_latches(), state.time_s, report.steps);
-      return finish(report);
+      return finish_keeping(report);
     }
     if (settled) {
       report.end_reason = "settled";
@@ -483,11 +544,11 @@ RunReport run_analysis(const Assembler& assembler, RecordSink& sink, const RunCo
       report.message = fmt::format("completed: settled at t = {:.6g} s (held {:.6g} s), after {} steps{}",
                                    *report.settling_time_s, options.settling.hold_s, report.steps,
                                    settled_position_text(assembler, options.settling.node, state.q));
-      return finish(report);
+      return finish_keeping(report);
     }
   }
   report.message = fmt::format("completed: {} steps to t = {:.6g} s", report.steps, report.time_reached_s);
-  return finish(report);
+  return finish_keeping(report);
 }
 
 }  // namespace deploydyn

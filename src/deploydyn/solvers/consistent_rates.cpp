@@ -53,6 +53,11 @@ FactorizationStatus initialise_rates(const Assembler& assembler, LinearSystem& s
   return consistent_rates(assembler, system, Eigen::VectorXd::Zero(assembler.n_dofs()), state);
 }
 
+FactorizationStatus initialise_rates_from(const Assembler& assembler, LinearSystem& system,
+                                          const Eigen::VectorXd& from, MotionState& state) {
+  return consistent_rates(assembler, system, from, state);
+}
+
 FactorizationStatus project_rates(const Assembler& assembler, LinearSystem& system,
                                   MotionState& state, double& kinetic_energy_lost_J) {
   const Eigen::VectorXd before = state.v;

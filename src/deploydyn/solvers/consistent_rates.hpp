@@ -17,6 +17,11 @@ namespace deploydyn {
 FactorizationStatus initialise_rates(const Assembler& assembler, LinearSystem& system,
                                      MotionState& state);
 
+// From the given velocities `from` (a model's initial_state): the motion closest to them in
+// the kinetic metric that the constraints allow (docs/theory.md, "Initial velocities").
+FactorizationStatus initialise_rates_from(const Assembler& assembler, LinearSystem& system,
+                                          const Eigen::VectorXd& from, MotionState& state);
+
 // After a hinge's lock engaged inside a step (a latch, an end stop, sticking friction): the
 // step's end rates made consistent with the constraints now in force, from its own q̇ (a
 // perfectly inelastic impact: the M-orthogonal projection, as Moreau's impact law gives it);

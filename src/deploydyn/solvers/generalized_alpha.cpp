@@ -79,6 +79,8 @@ class GeneralizedAlphaEquations final : public DiscreteEquations {
                                 system);
   }
   double constraint_scale() const override { return constraint_scale_; }
+  double stiffness_scale() const { return stiffness_scale_; }
+  void set_stiffness_scale(double scale) { stiffness_scale_ = scale; }
 
  private:
   void rates(const Eigen::VectorXd& q) { rates_ = predicted_rates_ + c_rate_ * (q - predicted_); }
@@ -141,6 +143,12 @@ NewtonResult GeneralizedAlphaIntegrator::step(double h, LinearSystem& system, Mo
   state.lambda.swap(lambda_);
   state.time_s += h;
   return result;
+}
+
+std::vector<double> GeneralizedAlphaIntegrator::memory() const { return {equations_->stiffness_scale()}; }
+
+void GeneralizedAlphaIntegrator::restore(std::span<const double> memory) {
+  if (memory.size() == 1) equations_->set_stiffness_scale(memory[0]);
 }
 
 double GeneralizedAlphaIntegrator::local_error(double h, const MotionState& before,

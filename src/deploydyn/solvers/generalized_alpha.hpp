@@ -52,6 +52,10 @@ class GeneralizedAlphaIntegrator final : public TimeIntegrator {
 
   const GeneralizedAlphaCoefficients& coefficients() const { return coefficients_; }
 
+  // The stiffness scale taken at the first step (it sizes the constraint rows of every step).
+  std::vector<double> memory() const override;
+  void restore(std::span<const double> memory) override;
+
  private:
   GeneralizedAlphaCoefficients coefficients_;
   std::unique_ptr<GeneralizedAlphaEquations> equations_;

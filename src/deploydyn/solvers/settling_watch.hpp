@@ -24,6 +24,8 @@ class SettlingWatch {
   bool settled_after(const MotionState& state);
   // The start of the calm stretch that settled it; empty while none is under way.
   std::optional<double> calm_since_s() const { return calm_since_s_; }
+  // A restarted run continues the calm stretch the run it continues was in.
+  void resume(std::optional<double> calm_since_s) { calm_since_s_ = calm_since_s; }
 
  private:
   bool calm(const MotionState& state);

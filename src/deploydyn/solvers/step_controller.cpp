@@ -43,6 +43,12 @@ void StepController::output_written() {
   next_output_s_ = std::min(end_s_, (outputs_written_ + 1) * output_interval_s_);
 }
 
+void StepController::restore(const StepControllerMemory& memory) {
+  step_s_ = memory.step_s;
+  outputs_written_ = memory.outputs_written;
+  next_output_s_ = std::min(end_s_, static_cast<double>(outputs_written_ + 1) * output_interval_s_);
+}
+
 bool StepController::cut_after_failure(double tried_step) {
   if (!adaptive_ || tried_step * 0.5 < min_step_s_) return false;
   step_s_ = tried_step * 0.5;

@@ -14,6 +14,13 @@
 
 namespace deploydyn {
 
+// What the controller carries from step to step: a restarted run takes it on
+// (solvers/restart_state.hpp), so that it steps as the run it continues would have.
+struct StepControllerMemory {
+  double step_s = 0.0;
+  long outputs_written = 0;
+};
+
 class StepController {
  public:
   explicit StepController(const AnalysisOptions& options);
@@ -33,6 +40,9 @@ class StepController {
   // elements' resolution in time (SwitchingGroup::step_limit), over the tolerance's choice.
   void limit_steps(double max_step_s) { cap_s_ = max_step_s; }
 
+  StepControllerMemory memory() const { return {step_s_, outputs_written_}; }
+  void restore(const StepControllerMemory& memory);
+
  private:
   bool adaptive_;
   double tolerance_m_, min_step_s_, max_step_s_;
@@ -40,7 +50,7 @@ class StepController {
   double step_s_;
   double cap_s_ = std::numeric_limits<double>::infinity();
   double next_output_s_;
-  int outputs_written_ = 0;
+  long outputs_written_ = 0;
 };
 
 }  // namespace deploydyn

@@ -7,6 +7,8 @@
 // class and one case in make_time_integrator.
 
 #include <memory>
+#include <span>
+#include <vector>
 
 #include "deploydyn/assembly/assembler.hpp"
 #include "deploydyn/assembly/linear_system.hpp"
@@ -25,6 +27,11 @@ class TimeIntegrator {
   // a scheme without one (adaptive stepping then only cuts steps that fail).
   virtual double local_error(double h, const MotionState& before,
                              const MotionState& after) const = 0;
+
+  // What the scheme carries from step to step besides the MotionState, for a restarted run to
+  // take on (solvers/restart_state.hpp); empty when nothing.
+  virtual std::vector<double> memory() const { return {}; }
+  virtual void restore(std::span<const double> memory) { (void)memory; }
 };
 
 // The scheme `options` names: generalized-α (with Newmark and HHT) for a dynamic analysis,
