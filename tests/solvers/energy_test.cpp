@@ -51,7 +51,7 @@ double worst_balance_error(const std::vector<StepRecord>& records) {
 }
 
 TEST(Newmark, GeneralLinkageWorkOfTheDriverEqualsTheEnergyGained) {
-  const Model model = load_model(DEPLOYDYN_SOURCE_DIR "/examples/paper/general.yaml", {{"thermal.dT", "0"}});
+  const Model model = load_model(std::string(DEPLOYDYN_SOURCE_DIR) + "/examples/paper/general.yaml", {{"thermal.dT", "0"}});
   const testing::RunResult run = testing::run(model);
   ASSERT_EQ(run.report.status, RunStatus::completed) << run.report.message;
   ASSERT_GT(largest_kinetic_energy(run.records), 0.0);

@@ -99,7 +99,7 @@ TEST(GeneralizedAlpha, DampsTheHighestFrequenciesByRhoInfinity) {
 }
 
 Model general_linkage(const IntegratorOptions& options, double step_s, double end_s) {
-  Model model = load_model(DEPLOYDYN_SOURCE_DIR "/examples/paper/general.yaml");
+  Model model = load_model(std::string(DEPLOYDYN_SOURCE_DIR) + "/examples/paper/general.yaml");
   model.analysis.integrator = options;
   model.analysis.step_s = step_s;
   model.analysis.end_time_s = end_s;

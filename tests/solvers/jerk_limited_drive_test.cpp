@@ -27,7 +27,7 @@ constexpr double kSmoothStepRiseAtLeast_Nm = 500.0;
 constexpr double kCycloidalShare = 0.1;
 
 testing::RunResult run_with(const std::string& type) {
-  const Model model = load_model(DEPLOYDYN_SOURCE_DIR "/examples/tutorial/bascule.yaml",
+  const Model model = load_model(std::string(DEPLOYDYN_SOURCE_DIR) + "/examples/tutorial/bascule.yaml",
                                  {{"drivers.motor.profile", "{type: " + type + ", t0: 0, v0: 0, t1: 6, v1: " + kLift + "}"},
                                   {"analysis.end", "0.2"},
                                   {"analysis.output_interval", "0.002"}});  // a record every step
@@ -35,7 +35,7 @@ testing::RunResult run_with(const std::string& type) {
 }
 
 TEST(JerkLimitedDrive, CycloidalProfileStartsWithoutAnAccelerationJump) {
-  const Model model = load_model(DEPLOYDYN_SOURCE_DIR "/examples/tutorial/bascule.yaml",
+  const Model model = load_model(std::string(DEPLOYDYN_SOURCE_DIR) + "/examples/tutorial/bascule.yaml",
                                  {{"drivers.motor.profile", std::string("{type: cycloidal, t0: 0, v0: 0, t1: 6, v1: ") + kLift + "}"}});
   const DriverMotion cycloidal(model.drivers.at(0).profile, DriverReading::value);
   const DriverMotion smooth_step(TimeFunction(TimeFunction::SmoothStep{0.0, 0.0, 6.0, std::stod(kLift)}),

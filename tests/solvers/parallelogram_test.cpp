@@ -53,7 +53,7 @@ double worst_position_error(const Model& model, const std::vector<StepRecord>& r
 }
 
 Model parallel_linkage(const std::vector<Override>& overrides) {
-  return load_model(DEPLOYDYN_SOURCE_DIR "/examples/paper/parallel.yaml", overrides);
+  return load_model(std::string(DEPLOYDYN_SOURCE_DIR) + "/examples/paper/parallel.yaml", overrides);
 }
 
 TEST(Parallelogram, FollowsRigidKinematicsAndTheDriverTorqueAcceleratesIt) {

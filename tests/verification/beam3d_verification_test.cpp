@@ -556,7 +556,7 @@ TEST(VerificationBeam3d, FreeTumblingBeamConservesEnergyToSecondOrder) {
 // from C) by P·0.75 m = 37.5 N·m about its local y, up to the change of the levers as the frame
 // deflects (measured 1.3e-4 and 6.6e-5 of them).
 TEST(VerificationBeam3d, ExampleFrameFileRunsAndCarriesTheTipLoad) {
-  const Model model = load_model(DEPLOYDYN_SOURCE_DIR "/examples/beams/frame3d.yaml",
+  const Model model = load_model(std::string(DEPLOYDYN_SOURCE_DIR) + "/examples/beams/frame3d.yaml",
                                  {{"analysis.type", "static"},
                                   {"analysis.step", "0.05"},
                                   {"analysis.output_interval", "0.05"}});

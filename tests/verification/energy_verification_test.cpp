@@ -55,7 +55,7 @@ double total_mechanical_energy(const StepRecord& r) { return r.kinetic_energy_J 
 // crank (on for 0.1 s), engages every bar's strain energy; from then on nothing does work on
 // it. (The free mechanism's energy is checked by the swinging pendulum below.)
 Model free_general_linkage() {
-  Model model = load_model(DEPLOYDYN_SOURCE_DIR "/examples/paper/general.yaml", {{"thermal.dT", "0"}});
+  Model model = load_model(std::string(DEPLOYDYN_SOURCE_DIR) + "/examples/paper/general.yaml", {{"thermal.dT", "0"}});
   model.drivers.clear();
   const int b = testing::node_index(model, "B");
   const int d = testing::node_index(model, "D");
@@ -140,7 +140,7 @@ TEST(VerificationEnergy, SwingingPendulumKeepsItsEnergy) {
 }
 
 double balance_error(double dT) {
-  Model model = load_model(DEPLOYDYN_SOURCE_DIR "/examples/paper/general.yaml", {{"thermal.dT", std::to_string(dT)}});
+  Model model = load_model(std::string(DEPLOYDYN_SOURCE_DIR) + "/examples/paper/general.yaml", {{"thermal.dT", std::to_string(dT)}});
   model.analysis.adaptive.enabled = false;
   model.analysis.integrator = kNewmark;
   const testing::RunResult run = testing::run(model);

@@ -26,7 +26,7 @@ constexpr int kGeneralSamples = 1001;
 constexpr double kReferenceStep_s = 1e-5;
 
 inline Model general_linkage(double dT, const IntegratorOptions& integrator, double step_s) {
-  Model model = load_model(DEPLOYDYN_SOURCE_DIR "/examples/paper/general.yaml", {{"thermal.dT", std::to_string(dT)}});
+  Model model = load_model(std::string(DEPLOYDYN_SOURCE_DIR) + "/examples/paper/general.yaml", {{"thermal.dT", std::to_string(dT)}});
   model.analysis.adaptive.enabled = false;
   model.analysis.output_interval_s = kGeneralSample_s;
   model.analysis.end_time_s = kGeneralEnd_s;
