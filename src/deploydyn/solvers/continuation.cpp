@@ -8,19 +8,14 @@
 #include <optional>
 #include <stdexcept>
 
-#include "deploydyn/solvers/constrained_stiffness.hpp"
-#include "deploydyn/solvers/lowest_constrained_stiffness.hpp"
+#include "deploydyn/solvers/convergence_test.hpp"
 #include "deploydyn/solvers/newton.hpp"
+#include "deploydyn/solvers/path_stability.hpp"
+#include "deploydyn/solvers/path_step_control.hpp"
 
 namespace deploydyn {
 namespace {
 
-// Same round-off floor as NewtonSolver (solvers/newton.hpp): forces left by moving the
-// coordinates by a few units in their last place through the stiffest spring.
-constexpr double kRoundOffShare = 16.0 * std::numeric_limits<double>::epsilon();
-// A lowest eigenvalue below this share of the stiffness scale is at the critical point for the
-// step rule on eigenvalue drops: from there a step may cross it.
-constexpr double kCriticalEigenvalueShare = 1e-9;
 // A corrector that lands farther from its predictor than the step itself has most likely
 // jumped to another stretch of the path (across a limit point, onto the far branch).
 constexpr double kMaxCorrectionPerStep = 1.0;
@@ -57,17 +52,8 @@ class PathTracer {
         range_(std::abs(options.end - options.start)),
         direction_(options.end > options.start ? 1.0 : -1.0),
         reference_q_(assembler.initial_coordinates()),
-        with_stability_(options.n_eigenvalues > 0 &&
-                        assembler.n_dofs() <= options.max_stability_dofs) {
-    scale_ = assembler.stiffness_scale(reference_q_, equilibrium_.time_s(options.start));
-    if (with_stability_ && assembler.n_dofs() > options.dense_stability_up_to) {
-      try {
-        lowest_.emplace(assembler, system);
-      } catch (const std::invalid_argument&) {
-        with_stability_ = false;  // a coordinate without stiffness: Newton reports it
-      }
-    }
-  }
+        scale_(assembler.stiffness_scale(reference_q_, equilibrium_.time_s(options.start))),
+        stability_(assembler, options, system) {}
 
   ContinuationResult run(const Eigen::VectorXd& q0, const Eigen::VectorXd& lambda0);
 
@@ -80,17 +66,15 @@ class PathTracer {
                  double last_correction_m, const Eigen::VectorXd& q) const;
   CorrectorResult correct(const Tangent& normal, const Eigen::VectorXd& q_p, double mu_p,
                           PathPoint& point);
-  // Solves J b = −[∂r/∂μ; s ∂Φ/∂μ] at the point into rhs_b_ (b_q = dq/dμ); false when J is
-  // singular.
-  bool sensitivity(const PathPoint& point);
+  // b of J b = −[∂r/∂μ; s ∂Φ/∂μ] at the point (b_q = dq/dμ); empty when J is singular.
+  std::optional<Eigen::VectorXd> sensitivity(const PathPoint& point);
   // The same with J already factorized at the point.
-  void solve_parameter_derivative(const PathPoint& point);
+  Eigen::VectorXd parameter_derivative(const PathPoint& point);
   std::optional<Tangent> tangent(const PathPoint& point, const Tangent* previous);
   void analyse_stability(PathPoint& point, ConstraintNullSpace* null_space = nullptr,
-                         ConstrainedSpectrum* spectrum = nullptr);
-  void analyse_dense_stability(PathPoint& point, ConstraintNullSpace* null_space,
-                               ConstrainedSpectrum* spectrum);
-  void analyse_sparse_stability(PathPoint& point, ConstrainedSpectrum* spectrum);
+                         ConstrainedSpectrum* spectrum = nullptr) {
+    stability_.analyse(equilibrium_, scale_, point, null_space, spectrum);
+  }
   // A point reached from `from` along `t` by predictor length σ: corrected, with its tangent
   // (oriented along t) and stability. Empty when the corrector fails.
   struct Trial {
@@ -113,6 +97,9 @@ class PathTracer {
   void keep(PathPoint point, std::optional<PathEvent> event = std::nullopt);
   // Solves the point at μ_end between `before` and `after` and keeps it, carrying `event`.
   bool land_on_end(const PathPoint& before, const PathPoint& after, std::optional<PathEvent> event);
+  // The start: the equilibrium at μ_start, ℓ and the first point kept; its tangent, or empty
+  // with the result's end and message set.
+  std::optional<Tangent> start(const Eigen::VectorXd& q0, const Eigen::VectorXd& lambda0, PathPoint& current);
   // Ends the path at its first event (options_.stop_at_first_event).
   ContinuationResult end_at_first_event();
   // From the bifurcation just recorded (the path's last point and event), a first point on
@@ -127,25 +114,16 @@ class PathTracer {
   ParametrizedEquilibrium equilibrium_;
   double range_, direction_;
   Eigen::VectorXd reference_q_;
-  bool with_stability_;
-  std::optional<LowestConstrainedStiffness> lowest_;  // the sparse route, when taken
-  // The sparse route's last result: where its next shift and start vectors go.
-  std::optional<double> last_lowest_;
-  double last_spread_ = 0.0;  // θ_k − θ_1 there
-  Eigen::MatrixXd last_modes_;
-  double length_ = 1.0, scale_ = 1.0;
+  double scale_;  // s of J, the stiffness scale at the start (N/m)
+  PathStability stability_;
+  double length_ = 1.0;  // ℓ (m)
   ContinuationResult result_;
-  Eigen::VectorXd r_, phi_, dr_, dphi_, rhs_a_, rhs_b_;
 };
 
 bool PathTracer::converged(const NewtonResult& residuals, double force_scale, int iterations,
                            double last_correction_m, const Eigen::VectorXd& q) const {
-  const NewtonOptions& tol = options_.newton;
-  const double floor =
-      iterations == 0 ? 0.0 : scale_ * kRoundOffShare * std::max(q.lpNorm<Eigen::Infinity>(), 1.0);
-  const bool balanced = residuals.force_residual_N <= tol.force_tolerance * force_scale + floor ||
-                        last_correction_m <= tol.displacement_tolerance_m;
-  return residuals.constraint_residual <= tol.constraint_tolerance_m && balanced;
+  return equilibrium_converged(options_.newton, residuals.force_residual_N, residuals.constraint_residual,
+                               force_scale, force_round_off_floor_N(scale_, q, iterations), last_correction_m);
 }
 
 CorrectorResult PathTracer::correct(const Tangent& normal, const Eigen::VectorXd& q_p, double mu_p,
@@ -155,11 +133,12 @@ CorrectorResult PathTracer::correct(const Tangent& normal, const Eigen::VectorXd
   const auto m = assembler_.n_equations();
   const double l2 = length_ * length_, rho2 = range_ * range_;
   double last_correction = std::numeric_limits<double>::infinity();
+  Eigen::VectorXd r, phi, a;
   for (;; ++out.iterations) {
     NewtonResult residuals;
-    const double force_scale = equilibrium_.residual(point.q, point.lambda, point.parameter, r_, phi_);
-    residuals.force_residual_N = r_.lpNorm<Eigen::Infinity>();
-    residuals.constraint_residual = m > 0 ? phi_.lpNorm<Eigen::Infinity>() : 0.0;
+    const double force_scale = equilibrium_.residual(point.q, point.lambda, point.parameter, r, phi);
+    residuals.force_residual_N = r.lpNorm<Eigen::Infinity>();
+    residuals.constraint_residual = m > 0 ? phi.lpNorm<Eigen::Infinity>() : 0.0;
     if (!std::isfinite(residuals.force_residual_N) || !std::isfinite(residuals.constraint_residual)) {
       out.failure = "the residual is NaN or Inf";
       return out;
@@ -180,105 +159,58 @@ CorrectorResult PathTracer::correct(const Tangent& normal, const Eigen::VectorXd
       out.failure = status.message;
       return out;
     }
-    rhs_a_.resize(n + m);
-    rhs_a_.head(n) = -r_;
-    rhs_a_.tail(m) = -scale_ * phi_;
-    system_.solve(rhs_a_);
-    solve_parameter_derivative(point);
+    a.resize(n + m);
+    a.head(n) = -r;
+    a.tail(m) = -scale_ * phi;
+    system_.solve(a);
+    const Eigen::VectorXd b = parameter_derivative(point);
     const double constraint_value =
         normal.q_rate.dot(point.q - q_p) / l2 + normal.mu_rate * (point.parameter - mu_p) / rho2;
-    const double denominator = normal.q_rate.dot(rhs_b_.head(n)) / l2 + normal.mu_rate / rho2;
+    const double denominator = normal.q_rate.dot(b.head(n)) / l2 + normal.mu_rate / rho2;
     if (!std::isfinite(denominator) || denominator == 0.0) {
       out.failure = "the bordered system is singular (the path is tangent to the arc-length plane)";
       return out;
     }
-    const double d_mu = -(constraint_value + normal.q_rate.dot(rhs_a_.head(n)) / l2) / denominator;
-    rhs_a_ += d_mu * rhs_b_;
-    point.q += rhs_a_.head(n);
-    point.lambda += scale_ * rhs_a_.tail(m);
+    const double d_mu = -(constraint_value + normal.q_rate.dot(a.head(n)) / l2) / denominator;
+    a += d_mu * b;
+    point.q += a.head(n);
+    point.lambda += scale_ * a.tail(m);
     point.parameter += d_mu;
-    last_correction = rhs_a_.head(n).lpNorm<Eigen::Infinity>();
+    last_correction = a.head(n).lpNorm<Eigen::Infinity>();
   }
 }
 
-bool PathTracer::sensitivity(const PathPoint& point) {
+std::optional<Eigen::VectorXd> PathTracer::sensitivity(const PathPoint& point) {
   equilibrium_.matrix(point.q, point.lambda, point.parameter, scale_, system_);
-  if (!system_.factorize().ok) return false;
-  solve_parameter_derivative(point);
-  return true;
+  if (!system_.factorize().ok) return std::nullopt;
+  return parameter_derivative(point);
 }
 
-void PathTracer::solve_parameter_derivative(const PathPoint& point) {
+Eigen::VectorXd PathTracer::parameter_derivative(const PathPoint& point) {
   const auto n = assembler_.n_dofs();
   const auto m = assembler_.n_equations();
-  equilibrium_.parameter_derivative(point.q, point.lambda, point.parameter, dr_, dphi_);
-  rhs_b_.resize(n + m);
-  rhs_b_.head(n) = -dr_;
-  rhs_b_.tail(m) = -scale_ * dphi_;
-  system_.solve(rhs_b_);
+  Eigen::VectorXd dr, dphi;
+  equilibrium_.parameter_derivative(point.q, point.lambda, point.parameter, dr, dphi);
+  Eigen::VectorXd b(n + m);
+  b.head(n) = -dr;
+  b.tail(m) = -scale_ * dphi;
+  system_.solve(b);
+  return b;
 }
 
 std::optional<Tangent> PathTracer::tangent(const PathPoint& point, const Tangent* previous) {
   const auto n = assembler_.n_dofs();
   const auto m = assembler_.n_equations();
-  if (!sensitivity(point)) return std::nullopt;
+  const std::optional<Eigen::VectorXd> b = sensitivity(point);
+  if (!b) return std::nullopt;
   Tangent t;
-  t.mu_rate = 1.0 / std::sqrt(rhs_b_.head(n).squaredNorm() / (length_ * length_) + 1.0 / (range_ * range_));
+  t.mu_rate = 1.0 / std::sqrt(b->head(n).squaredNorm() / (length_ * length_) + 1.0 / (range_ * range_));
   const double orientation =
-      previous == nullptr ? direction_
-                          : dot(rhs_b_.head(n), 1.0, previous->q_rate, previous->mu_rate);
+      previous == nullptr ? direction_ : dot(b->head(n), 1.0, previous->q_rate, previous->mu_rate);
   if (orientation < 0.0) t.mu_rate = -t.mu_rate;
-  t.q_rate = t.mu_rate * rhs_b_.head(n);
-  t.lambda_rate = (t.mu_rate * scale_) * rhs_b_.tail(m);
+  t.q_rate = t.mu_rate * b->head(n);
+  t.lambda_rate = (t.mu_rate * scale_) * b->tail(m);
   return t;
-}
-
-void PathTracer::analyse_stability(PathPoint& point, ConstraintNullSpace* null_space_out,
-                                   ConstrainedSpectrum* spectrum_out) {
-  if (!with_stability_) return;
-  if (lowest_) {
-    analyse_sparse_stability(point, spectrum_out);
-  } else {
-    analyse_dense_stability(point, null_space_out, spectrum_out);
-  }
-}
-
-void PathTracer::analyse_dense_stability(PathPoint& point, ConstraintNullSpace* null_space_out,
-                                         ConstrainedSpectrum* spectrum_out) {
-  const int n = assembler_.n_dofs();
-  const int m = assembler_.n_equations();
-  equilibrium_.matrix(point.q, point.lambda, point.parameter, 1.0, system_);
-  const Eigen::MatrixXd dense = system_.to_dense();
-  const ConstraintNullSpace null_space = constraint_null_space(dense.bottomLeftCorner(m, n));
-  const Eigen::MatrixXd stiffness = dense.topLeftCorner(n, n);
-  ConstrainedSpectrum spectrum = constrained_spectrum(stiffness, null_space.basis, options_.n_eigenvalues);
-  point.constraint_rank = null_space.rank;
-  point.n_negative = spectrum.n_negative;
-  const Eigen::Index n_lowest = std::min<Eigen::Index>(options_.n_eigenvalues, spectrum.eigenvalues.size());
-  point.lowest_eigenvalues = spectrum.eigenvalues.head(n_lowest);
-  point.lowest_tolerances = spectrum.tolerances_N_m.head(n_lowest);
-  if (null_space_out != nullptr) *null_space_out = null_space;
-  if (spectrum_out != nullptr) *spectrum_out = std::move(spectrum);
-}
-
-void PathTracer::analyse_sparse_stability(PathPoint& point, ConstrainedSpectrum* spectrum_out) {
-  equilibrium_.matrix(point.q, point.lambda, point.parameter, scale_, system_);
-  LowestStiffnessRequest request;
-  request.n_values = options_.n_eigenvalues;
-  request.stiffness_scale_N_m = scale_;
-  request.expected_lowest_N_m = last_lowest_;
-  request.expected_spread_N_m = last_spread_;
-  request.expected_modes = last_modes_;
-  ConstrainedSpectrum spectrum = lowest_->compute(system_, request);
-  if (spectrum.eigenvalues.size() == 0) return;  // not computed: n_negative stays −1
-  last_lowest_ = spectrum.eigenvalues[0];
-  last_spread_ = spectrum.eigenvalues[spectrum.eigenvalues.size() - 1] - spectrum.eigenvalues[0];
-  last_modes_ = spectrum.modes;
-  point.n_negative = spectrum.n_negative;
-  point.index_complete = spectrum.n_negative < spectrum.eigenvalues.size();
-  point.lowest_eigenvalues = spectrum.eigenvalues;
-  point.lowest_tolerances = spectrum.tolerances_N_m;
-  if (spectrum_out != nullptr) *spectrum_out = std::move(spectrum);
 }
 
 std::optional<PathTracer::Trial> PathTracer::step_from(const PathPoint& from, const Tangent& t,
@@ -506,13 +438,12 @@ std::optional<PathTracer::Trial> PathTracer::switch_branch(double ds) {
   return std::nullopt;
 }
 
-ContinuationResult PathTracer::run(const Eigen::VectorXd& q0, const Eigen::VectorXd& lambda0) {
-  PathPoint current;
+std::optional<Tangent> PathTracer::start(const Eigen::VectorXd& q0, const Eigen::VectorXd& lambda0,
+                                         PathPoint& current) {
   current.q = q0;
   current.lambda = lambda0;
   current.parameter = options_.start;
-
-  if (with_stability_ && !lowest_) {
+  if (stability_.dense()) {
     // Redundant constraints make J singular, so they are named before Newton fails on them.
     analyse_stability(current);
     if (current.constraint_rank >= 0 && current.constraint_rank < assembler_.n_equations()) {
@@ -525,26 +456,24 @@ ContinuationResult PathTracer::run(const Eigen::VectorXd& q0, const Eigen::Vecto
       result_.message = "the constraint Jacobian is singular at the start (rank " +
                         std::to_string(current.constraint_rank) + " of " +
                         std::to_string(assembler_.n_equations()) + "); dependent: " + rows;
-      return result_;
+      return std::nullopt;
     }
   }
-  {
-    FixedParameterEquations equations(equilibrium_, options_.start, scale_);
-    NewtonSolver newton(options_.newton);
-    const NewtonResult solved = newton.solve(equations, system_, current.q, current.lambda);
-    result_.total_iterations += solved.iterations;
-    if (!solved.converged) {
-      result_.end = ContinuationEnd::start_failed;
-      result_.message = fmt::format("no equilibrium at the start, μ = {}: {}", options_.start, solved.failure);
-      return result_;
-    }
+  FixedParameterEquations equations(equilibrium_, options_.start, scale_);
+  NewtonSolver newton(options_.newton);
+  const NewtonResult solved = newton.solve(equations, system_, current.q, current.lambda);
+  result_.total_iterations += solved.iterations;
+  if (!solved.converged) {
+    result_.end = ContinuationEnd::start_failed;
+    result_.message = fmt::format("no equilibrium at the start, μ = {}: {}", options_.start, solved.failure);
+    return std::nullopt;
   }
   if (options_.length_scale_m > 0.0) {
     length_ = options_.length_scale_m;
-  } else if (sensitivity(current)) {
+  } else if (const std::optional<Eigen::VectorXd> b = sensitivity(current)) {
     // The motion a linear extrapolation over the whole range would give: the path's first
     // stretch then weighs q and μ alike (Crisfield's scaling of the load term).
-    length_ = std::max(rhs_b_.head(assembler_.n_dofs()).norm() * range_,
+    length_ = std::max(b->head(assembler_.n_dofs()).norm() * range_,
                        (options_.parameter == PathParameter::driver ? kDeploymentLengthShare
                                                                     : kSmallestLengthShare) *
                            assembler_.longest_element_m());
@@ -554,34 +483,23 @@ ContinuationResult PathTracer::run(const Eigen::VectorXd& q0, const Eigen::Vecto
   if (!t) {
     result_.end = ContinuationEnd::start_failed;
     result_.message = "the static matrix is singular at the start: no tangent to follow";
-    return result_;
+    return std::nullopt;
   }
   current.parameter_rate = t->mu_rate;
   current.displacement_norm_m = (current.q - reference_q_).norm();
   analyse_stability(current);
   keep(current);
+  return t;
+}
+
+ContinuationResult PathTracer::run(const Eigen::VectorXd& q0, const Eigen::VectorXd& lambda0) {
+  PathPoint current;
+  std::optional<Tangent> t = start(q0, lambda0, current);
+  if (!t) return result_;
 
   bool switched = false;  // onto a bifurcated branch (once per path)
   const double cos_max_turn = std::cos(options_.max_turn_rad);
-  const auto rushes_to_critical = [&](const PathPoint& from, const PathPoint& to) {
-    if (from.lowest_eigenvalues.size() == 0 || to.lowest_eigenvalues.size() == 0) return false;
-    const double before = from.lowest_eigenvalues[0], after = to.lowest_eigenvalues[0];
-    return before > 0.0 && after > kCriticalEigenvalueShare * scale_ &&
-           after * options_.max_eigenvalue_drop < before;
-  };
-  // Arc length after `to` at which the lowest eigenvalue, falling as from `from` to `to` over
-  // `ds`, would reach zero; infinite when it does not fall or is (nearly) critical already.
-  const auto critical_distance_ahead = [&](const PathPoint& from, const PathPoint& to, double ds) {
-    if (from.lowest_eigenvalues.size() == 0 || to.lowest_eigenvalues.size() == 0) {
-      return std::numeric_limits<double>::infinity();
-    }
-    const double before = from.lowest_eigenvalues[0], after = to.lowest_eigenvalues[0];
-    if (!(before > after && after > kCriticalEigenvalueShare * scale_)) {
-      return std::numeric_limits<double>::infinity();
-    }
-    return after * ds / (before - after);
-  };
-  double ds = options_.initial_step;
+  PathStepControl steps(options_, scale_);
   for (int step = 0;; ++step) {
     if (step >= options_.max_steps) {
       result_.end = ContinuationEnd::max_steps;
@@ -594,18 +512,18 @@ ContinuationResult PathTracer::run(const Eigen::VectorXd& q0, const Eigen::Vecto
       result_.message = fmt::format("stopped on request at μ = {:.6g}", current.parameter);
       return result_;
     }
+    const double ds = steps.step();
     std::optional<Trial> trial = step_from(current, *t, ds);
     const auto jumped = [&] {
       const Eigen::VectorXd off_q = trial->point.q - (current.q + ds * t->q_rate);
       const double off_mu = trial->point.parameter - (current.parameter + ds * t->mu_rate);
       return std::sqrt(dot(off_q, off_mu, off_q, off_mu)) > kMaxCorrectionPerStep * ds ||
              dot(trial->tangent.q_rate, trial->tangent.mu_rate, t->q_rate, t->mu_rate) < cos_max_turn ||
-             rushes_to_critical(current, trial->point);
+             steps.rushes_to_critical(current, trial->point);
     };
-    if (!trial || (ds > options_.min_step && jumped())) {
+    if (!trial || (steps.may_reject() && jumped())) {
       ++result_.rejected_steps;
-      ds *= options_.step_cut;
-      if (ds < options_.min_step) {
+      if (!steps.cut()) {
         result_.end = ContinuationEnd::step_too_small;
         result_.message = fmt::format(
             "the corrector fails at every step down to {:.2g} beyond μ = {:.6g}", options_.min_step,
@@ -653,17 +571,10 @@ ContinuationResult PathTracer::run(const Eigen::VectorXd& q0, const Eigen::Vecto
         return result_;
       }
       ++result_.rejected_steps;
-      ds *= options_.step_cut;
+      steps.cut();  // a step too small fails at the next attempt, as any other
       continue;
     }
-    const double taken = ds;
-    if (next.point.corrector_iterations <= options_.easy_iterations) {
-      ds = std::min(ds * options_.step_growth, options_.max_step);
-    }
-    // The lowest eigenvalue falling linearly would reach 0 after `ahead`: step half way there.
-    if (const double ahead = critical_distance_ahead(current, next.point, taken); ahead < 2.0 * ds) {
-      ds = std::max(0.5 * ahead, options_.min_step);
-    }
+    steps.accepted(current, next.point, next.point.corrector_iterations);
     current = next.point;
     *t = next.tangent;
     if (carried) {

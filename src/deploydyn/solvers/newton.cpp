@@ -5,12 +5,9 @@
 #include <algorithm>
 #include <limits>
 
+#include "deploydyn/solvers/convergence_test.hpp"
+
 namespace deploydyn {
-namespace {
-
-constexpr double kRoundOffShare = 16.0 * std::numeric_limits<double>::epsilon();
-
-}  // namespace
 
 NewtonResult NewtonSolver::solve(DiscreteEquations& equations, LinearSystem& system,
                                  Eigen::VectorXd& q, Eigen::VectorXd& lambda) {
@@ -72,19 +69,9 @@ NewtonResult NewtonSolver::iterate(DiscreteEquations& equations, LinearSystem& s
       result.failure = "the residual is NaN or Inf";
       return result;
     }
-    // Round-off floor: the force left by moving the coordinates by a few units in their last
-    // place through the stiffest spring. Without it a model with nothing loaded (force_scale
-    // itself round-off) would never count as converged. Only after a correction: accepting
-    // an uncorrected predictor within the floor lets its error build up step after step
-    // (a 1 µm oscillator drifted by 4e-6 of its period over 20 000 steps).
-    const double force_floor =
-        result.iterations == 0 ? 0.0
-                               : equations.constraint_scale() * kRoundOffShare *
-                                     std::max(q.lpNorm<Eigen::Infinity>(), 1.0);
-    const bool forces_balanced =
-        result.force_residual_N <= options.force_tolerance * force_scale + force_floor ||
-        last_correction <= options.displacement_tolerance_m;
-    if (result.constraint_residual <= options.constraint_tolerance_m && forces_balanced) {
+    const double force_floor = force_round_off_floor_N(equations.constraint_scale(), q, result.iterations);
+    if (equilibrium_converged(options, result.force_residual_N, result.constraint_residual, force_scale, force_floor,
+                              last_correction)) {
       result.converged = true;
       return result;
     }
