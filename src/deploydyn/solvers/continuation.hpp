@@ -2,6 +2,9 @@
 // Path following (continuation) of the static equilibrium in one parameter μ, through limit
 // points, with the stability of every converged point (theory.md, "Path following and
 // stability").
+// In parts: the tracer here (predictor, corrector, events, branch switching); the step size in
+// solvers/path_step_control.hpp, the stability of each point in solvers/path_stability.hpp,
+// and the corrector's convergence test, Newton's, in solvers/convergence_test.hpp.
 //
 // Equations (solvers/parametrized_equilibrium.hpp), unknowns x = (q, λ) and μ:
 //   G(x, μ) = [ f_int(q, μ) − f_ext(μ) + B(μ)ᵀλ ;  Φ(q, μ) ] = 0
