@@ -5,7 +5,8 @@
 //   BM_Shadows        one shadow update alone (MemberShadows::compute: the Embree scene rebuilt
 //                     for the members' positions, n_along × n_across rays per member)
 //   BM_ThermalStep    the coupling's whole step (before_step + after_step): every member's
-//                     heat balance and ΔT(t), the shadows recomputed
+//                     heat balance and ΔT(t), the shadows recomputed; `gradients:1` also the beams'
+//                     sun-to-shade differences
 // Arguments: roofs as BM_RoofStep's (units, trusses: 10 × 3, 10 × 26, 10 × 263 units of
 // 10 trusses, ≈ 10², 10³, 10⁴ bars, and the planar 10⁴-unit roof); units 0 the scissor ring
 // example, 1000 the arch of BM_ScissorStep.
@@ -26,7 +27,7 @@ namespace deploydyn {
 namespace {
 
 // Every bar and beam a steel tube 20 mm × 0.8 mm in orbit, the sun oblique to all of them.
-void put_in_the_sun(Model& model) {
+void put_in_the_sun(Model& model, bool gradients) {
   Section tube;
   tube.name = "tube";
   tube.shape = SectionShape::circular_tube;
@@ -41,25 +42,28 @@ void put_in_the_sun(Model& model) {
     material.specific_heat_J_kgK = 490.0;
     material.absorptivity = 0.5;
     material.emissivity = 0.85;
+    material.conductivity_W_mK = 50.0;
   }
   Environment environment;
   environment.kind = EnvironmentKind::orbit;
   environment.orbit.sun_direction = Eigen::Vector3d(0.3, 0.8, 0.5).normalized();
+  environment.shadows = ShadowOptions{};
+  environment.section_gradients = gradients;
   model.environment = environment;
 }
 
 Model roof(int units, int trusses) {
   Model model = bench::cold_pinned_roof(units, trusses);
-  put_in_the_sun(model);
+  put_in_the_sun(model, false);
   return model;
 }
 
 // units 0: examples/scissor/ring.yaml, the largest scissor example; else a polar arch as
 // BM_ScissorStep's.
-Model arch(int units) {
+Model arch(int units, bool gradients) {
   if (units == 0) {
     Model ring = load_model(std::string(DEPLOYDYN_SOURCE_DIR) + "/examples/scissor/ring.yaml");
-    put_in_the_sun(ring);
+    put_in_the_sun(ring, gradients);
     return ring;
   }
   ScissorOptions options;
@@ -68,7 +72,7 @@ Model arch(int units) {
   options.span_m = 2.0 * units;  // as BM_ScissorStep's
   options.delta_t_C = 0.0;
   Model model = make_scissor(options);
-  put_in_the_sun(model);
+  put_in_the_sun(model, gradients);
   return model;
 }
 
@@ -83,7 +87,7 @@ Eigen::VectorXd node_positions(const Model& model) {
 }
 
 void time_thermal_step(benchmark::State& state, Model model) {
-  thermal::ThermalCoupling coupling(model, thermal::ShadowOptions{});
+  thermal::ThermalCoupling coupling(model);
   MotionState at;
   at.q = node_positions(model);
   const double h = 1e-3;
@@ -98,7 +102,7 @@ void time_thermal_step(benchmark::State& state, Model model) {
 }
 
 void time_shadows(benchmark::State& state, const Model& model) {
-  const thermal::ShadowOptions options;
+  const ShadowOptions options;
   std::vector<thermal::MemberCapsule> capsules;
   for (const BarElement& bar : model.bars) {
     capsules.push_back({model.nodes[bar.node_a].position_m, model.nodes[bar.node_b].position_m, 0.01});
@@ -129,13 +133,21 @@ void BM_Shadows(benchmark::State& state) {
 void BM_ThermalStep(benchmark::State& state) {
   time_thermal_step(state, roof(static_cast<int>(state.range(0)), static_cast<int>(state.range(1))));
 }
-void BM_ScissorShadows(benchmark::State& state) { time_shadows(state, arch(static_cast<int>(state.range(0)))); }
-void BM_ScissorThermalStep(benchmark::State& state) { time_thermal_step(state, arch(static_cast<int>(state.range(0)))); }
+void BM_ScissorShadows(benchmark::State& state) { time_shadows(state, arch(static_cast<int>(state.range(0)), false)); }
+void BM_ScissorThermalStep(benchmark::State& state) {
+  time_thermal_step(state, arch(static_cast<int>(state.range(0)), state.range(1) != 0));
+}
 
 BENCHMARK(BM_Shadows)->Apply(roof_sizes);
 BENCHMARK(BM_ThermalStep)->Apply(roof_sizes);
 BENCHMARK(BM_ScissorShadows)->ArgName("units")->Arg(0)->Arg(1000)->Unit(benchmark::kMicrosecond);
-BENCHMARK(BM_ScissorThermalStep)->ArgName("units")->Arg(0)->Arg(1000)->Unit(benchmark::kMicrosecond);
+BENCHMARK(BM_ScissorThermalStep)
+    ->ArgNames({"units", "gradients"})
+    ->Args({0, 0})
+    ->Args({0, 1})
+    ->Args({1000, 0})
+    ->Args({1000, 1})
+    ->Unit(benchmark::kMicrosecond);
 
 }  // namespace
 }  // namespace deploydyn

@@ -47,17 +47,18 @@ class ModelBuilder:
         return self
 
     def material(self, name, E, alpha=0.0, density=None, damping=None, yield_strength=None,
-                 specific_heat=None, absorptivity=None, emissivity=None):
+                 specific_heat=None, absorptivity=None, emissivity=None, conductivity=None):
         """E (Pa), alpha (1/°C), density (kg/m³, for bars that give no mass), damping (material
         damping of its bars, cables and beams, as the model file's mapping: {"ratio": ζ, "frequency":
         f (Hz)}, {"loss_factor": η, "frequency": f} or {"time": τ (s)}), yield_strength (Pa, the
         stress the member checks allow); for an `environment`: specific_heat (J/(kg·K)),
-        absorptivity α_s and emissivity ε (both in [0, 1])."""
+        absorptivity α_s and emissivity ε (both in [0, 1]), conductivity (W/(m·K), for the
+        beams' section_gradients)."""
         where = "ModelBuilder.material"
         spec = {"E": checked.number(where, "E", E), "alpha": checked.number(where, "alpha", alpha)}
         for key, value in (("density", density), ("yield_strength", yield_strength),
                            ("specific_heat", specific_heat), ("absorptivity", absorptivity),
-                           ("emissivity", emissivity)):
+                           ("emissivity", emissivity), ("conductivity", conductivity)):
             if value is not None:
                 spec[key] = checked.number(where, key, value)
         if damping is not None:
@@ -277,9 +278,10 @@ class ModelBuilder:
         the environment"), as the model file's `environment`: type "orbit" (sun_direction,
         solar_constant, sink_temperature, eclipses, penumbra) or "ground" (latitude, longitude,
         start, utc_offset, up, north, direct_normal, diffuse, air_temperature, sky_temperature,
-        convection), and reference_temperature and initial_temperature (K). Temperatures in K,
-        fluxes in W/m². Not with `thermal`. Checked at `build` (InputError names
-        environment.<key>)."""
+        convection), and reference_temperature and initial_temperature (K), shadows ({"every",
+        "samples_along", "samples_across"} or True) and section_gradients (True: beams bend away from
+        the sun). Temperatures in K, fluxes in W/m². Not with `thermal`. Checked at `build`
+        (InputError names environment.<key>)."""
         where = "ModelBuilder.environment"
         self._spec["environment"] = {"type": checked.text(where, "type", type), **checked.plain(keys, "environment", where)}
         return self

@@ -2,7 +2,9 @@
 // a member that turns changes its absorbed flux as its angle to the sun says; the heat balance
 // closes over a run; the example boom's strain is α (T − T_ref) at every output, its
 // temperatures cool end-on to the sun and warm broadside towards the radiative equilibrium.
-// With shadows, a member that leaves another's shadow takes the sun as the geometry says.
+// With shadows, a member that leaves another's shadow takes the sun as the geometry says; with
+// section gradients, a clamped tube in the sun takes the moment E I α D / d of its sun-to-shade
+// difference D.
 
 #include "deploydyn/thermal/thermal_coupling.hpp"
 
@@ -11,9 +13,9 @@
 
 #include <cmath>
 #include <numbers>
-#include <stdexcept>
 
 #include "deploydyn/io/model_loader.hpp"
+#include "deploydyn/thermal/section_temperature_difference.hpp"
 #include "deploydyn/runs/run_to_folder.hpp"
 #include "support/cli.hpp"
 #include "support/csv_table.hpp"
@@ -95,7 +97,7 @@ TEST(ThermalCoupling, BoomLeavingEclipseCoolsEndOnAndWarmsBroadside) {
 
 // Two steel tubes (d = 0.02 m) 1 m long in orbit, the sun straight above (+z): `lit` at z = 0,
 // `cover` 0.1 m above it.
-Model shaded_pair() {
+Model shaded_pair(const std::string& shadows) {
   return load_model_from_string(R"(
 nodes: {A: [0, 0, 0], B: [1, 0, 0], C: [0, 0, 0.1], D: [1, 0, 0.1]}
 materials:
@@ -105,14 +107,14 @@ elements:
   lit: {nodes: [A, B], section: tube, material: steel}
   cover: {nodes: [C, D], section: tube, material: steel}
 supports: [{node: A}, {node: B}, {node: C}, {node: D}]
-environment: {type: orbit, sun_direction: [0, 0, 1], reference_temperature: 293.15, initial_temperature: 150}
+environment: {type: orbit, sun_direction: [0, 0, 1], reference_temperature: 293.15, initial_temperature: 150, )" + shadows + R"(}
 analysis: {type: static, end: 100, step: 1}
 )", "shaded_pair.yaml");
 }
 
 TEST(ThermalCoupling, AMemberLeavingAnothersShadowTakesTheSunAsTheGeometrySays) {
-  Model model = shaded_pair();
-  ThermalCoupling coupling(model, ShadowOptions{.every_steps = 1, .samples_along = 4, .samples_across = 8});
+  Model model = shaded_pair("shadows: {every: 1, samples_along: 4, samples_across: 8}");
+  ThermalCoupling coupling(model);
   ASSERT_TRUE(coupling.has_shadows());
   EXPECT_EQ(coupling.shadowed_fractions(), (std::vector<double>{1.0, 0.0}));  // at t = 0
   const DofMap dofs(model);
@@ -157,8 +159,8 @@ TEST(ThermalCoupling, AMemberLeavingAnothersShadowTakesTheSunAsTheGeometrySays) 
 }
 
 TEST(ThermalCoupling, ShadowsEveryNStepsKeepTheLastFractionsBetween) {
-  Model model = shaded_pair();
-  ThermalCoupling coupling(model, ShadowOptions{.every_steps = 5});
+  Model model = shaded_pair("shadows: {every: 5}");
+  ThermalCoupling coupling(model);
   const DofMap dofs(model);
   MotionState state;
   state.q = Eigen::VectorXd::Zero(dofs.n_dofs());
@@ -173,13 +175,49 @@ TEST(ThermalCoupling, ShadowsEveryNStepsKeepTheLastFractionsBetween) {
   }
 }
 
-TEST(ThermalCoupling, WithoutShadowsNothingIsShadowedAndNoColumnIsAdded) {
-  Model model = shaded_pair();
-  ThermalCoupling coupling(model);
-  EXPECT_FALSE(coupling.has_shadows());
-  EXPECT_EQ(coupling.shadowed_fractions(), (std::vector<double>{0.0, 0.0}));
-  EXPECT_TRUE(coupling.extra_column_names().empty());
-  EXPECT_THROW(ThermalCoupling(model, ShadowOptions{.every_steps = 0}), std::invalid_argument);
+// A clamped 2D tube broadside to the sun, its sun-to-shade difference on: at every output its
+// bending moment is E I α D / d with D from temperatures.csv (the beam's curvature α D / d
+// held at zero); and D approaches the closed form D*.
+TEST(ThermalCoupling, AClampedTubeInTheSunTakesTheMomentOfItsSectionDifference) {
+  const Model model = load_model_from_string(R"(
+nodes: {A: [0, 0], M: [0.5, 0], B: [1, 0]}
+materials:
+  alu: {E: 7.0e10, alpha: 2.3e-5, density: 2700, specific_heat: 900, absorptivity: 0.6, emissivity: 0.8, conductivity: 10}
+sections: {tube: {shape: circular_tube, outer_diameter: 0.02, wall_thickness: 0.001}}
+elements:
+  left: {type: beam, nodes: [A, M], section: tube, material: alu}
+  right: {type: beam, nodes: [M, B], section: tube, material: alu}
+supports: [{node: A, fix: [x, y, rotation]}, {node: B, fix: [x, y, rotation]}]
+environment: {type: orbit, sun_direction: [0, 1, 0], reference_temperature: 293.15, section_gradients: true}
+analysis: {type: static, end: 3000, step: 10, output_interval: 100}
+)", "clamped_tube.yaml");
+  testing::ScratchFolder folder("thermal_section_gradient");
+  const RunReport report = run_to_folder(model, folder.path());
+  ASSERT_EQ(report.status, RunStatus::completed) << report.message;
+  const testing::CsvTable temperatures = testing::read_csv_table(folder.path() / "temperatures.csv");
+  const testing::CsvTable history = testing::read_csv_table(folder.path() / "history.csv");
+  ASSERT_EQ(temperatures.columns,
+            (std::vector<std::string>{"t", "T.left", "T.right", "dT_section.left", "dT_section.right"}));
+  const double d = 0.02, e = 7.0e10, alpha = 2.3e-5;
+  const double inertia = std::numbers::pi / 64.0 * (std::pow(d, 4) - std::pow(d - 0.002, 4));
+  ASSERT_EQ(temperatures.rows.size(), history.rows.size());
+  for (std::size_t row = 1; row < temperatures.rows.size(); ++row) {
+    const double t = temperatures.at(row, "t");
+    for (const std::string beam : {"left", "right"}) {
+      const double difference_K = temperatures.at(row, "dT_section." + beam);
+      EXPECT_GT(difference_K, 0.0) << t;
+      EXPECT_NEAR(std::abs(history.at(row, "moment." + beam)), e * inertia * alpha * difference_K / d,
+                  1e-6 * e * inertia * alpha * difference_K / d) << beam << " at " << t;
+    }
+  }
+  // After ≫ τ: the steady D* at the final mean temperature.
+  const std::size_t last = temperatures.rows.size() - 1;
+  RoundSectionBody tube{0.01, 0.001, 10.0, 2700.0 * 900.0, 0.6, 0.8};
+  const SectionDifferenceLaw law = section_difference_law(tube, 1361.0, temperatures.at(last, "T.left"), 0.0);
+  EXPECT_NEAR(temperatures.at(last, "dT_section.left"), law.steady_K, 1e-3 * law.steady_K);
+  const nlohmann::json summary = nlohmann::json::parse(testing::read_text(folder.path() / "summary.json"));
+  EXPECT_NEAR(summary.at("temperatures").at("section_difference_max_K").get<double>(),
+              temperatures.at(last, "dT_section.left"), 0.05);
 }
 
 TEST(ThermalCoupling, RunsWithoutAnEnvironmentAreUntouched) {

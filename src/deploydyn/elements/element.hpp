@@ -80,6 +80,9 @@ struct TangentWeights {
 struct HeatedBody {
   int material = 0;
   int section = -1;
+  // A beam's local y as the file places it (unit, ⟂ its axis): the axes its through-depth
+  // gradients take; zero for an element that does not bend under one.
+  Eigen::Vector3d local_y = Eigen::Vector3d::Zero();
 };
 
 class ElementGroup {
@@ -158,6 +161,14 @@ class ElementKind {
   // (thermal/thermal_coupling.hpp) sets it each step. A type with no temperature ignores it.
   virtual void set_element_temperature_change(Model& model, int element,
                                               const TimeFunction& change_C) const = 0;
+  // Gives element `element` alone the through-depth differences T(+y face) − T(−y face) and
+  // T(+z face) − T(−z face) (°C) over time, on its section's depths: the environment's
+  // section gradients (thermal/section_temperature_difference.hpp). Call before the element's
+  // group is made. Only beams bend under them; by default a type ignores them.
+  virtual void set_element_temperature_gradients(Model& model, int element, const TimeFunction& across_y_C,
+                                                 const TimeFunction& across_z_C) const {
+    (void)model, (void)element, (void)across_y_C, (void)across_z_C;
+  }
   // Unknowns a node of one of its elements carries beyond its position, appended by name
   // (a rotation "rz", a slope "dx/ds"); the bar adds none.
   virtual void add_node_unknowns(const Model& model,

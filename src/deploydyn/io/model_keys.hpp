@@ -19,8 +19,9 @@ inline constexpr std::array<std::string_view, 19> kTopLevel{
     "environment", "supports", "joints", "drivers", "loads", "gravity", "functions", "analysis", "output",
     "checks"};
 inline constexpr std::array<std::string_view, 2> kNode{"at", "mass"};
-inline constexpr std::array<std::string_view, 8> kMaterial{"E",       "alpha",         "density",      "yield_strength",
-                                                          "damping", "specific_heat", "absorptivity", "emissivity"};
+inline constexpr std::array<std::string_view, 9> kMaterial{"E",       "alpha",         "density",      "yield_strength",
+                                                          "damping", "specific_heat", "absorptivity", "emissivity",
+                                                          "conductivity"};
 inline constexpr std::array<std::string_view, 4> kMaterialDamping{"ratio", "loss_factor", "frequency", "time"};
 inline constexpr std::array<std::string_view, 3> kCircularTubeSection{"shape", "outer_diameter", "wall_thickness"};
 inline constexpr std::array<std::string_view, 4> kRectangularTubeSection{"shape", "width", "height",
@@ -29,13 +30,15 @@ inline constexpr std::array<std::string_view, 2> kCircleSection{"shape", "diamet
 inline constexpr std::array<std::string_view, 3> kRectangleSection{"shape", "width", "height"};
 inline constexpr std::array<std::string_view, 3> kMember{"elements", "buckling_length_factor", "slack"};
 inline constexpr std::array<std::string_view, 1> kThermal{"dT"};
-inline constexpr std::array<std::string_view, 8> kOrbitEnvironment{
+inline constexpr std::array<std::string_view, 10> kOrbitEnvironment{
     "type", "reference_temperature", "initial_temperature", "sun_direction", "solar_constant", "sink_temperature",
-    "eclipses", "penumbra"};
-inline constexpr std::array<std::string_view, 14> kGroundEnvironment{
+    "eclipses", "penumbra", "shadows", "section_gradients"};
+inline constexpr std::array<std::string_view, 16> kGroundEnvironment{
     "type",       "reference_temperature", "initial_temperature", "latitude",      "longitude",
     "start",      "utc_offset",            "up",                  "north",         "direct_normal",
-    "diffuse",    "sky_temperature",       "air_temperature",     "convection"};
+    "diffuse",    "sky_temperature",       "air_temperature",     "convection",    "shadows",
+    "section_gradients"};
+inline constexpr std::array<std::string_view, 3> kShadows{"every", "samples_along", "samples_across"};
 inline constexpr std::array<std::string_view, 4> kSupport{"node", "fix", "axis", "offset"};
 inline constexpr std::array<std::string_view, 5> kJoint{"type", "nodes", "axis", "arms", "offsets"};
 inline constexpr std::array<std::string_view, 7> kBarAngleDriver{"type", "element", "pivot", "axis",
@@ -93,7 +96,7 @@ struct Section {
   Keys keys;
 };
 
-inline constexpr std::array<Section, 46> kSections{{
+inline constexpr std::array<Section, 47> kSections{{
     {"top level", "### Top level", kTopLevel},
     {"nodes.NAME", "### `nodes`", kNode},
     {"materials.NAME", "### `materials`", kMaterial},
@@ -106,6 +109,7 @@ inline constexpr std::array<Section, 46> kSections{{
     {"thermal", "### `thermal`", kThermal},
     {"environment (type: orbit)", "### `environment`", kOrbitEnvironment},
     {"environment (type: ground)", "### `environment`", kGroundEnvironment},
+    {"environment.shadows", "### `environment`", kShadows},
     {"supports.N", "### `supports`", kSupport},
     {"joints.NAME", "### `joints`", kJoint},
     {"drivers.NAME (type: bar_angle)", "### `drivers`", kBarAngleDriver},

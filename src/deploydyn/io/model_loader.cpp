@@ -475,6 +475,7 @@ class ModelReader {
       if (const auto heat = spec.find("specific_heat")) material.specific_heat_J_kgK = heat->number(Sign::positive, "J/(kg·K)");
       if (const auto absorptivity = spec.find("absorptivity")) material.absorptivity = fraction(*absorptivity);
       if (const auto emissivity = spec.find("emissivity")) material.emissivity = fraction(*emissivity);
+      if (const auto conductivity = spec.find("conductivity")) material.conductivity_W_mK = conductivity->number(Sign::positive, "W/(m·K)");
       materials_.add(name, spec);
       model_.materials.push_back(material);
     }
@@ -541,8 +542,47 @@ class ModelReader {
     }
     environment.reference_temperature_K = spec.at("reference_temperature").number(Sign::positive, "K");
     if (const auto initial = spec.find("initial_temperature")) environment.initial_temperature_K = initial->number(Sign::positive, "K");
+    if (const auto shadows = spec.find("shadows")) environment.shadows = shadow_options(*shadows);
+    if (const auto gradients = spec.find("section_gradients")) {
+      environment.section_gradients = gradients->choice({"false", "true"}) == 1;
+    }
     check_heated_members(spec);
+    if (environment.section_gradients) check_graded_beams(spec);
     model_.environment = environment;
+  }
+
+  // `shadows: {every: N, samples_along: n, samples_across: m}`, or `shadows: true` for the defaults.
+  static ShadowOptions shadow_options(const YamlValue& spec) {
+    ShadowOptions options;
+    if (spec.is_scalar()) {
+      if (spec.choice({"false", "true"}) == 0) spec.fail("leave 'shadows' out for no shadows; 'true' or a mapping turns them on");
+      return options;
+    }
+    if (!spec.is_map()) spec.fail(fmt::format("expected true or a mapping of {{every, samples_along, samples_across}}, got {}", spec.description()));
+    spec.expect_keys(model_keys::kShadows);
+    if (const auto every = spec.find("every")) options.every_steps = every->integer(1);
+    if (const auto along = spec.find("samples_along")) options.samples_along = along->integer(1);
+    if (const auto across = spec.find("samples_across")) options.samples_across = across->integer(1);
+    return options;
+  }
+
+  // A beam's sun-to-shade difference needs its material's conductivity and a round section
+  // (thermal/section_temperature_difference.hpp).
+  void check_graded_beams(const YamlValue& spec) const {
+    for (const BeamElement& beam : model_.beams) {
+      const Material& material = model_.materials[beam.material];
+      if (!material.conductivity_W_mK) {
+        root_.at("materials").at(material.name).fail_key(
+            "conductivity", fmt::format("is required by the environment's section_gradients (beam '{}' is of this material)", beam.name));
+      }
+      if (beam.section < 0) continue;  // check_heated_members has said it
+      const Section& section = model_.sections[beam.section];
+      if (section.shape != SectionShape::circle && section.shape != SectionShape::circular_tube) {
+        spec.at("section_gradients").fail(fmt::format(
+            "computes the sun-to-shade difference of round sections (circle, circular_tube) only; beam '{}' takes "
+            "section '{}', a {}", beam.name, section.name, kSectionShapes.name(section.shape)));
+      }
+    }
   }
 
   // "2026-07-15 08:00" or "2026-07-15T08:00:30": the local civil time at t = 0.

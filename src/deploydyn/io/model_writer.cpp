@@ -159,6 +159,21 @@ void emit_environment(YAML::Emitter& out, const Environment& environment) {
   out << std::string(kEnvironmentKinds.name(environment.kind));
   emit_number(out, "reference_temperature", environment.reference_temperature_K);
   if (environment.initial_temperature_K) emit_number(out, "initial_temperature", *environment.initial_temperature_K);
+  if (environment.shadows) {
+    emit_key(out, "shadows");
+    out << YAML::Flow << YAML::BeginMap;
+    emit_key(out, "every");
+    out << environment.shadows->every_steps;
+    emit_key(out, "samples_along");
+    out << environment.shadows->samples_along;
+    emit_key(out, "samples_across");
+    out << environment.shadows->samples_across;
+    out << YAML::EndMap;
+  }
+  if (environment.section_gradients) {
+    emit_key(out, "section_gradients");
+    out << true;
+  }
   if (environment.kind == EnvironmentKind::orbit) {
     const OrbitEnvironment& orbit = environment.orbit;
     emit_key(out, "sun_direction");
@@ -222,6 +237,7 @@ void emit_geometry(YAML::Emitter& out, const Model& model) {
     if (material.specific_heat_J_kgK) emit_number(out, "specific_heat", *material.specific_heat_J_kgK);
     if (material.absorptivity) emit_number(out, "absorptivity", *material.absorptivity);
     if (material.emissivity) emit_number(out, "emissivity", *material.emissivity);
+    if (material.conductivity_W_mK) emit_number(out, "conductivity", *material.conductivity_W_mK);
     if (material.damping_time_s > 0.0) {  // as its damping time: what a ratio at a frequency gave
       emit_key(out, "damping");
       out << YAML::Flow << YAML::BeginMap;

@@ -57,6 +57,14 @@ struct GroundEnvironment {
   double convection_W_m2K = 0.0;     // h
 };
 
+// Shadows the members cast on each other (docs/theory.md, "Shadows between members";
+// thermal/member_shadows.hpp): rays toward the sun from samples of each member's sunlit strip.
+struct ShadowOptions {
+  int every_steps = 1;     // recomputed after every this many accepted steps (and at t = 0)
+  int samples_along = 8;   // samples along each member
+  int samples_across = 4;  // across its sunlit width
+};
+
 enum class EnvironmentKind { orbit, ground };
 inline constexpr NameTable kEnvironmentKinds{std::array{
     NamedValue<EnvironmentKind>{EnvironmentKind::orbit, "orbit"},
@@ -70,6 +78,10 @@ struct Environment {
   // T_ref: the members' stress-free temperature; ΔT = T − T_ref drives the mechanics.
   double reference_temperature_K = 293.15;
   std::optional<double> initial_temperature_K;  // every member's at t = 0; empty: T_ref
+  std::optional<ShadowOptions> shadows;          // empty: no member shades another
+  // Beams get the difference between their sun-facing and shaded sides as a through-depth
+  // gradient (thermal/section_temperature_difference.hpp); their materials need a conductivity.
+  bool section_gradients = false;
 };
 
 }  // namespace deploydyn

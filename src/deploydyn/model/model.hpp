@@ -44,6 +44,7 @@ struct Material {
   std::optional<double> specific_heat_J_kgK;  // c
   std::optional<double> absorptivity;         // α_s, solar, in [0, 1]
   std::optional<double> emissivity;           // ε, infrared, in [0, 1]
+  std::optional<double> conductivity_W_mK;    // k: the section's sun-to-shade difference
 };
 
 // Ground support: the chosen coordinates of a node keep their initial values.

@@ -42,6 +42,12 @@ nlohmann::ordered_json temperature_summary(const thermal::ThermalCoupling& coupl
     j["shadowed_max_member"] = names[static_cast<std::size_t>(shade.member)];
     j["shadowed_max_time_s"] = shade.time_s;
   }
+  if (!coupling.graded_members().empty()) {
+    const thermal::TemperatureExtreme& largest = coupling.largest_section_difference();
+    j["section_difference_max_K"] = largest.temperature_K;
+    j["section_difference_max_member"] = names[static_cast<std::size_t>(largest.member)];
+    j["section_difference_max_time_s"] = largest.time_s;
+  }
   return j;
 }
 

@@ -2,7 +2,7 @@
 // temperatures.csv: the members' temperatures that an `environment` sets (thermal/), streamed
 // with the run at its output times. Columns: t (s), then T.<element> (K) per bar, beam and cable
 // in the order of elements/element_kinds.hpp; with shadows shade.<element> (the shadowed
-// fraction). A file of its own: history.csv's columns are the
+// fraction), with section gradients dT_section.<beam> (K). A file of its own: history.csv's columns are the
 // mechanics' (results/history_layout.hpp). summary.json lists it under files as "temperatures"
 // and gives the extremes under "temperatures" (temperature_summary).
 
@@ -20,8 +20,8 @@ namespace deploydyn {
 class TemperatureTable {
  public:
   // Writes the header. Throws OutputError when the file cannot be written.
-  // `extra_columns` follow the temperatures (ThermalCoupling::extra_column_names: shade.<member>),
-  // each row's `extra` values in their order.
+  // `extra_columns` follow the temperatures (ThermalCoupling::extra_column_names: shade.<member>,
+  // dT_section.<member>), each row's `extra` values in their order.
   TemperatureTable(const std::filesystem::path& file, const std::vector<std::string>& member_names,
                    const std::vector<std::string>& extra_columns = {});
   void write_row(double time_s, const std::vector<double>& temperatures_K, const std::vector<double>& extra = {});

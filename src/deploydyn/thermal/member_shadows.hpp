@@ -26,14 +26,7 @@
 
 namespace deploydyn::thermal {
 
-// How often and how finely the shadows are cast (docs/theory.md, "Shadows between members").
-struct ShadowOptions {
-  int every_steps = 1;     // recomputed after every this many accepted steps (and at t = 0)
-  int samples_along = 8;   // sample rows along each member
-  int samples_across = 4;  // samples across its sunlit width
-};
-
-// One member's axis in the current configuration and its outer radius (m).
+// One member's axis in the current configuration and its outer radius.
 struct MemberCapsule {
   Eigen::Vector3d end_a_m = Eigen::Vector3d::Zero();
   Eigen::Vector3d end_b_m = Eigen::Vector3d::Zero();

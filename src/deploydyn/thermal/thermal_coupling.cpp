@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <Eigen/Geometry>
 #include <numbers>
 #include <stdexcept>
 
@@ -32,9 +33,27 @@ double required(const std::optional<double>& value, const Material& material, co
   return *value;
 }
 
+// The round section of a beam that carries a sun-to-shade difference.
+RoundSectionBody round_section(const Section& section, const Material& material, double heat_capacity_J_K,
+                               double length_m, const std::string& member) {
+  if (section.shape != SectionShape::circle && section.shape != SectionShape::circular_tube) {
+    throw std::invalid_argument(fmt::format(
+        "member '{}': section gradients need a round section (circle or circular_tube); its section '{}' is a {}",
+        member, section.name, kSectionShapes.name(section.shape)));
+  }
+  RoundSectionBody body;
+  body.outer_radius_m = 0.5 * section.diameter_m;
+  body.wall_thickness_m = section.shape == SectionShape::circular_tube ? section.wall_thickness_m : 0.0;
+  body.conductivity_W_mK = required(material.conductivity_W_mK, material, "conductivity", member);
+  body.heat_capacity_J_m3K = heat_capacity_J_K / (section.properties.area_m2 * length_m);
+  body.absorptivity = material.absorptivity.value_or(0.0);
+  body.emissivity = material.emissivity.value_or(0.0);
+  return body;
+}
+
 }  // namespace
 
-ThermalCoupling::ThermalCoupling(Model& model, std::optional<ShadowOptions> shadows) : model_(model), dofs_(model) {
+ThermalCoupling::ThermalCoupling(Model& model) : model_(model), dofs_(model) {
   if (!model.environment) throw std::invalid_argument("ThermalCoupling: the model has no environment");
   for (const ElementRef& ref : all_elements(model)) {
     const std::optional<HeatedBody> heated = ref.kind->heated_body(model, ref.index);
@@ -64,17 +83,27 @@ ThermalCoupling::ThermalCoupling(Model& model, std::optional<ShadowOptions> shad
       throw std::invalid_argument(fmt::format("member '{}' has no mass: its heat capacity m c would be 0", name));
     }
     member.outer_radius_m = 0.5 * width_m;
+    member.initial_axis = (model.nodes[member.node_b].position_m - model.nodes[member.node_a].position_m).normalized();
+    if (model.environment->section_gradients && heated->local_y.squaredNorm() > 0.0) {
+      member.initial_local_y = heated->local_y;
+      member.section = round_section(model.sections[heated->section], material, member.body.heat_capacity_J_K,
+                                     reference_length_m, name);
+      graded_.push_back(static_cast<int>(members_.size()) - 1);
+      // Before the mechanics is built: the beam takes its section's depths for the gradients.
+      ref.kind->set_element_temperature_gradients(model, ref.index, TimeFunction::constant(0.0),
+                                                  TimeFunction::constant(0.0));
+    }
     names_.push_back(name);
   }
   const Environment& environment = *model.environment;
+  differences_K_.assign(members_.size(), Eigen::Vector3d::Zero());
+  pending_differences_K_ = differences_K_;
+  local_axes_.assign(members_.size(), {Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero()});
   shadowed_.assign(members_.size(), 0.0);
-  if (shadows) {
-    if (shadows->every_steps < 1) {
-      throw std::invalid_argument(fmt::format("ThermalCoupling: shadows every {} steps; at least 1", shadows->every_steps));
-    }
-    shadow_every_steps_ = shadows->every_steps;
-    shadows_ = std::make_unique<MemberShadows>(static_cast<int>(members_.size()), shadows->samples_along,
-                                               shadows->samples_across);
+  if (environment.shadows) {
+    shadow_every_steps_ = environment.shadows->every_steps;
+    shadows_ = std::make_unique<MemberShadows>(static_cast<int>(members_.size()), environment.shadows->samples_along,
+                                               environment.shadows->samples_across);
     capsules_.resize(members_.size());
     update_shadows(nullptr, 0.0);
   }
@@ -141,11 +170,32 @@ void ThermalCoupling::before_step(const MotionState& start, double step_s) {
     pending_tally_.convected_J += step_s * convected_power_W(member.body, t1, around);
     pending_tally_.stored_J += member.body.heat_capacity_J_K * (t1 - temperatures_K_[i]);
   }
+  // The sun-to-shade differences (docs/theory.md, "The section's sun-to-shade difference"):
+  // D towards the sun's direction ⟂ the axis, relaxing as the mean temperature does.
+  for (const int graded : graded_) {
+    const auto i = static_cast<std::size_t>(graded);
+    const HeatedElement& member = members_[i];
+    const Eigen::Vector3d along = axis_at(start.q, member).normalized();
+    const Eigen::Vector3d across_sun = around.sun_direction - around.sun_direction.dot(along) * along;  // |s⊥| = |sin θ|
+    const double sin_theta = across_sun.norm();
+    const double flux_W_m2 = around.direct_W_m2 * sin_theta * (1.0 - member.body.shadowed_fraction);
+    const SectionDifferenceLaw law = section_difference_law(*member.section, flux_W_m2, pending_K_[i], around.convection_W_m2K);
+    const Eigen::Vector3d steady_K = sin_theta > 1e-12 ? Eigen::Vector3d(law.steady_K / sin_theta * across_sun)
+                                                       : Eigen::Vector3d::Zero();
+    // The member has turned since the last step: its difference stays ⟂ to its axis.
+    const Eigen::Vector3d previous_K = differences_K_[i] - differences_K_[i].dot(along) * along;
+    const double ratio = step_s / law.time_constant_s;
+    pending_differences_K_[i] = (previous_K + ratio * steady_K) / (1.0 + ratio);
+    // The beam's local axes now: its initial ones turned with its axis (its twist about the axis neglected).
+    const Eigen::Vector3d local_y = Eigen::Quaterniond::FromTwoVectors(member.initial_axis, along) * member.initial_local_y;
+    local_axes_[i] = {local_y, along.cross(local_y)};
+  }
   set_temperature_changes(start.time_s, end_s);
 }
 
 void ThermalCoupling::after_step(const MotionState& end, bool output) {
   temperatures_K_ = pending_K_;
+  differences_K_ = pending_differences_K_;
   tally_ = pending_tally_;
   time_s_ = end.time_s;
   ++accepted_steps_;
@@ -160,6 +210,14 @@ void ThermalCoupling::set_temperature_changes(double t0, double t1) {
     TimeFunction::Table table{{t0, t1}, {temperatures_K_[i] - reference_K, pending_K_[i] - reference_K}};
     members_[i].kind->set_element_temperature_change(model_, members_[i].index, TimeFunction(std::move(table)));
   }
+  for (const int graded : graded_) {
+    const auto i = static_cast<std::size_t>(graded);
+    const auto& [local_y, local_z] = local_axes_[i];
+    TimeFunction::Table across_y{{t0, t1}, {differences_K_[i].dot(local_y), pending_differences_K_[i].dot(local_y)}};
+    TimeFunction::Table across_z{{t0, t1}, {differences_K_[i].dot(local_z), pending_differences_K_[i].dot(local_z)}};
+    members_[i].kind->set_element_temperature_gradients(model_, members_[i].index, TimeFunction(std::move(across_y)),
+                                                        TimeFunction(std::move(across_z)));
+  }
 }
 
 void ThermalCoupling::track_extremes(double time_s) {
@@ -169,6 +227,18 @@ void ThermalCoupling::track_extremes(double time_s) {
     if (first || t < coldest_.temperature_K) coldest_ = {t, static_cast<int>(i), time_s};
     if (first || t > hottest_.temperature_K) hottest_ = {t, static_cast<int>(i), time_s};
   }
+  for (const int graded : graded_) {
+    const double d = differences_K_[static_cast<std::size_t>(graded)].norm();
+    if (largest_difference_.member < 0 || d > largest_difference_.temperature_K) largest_difference_ = {d, graded, time_s};
+  }
+}
+
+std::vector<double> ThermalCoupling::section_differences_K() const {
+  std::vector<double> magnitudes(members_.size(), 0.0);
+  for (const int graded : graded_) {
+    magnitudes[static_cast<std::size_t>(graded)] = differences_K_[static_cast<std::size_t>(graded)].norm();
+  }
+  return magnitudes;
 }
 
 std::vector<std::string> ThermalCoupling::extra_column_names() const {
@@ -176,11 +246,15 @@ std::vector<std::string> ThermalCoupling::extra_column_names() const {
   if (shadows_) {
     for (const std::string& name : names_) columns.push_back("shade." + name);
   }
+  for (const int graded : graded_) columns.push_back("dT_section." + names_[static_cast<std::size_t>(graded)]);
   return columns;
 }
 
 std::vector<double> ThermalCoupling::extra_column_values() const {
-  return shadows_ ? shadowed_ : std::vector<double>{};
+  std::vector<double> values;
+  if (shadows_) values = shadowed_;
+  for (const int graded : graded_) values.push_back(differences_K_[static_cast<std::size_t>(graded)].norm());
+  return values;
 }
 
 }  // namespace deploydyn::thermal

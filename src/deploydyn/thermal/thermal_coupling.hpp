@@ -7,10 +7,13 @@
 // interface, ΔT(t) = T − T_ref varying linearly from T_n to T_n+1 over the step
 // (ElementKind::set_element_temperature_change), as it sees a given ΔT(t) table.
 //
-// With shadow options (docs/theory.md, "Shadows between members") it casts rays from every
-// member towards the sun at t = 0 and after every `every_steps` accepted steps
-// (thermal/member_shadows.hpp), from the configuration reached; the steps between use the last
-// shadowed fractions.
+// With `shadows` (docs/theory.md, "Shadows between members") it casts rays from every member
+// towards the sun at t = 0 and after every `every` accepted steps (thermal/member_shadows.hpp),
+// from the configuration reached; the steps between use the last shadowed fractions. With
+// `section_gradients` every beam also carries the difference D between its sun-facing and its
+// shaded side (thermal/section_temperature_difference.hpp), a vector ⟂ to its axis towards the
+// sun, advanced as its mean temperature and given to the beam as through-depth differences on
+// its local y and z (ElementKind::set_element_temperature_gradients).
 //
 // It writes the ΔT functions of `model`, which must be the model the run's Assembler is built
 // from and must outlive the run; it reads nothing of the mechanics but the node positions in q.
@@ -27,6 +30,7 @@
 #include "deploydyn/solvers/step_hook.hpp"
 #include "deploydyn/thermal/member_heat_balance.hpp"
 #include "deploydyn/thermal/member_shadows.hpp"
+#include "deploydyn/thermal/section_temperature_difference.hpp"
 
 namespace deploydyn::thermal {
 
@@ -50,9 +54,7 @@ class ThermalCoupling final : public StepHook {
  public:
   // Throws std::invalid_argument when the model has no environment, or a member's material or
   // section lacks what the heat balance needs (naming the member and the key).
-  // With `shadows`, the members shade each other. Throws std::invalid_argument also for sample
-  // counts or an interval below 1.
-  explicit ThermalCoupling(Model& model, std::optional<ShadowOptions> shadows = std::nullopt);
+  explicit ThermalCoupling(Model& model);
 
   // Called on every accepted output (t = 0 first, then every output time): time and the
   // members' temperatures (K).
@@ -75,8 +77,14 @@ class ThermalCoupling final : public StepHook {
   const std::vector<double>& shadowed_fractions() const { return shadowed_; }
   bool has_shadows() const { return shadows_ != nullptr; }
   const TemperatureExtreme& most_shadowed() const { return most_shadowed_; }
+  // Section gradients: the members that carry a sun-to-shade difference (indices into
+  // member_names()), its magnitude |D| (K) per member (0 for the others), its largest value.
+  const std::vector<int>& graded_members() const { return graded_; }
+  std::vector<double> section_differences_K() const;
+  const TemperatureExtreme& largest_section_difference() const { return largest_difference_; }
+
   // The columns temperatures.csv adds after the temperatures, and their values now:
-  // shade.<member> with shadows.
+  // shade.<member> with shadows, dT_section.<member> (K) for each graded member.
   std::vector<std::string> extra_column_names() const;
   std::vector<double> extra_column_values() const;
 
@@ -86,7 +94,10 @@ class ThermalCoupling final : public StepHook {
     int index = 0;
     int node_a = 0, node_b = 0;
     LumpedMember body;
-    double outer_radius_m = 0.0;  // of the capsule that casts and takes shadows
+    double outer_radius_m = 0.0;              // of the capsule that casts and takes shadows
+    Eigen::Vector3d initial_axis = Eigen::Vector3d::Zero();  // unit, as the file places it
+    Eigen::Vector3d initial_local_y = Eigen::Vector3d::Zero();  // zero: no section gradient
+    std::optional<RoundSectionBody> section;  // with section gradients: a beam's round section
   };
   Eigen::Vector3d axis_at(const Eigen::VectorXd& q, const HeatedElement& member) const;
   void update_shadows(const Eigen::VectorXd* q, double time_s);
@@ -109,7 +120,13 @@ class ThermalCoupling final : public StepHook {
   long accepted_steps_ = 0;
   std::vector<double> shadowed_;            // f_sh per member
   std::vector<MemberCapsule> capsules_;     // work space of update_shadows
-  TemperatureExtreme most_shadowed_{0.0, -1, 0.0};  // its temperature_K: the fraction
+  TemperatureExtreme most_shadowed_{0.0, -1, 0.0};
+
+  std::vector<int> graded_;                          // members with a section difference
+  std::vector<Eigen::Vector3d> differences_K_;       // D per member (global, ⟂ axis), at the last accepted step
+  std::vector<Eigen::Vector3d> pending_differences_K_;
+  std::vector<std::pair<Eigen::Vector3d, Eigen::Vector3d>> local_axes_;  // y, z per member at the step's start
+  TemperatureExtreme largest_difference_{0.0, -1, 0.0};
 };
 
 }  // namespace deploydyn::thermal

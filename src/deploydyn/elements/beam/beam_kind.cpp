@@ -6,6 +6,7 @@
 #include <stdexcept>
 
 #include "deploydyn/elements/beam/beam2d.hpp"
+#include "deploydyn/elements/beam/beam3d.hpp"
 #include "deploydyn/elements/beam/beam3d_group.hpp"
 #include "deploydyn/elements/beam/beam_entry.hpp"
 #include "deploydyn/elements/local_element_group.hpp"
@@ -162,10 +163,36 @@ class BeamKind final : public ElementKind {
     for (BeamElement& beam : model.beams) beam.temperature_change_C = change_C;
   }
   std::optional<HeatedBody> heated_body(const Model& model, int element) const override {
-    return HeatedBody{model.beams[element].material, model.beams[element].section};
+    const BeamElement& beam = model.beams[element];
+    HeatedBody body{beam.material, beam.section};
+    const Eigen::Vector3d chord = model.nodes[beam.node_b].position_m - model.nodes[beam.node_a].position_m;
+    Eigen::Matrix3d frame;
+    if (model.dimension == 2) {
+      body.local_y = Eigen::Vector3d::UnitZ().cross(chord).normalized();
+    } else if (beam3d::element_frame(chord, beam.orientation, frame)) {
+      body.local_y = frame.col(1);
+    }
+    return body;
   }
   void set_element_temperature_change(Model& model, int element, const TimeFunction& change_C) const override {
     model.beams[element].temperature_change_C = change_C;
+  }
+  void set_element_temperature_gradients(Model& model, int element, const TimeFunction& across_y_C,
+                                         const TimeFunction& across_z_C) const override {
+    BeamElement& beam = model.beams[element];
+    // The depths the gradients act over: the beam's own, else its section's.
+    if (beam.section >= 0) {
+      const Section& section = model.sections[beam.section];
+      const bool round = section.shape == SectionShape::circle || section.shape == SectionShape::circular_tube;
+      if (!(beam.height_y_m > 0.0)) beam.height_y_m = round ? section.diameter_m : section.height_m;
+      if (!(beam.height_z_m > 0.0)) beam.height_z_m = round ? section.diameter_m : section.width_m;
+    }
+    beam.temperature_gradient_y_C = across_y_C;
+    beam.gradient_y_given = true;
+    if (model.dimension == 3) {
+      beam.temperature_gradient_z_C = across_z_C;
+      beam.gradient_z_given = true;
+    }
   }
   // 2D: the rotation rz; 3D: the nine entries of the node's rotation matrix, row-major.
   void add_node_unknowns(const Model& model,
