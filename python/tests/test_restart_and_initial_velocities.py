@@ -91,12 +91,16 @@ def test_modes_with_held_or_latched_hinges_are_the_commands(source_dir, tmp_path
 
 
 def test_modes_from_a_run_folder_are_the_commands(source_dir, tmp_path):
-    model = deploydyn.load(source_dir / BOOM, overrides={"analysis.end": 0.2})
+    """The paper's linkage at the end of a run to 0.5 s (its driver holds it there)."""
+    model = deploydyn.load(source_dir / PARALLEL, overrides={"analysis.end": 0.5})
     model.run(out=tmp_path / "run", check=True)
     modes = model.modes(count=3, from_=tmp_path / "run")
-    run_cli("modes", source_dir / BOOM, "--set", "analysis.end=0.2", "--from", tmp_path / "run", "--count", 3,
+    run_cli("modes", source_dir / PARALLEL, "--set", "analysis.end=0.5", "--from", tmp_path / "run", "--count", 3,
             "--out", tmp_path / "modes")
-    assert modes["times"].tolist() == [pytest.approx(0.2)]
+    assert modes["failures"] == [""]
+    assert modes["times"].tolist() == [pytest.approx(0.5)]
     assert modes["omega2"][0] == pytest.approx(modes_csv_omega2(tmp_path / "modes"), rel=1e-12)
+    # Not the modes at t = 0 of the model.
+    assert not np.allclose(modes["omega2"][0], model.modes(count=3)["omega2"][0], rtol=1e-6)
     with pytest.raises(ValueError, match=r"Model.modes: restart folder \(from_\): no folder"):
         model.modes(count=3, from_=tmp_path / "nowhere")

@@ -78,6 +78,7 @@ TEST(InitialVelocities, SpinningFreeBarKeepsItsAngularMomentum) {
   // Centrifugal stretch sets the bar ringing axially; the spin is untouched by it.
   double worst = 0.0;
   for (const StepRecord& r : sink.records) worst = std::max(worst, std::abs(angular_momentum(assembler, r) / h0 - 1.0));
+  ::testing::Test::RecordProperty("angular_momentum_drift", std::to_string(worst));
   EXPECT_LT(worst, kAngularMomentumDrift);
   // After 2 s it has turned by ω t (the bar's angle from its tip positions).
   const StepRecord& last = sink.records.back();
