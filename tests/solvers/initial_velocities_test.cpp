@@ -26,9 +26,11 @@ namespace {
 using testing::RecordCollector;
 
 constexpr double kLength_m = 1.0, kMass_kg = 2.0, kSpin_rad_s = 3.0;
-// Largest relative change of the angular momentum over the run: generalized-α (ρ∞ = 0.9) conserves
-// it only to its error; measured TBD.
-constexpr double kAngularMomentumDrift = 1e-6;
+// Largest relative change of the angular momentum over the 2 s run, and the turn's phase error
+// after it (rad, of 6 rad turned): generalized-α (ρ∞ = 0.9, h = 1 ms) conserves neither exactly;
+// measured 3.6e-6 and 1.9e-5, bounded here with a margin of about 3 and 5.
+constexpr double kAngularMomentumDrift = 1e-5;
+constexpr double kPhaseError_rad = 1e-4;
 
 // A bar of 1 m and 2 kg centred on the origin, free, spun at 3 rad/s about its centre.
 constexpr const char* kSpinningBar = R"(
@@ -83,7 +85,7 @@ TEST(InitialVelocities, SpinningFreeBarKeepsItsAngularMomentum) {
   // After 2 s it has turned by ω t (the bar's angle from its tip positions).
   const StepRecord& last = sink.records.back();
   const double angle = std::atan2(last.q[3] - last.q[1], last.q[2] - last.q[0]);
-  EXPECT_NEAR(std::remainder(angle - kSpin_rad_s * last.time_s, 2.0 * M_PI), 0.0, 1e-6);
+  EXPECT_NEAR(std::remainder(angle - kSpin_rad_s * last.time_s, 2.0 * M_PI), 0.0, kPhaseError_rad);
 }
 
 // A pin at A forbids the part of the spin that moves A: the run starts with the motion closest
