@@ -42,6 +42,7 @@
 #include "deploydyn/results/envelope.hpp"
 #include "deploydyn/output/history_writer.hpp"
 #include "deploydyn/runs/modes_to_folder.hpp"
+#include "deploydyn/runs/restart_from_folder.hpp"
 #include "deploydyn/results/plausibility.hpp"
 #include "deploydyn/output/output_error.hpp"
 #include "deploydyn/runs/run_to_folder.hpp"
@@ -49,7 +50,10 @@
 #include "deploydyn/assembly/linear_system_factory.hpp"
 #include "deploydyn/solvers/analysis.hpp"
 #include "deploydyn/solvers/continuation.hpp"
+#include "deploydyn/solvers/hinge_poses.hpp"
+#include "deploydyn/solvers/initial_velocities.hpp"
 #include "deploydyn/solvers/modal_analysis.hpp"
+#include "deploydyn/solvers/restart_state.hpp"
 #include "deploydyn/solvers/static_solver.hpp"
 #include "deploydyn/study/study_channel.hpp"
 #include "deploydyn/study/study_loader.hpp"
@@ -196,15 +200,26 @@ py::dict report_dict(const RunReport& report) {
   return out;
 }
 
+// Where Model.run starts (restart_from, at: runs/restart_from_folder.hpp), as `deploydyn run
+// --restart-from DIR --at T`; no folder: the model's initial equilibrium.
+RestartOptions restart_options(const std::optional<std::filesystem::path>& restart_from, std::optional<double> at,
+                               bool keep_every_state) {
+  return {restart_from.value_or(std::filesystem::path()), at, keep_every_state};
+}
+
 // A modal analysis in memory, as run_in_memory: modes.csv's columns and rows
-// (runs/modes_to_folder.hpp) in place of the history's.
-py::dict modes_in_memory(const LoadedModel& loaded, const py::object& stop) {
+// (runs/modes_to_folder.hpp) in place of the history's; with a restart folder, the modes of the
+// state it kept.
+py::dict modes_in_memory(const LoadedModel& loaded, const py::object& stop, const RestartOptions& restart) {
   StopWatch watch(stop);
   std::vector<double> rows;
   const ModalRun run = watch.run([&] {
     const Assembler assembler(loaded.model);  // std::invalid_argument → ValueError
+    std::optional<RestartState> kept;
+    if (restart.restart()) kept = restart_state_for(loaded.model, assembler, restart);
     int n_frames = 0;
-    return compute_modes(assembler, watch.control(), [&](const EquilibriumModes& at) {
+    return compute_modes(assembler, watch.control(), kept ? &*kept : nullptr, HingeHold::free,
+                         [&](const EquilibriumModes& at) {
       append_modes_rows(assembler, at, n_frames, rows);
       n_frames += at.modes.ok ? static_cast<int>(at.modes.omega2_rad2_s2.size()) : 0;
     });
@@ -222,8 +237,10 @@ py::dict modes_in_memory(const LoadedModel& loaded, const py::object& stop) {
 
 // Runs in memory: history columns, the history as a (rows × columns) array, the summary JSON
 // text (exactly what summary.json would hold), status and message.
-py::dict run_in_memory(const LoadedModel& loaded, const py::object& stop) {
-  if (loaded.model.analysis.type == AnalysisType::modal) return modes_in_memory(loaded, stop);
+py::dict run_in_memory(const LoadedModel& loaded, const py::object& stop,
+                       const std::optional<std::filesystem::path>& restart_from, std::optional<double> at) {
+  const RestartOptions restart = restart_options(restart_from, at, false);
+  if (loaded.model.analysis.type == AnalysisType::modal) return modes_in_memory(loaded, stop, restart);
   MemorySink sink(loaded.model);
   const std::vector<std::string>& columns = sink.columns();
   StopWatch watch(stop);
@@ -234,7 +251,15 @@ py::dict run_in_memory(const LoadedModel& loaded, const py::object& stop) {
     std::optional<thermal::ThermalCoupling> coupling;
     if (loaded.model.environment) coupling.emplace(coupled_model.emplace(loaded.model));
     const Assembler assembler(coupled_model ? *coupled_model : loaded.model);  // std::invalid_argument → ValueError
-    RunReport done = run_analysis(assembler, sink, watch.control(), coupling ? &*coupling : nullptr);
+    std::optional<RestartState> kept;  // a restart's state
+    std::optional<Eigen::VectorXd> velocities;  // the model's initial_velocities, when given
+    if (restart.restart()) {
+      kept = restart_state_for(loaded.model, assembler, restart);
+    } else if (loaded.model.initial_velocities.given()) {
+      velocities = initial_velocities(loaded.model, assembler.dof_map(), assembler.initial_coordinates());
+    }
+    RunReport done = run_analysis(assembler, sink, watch.control(), coupling ? &*coupling : nullptr,
+                                  RunStart{kept ? &*kept : nullptr, velocities ? &*velocities : nullptr});
     for (std::string& warning : plausibility_warnings(loaded.model, sink.envelope())) {
       done.warnings.push_back(std::move(warning));
     }
@@ -252,10 +277,15 @@ py::dict run_in_memory(const LoadedModel& loaded, const py::object& stop) {
 }
 
 // Runs into a result folder exactly as `deploydyn run --out folder` does.
-py::dict run_into_folder(const LoadedModel& loaded, const std::filesystem::path& folder,
-                         const py::object& stop) {
+py::dict run_into_folder(const LoadedModel& loaded, const std::filesystem::path& folder, const py::object& stop,
+                         const std::optional<std::filesystem::path>& restart_from, std::optional<double> at,
+                         bool keep_every_state) {
   StopWatch watch(stop);
-  const RunReport report = watch.run([&] { return run_to_folder(loaded.model, folder, watch.control()); });
+  const RestartOptions restart = restart_options(restart_from, at, keep_every_state);
+  const RunReport report = watch.run([&] {
+    Envelope envelope;
+    return run_to_folder(loaded.model, folder, watch.control(), envelope, nullptr, restart);
+  });
   py::dict out = report_dict(report);
   // A modal run's table is modes.csv (runs/modes_to_folder.hpp).
   out["history_file"] = folder / (loaded.model.analysis.type == AnalysisType::modal ? kModesFileName
@@ -511,9 +541,24 @@ py::dict continuation_of(const LoadedModel& loaded, const std::string& parameter
 // Natural modes about the static equilibrium at each time (solvers/modal_analysis.hpp):
 // times, ω² (times × modes), modes (times × coordinates × modes), the coordinates' labels,
 // and per time an empty string or why it failed (its rows are then NaN).
-py::dict modes_at(const LoadedModel& loaded, int n_modes, const std::vector<double>& times,
-                  const py::object& stop) {
+// Model.modes: the modes at each of `times` with the hinges as `hinges` says (free, held,
+// latched: solvers/hinge_poses.hpp), or, given a result folder, of the last state it kept, at
+// that state's time (`times` then holds that time), as `deploydyn modes --hinges/--from`.
+py::dict modes_at(const LoadedModel& loaded, int n_modes, std::vector<double> times, const py::object& stop,
+                  const std::string& hinges, const std::optional<std::filesystem::path>& from_folder) {
   const Assembler assembler(loaded.model);  // std::invalid_argument → ValueError
+  const std::optional<HingeHold> hold = kHingeHolds.find(hinges);
+  if (!hold) throw std::invalid_argument("Model.modes: hinges must be 'free', 'held' or 'latched', not '" + hinges + "'");
+  const HingeHold hinge_hold = *hold;
+  std::optional<RestartState> kept;
+  if (from_folder) {
+    // A modal analysis of the model: a dynamic model's last state lies at its end, which a
+    // time history could not restart from but whose modes are wanted.
+    Model modal = loaded.model;
+    modal.analysis.type = AnalysisType::modal;
+    kept = restart_state_for(modal, assembler, RestartOptions{*from_folder, std::nullopt, false});
+    times = {kept->motion.time_s};
+  }
   // Checked before the arrays below are allocated for n_modes (natural_modes checks too late).
   const int n_free = assembler.n_dofs() - assembler.n_equations();
   if (n_modes > n_free) {
@@ -541,7 +586,10 @@ py::dict modes_at(const LoadedModel& loaded, int n_modes, const std::vector<doub
       if (control.stop->load()) {
         modes.message = "stopped before this time";
       } else {
-        modes = modes_at_time(assembler, times[i], *system, options, control).modes;
+        modes = kept ? modes_from_state(assembler, kept->motion, *system, options, control).modes
+                : hinge_hold == HingeHold::free
+                    ? modes_at_time(assembler, times[i], *system, options, control).modes
+                    : modes_in_pose(assembler, times[i], hinge_hold, *system, options, control).modes;
       }
       failures[i] = modes.ok ? "" : modes.message;
       for (py::ssize_t k = 0; k < n_modes; ++k) {
@@ -698,12 +746,15 @@ PYBIND11_MODULE(_core, m) {
              return out.str();
            },
            "The model as a model file with every default explicit (save_model)")
-      .def("modes", &modes_at, py::arg("n_modes"), py::arg("times"), py::arg("stop") = py::none())
+      .def("modes", &modes_at, py::arg("n_modes"), py::arg("times"), py::arg("stop") = py::none(),
+           py::arg("hinges") = "free", py::arg("from_folder") = py::none())
       .def("continuation", &continuation_of, py::arg("parameter"), py::arg("start"), py::arg("end"),
            py::arg("eigenvalues"), py::arg("max_steps"), py::arg("time"), py::arg("switch_branch"),
            py::arg("stop_at"), py::arg("stop") = py::none())
-      .def("run_in_memory", &run_in_memory, py::arg("stop") = py::none())
-      .def("run_into_folder", &run_into_folder, py::arg("folder"), py::arg("stop") = py::none());
+      .def("run_in_memory", &run_in_memory, py::arg("stop") = py::none(), py::arg("restart_from") = py::none(),
+           py::arg("at") = py::none())
+      .def("run_into_folder", &run_into_folder, py::arg("folder"), py::arg("stop") = py::none(),
+           py::arg("restart_from") = py::none(), py::arg("at") = py::none(), py::arg("keep_every_state") = false);
 
   m.def(
       "load_file",

@@ -292,6 +292,26 @@ class ModelBuilder:
         self._spec["gravity"] = checked.numbers("ModelBuilder.gravity", "g", values)
         return self
 
+    def spin(self, rate, centre, axis=None):
+        """Start a dynamic run spinning rigidly at `rate` ω (rad/s) about an axis through `centre`
+        (m): about z in 2D, about `axis` [ax, ay, az] in 3D (docs/model-format.md,
+        `initial_velocities`). Node velocities (`node_velocity`) add to it; the run makes the sum
+        consistent with the constraints."""
+        where = "ModelBuilder.spin"
+        spec = {"rate": checked.number(where, "rate", rate), "centre": checked.numbers(where, "centre", centre)}
+        if axis is not None:
+            spec["axis"] = checked.numbers(where, "axis", axis)
+        self._section("initial_velocities")["spin"] = spec
+        return self
+
+    def node_velocity(self, node, velocity):
+        """Start a dynamic run with `node` moving at `velocity` [vx, vy(, vz)] (m/s), added to a
+        `spin`'s (docs/model-format.md, `initial_velocities`)."""
+        where = "ModelBuilder.node_velocity"
+        self._section("initial_velocities").setdefault("nodes", []).append(
+            {"node": checked.name(where, "node", node), "velocity": checked.numbers(where, "velocity", velocity)})
+        return self
+
     def analysis(self, **options):
         """Analysis options as in the file: type ("static"/"dynamic"/"modal"), end, end_when
         ("end_time"/"all_latched"/"settled"), step, output_interval, load_steps, mass,

@@ -131,7 +131,7 @@ class Model:
         checked.path("Model.save", "path", path).write_text(self.to_yaml(), encoding="utf-8")
 
     # -- running --------------------------------------------------------------------------------
-    def run(self, out=None, check=False, stop=None):
+    def run(self, out=None, check=False, stop=None, restart_from=None, at=None, keep_every_state=False):
         """Run the analysis; return a Result.
 
         out: a folder to write history.csv and summary.json into, as `deploydyn run --out`
@@ -143,17 +143,36 @@ class Model:
         A model of analysis type "modal" gives modes.csv's table instead of the history (columns
         frame, t, mode, omega2, frequency, dT_C, position.<driver>; summary["modes"] per time).
         Results that cannot be written raise OutputError (an OSError).
+        restart_from: a result folder of an earlier run of this model (its states.bin): the run
+        starts from the last state it kept, or with `at` (s) from the one kept at that output
+        time, and continues that run bit for bit, as `deploydyn run --restart-from DIR --at T`
+        (docs/model-format.md, "Restart"); a modal analysis takes the modes of that state. A
+        folder that holds no state this model can start from raises ValueError naming
+        restart_from or at. keep_every_state (with out): states.bin keeps every output time's
+        state, not only the last, as `--keep-every-state`.
         """
+        where = "Model.run"
         if not isinstance(check, bool):
-            raise TypeError(f"Model.run: check must be a bool, not {checked.shown(check)}")
-        stop = checked.stop("Model.run", stop)
-        if out is None:
-            raw = self._core.run_in_memory(stop)
-            result = Result(raw["columns"], raw["values"], json.loads(raw["summary_json"]))
-        else:
-            out = checked.path("Model.run", "out", out)
-            raw = self._core.run_into_folder(out, stop)
-            result = read_result_folder(out, raw["history_file"], raw["summary_file"], stacklevel=3)
+            raise TypeError(f"{where}: check must be a bool, not {checked.shown(check)}")
+        if not isinstance(keep_every_state, bool):
+            raise TypeError(f"{where}: keep_every_state must be a bool, not {checked.shown(keep_every_state)}")
+        stop = checked.stop(where, stop)
+        if restart_from is not None:
+            restart_from = checked.path(where, "restart_from", restart_from)
+        if at is not None:
+            if restart_from is None:
+                raise ValueError(f"{where}: at (s) chooses a state of restart_from; give restart_from too")
+            at = checked.finite(where, "at", at)
+        if keep_every_state and out is None:
+            raise ValueError(f"{where}: keep_every_state keeps states in out's states.bin; give out too")
+        with _restart_names(where):
+            if out is None:
+                raw = self._core.run_in_memory(stop, restart_from, at)
+                result = Result(raw["columns"], raw["values"], json.loads(raw["summary_json"]))
+            else:
+                out = checked.path(where, "out", out)
+                raw = self._core.run_into_folder(out, stop, restart_from, at, keep_every_state)
+                result = read_result_folder(out, raw["history_file"], raw["summary_file"], stacklevel=3)
         if check:
             result.raise_for_status()
         return result
@@ -196,7 +215,7 @@ class Model:
                          for e in raw["events"]]
         return out
 
-    def modes(self, count=10, at=0.0, stop=None):
+    def modes(self, count=10, at=0.0, stop=None, hinges="free", from_=None):
         """Natural frequencies and modes about the static equilibrium at time(s) `at` (the
         thermal state at t = 0, then the drivers moved quasi-statically), as `deploydyn modes`
         computes them. Returns a dict of numpy arrays: "times" (s), "omega2" (rad²/s², times ×
@@ -205,9 +224,20 @@ class Model:
         (per time "" or why no modes were found; those rows are NaN). count: 1 to the model's
         coordinates − constraint equations; at: a time ≥ 0 or a list of 1 to 100 000 of them,
         as the model file's analysis.at (ValueError beyond). stop: a threading.Event as for
-        run; once set, the times not reached are failures "stopped ..."."""
+        run; once set, the times not reached are failures "stopped ...". hinges: what holds the
+        hinges of a spring-driven structure, as `deploydyn modes --hinges`: "free" (as they are),
+        "held" (every hinge with a spring, latch, stop or friction held at its initial angle, the
+        stowed structure) or "latched" (every latch locked at its latch angle, the deployed
+        structure); docs/theory.md, "Modes of stowed and deployed states". from_: a result folder
+        of a run of this model, as `deploydyn modes --from`: the modes of the last state it kept
+        (its positions, time and hinge modes), at that state's time ("times"); `at` and
+        `hinges` are then not used."""
         where = "Model.modes"
         count = checked.count(where, "count", count)  # at most the free coordinates: checked by _core
+        if hinges not in ("free", "held", "latched"):
+            raise ValueError(f"{where}: hinges must be 'free', 'held' or 'latched', not {checked.shown(hinges)}")
+        if from_ is not None:
+            from_ = checked.path(where, "from_", from_)
         times = checked.numbers(where, "at", [at] if checked.is_number(at) else at)
         if not 1 <= len(times) <= MAX_MODAL_TIMES:
             raise ValueError(f"{where}: at must be a time or a list of 1 to {MAX_MODAL_TIMES} "
@@ -216,11 +246,12 @@ class Model:
             times[i] = checked.finite(where, f"at[{i}]", t)
             if times[i] < 0:
                 raise ValueError(f"{where}: at[{i}] must be a time ≥ 0 (s), got {times[i]}")
-        raw = self._core.modes(count, times, checked.stop(where, stop))
+        with _restart_names(where, folder="from_"):
+            raw = self._core.modes(count, times, checked.stop(where, stop), hinges, from_)
         omega2 = np.asarray(raw["omega2"])
         with np.errstate(invalid="ignore"):
             frequency = np.where(omega2 >= 0, np.sqrt(np.abs(omega2)) / (2 * np.pi), np.nan)
-        return {"times": np.asarray(times), "omega2": omega2, "frequency": frequency,
+        return {"times": np.asarray(raw["times"]), "omega2": omega2, "frequency": frequency,
                 "modes": np.asarray(raw["modes"]), "coordinates": list(raw["coordinates"]),
                 "failures": list(raw["failures"])}
 
@@ -228,6 +259,23 @@ class Model:
         extra = f", overrides={dict(self._overrides)}" if self._overrides else ""
         return (f"<deploydyn.Model {self.name or '(unnamed)'!r} from {self.source}: "
                 f"{len(self.nodes)} nodes, {len(self.elements)} bars{extra}>")
+
+
+class _restart_names:
+    """Names a restart's errors by the Python arguments (restart_from or from_, at) instead of
+    the command line's options (--restart-from, --at) that the C++ messages name."""
+
+    def __init__(self, where, folder="restart_from"):
+        self._where, self._folder = where, folder
+
+    def __enter__(self):
+        return self
+
+    def __exit__(self, kind, error, traceback):
+        if kind is ValueError and ("(--restart-from)" in str(error) or "(--at)" in str(error)):
+            message = str(error).replace("(--restart-from)", f"({self._folder})").replace("(--at)", "(at)")
+            raise ValueError(f"{self._where}: {message}") from None
+        return False
 
 
 def load(path, overrides=None):

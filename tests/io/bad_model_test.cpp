@@ -230,6 +230,17 @@ const BadModelCase kBadModels[] = {
      "needs the clearance watch: remove 'clearance: false', or this key"},
     {"driver_force_limit_on_turning_driver.yaml", 7, "drivers.motor.force_limit",
      "unknown key 'force_limit'; did you mean 'torque_limit'?"},
+    // Initial velocities (docs/model-format.md, `initial_velocities`).
+    {"initial_velocities_in_static_analysis.yaml", 6, "initial_velocities",
+     "sets the velocities a dynamic run starts with; analysis type static starts at rest"},
+    {"initial_velocities_spin_axis_in_2d.yaml", 5, "initial_velocities.spin.axis",
+     "only allowed in 3D models; a 2D model spins about z"},
+    {"initial_velocities_node_twice.yaml", 7, "initial_velocities.nodes.1.node",
+     "node 'B' already has a velocity (initial_velocities.nodes.0); give each node one"},
+    {"initial_velocities_empty.yaml", 4, "initial_velocities", "needs a spin {rate, centre} or nodes [{node, velocity}]"},
+    {"initial_velocities_3d_spin_without_axis.yaml", 5, "initial_velocities.spin.axis",
+     "a 3D spin needs its axis [ax, ay, az]"},
+    {"initial_velocities_unknown_node.yaml", 5, "initial_velocities.nodes.0.node", "unknown node 'C'; nodes are A, B"},
 };
 
 class BadModel : public ::testing::TestWithParam<BadModelCase> {};

@@ -228,6 +228,19 @@ void expect_equal_models(const Model& a, const Model& b) {
   EXPECT_EQ(a.output.vtk, b.output.vtk);
   EXPECT_EQ(a.checks.clearance, b.checks.clearance);
   EXPECT_EQ(a.checks.required_clearance_m, b.checks.required_clearance_m);
+  const InitialVelocities& u = a.initial_velocities;
+  const InitialVelocities& w = b.initial_velocities;
+  ASSERT_EQ(u.spin.has_value(), w.spin.has_value());
+  if (u.spin) {
+    EXPECT_EQ(u.spin->axis, w.spin->axis);
+    EXPECT_EQ(u.spin->rate_rad_s, w.spin->rate_rad_s);
+    EXPECT_EQ(u.spin->centre_m, w.spin->centre_m);
+  }
+  ASSERT_EQ(u.nodes.size(), w.nodes.size());
+  for (std::size_t i = 0; i < u.nodes.size(); ++i) {
+    EXPECT_EQ(u.nodes[i].node, w.nodes[i].node);
+    EXPECT_EQ(u.nodes[i].velocity_m_s, w.nodes[i].velocity_m_s);
+  }
 }
 
 std::string saved(const Model& model) {
@@ -432,6 +445,22 @@ TEST(ModelRoundTrip, RayleighDampingAndSettling) {
              "node: B}, rayleigh: {ratios: [0.02, 0.03], frequencies: [1, 10], stiffness: current}}\n",
       "ratios"));
   expect_round_trip(load_model_from_string(base + "analysis: {rayleigh: {alpha: 0.3}}\n", "alpha"));
+}
+
+// A spin (in 3D with its axis, normalized as the loader keeps it) and node velocities.
+TEST(ModelRoundTrip, InitialVelocities) {
+  expect_round_trip(load_model_from_string(
+      "nodes: {A: [0, 0], B: [1, 0.1]}\nmaterials: {s: {E: 1.0e9}}\n"
+      "elements: {b: {nodes: [A, B], area: 1, mass: 1, material: s}}\n"
+      "initial_velocities: {spin: {rate: -2.5, centre: [0.5, 0.1]}, nodes: [{node: B, velocity: [0.1, 0.3]}]}\n",
+      "2D"));
+  const Model spin3d = load_model_from_string(
+      "nodes: {A: [0, 0, 0], B: [1, 0.1, 0.2]}\nmaterials: {s: {E: 1.0e9}}\n"
+      "elements: {b: {nodes: [A, B], area: 1, mass: 1, material: s}}\n"
+      "initial_velocities: {spin: {rate: 0.7, centre: [0, 0, 1], axis: [0, 2, 0]}}\n",
+      "3D");
+  EXPECT_DOUBLE_EQ(spin3d.initial_velocities.spin->axis.norm(), 1.0);
+  expect_round_trip(spin3d);
 }
 
 // analysis.type continuation keeps its own keys (parameter, start, end, eigenvalues, max_steps)

@@ -213,6 +213,12 @@ TEST(Restart, BadFoldersAreNamed) {
   run_to_folder(load_model(parallel, parse_overrides({"analysis={type: modal, modes: 2}"})), modes);
   const std::string modal = message_of({modes, std::nullopt, false});
   EXPECT_NE(modal.find("it holds a modal analysis"), std::string::npos) << modal;
+  // A restart continues the kept velocities: the model's initial velocities would be lost.
+  const std::string spun = message_of({run, std::nullopt, false}, {"initial_velocities={spin: {rate: 1, centre: [0, 0]}}"});
+  EXPECT_NE(spun.find("restart folder (--restart-from): a restart continues the kept state's velocities, and the "
+                      "model's initial_velocities would be lost"),
+            std::string::npos)
+      << spun;
   // Nor is a continuation restarted.
   const std::string path = message_of({run, std::nullopt, false}, {"analysis={type: continuation, parameter: thermal, end: 1}"});
   EXPECT_NE(path.find("a continuation starts from the model's initial equilibrium"), std::string::npos) << path;

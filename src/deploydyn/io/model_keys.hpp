@@ -14,10 +14,10 @@ namespace deploydyn::model_keys {
 
 using Keys = std::span<const std::string_view>;
 
-inline constexpr std::array<std::string_view, 19> kTopLevel{
+inline constexpr std::array<std::string_view, 20> kTopLevel{
     "name",    "description", "units",   "nodes",   "materials", "sections", "elements", "members", "thermal",
     "environment", "supports", "joints", "drivers", "loads", "gravity", "functions", "analysis", "output",
-    "checks"};
+    "checks", "initial_velocities"};
 inline constexpr std::array<std::string_view, 2> kNode{"at", "mass"};
 inline constexpr std::array<std::string_view, 9> kMaterial{"E",       "alpha",         "density",      "yield_strength",
                                                           "damping", "specific_heat", "absorptivity", "emissivity",
@@ -50,6 +50,9 @@ inline constexpr std::array<std::string_view, 5> kRevoluteDriver{"type", "joint"
 inline constexpr std::array<std::string_view, 6> kCoordinateDriver{"type", "node", "direction",
                                                                    "profile", "reading", "force_limit"};
 inline constexpr std::array<std::string_view, 4> kLoad{"node", "force", "moment", "factor"};
+inline constexpr std::array<std::string_view, 2> kInitialVelocities{"spin", "nodes"};
+inline constexpr std::array<std::string_view, 3> kSpin{"rate", "centre", "axis"};
+inline constexpr std::array<std::string_view, 2> kNodeVelocity{"node", "velocity"};
 inline constexpr std::array<std::string_view, 13> kAnalysis{
     "type", "end", "end_when", "step", "output_interval", "load_steps", "mass", "integrator", "newton",
     "adaptive", "linear_solver", "rayleigh", "settle"};
@@ -96,7 +99,7 @@ struct Section {
   Keys keys;
 };
 
-inline constexpr std::array<Section, 47> kSections{{
+inline constexpr std::array<Section, 50> kSections{{
     {"top level", "### Top level", kTopLevel},
     {"nodes.NAME", "### `nodes`", kNode},
     {"materials.NAME", "### `materials`", kMaterial},
@@ -128,6 +131,9 @@ inline constexpr std::array<Section, 47> kSections{{
     {"output", "### `output`", kOutput},
     {"output.select", "#### `select`: what history.csv holds", kOutputSelect},
     {"checks", "### `checks`", kChecks},
+    {"initial_velocities", "### `initial_velocities`", kInitialVelocities},
+    {"initial_velocities.spin", "### `initial_velocities`", kSpin},
+    {"initial_velocities.nodes.N", "### `initial_velocities`", kNodeVelocity},
     {"function (type: constant)", "## Functions of time", kConstantFunction},
     {"function (type: smooth_step, cosine_ramp or cycloidal)", "## Functions of time", kRamp},
     {"function (type: smooth_trapezoid or paper_eq23)", "## Functions of time", kSmoothTrapezoid},

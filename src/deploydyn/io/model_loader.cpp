@@ -171,6 +171,7 @@ class ModelReader {
     if (const auto analysis = root_.find("analysis")) read_analysis(*analysis);
     if (const auto output = root_.find("output")) read_output(*output);
     if (const auto checks = root_.find("checks")) read_checks(*checks);
+    if (const auto velocities = root_.find("initial_velocities")) read_initial_velocities(*velocities);
     if (const auto environment = root_.find("environment");
         environment && model_.analysis.type != AnalysisType::dynamic && model_.analysis.type != AnalysisType::quasi_static) {
       environment->fail(fmt::format("sets the temperatures of a time history (analysis type dynamic or static), not of "
@@ -1197,6 +1198,52 @@ class ModelReader {
       if (const auto factor = spec.find("factor")) load.factor = function(*factor);
       model_.loads.push_back(load);
     }
+  }
+
+  // The velocities a dynamic run starts with (docs/model-format.md, `initial_velocities`): a
+  // rigid spin and node velocities, added; read after the analysis, whose type they need.
+  void read_initial_velocities(const YamlValue& spec) {
+    spec.expect_keys(model_keys::kInitialVelocities);
+    if (model_.analysis.type != AnalysisType::dynamic) {
+      spec.fail(fmt::format("sets the velocities a dynamic run starts with; analysis type {} starts at rest "
+                            "(use type: dynamic, or remove initial_velocities)",
+                            to_string(model_.analysis.type)));
+    }
+    InitialVelocities& velocities = model_.initial_velocities;
+    if (const auto spin = spec.find("spin")) velocities.spin = rigid_spin(*spin);
+    if (const auto nodes = spec.find("nodes")) {
+      std::map<int, std::string> entry_of_node;  // node → path of its entry
+      for (const auto& item : nodes->items(1, kUnbounded, "node velocities {node: name, velocity: [vx, vy]}")) {
+        item.expect_keys(model_keys::kNodeVelocity);
+        const YamlValue node = item.at("node");
+        const NodeVelocity given{.node = nodes_.find(node), .velocity_m_s = vector(item.at("velocity"), "m/s")};
+        if (const auto [previous, added] = entry_of_node.emplace(given.node, item.path()); !added) {
+          node.fail(fmt::format("node '{}' already has a velocity ({}); give each node one", node.text(),
+                                previous->second));
+        }
+        velocities.nodes.push_back(given);
+      }
+    }
+    if (!velocities.given()) spec.fail("needs a spin {rate, centre} or nodes [{node, velocity}]");
+  }
+
+  RigidSpin rigid_spin(const YamlValue& spec) const {
+    spec.expect_keys(model_keys::kSpin);
+    RigidSpin spin;
+    spin.rate_rad_s = spec.at("rate").number(Sign::any, "rad/s");
+    spin.centre_m = vector(spec.at("centre"), "m");
+    if (model_.dimension == 3) {
+      const auto axis = spec.find("axis");
+      if (!axis) spec.fail_key("axis", "a 3D spin needs its axis [ax, ay, az] (the direction ω turns about)");
+      spin.axis = axis_vector(*axis, "");
+      if (model_.n_beams() > 0) {
+        spec.fail("a spin of 3D beams is not available yet (their nodes' frames would need rates); give the "
+                  "beams' node velocities under nodes");
+      }
+    } else if (const auto axis = spec.find("axis")) {
+      axis->fail("only allowed in 3D models; a 2D model spins about z");
+    }
+    return spin;
   }
 
   // Analysis and output -----------------------------------------------------------------------

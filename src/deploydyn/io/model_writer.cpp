@@ -630,6 +630,40 @@ void emit_checks(YAML::Emitter& out, const CheckSettings& checks) {
   out << YAML::EndMap;
 }
 
+// Only when given, so that a model without them is written as before.
+void emit_initial_velocities(YAML::Emitter& out, const Model& model) {
+  const InitialVelocities& velocities = model.initial_velocities;
+  if (!velocities.given()) return;
+  emit_key(out, "initial_velocities");
+  out << YAML::BeginMap;
+  if (velocities.spin) {
+    emit_key(out, "spin");
+    out << YAML::Flow << YAML::BeginMap;
+    emit_number(out, "rate", velocities.spin->rate_rad_s);
+    emit_key(out, "centre");
+    emit_vector(out, velocities.spin->centre_m, model.dimension);
+    if (model.dimension == 3) {
+      emit_key(out, "axis");
+      emit_vector(out, velocities.spin->axis, 3);
+    }
+    out << YAML::EndMap;
+  }
+  if (!velocities.nodes.empty()) {
+    emit_key(out, "nodes");
+    out << YAML::BeginSeq;
+    for (const NodeVelocity& node : velocities.nodes) {
+      out << YAML::Flow << YAML::BeginMap;
+      emit_key(out, "node");
+      out << model.nodes[static_cast<std::size_t>(node.node)].name;
+      emit_key(out, "velocity");
+      emit_vector(out, node.velocity_m_s, model.dimension);
+      out << YAML::EndMap;
+    }
+    out << YAML::EndSeq;
+  }
+  out << YAML::EndMap;
+}
+
 }  // namespace
 
 void save_model(const Model& model, std::ostream& out) {
@@ -648,6 +682,7 @@ void save_model(const Model& model, std::ostream& out) {
   emit_geometry(emitter, model);
   emit_boundary_conditions(emitter, model);
   emit_analysis(emitter, model);
+  emit_initial_velocities(emitter, model);
   emit_checks(emitter, model.checks);
   emitter << YAML::EndMap;
   out << emitter.c_str() << '\n';

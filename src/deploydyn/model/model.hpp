@@ -14,6 +14,7 @@
 #include "deploydyn/elements/cable/cable_element.hpp"
 #include "deploydyn/elements/hinge/hinge_element.hpp"
 #include "deploydyn/model/environment.hpp"
+#include "deploydyn/model/initial_velocities.hpp"
 #include "deploydyn/model/joint.hpp"
 #include "deploydyn/model/member.hpp"
 #include "deploydyn/model/section.hpp"
@@ -336,6 +337,8 @@ struct Model {
   TimeFunction temperature_change_C;  // model-wide ΔT(t), for bars that give none
   // When given, the members' temperatures come from it, step by step (thermal/), not from ΔT.
   std::optional<Environment> environment;
+  // Dynamic runs from the initial equilibrium start with these (none given: at rest).
+  InitialVelocities initial_velocities;
   AnalysisOptions analysis;
   OutputOptions output;
   CheckSettings checks;

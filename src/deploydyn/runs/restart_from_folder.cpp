@@ -34,6 +34,10 @@ RestartState restart_state_for(const Model& model, const Assembler& assembler, c
   if (model.environment) {
     fail("from", "the model has an environment, whose members' temperatures a restart cannot take on yet");
   }
+  if (model.initial_velocities.given()) {
+    fail("from", "a restart continues the kept state's velocities, and the model's initial_velocities would be "
+                 "lost: remove them, or start from the model's initial equilibrium");
+  }
   if (model.analysis.type == AnalysisType::continuation) {
     fail("from", "a continuation starts from the model's initial equilibrium; restarts are for dynamic, static and "
                  "modal analyses");

@@ -23,7 +23,8 @@ struct RestartOptions {
   bool restart() const { return !from_folder.empty(); }
 };
 
-// Throws std::invalid_argument when the folder holds no state this model can start from.
+// Throws std::invalid_argument when the folder holds no state this model can start from, or the
+// model gives initial_velocities (a restart continues the kept velocities).
 RestartState restart_state_for(const Model& model, const Assembler& assembler, const RestartOptions& options);
 
 // run_to_folder (runs/run_to_folder.hpp) for a time history that starts from a state an earlier

@@ -19,6 +19,7 @@
 #include "deploydyn/runs/modes_to_folder.hpp"
 #include "deploydyn/output/output_error.hpp"
 #include "deploydyn/results/plausibility.hpp"
+#include "deploydyn/solvers/initial_velocities.hpp"
 #include "deploydyn/runs/path_to_folder.hpp"
 #include "deploydyn/runs/restart_from_folder.hpp"
 #include "deploydyn/runs/result_folder.hpp"
@@ -64,7 +65,11 @@ class HistoryRun final : public FolderRun {
     if (model.environment) coupling_.emplace(coupled_model_.emplace(model));  // may throw, as the assembler
     assembler_.emplace(coupled_model_ ? *coupled_model_ : model);  // may throw before any file is touched
     // Read before the folder is touched: a run may restart from its own folder's end.
-    if (restart.restart()) start_ = restart_state_for(model, *assembler_, restart);
+    if (restart.restart()) {
+      start_ = restart_state_for(model, *assembler_, restart);
+    } else if (model.initial_velocities.given()) {  // may throw (a spin of 3D beams)
+      velocities_ = initial_velocities(model, assembler_->dof_map(), assembler_->initial_coordinates());
+    }
   }
 
   ResultFolder::Files files() const override { return run_files(model_); }
@@ -93,7 +98,8 @@ class HistoryRun final : public FolderRun {
         temperatures.write_row(time_s, temperatures_K, coupling_->extra_column_values());
       });
       coupling_->start(0.0);
-      report = run_analysis(*assembler_, sink, stop_on_write_failure(control, stop, [] { return false; }), &*coupling_);
+      report = run_analysis(*assembler_, sink, stop_on_write_failure(control, stop, [] { return false; }), &*coupling_,
+                            start());
       coupling_->on_output({});
     } else {
       StateFileWriter states(folder / kStateFileName,
@@ -104,7 +110,7 @@ class HistoryRun final : public FolderRun {
       report = run_analysis(*assembler_, background,
                             stop_on_write_failure(control, stop,
                                                   [&] { return background.failed() || states.failure().has_value(); }),
-                            nullptr, RunStart{start_ ? &*start_ : nullptr, nullptr}, &states);
+                            nullptr, start(), &states);
       background.finish();
       state_failure = states.failure();
     }
@@ -150,6 +156,9 @@ class HistoryRun final : public FolderRun {
   VerdictWatch verdict_watch_{model_};
   bool keep_every_output_;
   std::optional<RestartState> start_;  // where the run starts, when it restarts
+  std::optional<Eigen::VectorXd> velocities_;  // the model's initial_velocities, when given
+
+  RunStart start() const { return {start_ ? &*start_ : nullptr, velocities_ ? &*velocities_ : nullptr}; }
   RunReport report_;
   Verdict run_verdict_;
 };

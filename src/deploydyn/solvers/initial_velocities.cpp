@@ -24,4 +24,13 @@ Eigen::VectorXd spin_velocities(const Model& model, const DofMap& dofs, const Ei
   return v;
 }
 
+Eigen::VectorXd initial_velocities(const Model& model, const DofMap& dofs, const Eigen::VectorXd& q) {
+  const InitialVelocities& given = model.initial_velocities;
+  Eigen::VectorXd v = given.spin ? spin_velocities(model, dofs, q, *given.spin) : Eigen::VectorXd::Zero(dofs.n_dofs());
+  for (const NodeVelocity& node : given.nodes) {
+    for (int axis = 0; axis < model.dimension; ++axis) v[dofs.index(node.node, axis)] += node.velocity_m_s[axis];
+  }
+  return v;
+}
+
 }  // namespace deploydyn
