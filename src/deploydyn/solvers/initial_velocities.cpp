@@ -1,5 +1,6 @@
 #include "deploydyn/solvers/initial_velocities.hpp"
 
+#include <Eigen/Geometry>
 #include <stdexcept>
 
 namespace deploydyn {
