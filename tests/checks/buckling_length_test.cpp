@@ -66,7 +66,7 @@ supports: [{}]
                      nodes, elements, names, member_keys, supports, rest);
 }
 
-const CheckedMember& member_named(const std::vector<CheckedMember>& members, const std::string& name) {
+CheckedMember member_named(const std::vector<CheckedMember>& members, const std::string& name) {
   for (const CheckedMember& m : members) {
     if (m.name == name) return m;
   }
@@ -97,7 +97,7 @@ TEST(BucklingLength, FollowsFromTheSupportsAtTheEnds) {
   for (const EndCase& c : cases) {
     SCOPED_TRACE(fmt::format("A: [{}], B: [{}]", c.support_a, c.support_b));
     const Model model = load_model_from_string(column(4, c.support_a, c.support_b), "column.yaml");
-    const CheckedMember& m = member_named(checked_members(model), "column");
+    const CheckedMember m = member_named(checked_members(model), "column");
     EXPECT_EQ(m.buckling_length_source, c.source);
     ASSERT_EQ(m.buckling_length_factor.has_value(), c.factor.has_value());
     if (!c.factor) {
@@ -115,7 +115,7 @@ TEST(BucklingLength, FollowsFromTheSupportsAtTheEnds) {
 TEST(BucklingLength, GivenFactorWinsAndStaysGivenThroughTheWriter) {
   const Model model = load_model_from_string(column(4, "x, y, rotation", "", "", ", buckling_length_factor: 2.1"),
                                              "column.yaml");
-  const CheckedMember& m = member_named(checked_members(model), "column");
+  const CheckedMember m = member_named(checked_members(model), "column");
   EXPECT_EQ(m.buckling_length_source, "given");
   EXPECT_EQ(m.buckling_length_factor, 2.1);
 
@@ -153,13 +153,12 @@ elements: {s: {nodes: [A, B], area: 1.0e-4, inertia: 1.0e-10, material: steel}}
 supports: [{node: A}]
 )",
                                             "bar.yaml");
-  const CheckedMember& bar = member_named(checked_members(bars), "s");
+  const CheckedMember bar = member_named(checked_members(bars), "s");
   EXPECT_EQ(bar.buckling_length_source, "pin-ended bar");
   EXPECT_EQ(bar.buckling_length_factor, 1.0);
 
   const auto column3d = [](const std::string& support_a) {
     return fmt::format(R"(
-dimension: 3
 nodes: {{A: [0, 0, 0], M: [0.5, 0, 0], B: [1, 0, 0]}}
 materials: {{steel: {{E: 2.1e11, density: 7850}}}}
 elements:
