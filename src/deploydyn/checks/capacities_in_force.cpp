@@ -3,12 +3,44 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <optional>
 
 #include "deploydyn/checks/check_kind.hpp"
 #include "deploydyn/checks/clearance.hpp"
 #include "deploydyn/checks/member_capacities.hpp"
 
 namespace deploydyn {
+namespace {
+
+// Each buckling length factor in force, with where it comes from and its members
+// (docs/theory.md, "Buckling length from the end conditions").
+std::vector<std::string> buckling_length_lines(
+    const std::vector<CheckedMember>& members,
+    const std::function<std::string(const std::vector<std::string>&)>& list) {
+  struct Group {
+    std::optional<double> factor;
+    std::string source;
+    std::vector<std::string> names;
+  };
+  std::vector<Group> groups;  // in the order first met
+  for (const CheckedMember& m : members) {
+    if (m.kind == MemberKind::cable) continue;
+    const auto same = [&](const Group& g) { return g.factor == m.buckling_length_factor && g.source == m.buckling_length_source; };
+    auto group = std::find_if(groups.begin(), groups.end(), same);
+    if (group == groups.end()) group = groups.insert(groups.end(), Group{m.buckling_length_factor, m.buckling_length_source, {}});
+    group->names.push_back(m.name);
+  }
+  std::vector<std::string> lines;
+  for (const Group& g : groups) {
+    lines.push_back(g.factor ? fmt::format("  K = {:.3g} ({}): {}", *g.factor, g.source, list(g.names))
+                             : fmt::format("  K undefined ({}: a mechanism in compression; not checked for buckling "
+                                           "or interaction, give buckling_length_factor): {}",
+                                           g.source, list(g.names)));
+  }
+  return lines;
+}
+
+}  // namespace
 
 std::vector<std::string> capacity_lines(const Model& model,
                                         const std::function<std::string(const std::vector<std::string>&)>& list) {
@@ -82,14 +114,17 @@ std::vector<std::string> capacity_lines(const Model& model,
     if (applies == 0) continue;
     std::string detail;
     if (kind == CheckKind::buckling && weakest) {
-      detail = fmt::format("; least N_cr {:.4g} N ({}, K = {:g}, L = {:.4g} m)", weakest->critical_force_N,
-                           weakest->name, weakest->buckling_length_factor, weakest->length_m);
+      detail = fmt::format("; least N_cr {:.4g} N ({}, K = {:.3g}, L = {:.4g} m)", weakest->critical_force_N,
+                           weakest->name, weakest->buckling_length_factor.value_or(0.0), weakest->length_m);
     }
     if (kind == CheckKind::cable_slack) {
       detail = fmt::format(": reported; {} must stay taut (slack: forbidden)", forbidden);
     }
     lines.push_back(checked == 0 ? fmt::format("{}: no capacity given on any of {} members", name, applies)
                                  : fmt::format("{} on {} of {} members{}", name, checked, applies, detail));
+    if (kind == CheckKind::buckling) {
+      for (std::string& line : buckling_length_lines(members, list)) lines.push_back(std::move(line));
+    }
   }
   // docs/model-format.md, `checks`.
   if (!model.checks.clearance) {

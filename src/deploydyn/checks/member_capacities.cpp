@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <numbers>
 
+#include "deploydyn/checks/buckling_length.hpp"
+
 namespace deploydyn {
 namespace {
 
@@ -58,12 +60,16 @@ ElementData element_data(const Model& model, MemberKind kind, int index) {
   return d;
 }
 
-CheckedMember checked_member(const Model& model, std::string name, MemberKind kind,
-                             const std::vector<int>& elements, double buckling_length_factor) {
+CheckedMember checked_member(const Model& model, const BucklingLengths& lengths, std::string name, MemberKind kind,
+                             const std::vector<int>& elements, std::optional<double> given_factor) {
   CheckedMember member;
   member.name = std::move(name);
   member.kind = kind;
-  member.buckling_length_factor = buckling_length_factor;
+  if (kind != MemberKind::cable) {
+    BucklingLength length = lengths.of(kind, elements, given_factor);
+    member.buckling_length_factor = length.factor;
+    member.buckling_length_source = std::move(length.source);
+  }
   double least_bending_stiffness_Nm2 = -1.0;
   for (const int e : elements) {
     const ElementData d = element_data(model, kind, e);
@@ -73,8 +79,8 @@ CheckedMember checked_member(const Model& model, std::string name, MemberKind ki
                                       ? d.least_bending_stiffness_Nm2
                                       : std::min(least_bending_stiffness_Nm2, d.least_bending_stiffness_Nm2);
   }
-  if (kind != MemberKind::cable && least_bending_stiffness_Nm2 > 0.0) {
-    const double buckling_length_m = buckling_length_factor * member.length_m;
+  if (member.buckling_length_factor && least_bending_stiffness_Nm2 > 0.0) {
+    const double buckling_length_m = *member.buckling_length_factor * member.length_m;
     member.critical_force_N =
         std::numbers::pi * std::numbers::pi * least_bending_stiffness_Nm2 / (buckling_length_m * buckling_length_m);
   }
@@ -97,6 +103,7 @@ const std::string& member_element_name(const Model& model, MemberKind kind, int 
 }
 
 std::vector<CheckedMember> checked_members(const Model& model) {
+  const BucklingLengths lengths(model);
   std::vector<CheckedMember> members;
   std::vector<char> listed_bars(model.bars.size(), 0), listed_beams(model.beams.size(), 0),
       listed_cables(model.cables.size(), 0);
@@ -105,7 +112,7 @@ std::vector<CheckedMember> checked_members(const Model& model) {
   };
   for (const Member& m : model.members) {
     CheckedMember& member = members.emplace_back(
-        checked_member(model, m.name, m.kind, m.elements, m.buckling_length_factor));
+        checked_member(model, lengths, m.name, m.kind, m.elements, m.buckling_length_factor));
     member.listed = true;
     member.slack_forbidden = m.slack_forbidden;
     for (const int e : m.elements) listed_of(m.kind)[static_cast<std::size_t>(e)] = 1;
@@ -115,7 +122,8 @@ std::vector<CheckedMember> checked_members(const Model& model) {
     for (std::size_t e = 0; e < listed.size(); ++e) {
       if (listed[e] != 0) continue;
       const int index = static_cast<int>(e);
-      members.push_back(checked_member(model, member_element_name(model, kind, index), kind, {index}, 1.0));
+      members.push_back(checked_member(model, lengths, member_element_name(model, kind, index), kind, {index},
+                                       std::nullopt));
     }
   }
   return members;

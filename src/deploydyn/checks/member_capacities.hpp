@@ -4,6 +4,7 @@
 // (docs/theory.md, "Member checks and the verdict"). A check runs on a member only when its
 // capacity is known (has_capacity); the others are reported as not checked.
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -30,9 +31,12 @@ struct CheckedMember {
   bool listed = false;  // in the file's `members`; else an element of its own
   std::vector<CheckedElement> elements;
   double length_m = 0.0;                // L: the sum of its elements' reference lengths
-  double buckling_length_factor = 1.0;  // K
+  // K: given, or from the member's end conditions (buckling_length.hpp); empty: undefined, a
+  // pinned–free or free–free beam member, which is not checked for buckling.
+  std::optional<double> buckling_length_factor;
+  std::string buckling_length_source;  // where K comes from: "given", "clamped–pinned ends", ...
   // N_cr = π² (EI)_min / (K L)² about the weak axis, the least EI of its elements (V1); 0 when
-  // an element's I is not known (a bar without `inertia` or `section`).
+  // an element's I is not known (a bar without `inertia` or `section`) or K is undefined.
   double critical_force_N = 0.0;
   bool slack_forbidden = false;  // cables
 };

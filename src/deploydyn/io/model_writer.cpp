@@ -319,8 +319,8 @@ void emit_geometry(YAML::Emitter& out, const Model& model) {
       if (member.kind == MemberKind::cable) {
         emit_key(out, "slack");
         out << (member.slack_forbidden ? "forbidden" : "allowed");
-      } else {
-        emit_number(out, "buckling_length_factor", member.buckling_length_factor);
+      } else if (member.buckling_length_factor) {  // not given: it stays derived when read back
+        emit_number(out, "buckling_length_factor", *member.buckling_length_factor);
       }
       out << YAML::EndMap;
     }

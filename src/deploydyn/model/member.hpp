@@ -5,6 +5,7 @@
 // cable that none of them holds is a member of its own, by its own name.
 
 #include <array>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -23,7 +24,9 @@ struct Member {
   std::string name;
   MemberKind kind = MemberKind::bar;
   std::vector<int> elements;            // indices into Model::bars, beams or cables, by kind
-  double buckling_length_factor = 1.0;  // K: the buckling length is K times the member's length
+  // K given in the file: the buckling length is K times the member's length. Empty: K follows
+  // from the member's end conditions (checks/buckling_length.hpp).
+  std::optional<double> buckling_length_factor;
   bool slack_forbidden = false;         // cables: going slack fails the verdict
 };
 
