@@ -1,5 +1,7 @@
 #include "deploydyn/solvers/initial_velocities.hpp"
 
+#include <Eigen/Geometry>
+
 #include <stdexcept>
 
 namespace deploydyn {
