@@ -26,11 +26,11 @@ constexpr ElementField kFields[] = {
     {"latch", "rad", "none", "the hinge locks for good when θ reaches it; not the initial angle, within the stops"},
     {"stop_stiffness", "N·m/rad", "none (rigid)", "> 0: the stops are compliant, contact moment k δ + c δ̇ on the penetration δ past them (pushes only); needs a stop"},
     {"stop_damping", "N·m·s/rad", "0", "≥ 0: c of the stops' contact; needs `stop_stiffness`; not with `stop_restitution`"},
-    {"stop_restitution", "", "none", "e in (0, 1]: the stops' contact damps as Hunt–Crossley's, rebounding at e times the impact rate; needs `stop_stiffness`; not with `stop_damping`"},
+    {"stop_restitution", "", "none", "> 0 and ≤ 1: e; the stops' contact damps as Hunt–Crossley's, rebounding at e times the impact rate; needs `stop_stiffness`; not with `stop_damping`"},
     {"stop_capacity", "N·m", "none", "> 0: the load the stops carry, for the `stop_load` check; needs a stop"},
     {"latch_stiffness", "N·m/rad", "none (rigid)", "> 0: the latch is compliant: a contact past it, and once θ passed it (the catch engaged) a spring both ways about it; needs `latch`"},
     {"latch_damping", "N·m·s/rad", "0", "≥ 0: c of the latch's contact; needs `latch_stiffness`; not with `latch_restitution`"},
-    {"latch_restitution", "", "none", "e in (0, 1]: the latch's contact damps as Hunt–Crossley's; needs `latch_stiffness`; not with `latch_damping`"},
+    {"latch_restitution", "", "none", "> 0 and ≤ 1: e; the latch's contact damps as Hunt–Crossley's; needs `latch_stiffness`; not with `latch_damping`"},
     {"latch_capacity", "N·m", "none", "> 0: the load the latch carries, for the `latch_load` check; needs `latch`"},
     {"jam_time", "s", "none", "> 0: stuck by friction short of the latch for longer than this, or at the end of a run without drivers, is a jam (the `jam` check); needs `friction` and `latch`"},
 };
