@@ -33,6 +33,9 @@ constexpr double kThresholdMargin_m = 1e-9;
 // "Clearance"): the list holds the pairs within the threshold plus the skin, and is made again
 // once a node has moved half the skin.
 constexpr double kSkinPerLength = 0.05;
+// A listed pair is skipped while its lower bound (C4) stays above the threshold by this much (m):
+// room for the round-off of the bound's sums, so that a skipped pair is surely farther.
+constexpr double kBoundMargin_m = 1e-9;
 
 int find_root(std::vector<int>& parent, int i) {
   while (parent[static_cast<std::size_t>(i)] != i) {
@@ -182,13 +185,20 @@ struct ClearanceWatch::State {
     int capsule_a = 0, capsule_b = 0;
     std::uint64_t key = 0;       // their members' pair
     PairState* pair = nullptr;   // its state once it mattered (an unordered_map's stay put)
+    // Not measured while the odometer is below this (m): its distance at the last measure less
+    // twice the odometer's advance since stays above the threshold then (C4).
+    double skip_until_m = 0.0;
   };
   std::vector<NearPair> near;
-  Eigen::VectorXd q_listed;
   double skin_m = 0.0;
   int n_lists = 0;
-  const Eigen::VectorXd* q = nullptr;  // the record being measured
-  Eigen::VectorXd q_previous;          // the record before, for (C2)
+  // Node positions gathered from the record's coordinates (a planar model's z = 0), so that a
+  // pair's distance reads its four nodes from one array: now, at the record before (for (C2)),
+  // and when the list was made.
+  std::vector<Eigen::Vector3d> positions_m, previous_positions_m, listed_positions_m;
+  // The odometer of (C4): the sum over records of the largest node displacement from the one
+  // before (m), which no point of any capsule's axis has outrun since any earlier record.
+  double odometer_m = 0.0;
 
   std::unordered_map<std::uint64_t, PairState> pairs;
   std::vector<std::uint64_t> closest;     // at most kClosestPairs, by min_distance_m
@@ -237,15 +247,15 @@ struct ClearanceWatch::State {
     return k;
   }
 
-  // (C1) at coordinates `at`: Ericson's segment–segment distance as FCL computes it.
-  double distance(int capsule_a, int capsule_b, const Eigen::VectorXd& at) const {
+  // (C1) at node positions `at`: Ericson's segment–segment distance as FCL computes it.
+  double distance(int capsule_a, int capsule_b, const std::vector<Eigen::Vector3d>& at) const {
     const Capsule& a = capsules[static_cast<std::size_t>(capsule_a)];
     const Capsule& b = capsules[static_cast<std::size_t>(capsule_b)];
+    const auto x = [&](int node) -> const Eigen::Vector3d& { return at[static_cast<std::size_t>(node)]; };
     double s = 0.0, t = 0.0;
     Eigen::Vector3d on_a, on_b;
-    const double squared_m2 = fcl::detail::closestPtSegmentSegment(
-        position(at, a.nodes[0]), position(at, a.nodes[1]), position(at, b.nodes[0]), position(at, b.nodes[1]), &s, &t,
-        &on_a, &on_b);
+    const double squared_m2 = fcl::detail::closestPtSegmentSegment(x(a.nodes[0]), x(a.nodes[1]), x(b.nodes[0]),
+                                                                  x(b.nodes[1]), &s, &t, &on_a, &on_b);
     return std::sqrt(squared_m2) - a.radius_m - b.radius_m;
   }
 
@@ -284,7 +294,7 @@ struct ClearanceWatch::State {
       // was farther than mattered, now at that record's coordinates.
       const double before_m = n_records == 0 ? kInfinity
                               : std::isfinite(pair.previous_distance_m) ? pair.previous_distance_m
-                                                                        : distance(capsule_a, capsule_b, q_previous);
+                                                                        : distance(capsule_a, capsule_b, previous_positions_m);
       pair.first_violation_s = std::isfinite(before_m) && before_m >= limit_m && n_records > 0
                                    ? previous_time_s + (before_m - limit_m) / (before_m - distance_m) * (time_s - previous_time_s)
                                    : time_s;
@@ -302,9 +312,12 @@ struct ClearanceWatch::State {
     const int a = static_cast<int>(reinterpret_cast<std::intptr_t>(o1->getUserData()));
     const int b = static_cast<int>(reinterpret_cast<std::intptr_t>(o2->getUserData()));
     if (const std::optional<std::uint64_t> k = state.watched_pair(a, b)) {
-      const double distance_m = state.distance(a, b, *state.q);
+      const double distance_m = state.distance(a, b, state.positions_m);
       PairState* pair = state.take(*k, nullptr, a, b, distance_m);
-      if (distance_m < state.threshold() + state.skin_m) state.near.push_back({a, b, *k, pair});
+      const double threshold_m = state.threshold();
+      if (distance_m < threshold_m + state.skin_m) {
+        state.near.push_back({a, b, *k, pair, state.skip_until(distance_m, threshold_m)});
+      }
     }
     pruning_m = state.threshold() + state.skin_m;
     return false;
@@ -312,35 +325,52 @@ struct ClearanceWatch::State {
 
   // The broad phase at record coordinates `q`: every pair of boxes closer than the threshold plus
   // the skin measured, and the list made of them.
-  void make_list(const Eigen::VectorXd& q_now) {
-    move_capsules(q_now);
+  void make_list() {
+    move_capsules();
     near.clear();
     manager.distance(this, &State::visit);
-    q_listed = q_now;
+    listed_positions_m = positions_m;
     ++n_lists;
   }
 
-  // The list's pairs alone.
+  // (C4): a pair `distance_m` apart now is farther than `threshold_m`, which only falls, until
+  // the odometer has advanced by half the difference: neither of its capsules' axes can have
+  // moved farther than the odometer's advance.
+  double skip_until(double distance_m, double threshold_m) const {
+    return odometer_m + 0.5 * (distance_m - threshold_m - kBoundMargin_m);
+  }
+
+  // The list's pairs alone, but those that (C4) shows farther than the threshold.
   void measure_listed() {
     // The threshold only falls during the record: the one at its start lets through no fewer.
     const double threshold_m = threshold();
     for (NearPair& p : near) {
-      const double distance_m = distance(p.capsule_a, p.capsule_b, *q);
+      if (odometer_m < p.skip_until_m) continue;
+      const double distance_m = distance(p.capsule_a, p.capsule_b, positions_m);
+      p.skip_until_m = skip_until(distance_m, threshold_m);
       if (p.pair == nullptr && distance_m >= threshold_m) continue;
       p.pair = take(p.key, p.pair, p.capsule_a, p.capsule_b, distance_m);
     }
   }
 
-  // How far the farthest node has moved since the list was made (m).
-  double moved_since_list(const Eigen::VectorXd& q_now) const {
-    double farthest_m2 = 0.0;
+  // Gathers the record's node positions (the ones before kept) and advances the odometer;
+  // returns how far the farthest node has moved since the list was made (m).
+  double gather_positions(const Eigen::VectorXd& q_now) {
+    std::swap(previous_positions_m, positions_m);
+    positions_m.resize(node_first.size());
+    const bool first_record = previous_positions_m.size() != positions_m.size();
+    double farthest_from_list_m2 = 0.0, farthest_step_m2 = 0.0;
     for (std::size_t n = 0; n < node_first.size(); ++n) {
       const auto [first, count] = node_first[n];
-      double squared_m2 = 0.0;
-      for (int i = 0; i < count; ++i) squared_m2 += std::pow(q_now[first + i] - q_listed[first + i], 2);
-      farthest_m2 = std::max(farthest_m2, squared_m2);
+      Eigen::Vector3d& x = positions_m[n];
+      x.setZero();
+      for (int i = 0; i < count; ++i) x[i] = q_now[first + i];
+      if (first_record) continue;
+      farthest_from_list_m2 = std::max(farthest_from_list_m2, (x - listed_positions_m[n]).squaredNorm());
+      farthest_step_m2 = std::max(farthest_step_m2, (x - previous_positions_m[n]).squaredNorm());
     }
-    return std::sqrt(farthest_m2);
+    odometer_m += std::sqrt(farthest_step_m2);
+    return std::sqrt(farthest_from_list_m2);
   }
 
   // A pair that overlaps at the start and was measured before that was known: forgotten.
@@ -353,26 +383,22 @@ struct ClearanceWatch::State {
     for (const auto& [k, pair] : pairs) take_closest(k);
   }
 
-  Eigen::Vector3d position(const Eigen::VectorXd& q, int node) const {
-    const auto [first, count] = node_first[static_cast<std::size_t>(node)];
-    Eigen::Vector3d x = Eigen::Vector3d::Zero();
-    for (int i = 0; i < count; ++i) x[i] = q[first + i];
-    return x;
-  }
-
   double largest_speed(const Eigen::VectorXd& v) const {
-    double largest = 0.0;
     if (v.size() == 0) return 0.0;
-    for (std::size_t n = 0; n < node_first.size(); ++n) {
-      largest = std::max(largest, position(v, static_cast<int>(n)).norm());
+    // The largest squared speed, one root: √ is monotone, so this is the largest speed exactly.
+    double largest_m2_s2 = 0.0;
+    for (const auto [first, count] : node_first) {
+      Eigen::Vector3d speed_m_s = Eigen::Vector3d::Zero();
+      for (int i = 0; i < count; ++i) speed_m_s[i] = v[first + i];
+      largest_m2_s2 = std::max(largest_m2_s2, speed_m_s.squaredNorm());
     }
-    return largest;
+    return std::sqrt(largest_m2_s2);
   }
 
-  void move_capsules(const Eigen::VectorXd& q_now) {
+  void move_capsules() {
     for (std::size_t c = 0; c < capsules.size(); ++c) {
-      const Eigen::Vector3d a = position(q_now, capsules[c].nodes[0]);
-      const Eigen::Vector3d b = position(q_now, capsules[c].nodes[1]);
+      const Eigen::Vector3d& a = positions_m[static_cast<std::size_t>(capsules[c].nodes[0])];
+      const Eigen::Vector3d& b = positions_m[static_cast<std::size_t>(capsules[c].nodes[1])];
       const Eigen::Vector3d along = b - a;
       const double length_m = along.norm();
       // FCL's capsule lies along its frame's z, centred on its origin.
@@ -438,14 +464,12 @@ void ClearanceWatch::record(const StepRecord& r) {
   // (C3): the faster of this record's and the last one's fastest node bounds what the steps hide.
   const double speed_m_s = s.largest_speed(r.v);
   s.time_s = r.time_s;
-  s.q = &r.q;
-  if (s.n_records == 0 || s.moved_since_list(r.q) > 0.5 * s.skin_m) {
-    s.make_list(r.q);
+  const double moved_m = s.gather_positions(r.q);
+  if (s.n_records == 0 || moved_m > 0.5 * s.skin_m) {
+    s.make_list();
   } else {
     s.measure_listed();
   }
-  s.q = nullptr;
-  s.q_previous = r.q;
   if (s.n_records == 0) s.forget_start_overlaps();
   if (s.n_records > 0) {
     s.between_steps_m = std::max(s.between_steps_m, std::max(s.largest_speed_m_s, speed_m_s) * (r.time_s - s.previous_time_s));
