@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <span>
+#include <utility>
 
 #include "deploydyn/elements/element_kinds.hpp"
 #include "deploydyn/elements/hinge/hinge_history.hpp"
@@ -43,15 +44,8 @@ EquilibriumModes modes_at_equilibrium(const Assembler& assembler, MotionState st
   const StaticResult equilibrium = solve_static(assembler, assembler.model().analysis,
                                                 LoadPath::time_step(state.time_s, state.time_s), 1, system, state,
                                                 control);
-  out.stopped = equilibrium.stopped;
   out.equilibrium = state;
-  if (!equilibrium.newton.converged || equilibrium.path_factor < 1.0) {
-    out.modes.message = equilibrium.stopped ? "stopped before the equilibrium was reached"
-                                            : "no static equilibrium found: " + equilibrium.newton.failure;
-    return out;
-  }
-  out.modes = natural_modes(assembler, out.equilibrium, system, options);
-  return out;
+  return modes_about(assembler, equilibrium, std::move(out), system, options);
 }
 
 }  // namespace

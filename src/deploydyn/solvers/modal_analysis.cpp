@@ -7,6 +7,7 @@
 #include <limits>
 #include <numbers>
 #include <stdexcept>
+#include <utility>
 
 #include "deploydyn/solvers/constrained_shift_invert.hpp"
 
@@ -117,6 +118,11 @@ EquilibriumModes modes_at_time(const Assembler& assembler, double time_s, Linear
   EquilibriumModes out;
   out.time_s = time_s;
   const StaticResult equilibrium = solve_equilibrium_at(assembler, time_s, system, out.equilibrium, control);
+  return modes_about(assembler, equilibrium, std::move(out), system, options);
+}
+
+EquilibriumModes modes_about(const Assembler& assembler, const StaticResult& equilibrium, EquilibriumModes out,
+                             LinearSystem& system, const ModalOptions& options) {
   out.stopped = equilibrium.stopped;
   if (!equilibrium.newton.converged || equilibrium.path_factor < 1.0) {
     out.modes.message = equilibrium.stopped ? "stopped before the equilibrium was reached"

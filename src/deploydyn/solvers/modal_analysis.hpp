@@ -66,4 +66,10 @@ struct EquilibriumModes {
 EquilibriumModes modes_at_time(const Assembler& assembler, double time_s, LinearSystem& system,
                                const ModalOptions& options = {}, const RunControl& control = {});
 
+struct StaticResult;  // solvers/static_solver.hpp
+// The modes about `out.equilibrium`, which the static solve `equilibrium` reached; when it did
+// not, none, and `out.modes.message` says why.
+EquilibriumModes modes_about(const Assembler& assembler, const StaticResult& equilibrium, EquilibriumModes out,
+                             LinearSystem& system, const ModalOptions& options);
+
 }  // namespace deploydyn
