@@ -48,19 +48,24 @@ class Reader {
   }
   Eigen::VectorXd vector(std::int64_t n) {
     Eigen::VectorXd v(n);
-    std::memcpy(v.data(), take(static_cast<std::size_t>(n) * sizeof(double)), static_cast<std::size_t>(n) * sizeof(double));
+    doubles(v.data(), static_cast<std::size_t>(n));
     return v;
   }
   std::vector<double> counted() {
     const auto n = get<std::int64_t>();
     if (n < 0 || static_cast<std::size_t>(n) > (bytes_.size() - at_) / sizeof(double)) damaged();
     std::vector<double> v(static_cast<std::size_t>(n));
-    std::memcpy(v.data(), take(v.size() * sizeof(double)), v.size() * sizeof(double));
+    doubles(v.data(), v.size());
     return v;
   }
   bool done() const { return at_ == bytes_.size(); }
 
  private:
+  // n doubles into `to`, which may be null when n is 0 (an empty vector's data()).
+  void doubles(double* to, std::size_t n) {
+    const char* from = take(n * sizeof(double));
+    if (n > 0) std::memcpy(to, from, n * sizeof(double));
+  }
   const char* take(std::size_t n) {
     if (n > bytes_.size() - at_) damaged();
     const char* p = bytes_.data() + at_;
