@@ -51,7 +51,6 @@
 #include "deploydyn/solvers/analysis.hpp"
 #include "deploydyn/solvers/continuation.hpp"
 #include "deploydyn/solvers/hinge_poses.hpp"
-#include "deploydyn/solvers/initial_velocities.hpp"
 #include "deploydyn/solvers/modal_analysis.hpp"
 #include "deploydyn/solvers/restart_state.hpp"
 #include "deploydyn/solvers/static_solver.hpp"
@@ -251,15 +250,8 @@ py::dict run_in_memory(const LoadedModel& loaded, const py::object& stop,
     std::optional<thermal::ThermalCoupling> coupling;
     if (loaded.model.environment) coupling.emplace(coupled_model.emplace(loaded.model));
     const Assembler assembler(coupled_model ? *coupled_model : loaded.model);  // std::invalid_argument → ValueError
-    std::optional<RestartState> kept;  // a restart's state
-    std::optional<Eigen::VectorXd> velocities;  // the model's initial_velocities, when given
-    if (restart.restart()) {
-      kept = restart_state_for(loaded.model, assembler, restart);
-    } else if (loaded.model.initial_velocities.given()) {
-      velocities = initial_velocities(loaded.model, assembler.dof_map(), assembler.initial_coordinates());
-    }
-    RunReport done = run_analysis(assembler, sink, watch.control(), coupling ? &*coupling : nullptr,
-                                  RunStart{kept ? &*kept : nullptr, velocities ? &*velocities : nullptr});
+    const RunOrigin origin = run_origin(loaded.model, assembler, restart);
+    RunReport done = run_analysis(assembler, sink, watch.control(), coupling ? &*coupling : nullptr, origin.start());
     for (std::string& warning : plausibility_warnings(loaded.model, sink.envelope())) {
       done.warnings.push_back(std::move(warning));
     }

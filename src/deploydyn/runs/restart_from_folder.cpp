@@ -9,6 +9,7 @@
 
 #include "deploydyn/output/state_file.hpp"
 #include "deploydyn/results/result_file_names.hpp"
+#include "deploydyn/solvers/initial_velocities.hpp"
 
 namespace deploydyn {
 namespace {
@@ -88,6 +89,16 @@ RestartState restart_state_for(const Model& model, const Assembler& assembler, c
                      model.analysis.end_time_s));
   }
   return state;
+}
+
+RunOrigin run_origin(const Model& model, const Assembler& assembler, const RestartOptions& restart) {
+  RunOrigin origin;
+  if (restart.restart()) {
+    origin.kept = restart_state_for(model, assembler, restart);
+  } else if (model.initial_velocities.given()) {
+    origin.velocities = initial_velocities(model, assembler.dof_map(), assembler.initial_coordinates());
+  }
+  return origin;
 }
 
 }  // namespace deploydyn

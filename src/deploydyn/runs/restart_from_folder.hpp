@@ -27,6 +27,18 @@ struct RestartOptions {
 // model gives initial_velocities (a restart continues the kept velocities).
 RestartState restart_state_for(const Model& model, const Assembler& assembler, const RestartOptions& options);
 
+// Where a time history begins: the state a restart takes on, or the model's initial velocities,
+// or neither (the model's initial equilibrium, at rest).
+struct RunOrigin {
+  std::optional<RestartState> kept;
+  std::optional<Eigen::VectorXd> velocities;
+
+  RunStart start() const { return {kept ? &*kept : nullptr, velocities ? &*velocities : nullptr}; }
+};
+// Throws std::invalid_argument as restart_state_for, and for initial velocities the model's
+// elements cannot take (a spin of 3D beams).
+RunOrigin run_origin(const Model& model, const Assembler& assembler, const RestartOptions& restart);
+
 // run_to_folder (runs/run_to_folder.hpp) for a time history that starts from a state an earlier
 // run kept, or keeps every output time's state; a modal analysis takes the modes of that state.
 // Throws std::invalid_argument, before any file is touched, when the state does not fit.

@@ -19,7 +19,6 @@
 #include "deploydyn/runs/modes_to_folder.hpp"
 #include "deploydyn/output/output_error.hpp"
 #include "deploydyn/results/plausibility.hpp"
-#include "deploydyn/solvers/initial_velocities.hpp"
 #include "deploydyn/runs/path_to_folder.hpp"
 #include "deploydyn/runs/restart_from_folder.hpp"
 #include "deploydyn/runs/result_folder.hpp"
@@ -65,11 +64,7 @@ class HistoryRun final : public FolderRun {
     if (model.environment) coupling_.emplace(coupled_model_.emplace(model));  // may throw, as the assembler
     assembler_.emplace(coupled_model_ ? *coupled_model_ : model);  // may throw before any file is touched
     // Read before the folder is touched: a run may restart from its own folder's end.
-    if (restart.restart()) {
-      start_ = restart_state_for(model, *assembler_, restart);
-    } else if (model.initial_velocities.given()) {  // may throw (a spin of 3D beams)
-      velocities_ = initial_velocities(model, assembler_->dof_map(), assembler_->initial_coordinates());
-    }
+    origin_ = run_origin(model, *assembler_, restart);
   }
 
   ResultFolder::Files files() const override { return run_files(model_); }
@@ -99,7 +94,7 @@ class HistoryRun final : public FolderRun {
       });
       coupling_->start(0.0);
       report = run_analysis(*assembler_, sink, stop_on_write_failure(control, stop, [] { return false; }), &*coupling_,
-                            start());
+                            origin_.start());
       coupling_->on_output({});
     } else {
       StateFileWriter states(folder / kStateFileName,
@@ -110,7 +105,7 @@ class HistoryRun final : public FolderRun {
       report = run_analysis(*assembler_, background,
                             stop_on_write_failure(control, stop,
                                                   [&] { return background.failed() || states.failure().has_value(); }),
-                            nullptr, start(), &states);
+                            nullptr, origin_.start(), &states);
       background.finish();
       state_failure = states.failure();
     }
@@ -155,10 +150,8 @@ class HistoryRun final : public FolderRun {
   std::optional<Assembler> assembler_;
   VerdictWatch verdict_watch_{model_};
   bool keep_every_output_;
-  std::optional<RestartState> start_;  // where the run starts, when it restarts
-  std::optional<Eigen::VectorXd> velocities_;  // the model's initial_velocities, when given
+  RunOrigin origin_;  // a restart's state or the model's initial velocities
 
-  RunStart start() const { return {start_ ? &*start_ : nullptr, velocities_ ? &*velocities_ : nullptr}; }
   RunReport report_;
   Verdict run_verdict_;
 };
