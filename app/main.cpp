@@ -28,6 +28,7 @@
 #include "deploydyn/io/text_file.hpp"
 #include "deploydyn/output/output_error.hpp"
 #include "deploydyn/results/plausibility.hpp"
+#include "deploydyn/solvers/initial_velocities.hpp"
 #include "deploydyn/solvers/output_sampling.hpp"
 #include "deploydyn/runs/result_folder.hpp"
 #include "deploydyn/output/envelope_table.hpp"
@@ -177,6 +178,36 @@ std::string listed(const std::vector<std::string>& names, bool all) {
                      fmt::join(names.begin(), names.begin() + kShown, ", "), names.size() - kShown);
 }
 
+// How a dynamic run starts moving: at rest, or the model's initial_velocities with the kinetic
+// energy ½ q̇ᵀ M q̇ they carry as given (the run then makes them consistent with the constraints,
+// which can only take energy away: docs/theory.md, "Restart and initial velocities").
+std::string initial_motion(const Model& model, const Assembler& assembler, bool list_all) {
+  const InitialVelocities& given = model.initial_velocities;
+  if (!given.given()) return "at rest (no initial_velocities)";
+  std::vector<std::string> parts;
+  const int d = model.dimension;
+  const auto vector = [d](const Eigen::Vector3d& v) { return fmt::format("({:g})", fmt::join(v.head(d), ", ")); };
+  if (given.spin) {
+    const RigidSpin& spin = *given.spin;
+    parts.push_back(d == 2 ? fmt::format("spin {:g} rad/s about z through {}", spin.rate_rad_s, vector(spin.centre_m))
+                           : fmt::format("spin {:g} rad/s about {} through {}", spin.rate_rad_s,
+                                         vector(spin.axis), vector(spin.centre_m)));
+  }
+  if (!given.nodes.empty()) {
+    std::vector<std::string> nodes;
+    for (const NodeVelocity& node : given.nodes) {
+      nodes.push_back(fmt::format("{} {} m/s", model.nodes[node.node].name, vector(node.velocity_m_s)));
+    }
+    parts.push_back(fmt::format("{} node velocit{} {}", nodes.size(), nodes.size() == 1 ? "y" : "ies",
+                                listed(nodes, list_all)));
+  }
+  const Eigen::VectorXd v = initial_velocities(model, assembler.dof_map(), assembler.initial_coordinates());
+  Eigen::VectorXd mass_times_v;
+  assembler.mass_times(v, mass_times_v);
+  return fmt::format("{}; kinetic energy {:.6g} J as given (the run makes them consistent with the constraints)",
+                     fmt::join(parts, " + "), 0.5 * v.dot(mass_times_v));
+}
+
 int check_command(const std::string& model_file, const std::vector<std::string>& sets, bool list_all) {
   const Model model = load_model(model_file, parse_overrides(sets));
   const Assembler assembler(model);
@@ -314,6 +345,7 @@ int check_command(const std::string& model_file, const std::vector<std::string>&
                                                  "efforts may zigzag from step to step)"
                                                : "")
                      : fmt::format("{}, ρ∞ = {:g}", to_string(i.kind), i.rho_infinity));
+      fmt::print("start       {}\n", initial_motion(model, assembler, list_all));
     }
     const HistoryLayout history(model);
     fmt::print("history     {} columns ({}{}); extremes of every quantity over every step in {}\n",

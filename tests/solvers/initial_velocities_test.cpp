@@ -7,6 +7,8 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <filesystem>
+#include <fstream>
 #include <string>
 #include <vector>
 
@@ -163,6 +165,39 @@ TEST(InitialVelocities, RunToFolderStartsWithThem) {
   const double inertia = kMass_kg * kLength_m * kLength_m / 12.0;
   EXPECT_NEAR(spun.at(0, "kinetic"), 0.5 * inertia * kSpin_rad_s * kSpin_rad_s, 1e-12);
   EXPECT_NEAR(spun.at(spun.rows.size() - 1, "kinetic") / (0.5 * inertia * kSpin_rad_s * kSpin_rad_s), 1.0, 1e-4);
+}
+
+// `deploydyn check` says how the run starts: the spin and node velocities as given and their
+// kinetic energy ½ q̇ᵀ M q̇ (½ I ω² plus the node velocity's share), or at rest.
+TEST(InitialVelocities, CheckSaysHowTheRunStarts) {
+  testing::ScratchFolder scratch("initial_velocities_check");
+  std::filesystem::create_directories(scratch.path());
+  const std::filesystem::path file = scratch.path() / "spinning_bar.yaml";
+  std::ofstream(file) << kSpinningBar;
+  const testing::CliOutcome spun = testing::run_cli("check " + file.string());
+  ASSERT_EQ(spun.exit_code, 0) << spun.output;
+  const std::size_t start = spun.output.find("start       spin 3 rad/s about z through (0, 0)");
+  ASSERT_NE(start, std::string::npos) << spun.output;
+  const std::size_t energy = spun.output.find("kinetic energy ", start);
+  ASSERT_NE(energy, std::string::npos) << spun.output;
+  const double inertia = kMass_kg * kLength_m * kLength_m / 12.0;
+  EXPECT_NEAR(std::stod(spun.output.substr(energy + 15)), 0.5 * inertia * kSpin_rad_s * kSpin_rad_s, 1e-5);
+
+  // B pushed along the bar at 1 m/s besides the spin: ½ v_Bᵀ M_BB v_B = ½ (2m/6) (1 m/s)² more,
+  // and its v·M·ω cross term is zero (the spin moves A and B across the bar).
+  const testing::CliOutcome pushed = testing::run_cli(
+      "check " + file.string() + " --set 'initial_velocities.nodes=[{node: B, velocity: [1, 0]}]'");
+  ASSERT_EQ(pushed.exit_code, 0) << pushed.output;
+  EXPECT_NE(pushed.output.find("+ 1 node velocity B (1, 0) m/s"), std::string::npos) << pushed.output;
+  const std::size_t pushed_energy = pushed.output.find("kinetic energy ");
+  ASSERT_NE(pushed_energy, std::string::npos) << pushed.output;
+  EXPECT_NEAR(std::stod(pushed.output.substr(pushed_energy + 15)),
+              0.5 * inertia * kSpin_rad_s * kSpin_rad_s + 0.5 * (kMass_kg / 3.0), 1e-5);
+
+  const std::string resting = kSpinningBar;
+  std::ofstream(file) << resting.substr(0, resting.find("initial_velocities:"));
+  const testing::CliOutcome at_rest = testing::run_cli("check " + file.string());
+  EXPECT_NE(at_rest.output.find("start       at rest"), std::string::npos) << at_rest.output;
 }
 
 }  // namespace
