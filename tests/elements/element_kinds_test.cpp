@@ -1,5 +1,6 @@
 // The list of element types (elements/element_kinds.hpp): names and result quantities that the
 // writers can key on, and model-format.md documenting every key of every type's entry.
+#include "deploydyn/elements/element_event.hpp"
 #include "deploydyn/elements/element_kinds.hpp"
 
 #include <fmt/format.h>
@@ -41,6 +42,23 @@ TEST(ElementKinds, ModelFormatDocumentsEveryField) {
       EXPECT_NE(text.str().find(row), std::string::npos) << kind->name() << " field row missing:\n"
                                                          << row;
     }
+  }
+}
+
+// Every kind of element event has its row in the model format's table of events, which says
+// what its `value` is and in which unit.
+TEST(ElementKinds, ModelFormatDocumentsEveryEventKind) {
+  std::ifstream file(std::string(DEPLOYDYN_SOURCE_DIR) + "/docs/model-format.md");
+  ASSERT_TRUE(file) << "docs/model-format.md";
+  std::stringstream text;
+  text << file.rdbuf();
+  const std::size_t table = text.str().find("### Events in summary.json");
+  ASSERT_NE(table, std::string::npos) << "docs/model-format.md has no section \"Events in summary.json\"";
+  const std::string events = text.str().substr(table);
+  for (int kind = 0; kind <= static_cast<int>(ElementEventKind::released); ++kind) {
+    const std::string_view what = to_string(static_cast<ElementEventKind>(kind));
+    EXPECT_NE(what, "unknown");
+    EXPECT_NE(events.find(fmt::format("| `{}` | ", what)), std::string::npos) << what << ": no row in the events table";
   }
 }
 

@@ -183,6 +183,11 @@ TEST(VerificationHinges, LatchHoldsTheAngleToRoundOffUnderTheSpringsPreload) {
   const RunEvent& latched = *std::find_if(h.report.events.begin(), h.report.events.end(),
                                           [](const RunEvent& e) { return e.what == "latched"; });
   EXPECT_EQ(latched.element, "hinge");
+  EXPECT_EQ(latched.value, latch);  // an event's value, by its kind (docs/model-format.md, "Events")
+  // Without drivers the hinge starts held at its initial angle and is let go in the first step.
+  const RunEvent& released = h.report.events.front();
+  EXPECT_EQ(released.what, "released");
+  EXPECT_NEAR(released.value, kInitialAngle, 1e-12);  // the angle from the node positions
   // Spring-driven from rest: ½ k (θ_r − θ)² turns into kinetic energy; θ(t) = θ_r − 0.8 cos(ω t)
   // reaches the latch when cos(ω t) = 0.3/0.8.
   const double omega = std::sqrt(10.0 / kInertia_kg_m2);

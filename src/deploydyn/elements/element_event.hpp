@@ -35,7 +35,9 @@ struct ElementEvent {
   double time_s = 0.0;
   int element = 0;  // index within its type
   ElementEventKind kind = ElementEventKind::slack;
-  double value = 0.0;  // worth reporting with it: an angle (rad), a strain
+  // Worth reporting with it, one unit per kind (docs/model-format.md, "Events"): a cable's
+  // mechanical strain, a hinge's angle (rad), a slipping hinge's torque (N·m).
+  double value = 0.0;
 };
 
 }  // namespace deploydyn

@@ -491,7 +491,7 @@ class HingeGroup final : public ElementGroup, public SwitchingGroup {
         return to(HingeMode::free, before[kLockAngle], ElementEventKind::released, before[kLockAngle]);
       case HingeMode::held:  // released at t = 0: the first step again, free
         after[kSlip] = e.friction_coefficient > 0.0 ? sign_of(lock) : 0.0;
-        return to(HingeMode::free, before[kLockAngle], ElementEventKind::released, -lock);
+        return to(HingeMode::free, before[kLockAngle], ElementEventKind::released, before[kLockAngle]);
       case HingeMode::latched:
         return false;
     }
