@@ -35,6 +35,9 @@ CLI::App* add_study_command(CLI::App& app, StudyArguments& arguments) {
   study->add_flag("--resume", arguments.resume,
                   "Keep the cases that an earlier run of this study completed (same model) and "
                   "run only the others");
+  study->add_option("--set,-s", arguments.sets,
+                    "Override a value of the model for every case, before the case's own overrides: PATH=VALUE, "
+                    "e.g. analysis.end=2");
   study->add_flag("--quiet,-q", arguments.quiet, "No line per completed case or closing line");
   study->add_flag("--force,-f", arguments.force,
                   "Without --out or the study file's out: replace an earlier study's results in "
@@ -81,7 +84,7 @@ void tell(const std::string& prefix, const StudyError& error) {
 // The study as the command line asks for it. `checks_folder`: the process that writes the
 // study's folder (the only one, or process 0 under mpirun) refuses one it must not replace.
 Study prepare_study(const StudyArguments& arguments, bool checks_folder) {
-  Study study = load_study(arguments.study_file);
+  Study study = load_study(arguments.study_file, parse_overrides(arguments.sets));
   if (!arguments.out_dir.empty()) study.out_folder = arguments.out_dir;
   if (arguments.jobs >= 0) study.jobs = arguments.jobs;
   // As `run`: a folder nobody named is never replaced silently; it may hold all that is left

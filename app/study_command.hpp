@@ -6,6 +6,7 @@
 #include <CLI/CLI.hpp>
 #include <atomic>
 #include <string>
+#include <vector>
 
 namespace deploydyn::cli {
 
@@ -16,6 +17,7 @@ struct StudyArguments {
   bool quiet = false;
   bool force = false;   // replace an earlier study's results in the default folder
   bool resume = false;  // skip the cases an earlier run completed
+  std::vector<std::string> sets;  // --set PATH=VALUE: the model for every case, before its own
 };
 
 // Adds `study` to `app`; parsed values land in `arguments`.

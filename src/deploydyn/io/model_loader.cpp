@@ -1849,10 +1849,19 @@ ModelSource ModelSource::from_document(io::YamlDocument document, const std::str
 
 Model ModelSource::build(const std::vector<Override>& overrides) const {
   io::YamlSource source(name_);
-  if (overrides.empty()) return ModelReader(YamlValue(*document_, document_->root(), source)).read();
+  if (overrides.empty() && base_overrides_.empty()) {
+    return ModelReader(YamlValue(*document_, document_->root(), source)).read();
+  }
   io::YamlDocument edited = *document_;  // the overrides edit a copy: this source serves again
+  for (const Override& override : base_overrides_) apply_override(edited, override, source);
   for (const Override& override : overrides) apply_override(edited, override, source);
   return ModelReader(YamlValue(edited, edited.root(), source)).read();
+}
+
+ModelSource ModelSource::with_overrides(const std::vector<Override>& overrides) const {
+  ModelSource changed = *this;
+  changed.base_overrides_.insert(changed.base_overrides_.end(), overrides.begin(), overrides.end());
+  return changed;
 }
 
 }  // namespace deploydyn

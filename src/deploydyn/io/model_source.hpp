@@ -23,6 +23,9 @@ class ModelSource {
   // The checked model, with `overrides` applied; throws InputError as load_model does.
   // Safe to call from several threads at once.
   Model build(const std::vector<Override>& overrides = {}) const;
+  // This source with `overrides` applied before build()'s own, as if the file said so (a
+  // study's `--set` for every case); an error in one names it as `--set` does.
+  ModelSource with_overrides(const std::vector<Override>& overrides) const;
 
   const std::string& name() const { return name_; }
 
@@ -32,6 +35,7 @@ class ModelSource {
 
   std::shared_ptr<const io::YamlDocument> document_;
   std::string name_;
+  std::vector<Override> base_overrides_;
 };
 
 }  // namespace deploydyn

@@ -73,9 +73,10 @@ bool sets_zero_temperature_change(const StudyCase& c) {
 // The model file, read and parsed once for every case; an error in it names its own file,
 // except that it is missing (named at the study's `model` line).
 std::shared_ptr<const ModelSource> read_model_source(const std::filesystem::path& model_file,
-                                                     const YamlValue& model_value) {
+                                                     const YamlValue& model_value,
+                                                     const std::vector<Override>& model_overrides) {
   try {
-    return std::make_shared<const ModelSource>(ModelSource::read(model_file));
+    return std::make_shared<const ModelSource>(ModelSource::read(model_file).with_overrides(model_overrides));
   } catch (const InputError& e) {
     if (e.source() == model_file.string() && e.line() == 0) {
       model_value.fail(fmt::format("{}: {}", model_file.string(), e.problem()));
@@ -104,7 +105,7 @@ void check_cases(const ModelSource& source, const std::vector<CaseSpec>& specs) 
 }
 
 Study read_study(const YamlValue& root, const std::string& source_name,
-                 const std::filesystem::path& base_folder) {
+                 const std::filesystem::path& base_folder, const std::vector<Override>& model_overrides) {
   if (!root.is_map()) root.fail("expected a study: a mapping with model and cases");
   root.expect_keys(model_keys::kStudy);
 
@@ -125,7 +126,7 @@ Study read_study(const YamlValue& root, const std::string& source_name,
     }
     if (root.find("reference")) root.at("reference").fail("a sampled study's reference is its nominal case");
     study.sampling = read_sampling(*sampling);
-    study.model_source = read_model_source(study.model_file, model_value);
+    study.model_source = read_model_source(study.model_file, model_value, model_overrides);
     try {
       study.drawn = std::make_shared<const SampledCases>(*study.sampling, study.model_source->build());
     } catch (const std::invalid_argument& e) {
@@ -167,7 +168,7 @@ Study read_study(const YamlValue& root, const std::string& source_name,
         zero == study.cases.end() ? 0 : static_cast<std::size_t>(zero - study.cases.begin());
   }
 
-  study.model_source = read_model_source(study.model_file, model_value);
+  study.model_source = read_model_source(study.model_file, model_value, model_overrides);
   check_cases(*study.model_source, specs);
   return study;
 }
@@ -175,7 +176,8 @@ Study read_study(const YamlValue& root, const std::string& source_name,
 }  // namespace
 
 Study load_study_from_string(const std::string& text, const std::string& source_name,
-                             const std::filesystem::path& base_folder) {
+                             const std::filesystem::path& base_folder,
+                             const std::vector<Override>& model_overrides) {
   const io::YamlSource source(source_name);
   io::YamlDocument document;
   try {
@@ -183,11 +185,11 @@ Study load_study_from_string(const std::string& text, const std::string& source_
   } catch (const io::YamlSyntaxError& error) {
     io::throw_input_error(source_name, error.mark, "", "YAML syntax: " + error.message);
   }
-  return read_study(YamlValue(document, document.root(), source), source_name, base_folder);
+  return read_study(YamlValue(document, document.root(), source), source_name, base_folder, model_overrides);
 }
 
-Study load_study(const std::filesystem::path& file) {
-  return load_study_from_string(io::read_input_file(file), file.string(), file.parent_path());
+Study load_study(const std::filesystem::path& file, const std::vector<Override>& model_overrides) {
+  return load_study_from_string(io::read_input_file(file), file.string(), file.parent_path(), model_overrides);
 }
 
 }  // namespace deploydyn
