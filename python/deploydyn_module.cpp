@@ -626,8 +626,9 @@ class PythonStudyChannel final : public StudyChannel {
 // distributed study. Process 0 (or the only one) returns each case's name, status, message
 // and process; a worker process returns nothing.
 py::object run_study_file(const std::filesystem::path& file, const std::optional<std::filesystem::path>& out,
-                          int jobs, bool resume, StudyChannel* channel, const py::object& stop) {
-  Study study = load_study(file);
+                          int jobs, bool resume, StudyChannel* channel, const py::object& stop,
+                          const OverridePairs& overrides) {
+  Study study = load_study(file, to_overrides(overrides));
   if (out) study.out_folder = *out;
   if (jobs >= 0) study.jobs = jobs;
   StudyControl control;
@@ -810,7 +811,7 @@ PYBIND11_MODULE(_core, m) {
                                                "How the processes of a study talk; see deploydyn.run_study")
       .def(py::init<>());
   m.def("run_study", &run_study_file, py::arg("file"), py::arg("out"), py::arg("jobs"), py::arg("resume"),
-        py::arg("channel"), py::arg("stop") = py::none());
+        py::arg("channel"), py::arg("stop") = py::none(), py::arg("overrides") = OverridePairs{});
   // The keys of every element type's entries, from its field table (ElementKind::fields(), as
   // docs/model-format.md tabulates them): the ModelBuilder checks its element arguments with
   // them, so that a new type or key needs no Python edit.

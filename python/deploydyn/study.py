@@ -20,6 +20,7 @@ import traceback
 
 from deploydyn import _arguments as checked
 from deploydyn import _core
+from deploydyn._overrides import override_pairs
 
 # The tags of the two messages, as app/mpi_channel.cpp uses them over MPI's C API.
 _REPORT_TAG = 1
@@ -75,13 +76,15 @@ class _Mpi4pyChannel(_core.StudyChannel):
         self._comm.Free()
 
 
-def run_study(file, out=None, jobs=None, resume=False, comm=None, stop=None):
+def run_study(file, out=None, jobs=None, resume=False, comm=None, stop=None, overrides=None):
     """Runs the study file `file` as `deploydyn study FILE` does: each case into its folder
     under `out` (default: the study file's `out`, else results/<study name>), then study.csv.
     `jobs`: cases at once in this process (default: the study's `jobs`; all at once alone, one
     per process over MPI). `resume`: keep the cases an earlier run completed for the same model.
     `comm`: an mpi4py communicator (e.g. MPI.COMM_WORLD) when the script runs under `mpirun
     -n N`: the N processes share the cases, each takes the next one when it is free.
+    `overrides` (as `load` takes them: a dict {path: value}, "PATH=VALUE" texts) change the
+    model of every case before the case's own overrides, as `deploydyn study --set` does.
 
     Returns, in process 0 (or alone), one dict per case in the study's order: name, status
     ("completed", "failed", "interrupted"), message, process (the one that ran it), resumed,
@@ -111,7 +114,8 @@ def run_study(file, out=None, jobs=None, resume=False, comm=None, stop=None):
     # the script's own messages cannot be taken for the study's.
     channel = _Mpi4pyChannel(comm.Dup()) if comm is not None and comm.Get_size() > 1 else None
     try:
-        cases = _core.run_study(file, folder, -1 if jobs is None else jobs, resume, channel, stop)
+        cases = _core.run_study(file, folder, -1 if jobs is None else jobs, resume, channel, stop,
+                                override_pairs(where, overrides))
     except BaseException:
         # The other processes may be waiting for this one: end them all rather than hang, as
         # `deploydyn study` does (the error is printed first; mpirun exits non-zero).

@@ -36,3 +36,15 @@ def test_bad_input_raises(tmp_path):
     assert error.value.line == 1 and error.value.field == "model"
     with pytest.raises(TypeError, match="jobs must be an int"):
         deploydyn.run_study(STUDY, out=tmp_path / "out", jobs=1.5)
+
+
+def test_overrides_change_every_case_as_the_command_line_set_does(tmp_path):
+    cases = deploydyn.run_study(STUDY, out=tmp_path / "py", overrides={"analysis.end": 0.05})
+    run_cli("study", STUDY, "--out", tmp_path / "cli", "--quiet", "--set", "analysis.end=0.05")
+    for case in cases:
+        summary = json.loads((tmp_path / "py" / case["name"] / "summary.json").read_text())
+        assert summary["final_time"] == pytest.approx(0.05)
+        assert (tmp_path / "py" / case["name"] / "history.csv").read_bytes() == \
+            (tmp_path / "cli" / case["name"] / "history.csv").read_bytes()
+    with pytest.raises(deploydyn.InputError, match="analysis.end"):
+        deploydyn.run_study(STUDY, out=tmp_path / "bad", overrides="analysis.end=-1")
