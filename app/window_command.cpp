@@ -8,18 +8,14 @@
 #include <optional>
 #include <stdexcept>
 
-#include "deploydyn/checks/window_verdicts.hpp"
 #include "deploydyn/io/input_error.hpp"
 #include "deploydyn/io/model_loader.hpp"
 #include "deploydyn/runs/window_folder.hpp"
 #include "deploydyn/solvers/deployability_window.hpp"
-#include "deploydyn/solvers/hinge_poses.hpp"
 #include "exit_codes.hpp"
 
 namespace deploydyn::cli {
 namespace {
-
-constexpr double kRegimeStep_C = 10.0;  // the table's ΔT interval
 
 // "LO:HI" (°C) with LO ≤ 0 ≤ HI.
 std::pair<double, double> parse_range(const std::string& text) {
@@ -86,28 +82,20 @@ int window_command(const WindowArguments& arguments, const std::atomic<bool>& st
     fmt::print(stderr, "warning: {}: the window does not use the model's environment: it imposes a uniform ΔT "
                        "over its range\n", arguments.model_file);
   }
-  if (const std::string why = spring_driven_limit(model, "the deployability window"); !why.empty()) {
-    throw InputError(arguments.model_file, 0, 0, "", why);
-  }
   WindowOptions options;
   options.coldest_C = lo;
   options.hottest_C = hi;
   options.n_positions = arguments.n_positions;
   options.n_deployments = arguments.n_deployments;
   options.stop = &stop;
-  validate(options);
-  WindowVerdicts deployment_verdicts(model);
-  deployment_verdicts.watch(options);
-  // The folder is taken before the long computation: a second window into it is refused now.
-  std::optional<WindowFolder> folder;
-  if (!arguments.out_dir.empty()) folder.emplace(arguments.out_dir, WindowOrigin{arguments.model_file, arguments.sets, options});
-  const WindowResult window = deployability_window(model, options);
-  const std::vector<Verdict> verdicts = deployment_verdicts.verdicts(window);
+  const WindowRun run = run_window(model, WindowOrigin{arguments.model_file, arguments.sets, options}, arguments.out_dir);
+  const WindowResult& window = run.window;
+  const std::vector<Verdict>& verdicts = run.verdicts;
   fmt::print("{}: deployability window, uniform ΔT {:+g} … {:+g} °C, {} driver positions over {:g} s\n",
              arguments.model_file, lo, hi, window.times_s.size(), model.analysis.end_time_s);
   fmt::print("{}\n{}\n", side_line("cold", window.cold), side_line("hot", window.hot));
   std::string previous;
-  for (double dT = lo; dT <= hi + 1e-9; dT += kRegimeStep_C) {
+  for (double dT = lo; dT <= hi + 1e-9; dT += kWindowRegimeStep_C) {
     const std::string regime = window_regime(window, dT);
     if (regime != previous) fmt::print("  from ΔT = {:+g} °C: {}\n", dT, regime);
     previous = regime;
@@ -123,7 +111,6 @@ int window_command(const WindowArguments& arguments, const std::atomic<bool>& st
   for (const WindowDeployment& d : window.deployments) {
     if (!d.failure.empty()) fmt::print(stderr, "warning: ΔT = {:+g} °C: {}\n", d.delta_t_C, d.failure);
   }
-  if (folder) folder->write(window, kRegimeStep_C, verdicts);
   const bool complete = !window.stopped && window.cold.failures.empty() && window.hot.failures.empty() &&
                         std::all_of(window.deployments.begin(), window.deployments.end(),
                                     [](const WindowDeployment& d) { return d.failure.empty(); });

@@ -46,6 +46,8 @@
 #include "deploydyn/results/plausibility.hpp"
 #include "deploydyn/output/output_error.hpp"
 #include "deploydyn/runs/run_to_folder.hpp"
+#include "deploydyn/runs/window_folder.hpp"
+#include "deploydyn/report/run_report.hpp"
 #include "deploydyn/output/summary_writer.hpp"
 #include "deploydyn/assembly/linear_system_factory.hpp"
 #include "deploydyn/solvers/analysis.hpp"
@@ -603,6 +605,37 @@ py::dict modes_at(const LoadedModel& loaded, int n_modes, std::vector<double> ti
   return out;
 }
 
+// Model.window: the deployability window as `deploydyn window` computes it (runs/window_folder.hpp),
+// into `folder` when given: window.json's text, and window.csv's columns as arrays.
+py::dict window_of(const LoadedModel& loaded, const std::string& model_file, std::vector<std::string> overrides,
+                   double coldest_C, double hottest_C, int n_positions, int n_deployments,
+                   const std::optional<std::filesystem::path>& folder, const py::object& stop) {
+  StopWatch watch(stop);
+  WindowOrigin origin{model_file, std::move(overrides), {}};
+  origin.options.coldest_C = coldest_C;
+  origin.options.hottest_C = hottest_C;
+  origin.options.n_positions = n_positions;
+  origin.options.n_deployments = n_deployments;
+  origin.options.stop = watch.flag();
+  const WindowRun run = watch.run([&] { return run_window(loaded.model, origin, folder.value_or(std::filesystem::path())); });
+  py::dict samples;
+  const auto column = [&](const char* name, double WindowSample::*member) {
+    std::vector<double> values;
+    for (const WindowSample& s : run.window.samples) values.push_back(s.*member);
+    samples[name] = py::array_t<double>(static_cast<py::ssize_t>(values.size()), values.data());
+  };
+  column("t", &WindowSample::time_s);
+  column("dT", &WindowSample::delta_t_C);
+  column("lowest_eigenvalue", &WindowSample::lowest_eigenvalue_N_m);
+  column("peak_axial_force", &WindowSample::peak_axial_force_N);
+  column("peak_mstrain", &WindowSample::peak_mechanical_strain);
+  column("driver_effort", &WindowSample::driver_effort);
+  py::dict out;
+  out["json"] = run.json;
+  out["samples"] = samples;
+  return out;
+}
+
 // A study channel written in Python (deploydyn/study.py, over mpi4py): each call takes the GIL.
 class PythonStudyChannel final : public StudyChannel {
  public:
@@ -741,6 +774,9 @@ PYBIND11_MODULE(_core, m) {
            "The model as a model file with every default explicit (save_model)")
       .def("modes", &modes_at, py::arg("n_modes"), py::arg("times"), py::arg("stop") = py::none(),
            py::arg("hinges") = "free", py::arg("from_folder") = py::none())
+      .def("window", &window_of, py::arg("model_file"), py::arg("overrides"), py::arg("coldest_C"),
+           py::arg("hottest_C"), py::arg("n_positions"), py::arg("n_deployments"), py::arg("folder") = py::none(),
+           py::arg("stop") = py::none())
       .def("continuation", &continuation_of, py::arg("parameter"), py::arg("start"), py::arg("end"),
            py::arg("eigenvalues"), py::arg("max_steps"), py::arg("time"), py::arg("switch_branch"),
            py::arg("stop_at"), py::arg("stop") = py::none())
@@ -810,6 +846,19 @@ PYBIND11_MODULE(_core, m) {
   py::class_<StudyChannel, PythonStudyChannel>(m, "StudyChannel",
                                                "How the processes of a study talk; see deploydyn.run_study")
       .def(py::init<>());
+  m.def(
+      "write_report",
+      [](const std::filesystem::path& folder, const std::filesystem::path& out, int max_frames) {
+        ReportOptions options;
+        options.max_frames = max_frames;
+        try {
+          write_run_report(folder, out, options);
+        } catch (const ReportError& error) {
+          throw py::value_error(error.what());
+        }
+      },
+      py::arg("folder"), py::arg("out"), py::arg("max_frames"),
+      "`deploydyn report`: the result folder as one self-contained HTML page (report/run_report.hpp)");
   m.def("run_study", &run_study_file, py::arg("file"), py::arg("out"), py::arg("jobs"), py::arg("resume"),
         py::arg("channel"), py::arg("stop") = py::none(), py::arg("overrides") = OverridePairs{});
   // The keys of every element type's entries, from its field table (ElementKind::fields(), as

@@ -11,6 +11,8 @@
     deploydyn.read_result("results/hot").envelopes[("2", "axial_force_N")]["max"]  # every step's peak
     deploydyn.folder_status("results/hot")      # "completed", "killed", ...
     deploydyn.run_study("study.yaml", comm=MPI.COMM_WORLD)  # a study file, also under mpirun
+    deploydyn.report("results/hot")             # results/hot/report.html, as `deploydyn report`
+    model.window(dT=(-170, 130))                # the deployability window, as `deploydyn window`
 
 Models come from a model file (`load`), from text (`loads`), from a dict in the file's layout
 (`from_dict`), or from a `ModelBuilder`. Every model, however made, is read and checked by the
@@ -58,13 +60,13 @@ history raises ValueError naming the file and line.
 #   _builder         ModelBuilder: a model in code
 #   _element_fields  the element types' keys, from the C++ field tables (ElementKind::fields())
 #   _time_functions  constant, smooth_step, ...: functions of time as the model file writes them
-#   _results         Result, RunFailed, read_result, read_envelopes, folder_status
+#   _results         Result, RunFailed, read_result, read_envelopes, folder_status, report
 #   result_folder    reading a result folder's status and history (public module)
 #   study            run_study (public module)
 from deploydyn import _core
 from deploydyn._builder import ModelBuilder
 from deploydyn._model import Model, from_dict, load, loads, roof
-from deploydyn._results import Result, RunFailed, folder_status, read_envelopes, read_result
+from deploydyn._results import Result, RunFailed, folder_status, read_envelopes, read_result, report
 from deploydyn._time_functions import (constant, cosine_ramp, cycloidal, harmonic, paper_eq23,
                                        piecewise, polynomial, smooth_step, smooth_trapezoid,
                                        sum_of, table)
@@ -80,7 +82,7 @@ __version__ = _core.__version__
 __all__ = [
     "InputError", "OutputError", "RunFailed", "IncompleteHistoryWarning", "Model", "Result",
     "ModelBuilder", "load", "loads", "from_dict", "roof", "read_result", "read_envelopes", "folder_status",
-    "run_study",
+    "report", "run_study",
     "constant", "smooth_step", "smooth_trapezoid", "paper_eq23", "table",
     "polynomial", "harmonic", "cosine_ramp", "cycloidal", "piecewise", "sum_of",
 ]

@@ -1,4 +1,4 @@
-"""Models: Model (a validated model, and what it runs: run, continuation, modes), and the ways
+"""Models: Model (a validated model, and what it runs: run, continuation, modes, window), and the ways
 to make one (load, loads, from_dict, roof). Every model is read by the C++ loader."""
 import json
 
@@ -214,6 +214,37 @@ class Model:
         out["events"] = [dict(e, mode=np.asarray(e["mode"]), axial_forces=np.asarray(e["axial_forces"]))
                          for e in raw["events"]]
         return out
+
+    def window(self, dT=(-200.0, 200.0), positions=21, deployments=9, out=None, stop=None):
+        """The deployability window, as `deploydyn window` computes it (docs/theory.md, "The
+        deployability window"): over the uniform ΔT range dT = (lo, hi), lo ≤ 0 ≤ hi (°C), where
+        the deployment stays stress-free, is stressed, jams or snaps, the thresholds located by
+        continuation in ΔT at `positions` driver positions (1 to 10 000) over the analysis time,
+        and `deployments` uniform ΔT levels (0 to 1000) deployed quasi-statically, each with its
+        verdict. With `out`, window.csv and window.json are written into that folder as the
+        command's --out writes them. Returns window.json's content as a dict ("cold" and "hot":
+        "reach", "threshold" {dT, dT_error, kind, t, description} or None, the first event per
+        position in "edges"; "regimes" every 10 °C; "deployments" with their "verdict"; "status")
+        and "samples": window.csv's columns as numpy arrays ("t", "dT", "lowest_eigenvalue",
+        "peak_axial_force", "peak_mstrain", "driver_effort"). stop: a threading.Event as for
+        run; once set, the window ends "interrupted" with what it has."""
+        where = "Model.window"
+        if checked.is_number(dT) or isinstance(dT, str) or len(dT) != 2:
+            raise TypeError(f"{where}: dT must be a pair (lo, hi) of temperature changes (°C), not {checked.shown(dT)}")
+        lo, hi = (checked.finite(where, name, value) for name, value in (("dT[0]", dT[0]), ("dT[1]", dT[1])))
+        if not lo <= 0.0 <= hi or lo == hi:
+            raise ValueError(f"{where}: dT must be (lo, hi) with lo ≤ 0 ≤ hi and lo < hi (°C), got ({lo}, {hi})")
+        positions = checked.count(where, "positions", positions)
+        deployments = checked.count(where, "deployments", deployments, minimum=0)
+        if positions > 10000 or deployments > 1000:
+            raise ValueError(f"{where}: at most 10000 positions and 1000 deployments, got {positions} and {deployments}")
+        folder = None if out is None else checked.path(where, "out", out)
+        overrides = [f"{path}={value}" for path, value in self._overrides]
+        raw = self._core.window(str(self.source), overrides, lo, hi, positions, deployments, folder,
+                                checked.stop(where, stop))
+        result = json.loads(raw["json"])
+        result["samples"] = {name: np.asarray(values) for name, values in raw["samples"].items()}
+        return result
 
     def modes(self, count=10, at=0.0, stop=None, hinges="free", from_=None):
         """Natural frequencies and modes about the static equilibrium at time(s) `at` (the

@@ -8,6 +8,7 @@ import pathlib
 import numpy as np
 
 from deploydyn import _arguments as checked
+from deploydyn import _core
 from deploydyn import result_folder
 
 
@@ -178,3 +179,21 @@ def folder_status(folder, status_file=None):
     if status_file is not None:
         status_file = checked.path("folder_status", "status_file", status_file)
     return result_folder.folder_status(folder, status_file)
+
+
+def report(folder, out=None, frames=200):
+    """Writes the result folder `folder` (of a run, a study's case, modes or a continuation) as
+    one self-contained HTML page, as `deploydyn report` does (docs/report.md): the summary,
+    zoomable time histories, the envelope table and the deployment in 3D. out: the HTML file
+    (default FOLDER/report.html), replaced only once the page is complete; frames: the most
+    animation frames (1 to 100 000), spread evenly over the history. Returns the file's path.
+    A folder the page cannot be made from raises ValueError naming the file and what is wrong;
+    a page that cannot be written raises OutputError."""
+    where = "report"
+    folder = checked.path(where, "folder", folder)
+    out = pathlib.Path(folder) / "report.html" if out is None else checked.path(where, "out", out)
+    frames = checked.count(where, "frames", frames)
+    if frames > 100_000:
+        raise ValueError(f"{where}: frames must be at most 100000, got {frames}")
+    _core.write_report(folder, out, frames)
+    return pathlib.Path(out)

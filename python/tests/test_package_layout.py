@@ -12,6 +12,8 @@ PUBLIC_NAMES_BEFORE_THE_SPLIT = {
     "RunFailed", "constant", "cosine_ramp", "cycloidal", "folder_status", "from_dict", "harmonic",
     "load", "loads", "paper_eq23", "piecewise", "polynomial", "read_envelopes", "read_result",
     "roof", "run_study", "smooth_step", "smooth_trapezoid", "sum_of", "table"}
+# Public names added since, each on purpose.
+PUBLIC_NAMES_ADDED = {"report"}
 # ... and its public modules.
 PUBLIC_MODULES_BEFORE_THE_SPLIT = {"result_folder", "study"}
 
@@ -21,8 +23,8 @@ def public(predicate):
 
 
 def test_the_public_names_are_those_before_the_split():
-    assert public(lambda x: not inspect.ismodule(x)) == PUBLIC_NAMES_BEFORE_THE_SPLIT
-    assert set(deploydyn.__all__) == PUBLIC_NAMES_BEFORE_THE_SPLIT
+    assert public(lambda x: not inspect.ismodule(x)) == PUBLIC_NAMES_BEFORE_THE_SPLIT | PUBLIC_NAMES_ADDED
+    assert set(deploydyn.__all__) == PUBLIC_NAMES_BEFORE_THE_SPLIT | PUBLIC_NAMES_ADDED
     modules = public(inspect.ismodule)
     assert PUBLIC_MODULES_BEFORE_THE_SPLIT <= modules
     # The modules by concern are private: no new public name.

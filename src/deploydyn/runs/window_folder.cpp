@@ -3,12 +3,16 @@
 #include <fmt/format.h>
 
 #include <cmath>
+#include <optional>
 #include <nlohmann/json.hpp>
 #include <system_error>
 #include <utility>
 
+#include "deploydyn/checks/window_verdicts.hpp"
+#include "deploydyn/io/input_error.hpp"
 #include "deploydyn/output/checked_file.hpp"
 #include "deploydyn/output/output_error.hpp"
+#include "deploydyn/solvers/hinge_poses.hpp"
 
 namespace deploydyn {
 namespace {
@@ -92,6 +96,24 @@ std::string window_json(const WindowOrigin& origin, const WindowResult& window, 
 }
 
 }  // namespace
+
+WindowRun run_window(const Model& model, const WindowOrigin& origin, const std::filesystem::path& folder) {
+  if (const std::string why = spring_driven_limit(model, "the deployability window"); !why.empty()) {
+    throw InputError(origin.model_file, 0, 0, "", why);
+  }
+  WindowOptions options = origin.options;
+  validate(options);
+  WindowVerdicts deployment_verdicts(model);
+  deployment_verdicts.watch(options);
+  std::optional<WindowFolder> taken;
+  if (!folder.empty()) taken.emplace(folder, origin);
+  WindowRun run;
+  run.window = deployability_window(model, options);
+  run.verdicts = deployment_verdicts.verdicts(run.window);
+  run.json = window_json(origin, run.window, kWindowRegimeStep_C, run.verdicts);
+  if (taken) taken->write(run.window, kWindowRegimeStep_C, run.verdicts);
+  return run;
+}
 
 WindowFolder::WindowFolder(const std::filesystem::path& folder, WindowOrigin origin)
     : folder_(folder, kWindowStatusFileName), origin_(std::move(origin)) {

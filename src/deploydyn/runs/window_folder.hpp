@@ -34,6 +34,22 @@ struct WindowOrigin {
   WindowOptions options;
 };
 
+// The regime table's ΔT interval in window.json (°C).
+inline constexpr double kWindowRegimeStep_C = 10.0;
+
+// A window as `deploydyn window` and Python's Model.window compute it: the result, each
+// deployment's verdict, and window.json's text.
+struct WindowRun {
+  WindowResult window;
+  std::vector<Verdict> verdicts;  // per deployment, in its order
+  std::string json;
+};
+
+// Refuses a spring-driven model (InputError naming origin.model_file); with a `folder`, takes it
+// before the long computation (a second window into it is refused at once) and writes it after.
+// `origin.options` may carry a stop flag.
+WindowRun run_window(const Model& model, const WindowOrigin& origin, const std::filesystem::path& folder = {});
+
 class WindowFolder {
  public:
   // Takes the folder (created if needed) and writes window.json saying "running". Throws

@@ -1,0 +1,70 @@
+"""Model.window and deploydyn.report: what `deploydyn window` and `deploydyn report` give, from
+Python, and their argument errors."""
+import json
+
+import numpy as np
+import pytest
+
+import deploydyn
+from conftest import SOURCE_DIR, run_cli
+
+PARALLEL = SOURCE_DIR / "examples" / "paper" / "parallel.yaml"
+BOOM = SOURCE_DIR / "examples" / "boom" / "boom.yaml"
+WINDOW = ("--dT", "-170:130", "--positions", "5", "--deployments", "3")
+
+
+def test_window_gives_what_the_command_gives(tmp_path):
+    window = deploydyn.load(PARALLEL).window(dT=(-170, 130), positions=5, deployments=3, out=tmp_path / "py")
+    run_cli("window", PARALLEL, *WINDOW, "--out", tmp_path / "cli")
+    cli = json.loads((tmp_path / "cli" / "window.json").read_text())
+    written = json.loads((tmp_path / "py" / "window.json").read_text())
+    for key in ("status", "positions", "cold", "hot", "regimes", "deployments"):
+        assert window[key] == cli[key] == written[key], key
+    # The cold parallel linkage jams at its dead centre (docs/theory.md, "The deployability
+    # window": −84.8435 °C in closed form); hot, it deploys over the whole range.
+    assert window["cold"]["threshold"]["kind"] == "limit_point"
+    assert window["cold"]["threshold"]["dT"] == pytest.approx(-84.8435, abs=1e-4)
+    assert window["hot"]["threshold"] is None
+    assert [d["regime"] for d in window["deployments"]] == ["jams", "stress-free", "stress-free"]
+    assert window["deployments"][0]["verdict"]["deploys"] is False
+    table = np.loadtxt(tmp_path / "cli" / "window.csv", delimiter=",", skiprows=1)
+    for i, name in enumerate(("t", "dT", "lowest_eigenvalue", "peak_axial_force", "peak_mstrain", "driver_effort")):
+        np.testing.assert_allclose(window["samples"][name], table[:, i], rtol=1e-15, atol=0, err_msg=name)
+
+
+def test_window_of_a_model_with_overrides_records_them():
+    window = deploydyn.load(PARALLEL, overrides={"analysis.end": 2.5}).window(dT=(-20, 20), positions=3,
+                                                                               deployments=0)
+    assert window["set"] == ["analysis.end=2.5"]
+    assert window["positions"][-1] == pytest.approx(2.5)
+    assert window["deployments"] == []
+
+
+def test_window_arguments_and_models_it_refuses():
+    model = deploydyn.load(PARALLEL)
+    with pytest.raises(ValueError, match=r"Model.window: dT must be \(lo, hi\) with lo ≤ 0 ≤ hi"):
+        model.window(dT=(10, 20))
+    with pytest.raises(TypeError, match="Model.window: dT must be a pair"):
+        model.window(dT=5)
+    with pytest.raises(TypeError, match="Model.window: positions must be an int"):
+        model.window(positions=2.0)
+    with pytest.raises(ValueError, match="at most 10000 positions"):
+        model.window(positions=10001)
+    with pytest.raises(deploydyn.InputError, match="spring"):  # a spring-driven boom has no drivers to move
+        deploydyn.load(BOOM).window()
+
+
+def test_report_writes_what_the_command_writes(tmp_path):
+    deploydyn.load(PARALLEL, overrides={"analysis.end": 0.5}).run(out=tmp_path / "run")
+    page = deploydyn.report(tmp_path / "run", frames=20)
+    assert page == tmp_path / "run" / "report.html"
+    run_cli("report", tmp_path / "run", "--frames", "20", "--out", tmp_path / "cli.html", "--quiet")
+    assert page.read_bytes() == (tmp_path / "cli.html").read_bytes()
+    assert page.read_text().lstrip().lower().startswith("<!doctype html")
+    with pytest.raises(ValueError, match="nowhere: not a folder"):
+        deploydyn.report(tmp_path / "nowhere")
+    (tmp_path / "run" / "summary.json").write_text("[1, 2]")
+    with pytest.raises(ValueError, match="summary.json"):
+        deploydyn.report(tmp_path / "run")
+    with pytest.raises(ValueError, match="report: frames must be at most 100000"):
+        deploydyn.report(tmp_path / "run", frames=100_001)
