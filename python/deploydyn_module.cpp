@@ -36,6 +36,7 @@
 #include "deploydyn/checks/verdict.hpp"
 #include "deploydyn/elements/element_kinds.hpp"
 #include "deploydyn/generators/roof.hpp"
+#include "deploydyn/generators/scissor.hpp"
 #include "deploydyn/io/input_error.hpp"
 #include "deploydyn/io/model_loader.hpp"
 #include "deploydyn/io/model_writer.hpp"
@@ -832,6 +833,38 @@ PYBIND11_MODULE(_core, m) {
       },
       py::arg("units"), py::arg("trusses"), py::arg("delta_t"), py::arg("bearings"),
       "The model file `deploydyn generate roof` writes (generators/roof.hpp)");
+  m.def(
+      "scissor_yaml",
+      [](const std::string& form, const py::dict& given) {
+        // Options not given keep the command's defaults (ScissorOptions).
+        ScissorOptions options;
+        const auto kind = kScissorForms.find(form);
+        if (!kind) throw std::invalid_argument("scissor: form must be translational, polar or ring, got '" + form + "'");
+        options.form = *kind;
+        const auto take = [&given](const char* name, auto& option) {
+          if (given.contains(name) && !given[name].is_none()) option = given[name].cast<std::decay_t<decltype(option)>>();
+        };
+        take("units", options.n_units);
+        take("span", options.span_m);
+        take("hinge_offset", options.hinge_offset);
+        take("folded_angle", options.folded_angle_deg);
+        take("deployed_angle", options.deployed_angle_deg);
+        take("elements", options.elements_per_arm);
+        take("area", options.area_m2);
+        take("inertia", options.inertia_m4);
+        take("depth", options.depth_m);
+        take("delta_t", options.delta_t_C);
+        take("gradient", options.gradient_C);
+        take("deploy_time", options.deploy_time_s);
+        take("end_time", options.end_time_s);
+        validate(options);  // std::invalid_argument → ValueError, naming the option
+        std::ostringstream out;
+        save_model(make_scissor(options), out);
+        return out.str();
+      },
+      py::arg("form"), py::arg("options"),
+      "The model file `deploydyn generate scissor` writes (generators/scissor.hpp); options by the "
+      "Python names of deploydyn.scissor, those not given as the command's defaults");
   py::class_<WorkerReport>(m, "WorkerReport", "A worker's message to process 0 (study/study_channel.hpp)")
       .def(py::init<>())
       .def_readwrite("rank", &WorkerReport::rank)

@@ -56,7 +56,7 @@ history raises ValueError naming the file and line.
 # names, so that `deploydyn.X` is the one way to reach them.
 #   _arguments       checks of Python arguments, with messages naming function and parameter
 #   _overrides       overrides as --set takes them
-#   _model           Model, load, loads, from_dict, roof: models and what they run
+#   _model           Model, load, loads, from_dict, roof, scissor: models and what they run
 #   _builder         ModelBuilder: a model in code
 #   _element_fields  the element types' keys, from the C++ field tables (ElementKind::fields())
 #   _time_functions  constant, smooth_step, ...: functions of time as the model file writes them
@@ -65,7 +65,7 @@ history raises ValueError naming the file and line.
 #   study            run_study (public module)
 from deploydyn import _core
 from deploydyn._builder import ModelBuilder
-from deploydyn._model import Model, from_dict, load, loads, roof
+from deploydyn._model import Model, from_dict, load, loads, roof, scissor
 from deploydyn._results import Result, RunFailed, folder_status, read_envelopes, read_result, report
 from deploydyn._time_functions import (constant, cosine_ramp, cycloidal, harmonic, paper_eq23,
                                        piecewise, polynomial, smooth_step, smooth_trapezoid,
@@ -82,7 +82,7 @@ __version__ = _core.__version__
 __all__ = [
     "InputError", "OutputError", "RunFailed", "IncompleteHistoryWarning", "Model", "Result",
     "ModelBuilder", "load", "loads", "from_dict", "roof", "read_result", "read_envelopes", "folder_status",
-    "report", "run_study",
+    "report", "run_study", "scissor",
     "constant", "smooth_step", "smooth_trapezoid", "paper_eq23", "table",
     "polynomial", "harmonic", "cosine_ramp", "cycloidal", "piecewise", "sum_of",
 ]

@@ -1,5 +1,5 @@
 """Models: Model (a validated model, and what it runs: run, continuation, modes, window), and the ways
-to make one (load, loads, from_dict, roof). Every model is read by the C++ loader."""
+to make one (load, loads, from_dict, roof, scissor). Every model is read by the C++ loader."""
 import json
 
 import numpy as np
@@ -354,3 +354,34 @@ def roof(units, trusses=1, delta_t=130.0, bearings="sliding", overrides=None):
     text = _core.roof_yaml(units, trusses, delta_t, bearings)
     return Model(("text", text, f"<roof of {trusses} x {units} units>", False),
                  override_pairs("roof", overrides))
+
+
+
+def scissor(form="polar", units=None, span=None, hinge_offset=None, folded_angle=None, deployed_angle=None,
+            elements=None, area=None, inertia=None, depth=None, delta_t=None, gradient=None,
+            deploy_time=None, end_time=None, overrides=None):
+    """A planar scissor structure of beams pinned at their central hinges, as `deploydyn generate
+    scissor` writes it (docs/scissor-structures.md): form "translational" (straight girder),
+    "polar" (circular arch, hinges `hinge_offset` off mid-length, a share of the half-length in
+    (0, 0.9]) or "ring" (Hoberman's angulated units; units a multiple of 4, ≥ 8), `units`
+    scissor units, deployed `span` (m: between the arch's feet, or the ring's outer diameter),
+    opening angles at the central hinges folded and deployed (degrees), `elements` beam
+    elements from a member's end to its hinge, the members' `area` (m²), `inertia` (m⁴) and
+    `depth` (m), a uniform `delta_t` and a through-depth `gradient` (°C), opened by a revolute
+    actuator in `deploy_time` and held to `end_time` (s). None (the default) takes the
+    command's default (`deploydyn generate scissor --help`: 6 units, 10 m, ΔT = 130 °C, ...). A
+    value out of range raises ValueError naming it, as the command does."""
+    where = "scissor"
+    form = checked.text(where, "form", form)
+    given = {}
+    for name, value in (("units", units), ("elements", elements)):
+        if value is not None:
+            given[name] = checked.count(where, name, value)
+    for name, value in (("span", span), ("hinge_offset", hinge_offset), ("folded_angle", folded_angle),
+                        ("deployed_angle", deployed_angle), ("area", area), ("inertia", inertia),
+                        ("depth", depth), ("delta_t", delta_t), ("gradient", gradient),
+                        ("deploy_time", deploy_time), ("end_time", end_time)):
+        if value is not None:
+            given[name] = float(checked.number(where, name, value))
+    text = _core.scissor_yaml(form, given)
+    return Model(("text", text, f"<scissor {form}>", False), override_pairs(where, overrides))

@@ -13,7 +13,7 @@ PUBLIC_NAMES_BEFORE_THE_SPLIT = {
     "load", "loads", "paper_eq23", "piecewise", "polynomial", "read_envelopes", "read_result",
     "roof", "run_study", "smooth_step", "smooth_trapezoid", "sum_of", "table"}
 # Public names added since, each on purpose.
-PUBLIC_NAMES_ADDED = {"report"}
+PUBLIC_NAMES_ADDED = {"report", "scissor"}
 # ... and its public modules.
 PUBLIC_MODULES_BEFORE_THE_SPLIT = {"result_folder", "study"}
 
