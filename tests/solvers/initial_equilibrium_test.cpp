@@ -11,6 +11,7 @@
 
 #include <cmath>
 
+#include "deploydyn/io/model_loader.hpp"
 #include "deploydyn/solvers/analysis.hpp"
 #include "support/mises_truss.hpp"
 #include "support/model_builder.hpp"
@@ -61,6 +62,38 @@ TEST(InitialEquilibrium, ACooledLoadedTrussBeyondItsSnapIsReportedAsALimitPoint)
 TEST(InitialEquilibrium, ACooledLoadedTrussShortOfItsSnapStarts) {
   const testing::RunResult run = testing::run(cooled_truss(0.9 * snap_temperature_C()));
   ASSERT_EQ(run.report.status, RunStatus::completed) << run.report.message;
+}
+
+// A heavy load at t = 0 is ramped in before the thermal strain (apply_initial_loads): a beam
+// cantilever whose 1000 kg tip mass turns its tip by 0.09 rad, more than the 2 % a load step
+// may turn an element, starts in equilibrium (it failed at 0 % while the loads came in whole).
+// The state is the one a static analysis reaches by ramping the same tip load as a function of
+// time from none.
+TEST(InitialEquilibrium, AHeavyLoadAtTheStartIsRampedIn) {
+  constexpr const char* kCantilever = R"(
+name: cantilever with a heavy tip
+nodes: {A: [0, 0], B: [1, 0], C: [2, 0]}
+materials: {steel: {E: 2.1e11}}
+elements:
+  b1: {type: beam, nodes: [A, B], material: steel, area: 1.0e-3, inertia_z: 1.0e-6, mass: 1}
+  b2: {type: beam, nodes: [B, C], material: steel, area: 1.0e-3, inertia_z: 1.0e-6, mass: 1}
+supports: [{node: A, fix: [x, y, rotation]}]
+loads: [{node: C, force: [0, -9810]}]
+analysis: {type: static, end: 1, step: 1}
+)";
+  const Model at_once = load_model_from_string(kCantilever, "cantilever.yaml");
+  const testing::RunResult started = testing::run(at_once);
+  ASSERT_EQ(started.report.status, RunStatus::completed) << started.report.message;
+  EXPECT_GT(started.report.initial_load_steps, 1);
+  const Model ramped = load_model_from_string(kCantilever, "cantilever.yaml",
+                                              parse_overrides({"loads.0.factor={type: table, points: [[0, 0], [1, 1]]}",
+                                                               "analysis.step=0.01"}));
+  const testing::RunResult followed = testing::run(ramped);
+  ASSERT_EQ(followed.report.status, RunStatus::completed) << followed.report.message;
+  const int c = testing::node_index(at_once, "C");
+  const double tip_rotation = started.records.back().q[3 * c + 2];  // x, y, rz per node
+  EXPECT_LT(tip_rotation, -0.08);  // PL²/2EI = 0.093 rad, linear
+  EXPECT_LT((started.records.back().q - followed.records.back().q).cwiseAbs().maxCoeff(), 1e-9);
 }
 
 }  // namespace

@@ -361,10 +361,25 @@ RunReport run_analysis(const Assembler& assembler, RecordSink& sink, const RunCo
     initial_path.mass_regularization =
         kFreeMotionRegularization * assembler.stiffness_scale(state.q, 0.0) / assembler.mass_scale();
   }
+  if (!free_mechanism) {
+    const StaticResult loaded = apply_initial_loads(assembler, options, options.load_steps, system, state, control);
+    report.initial_load_steps = loaded.load_steps;
+    report.initial_iterations = loaded.total_iterations;
+    if (loaded.stopped) {
+      report.status = RunStatus::interrupted;
+      report.message = fmt::format("interrupted in the initial equilibrium (loads at {:.1f}%)", 100.0 * loaded.path_factor);
+      return finish(report);
+    }
+    if (loaded.path_factor < 1.0) {
+      FailureReport f = describe_failure(assembler, "initial equilibrium", 0.0, 0, loaded.newton);
+      f.reason += fmt::format(" (loads reached {:.1f}%, before the thermal strain)", 100.0 * loaded.path_factor);
+      return fail(f);
+    }
+  }
   const StaticResult initial =
       solve_static(assembler, options, initial_path, options.load_steps, system, state, control);
-  report.initial_load_steps = initial.load_steps;
-  report.initial_iterations = initial.total_iterations;
+  report.initial_load_steps += initial.load_steps;
+  report.initial_iterations += initial.total_iterations;
   if (initial.stopped) {
     report.status = RunStatus::interrupted;
     report.message = fmt::format("interrupted in the initial equilibrium (thermal load at {:.1f}%)",

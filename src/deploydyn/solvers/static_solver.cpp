@@ -17,10 +17,11 @@ constexpr double kLargestMoveShare = 0.02;
 class StaticEquations final : public DiscreteEquations {
  public:
   StaticEquations(const Assembler& assembler, const LoadPath& path, double t,
-                  double thermal_factor, double scale)
+                  double thermal_factor, double scale, double load_factor = 1.0)
       : assembler_(assembler),
         t_(t),
         thermal_factor_(thermal_factor),
+        load_factor_(load_factor),
         scale_(scale),
         external_loads_(path.external_loads),
         mass_regularization_(path.mass_regularization) {}
@@ -30,6 +31,7 @@ class StaticEquations final : public DiscreteEquations {
     assembler_.internal_force(q, t_, thermal_factor_, internal_);
     if (external_loads_) {
       assembler_.external_force(t_, external_);
+      external_ *= load_factor_;
     } else {
       external_.setZero(q.size());
     }
@@ -47,7 +49,7 @@ class StaticEquations final : public DiscreteEquations {
 
  private:
   const Assembler& assembler_;
-  double t_, thermal_factor_, scale_;
+  double t_, thermal_factor_, load_factor_, scale_;
   bool external_loads_;
   double mass_regularization_;
   Eigen::VectorXd internal_, external_, reaction_;
@@ -72,7 +74,8 @@ StaticResult solve_static(const Assembler& assembler, const AnalysisOptions& opt
     const double target = std::min(1.0, result.path_factor + increment);
     const double t = path.start_time_s + target * (path.end_time_s - path.start_time_s);
     const double thermal = path.start_thermal + target * (path.end_thermal - path.start_thermal);
-    StaticEquations equations(assembler, path, t, thermal, scale);
+    const double loads = path.start_loads + target * (path.end_loads - path.start_loads);
+    StaticEquations equations(assembler, path, t, thermal, scale, loads);
     Eigen::VectorXd q = state.q;
     Eigen::VectorXd lambda = state.lambda;
     result.newton = newton.solve(equations, system, q, lambda);
@@ -106,6 +109,18 @@ StaticResult solve_static(const Assembler& assembler, const AnalysisOptions& opt
   return result;
 }
 
+StaticResult apply_initial_loads(const Assembler& assembler, const AnalysisOptions& options, int load_steps,
+                                 LinearSystem& system, MotionState& state, const RunControl& control) {
+  Eigen::VectorXd loads;
+  assembler.external_force(state.time_s, loads);
+  if (loads.isZero()) {
+    StaticResult none;
+    none.path_factor = 1.0;
+    return none;
+  }
+  return solve_static(assembler, options, LoadPath::load_ramp(state.time_s), load_steps, system, state, control);
+}
+
 StaticResult solve_equilibrium_at(const Assembler& assembler, double t, LinearSystem& system,
                                   MotionState& state, const RunControl& control) {
   state = MotionState{};
@@ -118,7 +133,14 @@ StaticResult solve_equilibrium_at(const Assembler& assembler, double t, LinearSy
     initial.mass_regularization =
         kFreeMotionRegularization * assembler.stiffness_scale(state.q, 0.0) / assembler.mass_scale();
   }
+  StaticResult loaded;
+  if (assembler.rigid_mobility() == 0) {
+    loaded = apply_initial_loads(assembler, options, options.load_steps, system, state, control);
+    if (loaded.path_factor < 1.0 || loaded.stopped) return loaded;
+  }
   StaticResult result = solve_static(assembler, options, initial, options.load_steps, system, state, control);
+  result.load_steps += loaded.load_steps;
+  result.total_iterations += loaded.total_iterations;
   if (result.path_factor < 1.0 || result.stopped || t <= 0.0) return result;
   LoadPath to_t = LoadPath::time_step(0.0, t);
   to_t.mass_regularization = initial.mass_regularization;

@@ -1,8 +1,8 @@
 #pragma once
 // Static (kinematic) equilibrium, paper Eq. (7) with thermal strain:
 //   f_int(q, t) − f_ext(t) + Bᵀλ = 0,   Φ(q, t) = 0
-// Used for the initial thermal equilibrium (the thermal strain ramped from 0 to 1 at t = 0;
-// for a free mechanism in a dynamic run without the loads, see LoadPath)
+// Used for the initial equilibrium (the loads at t = 0 ramped in, then the thermal strain from 0
+// to 1 with them; for a free mechanism in a dynamic run without the loads, see LoadPath)
 // and for quasi-static deployment (time ramped over one step). The ramp, a LoadPath, is
 // followed in load steps; a step is halved (down to 1/1024 of the whole) when its
 // Newton solve fails or when it changes a bar's vector x_b − x_a by more than 2 % of the bar's
@@ -32,8 +32,13 @@ struct LoadPath {
   // (weight × M) so that Newton takes the least motion along the free directions.
   bool external_loads = true;
   double mass_regularization = 0.0;  // 1/s²; 0: none
+  // Share of the external loads (gravity, nodal loads at the path's time) along the path.
+  double start_loads = 1.0, end_loads = 1.0;
 
   static LoadPath thermal_ramp(double t) { return {t, t, 0.0, 1.0}; }
+  // The loads at t ramped in from none, without thermal strain: the first part of an initial
+  // equilibrium (apply_initial_loads).
+  static LoadPath load_ramp(double t) { return {t, t, 0.0, 0.0, true, 0.0, 0.0, 1.0}; }
   static LoadPath time_step(double from_s, double to_s) { return {from_s, to_s, 1.0, 1.0}; }
 };
 
@@ -50,6 +55,13 @@ struct StaticResult {
 StaticResult solve_static(const Assembler& assembler, const AnalysisOptions& options,
                           const LoadPath& path, int load_steps, LinearSystem& system,
                           MotionState& state, const RunControl& control = {});
+
+// The loads at t = 0 (gravity, nodal loads), ramped in from none in at least `load_steps`
+// steps before the thermal strain is (LoadPath::load_ramp): a heavy load turns a beam by more
+// than a load step may (the 2 % rule above), and only a load that grows can be followed.
+// Returns path_factor 1 at once for a model without loads at t = 0.
+StaticResult apply_initial_loads(const Assembler& assembler, const AnalysisOptions& options, int load_steps,
+                                 LinearSystem& system, MotionState& state, const RunControl& control = {});
 
 // The static equilibrium at time `t` from the model's initial state: the thermal strain (and
 // loads) applied at t = 0 in the model's load steps, then the drivers and loads followed from
