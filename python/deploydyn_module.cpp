@@ -425,6 +425,12 @@ py::list drivers_info(const Model& model) {
         if (model.dimension == 3) d["axis"] = vector_info(driver.axis);
         break;
       }
+      case Driver::Kind::length: {
+        py::list nodes;
+        for (const int node : driver.ends) nodes.append(model.nodes[node].name);
+        d["nodes"] = nodes;
+        break;
+      }
     }
     const bool rate = driver.reading == DriverReading::rate;
     if (drives_rotation(driver.kind)) {

@@ -11,6 +11,7 @@
 
 #include "deploydyn/constraints/driven_bar_angle.hpp"
 #include "deploydyn/constraints/driven_hinge_angle.hpp"
+#include "deploydyn/constraints/driven_length.hpp"
 #include "deploydyn/constraints/driven_revolute.hpp"
 #include "deploydyn/constraints/frame_support.hpp"
 #include "deploydyn/constraints/pin_joint.hpp"
@@ -119,6 +120,13 @@ std::vector<Case> cases() {
                                                     std::vector<int>{9, 6, 3}, Eigen::Vector3d(1.0, 0.2, -0.3),
                                                     Eigen::Vector3d(0.1, 0.1, 0.2), Eigen::Vector3d(-0.3, 0.8, 0.5),
                                                     tilted_axis, driver_motion(), "h")});
+  const DriverMotion stroke(TimeFunction(TimeFunction::SmoothStep{0.0, 0.0, 1.0, 0.3}), DriverReading::value);
+  out.push_back({"length 2D", std::make_unique<DrivenLength>(std::vector<int>{6, 7}, std::vector<int>{1, 3},
+                                                             Eigen::Vector3d(0.1, 0.2, 0.0),
+                                                             Eigen::Vector3d(0.5, 0.9, 0.0), stroke, "l")});
+  out.push_back({"length 3D", std::make_unique<DrivenLength>(std::vector<int>{8, 0, 5}, std::vector<int>{2, 4, 1},
+                                                             Eigen::Vector3d(0.1, 0.2, -0.3),
+                                                             Eigen::Vector3d(0.7, -0.1, 0.4), driver_motion(), "l")});
   return out;
 }
 
@@ -334,6 +342,27 @@ TEST(ConstraintDerivatives, DriverTorqueIsThePowerOfTheConstraintForce) {
                   .maxCoeff(),
               kTorqueTolerance)
         << dimension << "D";
+  }
+}
+
+// The actuator's force is the power of its constraint force per unit of extension: moving B
+// by δ along the line A→B (the actuator longer by δ) takes −Bᵀλ · δ = effort · δ, the effort
+// positive when it pushes the ends apart.
+TEST(ConstraintDerivatives, LengthDriverEffortIsThePowerOfItsForceAlongTheLine) {
+  for (int dimension : {2, 3}) {
+    const std::vector<int> a = dimension == 2 ? std::vector<int>{6, 7} : std::vector<int>{8, 0, 5};
+    const std::vector<int> b = dimension == 2 ? std::vector<int>{1, 3} : std::vector<int>{2, 4, 1};
+    const Eigen::Vector3d xa(0.1, 0.2, dimension == 2 ? 0.0 : -0.3), xb(0.7, -0.1, dimension == 2 ? 0.0 : 0.4);
+    const DrivenLength actuator(a, b, xa, xb, driver_motion(), "l");
+    Eigen::VectorXd q = Eigen::VectorXd::Zero(kDofs);
+    for (int i = 0; i < dimension; ++i) q[a[i]] = xa[i], q[b[i]] = xb[i];
+    const Eigen::VectorXd lambda = Eigen::VectorXd::Constant(1, 2.5);
+    const Eigen::VectorXd constraint_force = -(global_jacobian(actuator, q, 0.3).transpose() * lambda);
+    Eigen::VectorXd longer = Eigen::VectorXd::Zero(kDofs);
+    const Eigen::Vector3d along = (xb - xa).normalized();
+    for (int i = 0; i < dimension; ++i) longer[b[i]] = along[i];
+    EXPECT_NEAR(actuator.effort(q, 0.3, lambda), constraint_force.dot(longer), kTorqueTolerance) << dimension << "D";
+    EXPECT_LT(actuator.effort(q, 0.3, lambda), 0.0) << "λ > 0 pulls the ends together";
   }
 }
 

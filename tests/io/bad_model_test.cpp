@@ -230,6 +230,13 @@ const BadModelCase kBadModels[] = {
      "needs the clearance watch: remove 'clearance: false', or this key"},
     {"driver_force_limit_on_turning_driver.yaml", 7, "drivers.motor.force_limit",
      "unknown key 'force_limit'; did you mean 'torque_limit'?"},
+    // A linear actuator (`type: length`).
+    {"length_driver_ends_at_one_point.yaml", 4, "drivers.jack.nodes.1",
+     "node 'C' is at node 'A'; an actuator's ends must be apart"},
+    {"length_driver_three_nodes.yaml", 4, "drivers.jack.nodes", "got 3 item(s)"},
+    {"length_driver_angle_reading.yaml", 4, "drivers.jack.reading", "must be one of velocity, displacement, got 'angle'"},
+    {"length_driver_torque_limit.yaml", 4, "drivers.jack.torque_limit",
+     "unknown key 'torque_limit'; did you mean 'force_limit'?"},
     // Initial velocities (docs/model-format.md, `initial_velocities`).
     {"initial_velocities_in_static_analysis.yaml", 6, "initial_velocities",
      "sets the velocities a dynamic run starts with; analysis type static starts at rest"},

@@ -173,6 +173,9 @@ void expect_equal_models(const Model& a, const Model& b) {
         EXPECT_EQ(x.hinge_nodes, y.hinge_nodes);
         EXPECT_EQ(x.axis, y.axis);
         break;
+      case Driver::Kind::length:
+        EXPECT_EQ(x.ends, y.ends);
+        break;
     }
   }
   ASSERT_EQ(a.joints.size(), b.joints.size());
@@ -309,6 +312,7 @@ drivers:
   expect_round_trip(load_model(fmt::format("{}/examples/petal/petal.yaml", DEPLOYDYN_SOURCE_DIR)));
   // Ball and universal joints, offsets, a hinge to ground and an offset support.
   expect_round_trip(load_model(fmt::format("{}/examples/joints/cardan_shaft.yaml", DEPLOYDYN_SOURCE_DIR)));
+  expect_round_trip(load_model(fmt::format("{}/examples/checks/luffing_boom.yaml", DEPLOYDYN_SOURCE_DIR)));  // length driver
   expect_round_trip(load_model_from_string(R"(
 nodes: {A: [0, 0, 0], B: [1, 0, 0], C: [1, 0, 0.1], D: [2, 0, 0.1], E: [2, 0, 0.1]}
 materials: {steel: {E: 2.0e11, density: 7800}}

@@ -9,6 +9,7 @@
 #include <stdexcept>
 
 #include "deploydyn/constraints/driven_hinge_angle.hpp"
+#include "deploydyn/constraints/driven_length.hpp"
 #include "deploydyn/constraints/driven_revolute.hpp"
 #include "deploydyn/constraints/frame_orthonormality.hpp"
 #include "deploydyn/constraints/frame_support.hpp"
@@ -182,6 +183,12 @@ std::unique_ptr<Constraint> make_driver(const Driver& driver, const Model& model
           model.nodes[a].position_m, model.nodes[h].position_m, model.nodes[b].position_m, axis, motion,
           label + " (hinge angle " + model.nodes[a].name + "–" + model.nodes[h].name + "–" +
               model.nodes[b].name + ")");
+    }
+    case Driver::Kind::length: {
+      const auto [a, b] = driver.ends;
+      return std::make_unique<DrivenLength>(position_dofs(a, model, dofs), position_dofs(b, model, dofs),
+                                            model.nodes[a].position_m, model.nodes[b].position_m, motion,
+                                            label + " (length " + model.nodes[a].name + "–" + model.nodes[b].name + ")");
     }
     case Driver::Kind::bar_angle:
       break;

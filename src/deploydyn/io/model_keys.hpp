@@ -49,6 +49,8 @@ inline constexpr std::array<std::string_view, 5> kRevoluteDriver{"type", "joint"
                                                                  "torque_limit"};
 inline constexpr std::array<std::string_view, 6> kCoordinateDriver{"type", "node", "direction",
                                                                    "profile", "reading", "force_limit"};
+inline constexpr std::array<std::string_view, 5> kLengthDriver{"type", "nodes", "profile", "reading",
+                                                               "force_limit"};
 inline constexpr std::array<std::string_view, 4> kLoad{"node", "force", "moment", "factor"};
 inline constexpr std::array<std::string_view, 2> kInitialVelocities{"spin", "nodes"};
 inline constexpr std::array<std::string_view, 3> kSpin{"rate", "centre", "axis"};
@@ -99,7 +101,7 @@ struct Section {
   Keys keys;
 };
 
-inline constexpr std::array<Section, 50> kSections{{
+inline constexpr std::array<Section, 51> kSections{{
     {"top level", "### Top level", kTopLevel},
     {"nodes.NAME", "### `nodes`", kNode},
     {"materials.NAME", "### `materials`", kMaterial},
@@ -119,6 +121,7 @@ inline constexpr std::array<Section, 50> kSections{{
     {"drivers.NAME (type: hinge_angle)", "### `drivers`", kHingeAngleDriver},
     {"drivers.NAME (type: revolute)", "### `drivers`", kRevoluteDriver},
     {"drivers.NAME (type: coordinate)", "### `drivers`", kCoordinateDriver},
+    {"drivers.NAME (type: length)", "### `drivers`", kLengthDriver},
     {"loads.N", "### `loads`", kLoad},
     {"analysis (type: static or dynamic)", "### `analysis`", kAnalysis},
     {"analysis.integrator", "#### `integrator`", kIntegrator},

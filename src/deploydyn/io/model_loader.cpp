@@ -1071,6 +1071,9 @@ class ModelReader {
         case Driver::Kind::hinge_angle:
           read_hinge_angle(spec, driver);
           break;
+        case Driver::Kind::length:
+          read_length(spec, driver);
+          break;
       }
       driver.profile = function(spec.at("profile"));
       const bool turns = drives_rotation(driver.kind);
@@ -1135,6 +1138,22 @@ class ModelReader {
       }
     }
     driver.reading = reading(spec, {"angular_velocity", "angle"});
+  }
+
+  // A linear actuator between nodes A and B: their distance, from its initial value by the
+  // profile (constraints/driven_length.hpp).
+  void read_length(const YamlValue& spec, Driver& driver) const {
+    spec.expect_keys(model_keys::kLengthDriver);
+    const YamlValue nodes = spec.at("nodes");
+    const auto names = nodes.items(2, 2, "node names [A, B]: the actuator's two ends");
+    for (std::size_t k = 0; k < 2; ++k) driver.ends[k] = nodes_.find(names[k]);
+    const auto [a, b] = driver.ends;
+    if ((model_.nodes[a].position_m - model_.nodes[b].position_m).norm() == 0.0) {
+      names[1].fail(fmt::format("node '{}' is at node '{}'; an actuator's ends must be apart (its direction is "
+                                "the line between them)",
+                                model_.nodes[b].name, model_.nodes[a].name));
+    }
+    driver.reading = reading(spec, {"velocity", "displacement"});
   }
 
   void read_hinge_angle(const YamlValue& spec, Driver& driver) const {

@@ -439,6 +439,12 @@ void emit_boundary_conditions(YAML::Emitter& out, const Model& model) {
             emit_vector(out, driver.axis, 3);
           }
           break;
+        case Driver::Kind::length:
+          emit_key(out, "nodes");
+          out << YAML::Flow << YAML::BeginSeq;
+          for (const int node : driver.ends) out << model.nodes[node].name;
+          out << YAML::EndSeq;
+          break;
       }
       emit_key(out, "reading");
       if (drives_rotation(driver.kind)) {

@@ -79,6 +79,7 @@ struct Driver {
     revolute,     // turns node B of a pin joint relative to node A about the joint's axis
                   // (nodes with rotations: beams); 1 equation
     hinge_angle,  // the angle from H→A to H→B about an axis (bars); 1 equation
+    length,       // a linear actuator: the distance between two nodes; 1 equation
   };
   std::string name;
   Kind kind = Kind::bar_angle;
@@ -90,6 +91,7 @@ struct Driver {
   int direction = 0;  // coordinate: 0 = x, 1 = y, 2 = z
   int joint = 0;    // revolute: index into Model::joints
   std::array<int, 3> hinge_nodes{};  // hinge_angle: A, H, B
+  std::array<int, 2> ends{};         // length: A, B, the actuator's two ends
   TimeFunction profile;
   DriverReading reading = DriverReading::rate;
   // The largest |effort| the actuator can give: torque (N·m) when it turns, else force (N);
@@ -102,10 +104,13 @@ inline constexpr NameTable kDriverKinds{std::array{
     NamedValue<Driver::Kind>{Driver::Kind::coordinate, "coordinate"},
     NamedValue<Driver::Kind>{Driver::Kind::revolute, "revolute"},
     NamedValue<Driver::Kind>{Driver::Kind::hinge_angle, "hinge_angle"},
+    NamedValue<Driver::Kind>{Driver::Kind::length, "length"},
 }};
 // Whether a driver of this type turns something (its effort is a torque, N·m, and its profile
-// an angle or angular velocity) rather than moving a coordinate (a force, N).
-constexpr bool drives_rotation(Driver::Kind kind) { return kind != Driver::Kind::coordinate; }
+// an angle or angular velocity) rather than moving a coordinate or a length (a force, N).
+constexpr bool drives_rotation(Driver::Kind kind) {
+  return kind != Driver::Kind::coordinate && kind != Driver::Kind::length;
+}
 
 // External force on a node: force_N · factor(t); in 2D also a moment on a beam's node.
 struct NodalLoad {
