@@ -7,7 +7,9 @@
 #include <fmt/format.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <atomic>
+#include <cmath>
 #include <chrono>
 #include <csignal>
 #include <cstdio>
@@ -38,6 +40,7 @@
 #include "exit_codes.hpp"
 #include "generate_command.hpp"
 #include "modes_command.hpp"
+#include "plot_command.hpp"
 #include "report_command.hpp"
 #include "window_command.hpp"
 #include "study_command.hpp"
@@ -208,6 +211,27 @@ std::string initial_motion(const Model& model, const Assembler& assembler, bool 
                      fmt::join(parts, " + "), 0.5 * v.dot(mass_times_v));
 }
 
+// Which beams bend under a through-depth temperature difference (docs/model-format.md, a beam's
+// `dT_gradient_y`/`_z`; `environment.section_gradients`); "" for a model without beams.
+std::string through_depth_gradients(const Model& model, bool list_all) {
+  if (model.beams.empty()) return "";
+  if (model.environment && model.environment->section_gradients) {
+    return fmt::format("through-depth ΔT on all {} beams from the environment, each step "
+                       "(environment.section_gradients)", model.beams.size());
+  }
+  std::vector<std::string> graded;
+  double largest_C = 0.0;
+  for (const BeamElement& beam : model.beams) {
+    if (!beam.gradient_y_given && !beam.gradient_z_given) continue;
+    graded.push_back(beam.name);
+    largest_C = std::max({largest_C, std::abs(beam.temperature_gradient_y_C.value(0.0)),
+                          std::abs(beam.temperature_gradient_z_C.value(0.0))});
+  }
+  if (graded.empty()) return "none: no beam has a through-depth ΔT (dT_gradient_y, dT_gradient_z), uniform ΔT only";
+  return fmt::format("through-depth ΔT on {} of {} beams, largest |ΔT| across the depth at t = 0: {:g} °C: {}",
+                     graded.size(), model.beams.size(), largest_C, listed(graded, list_all));
+}
+
 int check_command(const std::string& model_file, const std::vector<std::string>& sets, bool list_all) {
   const Model model = load_model(model_file, parse_overrides(sets));
   const Assembler assembler(model);
@@ -316,6 +340,9 @@ int check_command(const std::string& model_file, const std::vector<std::string>&
   }
   fmt::print("thermal     ΔT(0) = {:g} °C on {} without their own\n", model.temperature_change_C.value(0.0),
              elements_word);
+  if (const std::string gradients = through_depth_gradients(model, list_all); !gradients.empty()) {
+    fmt::print("gradients   {}\n", gradients);
+  }
   if (a.type == AnalysisType::continuation) {
     const ContinuationSettings& c = a.continuation;
     fmt::print("analysis    continuation in the {} parameter μ from {:g} to {:g}, at most {} steps, {} "
@@ -434,12 +461,15 @@ int main(int argc, char** argv) {
   CLI::App* window = cli::add_window_command(app, window_arguments);
   cli::ReportArguments report_arguments;
   CLI::App* report = cli::add_report_command(app, report_arguments);
+  CLI::App* plot = cli::add_plot_command(app);
+  CLI::App* animate = cli::add_animate_command(app);
 
   // CLI11 would only say "a subcommand is required"; name the word it did not know instead.
   if (const std::string first = argc > 1 ? argv[1] : "-"; first[0] != '-' && first != "run" && first != "check" &&
                                                             first != "generate" && first != "study" && first != "modes" && first != "window" &&
-                                                            first != "report") {
-    fmt::print(stderr, "error: unknown command '{}'; commands are run, check, modes, window, generate, study and report (see --help)\n", first);
+                                                            first != "report" && first != "plot" && first != "animate") {
+    fmt::print(stderr, "error: unknown command '{}'; commands are run, check, modes, window, generate, study, report, "
+                       "plot and animate (see --help)\n", first);
     return kExitBadInput;
   }
   try {
@@ -457,6 +487,8 @@ int main(int argc, char** argv) {
     if (*generate) return cli::generate_command(generate_arguments);
     if (*modes) return cli::modes_command(modes_arguments, g_stop);
     if (*report) return cli::report_command(report_arguments);
+    if (*plot) return cli::run_plot_script("deploydyn_plot.py", plot->remaining());
+    if (*animate) return cli::run_plot_script("deploydyn_animate.py", animate->remaining());
     if (*window) return cli::window_command(window_arguments, g_stop);
     if (*study) return cli::study_command(study_arguments, g_stop);
     return check_command(model_file, sets, list_all);

@@ -3,6 +3,7 @@
 // their arrays and extremes, and the moments are the statics of a cantilever.
 #include <gtest/gtest.h>
 
+#include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
 
@@ -60,6 +61,24 @@ TEST(CliBeam, HistoryVtkAndSummaryCarryRotationsAndMoments) {
   const auto summary = nlohmann::json::parse(testing::read_text(out / "summary.json"));
   EXPECT_NEAR(summary["elements"]["b1"]["moment"]["min"].get<double>(), -kTipLoad_N * 0.75,
               kStaticsTolerance * kTipLoad_N);
+}
+
+// `check` says which beams bend under a through-depth temperature difference, and how much.
+TEST(CliBeam, CheckTellsTheThroughDepthGradients) {
+  testing::ScratchFolder folder("cli_beam_gradients");
+  std::filesystem::create_directories(folder.path());
+  const auto file = folder.path() / "cantilever.yaml";
+  std::ofstream(file) << kCantilever;
+  const testing::CliOutcome uniform = testing::run_cli("check " + file.string());
+  ASSERT_EQ(uniform.exit_code, 0) << uniform.output;
+  EXPECT_NE(uniform.output.find("gradients   none: no beam has a through-depth ΔT"), std::string::npos) << uniform.output;
+  const testing::CliOutcome graded = testing::run_cli(
+      "check " + file.string() + " --set elements.b2.height_y=0.01 --set elements.b2.dT_gradient_y=-12.5");
+  ASSERT_EQ(graded.exit_code, 0) << graded.output;
+  EXPECT_NE(graded.output.find("gradients   through-depth ΔT on 1 of 2 beams, largest |ΔT| across the depth at t = 0: "
+                               "12.5 °C: b2"),
+            std::string::npos)
+      << graded.output;
 }
 
 }  // namespace
