@@ -192,4 +192,21 @@ TEST_F(Cli, SolverFailureExitsWithOneAndKeepsTheResults) {
   EXPECT_GT(std::count(history.begin(), history.end(), '\n'), 1 + 50);
 }
 
+// `deploydyn plot` and `deploydyn animate` run the plot scripts from any folder, every word
+// after the command theirs (--help too), and their exit code is the command's.
+TEST_F(Cli, PlotAndAnimateRunTheScripts) {
+  fs::create_directories(folder_);
+  const std::string run_folder = (folder_ / "run").string();
+  ASSERT_EQ(run_cli("run " + example("parallel.yaml") + " --quiet --set analysis.end=0.2 --out " + run_folder).exit_code,
+            0);
+  const auto plotted = run_cli("plot " + run_folder + " --what driver --format png --out " + (folder_ / "plots").string());
+  ASSERT_EQ(plotted.exit_code, 0) << plotted.output;
+  EXPECT_TRUE(fs::exists(folder_ / "plots" / "driver.png")) << plotted.output;
+  const auto help = run_cli("animate --help");
+  EXPECT_EQ(help.exit_code, 0) << help.output;
+  EXPECT_NE(help.output.find("usage: deploydyn_animate.py"), std::string::npos) << help.output;
+  const auto missing = run_cli("plot " + (folder_ / "nowhere").string());
+  EXPECT_NE(missing.exit_code, 0) << missing.output;
+}
+
 }  // namespace

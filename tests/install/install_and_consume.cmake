@@ -27,6 +27,13 @@ if(NOT libraries OR NOT configs)
   message(FATAL_ERROR "not installed: lib/.../libdeploydyn.a or lib/.../cmake/deploydyn/deploydynConfig.cmake")
 endif()
 run_step("installed command" ${PREFIX}/bin/deploydyn check ${MODEL})
+# The plot scripts, installed beside the command, from a folder outside the source tree.
+run_step("installed run" ${PREFIX}/bin/deploydyn run ${MODEL} --quiet --set analysis.end=0.1 --out ${PREFIX}/run)
+execute_process(COMMAND ${PREFIX}/bin/deploydyn plot run --what driver --format png --out plots
+                WORKING_DIRECTORY ${PREFIX} RESULT_VARIABLE plotted OUTPUT_VARIABLE output ERROR_VARIABLE output)
+if(NOT plotted EQUAL 0 OR NOT EXISTS ${PREFIX}/plots/driver.png)
+  message(FATAL_ERROR "installed deploydyn plot failed (${plotted}):\n${output}")
+endif()
 
 # Only the prefix: no package registry, and the consumer finds Eigen, yaml-cpp, fmt and FCL itself
 # through deploydynConfig.cmake.
