@@ -13,6 +13,7 @@
 #include "deploydyn/assembly/klu_linear_system.hpp"
 #include "deploydyn/assembly/linear_system_factory.hpp"
 #include "deploydyn/io/model_loader.hpp"
+#include "deploydyn/solvers/static_solver.hpp"
 #include "support/model_builder.hpp"
 
 namespace deploydyn {
@@ -163,6 +164,47 @@ TEST(LinearSystem, SingularMatrixIsFoundAndItsFreeMotionNamed) {
                                Eigen::VectorXd::Zero(assembler.n_equations()), {0.0, 1.0, 1e9}, *system);
     expect_free_sideways_motion(assembler, system->factorize());
   }
+}
+
+// Deferred (a solver that retries, solvers/static_solver.cpp), a singular factorization leaves the
+// SVD out, the dense back end then giving no null vector; null_vector() computes it on demand and
+// names the same free motion.
+TEST(LinearSystem, DeferredNullVectorIsComputedOnDemand) {
+  const Model model = straight_chain(10);
+  const Assembler assembler(model);
+  const auto system = make_linear_system(assembler, LinearSolverKind::dense);
+  assembler.iteration_matrix(assembler.initial_coordinates(), 0.0, 1.0,
+                             Eigen::VectorXd::Zero(assembler.n_equations()), {0.0, 1.0, 1e9}, *system);
+  system->defer_null_vector(true);
+  FactorizationStatus status = system->factorize();
+  EXPECT_FALSE(status.ok);
+  EXPECT_EQ(status.null_vector.size(), 0);
+  status.null_vector = system->null_vector();
+  expect_free_sideways_motion(assembler, status);
+}
+
+// The static solver halves a singular load step down to 1/1024 and reports the free motion of its
+// last attempt, named as an undeferred factorization names it.
+TEST(LinearSystem, StaticSolverNamesTheFreeMotionOfItsLastAttempt) {
+  Model model = straight_chain(10);
+  model.analysis.type = AnalysisType::quasi_static;
+  model.loads.push_back(NodalLoad{.node = 10, .force_N = Eigen::Vector3d(0.0, 1.0, 0.0)});  // sideways at the tip
+  const Assembler assembler(model);
+  const auto system = make_linear_system(assembler, LinearSolverKind::dense);
+  MotionState state;
+  state.q = assembler.initial_coordinates();
+  state.v = state.a = Eigen::VectorXd::Zero(assembler.n_dofs());
+  state.lambda = Eigen::VectorXd::Zero(assembler.n_equations());
+  const StaticResult result =
+      solve_static(assembler, model.analysis, LoadPath::thermal_ramp(0.0), 1, *system, state);
+  EXPECT_FALSE(result.newton.converged);
+  EXPECT_TRUE(result.newton.singular);
+  EXPECT_FALSE(system->null_vector_deferred());  // restored
+  FactorizationStatus status;
+  status.ok = false;
+  status.message = result.newton.failure;
+  status.null_vector = result.newton.null_vector;
+  expect_free_sideways_motion(assembler, status);
 }
 
 TEST(LinearSystem, LargeSingularMatrixNamesAFreeCoordinateWithoutAnSvd) {

@@ -44,12 +44,15 @@ FactorizationStatus LinearSystem::singular(double reciprocal_condition) const {
       "the iteration matrix is singular (reciprocal condition {:.2e}): a free mechanism "
       "motion, or redundant or conflicting constraints",
       reciprocal_condition);
-  if (size_ <= kLargestSvdDiagnosis) {
-    // The right singular vector of the smallest singular value spans the (near) null space.
-    const Eigen::BDCSVD<Eigen::MatrixXd> svd(to_dense(), Eigen::ComputeFullV);
-    status.null_vector = svd.matrixV().col(svd.matrixV().cols() - 1);
-  }
+  if (!defer_null_vector_) status.null_vector = null_vector();
   return status;
+}
+
+Eigen::VectorXd LinearSystem::null_vector() const {
+  if (size_ > kLargestSvdDiagnosis) return {};
+  // The right singular vector of the smallest singular value spans the (near) null space.
+  const Eigen::BDCSVD<Eigen::MatrixXd> svd(to_dense(), Eigen::ComputeFullV);
+  return svd.matrixV().col(svd.matrixV().cols() - 1);
 }
 
 }  // namespace deploydyn

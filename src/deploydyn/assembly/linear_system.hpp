@@ -58,6 +58,13 @@ class LinearSystem {
 
   // The matrix as dense, for diagnosis of small systems and for tests.
   Eigen::MatrixXd to_dense() const;
+  // The unit vector the current matrix (nearly) maps to zero, from a dense SVD; empty above 2000
+  // unknowns. A singular factorization reports it, unless deferred: a solver that retries a
+  // singular matrix (load steps halved) asks for it once, for the failure it reports (the SVD
+  // of 1248 unknowns takes about a second).
+  Eigen::VectorXd null_vector() const;
+  void defer_null_vector(bool defer) { defer_null_vector_ = defer; }
+  bool null_vector_deferred() const { return defer_null_vector_; }
 
  protected:
   // factorize() once the values are known to be finite.
@@ -77,6 +84,7 @@ class LinearSystem {
   int size_ = 0;
   long factorizations_ = 0;
   std::vector<int> slots_;
+  bool defer_null_vector_ = false;
   std::vector<double> values_;
 };
 

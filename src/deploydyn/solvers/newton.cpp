@@ -99,6 +99,7 @@ NewtonResult NewtonSolver::iterate(DiscreteEquations& equations, LinearSystem& s
         factored_system_ = nullptr;
         result.failure = status.message;
         result.null_vector = status.null_vector;
+        result.singular = true;
         return result;
       }
       lu_current = reuse;

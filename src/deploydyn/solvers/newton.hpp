@@ -37,6 +37,7 @@ struct NewtonResult {
   int worst_equation = -1;             // index of the largest |Φ|
   std::string failure;                 // why it did not converge
   Eigen::VectorXd null_vector;         // when the matrix was singular (see FactorizationStatus)
+  bool singular = false;               // the failure was a singular matrix
 };
 
 // Keeps its work vectors from one solve to the next: no heap work in a time step's Newton loop.

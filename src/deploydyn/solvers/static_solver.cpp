@@ -66,6 +66,14 @@ StaticResult solve_static(const Assembler& assembler, const AnalysisOptions& opt
   const double requested_increment = 1.0 / std::max(load_steps, 1);
   double increment = requested_increment;
   NewtonSolver newton(options.newton);
+  // Halved steps may meet the same singular matrix again and again: its null vector is computed
+  // once, for the failure reported (LinearSystem::null_vector).
+  struct DeferredNullVector {
+    LinearSystem& system;
+    bool before = system.null_vector_deferred();
+    explicit DeferredNullVector(LinearSystem& s) : system(s) { system.defer_null_vector(true); }
+    ~DeferredNullVector() { system.defer_null_vector(before); }
+  } deferred(system);
   while (result.path_factor < 1.0) {
     if (stop_requested(control)) {
       result.stopped = true;
@@ -88,6 +96,9 @@ StaticResult solve_static(const Assembler& assembler, const AnalysisOptions& opt
         if (result.newton.converged) {
           result.newton.converged = false;
           result.newton.failure = "the load step cannot be made small enough to follow the equilibrium path";
+        }
+        if (result.newton.singular && !deferred.before) {
+          if (Eigen::VectorXd v = system.null_vector(); v.size() > 0) result.newton.null_vector = std::move(v);
         }
         return result;
       }
