@@ -43,6 +43,7 @@ class KluLinearSystem final : public SparseLinearSystem {
   // The ordering in use (`automatic` resolved), and whether solves run on two domains: the
   // last full factorization's pivots kept them apart (else KLU's own solve serves).
   KluOrdering ordering() const { return ordering_; }
+  KluBlocks blocks() const { return blocks_; }
   bool solves_by_two_domains() const;
 
   // What one factorization hands on to the next: the pivot order of the last full
