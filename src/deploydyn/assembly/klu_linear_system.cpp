@@ -101,9 +101,9 @@ struct KluLinearSystem::Handles {
     // refactorization cost 9 % of a roof's time step.
     common.scale = -1;
   }
-  void order_by(KluOrdering ordering) {
+  void order_by(KluOrdering ordering, KluBlocks blocks) {
     common.ordering = 0;  // AMD
-    common.btf = 1;
+    common.btf = blocks == KluBlocks::triangular ? 1 : 0;
     common.user_order = nullptr;
     common.user_data = nullptr;
     if (ordering == KluOrdering::nested_dissection) {
@@ -122,8 +122,8 @@ struct KluLinearSystem::Handles {
   }
 };
 
-KluLinearSystem::KluLinearSystem(KluOrdering ordering)
-    : klu_(std::make_unique<Handles>()), requested_ordering_(ordering) {}
+KluLinearSystem::KluLinearSystem(KluOrdering ordering, KluBlocks blocks)
+    : klu_(std::make_unique<Handles>()), requested_ordering_(ordering), blocks_(blocks) {}
 KluLinearSystem::~KluLinearSystem() = default;
 
 void KluLinearSystem::analyze_pattern() {
@@ -133,7 +133,7 @@ void KluLinearSystem::analyze_pattern() {
   if (ordering_ == KluOrdering::automatic) {
     ordering_ = factored_size() >= kTwoDomainUnknowns ? KluOrdering::two_domains : KluOrdering::amd;
   }
-  klu_->order_by(ordering_);
+  klu_->order_by(ordering_, blocks_);
   TwoDomainSolve& d = klu_->two_domains;
   d = {};
   klu_->symbolic = klu_analyze(factored_size(), column_start_.data(), row_index_.data(), &klu_->common);
@@ -198,6 +198,12 @@ void KluLinearSystem::restore_pivot_memory(std::span<const double> memory) {
 
 double KluLinearSystem::factor_nonzeros() const {
   return klu_->numeric != nullptr ? static_cast<double>(klu_->numeric->lnz) + klu_->numeric->unz : 0.0;
+}
+
+double KluLinearSystem::factor_operations() const {
+  if (klu_->numeric == nullptr) return 0.0;
+  klu_common common = klu_->common;  // klu_flops writes its count there; this object stays as it is
+  return klu_flops(klu_->symbolic, klu_->numeric, &common) != 0 ? common.flops : 0.0;
 }
 
 bool KluLinearSystem::solves_by_two_domains() const {

@@ -15,9 +15,19 @@ namespace deploydyn {
 // AMD. docs/performance.md, "Faster large steps", compares them.
 enum class KluOrdering { amd, nested_dissection, two_domains, automatic };
 
+// Whether KLU first permutes the matrix to block triangular form (BTF), by a matching that puts
+// a nonzero on every diagonal position, and orders each block (AMD, nested dissection) after that
+// matching. Multipliers have no diagonal, so the matching puts constraint rows on their diagonal
+// and the ordering then sees a pattern that is no longer symmetric: on 3D beams (six frame
+// multipliers a node) the factors fill 2.3 × more and cost 6 × the operations of the matrix
+// ordered as it is (`whole`). Two domains always order the whole matrix. docs/performance.md,
+// "3D beams".
+enum class KluBlocks { triangular, whole };
+
 class KluLinearSystem final : public SparseLinearSystem {
  public:
-  explicit KluLinearSystem(KluOrdering ordering = KluOrdering::automatic);
+  explicit KluLinearSystem(KluOrdering ordering = KluOrdering::automatic,
+                           KluBlocks blocks = KluBlocks::triangular);
   ~KluLinearSystem() override;
   KluLinearSystem(const KluLinearSystem&) = delete;
   KluLinearSystem& operator=(const KluLinearSystem&) = delete;
@@ -27,9 +37,13 @@ class KluLinearSystem final : public SparseLinearSystem {
   int full_factorizations() const { return full_factorizations_; }
   // Entries of the L and U factors (with their diagonals) of the last factorization; 0 before.
   double factor_nonzeros() const;
+  // Multiplications and divisions of the last factorization, as KLU counts them (klu_flops);
+  // a refactorization costs the same. 0 before.
+  double factor_operations() const;
   // The ordering in use (`automatic` resolved), and whether solves run on two domains: the
   // last full factorization's pivots kept them apart (else KLU's own solve serves).
   KluOrdering ordering() const { return ordering_; }
+  KluBlocks blocks() const { return blocks_; }
   bool solves_by_two_domains() const;
 
   // What one factorization hands on to the next: the pivot order of the last full
@@ -50,6 +64,7 @@ class KluLinearSystem final : public SparseLinearSystem {
   void solve_two_domains(double* rhs);
   std::unique_ptr<Handles> klu_;
   KluOrdering requested_ordering_;
+  KluBlocks blocks_;
   KluOrdering ordering_ = KluOrdering::amd;
   double reciprocal_condition_at_full_ = 0.0;
   std::vector<double> values_at_full_;  // pivot_memory

@@ -11,11 +11,16 @@ LinearSolverKind choose_linear_solver(LinearSolverKind requested, int /*n_unknow
 }
 
 std::unique_ptr<LinearSystem> make_linear_system(const Assembler& assembler, LinearSolverKind kind) {
+  // Elements that bring constraints of their own are 3D beams, six frame multipliers a node: KLU
+  // orders their matrix as it is, without BTF's matching (klu_linear_system.hpp, KluBlocks).
+  // Other models keep BTF, and their results bit for bit.
+  const KluBlocks blocks =
+      assembler.mass_definite_on_constraints_only() ? KluBlocks::whole : KluBlocks::triangular;
   std::unique_ptr<LinearSystem> system;
   switch (choose_linear_solver(kind, assembler.n_unknowns())) {
-    case LinearSolverKind::klu: system = std::make_unique<KluLinearSystem>(KluOrdering::automatic); break;
+    case LinearSolverKind::klu: system = std::make_unique<KluLinearSystem>(KluOrdering::automatic, blocks); break;
     case LinearSolverKind::klu_nested_dissection:
-      system = std::make_unique<KluLinearSystem>(KluOrdering::nested_dissection);
+      system = std::make_unique<KluLinearSystem>(KluOrdering::nested_dissection, blocks);
       break;
     case LinearSolverKind::klu_two_domains:
       system = std::make_unique<KluLinearSystem>(KluOrdering::two_domains);

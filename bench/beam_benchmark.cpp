@@ -1,0 +1,74 @@
+// 3D beams: pantograph canopies (support/scissor_canopy.hpp) of 2 × 3 units (the 50 beams of
+// ../shared/models/canopy3d.yaml) and 25 × 50 units (10 025 beams), one generalized-α step,
+// Newton included, the actuators turning at their mean rate from t = 0. KLU ordered without BTF
+// (`btf:0`, what 3D beam models get now) and with it (`btf:1`, as before): the two in one
+// process, so that they can be run interleaved (--benchmark_enable_random_interleaving).
+// docs/performance.md, "3D beams".
+//   BM_BeamCanopyStep/girders/units/btf   time per step, Newton iterations per step, unknowns,
+//                                         beams, KLU's operations and factor entries per LU
+
+#include <benchmark/benchmark.h>
+
+#include <numbers>
+
+#include "deploydyn/assembly/klu_linear_system.hpp"
+#include "support/scissor_canopy.hpp"
+#include "support/stepping_run.hpp"
+
+namespace deploydyn {
+namespace {
+
+// The opening runs at its mean rate, so 2 s turn the hinges by a fifth of their range.
+constexpr double kRestart_s = 2.0;
+
+Model canopy_at_constant_rate(int girders, int units) {
+  Model model = bench::scissor_canopy(girders, units);
+  for (Driver& driver : model.drivers) {
+    driver.profile = TimeFunction::constant(std::numbers::pi / 2.0 / 10.0);
+    driver.reading = DriverReading::rate;
+  }
+  return model;
+}
+
+void BM_BeamCanopyStep(benchmark::State& state) {
+  bench::SteppingRun run(canopy_at_constant_rate(static_cast<int>(state.range(0)), static_cast<int>(state.range(1))));
+  const KluBlocks blocks = state.range(2) != 0 ? KluBlocks::triangular : KluBlocks::whole;
+  auto klu = std::make_unique<KluLinearSystem>(KluOrdering::automatic, blocks);
+  klu->analyze(run.assembler->n_unknowns(), run.assembler->matrix_entries());
+  KluLinearSystem& system = *klu;
+  run.system = std::move(klu);
+  const double h = run.model.analysis.step_s;
+  const MotionState start = run.state;
+  long iterations = 0, steps = 0;
+  for (auto _ : state) {
+    if (run.state.time_s > kRestart_s) {  // stay inside the mechanism's range of opening
+      state.PauseTiming();
+      run.state = start;
+      state.ResumeTiming();
+    }
+    const NewtonResult result = run.integrator->step(h, system, run.state);
+    if (!result.converged) {
+      state.SkipWithError(result.failure.c_str());
+      break;
+    }
+    iterations += result.iterations;
+    ++steps;
+  }
+  state.counters["beams"] = static_cast<double>(run.model.beams.size());
+  state.counters["unknowns"] = system.size();
+  state.counters["newton_per_step"] = steps > 0 ? double(iterations) / steps : 0.0;
+  state.counters["lu_operations"] = system.factor_operations();
+  state.counters["lu_entries"] = system.factor_nonzeros();
+  state.counters["two_domains"] = system.ordering() == KluOrdering::two_domains ? 1.0 : 0.0;
+}
+
+BENCHMARK(BM_BeamCanopyStep)
+    ->ArgNames({"girders", "units", "btf"})
+    ->Args({2, 3, 0})
+    ->Args({2, 3, 1})
+    ->Args({25, 50, 0})
+    ->Args({25, 50, 1})
+    ->Unit(benchmark::kMillisecond);
+
+}  // namespace
+}  // namespace deploydyn
