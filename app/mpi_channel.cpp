@@ -20,10 +20,10 @@ bool launched_by_mpirun() {
 std::unique_ptr<StudyProcesses> join_mpi_if_launched() {
   if (!launched_by_mpirun()) return nullptr;
   // MPI lives in its module (modules/mpi_module.cpp): a study without mpirun does not load it.
-  const auto join = reinterpret_cast<JoinMpi>(optional_module_symbol(
+  const auto join = optional_module_entry<JoinMpi>(
       kMpiModuleName, kJoinMpiSymbol,
       "`deploydyn study` under mpirun (the cases are spread over the MPI processes); without mpirun "
-      "the study runs as one process"));
+      "the study runs as one process");
   return std::unique_ptr<StudyProcesses>(join());
 }
 

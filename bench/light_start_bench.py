@@ -16,7 +16,7 @@ two `study` processes, one per linkage, one after the other).
 
 Usage: bench/light_start_bench.py --new build/release/deploydyn [--old OLD] [--rounds 8]
        [--repetitions 5]
-Prints per case the medians over all rounds (each round's value is the median of its
+Prints per case the medians (wall, CPU = user + system, max RSS) over all rounds (each round's value is the median of its
 repetitions), the per-round ratios new/old, and the load average at each round.
 """
 
@@ -57,19 +57,20 @@ int main(int argc, char** argv) {
   struct rusage usage;
   wait4(pid, &status, 0, &usage);
   clock_gettime(CLOCK_MONOTONIC, &end);
-  printf("%.9f %ld %d\n", (end.tv_sec - start.tv_sec) + 1e-9 * (end.tv_nsec - start.tv_nsec),
-         usage.ru_maxrss, WIFEXITED(status) ? WEXITSTATUS(status) : 128);
+  printf("%.9f %ld %d %.6f\n", (end.tv_sec - start.tv_sec) + 1e-9 * (end.tv_nsec - start.tv_nsec),
+         usage.ru_maxrss, WIFEXITED(status) ? WEXITSTATUS(status) : 128,
+         usage.ru_utime.tv_sec + usage.ru_stime.tv_sec + 1e-6 * (usage.ru_utime.tv_usec + usage.ru_stime.tv_usec));
   return 0;
 }
 """
 
 
 def spawn(argv):
-    """(wall seconds, max RSS in kB) of one process, timed by the C timer; output discarded."""
+    """(wall s, max RSS kB, CPU s: user + system) of one process, by the C timer; output discarded."""
     line = subprocess.run([TIMER, *argv], check=True, capture_output=True, text=True).stdout.split()
     if line[2] != "0":
         raise SystemExit(f"{' '.join(argv)} exited with {line[2]}")
-    return float(line[0]), int(line[1])
+    return float(line[0]), int(line[1]), float(line[3])
 
 
 def build_helpers(work):
@@ -96,12 +97,12 @@ def cases(cli, work):
 
     def demo():
         # scripts/paper_demo.py's run_study for both linkages, one after the other.
-        wall, rss = 0.0, 0
+        wall, rss, cpu = 0.0, 0, 0.0
         for linkage in ("general", "parallel"):
             shutil.rmtree(out, ignore_errors=True)
-            w, r = spawn([cli, "study", str(PAPER / f"{linkage}_study.yaml"), "--out", str(out), "--quiet"])
-            wall, rss = wall + w, max(rss, r)
-        return wall, rss
+            w, r, c = spawn([cli, "study", str(PAPER / f"{linkage}_study.yaml"), "--out", str(out), "--quiet"])
+            wall, rss, cpu = wall + w, max(rss, r), cpu + c
+        return wall, rss, cpu
 
     return {
         "--version": fresh("--version"),
@@ -137,24 +138,23 @@ def main():
                 for binary in ("bare", *binaries):
                     samples = [spawn([bare]) if binary == "bare" else suites[binary][case]()
                                for _ in range(args.repetitions)]
-                    rounds[case][binary].append((statistics.median(s[0] for s in samples),
-                                                 statistics.median(s[1] for s in samples)))
+                    rounds[case][binary].append(tuple(statistics.median(s[k] for s in samples) for k in range(3)))
     print(f"{args.rounds} rounds × {args.repetitions} repetitions; load average (1 min) per round: "
           + " ".join(f"{load:.2f}" for load in loads))
-    header = "| case | bare ms | " + " | ".join(f"{b} ms | {b} − bare ms | {b} max RSS MB | {b} − bare MB"
-                                                 for b in binaries)
+    header = "| case | bare ms | bare CPU ms | " + " | ".join(
+        f"{b} ms | {b} − bare ms | {b} CPU ms | {b} max RSS MB | {b} − bare MB" for b in binaries)
     if "old" in binaries:
         header += " | new/old per round"
     print(header + " |")
     print("|" + "---|" * (header.count("|")))
     for case in names:
-        bare_ms = statistics.median(w for w, _ in rounds[case]["bare"]) * 1e3
-        bare_mb = statistics.median(r for _, r in rounds[case]["bare"]) / 1024
-        row = f"| {case} | {bare_ms:.2f} |"
+        def median(binary, k):
+            return statistics.median(sample[k] for sample in rounds[case][binary])
+        bare_ms, bare_mb = median("bare", 0) * 1e3, median("bare", 1) / 1024
+        row = f"| {case} | {bare_ms:.2f} | {median('bare', 2) * 1e3:.2f} |"
         for b in binaries:
-            ms = statistics.median(w for w, _ in rounds[case][b]) * 1e3
-            mb = statistics.median(r for _, r in rounds[case][b]) / 1024
-            row += f" {ms:.2f} | {ms - bare_ms:.2f} | {mb:.1f} | {mb - bare_mb:.1f} |"
+            ms, mb = median(b, 0) * 1e3, median(b, 1) / 1024
+            row += f" {ms:.2f} | {ms - bare_ms:.2f} | {median(b, 2) * 1e3:.2f} | {mb:.1f} | {mb - bare_mb:.1f} |"
         if "old" in binaries:
             ratios = [n[0] / o[0] for n, o in zip(rounds[case]["new"], rounds[case]["old"])]
             row += " " + " ".join(f"{r:.2f}" for r in ratios) + " |"
