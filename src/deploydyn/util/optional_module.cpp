@@ -17,8 +17,9 @@ namespace deploydyn {
 namespace {
 
 std::vector<std::filesystem::path> module_folders() {
+  // Set, it is the only place: a user (or a test) says exactly which modules to use.
+  if (const char* dir = std::getenv("DEPLOYDYN_MODULE_DIR"); dir != nullptr && *dir != '\0') return {dir};
   std::vector<std::filesystem::path> folders;
-  if (const char* dir = std::getenv("DEPLOYDYN_MODULE_DIR"); dir != nullptr && *dir != '\0') folders.emplace_back(dir);
   // The object (program or shared library) this code was linked into.
   Dl_info info{};
   if (dladdr(reinterpret_cast<void*>(&module_folders), &info) != 0 && info.dli_fname != nullptr) {

@@ -17,10 +17,10 @@
 // exports one entry point, a C function that returns a new object behind an interface of
 // the library; the caller owns it.
 //
-// A module is looked for, in order, in $DEPLOYDYN_MODULE_DIR; beside the program or library
-// that holds this code, as installed (<dir>/../lib/deploydyn, found with dladdr, so the command,
-// the Python module and a downstream program all find theirs); in the install prefix's
-// lib/deploydyn; in the build tree's modules/.
+// A module is looked for in $DEPLOYDYN_MODULE_DIR alone when it is set; else, in order, beside
+// the program or library that holds this code, as installed (<dir>/../lib/deploydyn, found with
+// dladdr, so the command, the Python module and a downstream program all find theirs); in the
+// install prefix's lib/deploydyn; in the build tree's modules/.
 
 #include <string>
 #include <string_view>
