@@ -22,8 +22,8 @@ std::unique_ptr<StudyProcesses> join_mpi_if_launched() {
   // MPI lives in its module (modules/mpi_module.cpp): a study without mpirun does not load it.
   const auto join = optional_module_entry<JoinMpi>(
       kMpiModuleName, kJoinMpiSymbol,
-      "`deploydyn study` under mpirun (the cases are spread over the MPI processes); without mpirun "
-      "the study runs as one process");
+      "`deploydyn study` under mpirun, to spread the cases over the MPI processes (without mpirun the "
+      "study runs as one process)");
   return std::unique_ptr<StudyProcesses>(join());
 }
 

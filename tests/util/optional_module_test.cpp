@@ -30,9 +30,8 @@ TEST(OptionalModule, FindsTheBuildTreesModuleAndItsEntryPoint) {
 
 TEST(OptionalModule, AModuleThatIsNotThereIsNamedWithWhereItWasLookedForAndWhy) {
   const std::string message = error_of("deploydyn_no_such_module", "anything");
-  EXPECT_NE(message.find("the module deploydyn_no_such_module.so, needed for a test's wish, could not be loaded"),
-            std::string::npos)
-      << message;
+  EXPECT_NE(message.find("the module deploydyn_no_such_module.so could not be loaded"), std::string::npos) << message;
+  EXPECT_NE(message.find("it is needed for a test's wish"), std::string::npos) << message;
   EXPECT_NE(message.find(optional_module_folders()), std::string::npos) << message;
   EXPECT_NE(message.find("not found"), std::string::npos) << message;
 }

@@ -25,7 +25,7 @@ std::vector<std::filesystem::path> module_folders() {
   if (dladdr(reinterpret_cast<void*>(&module_folders), &info) != 0 && info.dli_fname != nullptr) {
     std::error_code error;
     const std::filesystem::path object = std::filesystem::canonical(info.dli_fname, error);
-    if (!error) folders.push_back(object.parent_path() / DEPLOYDYN_MODULE_RELATIVE_DIR);
+    if (!error) folders.push_back((object.parent_path() / DEPLOYDYN_MODULE_RELATIVE_DIR).lexically_normal());
   }
   folders.emplace_back(DEPLOYDYN_MODULE_INSTALL_DIR);
   folders.emplace_back(DEPLOYDYN_MODULE_BUILD_DIR);
@@ -59,10 +59,10 @@ void* optional_module_symbol(std::string_view name, const char* symbol, std::str
     if (void* address = dlsym(handle, symbol); address != nullptr) return address;
     reasons += "; " + path.string() + " has no " + symbol + " (a module of another deploydyn build?)";
   }
-  throw std::runtime_error("the module " + file + ", needed for " + std::string(needed_for) +
-                           ", could not be loaded (looked in " + optional_module_folders() +
-                           (reasons.empty() ? "; not found" : reasons) +
-                           "); build and install it with deploydyn, or point DEPLOYDYN_MODULE_DIR to its folder");
+  throw std::runtime_error("the module " + file + " could not be loaded (looked in " + optional_module_folders() +
+                           (reasons.empty() ? "; not found" : reasons) + "); it is needed for " +
+                           std::string(needed_for) +
+                           "; build and install it with deploydyn, or point DEPLOYDYN_MODULE_DIR to its folder");
 }
 
 }  // namespace deploydyn
