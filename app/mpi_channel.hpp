@@ -1,7 +1,8 @@
 #pragma once
 // The processes of `mpirun -n N deploydyn study FILE` (OpenMPI from Debian), as the study
-// runner's channel (study/study_channel.hpp). Without MPI at build time, or when mpirun did
-// not start this process, there is no channel and `study` runs as one process.
+// runner's channel (study/study_channel.hpp). When mpirun did not start this process there is
+// no channel and `study` runs as one process. MPI itself is in the module deploydyn_mpi
+// (modules/mpi_module.cpp), loaded only under mpirun (util/optional_module.hpp).
 
 #include <memory>
 
@@ -22,7 +23,13 @@ class StudyProcesses : public StudyChannel {
 };
 
 // The processes when mpirun started this one (its environment says so), else nullptr.
-// Throws std::runtime_error when mpirun started it but this build has no MPI.
+// Throws std::runtime_error when mpirun started it but the MPI module cannot be loaded (this
+// build has no MPI, or the module is missing).
 std::unique_ptr<StudyProcesses> join_mpi_if_launched();
+
+// The MPI module's entry point: joins the processes (MPI_Init); the caller owns the result.
+using JoinMpi = StudyProcesses* (*)();
+inline constexpr const char* kMpiModuleName = "deploydyn_mpi";
+inline constexpr const char* kJoinMpiSymbol = "deploydyn_join_mpi";
 
 }  // namespace deploydyn::cli

@@ -35,6 +35,22 @@ if(NOT plotted EQUAL 0 OR NOT EXISTS ${PREFIX}/plots/driver.png)
   message(FATAL_ERROR "installed deploydyn plot failed (${plotted}):\n${output}")
 endif()
 
+# The modules loaded on demand (util/optional_module.hpp) are installed, and the installed
+# command finds its own, beside it (LD_DEBUG=files: the loader names every object it opens).
+foreach(module deploydyn_hdf5 deploydyn_embree deploydyn_umfpack)
+  file(GLOB_RECURSE found ${PREFIX}/lib*/deploydyn/${module}.so)
+  if(NOT found)
+    message(FATAL_ERROR "not installed: ${PREFIX}/lib/deploydyn/${module}.so")
+  endif()
+endforeach()
+file(GLOB_RECURSE installed_hdf5_module ${PREFIX}/lib*/deploydyn/deploydyn_hdf5.so)
+run_step("installed command with output.hdf5" ${CMAKE_COMMAND} -E env LD_DEBUG=files ${PREFIX}/bin/deploydyn run
+         ${MODEL} --set output.hdf5=true --set analysis.end=0.01 --quiet --out ${CONSUMER_BUILD}/hdf5_run)
+string(FIND "${step_output}" "${installed_hdf5_module}" at)
+if(at LESS 0 OR NOT EXISTS ${CONSUMER_BUILD}/hdf5_run/history.h5)
+  message(FATAL_ERROR "the installed command did not write history.h5 with ${installed_hdf5_module}:\n${step_output}")
+endif()
+
 # Only the prefix: no package registry, and the consumer finds Eigen, yaml-cpp, fmt and FCL itself
 # through deploydynConfig.cmake.
 run_step("configure consumer" ${CMAKE_COMMAND} -S ${CONSUMER_SOURCE} -B ${CONSUMER_BUILD} -G ${GENERATOR}

@@ -2,7 +2,7 @@
 
 #include "deploydyn/assembly/dense_linear_system.hpp"
 #include "deploydyn/assembly/klu_linear_system.hpp"
-#include "deploydyn/assembly/umfpack_linear_system.hpp"
+#include "deploydyn/assembly/umfpack_from_module.hpp"
 
 namespace deploydyn {
 
@@ -25,7 +25,7 @@ std::unique_ptr<LinearSystem> make_linear_system(const Assembler& assembler, Lin
     case LinearSolverKind::klu_two_domains:
       system = std::make_unique<KluLinearSystem>(KluOrdering::two_domains);
       break;
-    case LinearSolverKind::umfpack: system = std::make_unique<UmfpackLinearSystem>(); break;
+    case LinearSolverKind::umfpack: system = umfpack_from_module(); break;  // loads UMFPACK on demand
     default: system = std::make_unique<DenseLinearSystem>(); break;
   }
   system->analyze(assembler.n_unknowns(), assembler.matrix_entries());

@@ -24,6 +24,8 @@
 // file holds, at most every kFlushInterval and at the end: a run that stops early leaves both
 // readable (a killed one may lose its last seconds, which history.csv keeps).
 // XDMF format: https://www.xdmf.org/index.php/XDMF_Model_and_Format.
+// A run reaches this writer through the HDF5 module (output/hdf5_output.hpp), so that only runs
+// that write history.h5 load HDF5.
 
 #include <chrono>
 #include <cstdint>
@@ -32,6 +34,7 @@
 #include <vector>
 
 #include "deploydyn/model/model.hpp"
+#include "deploydyn/output/hdf5_output.hpp"
 #include "deploydyn/results/history_layout.hpp"
 #include "deploydyn/results/mesh_frame.hpp"
 #include "deploydyn/solvers/step_record.hpp"
@@ -39,7 +42,7 @@
 
 namespace deploydyn {
 
-class Hdf5Writer final : public RecordSink {
+class Hdf5Writer final : public Hdf5Output {
  public:
   // Creates folder/history.h5 (replacing an earlier one) with its datasets. Keeps a reference
   // to `model`. Throws OutputError when the file cannot be made.
@@ -51,7 +54,7 @@ class Hdf5Writer final : public RecordSink {
   // Appends an output record (steps between output times are skipped). Throws OutputError.
   void record(const StepRecord& record) override;
   // Flushes the file and writes history.xdmf. Throws OutputError.
-  void finish();
+  void finish() override;
   int n_rows() const { return static_cast<int>(times_.size()); }
 
   static constexpr std::chrono::seconds kFlushInterval{2};

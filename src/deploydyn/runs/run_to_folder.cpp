@@ -27,7 +27,7 @@
 #include "deploydyn/output/summary_writer.hpp"
 #include "deploydyn/output/temperature_table.hpp"
 #include "deploydyn/thermal/thermal_coupling.hpp"
-#include "deploydyn/output/hdf5_writer.hpp"
+#include "deploydyn/output/hdf5_output.hpp"
 #include "deploydyn/output/vtk_writer.hpp"
 
 namespace deploydyn {
@@ -79,8 +79,8 @@ class HistoryRun final : public FolderRun {
     std::vector<RecordSink*> sinks{&history, &envelope_, &verdict_watch_};
     std::optional<VtkWriter> vtk;
     if (model.output.vtk) sinks.push_back(&vtk.emplace(folder / kVtkFolderName, model));
-    std::optional<Hdf5Writer> hdf5;
-    if (model.output.hdf5) sinks.push_back(&hdf5.emplace(folder, model));
+    std::unique_ptr<Hdf5Output> hdf5;
+    if (model.output.hdf5) sinks.push_back((hdf5 = open_hdf5_output(folder, model)).get());
     FanOut sink(std::move(sinks));
     std::atomic<bool> stop{false};
     std::optional<OutputError> state_failure;

@@ -1,7 +1,8 @@
 #pragma once
 // The share of each member that the other members hide from the sun (docs/theory.md, "Shadows
 // between members"), by ray casting with Embree (Debian libembree-dev, the one file that
-// includes it is member_shadows.cpp).
+// includes it is member_shadows.cpp). Runs reach it through the Embree module
+// (thermal/shadow_caster.hpp), so that only runs with shadows load Embree.
 //
 // Each member is a cylinder of its section's outer radius r around its axis a → b. The sun sees
 // it as its silhouette, the strip of width 2r along the axis in the plane through the axis
@@ -24,21 +25,16 @@
 #include <span>
 #include <vector>
 
+#include "deploydyn/thermal/shadow_caster.hpp"
+
 namespace deploydyn::thermal {
 
-// One member's axis in the current configuration and its outer radius.
-struct MemberCapsule {
-  Eigen::Vector3d end_a_m = Eigen::Vector3d::Zero();
-  Eigen::Vector3d end_b_m = Eigen::Vector3d::Zero();
-  double radius_m = 0.0;
-};
-
-class MemberShadows {
+class MemberShadows final : public ShadowCaster {
  public:
   // Throws std::invalid_argument for sample counts below 1, std::runtime_error when Embree
   // cannot start.
   MemberShadows(int n_members, int samples_along, int samples_across);
-  ~MemberShadows();
+  ~MemberShadows() override;
   MemberShadows(const MemberShadows&) = delete;
   MemberShadows& operator=(const MemberShadows&) = delete;
 
@@ -46,7 +42,7 @@ class MemberShadows {
   // the constructor's n_members), lit from the unit direction `sun_direction` (towards the
   // sun). Rebuilds the ray-casting hierarchy for the members' current positions.
   void compute(std::span<const MemberCapsule> members, const Eigen::Vector3d& sun_direction,
-               std::span<double> shadowed_fraction);
+               std::span<double> shadowed_fraction) override;
 
  private:
   struct Scene;

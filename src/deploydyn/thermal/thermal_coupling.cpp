@@ -102,7 +102,7 @@ ThermalCoupling::ThermalCoupling(Model& model) : model_(model), dofs_(model) {
   shadowed_.assign(members_.size(), 0.0);
   if (environment.shadows) {
     shadow_every_steps_ = environment.shadows->every_steps;
-    shadows_ = std::make_unique<MemberShadows>(static_cast<int>(members_.size()), environment.shadows->samples_along,
+    shadows_ = member_shadows_from_module(static_cast<int>(members_.size()), environment.shadows->samples_along,
                                                environment.shadows->samples_across);
     capsules_.resize(members_.size());
     update_shadows(nullptr, 0.0);

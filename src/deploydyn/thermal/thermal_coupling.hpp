@@ -29,7 +29,7 @@
 #include "deploydyn/model/model.hpp"
 #include "deploydyn/solvers/step_hook.hpp"
 #include "deploydyn/thermal/member_heat_balance.hpp"
-#include "deploydyn/thermal/member_shadows.hpp"
+#include "deploydyn/thermal/shadow_caster.hpp"
 #include "deploydyn/thermal/section_temperature_difference.hpp"
 
 namespace deploydyn::thermal {
@@ -115,7 +115,7 @@ class ThermalCoupling final : public StepHook {
   TemperatureExtreme coldest_, hottest_;
   OutputCallback on_output_;
 
-  std::unique_ptr<MemberShadows> shadows_;  // when the environment asks for shadows
+  std::unique_ptr<ShadowCaster> shadows_;   // when the environment asks for shadows
   int shadow_every_steps_ = 1;
   long accepted_steps_ = 0;
   std::vector<double> shadowed_;            // f_sh per member
