@@ -59,9 +59,9 @@ TEST(VerificationLinearActuator, LuffingBoomHoldsItsLoadByTheLeverRule) {
   }
   EXPECT_GT(largest, kTipMass_kg * kGravity_m_s2);  // it pushes (positive), more than the weight
   EXPECT_GT(run.records.back().q[2 * t + 1], 1.5 * model.nodes[t].position_m.y());  // the boom rose
-  verification::check({"17.1a", "luffing boom held by a linear actuator (static, 21 strokes): its force",
+  verification::check({"18.1a", "luffing boom held by a linear actuator (static, 21 strokes): its force",
                        "lever rule F (T × n)_z = m g T_x about the pin", force_error, 1e-7, ""});
-  verification::check({"17.1b", "the same: actuator length − (L₀ + stroke)", "0 (the constraint)", stroke_error,
+  verification::check({"18.1b", "the same: actuator length − (L₀ + stroke)", "0 (the constraint)", stroke_error,
                        1e-10, "m"});
 }
 
@@ -105,10 +105,10 @@ analysis: {{type: dynamic, end: 1, step: {}, output_interval: {}}}
 
 TEST(VerificationLinearActuator, LiftForceIsMassTimesGravityPlusAcceleration) {
   const LiftForceErrors coarse = lift_force_errors(0.005), fine = lift_force_errors(0.0025);
-  verification::check({"17.2a", "mass lifted by a linear actuator (dynamic, generalized-α, h = 2.5 ms): force "
+  verification::check({"18.2a", "mass lifted by a linear actuator (dynamic, generalized-α, h = 2.5 ms): force "
                        "after the start transient (t ≥ 0.5 s), / m g",
                        "m (g + s̈(t)), cycloidal stroke", fine.after_transient, 1e-4, ""});
-  verification::check({"17.2b", "the same over the whole run: error ratio h = 5 ms / 2.5 ms",
+  verification::check({"18.2b", "the same over the whole run: error ratio h = 5 ms / 2.5 ms",
                        "2: generalized-α's start transient is first order (≥ 1.8)", coarse.whole_run / fine.whole_run,
                        1.8, "", verification::Bound::at_least});
 }
