@@ -78,6 +78,10 @@ TEST(Verdict, CommandPrintsTheVerdictAndCheckListsTheCapacities) {
   const ordered_json summary = ordered_json::parse(testing::read_text(folder.path() / "summary.json"));
   EXPECT_FALSE(summary["verdict"]["deploys"].get<bool>());
   EXPECT_EQ(summary["verdict"]["first_failure"]["member"], "link");
+  // K of each bar and beam member and where it came from: the link's is the file's.
+  EXPECT_EQ(summary["verdict"]["members"]["link"]["buckling_length_factor"].get<double>(), 1.0);
+  EXPECT_EQ(summary["verdict"]["members"]["link"]["buckling_length_source"], "given");
+  EXPECT_EQ(summary["verdict"]["members"]["post_left"]["buckling_length_source"], "pin-ended bar");
   // Heated 10 °C/s, the link loses its Euler load at about 21 °C.
   EXPECT_NEAR(summary["verdict"]["first_failure"]["time_s"].get<double>(), 2.1, 0.1);
 

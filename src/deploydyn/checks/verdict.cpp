@@ -169,7 +169,8 @@ Verdict make_verdict(const Model& model, const MemberChecks& checks, const RunRe
   for (std::size_t i = 0; i < members.size(); ++i) {
     const int m = static_cast<int>(i);
     const CheckedMember& member = members[i];
-    MemberUtilization utilization{member.name, std::string(kMemberKinds.name(member.kind)), "", 0.0, {}};
+    MemberUtilization utilization{member.name, std::string(kMemberKinds.name(member.kind)), "", 0.0,
+                                  member.buckling_length_factor, member.buckling_length_source, {}};
     for (const CheckKind kind : checks_of(member.kind)) {
       CheckOverview& o = overview(kind);
       o.applies = true;
@@ -222,7 +223,7 @@ Verdict make_verdict(const Model& model, const MemberChecks& checks, const RunRe
       failures.push_back({name(CheckKind::driver_effort), model.drivers[d].name, "", h.first_exceeded_s,
                           h.first_exceeded_step_s, h.utilization_at_first, "", std::nullopt});
     }
-    v.members.push_back({model.drivers[d].name, "driver", name(CheckKind::driver_effort), h.max,
+    v.members.push_back({model.drivers[d].name, "driver", name(CheckKind::driver_effort), h.max, std::nullopt, "",
                          {{CheckKind::driver_effort, h, ""}}});
   }
   // Latch and stop loads (V9): only in a model that gives a hinge such a capacity.
@@ -253,7 +254,7 @@ Verdict make_verdict(const Model& model, const MemberChecks& checks, const RunRe
       const auto listed = std::find_if(v.members.begin(), v.members.end(),
                                        [&](const MemberUtilization& m) { return m.kind == "hinge" && m.name == hinge.name; });
       MemberUtilization& entry = listed != v.members.end() ? *listed : v.members.emplace_back(
-                                                                           MemberUtilization{hinge.name, "hinge", "", 0.0, {}});
+                                                                           MemberUtilization{hinge.name, "hinge", "", 0.0, std::nullopt, "", {}});
       entry.checks.push_back({kind, h, ""});
       if (entry.governing.empty() || h.max > entry.max) {
         entry.governing = name(kind);
@@ -395,6 +396,10 @@ ordered_json verdict_json(const Verdict& v) {
   ordered_json members = ordered_json::object();
   for (const MemberUtilization& m : v.members) {
     ordered_json entry = {{"kind", m.kind}, {"governing", m.governing}, {"utilization", m.max}};
+    if (!m.buckling_length_source.empty()) {
+      entry["buckling_length_factor"] = m.buckling_length_factor ? ordered_json(*m.buckling_length_factor) : ordered_json(nullptr);
+      entry["buckling_length_source"] = m.buckling_length_source;
+    }
     for (const MemberUtilization::Entry& e : m.checks) entry[name(e.check)] = history_json(e.history, e.element);
     members[m.name] = entry;
   }

@@ -83,6 +83,10 @@ struct MemberUtilization {
   std::string kind;       // bar, beam, cable, driver
   std::string governing;  // the check of its largest utilization
   double max = 0.0;
+  // Bars and beams: K of the buckling check and where it comes from (checks/buckling_length.hpp);
+  // K empty when undefined (a pinned–free beam member) or for other kinds.
+  std::optional<double> buckling_length_factor;
+  std::string buckling_length_source;
   struct Entry {
     CheckKind check;
     CheckHistory history;
