@@ -37,26 +37,10 @@ void BM_BeamCanopyStep(benchmark::State& state) {
   klu->analyze(run.assembler->n_unknowns(), run.assembler->matrix_entries());
   KluLinearSystem& system = *klu;
   run.system = std::move(klu);
-  const double h = run.model.analysis.step_s;
-  const MotionState start = run.state;
-  long iterations = 0, steps = 0;
-  for (auto _ : state) {
-    if (run.state.time_s > kRestart_s) {  // stay inside the mechanism's range of opening
-      state.PauseTiming();
-      run.state = start;
-      state.ResumeTiming();
-    }
-    const NewtonResult result = run.integrator->step(h, system, run.state);
-    if (!result.converged) {
-      state.SkipWithError(result.failure.c_str());
-      break;
-    }
-    iterations += result.iterations;
-    ++steps;
-  }
+  const double newton_per_step = run.step_loop(state, system, kRestart_s);
   state.counters["beams"] = static_cast<double>(run.model.beams.size());
   state.counters["unknowns"] = system.size();
-  state.counters["newton_per_step"] = steps > 0 ? double(iterations) / steps : 0.0;
+  state.counters["newton_per_step"] = newton_per_step;
   state.counters["lu_operations"] = system.factor_operations();
   state.counters["lu_entries"] = system.factor_nonzeros();
   state.counters["two_domains"] = system.ordering() == KluOrdering::two_domains ? 1.0 : 0.0;

@@ -34,27 +34,11 @@ Model scissor_arch(int units) {
 
 void BM_ScissorStep(benchmark::State& state) {
   bench::SteppingRun run(scissor_arch(static_cast<int>(state.range(0))));
-  const double h = run.model.analysis.step_s;
-  const MotionState start = run.state;
-  long iterations = 0, steps = 0;
-  for (auto _ : state) {
-    if (run.state.time_s > kRestart_s) {  // stay inside the mechanism's range of opening
-      state.PauseTiming();
-      run.state = start;
-      state.ResumeTiming();
-    }
-    const NewtonResult result = run.integrator->step(h, *run.system, run.state);
-    if (!result.converged) {
-      state.SkipWithError(result.failure.c_str());
-      break;
-    }
-    iterations += result.iterations;
-    ++steps;
-  }
+  const double newton_per_step = run.step_loop(state, *run.system, kRestart_s);
   state.SetLabel(run.system->name());
   state.counters["beams"] = static_cast<double>(run.model.beams.size());
   state.counters["unknowns"] = run.system->size();
-  state.counters["newton_per_step"] = steps > 0 ? double(iterations) / steps : 0.0;
+  state.counters["newton_per_step"] = newton_per_step;
 }
 
 BENCHMARK(BM_ScissorStep)->ArgName("units")->Arg(10)->Arg(100)->Arg(1000)->Unit(benchmark::kMicrosecond);
