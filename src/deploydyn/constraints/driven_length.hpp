@@ -36,7 +36,7 @@ class DrivenLength final : public DrivingConstraint {
 
  private:
   int dimension() const { return static_cast<int>(dofs().size()) / 2; }
-  Eigen::VectorXd span(const Eigen::VectorXd& x) const;  // d = x_B − x_A (or its rate), D entries
+  Eigen::Vector3d span(const Eigen::VectorXd& x) const;  // d = x_B − x_A (or its rate); z = 0 in 2D
 
   double initial_length_m_;
   DriverMotion motion_;

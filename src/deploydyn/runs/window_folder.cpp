@@ -111,7 +111,7 @@ WindowRun run_window(const Model& model, const WindowOrigin& origin, const std::
   run.window = deployability_window(model, options);
   run.verdicts = deployment_verdicts.verdicts(run.window);
   run.json = window_json(origin, run.window, kWindowRegimeStep_C, run.verdicts);
-  if (taken) taken->write(run.window, kWindowRegimeStep_C, run.verdicts);
+  if (taken) taken->write(run.window, run.json);
   return run;
 }
 
@@ -120,7 +120,7 @@ WindowFolder::WindowFolder(const std::filesystem::path& folder, WindowOrigin ori
   folder_.start("model", origin_.model_file, {{"samples", kWindowSamplesFileName}});
 }
 
-void WindowFolder::write(const WindowResult& window, double regime_step_C, const std::vector<Verdict>& verdicts) {
+void WindowFolder::write(const WindowResult& window, const std::string& json) {
   try {
     write_file_atomically(folder_.path() / kWindowSamplesFileName, samples_csv(window));
   } catch (const OutputError& error) {
@@ -128,7 +128,6 @@ void WindowFolder::write(const WindowResult& window, double regime_step_C, const
     folder_.finish(failed, failed);
     throw;
   }
-  const std::string json = window_json(origin_, window, regime_step_C, verdicts);
   folder_.finish(json, text(origin_json(origin_, "failed", "window.json could not be written in full")));
 }
 

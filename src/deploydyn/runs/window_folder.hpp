@@ -56,10 +56,10 @@ class WindowFolder {
   // OutputError when the folder is in use or cannot be written.
   WindowFolder(const std::filesystem::path& folder, WindowOrigin origin);
 
-  // window.csv, then the final window.json. Throws OutputError when a file cannot be written
-  // (window.json then says "failed" and why, as far as it can be written).
-  // `verdicts`: per deployment, in its order.
-  void write(const WindowResult& window, double regime_step_C, const std::vector<Verdict>& verdicts);
+  // window.csv, then the final window.json (`json`, its text: WindowRun::json). Throws
+  // OutputError when a file cannot be written (window.json then says "failed" and why, as far
+  // as it can be written).
+  void write(const WindowResult& window, const std::string& json);
 
  private:
   ResultFolder folder_;
