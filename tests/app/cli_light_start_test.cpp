@@ -1,6 +1,6 @@
 // A light start (docs/performance.md, "A light start"): the command links neither MPI, HDF5,
-// Embree nor UMFPACK, directly or through another library, so that a run that needs none of
-// them does not load them; a run that needs one loads its module, and a module that cannot
+// Embree, UMFPACK nor FCL, directly or through another library, so that a run that needs none
+// of them does not load them; a run that needs one loads its module, and a module that cannot
 // be found is told by name with what needed it, not a crash.
 
 #include <gtest/gtest.h>
@@ -27,32 +27,53 @@ std::string command_output(const std::string& command) {
 }
 
 // The libraries that only some runs need: each is in a module (util/optional_module.hpp).
-constexpr const char* kOnDemandLibraries[] = {"libmpi", "libhdf5", "libcurl", "libembree", "libtbb", "libumfpack",
-                                              "libcholmod", "liblapack", "libgfortran"};
+constexpr const char* kOnDemandLibraries[] = {"libmpi",     "libhdf5",    "libcurl",     "libembree",
+                                              "libtbb",     "libumfpack", "libcholmod",  "liblapack",
+                                              "libgfortran", "libfcl",    "liboctomap"};
+// What the command loads always (a check that reads the right output).
+constexpr const char* kAlwaysLoaded = "libklu";
 
 TEST(CliLightStart, TheCommandNeedsNoOnDemandLibraryDirectly) {
   const std::string needed = command_output("readelf -d " + std::string(DEPLOYDYN_CLI));
   ASSERT_NE(needed.find("(NEEDED)"), std::string::npos) << "readelf could not read the command:\n" << needed;
-  ASSERT_NE(needed.find("libklu"), std::string::npos) << needed;  // the check reads what it should
+  ASSERT_NE(needed.find(kAlwaysLoaded), std::string::npos) << needed;  // the check reads what it should
   for (const char* library : kOnDemandLibraries) EXPECT_EQ(needed.find(library), std::string::npos) << library;
 }
 
 TEST(CliLightStart, TheCommandLoadsNoOnDemandLibraryAtAll) {
   const std::string loaded = command_output("ldd " + std::string(DEPLOYDYN_CLI));
-  ASSERT_NE(loaded.find("libklu"), std::string::npos) << loaded;
+  ASSERT_NE(loaded.find(kAlwaysLoaded), std::string::npos) << loaded;
   for (const char* library : kOnDemandLibraries) EXPECT_EQ(loaded.find(library), std::string::npos) << library;
 }
 
-TEST(CliLightStart, AFourBarRunOpensNoModule) {
+TEST(CliLightStart, VersionAndCheckOpenNoModule) {
+  for (const std::string& arguments : {std::string("--version"), "check " + example_path("general.yaml")}) {
+    // The loader's own account of every object it opens.
+    const auto outcome = testing::run_cli_with_prefix("LD_DEBUG=files", arguments);
+    ASSERT_EQ(outcome.exit_code, 0) << arguments << "\n" << outcome.output;
+    ASSERT_NE(outcome.output.find(kAlwaysLoaded), std::string::npos) << outcome.output;
+    EXPECT_EQ(outcome.output.find("deploydyn_"), std::string::npos) << arguments;
+    for (const char* library : kOnDemandLibraries) EXPECT_EQ(outcome.output.find(library), std::string::npos) << library;
+  }
+}
+
+TEST(CliLightStart, AFourBarRunOpensTheClearanceModuleAlone) {
   const ScratchFolder folder("light_start_run");
-  // The loader's own account of every object it opens, during the run.
-  const auto outcome = testing::run_cli_with_prefix(
-      "LD_DEBUG=files", "run " + example_path("general.yaml") + " --set analysis.end=0.01 --quiet --out " +
-                            (folder.path() / "out").string());
-  ASSERT_EQ(outcome.exit_code, 0) << outcome.output;
-  ASSERT_NE(outcome.output.find("libklu"), std::string::npos) << outcome.output;
-  EXPECT_EQ(outcome.output.find("deploydyn_"), std::string::npos) << outcome.output;
-  for (const char* library : kOnDemandLibraries) EXPECT_EQ(outcome.output.find(library), std::string::npos) << library;
+  const std::string run = "run " + example_path("general.yaml") + " --set analysis.end=0.01 --quiet --out " +
+                          (folder.path() / "out").string();
+  // Its bars 1 and 3 share no joint: the clearance watch (FCL) measures them.
+  const auto watched = testing::run_cli_with_prefix("LD_DEBUG=files", run);
+  ASSERT_EQ(watched.exit_code, 0) << watched.output;
+  EXPECT_NE(watched.output.find("deploydyn_fcl.so"), std::string::npos);
+  EXPECT_NE(watched.output.find("libfcl"), std::string::npos);
+  for (const char* other : {"deploydyn_hdf5", "deploydyn_mpi", "deploydyn_embree", "deploydyn_umfpack", "libhdf5",
+                            "libmpi", "libembree", "libumfpack"}) {
+    EXPECT_EQ(watched.output.find(other), std::string::npos) << other;
+  }
+  const auto unwatched = testing::run_cli_with_prefix("LD_DEBUG=files", run + " --set checks.clearance=false");
+  ASSERT_EQ(unwatched.exit_code, 0) << unwatched.output;
+  EXPECT_EQ(unwatched.output.find("deploydyn_"), std::string::npos);
+  for (const char* library : kOnDemandLibraries) EXPECT_EQ(unwatched.output.find(library), std::string::npos) << library;
 }
 
 TEST(CliLightStart, Hdf5OutputLoadsItsModuleAndWritesHistoryH5) {
@@ -73,7 +94,8 @@ TEST(CliLightStart, AMissingModuleIsToldByNameWithWhatNeedsIt) {
   // DEPLOYDYN_MODULE_DIR, when set, is the only folder looked in.
   const auto outcome = testing::run_cli_with_prefix(
       "DEPLOYDYN_MODULE_DIR=" + (folder.path() / "no_modules").string(),
-      "run " + example_path("general.yaml") + " --set analysis.end=0.01 --set output.hdf5=true --quiet --out " +
+      "run " + example_path("general.yaml") +
+          " --set analysis.end=0.01 --set checks.clearance=false --set output.hdf5=true --quiet --out " +
           (folder.path() / "out").string());
   EXPECT_EQ(outcome.exit_code, 3) << outcome.output;  // results that cannot be written
   EXPECT_NE(outcome.output.find("the module deploydyn_hdf5.so could not be loaded"), std::string::npos) << outcome.output;

@@ -9,13 +9,14 @@
 // contact response), so a clash is reported, never prevented.
 //
 // The broad phase and the capsule distances are FCL's (libfcl-dev), behind this header: what
-// includes it does not see FCL.
+// includes it does not see FCL. Which members are watched, as what capsules: checks/member_pairs.hpp.
 
 #include <memory>
 #include <optional>
 #include <string>
 #include <vector>
 
+#include "deploydyn/checks/member_pairs.hpp"
 #include "deploydyn/model/model.hpp"
 #include "deploydyn/solvers/step_record.hpp"
 
@@ -57,15 +58,23 @@ struct ClearanceReport {
 inline constexpr std::size_t kClosestPairs = 5;
 inline constexpr std::size_t kReportedStartOverlaps = 5;
 
-// The capsule radius of an element (m): its section's outer size (half the diameter; half the
-// diagonal of a rectangle, which the capsule then encloses), else a beam's given heights, else
-// √(A/π), the solid circle of its area.
-double capsule_radius(const Model& model, MemberKind kind, int element);
+// What a run asks of the watch: every record, and the report at the end.
+class ClearanceSink : public RecordSink {
+ public:
+  bool wants_every_step() const override { return true; }
+  virtual ClearanceReport report() const = 0;
+};
 
-// Whether the model has two members that could meet: a pair that shares no node.
-bool clearance_applies(const Model& model);
+// The FCL module's ClearanceWatch (modules/fcl_module.cpp, deploydyn_fcl.so), for the command
+// and the Python module, which do not link FCL (util/optional_module.hpp; docs/performance.md,
+// "A light start"). Throws std::runtime_error when the module cannot be loaded.
+std::unique_ptr<ClearanceSink> clearance_watch_from_module(const Model& model);
 
-class ClearanceWatch final : public RecordSink {
+using MakeClearanceWatch = ClearanceSink* (*)(const Model& model);
+inline constexpr const char* kFclModuleName = "deploydyn_fcl";
+inline constexpr const char* kMakeClearanceWatchSymbol = "deploydyn_make_clearance_watch";
+
+class ClearanceWatch final : public ClearanceSink {
  public:
   explicit ClearanceWatch(const Model& model);
   ~ClearanceWatch() override;
@@ -73,9 +82,8 @@ class ClearanceWatch final : public RecordSink {
   ClearanceWatch& operator=(const ClearanceWatch&) = delete;
 
   void record(const StepRecord& record) override;
-  bool wants_every_step() const override { return true; }
 
-  ClearanceReport report() const;
+  ClearanceReport report() const override;
 
  private:
   struct State;

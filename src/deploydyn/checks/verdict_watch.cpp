@@ -3,7 +3,7 @@
 namespace deploydyn {
 
 VerdictWatch::VerdictWatch(const Model& model) : model_(model), checks_(model) {
-  if (model.checks.clearance) clearance_.emplace(model);
+  if (model.checks.clearance) clearance_ = clearance_watch_from_module(model);
 }
 
 void VerdictWatch::record(const StepRecord& record) {

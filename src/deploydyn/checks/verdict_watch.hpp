@@ -4,6 +4,7 @@
 // (checks.clearance), the clearance watch. A run, a continuation path and each deployment of the
 // deployability window feed one, and it makes their verdict.
 
+#include <memory>
 #include <optional>
 
 #include "deploydyn/checks/clearance.hpp"
@@ -28,7 +29,7 @@ class VerdictWatch final : public RecordSink {
  private:
   const Model& model_;
   MemberChecks checks_;
-  std::optional<ClearanceWatch> clearance_;
+  std::unique_ptr<ClearanceSink> clearance_;  // from the FCL module, when checks.clearance
 };
 
 }  // namespace deploydyn
