@@ -11,7 +11,7 @@
 #include "support/csv_table.hpp"
 
 namespace deploydyn {
-namespace {
+namespace DEPLOYDYN_FILE_SCOPE {
 
 // A small tip load (PL²/EI = 1e-4): the response is linear to ~1e-8, and in a statically
 // determinate cantilever the one-point elements carry the exact moment at their mid-points,

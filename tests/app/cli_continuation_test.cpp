@@ -13,7 +13,7 @@
 
 #include "support/cli.hpp"
 
-namespace {
+namespace DEPLOYDYN_FILE_SCOPE {
 
 using deploydyn::testing::read_text;
 using deploydyn::testing::run_cli;

@@ -19,7 +19,7 @@
 #include "support/csv_table.hpp"
 
 namespace deploydyn {
-namespace {
+namespace DEPLOYDYN_FILE_SCOPE {
 
 namespace fs = std::filesystem;
 using testing::read_text;

@@ -10,7 +10,7 @@
 #include "support/cli.hpp"
 
 namespace deploydyn {
-namespace {
+namespace DEPLOYDYN_FILE_SCOPE {
 
 using testing::CliOutcome;
 using testing::read_text;

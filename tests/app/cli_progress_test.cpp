@@ -12,7 +12,7 @@
 #include "support/cli.hpp"
 
 namespace deploydyn {
-namespace {
+namespace DEPLOYDYN_FILE_SCOPE {
 
 // 1 250 000 steps of the general linkage: about 2.5 s here, long enough for the line to appear;
 // a twentieth of them under the sanitizer, which runs about 20 times slower.

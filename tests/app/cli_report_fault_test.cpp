@@ -17,7 +17,7 @@
 #include "support/cli.hpp"
 
 namespace deploydyn {
-namespace {
+namespace DEPLOYDYN_FILE_SCOPE {
 
 namespace fs = std::filesystem;
 using testing::example_path;

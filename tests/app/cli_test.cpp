@@ -13,7 +13,7 @@
 #include <sstream>
 #include <string>
 
-namespace {
+namespace DEPLOYDYN_FILE_SCOPE {
 
 namespace fs = std::filesystem;
 using deploydyn::testing::read_text;

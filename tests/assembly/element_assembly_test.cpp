@@ -13,7 +13,7 @@
 #include "support/model_builder.hpp"
 
 namespace deploydyn {
-namespace {
+namespace DEPLOYDYN_FILE_SCOPE {
 
 // Steps about 1e-6 of the quantity's size: truncation and round-off both ≈ 1e-10 relative.
 constexpr double kStep_m = 1e-6;

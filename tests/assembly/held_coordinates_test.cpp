@@ -20,7 +20,7 @@
 #include "support/model_builder.hpp"
 
 namespace deploydyn {
-namespace {
+namespace DEPLOYDYN_FILE_SCOPE {
 
 std::vector<std::unique_ptr<SparseLinearSystem>> sparse_back_ends() {
   std::vector<std::unique_ptr<SparseLinearSystem>> systems;

@@ -14,7 +14,7 @@
 #include "deploydyn/assembly/klu_linear_system.hpp"
 
 namespace deploydyn {
-namespace {
+namespace DEPLOYDYN_FILE_SCOPE {
 
 // The 5-point Laplacian of a side × side grid, with its entries in analyze()'s order.
 struct Grid {

@@ -8,7 +8,7 @@
 #include "deploydyn/io/model_loader.hpp"
 
 namespace deploydyn {
-namespace {
+namespace DEPLOYDYN_FILE_SCOPE {
 
 constexpr const char* kHeader =
     "materials: {steel: {E: 2.0e11, density: 7850}}\n"

@@ -15,7 +15,7 @@
 #include "support/bar_mass_oscillator.hpp"
 
 namespace deploydyn {
-namespace {
+namespace DEPLOYDYN_FILE_SCOPE {
 
 constexpr double kPi = std::numbers::pi;
 

@@ -20,7 +20,7 @@
 #include "deploydyn/util/run_threads.hpp"
 
 namespace deploydyn {
-namespace {
+namespace DEPLOYDYN_FILE_SCOPE {
 
 // A sparse matrix by its entries (in analyze()'s order) and their values.
 struct SparseMatrix {

@@ -32,7 +32,7 @@
 #include "support/cli.hpp"
 
 namespace deploydyn {
-namespace {
+namespace DEPLOYDYN_FILE_SCOPE {
 
 constexpr double kPi = std::numbers::pi;
 

@@ -33,7 +33,7 @@
 #include "deploydyn/model/dof_map.hpp"
 
 namespace deploydyn {
-namespace {
+namespace DEPLOYDYN_FILE_SCOPE {
 
 // Node positions and velocities at time t, by node name.
 using Motion = std::function<void(double t, const std::string& node, Eigen::Vector3d& x, Eigen::Vector3d& v)>;

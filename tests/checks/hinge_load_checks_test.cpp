@@ -20,7 +20,7 @@
 #include "support/cli.hpp"
 
 namespace deploydyn {
-namespace {
+namespace DEPLOYDYN_FILE_SCOPE {
 
 const double kInitialAngle = std::atan2(0.2, 1.0) - std::numbers::pi;
 

@@ -18,7 +18,7 @@
 #include "deploydyn/solvers/analysis.hpp"
 
 namespace deploydyn {
-namespace {
+namespace DEPLOYDYN_FILE_SCOPE {
 
 constexpr double kPi = std::numbers::pi;
 

@@ -11,7 +11,7 @@
 #include <numbers>
 
 namespace deploydyn {
-namespace {
+namespace DEPLOYDYN_FILE_SCOPE {
 
 constexpr double kPi = std::numbers::pi;
 

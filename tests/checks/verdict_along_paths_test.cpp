@@ -20,7 +20,7 @@
 #include "support/cli.hpp"
 
 namespace deploydyn {
-namespace {
+namespace DEPLOYDYN_FILE_SCOPE {
 
 using testing::read_text;
 using testing::run_cli;

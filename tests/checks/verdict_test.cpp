@@ -17,7 +17,7 @@
 #include "support/cli.hpp"
 
 namespace deploydyn {
-namespace {
+namespace DEPLOYDYN_FILE_SCOPE {
 
 using nlohmann::ordered_json;
 

@@ -20,7 +20,7 @@
 #include "support/finite_difference.hpp"
 
 namespace deploydyn {
-namespace {
+namespace DEPLOYDYN_FILE_SCOPE {
 
 // Central differences in q (m) and t (s): truncation O(1e-10), round-off O(1e-11).
 constexpr double kStep = 1e-5;

@@ -15,7 +15,7 @@
 #include "deploydyn/constraints/pin_joint.hpp"
 
 namespace deploydyn {
-namespace {
+namespace DEPLOYDYN_FILE_SCOPE {
 
 constexpr double kRoundOff = 1e-12;
 // A first-order statement checked with a rotation of δ = 1e-6 rad: the second-order rest is δ².

@@ -11,7 +11,7 @@
 #include "support/finite_difference.hpp"
 
 namespace deploydyn {
-namespace {
+namespace DEPLOYDYN_FILE_SCOPE {
 
 // Step 1e-6·L0: truncation O(1e-12) and round-off O(1e-10) relative, far below the tolerance.
 constexpr double kStepPerLength = 1e-6;

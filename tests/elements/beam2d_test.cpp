@@ -15,7 +15,7 @@
 #include "support/finite_difference.hpp"
 
 namespace deploydyn {
-namespace {
+namespace DEPLOYDYN_FILE_SCOPE {
 
 // Step 1e-6 (m and rad, for L0 ~ 1): truncation O(1e-12), round-off O(1e-10) relative.
 constexpr double kStep = 1e-6;

@@ -15,7 +15,7 @@
 #include "support/frames.hpp"
 
 namespace deploydyn {
-namespace {
+namespace DEPLOYDYN_FILE_SCOPE {
 
 // Unknowns of size ~1 (m, and the entries of R): step 1e-6 gives truncation O(1e-12) and
 // round-off O(1e-10) relative to the analytic value.

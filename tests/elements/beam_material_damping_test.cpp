@@ -25,7 +25,7 @@
 #include "support/model_builder.hpp"
 
 namespace deploydyn {
-namespace {
+namespace DEPLOYDYN_FILE_SCOPE {
 
 constexpr double kPi = std::numbers::pi;
 // Step 1e-6 (m, rad, m/s): truncation O(1e-12), round-off O(1e-10) relative.

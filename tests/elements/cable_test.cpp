@@ -21,7 +21,7 @@
 #include "support/finite_difference.hpp"
 
 namespace deploydyn {
-namespace {
+namespace DEPLOYDYN_FILE_SCOPE {
 
 // Step 1e-6 (m, s and thermal factor alike, on unit-sized quantities): truncation O(1e-12),
 // round-off O(1e-10) relative, far below the tolerance.

@@ -12,7 +12,7 @@
 #include <string>
 
 namespace deploydyn {
-namespace {
+namespace DEPLOYDYN_FILE_SCOPE {
 
 TEST(ElementKinds, NamesAndQuantitiesAreUnique) {
   std::set<std::string_view> kinds;

@@ -21,7 +21,7 @@
 #include "support/finite_difference.hpp"
 
 namespace deploydyn {
-namespace {
+namespace DEPLOYDYN_FILE_SCOPE {
 
 // Rebound rate over impact rate of I δ̈ = −M(δ, δ̇) from δ = 0, δ̇ = ω0, by classical Runge–Kutta
 // with 20 000 steps per contact: independent of the bisection in hunt_crossley_factor.

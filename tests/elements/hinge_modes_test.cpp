@@ -16,7 +16,7 @@
 #include "deploydyn/model/dof_map.hpp"
 
 namespace deploydyn {
-namespace {
+namespace DEPLOYDYN_FILE_SCOPE {
 
 using namespace hinge::history;
 

@@ -17,7 +17,7 @@
 #include "support/finite_difference.hpp"
 
 namespace deploydyn {
-namespace {
+namespace DEPLOYDYN_FILE_SCOPE {
 
 constexpr double kStep = 1e-6;
 constexpr double kTolerance = 1e-6;  // relative to the block's largest entry

@@ -24,7 +24,7 @@
 #include "support/model_builder.hpp"
 
 namespace deploydyn {
-namespace {
+namespace DEPLOYDYN_FILE_SCOPE {
 
 constexpr double kDegree = std::numbers::pi / 180.0;
 // Positions are sums of a few products of the lengths: round-off only.

@@ -14,7 +14,7 @@
 #include "support/cli.hpp"
 
 namespace deploydyn {
-namespace {
+namespace DEPLOYDYN_FILE_SCOPE {
 
 struct BadModelCase {
   const char* file;     // in tests/io/bad_models/
@@ -309,7 +309,7 @@ TEST(BadModel, TableListsEveryFile) {
 }  // namespace deploydyn
 
 namespace deploydyn {
-namespace {
+namespace DEPLOYDYN_FILE_SCOPE {
 
 // A large model (20 000 nodes in a chain of bars, ~1.3 MB) with one mistake on its last line:
 // the error still names that line, and loading does not crash or take long.

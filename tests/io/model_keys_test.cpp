@@ -20,7 +20,7 @@
 #include "deploydyn/io/model_loader.hpp"
 
 namespace deploydyn {
-namespace {
+namespace DEPLOYDYN_FILE_SCOPE {
 
 std::string model_format() {
   std::ifstream file(std::string(DEPLOYDYN_SOURCE_DIR) + "/docs/model-format.md");

@@ -10,7 +10,7 @@
 #include "deploydyn/io/input_error.hpp"
 
 namespace deploydyn {
-namespace {
+namespace DEPLOYDYN_FILE_SCOPE {
 
 // The examples' coordinates are written to 15 digits; lengths agree with Table 1 to this.
 constexpr double kGeometryTolerance = 1e-12;
@@ -303,7 +303,7 @@ TEST(Override, BadOverrideNamesItself) {
 }  // namespace deploydyn
 
 namespace deploydyn {
-namespace {
+namespace DEPLOYDYN_FILE_SCOPE {
 
 // The petal example: its hinge_angle drivers read with their nodes and unit axes.
 TEST(ModelLoader, PetalExampleLoadsHingeAngleDrivers) {

@@ -10,7 +10,7 @@
 #include "deploydyn/io/model_writer.hpp"
 
 namespace deploydyn {
-namespace {
+namespace DEPLOYDYN_FILE_SCOPE {
 
 // Field by field, exactly: the writer must not lose a bit of any number. mass_given and
 // length_given are left out on purpose: the saved file names every mass and length.

@@ -26,7 +26,7 @@
 #include "deploydyn/io/yaml_reader.hpp"
 
 namespace deploydyn::io {
-namespace {
+namespace DEPLOYDYN_FILE_SCOPE {
 
 std::string read_text(const std::filesystem::path& file) {
   std::ifstream in(file, std::ios::binary);

@@ -5,7 +5,7 @@
 #include <gtest/gtest.h>
 
 namespace deploydyn {
-namespace {
+namespace DEPLOYDYN_FILE_SCOPE {
 
 Model three_nodes(int dimension) {
   Model model;

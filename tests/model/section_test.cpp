@@ -9,7 +9,7 @@
 #include <numbers>
 
 namespace deploydyn {
-namespace {
+namespace DEPLOYDYN_FILE_SCOPE {
 
 constexpr double kPi = std::numbers::pi;
 // Relative tolerance: the formulas are evaluated once; only round-off separates them.

@@ -10,7 +10,7 @@
 #include "deploydyn/model/least_value.hpp"
 
 namespace deploydyn {
-namespace {
+namespace DEPLOYDYN_FILE_SCOPE {
 
 // Central differences with this step have O(1e-10) truncation and O(1e-10) round-off error
 // for functions of size 1 on [0, 5] s.

@@ -15,7 +15,7 @@
 #include "support/model_builder.hpp"
 
 namespace deploydyn {
-namespace {
+namespace DEPLOYDYN_FILE_SCOPE {
 
 class SlowCollector final : public RecordSink {
  public:

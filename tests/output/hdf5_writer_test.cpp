@@ -21,7 +21,7 @@
 #include "support/csv_table.hpp"
 
 namespace deploydyn {
-namespace {
+namespace DEPLOYDYN_FILE_SCOPE {
 
 using testing::read_text;
 using testing::ScratchFolder;

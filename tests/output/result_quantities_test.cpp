@@ -30,7 +30,7 @@
 #include "verification/verification_case.hpp"
 
 namespace deploydyn {
-namespace {
+namespace DEPLOYDYN_FILE_SCOPE {
 
 namespace fs = std::filesystem;
 using testing::CsvTable;

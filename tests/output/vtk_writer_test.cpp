@@ -29,7 +29,7 @@
 #include "support/model_builder.hpp"
 
 namespace deploydyn {
-namespace {
+namespace DEPLOYDYN_FILE_SCOPE {
 
 using nlohmann::json;
 using testing::example_path;

@@ -24,7 +24,7 @@
 #include "support/cli.hpp"
 
 namespace deploydyn {
-namespace {
+namespace DEPLOYDYN_FILE_SCOPE {
 
 using testing::read_text;
 using testing::ScratchFolder;

@@ -25,7 +25,7 @@
 #include "support/mises_truss.hpp"
 
 namespace deploydyn {
-namespace {
+namespace DEPLOYDYN_FILE_SCOPE {
 
 using testing::example_path;
 using testing::read_text;

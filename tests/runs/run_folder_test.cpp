@@ -19,7 +19,7 @@
 #include "support/mises_truss.hpp"
 
 namespace deploydyn {
-namespace {
+namespace DEPLOYDYN_FILE_SCOPE {
 
 using testing::read_text;
 using testing::ScratchFolder;

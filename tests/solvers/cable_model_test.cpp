@@ -22,7 +22,7 @@
 #include "support/model_builder.hpp"
 
 namespace deploydyn {
-namespace {
+namespace DEPLOYDYN_FILE_SCOPE {
 
 // A quantity of cable `element` in a record.
 double cable_result(const StepRecord& record, int element, std::string_view quantity) {

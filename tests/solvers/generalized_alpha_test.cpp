@@ -14,7 +14,7 @@
 #include "support/model_builder.hpp"
 
 namespace deploydyn {
-namespace {
+namespace DEPLOYDYN_FILE_SCOPE {
 
 using Kind = IntegratorOptions::Kind;
 

@@ -14,7 +14,7 @@
 #include "support/model_builder.hpp"
 
 namespace deploydyn {
-namespace {
+namespace DEPLOYDYN_FILE_SCOPE {
 
 constexpr char kLift[] = "1.0471975511965976";  // 60° (rad) in 6 s, as the tutorial
 // Over the first 24 ms (a period of the leaf's 42 Hz mode) the smooth step's torque rises by up

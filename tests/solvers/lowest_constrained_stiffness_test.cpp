@@ -14,7 +14,7 @@
 #include "deploydyn/generators/roof.hpp"
 
 namespace deploydyn {
-namespace {
+namespace DEPLOYDYN_FILE_SCOPE {
 
 // Lanczos stops at a relative residual of 1e-8 (solvers/constrained_shift_invert.cpp); the
 // eigenvalues' error goes as its square times the spread, the dense route's is round-off of

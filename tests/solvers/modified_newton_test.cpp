@@ -19,7 +19,7 @@
 #include "support/model_builder.hpp"
 
 namespace deploydyn {
-namespace {
+namespace DEPLOYDYN_FILE_SCOPE {
 
 // r(q) = K q + c q³ (per component) − f: two coupled springs that stiffen, no constraints.
 class HardeningSprings final : public DiscreteEquations {

@@ -16,7 +16,7 @@
 #include "support/model_builder.hpp"
 
 namespace deploydyn {
-namespace {
+namespace DEPLOYDYN_FILE_SCOPE {
 
 // Steel bars (EA ≈ 7e6 N) under inertia forces of ~0.1 N stretch by ~1e-9 m; the margin is
 // for the index-3 Newmark solution, whose positions are exact only up to the constraint

@@ -10,7 +10,7 @@
 #include "support/bar_mass_oscillator.hpp"
 
 namespace deploydyn {
-namespace {
+namespace DEPLOYDYN_FILE_SCOPE {
 
 TEST(Settling, ADampedOscillatorSettlesWhenItsEnvelopeFallsBelowTheTolerance) {
   const testing::BarMassOscillator oscillator;

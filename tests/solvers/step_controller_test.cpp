@@ -8,7 +8,7 @@
 #include <cmath>
 
 namespace deploydyn {
-namespace {
+namespace DEPLOYDYN_FILE_SCOPE {
 
 AnalysisOptions options(double step_s, double output_s, bool adaptive) {
   AnalysisOptions o;

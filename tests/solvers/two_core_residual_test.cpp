@@ -10,7 +10,7 @@
 #include "support/model_builder.hpp"
 
 namespace deploydyn {
-namespace {
+namespace DEPLOYDYN_FILE_SCOPE {
 
 TEST(TwoCoreResidual, RunsOnOneCoreHoldsWhileItLives) {
   const int threads = run_threads();

@@ -16,7 +16,7 @@
 #include "support/cli.hpp"
 
 namespace deploydyn {
-namespace {
+namespace DEPLOYDYN_FILE_SCOPE {
 
 using testing::example_path;
 using testing::read_text;
@@ -147,7 +147,6 @@ TEST(StudyCli, BadStudyFileIsExitCodeTwoWithNothingWritten) {
   EXPECT_EQ(run_cli("studdy " + file.string()).exit_code, 2);
 }
 
-}  // namespace
 TEST(StudyCli, TheDefaultFolderIsNotReplacedSilently) {
   // Without --out or the study file's out, cases go to ./results/<study name>, as `run` goes to
   // ./results: a second study there is refused unless --force.
@@ -166,4 +165,5 @@ TEST(StudyCli, TheDefaultFolderIsNotReplacedSilently) {
   EXPECT_EQ(run_cli_with_prefix(in_folder, "study " + file.string() + " -q --force").exit_code, 0);
 }
 
+}  // namespace
 }  // namespace deploydyn

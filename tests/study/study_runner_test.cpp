@@ -30,7 +30,7 @@
 #include "support/cli.hpp"
 
 namespace deploydyn {
-namespace {
+namespace DEPLOYDYN_FILE_SCOPE {
 
 using testing::read_text;
 using testing::ScratchFolder;
@@ -264,7 +264,7 @@ TEST(StudyRunner, AStopWhileTheTablesAreMadeLeavesNoTableAndKeepsTheCases) {
 }  // namespace deploydyn
 
 namespace deploydyn {
-namespace {
+namespace DEPLOYDYN_FILE_SCOPE {
 
 // The processes of a distributed study as threads of this one (what app/mpi_channel.cpp does
 // over MPI): reports queue up for process 0, each worker waits for its assignment.

@@ -10,7 +10,7 @@
 #include <numbers>
 
 namespace deploydyn::thermal {
-namespace {
+namespace DEPLOYDYN_FILE_SCOPE {
 
 constexpr double kSigma = 5.670374419e-8;
 

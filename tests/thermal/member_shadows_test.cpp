@@ -14,7 +14,7 @@
 #include <stdexcept>
 
 namespace deploydyn::thermal {
-namespace {
+namespace DEPLOYDYN_FILE_SCOPE {
 
 constexpr double kRadius_m = 0.01;
 const Eigen::Vector3d kSunAbove = Eigen::Vector3d::UnitZ();

@@ -15,7 +15,7 @@
 #include "deploydyn/thermal/member_heat_balance.hpp"
 
 namespace deploydyn::thermal {
-namespace {
+namespace DEPLOYDYN_FILE_SCOPE {
 
 constexpr double kFlux_W_m2 = 1361.0;
 constexpr double kMean_K = 300.0;

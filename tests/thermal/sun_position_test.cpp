@@ -11,7 +11,7 @@
 #include <vector>
 
 namespace deploydyn::thermal {
-namespace {
+namespace DEPLOYDYN_FILE_SCOPE {
 
 TEST(SunPosition, ThreadsAskingAtOnceGetWhatALoneCallGets) {
   const int n_times = 500;

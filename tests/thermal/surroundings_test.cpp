@@ -10,7 +10,7 @@
 #include "deploydyn/thermal/sun_position.hpp"
 
 namespace deploydyn::thermal {
-namespace {
+namespace DEPLOYDYN_FILE_SCOPE {
 
 TEST(Surroundings, EclipseWithALinearPenumbra) {
   OrbitEnvironment orbit;

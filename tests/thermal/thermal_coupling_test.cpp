@@ -21,7 +21,7 @@
 #include "support/csv_table.hpp"
 
 namespace deploydyn::thermal {
-namespace {
+namespace DEPLOYDYN_FILE_SCOPE {
 
 const std::string kBoomExample = std::string(DEPLOYDYN_SOURCE_DIR) + "/examples/thermal/boom_out_of_eclipse.yaml";
 constexpr double kSigma = 5.670374419e-8;

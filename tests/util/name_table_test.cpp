@@ -10,7 +10,7 @@
 #include "deploydyn/model/model.hpp"
 
 namespace deploydyn {
-namespace {
+namespace DEPLOYDYN_FILE_SCOPE {
 
 template <class Enum, std::size_t N>
 void expect_round_trip(const NameTable<Enum, N>& table) {

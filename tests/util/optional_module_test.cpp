@@ -11,7 +11,7 @@
 #include "deploydyn/assembly/umfpack_from_module.hpp"
 
 namespace deploydyn {
-namespace {
+namespace DEPLOYDYN_FILE_SCOPE {
 
 std::string error_of(std::string_view name, const char* symbol) {
   try {

@@ -16,7 +16,7 @@
 #include "deploydyn/util/two_core_choice.hpp"
 
 namespace deploydyn {
-namespace {
+namespace DEPLOYDYN_FILE_SCOPE {
 
 TEST(SideBySide, EachPieceRunsOnceWhoeverRunsIt) {
   std::vector<int> first(20000, 0), second(20000, 0);

@@ -29,7 +29,7 @@
 #include "verification/verification_case.hpp"
 
 namespace deploydyn {
-namespace {
+namespace DEPLOYDYN_FILE_SCOPE {
 
 using verification::Bound;
 using verification::check;

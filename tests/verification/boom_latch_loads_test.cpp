@@ -17,7 +17,7 @@
 #include "deploydyn/solvers/analysis.hpp"
 
 namespace deploydyn {
-namespace {
+namespace DEPLOYDYN_FILE_SCOPE {
 
 constexpr int kBays = 4;
 // The latch of docs/boom.md's table: 2000 N·m/rad, Hunt–Crossley restitution 0.3.

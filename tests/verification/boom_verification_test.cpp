@@ -18,7 +18,7 @@
 #include "support/model_builder.hpp"
 
 namespace deploydyn {
-namespace {
+namespace DEPLOYDYN_FILE_SCOPE {
 
 constexpr int kBays = 4;
 constexpr double kStiffness_Nm_per_rad = 0.484, kFriction = 0.17, kPinRadius_m = 0.004;
@@ -140,7 +140,7 @@ TEST(BoomVerification, AtMinus170FrictionStopsEveryBayShortOfItsLatch) {
 }  // namespace deploydyn
 
 namespace deploydyn {
-namespace {
+namespace DEPLOYDYN_FILE_SCOPE {
 
 // Damped and run to rest (docs/boom.md, "Settling"): its titanium links with material damping
 // (loss factor 1 % at 50 Hz), end_when: settled. The mast settles within 15 s, latched, with

@@ -24,7 +24,7 @@
 #include "verification_case.hpp"
 
 namespace deploydyn {
-namespace {
+namespace DEPLOYDYN_FILE_SCOPE {
 
 constexpr double kTipMass_kg = 1.0;
 const double kArmLength_m = std::hypot(1.0, 0.2);

@@ -19,7 +19,7 @@
 #include "verification/verification_case.hpp"
 
 namespace deploydyn {
-namespace {
+namespace DEPLOYDYN_FILE_SCOPE {
 
 using testing::BarSpec;
 using testing::ModelBuilder;

@@ -25,7 +25,7 @@
 #include "verification/verification_case.hpp"
 
 namespace deploydyn {
-namespace {
+namespace DEPLOYDYN_FILE_SCOPE {
 
 using verification::check;
 using verification::RigidFourBar;

@@ -11,7 +11,7 @@
 #include "support/model_builder.hpp"
 
 namespace deploydyn {
-namespace {
+namespace DEPLOYDYN_FILE_SCOPE {
 
 // The two constraints differ in scale (bar_angle's Φ is a length, hinge_angle's an angle), so
 // Newton stops at slightly different iterates: agreement to its tolerances.

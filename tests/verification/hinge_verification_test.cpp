@@ -19,7 +19,7 @@
 #include "verification_case.hpp"
 
 namespace deploydyn {
-namespace {
+namespace DEPLOYDYN_FILE_SCOPE {
 
 constexpr double kYoungsModulus_Pa = 2.0e11, kArea_m2 = 1.0e-4, kExpansion_per_C = 1.2e-5;
 constexpr double kTipMass_kg = 1.0;

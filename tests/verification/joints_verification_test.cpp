@@ -19,7 +19,7 @@
 #include "support/model_builder.hpp"
 
 namespace deploydyn {
-namespace {
+namespace DEPLOYDYN_FILE_SCOPE {
 
 // ---------------------------------------------------------------------------------------------
 // The pendulum. A uniform rod of length L and mass m, turning about a pivot on its axis at a

@@ -13,7 +13,7 @@
 #include "verification_case.hpp"
 
 namespace deploydyn {
-namespace {
+namespace DEPLOYDYN_FILE_SCOPE {
 
 constexpr double kGravity_m_s2 = 9.81;
 constexpr double kTipMass_kg = 100.0;

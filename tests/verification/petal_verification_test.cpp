@@ -14,7 +14,7 @@
 #include "support/model_builder.hpp"
 
 namespace deploydyn {
-namespace {
+namespace DEPLOYDYN_FILE_SCOPE {
 
 // Newton's constraint tolerance is 1e-10 (rad for the hinge angle).
 constexpr double kAngleTolerance_rad = 1e-8;

@@ -12,7 +12,7 @@
 #include "support/model_builder.hpp"
 
 namespace deploydyn {
-namespace {
+namespace DEPLOYDYN_FILE_SCOPE {
 
 // Newton's tolerances (1e-10 on Φ) and a stiff short beam: the pin's position is exact to
 // round-off; the turned beam's tip to its bending under 10 N (checked through the torque).

@@ -25,7 +25,7 @@
 #include "verification_case.hpp"
 
 namespace deploydyn {
-namespace {
+namespace DEPLOYDYN_FILE_SCOPE {
 
 using Rows = std::vector<std::map<std::string, std::string>>;
 

@@ -27,7 +27,7 @@
 #include "verification_case.hpp"
 
 namespace deploydyn {
-namespace {
+namespace DEPLOYDYN_FILE_SCOPE {
 
 // The linearized prestress (N, per bar in model order) of `model` at its initial shape for
 // length errors δ (m, per bar).

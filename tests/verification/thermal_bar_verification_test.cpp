@@ -13,7 +13,7 @@
 #include "verification/verification_case.hpp"
 
 namespace deploydyn {
-namespace {
+namespace DEPLOYDYN_FILE_SCOPE {
 
 using testing::BarSpec;
 using testing::ModelBuilder;

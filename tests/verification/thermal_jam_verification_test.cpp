@@ -33,7 +33,7 @@
 #include "verification/verification_case.hpp"
 
 namespace deploydyn {
-namespace {
+namespace DEPLOYDYN_FILE_SCOPE {
 
 using verification::check;
 
