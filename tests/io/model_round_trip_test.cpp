@@ -337,7 +337,7 @@ TEST(ModelRoundTrip, Environments) {
   EXPECT_EQ(orbit.materials[0].absorptivity, 0.6);
   const Model ground = load_model_from_string(R"(
 nodes: {A: [0, 0, 0], B: [1, 0, 0]}
-materials: {alu: {E: 7.0e10, density: 2700, specific_heat: 900, absorptivity: 0.35, emissivity: 0.85}}
+materials: {alu: {E: 7.0e10, density: 2700, specific_heat: 900, absorptivity: 0.35, emissivity: 0.85, conductivity: 160}}
 sections: {rod: {shape: rectangle, width: 0.01, height: 0.03}}
 elements: {1: {nodes: [A, B], section: rod, material: alu}}
 supports: [{node: A}, {node: B}]
@@ -356,6 +356,7 @@ environment:
   convection: 12
   reference_temperature: 293.15
   initial_temperature: 300
+  conduction: true
 )", "ground environment");
   expect_round_trip(ground);
   const GroundEnvironment& site = ground.environment->ground;
@@ -364,6 +365,8 @@ environment:
   EXPECT_EQ(site.north.axis, 2);
   EXPECT_EQ(site.north.sign, -1.0);
   EXPECT_EQ(ground.environment->initial_temperature_K, 300.0);
+  EXPECT_TRUE(ground.environment->conduction);
+  EXPECT_FALSE(orbit.environment->conduction);
 }
 
 // Cables: a winch's rest length L0(t), a pretension (written as given, its L0 recomputed to the

@@ -112,6 +112,67 @@ analysis: {type: static, end: 100, step: 1}
 )", "shaded_pair.yaml");
 }
 
+// Two aluminium tubes meeting at B in orbit, the sun along z: `lit` lies broadside along x,
+// `second` along `second_axis` from B; conduction on or off.
+Model pair_at_a_node(const std::string& second_axis, bool conduction) {
+  return load_model_from_string(R"(
+nodes: {A: [0, 0, 0], B: [1, 0, 0], C: )" + second_axis + R"(}
+materials:
+  alu: {E: 7.0e10, alpha: 2.3e-5, density: 2700, specific_heat: 900, absorptivity: 0.6, emissivity: 0.8, conductivity: 160}
+sections: {tube: {shape: circular_tube, outer_diameter: 0.02, wall_thickness: 0.001}}
+elements:
+  lit: {nodes: [A, B], section: tube, material: alu}
+  second: {nodes: [B, C], section: tube, material: alu}
+supports: [{node: A}, {node: B}, {node: C}]
+environment: {type: orbit, sun_direction: [0, 0, 1], reference_temperature: 293.15, initial_temperature: 250, conduction: )" +
+                                    std::string(conduction ? "true" : "false") + R"(}
+analysis: {type: static, end: 100, step: 1}
+)", "pair_at_a_node.yaml");
+}
+
+// Steps of 10 s over `duration_s` at the file's configuration: the members' temperatures and
+// the heat tally.
+std::pair<std::vector<double>, HeatTally> heat_for(Model model, double duration_s) {
+  ThermalCoupling coupling(model);
+  const DofMap dofs(model);
+  MotionState state;
+  state.q = Eigen::VectorXd::Zero(dofs.n_dofs());
+  for (int node = 0; node < 3; ++node) {
+    for (int k = 0; k < 3; ++k) state.q[dofs.index(node, k)] = model.nodes[node].position_m[k];
+  }
+  for (double t = 0.0; t < duration_s; t += 10.0) {
+    state.time_s = t;
+    coupling.before_step(state, 10.0);
+    state.time_s = t + 10.0;
+    coupling.after_step(state, false);
+  }
+  return {coupling.temperatures_K(), coupling.tally()};
+}
+
+TEST(ThermalCoupling, ConductionWarmsTheShadedNeighbourAndClosesTheHeatBalance) {
+  // `second` stands end-on to the sun (along z): alone it only radiates; through B it takes
+  // heat from `lit`.
+  const auto [alone_K, alone_tally] = heat_for(pair_at_a_node("[1, 0, 1]", false), 3000.0);
+  const auto [joined_K, joined_tally] = heat_for(pair_at_a_node("[1, 0, 1]", true), 3000.0);
+  // Through B, G = k A / L (two halves 2 k A / L in series) = 9.5e-3 W/K carries about 1 W at
+  // their 100 K difference, 2.8 kJ over the run: some 19 K of a member's m c = 145 J/K, before
+  // radiation takes its share back (the lit one's faster, it is warmer).
+  EXPECT_GT(joined_K[1], alone_K[1] + 5.0);
+  EXPECT_LT(joined_K[0], alone_K[0] - 2.0);
+  EXPECT_GT(joined_K[0], joined_K[1]);  // heat flows down the difference, not past it
+  const double net_J = joined_tally.absorbed_J - joined_tally.emitted_J - joined_tally.convected_J;
+  EXPECT_NEAR(joined_tally.stored_J, net_J, 1e-9 * joined_tally.absorbed_J);
+  EXPECT_NEAR(joined_tally.absorbed_J, alone_tally.absorbed_J, 1e-9 * alone_tally.absorbed_J);  // the same sun
+}
+
+TEST(ThermalCoupling, ConductionBetweenMembersAtOneTemperatureChangesNothing) {
+  // Both broadside and alike: K T = 0, so conduction leaves their temperatures as they were.
+  const auto [alone_K, alone_tally] = heat_for(pair_at_a_node("[2, 0, 0]", false), 3000.0);
+  const auto [joined_K, joined_tally] = heat_for(pair_at_a_node("[2, 0, 0]", true), 3000.0);
+  for (std::size_t i = 0; i < 2; ++i) EXPECT_NEAR(joined_K[i], alone_K[i], 1e-9) << i;
+  EXPECT_GT(alone_K[0], 250.0 + 10.0);  // and both warmed in the sun
+}
+
 TEST(ThermalCoupling, AMemberLeavingAnothersShadowTakesTheSunAsTheGeometrySays) {
   Model model = shaded_pair("shadows: {every: 1, samples_along: 4, samples_across: 8}");
   ThermalCoupling coupling(model);

@@ -30,14 +30,14 @@ inline constexpr std::array<std::string_view, 2> kCircleSection{"shape", "diamet
 inline constexpr std::array<std::string_view, 3> kRectangleSection{"shape", "width", "height"};
 inline constexpr std::array<std::string_view, 3> kMember{"elements", "buckling_length_factor", "slack"};
 inline constexpr std::array<std::string_view, 1> kThermal{"dT"};
-inline constexpr std::array<std::string_view, 10> kOrbitEnvironment{
+inline constexpr std::array<std::string_view, 11> kOrbitEnvironment{
     "type", "reference_temperature", "initial_temperature", "sun_direction", "solar_constant", "sink_temperature",
-    "eclipses", "penumbra", "shadows", "section_gradients"};
-inline constexpr std::array<std::string_view, 16> kGroundEnvironment{
+    "eclipses", "penumbra", "shadows", "section_gradients", "conduction"};
+inline constexpr std::array<std::string_view, 17> kGroundEnvironment{
     "type",       "reference_temperature", "initial_temperature", "latitude",      "longitude",
     "start",      "utc_offset",            "up",                  "north",         "direct_normal",
     "diffuse",    "sky_temperature",       "air_temperature",     "convection",    "shadows",
-    "section_gradients"};
+    "section_gradients", "conduction"};
 inline constexpr std::array<std::string_view, 3> kShadows{"every", "samples_along", "samples_across"};
 inline constexpr std::array<std::string_view, 4> kSupport{"node", "fix", "axis", "offset"};
 inline constexpr std::array<std::string_view, 5> kJoint{"type", "nodes", "axis", "arms", "offsets"};

@@ -547,9 +547,10 @@ class ModelReader {
     if (const auto gradients = spec.find("section_gradients")) {
       environment.section_gradients = gradients->choice({"false", "true"}) == 1;
     }
+    if (const auto conduction = spec.find("conduction")) environment.conduction = conduction->choice({"false", "true"}) == 1;
+    model_.environment = environment;
     check_heated_members(spec);
     if (environment.section_gradients) check_graded_beams(spec);
-    model_.environment = environment;
   }
 
   // `shadows: {every: N, samples_along: n, samples_across: m}`, or `shadows: true` for the defaults.
@@ -648,6 +649,10 @@ class ModelReader {
           material_spec.fail_key(key, fmt::format("is required by the environment (element '{}' is of this material)",
                                                   element));
         }
+      }
+      if (model_.environment->conduction && !material.conductivity_W_mK) {
+        material_spec.fail_key("conductivity", fmt::format("is required by the environment's conduction (element '{}' "
+                                                           "is of this material)", element));
       }
     }
   }

@@ -174,6 +174,10 @@ void emit_environment(YAML::Emitter& out, const Environment& environment) {
     emit_key(out, "section_gradients");
     out << true;
   }
+  if (environment.conduction) {
+    emit_key(out, "conduction");
+    out << true;
+  }
   if (environment.kind == EnvironmentKind::orbit) {
     const OrbitEnvironment& orbit = environment.orbit;
     emit_key(out, "sun_direction");

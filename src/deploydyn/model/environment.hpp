@@ -82,6 +82,9 @@ struct Environment {
   // Beams get the difference between their sun-facing and shaded sides as a through-depth
   // gradient (thermal/section_temperature_difference.hpp); their materials need a conductivity.
   bool section_gradients = false;
+  // Members that share a node exchange heat by conduction (thermal/conduction_network.hpp);
+  // their materials need a conductivity.
+  bool conduction = false;
 };
 
 }  // namespace deploydyn

@@ -55,6 +55,7 @@ RoundSectionBody round_section(const Section& section, const Material& material,
 
 ThermalCoupling::ThermalCoupling(Model& model) : model_(model), dofs_(model) {
   if (!model.environment) throw std::invalid_argument("ThermalCoupling: the model has no environment");
+  std::vector<ConductingMember> conducting;
   for (const ElementRef& ref : all_elements(model)) {
     const std::optional<HeatedBody> heated = ref.kind->heated_body(model, ref.index);
     if (!heated) continue;
@@ -93,9 +94,15 @@ ThermalCoupling::ThermalCoupling(Model& model) : model_(model), dofs_(model) {
       ref.kind->set_element_temperature_gradients(model, ref.index, TimeFunction::constant(0.0),
                                                   TimeFunction::constant(0.0));
     }
+    if (model.environment->conduction) {
+      const double conductivity = required(material.conductivity_W_mK, material, "conductivity", name);
+      conducting.push_back({member.node_a, member.node_b,
+                            2.0 * conductivity * model.sections[heated->section].properties.area_m2 / reference_length_m});
+    }
     names_.push_back(name);
   }
   const Environment& environment = *model.environment;
+  if (environment.conduction) conduction_.emplace(conducting);
   differences_K_.assign(members_.size(), Eigen::Vector3d::Zero());
   pending_differences_K_ = differences_K_;
   local_axes_.assign(members_.size(), {Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero()});
@@ -158,18 +165,7 @@ void ThermalCoupling::update_shadows(const Eigen::VectorXd* q, double time_s) {
 void ThermalCoupling::before_step(const MotionState& start, double step_s) {
   const double end_s = start.time_s + step_s;
   const Surroundings around = surroundings_at(*model_.environment, end_s);
-  pending_tally_ = tally_;
-  for (std::size_t i = 0; i < members_.size(); ++i) {
-    const HeatedElement& member = members_[i];
-    const Eigen::Vector3d axis = axis_at(start.q, member);
-    const double absorbed_W = absorbed_power_W(member.body, axis, around);
-    const double t1 = backward_euler_step(member.body, temperatures_K_[i], step_s, absorbed_W, around);
-    pending_K_[i] = t1;
-    pending_tally_.absorbed_J += step_s * absorbed_W;
-    pending_tally_.emitted_J += step_s * emitted_power_W(member.body, t1, around);
-    pending_tally_.convected_J += step_s * convected_power_W(member.body, t1, around);
-    pending_tally_.stored_J += member.body.heat_capacity_J_K * (t1 - temperatures_K_[i]);
-  }
+  advance_temperatures(start, step_s, around);
   // The sun-to-shade differences (docs/theory.md, "The section's sun-to-shade difference"):
   // D towards the sun's direction ⟂ the axis, relaxing as the mean temperature does.
   for (const int graded : graded_) {
@@ -191,6 +187,36 @@ void ThermalCoupling::before_step(const MotionState& start, double step_s) {
     local_axes_[i] = {local_y, along.cross(local_y)};
   }
   set_temperature_changes(start.time_s, end_s);
+}
+
+// Every member's T at the step's end into pending_K_, and the heat balance's tally.
+void ThermalCoupling::advance_temperatures(const MotionState& start, double step_s, const Surroundings& around) {
+  std::vector<double> absorbed_W(members_.size());
+  for (std::size_t i = 0; i < members_.size(); ++i) {
+    absorbed_W[i] = absorbed_power_W(members_[i].body, axis_at(start.q, members_[i]), around);
+  }
+  if (conduction_) {
+    std::vector<LumpedMember> bodies;
+    bodies.reserve(members_.size());
+    for (const HeatedElement& member : members_) bodies.push_back(member.body);
+    const Eigen::VectorXd end_K = conduction_->backward_euler_step(
+        bodies, Eigen::Map<const Eigen::VectorXd>(temperatures_K_.data(), std::ssize(temperatures_K_)), step_s,
+        Eigen::Map<const Eigen::VectorXd>(absorbed_W.data(), std::ssize(absorbed_W)), around);
+    pending_K_.assign(end_K.begin(), end_K.end());
+  } else {
+    for (std::size_t i = 0; i < members_.size(); ++i) {
+      pending_K_[i] = backward_euler_step(members_[i].body, temperatures_K_[i], step_s, absorbed_W[i], around);
+    }
+  }
+  // Conduction moves heat between members and is no term of the sum (K·1 = 0).
+  pending_tally_ = tally_;
+  for (std::size_t i = 0; i < members_.size(); ++i) {
+    const LumpedMember& body = members_[i].body;
+    pending_tally_.absorbed_J += step_s * absorbed_W[i];
+    pending_tally_.emitted_J += step_s * emitted_power_W(body, pending_K_[i], around);
+    pending_tally_.convected_J += step_s * convected_power_W(body, pending_K_[i], around);
+    pending_tally_.stored_J += body.heat_capacity_J_K * (pending_K_[i] - temperatures_K_[i]);
+  }
 }
 
 void ThermalCoupling::after_step(const MotionState& end, bool output) {

@@ -13,7 +13,9 @@
 // `section_gradients` every beam also carries the difference D between its sun-facing and its
 // shaded side (thermal/section_temperature_difference.hpp), a vector ⟂ to its axis towards the
 // sun, advanced as its mean temperature and given to the beam as through-depth differences on
-// its local y and z (ElementKind::set_element_temperature_gradients).
+// its local y and z (ElementKind::set_element_temperature_gradients). With `conduction` the
+// members that share a node exchange heat (thermal/conduction_network.hpp), and all
+// temperatures advance together.
 //
 // It writes the ΔT functions of `model`, which must be the model the run's Assembler is built
 // from and must outlive the run; it reads nothing of the mechanics but the node positions in q.
@@ -28,6 +30,7 @@
 #include "deploydyn/model/dof_map.hpp"
 #include "deploydyn/model/model.hpp"
 #include "deploydyn/solvers/step_hook.hpp"
+#include "deploydyn/thermal/conduction_network.hpp"
 #include "deploydyn/thermal/member_heat_balance.hpp"
 #include "deploydyn/thermal/shadow_caster.hpp"
 #include "deploydyn/thermal/section_temperature_difference.hpp"
@@ -101,6 +104,7 @@ class ThermalCoupling final : public StepHook {
   };
   Eigen::Vector3d axis_at(const Eigen::VectorXd& q, const HeatedElement& member) const;
   void update_shadows(const Eigen::VectorXd* q, double time_s);
+  void advance_temperatures(const MotionState& start, double step_s, const Surroundings& around);
   void set_temperature_changes(double t0, double t1);
   void track_extremes(double time_s);
 
@@ -114,6 +118,7 @@ class ThermalCoupling final : public StepHook {
   double time_s_ = 0.0;
   TemperatureExtreme coldest_, hottest_;
   OutputCallback on_output_;
+  std::optional<ConductionNetwork> conduction_;  // when the environment asks for conduction
 
   std::unique_ptr<ShadowCaster> shadows_;   // when the environment asks for shadows
   int shadow_every_steps_ = 1;
