@@ -100,8 +100,12 @@ class ModelBuilder:
         inertia_z (m⁴, in-plane bending in 2D), shear_factor (default 5/6), shear_modulus (Pa,
         default E/2.6), height_y (m) and dT_gradient_y (T(+y) − T(−y), °C, a function of t),
         mass, length, dT as for `bar`. 3D keys (inertia_y, torsion, orientation, height_z,
-        dT_gradient_z) and the other keys of a beam go by name. Its nodes carry a rotation:
-        clamp one with support(node, fix=["x", "y", "rotation"])."""
+        dT_gradient_z) and the other keys of a beam go by name, among them its sectional values
+        as engineers give them: mass_per_length (kg/m), rotary_inertia_per_length (kg·m; 3D
+        [J_xx, J_yy, J_zz] in the local frame, 2D J_zz), shear_stiffness (N; 3D [GA_y, GA_z],
+        2D GA_y), axial_stiffness (N), bending_stiffness (N·m²; 3D [EI_y, EI_z], 2D EI_z) and
+        torsional_stiffness (N·m², 3D). Its nodes carry a rotation: clamp one with
+        support(node, fix=["x", "y", "rotation"])."""
         where = "ModelBuilder.beam"
         nodes = [checked.name(where, "node_a", node_a), checked.name(where, "node_b", node_b)]
         return self._element(

@@ -29,9 +29,12 @@ def element_fields():
 def value_kind(field):
     """What a key's value is, read from its table entry: "function" (a function of time),
     "names" (a list of node names), "name" (of a material or section), "numbers" (a vector),
-    "number", or "value" (anything a model file holds: the loader alone checks it)."""
+    "number_or_numbers" (a vector in 3D, a number in 2D: a beam's sectional values), "number",
+    or "value" (anything a model file holds: the loader alone checks it)."""
     if field.allowed.startswith("a function"):
         return "function"
+    if field.allowed.startswith("a number or a vector"):
+        return "number_or_numbers"
     if "node names" in field.allowed:
         return "names"
     if field.allowed.startswith("a name from"):
@@ -48,6 +51,8 @@ _CHECKS = {
     "names": checked.names,
     "name": checked.name,
     "numbers": checked.numbers,
+    "number_or_numbers": lambda where, key, value: (
+        value if checked.is_number(value) else checked.numbers(where, key, value)),
     "number": checked.number,
     "value": lambda where, key, value: checked.plain(value, key, where),
 }

@@ -11,9 +11,9 @@ from deploydyn import _core, _element_fields
 # One value of each kind, and one that is none of them. (The builder checks the kind; the
 # loader checks the value at build.)
 SAMPLE = {"function": deploydyn.smooth_step(0, 0, 1, 5), "names": ["A", "B"], "name": "steel",
-          "numbers": [0.0, 0.0, 1.0], "number": 2.5, "value": 2.5}
-WRONG = {"function": [1, 2], "names": 3.5, "name": 1.5, "numbers": "up", "number": "2.5",
-         "value": {1.5}}
+          "numbers": [0.0, 0.0, 1.0], "number_or_numbers": [5.0e6, 23.4e6], "number": 2.5, "value": 2.5}
+WRONG = {"function": [1, 2], "names": 3.5, "name": 1.5, "numbers": "up", "number_or_numbers": "stiff",
+         "number": "2.5", "value": {1.5}}
 
 
 def tables():
@@ -48,6 +48,9 @@ def test_the_words_of_the_tables_give_the_kinds_of_value():
     assert kinds[("beam", "orientation")] == "numbers" and kinds[("hinge", "axis")] == "numbers"
     assert kinds[("cable", "rest_length")] == "function" and kinds[("beam", "dT_gradient_z")] == "function"
     assert kinds[("hinge", "friction")] == "number" and kinds[("beam", "shear_factor")] == "number"
+    assert kinds[("beam", "mass_per_length")] == "number" and kinds[("beam", "torsional_stiffness")] == "number"
+    assert all(kinds[("beam", key)] == "number_or_numbers"
+               for key in ("rotary_inertia_per_length", "shear_stiffness", "bending_stiffness"))
 
 
 @pytest.mark.parametrize("type, key", [(t, k) for t, fs in _element_fields.element_fields().items()

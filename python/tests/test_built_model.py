@@ -305,3 +305,32 @@ def test_joint_arms_must_be_two_vectors():
     builder = deploydyn.ModelBuilder("bad")
     with pytest.raises(TypeError, match="arms must be two vectors"):
         builder.joint("j", "A", "B", type="universal", arms=[0, 1, 0])
+
+
+@pytest.mark.parametrize("dimension", [2, 3])
+def test_a_beam_given_by_its_sectional_values_bends_as_timoshenko(dimension):
+    """The builder takes a beam's sectional values (docs/model-format.md, "Sectional values"):
+    in 3D vectors per local axis, in 2D the in-plane numbers. A cantilever of the thin strip's
+    GA_y = 5.0e6 N, GA_z = 23.4e6 N under tip loads along y and z deflects by
+    PL³/(3EI) + PL/GA in each plane; its material and geometry alone (EI = 2e3 N·m²) would
+    bend it some 300× further."""
+    n, ei_y, ei_z, ga_y, ga_z = 16, 2.0e6, 1.0e6, 5.0e6, 23.4e6
+    b = deploydyn.ModelBuilder("Timoshenko cantilever").material("steel", E=E, density=7850)
+    for i in range(n + 1):
+        b.node(f"N{i}", i / n, 0, *([0] if dimension == 3 else []))
+    per_axis = (lambda v3, v2: v3) if dimension == 3 else (lambda v3, v2: v2)
+    for i in range(n):
+        extra = {"inertia_y": 1e-8, "torsion": 2e-8, "orientation": [0, 1, 0],
+                 "torsional_stiffness": 1e6} if dimension == 3 else {}
+        b.beam(f"b{i}", f"N{i}", f"N{i + 1}", area=AREA, inertia_z=1e-8, material="steel",
+               mass_per_length=1.0, rotary_inertia_per_length=per_axis([2.0, 1.0, 1.0], 1.0),
+               axial_stiffness=1e9, bending_stiffness=per_axis([ei_y, ei_z], ei_z),
+               shear_stiffness=per_axis([ga_y, ga_z], ga_y), **extra)
+    b.support("N0", fix=["x", "y", "z", "rotation"] if dimension == 3 else ["x", "y", "rotation"])
+    b.load(f"N{n}", force=[0, 1.0, 1.0] if dimension == 3 else [0, 1.0])
+    b.analysis(type="static", end=1.0, step=1.0)
+    result = b.build().run(check=True)
+    # The bending part converges as O(L0²): PL³/(12 EI n²) too much at n elements.
+    assert result[f"y.N{n}"][-1] == pytest.approx(1 / (3 * ei_z) + 1 / ga_y, rel=2e-3)
+    if dimension == 3:
+        assert result[f"z.N{n}"][-1] == pytest.approx(1 / (3 * ei_y) + 1 / ga_z, rel=2e-3)

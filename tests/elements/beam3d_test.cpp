@@ -223,6 +223,41 @@ TEST(Beam3d, ConsistentMassGivesTheKineticEnergy) {
   }
 }
 
+// A given rotary inertia per length diag(J_xx, J_yy, J_zz) in the element frame (D7a): a rigid
+// turn at any ω (Ṙ = ω̂ R, R a random rotation; both nodes alike) has the rotary kinetic energy
+// ½ L0 ωᵀ(R E diag(J) Eᵀ Rᵀ)ω, consistent and lumped, whatever the frame; and the geometric
+// J = ρ(I_y + I_z, I_y, I_z) reproduces rotary_inertia_per_length(mass, area, …) exactly.
+TEST(Beam3d, GivenRotaryInertiaActsAboutEveryAxis) {
+  std::mt19937 rng(57);
+  std::uniform_real_distribution<double> unit(-1.0, 1.0);
+  const Eigen::Vector3d given(12.0, 9.0, 5.0);  // J_xx < J_yy + J_zz: S = (1, 4, 8), all in play
+  for (int k = 0; k < kConfigurations; ++k) {
+    const Eigen::Vector3d chord(unit(rng), unit(rng), unit(rng));
+    const beam3d::Section section = random_section(rng, chord);
+    const double l0 = section.reference_length_m;
+    const Eigen::Matrix3d& e = section.frame;
+    const Eigen::Matrix3d j = beam3d::rotary_inertia_per_length(given, e);
+    const Eigen::Matrix3d rotation = random_rotation(rng, M_PI);
+    const Eigen::Vector3d omega(unit(rng), unit(rng), unit(rng));
+    Eigen::Matrix3d omega_hat;
+    omega_hat << 0, -omega.z(), omega.y(), omega.z(), 0, -omega.x(), -omega.y(), omega.x(), 0;
+    Eigen::VectorXd v = Eigen::VectorXd::Zero(beam3d::kDofs);
+    put_frame(v, beam3d::kFrameA, omega_hat * rotation);
+    put_frame(v, beam3d::kFrameB, omega_hat * rotation);
+    const Eigen::Matrix3d spatial = rotation * e * given.asDiagonal() * e.transpose() * rotation.transpose();
+    const double expected = 0.5 * l0 * omega.dot(spatial * omega);
+    for (const MassMatrixKind kind : {MassMatrixKind::consistent, MassMatrixKind::lumped}) {
+      const beam3d::ElementMatrix m = beam3d::mass_matrix(1.0, j, l0, kind);
+      EXPECT_NEAR(0.5 * v.dot(m * v), expected, kRoundOff * expected) << "configuration " << k;
+    }
+    const double mass = 2.7, area = 3e-3, inertia_y = 4e-6, inertia_z = 9e-6, density = mass / (area * l0);
+    const Eigen::Matrix3d geometric = beam3d::rotary_inertia_per_length(
+        Eigen::Vector3d(density * (inertia_y + inertia_z), density * inertia_y, density * inertia_z), e);
+    EXPECT_LT((geometric - beam3d::rotary_inertia_per_length(mass, area, inertia_y, inertia_z, l0, e)).norm(),
+              kRoundOff * geometric.norm());
+  }
+}
+
 // Frame orthonormality: B against Φ and H(λ) against Bᵀλ by finite differences, the bias of Φ̈
 // along a trajectory, and Φ = 0 on rotations; the clamp vanishes on R = I and on no rotation
 // near it.

@@ -97,6 +97,12 @@ void expect_equal_models(const Model& a, const Model& b) {
     EXPECT_EQ(x.temperature_gradient_z_C, y.temperature_gradient_z_C);
     EXPECT_EQ(x.gradient_z_given, y.gradient_z_given);
     EXPECT_EQ(x.mass_kg, y.mass_kg);
+    EXPECT_EQ(x.mass_per_length_kg_m, y.mass_per_length_kg_m);
+    EXPECT_EQ(x.rotary_inertia_per_length_kg_m, y.rotary_inertia_per_length_kg_m);
+    EXPECT_EQ(x.shear_stiffness_N, y.shear_stiffness_N);
+    EXPECT_EQ(x.axial_stiffness_N, y.axial_stiffness_N);
+    EXPECT_EQ(x.bending_stiffness_Nm2, y.bending_stiffness_Nm2);
+    EXPECT_EQ(x.torsional_stiffness_Nm2, y.torsional_stiffness_Nm2);
     EXPECT_EQ(x.reference_length_m, y.reference_length_m);
     EXPECT_EQ(x.temperature_change_C, y.temperature_change_C);
     EXPECT_EQ(x.temperature_given, y.temperature_given);
@@ -627,6 +633,45 @@ supports: [{node: A}]
   ASSERT_EQ(model.n_beams(), 1);
   EXPECT_EQ(model.beams[0].orientation, Eigen::Vector3d(0, 0, 1));
   expect_round_trip(model);
+}
+
+// Sectional values given directly (docs/model-format.md, "Sectional values"): every key in 3D
+// and the in-plane subset in 2D are read and written back, and they replace what they replace.
+TEST(ModelRoundTrip, BeamSectionalValues) {
+  const Model solid = load_model_from_string(R"(
+nodes: {A: [0, 0, 0], B: [2, 0, 0], C: [2, 1, 0]}
+materials: {steel: {E: 2.1e11, alpha: 1.2e-5, density: 7850}}
+elements:
+  b1: {type: beam, nodes: [A, B], material: steel, area: 1e-4, inertia_z: 8.3e-10, inertia_y: 4.1e-10,
+       torsion: 1.4e-9, mass_per_length: 0.75, rotary_inertia_per_length: [20, 10, 10],
+       shear_stiffness: [5.0e6, 23.4e6], axial_stiffness: 2.0e7, bending_stiffness: [1.0e3, 1.1e3],
+       torsional_stiffness: 9.0e2}
+  b2: {type: beam, nodes: [B, C], material: steel, area: 1e-4, inertia_z: 8.3e-10, inertia_y: 4.1e-10,
+       torsion: 1.4e-9, shear_stiffness: [5.0e6, 23.4e6], shear_modulus: 8.0e10, mass: 0.4}
+supports: [{node: A}]
+)", "sectional values 3D");
+  const BeamElement& b1 = solid.beams[0];
+  EXPECT_EQ(b1.mass_kg, 0.75 * 2.0);
+  EXPECT_EQ(b1.rotary_inertia_per_length_kg_m, Eigen::Vector3d(20, 10, 10));
+  EXPECT_EQ(b1.shear_stiffness_N, Eigen::Vector2d(5.0e6, 23.4e6));
+  EXPECT_EQ(b1.bending_stiffness_Nm2, Eigen::Vector2d(1.0e3, 1.1e3));
+  EXPECT_EQ(solid.beams[1].shear_modulus_Pa, 8.0e10);  // it still sets GJ = G · torsion
+  expect_round_trip(solid);
+
+  const Model plane = load_model_from_string(R"(
+nodes: {A: [0, 0], B: [1.5, 0]}
+materials: {steel: {E: 2.1e11}}
+elements:
+  b: {type: beam, nodes: [A, B], material: steel, area: 1e-4, inertia_z: 8.3e-10, mass_per_length: 2,
+      rotary_inertia_per_length: 0.5, shear_stiffness: 5.0e6, axial_stiffness: 2.0e7, bending_stiffness: 1.2e3}
+supports: [{node: A}]
+)", "sectional values 2D");
+  const BeamElement& b = plane.beams[0];
+  EXPECT_EQ(b.mass_kg, 3.0);
+  EXPECT_EQ(b.rotary_inertia_per_length_kg_m, Eigen::Vector3d(0, 0, 0.5));
+  EXPECT_EQ(b.shear_stiffness_N, Eigen::Vector2d(5.0e6, 0));
+  EXPECT_EQ(b.bending_stiffness_Nm2, Eigen::Vector2d(0, 1.2e3));
+  expect_round_trip(plane);
 }
 
 }  // namespace

@@ -62,15 +62,16 @@ OwnTemperature read_own_temperature(const ElementEntryReader& entry, const Model
   return {model.temperature_change_C, false};
 }
 
-LengthMassTemperature read_length_mass_and_temperature(const ElementEntryReader& entry,
-                                                       const Model& model,
-                                                       const Material& material, double area_m2,
-                                                       double distance_m) {
+LengthMassTemperature read_length_mass_and_temperature(
+    const ElementEntryReader& entry, const Model& model, const Material& material, double area_m2,
+    double distance_m, std::optional<double> mass_per_length_kg_m) {
   LengthMassTemperature out;
   const std::optional<double> length_m = entry.optional_number("length", ValueSign::positive, "m");
   out.length_given = length_m.has_value();
   out.reference_length_m = length_m.value_or(distance_m);
-  const GivenMass mass = read_mass(entry, material, area_m2, out.reference_length_m);
+  const GivenMass mass = mass_per_length_kg_m
+                             ? GivenMass{*mass_per_length_kg_m * out.reference_length_m, true}
+                             : read_mass(entry, material, area_m2, out.reference_length_m);
   out.mass_kg = mass.mass_kg;
   out.mass_given = mass.given;
   OwnTemperature own = read_own_temperature(entry, model);

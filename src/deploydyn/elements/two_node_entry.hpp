@@ -52,10 +52,10 @@ struct OwnTemperature {
 };
 OwnTemperature read_own_temperature(const ElementEntryReader& entry, const Model& model);
 
-// `length` (default `distance_m`), then read_mass over L0 and read_own_temperature.
-LengthMassTemperature read_length_mass_and_temperature(const ElementEntryReader& entry,
-                                                       const Model& model,
-                                                       const Material& material, double area_m2,
-                                                       double distance_m);
+// `length` (default `distance_m`), then read_mass over L0 (or, when the type read one, its
+// mass per length · L0) and read_own_temperature.
+LengthMassTemperature read_length_mass_and_temperature(
+    const ElementEntryReader& entry, const Model& model, const Material& material, double area_m2,
+    double distance_m, std::optional<double> mass_per_length_kg_m = std::nullopt);
 
 }  // namespace deploydyn

@@ -7,11 +7,12 @@
 //   x' = (x_b − x_a) / L0,  θ̄ = β0 + (θ_a + θ_b)/2                                 (B1)
 //   t = (cos θ̄, sin θ̄),  n = (−sin θ̄, cos θ̄)                                       (B2)
 //   ε = x'·t − 1,  γ = x'·n,  κ = (θ_b − θ_a) / L0                                   (B3)
-//   U = ½ L0 [EA (ε − ε_t)² + k_s G A γ² + EI (κ − κ_t)²]                            (B4)
+//   U = ½ L0 [EA (ε − ε_t)² + GA_y γ² + EI (κ − κ_t)²],  GA_y = k_s G A unless given  (B4)
 //   ε_t = α ΔT,  κ_t = −α ΔT_gy / h_y   (ΔT_gy = T(+y) − T(−y): curves away from it)  (B5)
-//   N = EA (ε − ε_t),  V = k_s G A γ,  M = EI (κ − κ_t)                              (B6)
+//   N = EA (ε − ε_t),  V = GA_y γ,  M = EI (κ − κ_t)                                 (B6)
 //   f = ∂U/∂q = L0 (N ε_q + V γ_q + M κ_q),  K = ∂f/∂q                               (B7)
-//   M = (ρ A L0/6) [2 1; 1 2] on x and on y, (ρ I L0/6) [2 1; 1 2] on θ; lumped: halves (B8)
+//   M = (μ L0/6) [2 1; 1 2] on x and on y, (J_zz L0/6) [2 1; 1 2] on θ; lumped: halves  (B8)
+//   (μ = ρA, J_zz = ρI unless given: docs/theory.md, "Sectional values given directly")
 //
 // Local unknowns: q = (x_a, y_a, θ_a, x_b, y_b, θ_b). The mass matrix is constant (θ is
 // additive in the plane), which the integrators assume.
@@ -30,7 +31,7 @@ using Matrix = Eigen::Matrix<double, kDofs, kDofs>;
 // The section and reference constants one evaluation needs.
 struct Section {
   double axial_stiffness_N = 0.0;      // EA
-  double shear_stiffness_N = 0.0;      // k_s G A
+  double shear_stiffness_N = 0.0;      // GA_y: k_s G A, or given
   double bending_stiffness_Nm2 = 0.0;  // E I_z
   double reference_length_m = 0.0;     // L0
   double initial_angle_rad = 0.0;      // β0: initial direction of x_b − x_a

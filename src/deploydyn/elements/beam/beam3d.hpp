@@ -11,14 +11,16 @@
 //   Γ = (d1·r' − 1, d2·r', d3·r')                       axial and shear strains   (theory D3)
 //   K_k = ½(d_j·d_i' − d_i·d_j'),  (k,i,j) = (1,2,3), (2,3,1), (3,1,2)
 //                                                       torsion, bending about d2, d3 (D3)
-//   U = ½ L0 (s − s_t)ᵀ C (s − s_t),  s = (Γ, K),  C = diag(EA, k_sGA, k_sGA, GJ, EI_y, EI_z),
+//   U = ½ L0 (s − s_t)ᵀ C (s − s_t),  s = (Γ, K),  C = diag(EA, GA_y, GA_z, GJ, EI_y, EI_z),
 //   s_t = (αΔT, 0, 0, 0, κ_t2, κ_t3)                   strain energy              (D4, D5)
 // Every strain is a quadratic form of q (bilinear in (r', R̄) and in (R̄, R')), so with
 // z = T q = (r', R̄, R') and the gradients G = ∂s/∂z and constant Hessians H_k = ∂²s_k/∂z²:
 //   f = L0 Tᵀ Gᵀ C(s − s_t),   K = L0 Tᵀ (Gᵀ C G + Σ_k [C(s − s_t)]_k H_k) T      (D6)
-// Mass (D7), from T = ½∫ρ(A|ṙ|² + I_z|ḋ2|² + I_y|ḋ3|²) with linear interpolation:
-// constant, (m/6)[2I I; I 2I] on positions and (L0/6)[2 1; 1 2] ⊗ (I₃ ⊗ J) on the R's with
-// J = ρ(I_z e2e2ᵀ + I_y e3e3ᵀ); lumped: the halves on each node's diagonal blocks.
+// Mass (D7), from T = ½∫(μ|ṙ|² + Σ_ij S_ij ḋ_i·ḋ_j) with linear interpolation: constant,
+// (m/6)[2I I; I 2I] on positions and (L0/6)[2 1; 1 2] ⊗ (I₃ ⊗ J) on the R's with
+// J = E S Eᵀ, S the section's second moments of mass per length: ρ diag(0, I_z, I_y) from
+// the geometry, or from a given rotary inertia diag(J_xx, J_yy, J_zz) by (D7a);
+// lumped: the halves on each node's diagonal blocks.
 
 #include <Eigen/Core>
 #include <Eigen/Geometry>
@@ -43,7 +45,7 @@ using IntermediateMatrix = Eigen::Matrix<double, kIntermediate, kIntermediate>;
 // The section constants one evaluation needs.
 struct Section {
   StrainVector stiffness =
-      StrainVector::Zero();         // C: EA, k_sGA_y, k_sGA_z (N), GJ, EI_y, EI_z (N·m²)
+      StrainVector::Zero();         // C: EA, GA_y, GA_z (N), GJ, EI_y, EI_z (N·m²)
   double reference_length_m = 0.0;  // L0
   Eigen::Matrix3d frame = Eigen::Matrix3d::Identity();  // E = [e1 e2 e3], initial
   double damping_time_s = 0.0;  // τ of the material's viscous resultants τ C ṡ (0: undamped)
@@ -244,6 +246,19 @@ inline Eigen::Matrix3d rotary_inertia_per_length(double mass_kg, double area_m2,
   const double density = mass_kg / (area_m2 * l0);
   return density * (inertia_z_m4 * frame.col(1) * frame.col(1).transpose() +
                     inertia_y_m4 * frame.col(2) * frame.col(2).transpose());
+}
+
+// J = E S Eᵀ from a given rotary inertia per length (J_xx, J_yy, J_zz) in the local frame (kg·m):
+// the second moments of mass S_11 = (J_yy + J_zz − J_xx)/2, S_22 = (J_xx + J_zz − J_yy)/2,
+// S_33 = (J_xx + J_yy − J_zz)/2, so that a rigid turn at ω has the kinetic energy ½ L0 ωᵀJω (D7a).
+inline Eigen::Matrix3d rotary_inertia_per_length(const Eigen::Vector3d& given_kg_m,
+                                                 const Eigen::Matrix3d& frame) {
+  const double half_sum = 0.5 * given_kg_m.sum();
+  Eigen::Matrix3d out = Eigen::Matrix3d::Zero();
+  for (int i = 0; i < 3; ++i) {
+    out += (half_sum - given_kg_m[i]) * frame.col(i) * frame.col(i).transpose();
+  }
+  return out;
 }
 
 // (D7).

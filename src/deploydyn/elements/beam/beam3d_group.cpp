@@ -7,6 +7,7 @@
 
 #include "deploydyn/constraints/frame_orthonormality.hpp"
 #include "deploydyn/elements/beam/beam3d.hpp"
+#include "deploydyn/elements/beam/sectional_values.hpp"
 #include "deploydyn/elements/local_element_group.hpp"
 #include "deploydyn/model/dof_map.hpp"
 #include "deploydyn/model/model.hpp"
@@ -133,16 +134,18 @@ std::unique_ptr<ElementGroup> make_beam_group_3d(const Model& model, const DofMa
       throw std::invalid_argument("beam " + e.name +
                                   ": a 3D beam needs area, inertia_y, inertia_z and torsion > 0");
     }
-    const double youngs = material.youngs_modulus_Pa, shear = e.shear_modulus_Pa;
-    beam.section.stiffness << youngs * e.area_m2, e.shear_factor * shear * e.area_m2,
-        e.shear_factor * shear * e.area_m2, shear * e.torsion_m4, youngs * e.inertia_y_m4,
-        youngs * e.inertia_z_m4;
+    const beam::SectionalStiffness c = beam::sectional_stiffness(e, material);  // (D4)
+    beam.section.stiffness << c.axial_N, c.shear_y_N, c.shear_z_N, c.torsional_Nm2, c.bending_y_Nm2,
+        c.bending_z_Nm2;
     beam.section.reference_length_m = e.reference_length_m;
     beam.section.damping_time_s = material.damping_time_s;
     beam.mass_kg = e.mass_kg;
-    beam.rotary_per_length =
-        beam3d::rotary_inertia_per_length(e.mass_kg, e.area_m2, e.inertia_y_m4, e.inertia_z_m4,
-                                          e.reference_length_m, beam.section.frame);
+    beam.rotary_per_length =  // (D7), (D7a)
+        e.rotary_inertia_per_length_kg_m[0] > 0.0
+            ? beam3d::rotary_inertia_per_length(e.rotary_inertia_per_length_kg_m, beam.section.frame)
+            : beam3d::rotary_inertia_per_length(e.mass_kg, e.area_m2, e.inertia_y_m4,
+                                                e.inertia_z_m4, e.reference_length_m,
+                                                beam.section.frame);
     beam.expansion_per_C = material.expansion_per_C;
     beam.curvature_y_per_C_m = e.height_z_m > 0.0 ? material.expansion_per_C / e.height_z_m : 0.0;
     beam.curvature_z_per_C_m = e.height_y_m > 0.0 ? -material.expansion_per_C / e.height_y_m : 0.0;

@@ -38,6 +38,15 @@ struct BeamElement {
   bool gradient_z_given = false;
   double mass_kg = 0.0;             // total; given, or density · area · reference length
   bool mass_given = false;          // true when the model file named the mass
+  // Sectional values as engineers give them (docs/model-format.md, `elements`, "Sectional
+  // values"); each 0 (or a zero vector) when not given, and then derived as before.
+  double mass_per_length_kg_m = 0.0;  // m = it · L0 (replaces density · area)
+  // J_xx (polar), J_yy, J_zz per unit length (kg·m) in the local frame; 2D: J_zz alone.
+  Eigen::Vector3d rotary_inertia_per_length_kg_m = Eigen::Vector3d::Zero();
+  Eigen::Vector2d shear_stiffness_N = Eigen::Vector2d::Zero();        // GA_y, GA_z; 2D: GA_y
+  double axial_stiffness_N = 0.0;                                     // EA
+  Eigen::Vector2d bending_stiffness_Nm2 = Eigen::Vector2d::Zero();    // EI_y, EI_z; 2D: EI_z
+  double torsional_stiffness_Nm2 = 0.0;                               // GJ (3D only)
   double reference_length_m = 0.0;  // L0: given, or the distance of the nodes' initial positions
   bool length_given = false;
   TimeFunction temperature_change_C;  // ΔT_e(t) of the axis, °C

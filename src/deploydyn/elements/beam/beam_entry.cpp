@@ -1,5 +1,6 @@
 #include "deploydyn/elements/beam/beam_entry.hpp"
 
+#include "deploydyn/elements/beam/sectional_values.hpp"
 #include "deploydyn/elements/two_node_entry.hpp"
 
 #include <fmt/format.h>
@@ -8,6 +9,7 @@
 #include <cmath>
 #include <optional>
 #include <utility>
+#include <vector>
 
 namespace deploydyn::beam {
 namespace {
@@ -36,13 +38,22 @@ constexpr ElementField kFields[] = {
     {"height_z", "m", "none", "> 0: depth along local z; 3D only; needed by `dT_gradient_z`"},
     {"dT_gradient_z", "°C", "0", "a function: T(+z face) − T(−z face); 3D only"},
     {"mass", "kg", "`density · area · L0`",
-     "> 0; an error if neither it nor a density is given; rotary inertia is mass · inertia / area"},
+     "> 0; an error if neither it nor a density is given (nor `mass_per_length`); rotary inertia is mass · inertia / area unless `rotary_inertia_per_length`"},
+    {"mass_per_length", "kg/m", "`density · area`", "> 0: the mass per unit length (the beam's mass is it · L0); not with `mass`"},
+    {"rotary_inertia_per_length", "kg·m", "`mass_per_length · [I_y + I_z, I_y, I_z] / area`",
+     "a number or a vector: 3D [J_xx, J_yy, J_zz] about local x (the polar one), y, z, each > 0 and none above the sum of the other two; 2D the number J_zz > 0"},
+    {"shear_stiffness", "N", "`shear_factor · shear_modulus · area`",
+     "a number or a vector: 3D [GA_y, GA_z] for shear along local y, z, each > 0; 2D the number GA_y > 0; not with `shear_factor`"},
+    {"axial_stiffness", "N", "`E · area`", "> 0: EA"},
+    {"bending_stiffness", "N·m²", "`E · [inertia_y, inertia_z]`",
+     "a number or a vector: 3D [EI_y, EI_z] for bending about local y, z, each > 0; 2D the number EI_z > 0"},
+    {"torsional_stiffness", "N·m²", "`shear_modulus · torsion`", "> 0: GJ; 3D only"},
     {"length", "m", "distance of the nodes' initial positions", "> 0: the reference length L0"},
     {"dT", "°C", "`thermal.dT`", "a function: this beam's own ΔT(t) of its axis"},
 };
 
 constexpr std::string_view kOnly3D[] = {"inertia_y", "torsion", "orientation", "height_z",
-                                        "dT_gradient_z", "section_modulus_y"};
+                                        "dT_gradient_z", "section_modulus_y", "torsional_stiffness"};
 constexpr std::string_view kSectionKeys[] = {"area", "inertia_z", "inertia_y", "torsion",
                                              "section_modulus_z", "section_modulus_y"};
 
@@ -59,6 +70,74 @@ void read_gradient(const ElementEntryReader& entry, std::string_view gradient_ke
                                                height_key, gradient_key));
   }
   gradient = std::move(*function);
+}
+
+// A sectional value given per local axis: in 3D a list of `count_3d` numbers, each > 0; in 2D
+// one number (the in-plane one). Empty when the entry does not give `key`.
+std::optional<std::vector<double>> read_per_axis(const ElementEntryReader& entry, std::string_view key,
+                                                 bool three_d, int count_3d, std::string_view unit) {
+  if (!three_d) {
+    const std::optional<double> value = entry.optional_number(key, ValueSign::positive, unit);
+    if (!value) return std::nullopt;
+    return std::vector<double>{*value};
+  }
+  std::optional<std::vector<double>> values = entry.optional_numbers(key, count_3d, unit);
+  if (!values) return std::nullopt;
+  for (const double value : *values) {
+    if (!(value > 0.0)) {
+      entry.fail(key, fmt::format("every value must be positive ({}), got {}", unit, value));
+    }
+  }
+  return values;
+}
+
+// The sectional values given directly (docs/model-format.md, `elements`, "Sectional values").
+void read_sectional_values(const ElementEntryReader& entry, bool three_d, BeamElement& beam) {
+  if (const auto inertia = read_per_axis(entry, "rotary_inertia_per_length", three_d, 3, "kg·m")) {
+    if (three_d) {
+      const Eigen::Vector3d j((*inertia)[0], (*inertia)[1], (*inertia)[2]);
+      // J_xx ≤ J_yy + J_zz and its turns: the second moments of mass of the section (theory D7)
+      // are (J_yy + J_zz − J_xx)/2 and its turns, which cannot be negative.
+      for (int axis = 0; axis < 3; ++axis) {
+        const double others = j.sum() - j[axis];
+        if (j[axis] > others) {
+          constexpr const char* kNames[] = {"J_xx", "J_yy", "J_zz"};
+          entry.fail("rotary_inertia_per_length",
+                     fmt::format("{} = {} is more than the sum {} of the other two: no section has such "
+                                 "inertias (the polar one J_xx is at most J_yy + J_zz, equal for a thin "
+                                 "section)",
+                                 kNames[axis], j[axis], others));
+        }
+      }
+      beam.rotary_inertia_per_length_kg_m = j;
+    } else {
+      beam.rotary_inertia_per_length_kg_m[2] = inertia->front();
+    }
+  }
+  if (const auto shear = read_per_axis(entry, "shear_stiffness", three_d, 2, "N")) {
+    if (entry.has("shear_factor")) {
+      entry.fail("shear_factor",
+                 "give either 'shear_stiffness' (N) or 'shear_factor', not both: the shear "
+                 "stiffness replaces shear_factor · shear_modulus · area");
+    }
+    beam.shear_stiffness_N[0] = shear->front();
+    if (three_d) beam.shear_stiffness_N[1] = (*shear)[1];
+  }
+  beam.axial_stiffness_N =
+      entry.optional_number("axial_stiffness", ValueSign::positive, "N").value_or(0.0);
+  if (const auto bending = read_per_axis(entry, "bending_stiffness", three_d, 2, "N·m²")) {
+    if (three_d) beam.bending_stiffness_Nm2[0] = (*bending)[0];
+    beam.bending_stiffness_Nm2[1] = bending->back();
+  }
+  if (three_d) {
+    beam.torsional_stiffness_Nm2 =
+        entry.optional_number("torsional_stiffness", ValueSign::positive, "N·m²").value_or(0.0);
+  }
+  if (!shear_modulus_used(beam, three_d ? 3 : 2) && entry.has("shear_modulus")) {
+    entry.fail("shear_modulus",
+               three_d ? "has no use with both 'shear_stiffness' and 'torsional_stiffness' given: remove it"
+                       : "has no use with 'shear_stiffness' given (a 2D beam has no torsion): remove it");
+  }
 }
 
 }  // namespace
@@ -124,6 +203,7 @@ void read_entry(const std::string& name, const ElementEntryReader& entry, Model&
       entry.optional_number("shear_factor", ValueSign::positive, "").value_or(beam.shear_factor);
   beam.shear_modulus_Pa = entry.optional_number("shear_modulus", ValueSign::positive, "Pa")
                               .value_or(material.youngs_modulus_Pa / kYoungsToShearModulus);
+  read_sectional_values(entry, three_d, beam);
   read_gradient(entry, "dT_gradient_y", "height_y", beam.temperature_gradient_y_C,
                 beam.gradient_y_given, beam.height_y_m);
   if (three_d) {
@@ -131,8 +211,15 @@ void read_entry(const std::string& name, const ElementEntryReader& entry, Model&
                   beam.gradient_z_given, beam.height_z_m);
   }
 
-  LengthMassTemperature rest =
-      read_length_mass_and_temperature(entry, model, material, beam.area_m2, distance);
+  const std::optional<double> mass_per_length =
+      entry.optional_number("mass_per_length", ValueSign::positive, "kg/m");
+  if (mass_per_length && entry.has("mass")) {
+    entry.fail("mass_per_length",
+               "give either 'mass' (kg, the whole beam's) or 'mass_per_length' (kg/m), not both");
+  }
+  beam.mass_per_length_kg_m = mass_per_length.value_or(0.0);
+  LengthMassTemperature rest = read_length_mass_and_temperature(entry, model, material, beam.area_m2,
+                                                                distance, mass_per_length);
   beam.reference_length_m = rest.reference_length_m;
   beam.length_given = rest.length_given;
   beam.mass_kg = rest.mass_kg;
@@ -163,15 +250,42 @@ void write_entry(const Model& model, int index, ElementEntryWriter& entry) {
     }
   }
   entry.name("material", model.materials[beam.material].name);
-  entry.number("shear_factor", beam.shear_factor);
-  entry.number("shear_modulus", beam.shear_modulus_Pa);
+  const bool three_d = model.dimension == 3;
+  const auto per_axis = [&](std::string_view key, std::vector<double> values_3d, double value_2d) {
+    if (three_d) {
+      entry.numbers(key, values_3d);
+    } else {
+      entry.number(key, value_2d);
+    }
+  };
+  const Eigen::Vector3d& inertia = beam.rotary_inertia_per_length_kg_m;
+  if (inertia[2] > 0.0) {
+    per_axis("rotary_inertia_per_length", {inertia[0], inertia[1], inertia[2]}, inertia[2]);
+  }
+  const Eigen::Vector2d& shear = beam.shear_stiffness_N;
+  if (shear[0] > 0.0) {
+    per_axis("shear_stiffness", {shear[0], shear[1]}, shear[0]);
+  } else {
+    entry.number("shear_factor", beam.shear_factor);
+  }
+  if (shear_modulus_used(beam, model.dimension)) entry.number("shear_modulus", beam.shear_modulus_Pa);
+  if (beam.axial_stiffness_N > 0.0) entry.number("axial_stiffness", beam.axial_stiffness_N);
+  const Eigen::Vector2d& bending = beam.bending_stiffness_Nm2;
+  if (bending[1] > 0.0) per_axis("bending_stiffness", {bending[0], bending[1]}, bending[1]);
+  if (three_d && beam.torsional_stiffness_Nm2 > 0.0) {
+    entry.number("torsional_stiffness", beam.torsional_stiffness_Nm2);
+  }
   if (beam.height_y_m > 0.0) entry.number("height_y", beam.height_y_m);
   if (beam.gradient_y_given) entry.function("dT_gradient_y", beam.temperature_gradient_y_C);
   if (model.dimension == 3) {
     if (beam.height_z_m > 0.0) entry.number("height_z", beam.height_z_m);
     if (beam.gradient_z_given) entry.function("dT_gradient_z", beam.temperature_gradient_z_C);
   }
-  entry.number("mass", beam.mass_kg);
+  if (beam.mass_per_length_kg_m > 0.0) {
+    entry.number("mass_per_length", beam.mass_per_length_kg_m);
+  } else {
+    entry.number("mass", beam.mass_kg);
+  }
   entry.number("length", beam.reference_length_m);
   if (beam.temperature_given) entry.function("dT", beam.temperature_change_C);
 }

@@ -9,6 +9,7 @@
 #include "deploydyn/elements/beam/beam3d.hpp"
 #include "deploydyn/elements/beam/beam3d_group.hpp"
 #include "deploydyn/elements/beam/beam_entry.hpp"
+#include "deploydyn/elements/beam/sectional_values.hpp"
 #include "deploydyn/elements/local_element_group.hpp"
 #include "deploydyn/model/dof_map.hpp"
 #include "deploydyn/model/model.hpp"
@@ -27,7 +28,7 @@ struct Beam2dRecord {
   std::array<int, kDofs> dofs{};
   beam2d::Section section;
   double mass_kg = 0.0;
-  double rotary_inertia_kg_m2 = 0.0;                    // ρ I_z L0 = m I_z / A
+  double rotary_inertia_kg_m2 = 0.0;                    // J_zz L0, or ρ I_z L0 = m I_z / A
   double expansion_per_C = 0.0;                         // α
   double gradient_curvature_per_C_m = 0.0;              // κ_t / ΔT_gy = −α / h_y (B5)
   const TimeFunction* temperature_change_C = nullptr;   // ΔT(t), in the model
@@ -121,14 +122,15 @@ std::unique_ptr<ElementGroup> make_beam_group_2d(const Model& model, const DofMa
       beam.dofs[i++] = dofs.index(node, "rz");
     }
     const Eigen::Vector3d chord = model.nodes[e.node_b].position_m - model.nodes[e.node_a].position_m;
-    beam.section = {.axial_stiffness_N = material.youngs_modulus_Pa * e.area_m2,
-                    .shear_stiffness_N = e.shear_factor * e.shear_modulus_Pa * e.area_m2,
-                    .bending_stiffness_Nm2 = material.youngs_modulus_Pa * e.inertia_z_m4,
+    const beam::SectionalStiffness c = beam::sectional_stiffness(e, material);  // (B4)
+    beam.section = {.axial_stiffness_N = c.axial_N,
+                    .shear_stiffness_N = c.shear_y_N,
+                    .bending_stiffness_Nm2 = c.bending_z_Nm2,
                     .reference_length_m = e.reference_length_m,
                     .initial_angle_rad = std::atan2(chord[1], chord[0]),
                     .damping_time_s = material.damping_time_s};
     beam.mass_kg = e.mass_kg;
-    beam.rotary_inertia_kg_m2 = e.mass_kg * e.inertia_z_m4 / e.area_m2;
+    beam.rotary_inertia_kg_m2 = beam::rotary_inertia_2d_kg_m2(e);  // (B8)
     beam.expansion_per_C = material.expansion_per_C;
     beam.gradient_curvature_per_C_m = e.height_y_m > 0.0 ? -material.expansion_per_C / e.height_y_m : 0.0;
     beam.temperature_change_C = &e.temperature_change_C;

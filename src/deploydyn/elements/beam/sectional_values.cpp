@@ -1,0 +1,31 @@
+#include "deploydyn/elements/beam/sectional_values.hpp"
+
+namespace deploydyn::beam {
+namespace {
+
+// A given value (> 0), else the derived one.
+double given_or(double given, double derived) { return given > 0.0 ? given : derived; }
+
+}  // namespace
+
+SectionalStiffness sectional_stiffness(const BeamElement& beam, const Material& material) {
+  const double youngs = material.youngs_modulus_Pa, shear = beam.shear_modulus_Pa;
+  const double shear_area = beam.shear_factor * shear * beam.area_m2;  // k_s G A
+  return {.axial_N = given_or(beam.axial_stiffness_N, youngs * beam.area_m2),
+          .shear_y_N = given_or(beam.shear_stiffness_N[0], shear_area),
+          .shear_z_N = given_or(beam.shear_stiffness_N[1], shear_area),
+          .torsional_Nm2 = given_or(beam.torsional_stiffness_Nm2, shear * beam.torsion_m4),
+          .bending_y_Nm2 = given_or(beam.bending_stiffness_Nm2[0], youngs * beam.inertia_y_m4),
+          .bending_z_Nm2 = given_or(beam.bending_stiffness_Nm2[1], youngs * beam.inertia_z_m4)};
+}
+
+double rotary_inertia_2d_kg_m2(const BeamElement& beam) {
+  const double given = beam.rotary_inertia_per_length_kg_m[2];
+  return given > 0.0 ? given * beam.reference_length_m : beam.mass_kg * beam.inertia_z_m4 / beam.area_m2;
+}
+
+bool shear_modulus_used(const BeamElement& beam, int dimension) {
+  return !(beam.shear_stiffness_N[0] > 0.0 && (dimension == 2 || beam.torsional_stiffness_Nm2 > 0.0));
+}
+
+}  // namespace deploydyn::beam
