@@ -24,7 +24,7 @@
 #include "verification/verification_case.hpp"
 
 namespace deploydyn {
-namespace {
+namespace DEPLOYDYN_FILE_SCOPE {
 
 using verification::Bound;
 using verification::check;
