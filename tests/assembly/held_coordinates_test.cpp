@@ -142,9 +142,9 @@ TEST(HeldCoordinates, HeldUnknownsWithNoCouplingsAndSystemsWithNothingLeftToFact
   }
 }
 
-// Beyond the dense diagnosis (2000 unknowns) a zero pivot of a pair names the pair's equation.
+// Beyond the null-space diagnosis (50000 unknowns) a zero pivot of a pair names the pair's equation.
 TEST(HeldCoordinates, AZeroPivotInALargeSystemNamesItsEquation) {
-  constexpr int kKept = 2101;
+  constexpr int kKept = 50001;
   std::vector<MatrixEntry> entries;
   for (int k = 0; k < kKept; ++k) entries.push_back({k, k});
   entries.push_back({kKept, kKept});      // the held coordinate's diagonal

@@ -9,6 +9,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numbers>
 
 #include "deploydyn/elements/element_kinds.hpp"
@@ -80,6 +81,7 @@ struct RigidFit {
   Eigen::Vector3d translation = Eigen::Vector3d::Zero();  // at the centroid
   Eigen::Vector3d rotation = Eigen::Vector3d::Zero();     // ω (2D: along z)
   double residual = 0.0;
+  bool determinate = true;  // false: the nodes (one, two, or in a line in 3D) leave ω partly free
 };
 
 RigidFit fit_rigid(int dimension, const std::vector<Eigen::Vector3d>& x, const std::vector<Eigen::Vector3d>& v,
@@ -101,8 +103,10 @@ RigidFit fit_rigid(int dimension, const std::vector<Eigen::Vector3d>& x, const s
       a.block<3, 3>(3 * i, 3) << 0.0, r.z(), -r.y(), -r.z(), 0.0, r.x(), r.y(), -r.x(), 0.0;
     }
   }
-  const Eigen::VectorXd s = a.completeOrthogonalDecomposition().solve(b);
+  const Eigen::CompleteOrthogonalDecomposition<Eigen::MatrixXd> cod(a);
+  const Eigen::VectorXd s = cod.solve(b);
   RigidFit fit;
+  fit.determinate = cod.rank() == a.cols();
   fit.translation.head(dimension) = s.head(dimension);
   if (dimension == 2) {
     fit.rotation.z() = s[2];
@@ -234,33 +238,29 @@ std::vector<FreeMotion> free_motions(const Model& model, const DofMap& dofs, con
     std::vector<Eigen::Vector3d> v(n, Eigen::Vector3d::Zero());
     for (int i = 0; i < n; ++i) v[i].head(dimension) = svd.matrixU().block(dimension * i, 0, dimension, 1);
 
-    const RigidFit fit = fit_rigid(dimension, x, v, centre);
+    RigidFit fit = fit_rigid(dimension, x, v, centre);
+    if (!fit.determinate && n > 1) {
+      // A bar's ends, or nodes in a line, leave the spin about that line free: the still nodes
+      // next to the part, at rest, fix it when the part turns about them (a rotation about the
+      // line through two supports).
+      std::vector<Eigen::Vector3d> x_with = x, v_with = v;
+      for (const int node : part) {
+        for (const int next : neighbours[node]) {
+          if (moving[next]) continue;
+          x_with.push_back(position(model, dofs, q, next));
+          v_with.push_back(Eigen::Vector3d::Zero());
+        }
+      }
+      const RigidFit with_still = fit_rigid(dimension, x_with, v_with, centre);
+      if (with_still.residual <= kRigidFitResidual) fit = with_still;
+    }
     motion.fit_residual = fit.residual;
     const double speed_rotating = fit.rotation.norm() * radius;
     const double speed_translating = fit.translation.norm();
-    if (fit.residual > kRigidFitResidual) {
-      motion.kind = FreeMotion::Kind::mechanism;
-      // Where it meets the still rest: joints and hinges with one side moving, else the nodes.
-      for (const Pivot& p : pivots) {
-        const bool a_in = part_of[p.nodes[0]] >= 0 && std::binary_search(part.begin(), part.end(), p.nodes[0]);
-        const bool b_in = part_of[p.nodes[1]] >= 0 && std::binary_search(part.begin(), part.end(), p.nodes[1]);
-        if (a_in != b_in && !(moving[p.nodes[0]] && moving[p.nodes[1]])) motion.pivots.push_back(p.name);
-      }
-      if (motion.pivots.empty()) {
-        std::vector<int> still;
-        for (const int node : part) {
-          for (const int next : neighbours[node]) {
-            if (!moving[next]) still.push_back(next);
-          }
-        }
-        std::sort(still.begin(), still.end());
-        still.erase(std::unique(still.begin(), still.end()), still.end());
-        for (const int node : still) motion.pivots.push_back("node " + model.nodes[node].name);
-      }
-    } else if (speed_rotating <= kTranslationShare * speed_translating) {
+    if (fit.residual <= kRigidFitResidual && speed_rotating <= kTranslationShare * speed_translating) {
       motion.kind = FreeMotion::Kind::translation;
       motion.direction = fit.translation.normalized();
-    } else {
+    } else if (fit.residual <= kRigidFitResidual) {
       motion.kind = FreeMotion::Kind::rotation;
       const double omega = fit.rotation.norm();
       motion.direction = fit.rotation / omega;
@@ -287,6 +287,33 @@ std::vector<FreeMotion> free_motions(const Model& model, const DofMap& dofs, con
         const bool touches = std::binary_search(part.begin(), part.end(), p.nodes[0]) ||
                              std::binary_search(part.begin(), part.end(), p.nodes[1]);
         if (touches && on_axis(position(model, dofs, q, p.at_node))) motion.pivots.push_back(p.name);
+      }
+      // No node on the axis: the part turns about an instant centre, carried by links that
+      // turn about still nodes of their own (the coupler of a four-bar), a mechanism.
+      if (nearest == std::numeric_limits<double>::infinity()) {
+        motion.kind = FreeMotion::Kind::mechanism;
+        motion.pivots.clear();
+      }
+    } else {
+      motion.kind = FreeMotion::Kind::mechanism;
+    }
+    if (motion.kind == FreeMotion::Kind::mechanism) {
+      // Where it meets the still rest: joints and hinges with one side moving, else the nodes.
+      for (const Pivot& p : pivots) {
+        const bool a_in = std::binary_search(part.begin(), part.end(), p.nodes[0]);
+        const bool b_in = std::binary_search(part.begin(), part.end(), p.nodes[1]);
+        if (a_in != b_in && !(moving[p.nodes[0]] && moving[p.nodes[1]])) motion.pivots.push_back(p.name);
+      }
+      if (motion.pivots.empty()) {
+        std::vector<int> still;
+        for (const int node : part) {
+          for (const int next : neighbours[node]) {
+            if (!moving[next]) still.push_back(next);
+          }
+        }
+        std::sort(still.begin(), still.end());
+        still.erase(std::unique(still.begin(), still.end()), still.end());
+        for (const int node : still) motion.pivots.push_back("node " + model.nodes[node].name);
       }
     }
     out.push_back(std::move(motion));

@@ -12,8 +12,11 @@
 //     in 2D ω along z), minimum norm when the part cannot fix it (one node, or nodes on a line);
 //     a residual above kRigidFitResidual of ‖v‖ is a mechanism motion, not rigid;
 //  4. a rigid motion with |ω| r ≤ kTranslationShare |t| (r the part's radius) is a translation
-//     along t; otherwise a rotation about ω through p = c + ω × t / |ω|² (the point of the axis
-//     nearest c; a node on the axis is preferred), named by the joints or hinges on the axis.
+//     along t; otherwise a rotation about ω through p = c + ω × t / |ω|², given by a node of the
+//     part or next to it on that axis, and named by the joints or hinges there. With no node on
+//     the axis the part turns about an instant centre, carried by links that turn about still
+//     nodes of their own (a four-bar's coupler): a mechanism motion, named by where it meets
+//     the still nodes.
 
 #include <Eigen/Core>
 #include <string>
