@@ -162,5 +162,36 @@ TEST(CliFailure, AdaptiveStepsRecoverFromNewtonFailures) {
   EXPECT_EQ(row, 201);  // t = 0, 5 ms, ..., 1 s
 }
 
+// Issue 31: the canopy (../shared/models/canopy3d.yaml) without the roller under the right
+// girder's far foot. `run` names the free motion by part, not by ~130 coordinates, and `check`
+// names it before any run, warns of it and lists the coordinates with --all.
+TEST(CliFailure, CanopyWithoutASupportNamesTheGirderThatTurns) {
+  ScratchFolder folder("canopy");
+  std::filesystem::create_directories(folder.path());
+  std::string model = read_text(std::filesystem::path(DEPLOYDYN_SOURCE_DIR) / "tests/assembly/models/canopy3d.yaml");
+  const std::string roller = "- node: Rm2b_4\n  fix: [y, z]\n";
+  ASSERT_NE(model.find(roller), std::string::npos);
+  model.erase(model.find(roller), roller.size());
+  const std::string motion =
+      "part with nodes Rm0a_0 … Rm2b_4 (30 nodes): free rotation about z through (0, 0, 1.5) at joint Rfoot";
+  const ModelRun run = run_model(folder, model);
+  expect_failure_naming(run, "free motion: " + motion);
+  EXPECT_EQ(run.outcome.output.find("x.Rm0a_1"), std::string::npos) << "no coordinate list";
+
+  const std::string file = (folder.path() / "model.yaml").string();
+  const CliOutcome check = run_cli("check " + file);
+  EXPECT_EQ(check.exit_code, 0) << check.output;
+  EXPECT_NE(check.output.find("free        " + motion + "\n"), std::string::npos) << check.output;
+  EXPECT_NE(check.output.find("warning     a part moves as a rigid body (" + motion), std::string::npos) << check.output;
+  EXPECT_NE(check.output.find("… and 100 more (--all lists them)"), std::string::npos) << check.output;
+  const CliOutcome all = run_cli("check --all " + file);
+  EXPECT_NE(all.output.find("the coordinates that move: R12.Rm0a_0, R21.Rm0a_0, x.Rm0a_1,"), std::string::npos)
+      << all.output;
+  // The whole canopy, held as drawn, has no free motion to name.
+  const CliOutcome held = run_cli("check " + std::string(DEPLOYDYN_SOURCE_DIR) + "/tests/assembly/models/canopy3d.yaml");
+  EXPECT_EQ(held.output.find("free        "), std::string::npos) << held.output;
+  EXPECT_EQ(held.output.find("rigid body"), std::string::npos) << held.output;
+}
+
 }  // namespace
 }  // namespace deploydyn

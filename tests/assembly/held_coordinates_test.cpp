@@ -171,7 +171,7 @@ TEST(HeldCoordinates, AZeroPivotOfAPairIsASingularMatrix) {
       const FactorizationStatus status = system->factorize();
       EXPECT_FALSE(status.ok);
       EXPECT_NE(status.message.find("singular"), std::string::npos) << status.message;
-      // The SVD's null vector; with column 5 empty it is unknown 5 alone.
+      // The null vector (LinearSystem::null_vector); with column 5 empty it is unknown 5 alone.
       ASSERT_EQ(status.null_vector.size(), 8);
       if (zeroed == 26) {
         EXPECT_NEAR(std::abs(status.null_vector[5]), 1.0, 1e-12);

@@ -21,7 +21,6 @@ constexpr double kNullResidual = 1e-10;
 
 }  // namespace
 
-
 Eigen::MatrixXd LinearSystem::to_dense() const {
   Eigen::MatrixXd dense = Eigen::MatrixXd::Zero(size_, size_);
   for (int i = 0; i < static_cast<int>(values_.size()); ++i) {
@@ -59,8 +58,8 @@ FactorizationStatus LinearSystem::singular(double reciprocal_condition) const {
 
 Eigen::VectorXd LinearSystem::null_vector() const {
   if (size_ > kLargestNullSpaceDiagnosis || size_ == 0) return {};
-  // Sparse inverse iteration (assembly/null_space.hpp), not a dense SVD: 1248 unknowns took
-  // ~1.5 s by SVD.
+  // Sparse inverse iteration (docs/theory.md, "Diagnosis of free motions", D1), not a dense SVD:
+  // 1248 unknowns took 2.1 s by SVD, 19 ms so (bench/free_motion_benchmark.cpp).
   std::vector<Eigen::Triplet<double>> triplets;
   triplets.reserve(values_.size());
   for (int i = 0; i < static_cast<int>(values_.size()); ++i) {

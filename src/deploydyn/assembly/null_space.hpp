@@ -1,7 +1,7 @@
 #pragma once
 // The (near) null space of a sparse matrix, for diagnosing a singular model without a dense SVD
 // (docs/theory.md, "Diagnosis of free motions"). Block inverse iteration with a small shift σ:
-//   X ← orth((S − σI)⁻¹ X),   S = A when A is square, S = AᵀA otherwise,
+//   X ← orth((S − σI)⁻¹ X),   S = A when A is square, S = AᵀA otherwise,          (D1)
 // which amplifies the null directions by 1/σ against 1/|μ − σ| for every other eigenvalue μ of
 // S, so a few sweeps isolate them; one sparse LU of S − σI serves every sweep. The null
 // combinations of the converged block are then those of the small dense SVD of A·X whose
