@@ -316,6 +316,10 @@ std::vector<FreeMotion> free_motions(const Model& model, const DofMap& dofs, con
         for (const int node : still) motion.pivots.push_back("node " + model.nodes[node].name);
       }
     }
+    // A null vector's sign is arbitrary: the axis is given with its largest component positive.
+    Eigen::Index largest_axis = 0;
+    motion.direction.cwiseAbs().maxCoeff(&largest_axis);
+    if (motion.direction[largest_axis] < 0.0) motion.direction = -motion.direction;
     out.push_back(std::move(motion));
   }
 

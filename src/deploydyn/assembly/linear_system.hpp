@@ -58,11 +58,10 @@ class LinearSystem {
 
   // The matrix as dense, for diagnosis of small systems and for tests.
   Eigen::MatrixXd to_dense() const;
-  // A unit vector the current matrix (nearly) maps to zero, by sparse inverse iteration
-  // (assembly/null_space.hpp): the normalized sum of the null basis found, so that every
-  // independent free part shows in it; empty above 50000 unknowns. A singular factorization
-  // reports it, unless deferred: a solver that retries a singular matrix (load steps halved)
-  // asks for it once, for the failure it reports (~20 ms at 1248 unknowns).
+  // The unit vector the current matrix (nearly) maps to zero, from a dense SVD; empty above 2000
+  // unknowns. A singular factorization reports it, unless deferred: a solver that retries a
+  // singular matrix (load steps halved) asks for it once, for the failure it reports (the SVD
+  // of 1248 unknowns takes about a second).
   Eigen::VectorXd null_vector() const;
   void defer_null_vector(bool defer) { defer_null_vector_ = defer; }
   bool null_vector_deferred() const { return defer_null_vector_; }
@@ -70,8 +69,8 @@ class LinearSystem {
  protected:
   // factorize() once the values are known to be finite.
   virtual FactorizationStatus factorize_finite() = 0;
-  // The status of a factorization found singular: the message, and (not deferred, up to 50000
-  // unknowns) the null vector.
+  // The status of a factorization found singular: the message, and for systems small enough
+  // (an SVD of the dense matrix) the null vector.
   FactorizationStatus singular(double reciprocal_condition) const;
   // Below this estimated reciprocal condition number a solution carries no correct digits
   // (machine epsilon is 2.2e-16), so the matrix is treated as singular.

@@ -2,6 +2,7 @@
 
 #include <Eigen/QR>
 #include <Eigen/SVD>
+#include <Eigen/SparseCholesky>
 #include <Eigen/SparseLU>
 
 #include <algorithm>
@@ -41,19 +42,32 @@ NullSpace null_space(const Eigen::SparseMatrix<double>& a, int max_vectors, doub
     out.vectors = Eigen::MatrixXd::Identity(n, std::min<Eigen::Index>(n, max_vectors));
     return out;
   }
-  Eigen::SparseMatrix<double> s = a.rows() == n ? a : Eigen::SparseMatrix<double>(a.transpose() * a);
-  const double s_scale = a.rows() == n ? scale : largest_entry(s);
+  // A square A by LU of A − σI; a tall one by Cholesky of AᵀA + σI, positive definite (and
+  // several times faster than the LU on a roof of 3000 coordinates).
+  const bool square = a.rows() == n;
+  const Eigen::SparseMatrix<double> s = square ? a : Eigen::SparseMatrix<double>(a.transpose() * a);
+  const double s_scale = square ? scale : largest_entry(s);
   Eigen::SparseMatrix<double> identity(n, n);
   identity.setIdentity();
   Eigen::SparseLU<Eigen::SparseMatrix<double>> lu;
+  Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> ldlt;
   bool factored = false;
   for (double shift = kRelativeShift; shift <= kLargestShift && !factored; shift *= kShiftGrowth) {
-    Eigen::SparseMatrix<double> shifted = s - (shift * s_scale) * identity;
-    shifted.makeCompressed();
-    lu.compute(shifted);
-    factored = lu.info() == Eigen::Success;
+    if (square) {
+      Eigen::SparseMatrix<double> shifted = s - (shift * s_scale) * identity;
+      shifted.makeCompressed();
+      lu.compute(shifted);
+      factored = lu.info() == Eigen::Success;
+    } else {
+      ldlt.compute(s + (shift * s_scale) * identity);
+      factored = ldlt.info() == Eigen::Success;
+    }
   }
   if (!factored) return out;
+  auto solve = [&](const Eigen::VectorXd& b) -> Eigen::VectorXd {
+    if (square) return lu.solve(b);
+    return ldlt.solve(b);
+  };
 
   const Eigen::Index block = std::min<Eigen::Index>(n, max_vectors + kExtraColumns);
   std::mt19937 random(2026);  // fixed: the same diagnosis every time
@@ -63,7 +77,7 @@ NullSpace null_space(const Eigen::SparseMatrix<double>& a, int max_vectors, doub
     for (Eigen::Index i = 0; i < n; ++i) x(i, j) = normal(random);
   }
   for (int sweep = 0; sweep < kSweeps; ++sweep) {
-    for (Eigen::Index j = 0; j < block; ++j) x.col(j) = lu.solve(x.col(j)).eval();
+    for (Eigen::Index j = 0; j < block; ++j) x.col(j) = solve(x.col(j));
     const Eigen::HouseholderQR<Eigen::MatrixXd> qr(x);
     x = qr.householderQ() * Eigen::MatrixXd::Identity(n, block);
   }

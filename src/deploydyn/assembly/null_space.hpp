@@ -3,7 +3,8 @@
 // (docs/theory.md, "Diagnosis of free motions"). Block inverse iteration with a small shift σ:
 //   X ← orth((S − σI)⁻¹ X),   S = A when A is square, S = AᵀA otherwise,          (D1)
 // which amplifies the null directions by 1/σ against 1/|μ − σ| for every other eigenvalue μ of
-// S, so a few sweeps isolate them; one sparse LU of S − σI serves every sweep. The null
+// S, so a few sweeps isolate them; one sparse factorization of S − σI (LU; Cholesky of AᵀA + σI)
+// serves every sweep. The null
 // combinations of the converged block are then those of the small dense SVD of A·X whose
 // singular values are within the tolerance: a least-squares choice within the block, on A itself
 // (not on AᵀA, whose small eigenvalues are squared).
