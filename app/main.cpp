@@ -21,6 +21,7 @@
 
 #include "deploydyn/assembly/assembler.hpp"
 #include "deploydyn/assembly/linear_system_factory.hpp"
+#include "deploydyn/assembly/free_motion.hpp"
 #include "deploydyn/assembly/mobility.hpp"
 #include "deploydyn/checks/capacities_in_force.hpp"
 #include "deploydyn/checks/verdict.hpp"
@@ -338,6 +339,23 @@ int check_command(const std::string& model_file, const std::vector<std::string>&
                                             left == 0 ? "driven mechanism, kinematically determinate"
                                                       : "free motion left: a dynamic run is needed"));
   }
+  // The free motions by name (assembly/free_motion.hpp); a part moving as a rigid body is a
+  // missing support or driver far more often than an intended free flight.
+  std::vector<std::string> rigid_warnings;
+  if (rank.free_motions.cols() > 0) {
+    const std::vector<FreeMotion> motions =
+        free_motions(model, assembler.dof_map(), assembler.initial_coordinates(), rank.free_motions);
+    for (const FreeMotion& motion : motions) {
+      fmt::print("free        {}\n", describe(model, motion));
+      const bool rigid = motion.kind == FreeMotion::Kind::translation || motion.kind == FreeMotion::Kind::rotation;
+      if (rigid) rigid_warnings.push_back(describe(model, motion));
+    }
+    const std::vector<std::string> coordinates = moving_coordinates(assembler.dof_map(), rank.free_motions);
+    fmt::print("{:<12}the coordinates that move: {}\n", "", listed(coordinates, list_all));
+  } else if (assembler.n_dofs() > kMaxFreeMotionUnknowns && free_motion - driver_rows > 0) {
+    fmt::print("free        not named above {} coordinates (`deploydyn run` names them if the matrix is singular)\n",
+               kMaxFreeMotionUnknowns);
+  }
   fmt::print("thermal     ΔT(0) = {:g} °C on {} without their own\n", model.temperature_change_C.value(0.0),
              elements_word);
   if (const std::string gradients = through_depth_gradients(model, list_all); !gradients.empty()) {
@@ -395,6 +413,11 @@ int check_command(const std::string& model_file, const std::vector<std::string>&
     for (std::size_t i = 0; i < capacities.size(); ++i) {
       fmt::print("{:<12}{}\n", i == 0 ? "members" : i == 1 ? "checks" : "", capacities[i]);
     }
+  }
+  for (const std::string& motion : rigid_warnings) {
+    fmt::print("warning     a part moves as a rigid body ({}): a support or driver missing? A static start fails "
+               "on it, a dynamic run lets it drift\n",
+               motion);
   }
   if (const std::string warning = integrator_warning(model); !warning.empty()) {
     fmt::print("warning     {}\n", warning);

@@ -28,7 +28,7 @@ def test_solver_failure_is_a_status_not_an_exception(tmp_path):
     result = model.run()
     assert result.status == "failed"
     assert not result.ok
-    assert "free motion of" in result.failure["reason"]
+    assert "free motion: part with nodes B, C" in result.failure["reason"]
     assert result.message
     with pytest.raises(deploydyn.RunFailed) as error:
         result.raise_for_status()

@@ -62,7 +62,8 @@ TEST(CliFailure, FlatParallelLinkageIsASingularStart) {
   model.replace(model.find("C: [0.643904073050423, 0.0251008539113255]"), 42, "C: [0.645, 0]");
   model += "drivers: {motor: {type: bar_angle, element: 3, pivot: D, profile: paper_eq23}}\n";
   const ModelRun run = run_model(folder, model, "--set analysis.end=0.1");
-  expect_failure_naming(run, "free motion of y.B");
+  // Flat, with the rocker C–D driven, B may rise (A, B, C in line): a translation along y.
+  expect_failure_naming(run, "free motion: node B: free translation along y");
   EXPECT_NE(run.outcome.output.find("no static stiffness"), std::string::npos) << run.outcome.output;
 }
 
@@ -70,8 +71,10 @@ TEST(CliFailure, FlatParallelLinkageIsASingularStart) {
 TEST(CliFailure, UndrivenMechanismInAStaticRunNamesTheFreeMotion) {
   ScratchFolder folder("undriven");
   const ModelRun run = run_model(folder, std::string(kLinkage) + "analysis: {type: static, end: 1, step: 0.1}\n");
-  expect_failure_naming(run, "free motion of");
-  EXPECT_NE(run.outcome.output.find("y.B"), std::string::npos) << run.outcome.output;
+  // A parallelogram: the coupler B–C translates, square to the crank (5.0° off y).
+  expect_failure_naming(run, "free motion: part with nodes B, C: free translation along (");
+  EXPECT_NE(run.outcome.output.find("`deploydyn check --all` lists the coordinates"), std::string::npos)
+      << run.outcome.output;
 }
 
 // Two drivers turning the same bar are redundant: the singular matrix names both.
@@ -157,6 +160,37 @@ TEST(CliFailure, AdaptiveStepsRecoverFromNewtonFailures) {
     ++row;
   }
   EXPECT_EQ(row, 201);  // t = 0, 5 ms, ..., 1 s
+}
+
+// Issue 31: the canopy (../shared/models/canopy3d.yaml) without the roller under the right
+// girder's far foot. `run` names the free motion by part, not by ~130 coordinates, and `check`
+// names it before any run, warns of it and lists the coordinates with --all.
+TEST(CliFailure, CanopyWithoutASupportNamesTheGirderThatTurns) {
+  ScratchFolder folder("canopy");
+  std::filesystem::create_directories(folder.path());
+  std::string model = read_text(std::filesystem::path(DEPLOYDYN_SOURCE_DIR) / "tests/assembly/models/canopy3d.yaml");
+  const std::string roller = "- node: Rm2b_4\n  fix: [y, z]\n";
+  ASSERT_NE(model.find(roller), std::string::npos);
+  model.erase(model.find(roller), roller.size());
+  const std::string motion =
+      "part with nodes Rm0a_0 … Rm2b_4 (30 nodes): free rotation about z through (0, 0, 1.5) at joint Rfoot";
+  const ModelRun run = run_model(folder, model);
+  expect_failure_naming(run, "free motion: " + motion);
+  EXPECT_EQ(run.outcome.output.find("x.Rm0a_1"), std::string::npos) << "no coordinate list";
+
+  const std::string file = (folder.path() / "model.yaml").string();
+  const CliOutcome check = run_cli("check " + file);
+  EXPECT_EQ(check.exit_code, 0) << check.output;
+  EXPECT_NE(check.output.find("free        " + motion + "\n"), std::string::npos) << check.output;
+  EXPECT_NE(check.output.find("warning     a part moves as a rigid body (" + motion), std::string::npos) << check.output;
+  EXPECT_NE(check.output.find("… and 100 more (--all lists them)"), std::string::npos) << check.output;
+  const CliOutcome all = run_cli("check --all " + file);
+  EXPECT_NE(all.output.find("the coordinates that move: R12.Rm0a_0, R21.Rm0a_0, x.Rm0a_1,"), std::string::npos)
+      << all.output;
+  // The whole canopy, held as drawn, has no free motion to name.
+  const CliOutcome held = run_cli("check " + std::string(DEPLOYDYN_SOURCE_DIR) + "/tests/assembly/models/canopy3d.yaml");
+  EXPECT_EQ(held.output.find("free        "), std::string::npos) << held.output;
+  EXPECT_EQ(held.output.find("rigid body"), std::string::npos) << held.output;
 }
 
 }  // namespace

@@ -142,9 +142,9 @@ TEST(HeldCoordinates, HeldUnknownsWithNoCouplingsAndSystemsWithNothingLeftToFact
   }
 }
 
-// Beyond the dense diagnosis (2000 unknowns) a zero pivot of a pair names the pair's equation.
+// Beyond the null-space diagnosis (50000 unknowns) a zero pivot of a pair names the pair's equation.
 TEST(HeldCoordinates, AZeroPivotInALargeSystemNamesItsEquation) {
-  constexpr int kKept = 2101;
+  constexpr int kKept = 50001;
   std::vector<MatrixEntry> entries;
   for (int k = 0; k < kKept; ++k) entries.push_back({k, k});
   entries.push_back({kKept, kKept});      // the held coordinate's diagonal
@@ -171,7 +171,7 @@ TEST(HeldCoordinates, AZeroPivotOfAPairIsASingularMatrix) {
       const FactorizationStatus status = system->factorize();
       EXPECT_FALSE(status.ok);
       EXPECT_NE(status.message.find("singular"), std::string::npos) << status.message;
-      // The SVD's null vector; with column 5 empty it is unknown 5 alone.
+      // The null vector (LinearSystem::null_vector); with column 5 empty it is unknown 5 alone.
       ASSERT_EQ(status.null_vector.size(), 8);
       if (zeroed == 26) {
         EXPECT_NEAR(std::abs(status.null_vector[5]), 1.0, 1e-12);

@@ -167,8 +167,8 @@ TEST(LinearSystem, SingularMatrixIsFoundAndItsFreeMotionNamed) {
 }
 
 // Deferred (a solver that retries, solvers/static_solver.cpp), a singular factorization leaves the
-// SVD out, the dense back end then giving no null vector; null_vector() computes it on demand and
-// names the same free motion.
+// null-space diagnosis out, the dense back end then giving no null vector; null_vector() computes
+// it on demand and names the same free motion.
 TEST(LinearSystem, DeferredNullVectorIsComputedOnDemand) {
   const Model model = straight_chain(10);
   const Assembler assembler(model);

@@ -1,15 +1,23 @@
 #include "deploydyn/assembly/linear_system.hpp"
 
-#include <Eigen/SVD>
 #include <fmt/format.h>
 
 #include <cmath>
 
+#include "deploydyn/assembly/null_space.hpp"
+
 namespace deploydyn {
 namespace {
 
-// Above this many unknowns a dense SVD for a diagnosis takes longer than users wait.
-constexpr int kLargestSvdDiagnosis = 2000;
+// Above this many unknowns the sparse LU of the diagnosis (its fill unordered for the matrix's
+// blocks) may take longer than users wait: KLU's first zero pivot names one unknown instead.
+constexpr int kLargestNullSpaceDiagnosis = 50000;
+// Null vectors sought: independent free motions (a part each, or several of one part) and
+// redundant constraints together; more than this many are rare and the first ones name them.
+constexpr int kMostNullVectors = 8;
+// ‖A x‖ / max |a_ij| of a null vector: the factorization called the matrix singular at a
+// reciprocal condition of 1e-14; an exact null vector's residual is round-off, ~1e-15.
+constexpr double kNullResidual = 1e-10;
 
 }  // namespace
 
@@ -49,10 +57,22 @@ FactorizationStatus LinearSystem::singular(double reciprocal_condition) const {
 }
 
 Eigen::VectorXd LinearSystem::null_vector() const {
-  if (size_ > kLargestSvdDiagnosis) return {};
-  // The right singular vector of the smallest singular value spans the (near) null space.
-  const Eigen::BDCSVD<Eigen::MatrixXd> svd(to_dense(), Eigen::ComputeFullV);
-  return svd.matrixV().col(svd.matrixV().cols() - 1);
+  if (size_ > kLargestNullSpaceDiagnosis || size_ == 0) return {};
+  // Sparse inverse iteration (docs/theory.md, "Diagnosis of free motions", D1), not a dense SVD:
+  // 1248 unknowns took 2.1 s by SVD, 19 ms so (bench/free_motion_benchmark.cpp).
+  std::vector<Eigen::Triplet<double>> triplets;
+  triplets.reserve(values_.size());
+  for (int i = 0; i < static_cast<int>(values_.size()); ++i) {
+    const MatrixEntry at = position(i);
+    triplets.emplace_back(at.row, at.col, values_[i]);
+  }
+  Eigen::SparseMatrix<double> matrix(size_, size_);
+  matrix.setFromTriplets(triplets.begin(), triplets.end());  // repeats add up, as in to_dense
+  const NullSpace null = null_space(matrix, kMostNullVectors, kNullResidual);
+  if (null.vectors.cols() == 0) return null.nearest;
+  // The sum of an orthonormal basis: every independent motion (each free part) shows in it.
+  const Eigen::VectorXd sum = null.vectors.rowwise().sum();
+  return sum / sum.norm();
 }
 
 }  // namespace deploydyn

@@ -10,6 +10,8 @@
 //    It sees special geometry the count cannot (parallel or meeting axes, a Cardan shaft held at
 //    both ends, a Bennett linkage): count − rank = the redundant equations there.
 // The rank is that of a dense matrix, so it is computed up to kMaxRankUnknowns coordinates.
+// The free motions themselves, a basis of the null space of [B; K_r] (assembly/null_space.hpp),
+// up to kMaxFreeMotionUnknowns, for assembly/free_motion.hpp to name.
 
 #include <optional>
 
@@ -23,6 +25,9 @@ namespace deploydyn {
 // r/L = 0.01, far above the tolerance; round-off in B and K is ~1e-15.
 inline constexpr double kRankTolerance = 1e-9;
 inline constexpr int kMaxRankUnknowns = 800;  // a dense QR of ~2n × n: ~0.1 s at 800
+// B is evaluated column by column (n evaluations of every constraint), then inverted sparse.
+inline constexpr int kMaxFreeMotionUnknowns = 3000;
+inline constexpr int kMostFreeMotions = 8;  // null vectors sought when the rank is not known
 
 struct Mobility {
   int by_count = 0;  // Assembler::rigid_mobility(), the drivers' equations included
@@ -30,8 +35,12 @@ struct Mobility {
   std::optional<int> by_rank;
   // Equations redundant at the initial configuration: by_rank − by_count (0 when not ranked).
   int n_redundant() const { return by_rank ? *by_rank - by_count : 0; }
+  // An orthonormal basis of the free motions after the drivers (columns: coordinates' velocities,
+  // up to kMostFreeMotions); empty when none, or above max_free_motion_unknowns coordinates.
+  Eigen::MatrixXd free_motions;
 };
 
-Mobility mobility(const Assembler& assembler, int max_rank_unknowns = kMaxRankUnknowns);
+Mobility mobility(const Assembler& assembler, int max_rank_unknowns = kMaxRankUnknowns,
+                  int max_free_motion_unknowns = kMaxFreeMotionUnknowns);
 
 }  // namespace deploydyn

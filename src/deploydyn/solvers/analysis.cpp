@@ -7,6 +7,7 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "deploydyn/assembly/free_motion.hpp"
 #include "deploydyn/assembly/klu_linear_system.hpp"
 #include "deploydyn/assembly/linear_system_factory.hpp"
 #include "deploydyn/elements/element_kinds.hpp"
@@ -35,22 +36,21 @@ std::string settled_position_text(const Assembler& assembler, int node, const Ei
   return fmt::format("; node {} at ({}) m", model.nodes[node].name, fmt::join(coordinates, ", "));
 }
 
-// Names the unknowns that carry a singular matrix's null vector: coordinates of a free motion
-// ("y.B") and constraints that are redundant or in conflict.
-std::string describe_null_vector(const Assembler& assembler, const Eigen::VectorXd& null_vector) {
+// Names what a singular matrix's null vector moves: the free motions grouped by part and fitted
+// as rigid motions at q (assembly/free_motion.hpp), and the constraints that are redundant or in
+// conflict. The coordinates themselves are behind `check --all`.
+std::string describe_null_vector(const Assembler& assembler, const Eigen::VectorXd& q,
+                                 const Eigen::VectorXd& null_vector) {
   constexpr double kInvolved = 0.1;  // of the largest entry
   const double largest = null_vector.cwiseAbs().maxCoeff();
-  std::vector<std::string> coordinates, constraints;
-  for (int i = 0; i < null_vector.size(); ++i) {
+  std::vector<std::string> constraints;
+  for (int i = assembler.n_dofs(); i < null_vector.size(); ++i) {
     if (std::abs(null_vector[i]) < kInvolved * largest) continue;
-    if (i < assembler.n_dofs()) {
-      coordinates.push_back(assembler.dof_map().label(i));
-    } else {
-      constraints.push_back(assembler.describe_equation(i - assembler.n_dofs()));
-    }
+    constraints.push_back(assembler.describe_equation(i - assembler.n_dofs()));
   }
-  std::string text;
-  if (!coordinates.empty()) text += fmt::format("free motion of {}", fmt::join(coordinates, ", "));
+  const Model& model = assembler.model();
+  std::string text = describe(model, free_motions(model, assembler.dof_map(), q, null_vector));
+  if (!text.empty()) text = "free motion: " + text + " (`deploydyn check --all` lists the coordinates)";
   if (!constraints.empty()) {
     text += fmt::format("{}constraints involved: {}", text.empty() ? "" : "; ", fmt::join(constraints, "; "));
   }
@@ -58,7 +58,7 @@ std::string describe_null_vector(const Assembler& assembler, const Eigen::Vector
 }
 
 FailureReport describe_failure(const Assembler& assembler, std::string phase, double t, int step,
-                               const NewtonResult& newton) {
+                               const Eigen::VectorXd& q, const NewtonResult& newton) {
   FailureReport f;
   f.phase = std::move(phase);
   f.time_s = t;
@@ -69,7 +69,7 @@ FailureReport describe_failure(const Assembler& assembler, std::string phase, do
   if (newton.worst_equation >= 0) f.worst_constraint = assembler.describe_equation(newton.worst_equation);
   if (newton.worst_dof >= 0) f.worst_dof = assembler.dof_map().label(newton.worst_dof);
   f.reason = newton.failure;
-  if (newton.null_vector.size() > 0) f.reason += "; " + describe_null_vector(assembler, newton.null_vector);
+  if (newton.null_vector.size() > 0) f.reason += "; " + describe_null_vector(assembler, q, newton.null_vector);
   return f;
 }
 
@@ -371,7 +371,7 @@ RunReport run_analysis(const Assembler& assembler, RecordSink& sink, const RunCo
       return finish(report);
     }
     if (loaded.path_factor < 1.0) {
-      FailureReport f = describe_failure(assembler, "initial equilibrium", 0.0, 0, loaded.newton);
+      FailureReport f = describe_failure(assembler, "initial equilibrium", 0.0, 0, state.q, loaded.newton);
       f.reason += fmt::format(" (loads reached {:.1f}%, before the thermal strain)", 100.0 * loaded.path_factor);
       return fail(f);
     }
@@ -399,12 +399,12 @@ RunReport run_analysis(const Assembler& assembler, RecordSink& sink, const RunCo
       return finish(report);
     }
     if (!continued.reached) {
-      FailureReport f = describe_failure(assembler, "initial equilibrium", 0.0, 0, initial.newton);
+      FailureReport f = describe_failure(assembler, "initial equilibrium", 0.0, 0, state.q, initial.newton);
       f.reason = continued.met_event ? continued.reason : f.reason + "; " + continued.reason;
       return fail(f);
     }
   } else if (initial.path_factor < 1.0) {
-    FailureReport f = describe_failure(assembler, "initial equilibrium", 0.0, 0, initial.newton);
+    FailureReport f = describe_failure(assembler, "initial equilibrium", 0.0, 0, state.q, initial.newton);
     f.reason += fmt::format(" (thermal load reached {:.1f}%)", 100.0 * initial.path_factor);
     return fail(f);
   }
@@ -416,7 +416,7 @@ RunReport run_analysis(const Assembler& assembler, RecordSink& sink, const RunCo
       f.phase = "initial equilibrium";
       f.reason = "no static stiffness at the initial state (a bifurcation or dead point, or a motion "
                  "that no bar, support or driver resists)";
-      if (stiffness.null_vector.size() > 0) f.reason += ": " + describe_null_vector(assembler, stiffness.null_vector);
+      if (stiffness.null_vector.size() > 0) f.reason += ": " + describe_null_vector(assembler, state.q, stiffness.null_vector);
       return fail(f);
     }
   }
@@ -433,7 +433,7 @@ RunReport run_analysis(const Assembler& assembler, RecordSink& sink, const RunCo
       FailureReport f;
       f.phase = "initial rates";
       f.reason = status.message;
-      if (status.null_vector.size() > 0) f.reason += "; " + describe_null_vector(assembler, status.null_vector);
+      if (status.null_vector.size() > 0) f.reason += "; " + describe_null_vector(assembler, state.q, status.null_vector);
       return fail(f);
     }
   }
@@ -500,7 +500,7 @@ RunReport run_analysis(const Assembler& assembler, RecordSink& sink, const RunCo
         continue;
       }
       report.status = RunStatus::failed;
-      report.failure = describe_failure(assembler, "time step", state.time_s + step, report.steps + 1, newton);
+      report.failure = describe_failure(assembler, "time step", state.time_s + step, report.steps + 1, state.q, newton);
       report.message = failure_message(report.failure);
       return finish_keeping(report);
     }
