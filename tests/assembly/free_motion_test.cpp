@@ -11,7 +11,7 @@
 #include "deploydyn/io/model_loader.hpp"
 
 namespace deploydyn {
-namespace {
+namespace DEPLOYDYN_FILE_SCOPE {
 
 // The fit is exact for a rigid motion; null vectors carry ~1e-10 of round-off.
 constexpr double kGeometryTolerance = 1e-6;

@@ -8,7 +8,7 @@
 #include "deploydyn/assembly/null_space.hpp"
 
 namespace deploydyn {
-namespace {
+namespace DEPLOYDYN_FILE_SCOPE {
 
 constexpr double kRoundOff = 1e-10;
 

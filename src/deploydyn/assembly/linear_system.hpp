@@ -58,10 +58,10 @@ class LinearSystem {
 
   // The matrix as dense, for diagnosis of small systems and for tests.
   Eigen::MatrixXd to_dense() const;
-  // The unit vector the current matrix (nearly) maps to zero, from a dense SVD; empty above 2000
+  // The unit vector the current matrix (nearly) maps to zero: the sum of its null space's basis
+  // by sparse inverse iteration (assembly/null_space.hpp); empty above kLargestNullSpaceDiagnosis
   // unknowns. A singular factorization reports it, unless deferred: a solver that retries a
-  // singular matrix (load steps halved) asks for it once, for the failure it reports (the SVD
-  // of 1248 unknowns takes about a second).
+  // singular matrix (load steps halved) asks for it once, for the failure it reports.
   Eigen::VectorXd null_vector() const;
   void defer_null_vector(bool defer) { defer_null_vector_ = defer; }
   bool null_vector_deferred() const { return defer_null_vector_; }
@@ -70,7 +70,7 @@ class LinearSystem {
   // factorize() once the values are known to be finite.
   virtual FactorizationStatus factorize_finite() = 0;
   // The status of a factorization found singular: the message, and for systems small enough
-  // (an SVD of the dense matrix) the null vector.
+  // the null vector.
   FactorizationStatus singular(double reciprocal_condition) const;
   // Below this estimated reciprocal condition number a solution carries no correct digits
   // (machine epsilon is 2.2e-16), so the matrix is treated as singular.
