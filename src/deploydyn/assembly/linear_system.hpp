@@ -59,7 +59,7 @@ class LinearSystem {
   // The matrix as dense, for diagnosis of small systems and for tests.
   Eigen::MatrixXd to_dense() const;
   // The unit vector the current matrix (nearly) maps to zero: the sum of its null space's basis
-  // by sparse inverse iteration (assembly/null_space.hpp); empty above kLargestNullSpaceDiagnosis
+  // by sparse inverse iteration (assembly/null_space.hpp); empty above 50 000
   // unknowns. A singular factorization reports it, unless deferred: a solver that retries a
   // singular matrix (load steps halved) asks for it once, for the failure it reports.
   Eigen::VectorXd null_vector() const;
