@@ -59,7 +59,9 @@
       rows.push(['analysis', `${a.type}, to ${a.end} s, step ${a.step} s${integrator ? ', ' + integrator : ''}`]);
     }
     if (s.end) rows.push(['end', `${s.end.reason} at t = ${formatNumber(s.end.time_s)} s`]);
-    if (s.failure) rows.push(['failure', `${s.failure.phase} at t = ${s.failure.time}: ${s.failure.reason}`]);
+    if (s.failure) {  // a path's or a modal run's failure has no time
+      rows.push(['failure', `${s.failure.phase}${s.failure.time !== undefined ? ' at t = ' + s.failure.time : ''}: ${s.failure.reason}`]);
+    }
     if (s.steps !== undefined) rows.push(['steps', `${s.steps} (${s.newton_iterations} Newton iterations, ${s.rejected_steps} rejected), ${formatNumber(s.wall_time)} s`]);
     rows.push(['model', `${data.nodes} nodes, ${data.members.names.length} members drawn`]);
     const drivers = Object.entries(s.drivers || {}).sort((a, b) => b[1].peak - a[1].peak);

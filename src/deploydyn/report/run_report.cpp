@@ -71,8 +71,11 @@ Members members_of(const Model& model) {
 
 // The page's animation: node positions (x, y, z per node; z = 0 in 2D) and member forces of
 // the chosen rows, and the model-file positions the deformation scale starts from.
+// `rows_are` and `file` name the table's rows and file in the note: a run's output times in
+// history.csv, or a continuation's points in path.csv.
 json animation(const Model& model, const HistoryTable& history, const HistoryTable* temperatures,
-               const Members& members, const ReportOptions& options, std::string& note) {
+               const Members& members, const ReportOptions& options, std::string& note,
+               std::string_view rows_are = "output times", std::string_view file = "history.csv") {
   const std::size_t n_nodes = model.nodes.size();
   const std::size_t n_members = members.names.size();
   // Float32 positions and at most four colourings a member (report/member_colourings.hpp).
@@ -81,7 +84,7 @@ json animation(const Model& model, const HistoryTable& history, const HistoryTab
   n_frames = std::max<std::size_t>(1, std::min(n_frames, options.max_animation_bytes / std::max<std::size_t>(bytes_per_frame, 1)));
   const std::vector<std::size_t> rows = frame_rows(history.n_rows, n_frames);
   if (rows.size() < history.n_rows) {
-    note = fmt::format("The animation shows {} of the {} output times, evenly spread.", rows.size(), history.n_rows);
+    note = fmt::format("The animation shows {} of the {} {}, evenly spread.", rows.size(), history.n_rows, rows_are);
   }
   std::vector<float> initial(3 * n_nodes, 0.0f);
   std::vector<std::array<int, 3>> columns(n_nodes, {-1, -1, -1});
@@ -96,8 +99,8 @@ json animation(const Model& model, const HistoryTable& history, const HistoryTab
     n_missing += any ? 0 : 1;
   }
   if (n_missing > 0) {
-    note += fmt::format(" {} nodes have no position in history.csv and are drawn where model.yaml puts them.",
-                        n_missing);
+    note += fmt::format(" {} nodes have no position in {} and are drawn where model.yaml puts them.", n_missing,
+                        file);
   }
   std::vector<float> positions;
   positions.reserve(rows.size() * 3 * n_nodes);
@@ -361,7 +364,8 @@ void add_path_views(const fs::path& folder, const json& summary, const Model& mo
   std::string animation_note;
   data["kind"] = "path";
   data["path"] = path_view(path);
-  json shown = animation(model, path.table, nullptr, members, options, animation_note);
+  json shown = animation(model, path.table, nullptr, members, options, animation_note, "points of the path",
+                         kPathFileName);
   // The abscissa of the path's points, as the slider names it.
   static const std::map<std::string, std::pair<std::string, std::string>> kAbscissae = {
       {"dT_C", {"ΔT", "°C"}}, {"load_N", {"load", "N"}}, {"time_s", {"t", "s"}}};
