@@ -12,15 +12,13 @@
 #include "deploydyn/report/history_table.hpp"
 #include "deploydyn/report/run_report.hpp"
 #include "deploydyn/results/result_file_names.hpp"
+#include "deploydyn/runs/modes_to_folder.hpp"
 #include "deploydyn/util/base64.hpp"
 
 namespace deploydyn {
 namespace {
 
 namespace fs = std::filesystem;
-
-// The modal run's drawn amplitude (runs/modes_to_folder.cpp, kDrawnAmplitudeShare).
-constexpr double kDrawnAmplitudeShare = 0.1;
 
 // The Float64 values of the frame's binary DataArray `name` (VTK XML: base64 of a UInt64 byte
 // count and the little-endian values, output/vtk_writer.cpp).
@@ -61,7 +59,7 @@ ModeShape read_mode_shape(const fs::path& folder, const Model& model, int frame,
   }
   double largest = 0.0;
   for (const double v : shape.equilibrium_m) largest = std::max(largest, std::abs(v));
-  const double a = largest > 0.0 ? kDrawnAmplitudeShare * shortest_element_m / largest : 0.0;
+  const double a = largest > 0.0 ? kDrawnModeShare * shortest_element_m / largest : 0.0;
   shape.move_m.resize(n_values);
   for (std::size_t i = 0; i < n_values; ++i) {
     shape.move_m[i] = a * shape.equilibrium_m[i];

@@ -4,7 +4,7 @@
 // mode that the page animates, x(φ) = x_eq + sin φ · move.
 //
 // A frame holds the equilibrium moved by a·φ, the mode φ scaled so that its largest coordinate
-// is a tenth of the shortest element (kDrawnAmplitudeShare in runs/modes_to_folder.cpp), and φ
+// is a tenth of the shortest element (kDrawnModeShare, runs/modes_to_folder.hpp), and φ
 // itself as the nodal field velocity_m_s. The equilibrium is the frame less a·φ, with a taken
 // from φ's largest nodal component: exact for bars and cables, whose coordinates are all nodal
 // positions; a beam's mode may peak in a rotation, and then the equilibrium drawn is off by a
