@@ -14,7 +14,7 @@ CLI::App* add_report_command(CLI::App& app, ReportArguments& arguments) {
   CLI::App* report = app.add_subcommand(
       "report", "Write a run's results as one self-contained HTML page: summary, zoomable time histories, "
                 "the envelope table and the deployment in 3D (docs/report.md)");
-  report->add_option("folder", arguments.folder, "Result folder of `deploydyn run` (or of a study's case)")->required();
+  report->add_option("folder", arguments.folder, "Result folder of `deploydyn run` (a time history, a modal analysis or a continuation), `deploydyn modes --out` or a study's case")->required();
   report->add_option("--out,-o", arguments.out_file, "HTML file to write (default: FOLDER/report.html)");
   report->add_option("--frames", arguments.max_frames, "Most animation frames, spread evenly over the history")
       ->capture_default_str()

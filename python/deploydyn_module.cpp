@@ -44,6 +44,7 @@
 #include "deploydyn/output/history_writer.hpp"
 #include "deploydyn/runs/modes_to_folder.hpp"
 #include "deploydyn/runs/restart_from_folder.hpp"
+#include "deploydyn/results/path_quantities.hpp"
 #include "deploydyn/results/plausibility.hpp"
 #include "deploydyn/output/output_error.hpp"
 #include "deploydyn/runs/run_to_folder.hpp"
@@ -53,6 +54,8 @@
 #include "deploydyn/assembly/linear_system_factory.hpp"
 #include "deploydyn/solvers/analysis.hpp"
 #include "deploydyn/solvers/continuation.hpp"
+#include "deploydyn/solvers/step_record.hpp"
+#include "deploydyn/solvers/parametrized_equilibrium.hpp"
 #include "deploydyn/solvers/hinge_poses.hpp"
 #include "deploydyn/solvers/modal_analysis.hpp"
 #include "deploydyn/solvers/restart_state.hpp"
@@ -490,6 +493,16 @@ py::dict continuation_of(const LoadedModel& loaded, const std::string& parameter
   validate(options);  // std::invalid_argument → ValueError
   StopWatch watch(stop);
   options.stop = watch.flag();  // ends the path "stopped", keeping its points
+  // At each point as it is reached (the elements' history in force), history.csv's columns as
+  // path.csv holds them (results/path_quantities.hpp).
+  const PathQuantities quantities(loaded.model);
+  const ParametrizedEquilibrium at_point(assembler, options.parameter, options.time_s);
+  std::vector<double> rows;
+  options.on_point = [&](const PathPoint& p, const PathEvent* /*event*/) {
+    const double mu = p.parameter;
+    quantities.append_row(make_path_record(assembler, p.q, p.lambda, at_point.time_s(mu), at_point.thermal_factor(mu)),
+                          rows);
+  };
   const ContinuationResult result = watch.run([&] {
     const auto system = make_linear_system(assembler);
     return trace_path(assembler, options, *system, assembler.initial_coordinates(),
@@ -527,9 +540,17 @@ py::dict continuation_of(const LoadedModel& loaded, const std::string& parameter
     entry["description"] = event.description;
     events.append(entry);
   }
+  const auto n_columns = static_cast<py::ssize_t>(quantities.columns().size());
+  py::array_t<double> values({n_points, n_columns});
+  std::copy(rows.begin(), rows.end(), values.mutable_data());
+  std::vector<std::string> labels;
+  for (int j = 0; j < assembler.n_dofs(); ++j) labels.push_back(assembler.dof_map().label(j));
   py::dict out;
   out["mu"] = mu;
   out["displacement_norm"] = norm;
+  out["coordinates"] = labels;
+  out["columns"] = quantities.columns();
+  out["values"] = values;
   out["eigenvalues"] = eigenvalues;
   out["n_negative"] = n_negative;
   out["q"] = q;

@@ -1,13 +1,14 @@
 """Figures of a continuation result folder (analysis.type: continuation), for deploydyn_plot.py:
 
     path.{png,svg}  the equilibrium path: load factor μ against the displacement's norm (and
-                    against each node coordinate path.csv carries, when output.select puts
-                    some there), and the lowest eigenvalues of the constrained stiffness
+                    against the first three node coordinates that move along it), and the
+                    lowest eigenvalues of the constrained stiffness
                     against μ (< 0: unstable), with the summary's events (limit points,
                     bifurcations, thresholds) marked where they were located
 
 The table is path.csv (runs/path_to_folder.hpp): mu, load_N, displacement_norm_m,
-eigenvalue_<k>_N_m, n_negative, event.
+eigenvalue_<k>_N_m, n_negative, event, then history.csv's columns at each point (x.<node>,
+force.<element>, ...; output.select applies).
 """
 import numpy as np
 
@@ -38,7 +39,10 @@ def plot_path(fig, runs):
     runs = [r for r in runs if r[1] is not None and "mu" in r[1] and len(r[1]["mu"])]
     if not runs:
         return False
-    coordinates = [c for c in runs[0][1] if c[:2] in ("x.", "y.", "z.")]
+    # path.csv carries the positions of every node history.csv would (output.select): panels
+    # for the first three coordinates that move along the path, not the supports'.
+    coordinates = [c for c in runs[0][1] if c[:2] in ("x.", "y.", "z.")
+                   and np.ptp(np.asarray(runs[0][1][c], dtype=float)) > 0]
     panels = 1 + len(coordinates[:3]) + 1
     axes = fig.subplots(panels, 1, squeeze=False)[:, 0]
     several = len(runs) > 1

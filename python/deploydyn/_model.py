@@ -190,7 +190,11 @@ class Model:
         event, that event its last point, "end" then "first_event"), as the model key `stop_at`.
         Returns a dict: "mu", "displacement_norm" (m), "eigenvalues" (points × eigenvalues,
         N/m, of the tangent stiffness on the constraint-compatible motions; NaN when not
-        computed), "n_negative", "q" (points × coordinates), "events" (dicts with "kind"
+        computed), "n_negative", "q" (points × coordinates), "coordinates" (the labels of q's
+        columns, such as "x.B", as in Model.modes), "columns" and "values" (points × columns:
+        what path.csv holds after its own columns, the columns of history.csv at each point
+        with output.select applied, but t and the energies: positions "x.B" (m), forces
+        "force.b1" (N), reactions, ...), "events" (dicts with "kind"
         limit_point | bifurcation | singular_constraints, "mu", "mu_error", "point", "mode",
         "axial_forces", "description"), "end" and "message" (how it ended: "stopped" once
         `stop`, a threading.Event as for run, is set)."""
@@ -209,8 +213,10 @@ class Model:
         raw = self._core.continuation(parameter, start, end, eigenvalues, max_steps, time, switch_branch,
                                       stop_at, stop)
         out = dict(raw)
-        for key in ("mu", "displacement_norm", "eigenvalues", "n_negative", "q"):
+        for key in ("mu", "displacement_norm", "eigenvalues", "n_negative", "q", "values"):
             out[key] = np.asarray(raw[key])
+        out["coordinates"] = list(raw["coordinates"])
+        out["columns"] = list(raw["columns"])
         out["events"] = [dict(e, mode=np.asarray(e["mode"]), axial_forces=np.asarray(e["axial_forces"]))
                          for e in raw["events"]]
         return out

@@ -4,6 +4,7 @@
 // where the apex height is y = h − displacement_norm (only the apex moves, straight down).
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <fstream>
 #include <nlohmann/json.hpp>
@@ -71,14 +72,17 @@ TEST(CliContinuation, RunWritesThePathOfTheSnapThrough) {
   std::ifstream path(out / "path.csv");
   std::string line;
   ASSERT_TRUE(std::getline(path, line));
-  EXPECT_EQ(line, "mu,load_N,displacement_norm_m,eigenvalue_1_N_m,eigenvalue_2_N_m,n_negative,event");
+  // The path's own columns first, as before path.csv carried history.csv's (tested below).
+  const std::string own = "mu,load_N,displacement_norm_m,eigenvalue_1_N_m,eigenvalue_2_N_m,n_negative,event";
+  EXPECT_EQ(line.substr(0, own.size() + 1), own + ",");
+  const std::size_t n_columns = split(line).size();
   // The limit load P* = 2 EA h³ / (3√3 L0³) ≈ 7584 N; the corrector's tolerance keeps the path
   // within 1e-7 P* of P(y) (continuation_test.cpp), the CSV's 12 digits add nothing: 1e-6 P*.
   const double p_star = closed_form_load_N(kRise_m / std::sqrt(3.0));
   int n_rows = 0, n_limits = 0;
   for (; std::getline(path, line); ++n_rows) {
     const std::vector<std::string> cells = split(line);
-    ASSERT_EQ(cells.size(), 7u) << line;
+    ASSERT_EQ(cells.size(), n_columns) << line;
     const double mu = std::stod(cells[0]), load = std::stod(cells[1]);
     const double y = kRise_m - std::stod(cells[2]);
     EXPECT_NEAR(load, mu * kReferenceLoad_N, 1e-9 * kReferenceLoad_N);
@@ -122,7 +126,7 @@ TEST(CliContinuation, StopAtFirstEventEndsCompletedAtTheLimitPoint) {
   std::ifstream path(out / "path.csv");
   std::string line, last;
   while (std::getline(path, line)) last = line;
-  EXPECT_EQ(split(last).back(), "limit_point") << last;
+  EXPECT_EQ(split(last).at(6), "limit_point") << last;  // the event column
   EXPECT_NE(read_text(out / "model.yaml").find("stop_at: first_event"), std::string::npos);
 }
 
@@ -143,6 +147,75 @@ TEST(CliContinuation, AModelFileThatCannotBeWrittenIsTheNamedFailure) {
       << summary["message"];
   EXPECT_EQ(summary["failure"]["phase"], "writing results");
   EXPECT_NE(summary["failure"]["reason"].get<std::string>().find("Is a directory"), std::string::npos);
+}
+
+// path.csv carries, after its own columns, those history.csv would hold (output.select applied),
+// but t and the energies. Checked against statics, independently of the bars' law: at the apex
+// C the two bars' forces N balance the load P = load_N (downwards), 2 N y / L + P = 0 with the
+// apex height y and the bar length L read from the row's own positions; each support carries P/2.
+TEST(CliContinuation, PathCsvCarriesPositionsForcesAndReactionsThatBalanceTheLoad) {
+  const ScratchFolder folder("cli_continuation_columns");
+  std::filesystem::create_directories(folder.path());
+  const auto model_file = folder.path() / "mises.yaml";
+  std::ofstream(model_file) << kMisesTruss;
+  const auto out = folder.path() / "out";
+  const auto outcome = run_cli("run " + model_file.string() + " --quiet --out " + out.string());
+  ASSERT_EQ(outcome.exit_code, 0) << outcome.output;
+
+  std::ifstream path(out / "path.csv");
+  std::string line;
+  ASSERT_TRUE(std::getline(path, line));
+  const std::vector<std::string> header = split(line);
+  // The default selection of a small model: positions, element quantities, reactions (as the
+  // history of the same model holds them; golden: a CSV header).
+  const std::vector<std::string> expected = {
+      "mu", "load_N", "displacement_norm_m", "eigenvalue_1_N_m", "eigenvalue_2_N_m", "n_negative", "event",
+      "x.A", "y.A", "x.B", "y.B", "x.C", "y.C", "strain.1", "mstrain.1", "force.1", "strain.2", "mstrain.2",
+      "force.2", "reaction.A.x", "reaction.A.y", "reaction.B.x", "reaction.B.y"};
+  ASSERT_EQ(header, expected);
+  auto at = [&](const std::vector<std::string>& cells, const std::string& name) {
+    return std::stod(cells[static_cast<std::size_t>(std::find(header.begin(), header.end(), name) - header.begin())]);
+  };
+  const double p_star = closed_form_load_N(kRise_m / std::sqrt(3.0));
+  int n_rows = 0;
+  for (; std::getline(path, line); ++n_rows) {
+    const std::vector<std::string> cells = split(line);
+    ASSERT_EQ(cells.size(), header.size()) << line;
+    const double load = at(cells, "load_N"), x = at(cells, "x.C"), y = at(cells, "y.C");
+    if (n_rows == 0) {  // the first point: the model's positions (no load, no strain)
+      EXPECT_NEAR(x, 0.0, 1e-12);
+      EXPECT_NEAR(y, kRise_m, 1e-12);
+      EXPECT_NEAR(at(cells, "x.A"), -kHalfSpan_m, 1e-15);
+      EXPECT_NEAR(at(cells, "x.B"), kHalfSpan_m, 1e-15);
+    }
+    EXPECT_NEAR(y, kRise_m - at(cells, "displacement_norm_m"), 1e-10) << line;  // only C moves, straight down
+    const double n1 = at(cells, "force.1"), n2 = at(cells, "force.2");
+    EXPECT_NEAR(n1, n2, 1e-6 * p_star) << line;  // symmetric
+    const double length = std::hypot(kHalfSpan_m + x, y);
+    EXPECT_NEAR(2.0 * n1 * y / length + load, 0.0, 1e-6 * p_star) << line;
+    EXPECT_NEAR(at(cells, "reaction.A.y"), load / 2.0, 1e-6 * p_star) << line;
+    EXPECT_NEAR(at(cells, "reaction.A.y") + at(cells, "reaction.B.y"), load, 1e-6 * p_star) << line;
+  }
+  EXPECT_GT(n_rows, 20);
+}
+
+// output.select applies to path.csv as to history.csv: only the chosen nodes, elements and
+// families, in the history's order.
+TEST(CliContinuation, PathCsvFollowsOutputSelect) {
+  const ScratchFolder folder("cli_continuation_select");
+  std::filesystem::create_directories(folder.path());
+  const auto model_file = folder.path() / "mises.yaml";
+  std::ofstream(model_file) << kMisesTruss;
+  const auto out = folder.path() / "out";
+  const auto outcome = run_cli("run " + model_file.string() + " --quiet --out " + out.string() +
+                               " --set 'output.select={nodes: [C], elements: [\"2\"], quantities: [position, force]}'");
+  ASSERT_EQ(outcome.exit_code, 0) << outcome.output;
+  std::ifstream path(out / "path.csv");
+  std::string line;
+  ASSERT_TRUE(std::getline(path, line));
+  EXPECT_EQ(line, "mu,load_N,displacement_norm_m,eigenvalue_1_N_m,eigenvalue_2_N_m,n_negative,event,x.C,y.C,force.2");
+  ASSERT_TRUE(std::getline(path, line));
+  EXPECT_EQ(split(line).size(), 10u) << line;
 }
 
 }  // namespace

@@ -1,5 +1,8 @@
 // The run report's viewer (src/deploydyn/report/run_report.hpp): reads the JSON block
-// #deploydyn-data and fills the page: summary, 3D deployment (three.js), plots, envelope table.
+// #deploydyn-data and fills the page: summary, 3D deployment (three.js), plots, envelope table
+// for a time history; the frequency table and the modes animated for a modal folder
+// (report/modal_view.hpp); the path, its eigenvalues and the structure at its points for a
+// continuation (report/path_view.hpp).
 // window.deploydynReport exposes the state the browser test drives (python/tests/test_report.py).
 (function () {
   'use strict';
@@ -40,13 +43,25 @@
     text('status', message.startsWith(s.status) ? message : `${s.status || ''}: ${message}`);
     document.title = `${data.title} — deploydyn report`;
     const rows = [['folder', data.folder]];
-    if (s.analysis) {
+    if (s.analysis && s.analysis.type === 'modal') {
+      const a = s.analysis;
+      rows.push(['analysis', `modal, ${a.modes} modes at t = ${(a.at || []).map(formatNumber).join(', ')} s`]);
+    } else if (s.analysis && s.analysis.type === 'continuation') {
+      const a = s.analysis;
+      rows.push(['analysis', `continuation in ${a.parameter}, μ from ${formatNumber(a.start)} to ${formatNumber(a.end)}`]);
+      if (s.path) {
+        rows.push(['path', `${s.path.points} points, ended: ${s.path.end}${s.path.end_event ? ' (' + s.path.end_event + ')' : ''}, ${s.path.iterations} iterations, ${s.path.rejected_steps} rejected steps`]);
+      }
+      for (const e of (s.events || []).slice(0, 20)) rows.push([`event ${e.kind}`, e.description || `μ = ${formatNumber(e.mu)}`]);
+    } else if (s.analysis) {
       const a = s.analysis;
       const integrator = a.integrator ? `${a.integrator.type}${a.integrator.rho_inf !== undefined ? ', ρ∞ = ' + a.integrator.rho_inf : ''}` : '';
       rows.push(['analysis', `${a.type}, to ${a.end} s, step ${a.step} s${integrator ? ', ' + integrator : ''}`]);
     }
     if (s.end) rows.push(['end', `${s.end.reason} at t = ${formatNumber(s.end.time_s)} s`]);
-    if (s.failure) rows.push(['failure', `${s.failure.phase} at t = ${s.failure.time}: ${s.failure.reason}`]);
+    if (s.failure) {  // a path's or a modal run's failure has no time
+      rows.push(['failure', `${s.failure.phase}${s.failure.time !== undefined ? ' at t = ' + s.failure.time : ''}: ${s.failure.reason}`]);
+    }
     if (s.steps !== undefined) rows.push(['steps', `${s.steps} (${s.newton_iterations} Newton iterations, ${s.rejected_steps} rejected), ${formatNumber(s.wall_time)} s`]);
     rows.push(['model', `${data.nodes} nodes, ${data.members.names.length} members drawn`]);
     const drivers = Object.entries(s.drivers || {}).sort((a, b) => b[1].peak - a[1].peak);
@@ -96,15 +111,55 @@
     utilization: 'linear-gradient(to right, #d9d9d9, #f28c1a 85%, #bf0000 85%)',
   };
 
-  function showDeployment() {
-    const anim = data.animation;
+  // What the 3D view draws, frame by frame: count, initial() (where the deformation scale starts
+  // from), at(k) (node positions, x y z per node), label(k), extent (arrays the camera frames),
+  // colourings, the first frame shown.
+  // A run's or a path's rows: the positions the history or path.csv holds at the chosen rows.
+  function rowFrames(anim) {
+    const initial = decode(anim.initial, Float32Array), positions = decode(anim.positions, Float32Array);
+    const n = initial.length;
+    const name = anim.abscissa || 't', unit = anim.unit === undefined ? 's' : anim.unit;
+    return {
+      count: anim.times.length, times: anim.times, rows: anim.rows, initial: () => initial,
+      at: (k) => positions.subarray(k * n, (k + 1) * n),
+      label: (k) => `${name} = ${formatNumber(anim.times[k])}${unit ? ' ' + unit : ''}`,
+      extent: [positions], colourings: anim.colourings, note: anim.note, first: anim.times.length - 1,
+    };
+  }
+  // A modal folder's chosen mode through one cycle: x_eq + sin(2πk/n) · move.
+  const kModePhases = 24;
+  function modeFrames(modal) {
+    const shapes = modal.shapes.map((s) => s && { equilibrium: decode(s.equilibrium, Float32Array), move: decode(s.move, Float32Array) });
+    const n = 3 * data.nodes, out = new Float32Array(n);
+    const column = (name) => modal.columns.indexOf(name);
+    const extent = [];
+    for (const shape of shapes.filter(Boolean)) {
+      for (const sign of [-1, 1]) extent.push(shape.equilibrium.map((x, i) => x + sign * shape.move[i]));
+    }
+    const frames = {
+      count: kModePhases, row: shapes.findIndex(Boolean), shapes, extent, colourings: [], note: '',
+      first: kModePhases / 4,  // the largest move
+      initial: () => shapes[frames.row].equilibrium,
+      at(k) {
+        const shape = shapes[frames.row], w = Math.sin(2 * Math.PI * k / kModePhases);
+        for (let i = 0; i < n; ++i) out[i] = shape.equilibrium[i] + w * shape.move[i];
+        return out;
+      },
+      label() {
+        const r = modal.rows[frames.row], f = r[column('frequency')];
+        return `mode ${r[column('mode')]} at t = ${formatNumber(r[column('t')])} s: ` +
+          (f === null ? `unstable, ω² = ${formatNumber(r[column('omega2')])} rad²/s²` : `f = ${formatNumber(f)} Hz`);
+      },
+    };
+    return frames;
+  }
+
+  function showDeployment(frames) {
     const nNodes = data.nodes;
     const members = decode(data.members.nodes, Int32Array);
     const nMembers = members.length / 2;
-    const initial = decode(anim.initial, Float32Array);
-    const positions = decode(anim.positions, Float32Array);
-    const nFrames = anim.times.length;
-    const colourings = anim.colourings.map((c) => ({ ...c, data: decode(c.values, Float32Array) }));
+    const nFrames = frames.count;
+    const colourings = frames.colourings.map((c) => ({ ...c, data: decode(c.values, Float32Array) }));
     // With capacities to check against, members are coloured by utilization first.
     let colouring = colourings[0] || null;
     function showLegend() {
@@ -122,7 +177,7 @@
       text('legend-note', c.scale === 'utilization' ? `${c.note}; largest ${formatNumber(c.largest)}` : c.note);
     }
     showLegend();
-    text('animation-note', anim.note || data.notes.animation || '');
+    text('animation-note', frames.note || data.notes.animation || '');
 
     const canvas = document.getElementById('view');
     // Anti-aliased lines cost several samples a pixel: worth it for a few members, not for 10⁵.
@@ -141,7 +196,9 @@
 
     // The camera frames every node over every frame.
     const box = new THREE.Box3();
-    for (let i = 0; i < positions.length; i += 3) box.expandByPoint(new THREE.Vector3(positions[i], positions[i + 1], positions[i + 2]));
+    for (const positions of frames.extent) {
+      for (let i = 0; i < positions.length; i += 3) box.expandByPoint(new THREE.Vector3(positions[i], positions[i + 1], positions[i + 2]));
+    }
     const centre = box.getCenter(new THREE.Vector3());
     const size = Math.max(box.getSize(new THREE.Vector3()).length(), 1e-6);
     const camera = new THREE.PerspectiveCamera(35, 1, size / 1000, size * 100);
@@ -158,13 +215,13 @@
     let scale = 1;
     function setFrame(k) {
       k = Math.max(0, Math.min(nFrames - 1, k | 0));
-      const base = k * nNodes * 3;
+      const initial = frames.initial(), positions = frames.at(k);
       for (let m = 0; m < nMembers; ++m) {
         for (let end = 0; end < 2; ++end) {
           const node = members[2 * m + end];
           for (let axis = 0; axis < 3; ++axis) {
             const x0 = initial[3 * node + axis];
-            vertex[6 * m + 3 * end + axis] = x0 + scale * (positions[base + 3 * node + axis] - x0);
+            vertex[6 * m + 3 * end + axis] = x0 + scale * (positions[3 * node + axis] - x0);
           }
         }
         const v = colouring ? colouring.data[k * nMembers + m] : NaN;
@@ -176,8 +233,9 @@
       geometry.attributes.color.needsUpdate = true;
       report.frame = k;
       document.getElementById('frame').value = k;
-      text('time', `t = ${formatNumber(anim.times[k])} s (frame ${k + 1} of ${nFrames})`);
+      text('time', `${frames.label(k)} (frame ${k + 1} of ${nFrames})`);
       render();
+      if (report.onFrame) report.onFrame(k);
     }
     function render() {
       const w = canvas.clientWidth, h = canvas.clientHeight;
@@ -240,9 +298,161 @@
       return out;
     };
     report.frameCount = nFrames;
-    report.times = anim.times;
+    report.times = frames.times;
+    report.frameRows = frames.rows;
     report.setScale = (s) => { scale = s; setFrame(report.frame); };
-    setFrame(nFrames - 1);
+    setFrame(frames.first);
+  }
+
+  // --- Modal folder: the frequency table; a row's mode is animated -----------------------------
+  function showModes(frames) {
+    const modal = data.modal;
+    document.getElementById('modes-section').hidden = false;
+    const head = document.querySelector('#modes-table thead'), body = document.querySelector('#modes-table tbody');
+    const units = { t: 's', omega2: 'rad²/s²', frequency: 'Hz', dT_C: '°C' };
+    const header = document.createElement('tr');
+    for (const name of modal.columns) {
+      const th = document.createElement('th');
+      th.textContent = name === 'dT_C' ? 'ΔT (°C)' : units[name] ? `${name} (${units[name]})` : name;
+      header.append(th);
+    }
+    head.append(header);
+    const lines = modal.rows.map((row, r) => {
+      const tr = document.createElement('tr');
+      for (const v of row) {
+        const td = document.createElement('td');
+        td.textContent = v === null ? '—' : formatNumber(v);
+        td.className = 'numeric';
+        tr.append(td);
+      }
+      if (frames) tr.addEventListener('click', () => report.selectMode(r));
+      body.append(tr);
+      return tr;
+    });
+    const column = modal.columns.indexOf('frequency');
+    report.frequencies = modal.rows.map((row) => row[column]);
+    report.modeRows = modal.rows.length;
+    report.selectMode = (r) => {
+      if (!frames || !frames.shapes[r]) return false;
+      frames.row = r;
+      lines.forEach((tr, k) => tr.classList.toggle('chosen', k === r));
+      report.modeRow = r;
+      report.setFrame(report.frame);
+      return true;
+    };
+    if (frames) report.selectMode(frames.row);
+  }
+
+  // --- Continuation folder: the path and its eigenvalues, events marked ----------------------
+  // A line plot on `canvas`: series [{x, y, colour, label}], marks [{x, y, symbol}], vertical
+  // lines at `verticals`, a ring at `chosen`. Returns the pixel mapping (CSS pixels).
+  function linePlot(canvas, { xLabel, yLabel, series, marks = [], verticals = [], chosen = null, zero = false }) {
+    const dpr = window.devicePixelRatio || 1;
+    canvas.width = canvas.clientWidth * dpr; canvas.height = canvas.clientHeight * dpr;
+    const context = canvas.getContext('2d');
+    context.setTransform(dpr, 0, 0, dpr, 0, 0);
+    const W = canvas.clientWidth, H = canvas.clientHeight, left = 80, right = 12, top = 12, bottom = 36;
+    context.clearRect(0, 0, W, H);
+    let x0 = Infinity, x1 = -Infinity, y0 = Infinity, y1 = -Infinity;
+    for (const s of series) {
+      for (let i = 0; i < s.x.length; ++i) {
+        if (s.x[i] === null || s.y[i] === null) continue;
+        x0 = Math.min(x0, s.x[i]); x1 = Math.max(x1, s.x[i]); y0 = Math.min(y0, s.y[i]); y1 = Math.max(y1, s.y[i]);
+      }
+    }
+    if (zero) { y0 = Math.min(y0, 0); y1 = Math.max(y1, 0); }
+    if (!(x1 > x0)) { x0 -= 1; x1 += 1; }
+    if (!(y1 > y0)) { y0 -= 1; y1 += 1; }
+    const padY = 0.04 * (y1 - y0); y0 -= padY; y1 += padY;
+    const px = (v) => left + (v - x0) / (x1 - x0) * (W - left - right);
+    const py = (v) => top + (y1 - v) / (y1 - y0) * (H - top - bottom);
+    context.strokeStyle = '#999'; context.fillStyle = '#333'; context.font = '11px sans-serif';
+    context.strokeRect(left, top, W - left - right, H - top - bottom);
+    for (let k = 0; k <= 4; ++k) {
+      const v = y0 + (y1 - y0) * k / 4, u = x0 + (x1 - x0) * k / 4;
+      context.fillText(formatNumber(v), 18, py(v) + 4);  // right of the rotated y label
+      context.fillText(formatNumber(u), px(u) - 12, H - 20);
+    }
+    context.fillText(xLabel, left + (W - left - right) / 2 - 40, H - 4);
+    context.save(); context.translate(12, top + (H - top - bottom) / 2 + 40); context.rotate(-Math.PI / 2);
+    context.fillText(yLabel, 0, 0); context.restore();
+    if (zero && y0 < 0 && y1 > 0) {
+      context.strokeStyle = '#bbb'; context.beginPath(); context.moveTo(left, py(0)); context.lineTo(W - right, py(0)); context.stroke();
+    }
+    context.setLineDash([3, 3]); context.strokeStyle = '#888';
+    for (const v of verticals) { context.beginPath(); context.moveTo(px(v), top); context.lineTo(px(v), H - bottom); context.stroke(); }
+    context.setLineDash([]);
+    series.forEach((s, n) => {
+      context.strokeStyle = s.colour; context.lineWidth = 1.5;
+      context.beginPath();
+      let started = false;
+      for (let i = 0; i < s.x.length; ++i) {
+        if (s.x[i] === null || s.y[i] === null) { started = false; continue; }
+        if (started) context.lineTo(px(s.x[i]), py(s.y[i])); else { context.moveTo(px(s.x[i]), py(s.y[i])); started = true; }
+      }
+      context.stroke();
+      context.fillStyle = s.colour;
+      context.fillText(s.label, W - right - 120, top + 14 + 13 * n);
+    });
+    context.lineWidth = 1;
+    for (const m of marks) {
+      const x = px(m.x), y = py(m.y);
+      context.fillStyle = '#000'; context.font = '14px sans-serif';
+      context.fillText(m.symbol, x - 5, y + 5);
+    }
+    context.font = '11px sans-serif';
+    if (chosen) {
+      context.strokeStyle = '#e07000'; context.lineWidth = 2;
+      context.beginPath(); context.arc(px(chosen.x), py(chosen.y), 6, 0, 2 * Math.PI); context.stroke();
+      context.lineWidth = 1;
+    }
+    return { px, py };
+  }
+
+  function showPath(frames) {
+    const path = data.path;
+    document.getElementById('path-section').hidden = false;
+    const labels = { dT_C: 'ΔT (°C)', load_N: 'load (N)', time_s: 'drivers\' time t (s)' };
+    const parameterLabel = labels[path.parameter] || path.parameter;
+    const symbols = { limit_point: '◆', bifurcation: '▲', singular_constraints: '✕' };
+    const palette = ['#1f77b4', '#d62728', '#2ca02c', '#ff7f0e', '#9467bd', '#8c564b'];
+    const pathCanvas = document.getElementById('path-plot'), eigenCanvas = document.getElementById('eigen-plot');
+    let chosenRow = frames ? frames.rows[report.frame] : null;
+    let mapping = null;
+    function draw() {
+      const marks = path.events.map((e) => ({ x: path.displacement_norm[e.row], y: path.value[e.row], symbol: symbols[e.kind] || '●' }));
+      const chosen = chosenRow === null ? null : { x: path.displacement_norm[chosenRow], y: path.value[chosenRow] };
+      mapping = linePlot(pathCanvas, {
+        xLabel: 'displacement norm ‖q − q₀‖ (m)', yLabel: parameterLabel, marks, chosen,
+        series: [{ x: path.displacement_norm, y: path.value, colour: '#1f3a5f', label: 'path' }],
+      });
+      linePlot(eigenCanvas, {
+        xLabel: parameterLabel, yLabel: 'lowest eigenvalues (N/m)', zero: true,
+        verticals: path.events.map((e) => path.value[e.row]),
+        series: path.eigenvalues.map((v, k) => ({ x: path.value, y: v, colour: palette[k % palette.length], label: `λ${k + 1}` })),
+        chosen: chosenRow === null || !path.eigenvalues.length ? null : { x: path.value[chosenRow], y: path.eigenvalues[0][chosenRow] },
+      });
+      report.pathPoints = path.value.map((v, r) => [mapping.px(path.displacement_norm[r]), mapping.py(v)]);
+      report.eventMarks = path.events.map((e) => ({ row: e.row, kind: e.kind, at: report.pathPoints[e.row] }));
+      report.pathChosenRow = chosenRow;
+    }
+    text('path-note', path.has_positions ? '' : 'path.csv holds no node positions: the structure is drawn as model.yaml puts it.');
+    if (frames) {
+      report.onFrame = (k) => { chosenRow = frames.rows[k]; draw(); };
+      // The frame nearest to the clicked point of the path.
+      pathCanvas.addEventListener('click', (e) => {
+        let best = 0, distance = Infinity;
+        frames.rows.forEach((row, k) => {
+          const [x, y] = report.pathPoints[row];
+          const d = (x - e.offsetX) ** 2 + (y - e.offsetY) ** 2;
+          if (d < distance) { distance = d; best = k; }
+        });
+        report.setFrame(best);
+      });
+    }
+    window.addEventListener('resize', draw);
+    report.drawPath = draw;
+    draw();
   }
 
   // --- Time histories ------------------------------------------------------------------------
@@ -366,8 +576,27 @@
   }
 
   showSummary();
-  showTable();
-  showPlots();
-  showDeployment();
+  report.kind = data.kind || 'run';
+  if (report.kind === 'run') {
+    showTable();
+    showPlots();
+    showDeployment(rowFrames(data.animation));
+  } else {
+    document.getElementById('plot-section').hidden = true;
+    document.getElementById('table-section').hidden = true;
+    if (report.kind === 'modal') {
+      const frames = modeFrames(data.modal);
+      const drawn = frames.row >= 0;
+      text('view-title', 'Mode shapes');
+      document.getElementById('view-section').hidden = !drawn;
+      if (drawn) showDeployment(frames);
+      showModes(drawn ? frames : null);
+    } else {
+      text('view-title', 'The structure along the path');
+      const frames = rowFrames(data.animation);
+      showDeployment(frames);
+      showPath(frames);
+    }
+  }
   report.ready = true;
 })();

@@ -18,8 +18,11 @@
 #include "deploydyn/io/model_loader.hpp"
 #include "deploydyn/report/history_table.hpp"
 #include "deploydyn/report/member_colourings.hpp"
+#include "deploydyn/report/modal_view.hpp"
+#include "deploydyn/report/path_view.hpp"
 #include "deploydyn/output/checked_file.hpp"
 #include "deploydyn/output/envelope_table.hpp"
+#include "deploydyn/results/result_file_names.hpp"
 #include "deploydyn/runs/result_folder.hpp"
 #include "deploydyn/util/base64.hpp"
 
@@ -68,8 +71,11 @@ Members members_of(const Model& model) {
 
 // The page's animation: node positions (x, y, z per node; z = 0 in 2D) and member forces of
 // the chosen rows, and the model-file positions the deformation scale starts from.
+// `rows_are` and `file` name the table's rows and file in the note: a run's output times in
+// history.csv, or a continuation's points in path.csv.
 json animation(const Model& model, const HistoryTable& history, const HistoryTable* temperatures,
-               const Members& members, const ReportOptions& options, std::string& note) {
+               const Members& members, const ReportOptions& options, std::string& note,
+               std::string_view rows_are = "output times", std::string_view file = "history.csv") {
   const std::size_t n_nodes = model.nodes.size();
   const std::size_t n_members = members.names.size();
   // Float32 positions and at most four colourings a member (report/member_colourings.hpp).
@@ -78,7 +84,7 @@ json animation(const Model& model, const HistoryTable& history, const HistoryTab
   n_frames = std::max<std::size_t>(1, std::min(n_frames, options.max_animation_bytes / std::max<std::size_t>(bytes_per_frame, 1)));
   const std::vector<std::size_t> rows = frame_rows(history.n_rows, n_frames);
   if (rows.size() < history.n_rows) {
-    note = fmt::format("The animation shows {} of the {} output times, evenly spread.", rows.size(), history.n_rows);
+    note = fmt::format("The animation shows {} of the {} {}, evenly spread.", rows.size(), history.n_rows, rows_are);
   }
   std::vector<float> initial(3 * n_nodes, 0.0f);
   std::vector<std::array<int, 3>> columns(n_nodes, {-1, -1, -1});
@@ -93,8 +99,8 @@ json animation(const Model& model, const HistoryTable& history, const HistoryTab
     n_missing += any ? 0 : 1;
   }
   if (n_missing > 0) {
-    note += fmt::format(" {} nodes have no position in history.csv and are drawn where model.yaml puts them.",
-                        n_missing);
+    note += fmt::format(" {} nodes have no position in {} and are drawn where model.yaml puts them.", n_missing,
+                        file);
   }
   std::vector<float> positions;
   positions.reserve(rows.size() * 3 * n_nodes);
@@ -110,6 +116,7 @@ json animation(const Model& model, const HistoryTable& history, const HistoryTab
     }
   }
   return {{"times", times},
+          {"rows", rows},
           {"initial", float32_base64(initial)},
           {"positions", float32_base64(positions)},
           {"colourings", member_colourings(model, history, members.names, rows, temperatures, note)}};
@@ -250,7 +257,7 @@ json summary_panel(const json& summary) {
   json out = json::object();
   for (const char* key : {"model", "status", "message", "failure", "end", "analysis", "steps", "newton_iterations",
                           "newton_iterations_per_step", "rejected_steps", "wall_time", "drivers", "warnings",
-                          "event_counts", "mode_switches", "output"}) {
+                          "event_counts", "mode_switches", "output", "path", "modes"}) {
     if (summary.contains(key)) out[key] = summary[key];
   }
   if (summary.contains("events") && summary["events"].is_array()) {
@@ -294,6 +301,86 @@ std::optional<HistoryTable> temperature_table(const fs::path& folder, const json
   return read_history_table(folder / listed.get<std::string>());
 }
 
+namespace {
+
+// The file the summary lists under files.<key> (a file of the folder), else `fallback`.
+std::string listed_file(const fs::path& folder, const json& summary, const char* key, const std::string& fallback) {
+  if (!summary.contains("files") || !summary["files"].contains(key)) return fallback;
+  const json& listed = summary["files"][key];
+  if (!listed.is_string() || fs::path(listed.get<std::string>()).has_parent_path()) {
+    throw ReportError(fmt::format("{}: files.{} must name a file of the folder, got {}",
+                                  (folder / "summary.json").string(), key, listed.dump().substr(0, 60)));
+  }
+  return listed.get<std::string>();
+}
+
+// What ran into the folder: a modal analysis (modes.csv), a continuation (path.csv) or a time
+// history. By the files its summary lists (also while "running"), else by the model's analysis.
+enum class FolderKind { run, modal, path };
+FolderKind folder_kind(const json& summary, const Model& model) {
+  if (summary.contains("files") && summary["files"].is_object()) {
+    if (summary["files"].contains("modes")) return FolderKind::modal;
+    if (summary["files"].contains("path")) return FolderKind::path;
+  }
+  if (model.analysis.type == AnalysisType::modal) return FolderKind::modal;
+  if (model.analysis.type == AnalysisType::continuation) return FolderKind::path;
+  return FolderKind::run;
+}
+
+// The views of a time history (`deploydyn run` of a static or dynamic analysis): the
+// deployment, its time histories and the envelope table.
+void add_run_views(const fs::path& folder, const json& summary, const Model& model, const Members& members,
+                   const ReportOptions& options, json& data) {
+  const std::string history_name = listed_file(folder, summary, "history", model.output.history_file);
+  const HistoryTable history = read_history_table(folder / history_name);
+  if (history.columns.empty() || history.columns[0] != "t") {
+    throw ReportError(fmt::format("{}: not a time history (its first column is not t)", (folder / history_name).string()));
+  }
+  std::string table_note, plot_note, animation_note;
+  data["kind"] = "run";
+  data["table"] = envelope_table_rows(folder / kEnvelopeFileName, options, table_note);
+  const std::optional<HistoryTable> temperatures = temperature_table(folder, summary);
+  data["animation"] = animation(model, history, temperatures ? &*temperatures : nullptr, members, options, animation_note);
+  data["plots"] = plot_data(model, history, options, plot_note);
+  data["notes"] = {{"table", table_note}, {"plots", plot_note}, {"animation", animation_note},
+                   {"history", history.dropped_last_row ? "The history's last row was cut short (a killed run) "
+                                                          "and is left out."
+                                                        : ""}};
+}
+
+// A modal folder's views (report/modal_view.hpp): the frequency table and each mode animated.
+void add_modal_views(const fs::path& folder, const Model& model, const ReportOptions& options, json& data) {
+  std::string note;
+  data["kind"] = "modal";
+  data["modal"] = modal_view(folder, model, options.max_animation_bytes, note);
+  data["notes"] = {{"table", ""}, {"plots", ""}, {"animation", note}, {"history", ""}};
+}
+
+// A continuation folder's views (report/path_view.hpp): the path and its eigenvalues, events
+// marked, and the structure at the path's points when path.csv holds positions.
+void add_path_views(const fs::path& folder, const json& summary, const Model& model, const Members& members,
+                    const ReportOptions& options, json& data) {
+  const PathTable path = read_path_table(folder / listed_file(folder, summary, "path", kPathFileName));
+  std::string animation_note;
+  data["kind"] = "path";
+  data["path"] = path_view(path);
+  json shown = animation(model, path.table, nullptr, members, options, animation_note, "points of the path",
+                         kPathFileName);
+  // The abscissa of the path's points, as the slider names it.
+  static const std::map<std::string, std::pair<std::string, std::string>> kAbscissae = {
+      {"dT_C", {"ΔT", "°C"}}, {"load_N", {"load", "N"}}, {"time_s", {"t", "s"}}};
+  const auto abscissa = kAbscissae.find(path.table.columns[0]);
+  shown["abscissa"] = abscissa != kAbscissae.end() ? abscissa->second.first : path.table.columns[0];
+  shown["unit"] = abscissa != kAbscissae.end() ? abscissa->second.second : "";
+  data["animation"] = std::move(shown);
+  data["notes"] = {{"table", ""}, {"plots", ""}, {"animation", animation_note},
+                   {"history", path.table.dropped_last_row ? "The path's last row was cut short (a killed run) "
+                                                             "and is left out."
+                                                           : ""}};
+}
+
+}  // namespace
+
 std::string run_report_html(const fs::path& folder, const ReportOptions& options) {
   if (!fs::is_directory(folder)) throw ReportError(fmt::format("{}: not a folder", folder.string()));
   json summary = [&] {
@@ -330,37 +417,25 @@ std::string run_report_html(const fs::path& folder, const ReportOptions& options
     }
     throw ReportError(error.what());
   }
-  std::string history_name = model.output.history_file;
-  if (summary.contains("files") && summary["files"].contains("history")) {
-    const json& listed = summary["files"]["history"];
-    if (!listed.is_string() || fs::path(listed.get<std::string>()).has_parent_path()) {
-      throw ReportError(fmt::format("{}: files.history must name a file of the folder, got {}",
-                                    (folder / "summary.json").string(), listed.dump().substr(0, 60)));
-    }
-    history_name = listed.get<std::string>();
-  }
-  const HistoryTable history = read_history_table(folder / history_name);
-  if (history.columns.empty() || history.columns[0] != "t") {
-    throw ReportError(fmt::format("{}: not a time history (its first column is not t)", (folder / history_name).string()));
-  }
-
-  std::string table_note, plot_note, animation_note;
   json data;
   data["title"] = model.name.empty() ? folder.filename().string() : model.name;
   data["folder"] = fs::absolute(folder).string();
   data["summary"] = summary_panel(summary);
   data["dimension"] = model.dimension;
-  data["table"] = envelope_table_rows(folder / kEnvelopeFileName, options, table_note);
   const Members members = members_of(model);
   data["members"] = {{"nodes", binary_base64<std::int32_t>(members.nodes)}, {"names", members.names}};
   data["nodes"] = model.nodes.size();
-  const std::optional<HistoryTable> temperatures = temperature_table(folder, summary);
-  data["animation"] = animation(model, history, temperatures ? &*temperatures : nullptr, members, options, animation_note);
-  data["plots"] = plot_data(model, history, options, plot_note);
-  data["notes"] = {{"table", table_note}, {"plots", plot_note}, {"animation", animation_note},
-                   {"history", history.dropped_last_row ? "The history's last row was cut short (a killed run) "
-                                                          "and is left out."
-                                                        : ""}};
+  switch (folder_kind(summary, model)) {
+    case FolderKind::run:
+      add_run_views(folder, summary, model, members, options, data);
+      break;
+    case FolderKind::modal:
+      add_modal_views(folder, model, options, data);
+      break;
+    case FolderKind::path:
+      add_path_views(folder, summary, model, members, options, data);
+      break;
+  }
 
   std::string data_text = data.dump(-1, ' ', false, json::error_handler_t::replace);
   // Inside <script>, "</" would end the element: JSON allows it escaped.

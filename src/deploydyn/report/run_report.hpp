@@ -14,6 +14,9 @@
 // max_animation_bytes, so that 10⁵ members stay one draw call and a file of tens of MB.
 // Nodes without position columns in history.csv (output.select) stay at their model.yaml
 // positions; members without a force column are drawn grey.
+// A modal folder's page shows instead its frequency table and animates each mode
+// (report/modal_view.hpp); a continuation's draws its path and eigenvalues with the events, and
+// the structure at the chosen point from path.csv's positions and forces (report/path_view.hpp).
 
 #include <cstddef>
 #include <filesystem>

@@ -29,17 +29,13 @@ namespace {
 
 using nlohmann::ordered_json;
 
-// A mode is drawn as the equilibrium moved along it until its largest nodal displacement is
-// this share of the shortest element: visible, and still small enough to read as a linear mode.
-constexpr double kDrawnAmplitudeShare = 0.1;
-
 // The equilibrium displaced along `mode`, as a VTK frame whose time field is `frame`.
 StepRecord mode_frame(const Assembler& assembler, const MotionState& equilibrium,
                       const Eigen::VectorXd& mode, int frame) {
   const double shortest_m = assembler.shortest_element_m();
   const double largest = mode.lpNorm<Eigen::Infinity>();
   MotionState shown = equilibrium;
-  shown.q += (largest > 0.0 ? kDrawnAmplitudeShare * shortest_m / largest : 0.0) * mode;
+  shown.q += (largest > 0.0 ? kDrawnModeShare * shortest_m / largest : 0.0) * mode;
   shown.time_s = frame;
   StepRecord record = make_step_record(assembler, shown);
   record.v = mode;  // the mode itself, as the frame's vector field "velocity_m_s"

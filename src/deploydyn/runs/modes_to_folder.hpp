@@ -39,6 +39,11 @@
 
 namespace deploydyn {
 
+// A mode is drawn as the equilibrium moved along it until its largest coordinate is this share
+// of the shortest element: visible, and still small enough to read as a linear mode. The report
+// takes it back off to find the equilibrium (report/modal_view.hpp).
+inline constexpr double kDrawnModeShare = 0.1;
+
 // One time's outcome, as summary.json lists it.
 struct ModesSummary {
   double time_s = 0.0;

@@ -17,6 +17,7 @@
 #include "deploydyn/runs/result_folder.hpp"
 #include "deploydyn/runs/run_folder.hpp"
 #include "deploydyn/output/summary_writer.hpp"
+#include "deploydyn/results/path_quantities.hpp"
 #include "deploydyn/results/result_file_names.hpp"
 #include "deploydyn/solvers/parametrized_equilibrium.hpp"
 #include "deploydyn/solvers/hinge_poses.hpp"
@@ -46,29 +47,37 @@ const char* parameter_column(const Model& model) {
 
 
 // path.csv, one whole row per point as the path reaches it (AppendFile: a failed write keeps
-// the rows before it and throws OutputError).
+// the rows before it and throws OutputError): the path's own columns, then the point's
+// history.csv columns (results/path_quantities.hpp), written as history.csv writes them.
 class PathCsv {
  public:
   PathCsv(const std::filesystem::path& file, const Assembler& assembler, int n_eigenvalues)
-      : file_(file), unit_(parameter_unit(assembler)), n_eigenvalues_(n_eigenvalues) {
+      : file_(file), unit_(parameter_unit(assembler)), n_eigenvalues_(n_eigenvalues), quantities_(assembler.model()) {
     std::string header = fmt::format("mu,{},displacement_norm_m", parameter_column(assembler.model()));
     for (int i = 1; i <= n_eigenvalues; ++i) header += fmt::format(",eigenvalue_{}_N_m", i);
-    file_.append(header + ",n_negative,event\n");
+    header += ",n_negative,event";
+    for (const std::string& column : quantities_.columns()) header += "," + column;
+    file_.append(header + "\n");
   }
 
-  void add(const PathPoint& p, const PathEvent* event) {
+  void add(const PathPoint& p, const PathEvent* event, const StepRecord& record) {
     std::string row = fmt::format("{:.12g},{:.12g},{:.12g}", p.parameter, p.parameter * unit_, p.displacement_norm_m);
     for (int i = 0; i < n_eigenvalues_; ++i) {
       row += i < p.lowest_eigenvalues.size() ? fmt::format(",{:.12g}", p.lowest_eigenvalues[i]) : ",";
     }
-    row += fmt::format(",{},{}\n", p.n_negative, event != nullptr ? to_string(event->kind) : "");
-    file_.append(row);
+    row += fmt::format(",{},{}", p.n_negative, event != nullptr ? to_string(event->kind) : "");
+    values_.clear();
+    quantities_.append_row(record, values_);
+    for (const double v : values_) row += fmt::format(",{}", v);
+    file_.append(row + "\n");
   }
 
  private:
   AppendFile file_;
   double unit_;
   int n_eigenvalues_;
+  PathQuantities quantities_;
+  std::vector<double> values_;  // one point's quantities, reused
 };
 
 }  // namespace
@@ -170,10 +179,10 @@ class PathRun final : public FolderRun {
     options.poll = control.poll;  // the Python module looks for Ctrl-C there
     const ParametrizedEquilibrium at_point(assembler_, options.parameter, options.time_s);
     options.on_point = [&](const PathPoint& point, const PathEvent* event) {
-      check(point, at_point);
+      const StepRecord record = check(point, at_point);
       if (write_failure) return;
       try {
-        path.add(point, event);
+        path.add(point, event, record);
       } catch (const OutputError& error) {
         write_failure = error;
       }
@@ -241,12 +250,14 @@ class PathRun final : public FolderRun {
 
   // The member checks (and the clearance watch) at each point, as at a run's steps: at rest,
   // at the drivers' time and ΔT scale of the point, as the path's equilibrium reads them.
-  void check(const PathPoint& point, const ParametrizedEquilibrium& at) {
+  // Returns the point's record (its time the path's abscissa), which path.csv writes.
+  StepRecord check(const PathPoint& point, const ParametrizedEquilibrium& at) {
     const double mu = point.parameter;
     StepRecord record = make_path_record(assembler_, point.q, point.lambda, at.time_s(mu), at.thermal_factor(mu));
     last_abscissa_ = at.parameter() == PathParameter::thermal ? mu * parameter_unit(assembler_) : mu;
     record.time_s = last_abscissa_;
     watch_.record(record);
+    return record;
   }
 
   std::chrono::steady_clock::time_point wall_start_;

@@ -13,6 +13,8 @@
 //   eigenvalue_1_N_m …      lowest eigenvalues of Zᵀ K_T Z (analysis.eigenvalues of them)
 //   n_negative              negative ones: 0 is a stable equilibrium
 //   event                   limit_point, bifurcation, singular_constraints, or empty
+//   x.<node>, force.<el> …  the columns history.csv would hold at the point, output.select
+//                           applied, but for t and the energies (results/path_quantities.hpp)
 
 #include <filesystem>
 #include <memory>
