@@ -24,7 +24,7 @@
 #include "deploydyn/util/base64.hpp"
 
 namespace deploydyn {
-namespace {
+namespace DEPLOYDYN_FILE_SCOPE {
 
 namespace fs = std::filesystem;
 

@@ -14,7 +14,7 @@
 #include "deploydyn/report/run_report.hpp"
 
 namespace deploydyn {
-namespace {
+namespace DEPLOYDYN_FILE_SCOPE {
 
 namespace fs = std::filesystem;
 
