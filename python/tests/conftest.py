@@ -16,6 +16,19 @@ SOURCE_DIR = pathlib.Path(os.environ.get("DEPLOYDYN_SOURCE_DIR",
                                          pathlib.Path(__file__).resolve().parents[2]))
 CLI = pathlib.Path(os.environ.get("DEPLOYDYN_CLI", SOURCE_DIR / "build" / "release" / "deploydyn"))
 GENERAL = SOURCE_DIR / "examples" / "paper" / "general.yaml"
+# A von Mises truss loaded by continuation through its snap-through: the path, its two limit
+# points and statics in closed form (the continuation tests, the plot and report of its folder).
+MISES = """
+name: von Mises truss
+nodes: {A: [-1, 0], B: [1, 0], C: [0, 0.1]}
+materials: {steel: {E: 2.0e11, alpha: 1.2e-5}}
+elements:
+  1: {nodes: [A, C], area: 1.0e-4, material: steel, mass: 1}
+  2: {nodes: [B, C], area: 1.0e-4, material: steel, mass: 1}
+supports: [{node: A}, {node: B}]
+loads: [{node: C, force: [0, -1.0e+4]}]
+analysis: {type: continuation, parameter: load, end: 1.1, eigenvalues: 2}
+"""
 
 
 def pytest_sessionfinish(session, exitstatus):

@@ -9,19 +9,8 @@ import numpy as np
 import pytest
 
 import deploydyn
-from conftest import run_cli
+from conftest import run_cli, MISES
 
-MISES = """
-name: von Mises truss
-nodes: {A: [-1, 0], B: [1, 0], C: [0, 0.1]}
-materials: {steel: {E: 2.0e11, alpha: 1.2e-5}}
-elements:
-  1: {nodes: [A, C], area: 1.0e-4, material: steel, mass: 1}
-  2: {nodes: [B, C], area: 1.0e-4, material: steel, mass: 1}
-supports: [{node: A}, {node: B}]
-loads: [{node: C, force: [0, -1.0e+4]}]
-analysis: {type: continuation, parameter: load, end: 1.1, eigenvalues: 2}
-"""
 PATH_OWN_COLUMNS = 7  # mu, load_N, displacement_norm_m, 2 eigenvalues, n_negative, event
 
 

@@ -7,7 +7,7 @@ import xml.etree.ElementTree as ElementTree
 import pytest
 from PIL import Image
 
-from conftest import SOURCE_DIR, run_cli
+from conftest import SOURCE_DIR, run_cli, MISES
 
 SCRIPTS = SOURCE_DIR / "scripts"
 PAPER = SOURCE_DIR / "examples" / "paper"
@@ -243,19 +243,6 @@ def test_hinge_and_bending_figures_with_legends_beside_the_data(tmp_path, monkey
         for ax in figure.axes:
             if ax.get_legend() is not None:
                 assert ax.get_legend().get_window_extent().x0 >= ax.get_window_extent().x1 - 1
-
-
-MISES = """
-name: von Mises truss
-nodes: {A: [-1, 0], B: [1, 0], C: [0, 0.1]}
-materials: {steel: {E: 2.0e11, alpha: 1.2e-5}}
-elements:
-  1: {nodes: [A, C], area: 1.0e-4, material: steel, mass: 1}
-  2: {nodes: [B, C], area: 1.0e-4, material: steel, mass: 1}
-supports: [{node: A}, {node: B}]
-loads: [{node: C, force: [0, -1.0e+4]}]
-analysis: {type: continuation, parameter: load, end: 1.1, eigenvalues: 2}
-"""
 
 
 def test_modal_folders_draw_frequencies_and_mode_shapes(tmp_path, monkeypatch):

@@ -9,22 +9,10 @@ import json
 import numpy as np
 import pytest
 
-from conftest import SOURCE_DIR, run_cli
+from conftest import SOURCE_DIR, run_cli, MISES
 from test_report import browser, canvas_pixels, drawn, open_report, severe_messages  # noqa: F401 (fixture)
 
 PAPER = SOURCE_DIR / "examples" / "paper"
-
-MISES = """
-name: von Mises truss
-nodes: {A: [-1, 0], B: [1, 0], C: [0, 0.1]}
-materials: {steel: {E: 2.0e11, alpha: 1.2e-5}}
-elements:
-  1: {nodes: [A, C], area: 1.0e-4, material: steel, mass: 1}
-  2: {nodes: [B, C], area: 1.0e-4, material: steel, mass: 1}
-supports: [{node: A}, {node: B}]
-loads: [{node: C, force: [0, -1.0e+4]}]
-analysis: {type: continuation, parameter: load, end: 1.1, eigenvalues: 2}
-"""
 
 
 def read_csv(file):
