@@ -74,14 +74,16 @@ std::vector<Case> cases() {
   // Ball, universal and offset joints (point_joint.hpp), supports through a frame (frame_support.hpp).
   const std::vector<int> position_a{8, 0, 5}, position_b{2, 4, 1};
   const Eigen::Vector3d offset_a(0.3, -0.2, 0.7), offset_b(-0.5, 0.1, 0.25);
+  // Spelled out: `{}` for an Eigen vector leaves its coefficients uninitialised, not zero.
+  const Eigen::Vector3d no_offset = Eigen::Vector3d::Zero();
   const Eigen::Vector3d arm_a = Eigen::Vector3d(1.0, 2.0, -0.5).normalized();
   const Eigen::Vector3d arm_b = arm_a.cross(Eigen::Vector3d(0.2, -0.4, 1.0)).normalized();
-  out.push_back({"ball joint 2D", std::make_unique<PointJoint>(PointJoint::Side{{6, 7}, {}, {}},
-                                                               PointJoint::Side{{1, 3}, {}, {}},
+  out.push_back({"ball joint 2D", std::make_unique<PointJoint>(PointJoint::Side{{6, 7}, {}, no_offset},
+                                                               PointJoint::Side{{1, 3}, {}, no_offset},
                                                                std::vector<std::pair<Eigen::Vector3d, Eigen::Vector3d>>{}, "b")});
   out.push_back({"ball joint 3D, offset on A only",
                  std::make_unique<PointJoint>(PointJoint::Side{position_a, frame_a, offset_a},
-                                              PointJoint::Side{position_b, {}, {}},
+                                              PointJoint::Side{position_b, {}, no_offset},
                                               std::vector<std::pair<Eigen::Vector3d, Eigen::Vector3d>>{}, "b")});
   out.push_back({"ball joint 3D, offsets on both",
                  std::make_unique<PointJoint>(PointJoint::Side{position_a, frame_a, offset_a},
@@ -96,7 +98,7 @@ std::vector<Case> cases() {
   const Eigen::Vector3d pin_normal = normal_to(pin_axis);
   out.push_back({"pin joint with offsets",
                  std::make_unique<PointJoint>(PointJoint::Side{position_a, frame_a, offset_a},
-                                              PointJoint::Side{position_b, frame_b, {}},
+                                              PointJoint::Side{position_b, frame_b, no_offset},
                                               std::vector<std::pair<Eigen::Vector3d, Eigen::Vector3d>>{
                                                   {pin_axis, pin_normal}, {pin_axis, pin_axis.cross(pin_normal)}},
                                               "p")});
