@@ -21,6 +21,7 @@
 #include "deploydyn/solvers/static_solver.hpp"
 #include "deploydyn/solvers/time_integrator.hpp"
 #include "support/model_builder.hpp"
+#include "support/mode_twist.hpp"
 #include "verification/verification_case.hpp"
 
 namespace deploydyn {
@@ -384,16 +385,7 @@ TEST(VerificationBeam3d, TipLoadedCantileverFollowsTheElasticaLikeThe2dBeam) {
 // shear and rotary inertia shift the bending frequencies by ~1e-5, below the discretisation
 // error measured. The torsional mode lies among high bending modes: it is sought near its
 // frequency (shift-invert) and told from them by its twist at the tip.
-double tip_twist_of_mode(const Assembler& assembler, const Eigen::VectorXd& mode, int tip,
-                         const Eigen::Vector3d& e1) {
-  const std::vector<int> frame = frame_dofs(assembler.dof_map(), tip);
-  Eigen::Matrix3d change;
-  for (int k = 0; k < 9; ++k) change(k / 3, k % 3) = mode[frame[k]];
-  // δR = ω̂ (R = I): ω from the skew part.
-  const Eigen::Vector3d omega(change(2, 1) - change(1, 2), change(0, 2) - change(2, 0),
-                              change(1, 0) - change(0, 1));
-  return std::abs(0.5 * omega.dot(e1));
-}
+using testing::tip_twist_of_mode;  // support/mode_twist.hpp
 
 TEST(VerificationBeam3d, CantileverFrequenciesConvergeToEulerBernoulliAndStVenant) {
   const BeamSpec spec;

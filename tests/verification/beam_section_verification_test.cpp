@@ -21,6 +21,7 @@
 #include "deploydyn/io/model_loader.hpp"
 #include "deploydyn/solvers/modal_analysis.hpp"
 #include "deploydyn/solvers/static_solver.hpp"
+#include "support/mode_twist.hpp"
 #include "verification/verification_case.hpp"
 
 namespace deploydyn {
@@ -142,15 +143,7 @@ TEST(VerificationBeamSection, RigidSpinCarriesTheGivenRotaryInertiaAboutEachAxis
 // the material alone would give J_xx = ρ(I_y + I_z) = 1.35e-6 kg·m (a frequency ~3800× higher).
 // Bending (EI = [4e3, 9e3] N·m², μ = 1 kg/m) stays clear of it; the torsional mode is sought
 // near its frequency and told from the bending ones by its tip twist.
-double tip_twist_of_mode(const Assembler& assembler, const Eigen::VectorXd& mode, int tip,
-                         const Eigen::Vector3d& e1) {
-  const std::vector<int> frame = frame_dofs(assembler.dof_map(), tip);
-  Eigen::Matrix3d change;
-  for (int k = 0; k < 9; ++k) change(k / 3, k % 3) = mode[frame[k]];
-  const Eigen::Vector3d turn(change(2, 1) - change(1, 2), change(0, 2) - change(2, 0),
-                             change(1, 0) - change(0, 1));
-  return std::abs(0.5 * turn.dot(e1));
-}
+using testing::tip_twist_of_mode;  // support/mode_twist.hpp
 
 TEST(VerificationBeamSection, CantileverTwistsAtTheFrequencyOfTheGivenPolarInertia) {
   const Eigen::Vector3d axis = 10.0 * Eigen::Vector3d(2.0, 1.0, 2.0) / 3.0;
