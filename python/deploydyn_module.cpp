@@ -51,6 +51,7 @@
 #include "deploydyn/runs/window_folder.hpp"
 #include "deploydyn/report/run_report.hpp"
 #include "deploydyn/output/summary_writer.hpp"
+#include "deploydyn/output/temperature_table.hpp"
 #include "deploydyn/assembly/linear_system_factory.hpp"
 #include "deploydyn/solvers/analysis.hpp"
 #include "deploydyn/solvers/continuation.hpp"
@@ -212,6 +213,14 @@ RestartOptions restart_options(const std::optional<std::filesystem::path>& resta
   return {restart_from.value_or(std::filesystem::path()), at, keep_every_state};
 }
 
+// Rows of `n_columns` values, one after the other, as a (rows × columns) array.
+py::array_t<double> table_array(const std::vector<double>& rows, std::size_t n_columns) {
+  py::array_t<double> values({static_cast<py::ssize_t>(n_columns == 0 ? 0 : rows.size() / n_columns),
+                              static_cast<py::ssize_t>(n_columns)});
+  std::copy(rows.begin(), rows.end(), values.mutable_data());
+  return values;
+}
+
 // A modal analysis in memory, as run_in_memory: modes.csv's columns and rows
 // (runs/modes_to_folder.hpp) in place of the history's; with a restart folder, the modes of the
 // state it kept.
@@ -230,18 +239,16 @@ py::dict modes_in_memory(const LoadedModel& loaded, const py::object& stop, cons
     });
   });
   const std::vector<std::string> columns = modes_columns(loaded.model);
-  py::array_t<double> values({static_cast<py::ssize_t>(rows.size() / columns.size()),
-                              static_cast<py::ssize_t>(columns.size())});
-  std::copy(rows.begin(), rows.end(), values.mutable_data());
   py::dict out = report_dict(run.report);
   out["columns"] = columns;
-  out["values"] = values;
+  out["values"] = table_array(rows, columns.size());
   out["summary_json"] = modes_summary_json(loaded.model, run);
   return out;
 }
 
 // Runs in memory: history columns, the history as a (rows × columns) array, the summary JSON
-// text (exactly what summary.json would hold), status and message.
+// text (exactly what summary.json would hold), status and message; with an environment also
+// temperatures.csv's columns and rows (temperature_columns, temperature_values).
 py::dict run_in_memory(const LoadedModel& loaded, const py::object& stop,
                        const std::optional<std::filesystem::path>& restart_from, std::optional<double> at) {
   const RestartOptions restart = restart_options(restart_from, at, false);
@@ -249,28 +256,44 @@ py::dict run_in_memory(const LoadedModel& loaded, const py::object& stop,
   MemorySink sink(loaded.model);
   const std::vector<std::string>& columns = sink.columns();
   StopWatch watch(stop);
+  // An environment sets the temperatures step by step into a copy of the model
+  // (thermal/thermal_coupling.hpp); the sink records on this thread. Its temperatures are kept
+  // as temperatures.csv would hold them (output/temperature_table.hpp): a row per output time.
+  std::optional<Model> coupled_model;
+  std::optional<thermal::ThermalCoupling> coupling;
+  std::vector<std::string> temperature_columns;
+  std::vector<double> temperature_rows;
   const RunReport report = watch.run([&] {
-    // An environment sets the temperatures step by step into a copy of the model
-    // (thermal/thermal_coupling.hpp); the sink records on this thread.
-    std::optional<Model> coupled_model;
-    std::optional<thermal::ThermalCoupling> coupling;
     if (loaded.model.environment) coupling.emplace(coupled_model.emplace(loaded.model));
     const Assembler assembler(coupled_model ? *coupled_model : loaded.model);  // std::invalid_argument → ValueError
     const RunOrigin origin = run_origin(loaded.model, assembler, restart);
+    if (coupling) {
+      temperature_columns = deploydyn::temperature_columns(*coupling);
+      coupling->on_output([&](double time_s, const std::vector<double>& temperatures_K) {
+        temperature_rows.push_back(time_s);
+        temperature_rows.insert(temperature_rows.end(), temperatures_K.begin(), temperatures_K.end());
+        const std::vector<double> extra = coupling->extra_column_values();
+        temperature_rows.insert(temperature_rows.end(), extra.begin(), extra.end());
+      });
+      coupling->start(0.0);
+    }
     RunReport done = run_analysis(assembler, sink, watch.control(), coupling ? &*coupling : nullptr, origin.start());
+    if (coupling) coupling->on_output({});
     for (std::string& warning : plausibility_warnings(loaded.model, sink.envelope())) {
       done.warnings.push_back(std::move(warning));
     }
     return done;
   });
-  py::array_t<double> values({static_cast<py::ssize_t>(sink.n_rows()),
-                              static_cast<py::ssize_t>(columns.size())});
-  std::copy(sink.values().begin(), sink.values().end(), values.mutable_data());
   py::dict out = report_dict(report);
   out["columns"] = columns;
-  out["values"] = values;
+  out["values"] = table_array(sink.values(), columns.size());
   const Verdict verdict = sink.verdict_watch().verdict(report);
-  out["summary_json"] = summary_json(loaded.model, sink.envelope(), report, &verdict);
+  const std::string summary = summary_json(loaded.model, sink.envelope(), report, &verdict);
+  out["summary_json"] = coupling ? with_temperature_summary(summary, *coupling) : summary;
+  if (coupling) {
+    out["temperature_columns"] = temperature_columns;
+    out["temperature_values"] = table_array(temperature_rows, temperature_columns.size());
+  }
   return out;
 }
 

@@ -168,7 +168,11 @@ class Model:
         with _restart_names(where):
             if out is None:
                 raw = self._core.run_in_memory(stop, restart_from, at)
-                result = Result(raw["columns"], raw["values"], json.loads(raw["summary_json"]))
+                temperatures = ({name: raw["temperature_values"][:, i].copy()
+                                 for i, name in enumerate(raw["temperature_columns"])}
+                                if "temperature_columns" in raw else {})
+                result = Result(raw["columns"], raw["values"], json.loads(raw["summary_json"]),
+                                temperatures=temperatures)
             else:
                 out = checked.path(where, "out", out)
                 raw = self._core.run_into_folder(out, stop, restart_from, at, keep_every_state)

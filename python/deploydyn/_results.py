@@ -29,10 +29,12 @@ class Result:
     folder has none); status: "completed", "failed" or "interrupted", and for a folder read
     with read_result also "running", "killed" or "unknown" (see folder_status), as it was when
     read; folder: the result folder, or None; n_dropped_rows: 1 when the history's incomplete
-    last row was left out, else 0.
+    last row was left out, else 0; temperatures: the members' temperatures of a run with an
+    `environment` (below).
     """
 
-    def __init__(self, columns, values, summary, folder=None, status=None, n_dropped_rows=0):
+    def __init__(self, columns, values, summary, folder=None, status=None, n_dropped_rows=0,
+                 temperatures=None):
         self.columns = list(columns)
         self.values = np.asarray(values, dtype=float).reshape(-1, len(self.columns))
         self.history = {name: self.values[:, i].copy() for i, name in enumerate(self.columns)}
@@ -40,6 +42,22 @@ class Result:
         self.folder = pathlib.Path(folder) if folder is not None else None
         self.n_dropped_rows = n_dropped_rows
         self._status = status
+        self._temperatures = temperatures
+
+    @property
+    def temperatures(self):
+        """The members' temperatures that an `environment` gave the run, as temperatures.csv
+        holds them (docs/model-format.md, "environment"): {column: 1-D array}, a row per output
+        time (the history's), columns "t" (s), "T.<member>" (K) per bar, beam and cable, with
+        shadows "shade.<member>" (the shadowed fraction), with section gradients
+        "dT_section.<beam>" (K); summary["temperatures"] has the extremes and the heat balance.
+        The same from memory and from a folder; {} for a run without an environment."""
+        if self._temperatures is None:
+            self._temperatures = {}
+            file = self.folder / "temperatures.csv" if self.folder is not None else None
+            if file is not None and file.exists():
+                self._temperatures = result_folder.read_history(file, warn=False).as_dict()
+        return self._temperatures
 
     @property
     def status(self):

@@ -1,16 +1,20 @@
 #include "deploydyn/output/temperature_table.hpp"
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 namespace deploydyn {
 
-TemperatureTable::TemperatureTable(const std::filesystem::path& file, const std::vector<std::string>& member_names,
-                                   const std::vector<std::string>& extra_columns)
+std::vector<std::string> temperature_columns(const thermal::ThermalCoupling& coupling) {
+  std::vector<std::string> columns{"t"};
+  for (const std::string& name : coupling.member_names()) columns.push_back("T." + name);
+  for (std::string& name : coupling.extra_column_names()) columns.push_back(std::move(name));
+  return columns;
+}
+
+TemperatureTable::TemperatureTable(const std::filesystem::path& file, const std::vector<std::string>& columns)
     : file_(file) {
-  std::string header = "t";
-  for (const std::string& name : member_names) header += ",T." + name;
-  for (const std::string& name : extra_columns) header += "," + name;
-  file_.append(header + "\n");
+  file_.append(fmt::format("{}\n", fmt::join(columns, ",")));
 }
 
 void TemperatureTable::write_row(double time_s, const std::vector<double>& temperatures_K,
@@ -49,6 +53,12 @@ nlohmann::ordered_json temperature_summary(const thermal::ThermalCoupling& coupl
     j["section_difference_max_time_s"] = largest.time_s;
   }
   return j;
+}
+
+std::string with_temperature_summary(const std::string& summary, const thermal::ThermalCoupling& coupling) {
+  auto j = nlohmann::ordered_json::parse(summary);
+  j["temperatures"] = temperature_summary(coupling);
+  return j.dump(2);
 }
 
 }  // namespace deploydyn

@@ -17,13 +17,17 @@
 
 namespace deploydyn {
 
+// The columns: t, T.<member> per member, then the coupling's extra columns
+// (ThermalCoupling::extra_column_names: shade.<member>, dT_section.<member>). Python's in-memory
+// run gives the same (Result.temperatures).
+std::vector<std::string> temperature_columns(const thermal::ThermalCoupling& coupling);
+
 class TemperatureTable {
  public:
-  // Writes the header. Throws OutputError when the file cannot be written.
-  // `extra_columns` follow the temperatures (ThermalCoupling::extra_column_names: shade.<member>,
-  // dT_section.<member>), each row's `extra` values in their order.
-  TemperatureTable(const std::filesystem::path& file, const std::vector<std::string>& member_names,
-                   const std::vector<std::string>& extra_columns = {});
+  // Writes the header of `columns` (temperature_columns). Throws OutputError when the file cannot
+  // be written.
+  TemperatureTable(const std::filesystem::path& file, const std::vector<std::string>& columns);
+  // A row: the time, the members' temperatures, then the extra columns' `extra` values in their order.
   void write_row(double time_s, const std::vector<double>& temperatures_K, const std::vector<double>& extra = {});
 
  private:
@@ -32,5 +36,7 @@ class TemperatureTable {
 
 // {"min_K", "min_member", "min_time_s", "max_K", ...} and the heat balance's energies (J).
 nlohmann::ordered_json temperature_summary(const thermal::ThermalCoupling& coupling);
+// `summary` (summary.json's text) with temperature_summary under "temperatures".
+std::string with_temperature_summary(const std::string& summary, const thermal::ThermalCoupling& coupling);
 
 }  // namespace deploydyn

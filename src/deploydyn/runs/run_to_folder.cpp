@@ -87,8 +87,7 @@ class HistoryRun final : public FolderRun {
     if (coupling_) {
       // The coupling rewrites the members' ΔT(t) between steps: the records are made on this
       // thread, before it does.
-      TemperatureTable temperatures(folder / kTemperatureFileName, coupling_->member_names(),
-                                    coupling_->extra_column_names());
+      TemperatureTable temperatures(folder / kTemperatureFileName, temperature_columns(*coupling_));
       coupling_->on_output([&](double time_s, const std::vector<double>& temperatures_K) {
         temperatures.write_row(time_s, temperatures_K, coupling_->extra_column_values());
       });
@@ -132,13 +131,8 @@ class HistoryRun final : public FolderRun {
   }
 
   std::string summary_json(const RunReport& report) const override {
-    std::string summary = deploydyn::summary_json(model_, envelope_, report, &run_verdict_);
-    if (coupling_) {
-      auto j = nlohmann::ordered_json::parse(summary);
-      j["temperatures"] = temperature_summary(*coupling_);
-      summary = j.dump(2);
-    }
-    return summary;
+    const std::string summary = deploydyn::summary_json(model_, envelope_, report, &run_verdict_);
+    return coupling_ ? with_temperature_summary(summary, *coupling_) : summary;
   }
 
  private:

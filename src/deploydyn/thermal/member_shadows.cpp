@@ -112,12 +112,20 @@ void MemberShadows::compute(std::span<const MemberCapsule> members, const Eigen:
   rtcCommitGeometry(scene_->strips);
   rtcCommitScene(scene_->scene);
 
+  // A member's samples in packets of 8 rays (one AVX2 traversal for 8 coherent rays: they are
+  // parallel and start close together), all of one member, so that one context excludes it.
   SelfExcludingContext context;
   rtcInitIntersectContext(&context.embree);
-  RTCRay ray{};
-  ray.dir_x = static_cast<float>(sun[0]);
-  ray.dir_y = static_cast<float>(sun[1]);
-  ray.dir_z = static_cast<float>(sun[2]);
+  constexpr int kPacket = 8;
+  alignas(32) RTCRay8 packet{};
+  alignas(32) int valid[kPacket];
+  for (int k = 0; k < kPacket; ++k) {
+    packet.dir_x[k] = static_cast<float>(sun[0]);
+    packet.dir_y[k] = static_cast<float>(sun[1]);
+    packet.dir_z[k] = static_cast<float>(sun[2]);
+    packet.mask[k] = ~0u;
+  }
+  const int n_rays = samples_along_ * samples_across_;
   for (int i = 0; i < n_members_; ++i) {
     const MemberCapsule& member = members[static_cast<std::size_t>(i)];
     const Eigen::Vector3d axis = member.end_b_m - member.end_a_m;
@@ -128,19 +136,24 @@ void MemberShadows::compute(std::span<const MemberCapsule> members, const Eigen:
     }
     context.self = static_cast<unsigned>(i);
     int shadowed = 0;
-    for (int a = 0; a < samples_along_; ++a) {
-      const Eigen::Vector3d on_axis = member.end_a_m + (a + 0.5) / samples_along_ * axis;
-      for (int c = 0; c < samples_across_; ++c) {
-        const Eigen::Vector3d origin = on_axis + (2.0 * (c + 0.5) / samples_across_ - 1.0) * half_width;
-        ray.org_x = static_cast<float>(origin[0]);
-        ray.org_y = static_cast<float>(origin[1]);
-        ray.org_z = static_cast<float>(origin[2]);
-        ray.tnear = 0.0f;
-        ray.tfar = std::numeric_limits<float>::infinity();
-        ray.mask = ~0u;
-        ray.flags = 0;
-        rtcOccluded1(scene_->scene, &context.embree, &ray);
-        if (ray.tfar < 0.0f) ++shadowed;  // Embree sets tfar to −∞ on occlusion
+    for (int first = 0; first < n_rays; first += kPacket) {
+      for (int k = 0; k < kPacket; ++k) {
+        const int sample = first + k;
+        valid[k] = sample < n_rays ? -1 : 0;
+        if (sample >= n_rays) continue;
+        const int a = sample / samples_across_, c = sample % samples_across_;
+        const Eigen::Vector3d origin = member.end_a_m + (a + 0.5) / samples_along_ * axis +
+                                       (2.0 * (c + 0.5) / samples_across_ - 1.0) * half_width;
+        packet.org_x[k] = static_cast<float>(origin[0]);
+        packet.org_y[k] = static_cast<float>(origin[1]);
+        packet.org_z[k] = static_cast<float>(origin[2]);
+        packet.tnear[k] = static_cast<float>(1e-3 * member.radius_m);
+        packet.tfar[k] = std::numeric_limits<float>::infinity();
+        packet.flags[k] = 0;
+      }
+      rtcOccluded8(valid, scene_->scene, &context.embree, &packet);
+      for (int k = 0; k < kPacket; ++k) {
+        if (valid[k] == -1 && packet.tfar[k] < 0.0f) ++shadowed;  // Embree sets tfar to −∞ on occlusion
       }
     }
     shadowed_fraction[static_cast<std::size_t>(i)] = shadowed / n_samples;
