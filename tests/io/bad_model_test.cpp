@@ -40,6 +40,7 @@ const BadModelCase kBadModels[] = {
     {"environment_overlapping_eclipses.yaml", 11, "environment.eclipses.1",
      "eclipses must be in time order and must not overlap"},
     {"environment_shadows_zero_samples.yaml", 11, "environment.shadows.samples_across", "must be at least 1, got 0"},
+    {"environment_shadows_every_not_auto.yaml", 11, "environment.shadows.every", "expected an integer ≥ 1 (steps) or auto, got"},
     {"environment_section_gradients_without_conductivity.yaml", 3, "materials.alu.conductivity",
      "is required by the environment's section_gradients (beam 'boom' is of this material)"},
     {"environment_conduction_without_conductivity.yaml", 3, "materials.alu.conductivity",

@@ -236,6 +236,44 @@ TEST(ThermalCoupling, ShadowsEveryNStepsKeepTheLastFractionsBetween) {
   }
 }
 
+// every: auto. The cover slides sideways at 0.1 mm a step: the shadows are cast again only
+// after it has moved across the sun by more than δ = r / n_across = 1.25 mm since the last
+// update (every 13th step), so the lit tube's shadowed fraction is never more than one sample
+// column (1/8) plus its sampling error (1/8) from the geometric overlap; a motion along the sun
+// (towards the lit tube) casts no new rays.
+TEST(ThermalCoupling, ShadowsOnMotionFollowTheCoverWithinOneSampleColumn) {
+  Model model = shaded_pair("shadows: {every: auto, samples_along: 4, samples_across: 8}");
+  ASSERT_TRUE(model.environment->shadows->on_motion);
+  ThermalCoupling coupling(model);
+  const DofMap dofs(model);
+  MotionState state;
+  state.q = Eigen::VectorXd::Zero(dofs.n_dofs());
+  for (int node = 0; node < 4; ++node) {
+    for (int k = 0; k < 3; ++k) state.q[dofs.index(node, k)] = model.nodes[node].position_m[k];
+  }
+  const double step_m = 1e-4, radius_m = 0.01, tolerance_m = radius_m / 8;
+  const int n_steps = 250;  // 25 mm: out of the shadow
+  for (int step = 1; step <= n_steps; ++step) {
+    coupling.before_step(state, 1.0);
+    for (const int node : {2, 3}) state.q[dofs.index(node, 1)] = step_m * step;
+    coupling.after_step(state, false);
+    const double overlap = std::max(0.0, 2.0 * radius_m - step_m * step) / (2.0 * radius_m);
+    EXPECT_NEAR(coupling.shadowed_fractions()[0], overlap, 2.0 / 8 + 1e-12) << "step " << step;
+  }
+  // An update when the motion since the last exceeds δ: at steps 13, 26, … (t = 0's included).
+  const long expected = 1 + static_cast<long>(std::floor(n_steps / (std::floor(tolerance_m / step_m) + 1)));
+  EXPECT_EQ(coupling.n_shadow_updates(), expected);
+  EXPECT_EQ(coupling.shadowed_fractions()[0], 0.0);
+  // Moving the cover along the sun's direction (z) changes no shadow: no update.
+  const long before = coupling.n_shadow_updates();
+  for (int step = 1; step <= 20; ++step) {
+    coupling.before_step(state, 1.0);
+    for (const int node : {2, 3}) state.q[dofs.index(node, 2)] = 0.1 + 0.01 * step;
+    coupling.after_step(state, false);
+  }
+  EXPECT_EQ(coupling.n_shadow_updates(), before);
+}
+
 // A clamped 2D tube broadside to the sun, its sun-to-shade difference on: at every output its
 // bending moment is E I α D / d with D from temperatures.csv (the beam's curvature α D / d
 // held at zero); and D approaches the closed form D*.

@@ -553,7 +553,7 @@ class ModelReader {
     if (environment.section_gradients) check_graded_beams(spec);
   }
 
-  // `shadows: {every: N, samples_along: n, samples_across: m}`, or `shadows: true` for the defaults.
+  // `shadows: {every: N or auto, samples_along: n, samples_across: m}`, or `shadows: true` for the defaults.
   static ShadowOptions shadow_options(const YamlValue& spec) {
     ShadowOptions options;
     if (spec.is_scalar()) {
@@ -562,7 +562,14 @@ class ModelReader {
     }
     if (!spec.is_map()) spec.fail(fmt::format("expected true or a mapping of {{every, samples_along, samples_across}}, got {}", spec.description()));
     spec.expect_keys(model_keys::kShadows);
-    if (const auto every = spec.find("every")) options.every_steps = every->integer(1);
+    if (const auto every = spec.find("every")) {
+      if (every->is_scalar() && !every->is_number()) {
+        if (every->text() != "auto") every->fail("expected an integer ≥ 1 (steps) or auto, got " + every->description());
+        options.on_motion = true;
+      } else {
+        options.every_steps = every->integer(1);
+      }
+    }
     if (const auto along = spec.find("samples_along")) options.samples_along = along->integer(1);
     if (const auto across = spec.find("samples_across")) options.samples_across = across->integer(1);
     return options;

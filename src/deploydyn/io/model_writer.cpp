@@ -163,7 +163,11 @@ void emit_environment(YAML::Emitter& out, const Environment& environment) {
     emit_key(out, "shadows");
     out << YAML::Flow << YAML::BeginMap;
     emit_key(out, "every");
-    out << environment.shadows->every_steps;
+    if (environment.shadows->on_motion) {
+      out << "auto";
+    } else {
+      out << environment.shadows->every_steps;
+    }
     emit_key(out, "samples_along");
     out << environment.shadows->samples_along;
     emit_key(out, "samples_across");

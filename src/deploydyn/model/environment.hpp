@@ -61,6 +61,10 @@ struct GroundEnvironment {
 // thermal/member_shadows.hpp): rays toward the sun from samples of each member's sunlit strip.
 struct ShadowOptions {
   int every_steps = 1;     // recomputed after every this many accepted steps (and at t = 0)
+  // `every: auto`: recomputed after the accepted steps at which some member has moved across the
+  // sun by more than half a sample column since the last update, or the sun has turned by as
+  // much at the structure's size (thermal/thermal_coupling.hpp); every_steps is then unused.
+  bool on_motion = false;
   int samples_along = 8;   // samples along each member
   int samples_across = 4;  // across its sunlit width
 };

@@ -3,6 +3,8 @@
 #include <fmt/format.h>
 
 #include <Eigen/Geometry>
+#include <algorithm>
+#include <limits>
 #include <numbers>
 #include <stdexcept>
 
@@ -109,8 +111,13 @@ ThermalCoupling::ThermalCoupling(Model& model) : model_(model), dofs_(model) {
   shadowed_.assign(members_.size(), 0.0);
   if (environment.shadows) {
     shadow_every_steps_ = environment.shadows->every_steps;
+    shadows_on_motion_ = environment.shadows->on_motion;
     shadows_ = member_shadows_from_module(static_cast<int>(members_.size()), environment.shadows->samples_along,
                                                environment.shadows->samples_across);
+    shadow_tolerance_m_ = std::numeric_limits<double>::infinity();
+    for (const HeatedElement& member : members_) {
+      shadow_tolerance_m_ = std::min(shadow_tolerance_m_, member.outer_radius_m / environment.shadows->samples_across);
+    }
     capsules_.resize(members_.size());
     update_shadows(nullptr, 0.0);
   }
@@ -153,13 +160,39 @@ void ThermalCoupling::update_shadows(const Eigen::VectorXd* q, double time_s) {
     }
     capsule.radius_m = member.outer_radius_m;
   }
-  shadows_->compute(capsules_, surroundings_at(*model_.environment, time_s).sun_direction, shadowed_);
+  shadow_sun_ = surroundings_at(*model_.environment, time_s).sun_direction.normalized();
+  Eigen::AlignedBox3d box;
+  for (const MemberCapsule& capsule : capsules_) box.extend(capsule.end_a_m).extend(capsule.end_b_m);
+  shadow_extent_m_ = capsules_.empty() ? 0.0 : box.diagonal().norm();
+  shadows_->compute(capsules_, shadow_sun_, shadowed_);
+  ++n_shadow_updates_;
   for (std::size_t i = 0; i < members_.size(); ++i) {
     members_[i].body.shadowed_fraction = shadowed_[i];
     if (most_shadowed_.member < 0 || shadowed_[i] > most_shadowed_.temperature_K) {
       most_shadowed_ = {shadowed_[i], static_cast<int>(i), time_s};
     }
   }
+}
+
+// every: auto. A shadow's edge on a member moves with the two members' ends across the sun, and
+// with the sun's turn times their distance: while every end has moved across the sun by at most
+// δ, and the sun turned by at most δ / extent, no edge has moved by more than 2δ = one sample
+// column of the narrowest member (docs/theory.md, "Shadows between members").
+bool ThermalCoupling::shadows_due(const Eigen::VectorXd& q, double time_s) const {
+  const Eigen::Vector3d sun = surroundings_at(*model_.environment, time_s).sun_direction.normalized();
+  if ((sun - shadow_sun_).norm() * shadow_extent_m_ > shadow_tolerance_m_) return true;
+  const auto moved_across = [&](int node, const Eigen::Vector3d& before) {
+    Eigen::Vector3d moved = -before;
+    for (int k = 0; k < model_.dimension; ++k) moved[k] += q[dofs_.index(node, k)];
+    return (moved - moved.dot(sun) * sun).norm();
+  };
+  for (std::size_t i = 0; i < members_.size(); ++i) {
+    if (moved_across(members_[i].node_a, capsules_[i].end_a_m) > shadow_tolerance_m_ ||
+        moved_across(members_[i].node_b, capsules_[i].end_b_m) > shadow_tolerance_m_) {
+      return true;
+    }
+  }
+  return false;
 }
 
 void ThermalCoupling::before_step(const MotionState& start, double step_s) {
@@ -225,7 +258,9 @@ void ThermalCoupling::after_step(const MotionState& end, bool output) {
   tally_ = pending_tally_;
   time_s_ = end.time_s;
   ++accepted_steps_;
-  if (shadows_ && accepted_steps_ % shadow_every_steps_ == 0) update_shadows(&end.q, end.time_s);
+  if (shadows_ && (shadows_on_motion_ ? shadows_due(end.q, end.time_s) : accepted_steps_ % shadow_every_steps_ == 0)) {
+    update_shadows(&end.q, end.time_s);
+  }
   track_extremes(end.time_s);
   if (output && on_output_) on_output_(end.time_s, temperatures_K_);
 }

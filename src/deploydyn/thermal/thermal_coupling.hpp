@@ -10,6 +10,9 @@
 // With `shadows` (docs/theory.md, "Shadows between members") it casts rays from every member
 // towards the sun at t = 0 and after every `every` accepted steps (thermal/member_shadows.hpp),
 // from the configuration reached; the steps between use the last shadowed fractions. With
+// `every: auto` after the accepted steps at which a member end has moved across the sun by more
+// than δ = min r / n_across (half the narrowest sample column) since the last update, or the
+// sun has turned by more than δ at the structure's size (its bounding box's diagonal). With
 // `section_gradients` every beam also carries the difference D between its sun-facing and its
 // shaded side (thermal/section_temperature_difference.hpp), a vector ⟂ to its axis towards the
 // sun, advanced as its mean temperature and given to the beam as through-depth differences on
@@ -79,6 +82,7 @@ class ThermalCoupling final : public StepHook {
   // over the run (its member and time; `member` −1 without shadows).
   const std::vector<double>& shadowed_fractions() const { return shadowed_; }
   bool has_shadows() const { return shadows_ != nullptr; }
+  long n_shadow_updates() const { return n_shadow_updates_; }  // t = 0's included
   const TemperatureExtreme& most_shadowed() const { return most_shadowed_; }
   // Section gradients: the members that carry a sun-to-shade difference (indices into
   // member_names()), its magnitude |D| (K) per member (0 for the others), its largest value.
@@ -104,6 +108,7 @@ class ThermalCoupling final : public StepHook {
   };
   Eigen::Vector3d axis_at(const Eigen::VectorXd& q, const HeatedElement& member) const;
   void update_shadows(const Eigen::VectorXd* q, double time_s);
+  bool shadows_due(const Eigen::VectorXd& q, double time_s) const;
   void advance_temperatures(const MotionState& start, double step_s, const Surroundings& around);
   void set_temperature_changes(double t0, double t1);
   void track_extremes(double time_s);
@@ -122,9 +127,14 @@ class ThermalCoupling final : public StepHook {
 
   std::unique_ptr<ShadowCaster> shadows_;   // when the environment asks for shadows
   int shadow_every_steps_ = 1;
+  bool shadows_on_motion_ = false;          // every: auto
+  double shadow_tolerance_m_ = 0.0;         // δ of every: auto
   long accepted_steps_ = 0;
+  long n_shadow_updates_ = 0;
   std::vector<double> shadowed_;            // f_sh per member
-  std::vector<MemberCapsule> capsules_;     // work space of update_shadows
+  std::vector<MemberCapsule> capsules_;     // the members as the last update saw them
+  Eigen::Vector3d shadow_sun_ = Eigen::Vector3d::Zero();  // and the sun
+  double shadow_extent_m_ = 0.0;            // and the diagonal of the structure's bounding box
   TemperatureExtreme most_shadowed_{0.0, -1, 0.0};
 
   std::vector<int> graded_;                          // members with a section difference
