@@ -7,7 +7,6 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <map>
@@ -21,6 +20,7 @@
 #include "deploydyn/report/node_markers.hpp"
 #include "deploydyn/report/run_report.hpp"
 #include "deploydyn/runs/run_to_folder.hpp"
+#include "support/report_page.hpp"
 
 namespace deploydyn {
 namespace DEPLOYDYN_FILE_SCOPE {
@@ -28,39 +28,10 @@ namespace DEPLOYDYN_FILE_SCOPE {
 namespace fs = std::filesystem;
 using nlohmann::json;
 
-// RFC 4648 decoding of little-endian Float32 values, written apart from the encoder.
-std::vector<float> float32_array(const json& base64) {
-  std::vector<unsigned char> bytes;
-  unsigned buffer = 0;
-  int bits = 0;
-  for (const char c : base64.get<std::string>()) {
-    if (c == '=') break;
-    const char* digits = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
-    buffer = (buffer << 6) | static_cast<unsigned>(std::strchr(digits, c) - digits);
-    bits += 6;
-    if (bits >= 8) {
-      bits -= 8;
-      bytes.push_back(static_cast<unsigned char>((buffer >> bits) & 0xFF));
-    }
-  }
-  std::vector<float> values(bytes.size() / 4);
-  if (!values.empty()) std::memcpy(values.data(), bytes.data(), 4 * values.size());
-  return values;
-}
+using testing::colouring;
+using testing::float32_array;
 
-json page_data(const fs::path& folder) {
-  const std::string html = run_report_html(folder);
-  const std::string open = "<script type=\"application/json\" id=\"deploydyn-data\">";
-  const std::size_t start = html.find(open) + open.size();
-  return json::parse(html.substr(start, html.find("</script>", start) - start));
-}
-
-json colouring(const json& animation, const std::string& name) {
-  for (const auto& c : animation["colourings"]) {
-    if (c["name"] == name) return c;
-  }
-  return nullptr;
-}
+json page_data(const fs::path& folder) { return testing::page_data(run_report_html(folder)); }
 
 fs::path run_example(const std::string& example, const std::string& folder_name,
                      const std::vector<std::string>& overrides = {}) {

@@ -261,12 +261,15 @@
     return `<svg width="14" height="14" style="vertical-align:middle">${shapes[k.shape]}</svg>`;
   }
   // The markers drawn: one entry a node (its support, joint or plain dot) and one a driver's node.
+  // Above kMaxNodeDots nodes the plain dots are left out: they would only grey the picture.
+  const kMaxNodeDots = 5000;
   function nodeMarkers(nNodes) {
     const kindOf = new Array(nNodes).fill('node');
     const markers = data.markers || { supports: [], joints: [], drivers: [] };
     for (const node of markers.joints) kindOf[node] = 'joint';
     for (const [node, kind] of markers.supports) kindOf[node] = kind;
-    const entries = kindOf.map((kind, node) => ({ node, kind }));
+    const entries = kindOf.map((kind, node) => ({ node, kind }))
+      .filter((e) => e.kind !== 'node' || nNodes <= kMaxNodeDots);
     for (const [node, name] of markers.drivers) entries.push({ node, kind: 'driver', name });
     return entries;
   }
@@ -321,16 +324,26 @@
     // proportion to their depth, 1.5 px at least.
     const widest = Math.max(2, Math.min(6, 6 * Math.sqrt(2000 / Math.max(nMembers, 1))));
     for (let m = 0; m < nMembers; ++m) width[m] = deepest > 0 ? Math.max(1.5, widest * depths[m] / deepest) : 2;
-    const geometry = new THREE.InstancedBufferGeometry();
-    geometry.setAttribute('position', new THREE.Float32BufferAttribute([0, -0.5, 0, 1, -0.5, 0, 1, 0.5, 0, 0, 0.5, 0], 3));
-    geometry.setIndex([0, 1, 2, 0, 2, 3]);
-    const ends = new THREE.InstancedInterleavedBuffer(vertex, 6, 1);
+    // Four corners a member, each with both ends, its colour and width (WebGL1 instancing is
+    // many times slower in software rendering than plain attributes: measured, docs/report.md).
+    const geometry = new THREE.BufferGeometry();
+    const corner = new Float32Array(nMembers * 12), cornerWidth = new Float32Array(nMembers * 4);
+    const index = new (nMembers * 4 > 65535 ? Uint32Array : Uint16Array)(nMembers * 6);
+    const unitQuad = [0, -0.5, 0, 1, -0.5, 0, 1, 0.5, 0, 0, 0.5, 0];
+    for (let m = 0; m < nMembers; ++m) {
+      corner.set(unitQuad, 12 * m);
+      cornerWidth.fill(width[m], 4 * m, 4 * m + 4);
+      index.set([0, 1, 2, 0, 2, 3].map((i) => 4 * m + i), 6 * m);
+    }
+    const cornerEnds = new Float32Array(nMembers * 24), cornerColour = new Float32Array(nMembers * 12);
+    geometry.setAttribute('position', new THREE.BufferAttribute(corner, 3));
+    geometry.setIndex(new THREE.BufferAttribute(index, 1));
+    const ends = new THREE.InterleavedBuffer(cornerEnds, 6);
     geometry.setAttribute('instanceStart', new THREE.InterleavedBufferAttribute(ends, 3, 0));
     geometry.setAttribute('instanceEnd', new THREE.InterleavedBufferAttribute(ends, 3, 3));
-    const colourAttribute = new THREE.InstancedBufferAttribute(colour, 3);
+    const colourAttribute = new THREE.BufferAttribute(cornerColour, 3);
     geometry.setAttribute('instanceColour', colourAttribute);
-    geometry.setAttribute('instanceWidth', new THREE.InstancedBufferAttribute(width, 1));
-    geometry.maxInstancedCount = nMembers;
+    geometry.setAttribute('instanceWidth', new THREE.BufferAttribute(cornerWidth, 1));
     const memberUniforms = {
       resolution: { value: new THREE.Vector2(1, 1) },
       depthRange: { value: new THREE.Vector2(0, 1) },
@@ -348,7 +361,9 @@
     const markerGeometry = new THREE.BufferGeometry();
     markerGeometry.setAttribute('position', new THREE.BufferAttribute(markerPosition, 3));
     markerGeometry.setAttribute('shape', new THREE.Float32BufferAttribute(markers.map((e) => markerKinds[e.kind].shape), 1));
-    markerGeometry.setAttribute('size', new THREE.Float32BufferAttribute(markers.map((e) => markerKinds[e.kind].size), 1));
+    // Smaller when many: half size at 8000 markers and beyond.
+    const markerScale = Math.max(0.5, Math.min(1, Math.sqrt(2000 / Math.max(markers.length, 1))));
+    markerGeometry.setAttribute('size', new THREE.Float32BufferAttribute(markers.map((e) => markerScale * markerKinds[e.kind].size), 1));
     markerGeometry.setAttribute('colour', new THREE.Float32BufferAttribute(markers.flatMap((e) => markerKinds[e.kind].colour), 3));
     const markerUniforms = { pixelRatio: { value: renderer.getPixelRatio() } };
     const points = new THREE.Points(markerGeometry, new THREE.ShaderMaterial({
@@ -396,6 +411,10 @@
         const v = colouring ? colouring.data[k * nMembers + m] : NaN;
         if (Number.isFinite(v)) colourScales[colouring.scale](v, colouring, colour, 3 * m);
         else colour[3 * m] = colour[3 * m + 1] = colour[3 * m + 2] = 0.6;
+        for (let c = 0; c < 4; ++c) {
+          for (let i = 0; i < 6; ++i) cornerEnds[24 * m + 6 * c + i] = vertex[6 * m + i];
+          for (let i = 0; i < 3; ++i) cornerColour[12 * m + 3 * c + i] = colour[3 * m + i];
+        }
       }
       markers.forEach((e, i) => { for (let axis = 0; axis < 3; ++axis) markerPosition[3 * i + axis] = at(e.node, axis); });
       ends.needsUpdate = true;
@@ -519,6 +538,7 @@
     }));
     report.depthCue = memberUniforms.depthCue.value;
     report.camera = camera;
+    report.scene = scene;
     report.controls = controls;
     report.render = render;
     report.frameCount = nFrames;
