@@ -281,6 +281,76 @@
     return (m < 1.5 ? 1 : m < 3.5 ? 2 : m < 7.5 ? 5 : 10) * power;
   }
 
+  // The members' mesh: four corners a member, each with both ends, its colour and width
+  // (WebGL1 instancing of one quad was 27 times slower in software rendering at 10⁴ members:
+  // docs/report.md, "At scale"). update(ends, colours) takes 6 and 3 values a member.
+  function wideMembers(nMembers, width, uniforms) {
+    const geometry = new THREE.BufferGeometry();
+    const corner = new Float32Array(nMembers * 12), cornerWidth = new Float32Array(nMembers * 4);
+    const index = new (nMembers * 4 > 65535 ? Uint32Array : Uint16Array)(nMembers * 6);
+    const unitQuad = [0, -0.5, 0, 1, -0.5, 0, 1, 0.5, 0, 0, 0.5, 0];
+    for (let m = 0; m < nMembers; ++m) {
+      corner.set(unitQuad, 12 * m);
+      cornerWidth.fill(width[m], 4 * m, 4 * m + 4);
+      index.set([0, 1, 2, 0, 2, 3].map((i) => 4 * m + i), 6 * m);
+    }
+    const cornerEnds = new Float32Array(nMembers * 24), cornerColour = new Float32Array(nMembers * 12);
+    geometry.setAttribute('position', new THREE.BufferAttribute(corner, 3));
+    geometry.setIndex(new THREE.BufferAttribute(index, 1));
+    const ends = new THREE.InterleavedBuffer(cornerEnds, 6);
+    geometry.setAttribute('instanceStart', new THREE.InterleavedBufferAttribute(ends, 3, 0));
+    geometry.setAttribute('instanceEnd', new THREE.InterleavedBufferAttribute(ends, 3, 3));
+    const colourAttribute = new THREE.BufferAttribute(cornerColour, 3);
+    geometry.setAttribute('instanceColour', colourAttribute);
+    geometry.setAttribute('instanceWidth', new THREE.BufferAttribute(cornerWidth, 1));
+    const object = new THREE.Mesh(geometry, new THREE.ShaderMaterial({
+      uniforms, vertexShader: memberVertexShader, fragmentShader: plainFragmentShader, side: THREE.DoubleSide,
+    }));
+    function update(vertex, colour) {
+      for (let m = 0; m < nMembers; ++m) {
+        for (let c = 0; c < 4; ++c) {
+          for (let i = 0; i < 6; ++i) cornerEnds[24 * m + 6 * c + i] = vertex[6 * m + i];
+          for (let i = 0; i < 3; ++i) cornerColour[12 * m + 3 * c + i] = colour[3 * m + i];
+        }
+      }
+      ends.needsUpdate = true;
+      colourAttribute.needsUpdate = true;
+    }
+    return { object, update, wide: true };
+  }
+  // Above kMaxWideMembers members every band would be 1.5–2 px wide anyway: 1-px lines, at half
+  // the vertices, with the same depth cue.
+  const kMaxWideMembers = 20000;
+  const thinVertexShader = `
+    attribute vec3 instanceColour;
+    uniform vec2 depthRange;
+    uniform float depthCue;
+    varying vec3 vColour;
+    void main() {
+      vec4 here = modelViewMatrix * vec4(position, 1.0);
+      float far = clamp((-here.z - depthRange.x) / max(depthRange.y - depthRange.x, 1e-9), 0.0, 1.0);
+      vColour = instanceColour * (1.0 - depthCue * far);
+      gl_Position = projectionMatrix * here;
+    }`;
+  function thinMembers(nMembers, uniforms) {
+    const geometry = new THREE.BufferGeometry();
+    const ends = new Float32Array(nMembers * 6), endColour = new Float32Array(nMembers * 6);
+    geometry.setAttribute('position', new THREE.BufferAttribute(ends, 3));
+    geometry.setAttribute('instanceColour', new THREE.BufferAttribute(endColour, 3));
+    const object = new THREE.LineSegments(geometry, new THREE.ShaderMaterial({
+      uniforms, vertexShader: thinVertexShader, fragmentShader: plainFragmentShader,
+    }));
+    function update(vertex, colour) {
+      ends.set(vertex);
+      for (let m = 0; m < nMembers; ++m) {
+        for (let i = 0; i < 3; ++i) endColour[6 * m + i] = endColour[6 * m + 3 + i] = colour[3 * m + i];
+      }
+      geometry.attributes.position.needsUpdate = true;
+      geometry.attributes.instanceColour.needsUpdate = true;
+    }
+    return { object, update, wide: false };
+  }
+
   function showDeployment(frames) {
     const nNodes = data.nodes;
     const members = decode(data.members.nodes, Int32Array);
@@ -324,34 +394,14 @@
     // proportion to their depth, 1.5 px at least.
     const widest = Math.max(2, Math.min(6, 6 * Math.sqrt(2000 / Math.max(nMembers, 1))));
     for (let m = 0; m < nMembers; ++m) width[m] = deepest > 0 ? Math.max(1.5, widest * depths[m] / deepest) : 2;
-    // Four corners a member, each with both ends, its colour and width (WebGL1 instancing is
-    // many times slower in software rendering than plain attributes: measured, docs/report.md).
-    const geometry = new THREE.BufferGeometry();
-    const corner = new Float32Array(nMembers * 12), cornerWidth = new Float32Array(nMembers * 4);
-    const index = new (nMembers * 4 > 65535 ? Uint32Array : Uint16Array)(nMembers * 6);
-    const unitQuad = [0, -0.5, 0, 1, -0.5, 0, 1, 0.5, 0, 0, 0.5, 0];
-    for (let m = 0; m < nMembers; ++m) {
-      corner.set(unitQuad, 12 * m);
-      cornerWidth.fill(width[m], 4 * m, 4 * m + 4);
-      index.set([0, 1, 2, 0, 2, 3].map((i) => 4 * m + i), 6 * m);
-    }
-    const cornerEnds = new Float32Array(nMembers * 24), cornerColour = new Float32Array(nMembers * 12);
-    geometry.setAttribute('position', new THREE.BufferAttribute(corner, 3));
-    geometry.setIndex(new THREE.BufferAttribute(index, 1));
-    const ends = new THREE.InterleavedBuffer(cornerEnds, 6);
-    geometry.setAttribute('instanceStart', new THREE.InterleavedBufferAttribute(ends, 3, 0));
-    geometry.setAttribute('instanceEnd', new THREE.InterleavedBufferAttribute(ends, 3, 3));
-    const colourAttribute = new THREE.BufferAttribute(cornerColour, 3);
-    geometry.setAttribute('instanceColour', colourAttribute);
-    geometry.setAttribute('instanceWidth', new THREE.BufferAttribute(cornerWidth, 1));
     const memberUniforms = {
       resolution: { value: new THREE.Vector2(1, 1) },
       depthRange: { value: new THREE.Vector2(0, 1) },
       depthCue: { value: data.dimension === 3 ? 0.55 : 0 },  // a 2D model keeps its flat view
     };
-    const lines = new THREE.Mesh(geometry, new THREE.ShaderMaterial({
-      uniforms: memberUniforms, vertexShader: memberVertexShader, fragmentShader: plainFragmentShader, side: THREE.DoubleSide,
-    }));
+    const members3d = nMembers <= kMaxWideMembers ? wideMembers(nMembers, width, memberUniforms)
+      : thinMembers(nMembers, memberUniforms);
+    const lines = members3d.object;
     lines.frustumCulled = false;
     scene.add(lines);
 
@@ -361,8 +411,8 @@
     const markerGeometry = new THREE.BufferGeometry();
     markerGeometry.setAttribute('position', new THREE.BufferAttribute(markerPosition, 3));
     markerGeometry.setAttribute('shape', new THREE.Float32BufferAttribute(markers.map((e) => markerKinds[e.kind].shape), 1));
-    // Smaller when many: half size at 8000 markers and beyond.
-    const markerScale = Math.max(0.5, Math.min(1, Math.sqrt(2000 / Math.max(markers.length, 1))));
+    // Smaller when many: half size at 8000 markers, 0.3 at 22 000 and beyond.
+    const markerScale = Math.max(0.3, Math.min(1, Math.sqrt(2000 / Math.max(markers.length, 1))));
     markerGeometry.setAttribute('size', new THREE.Float32BufferAttribute(markers.map((e) => markerScale * markerKinds[e.kind].size), 1));
     markerGeometry.setAttribute('colour', new THREE.Float32BufferAttribute(markers.flatMap((e) => markerKinds[e.kind].colour), 3));
     const markerUniforms = { pixelRatio: { value: renderer.getPixelRatio() } };
@@ -411,14 +461,9 @@
         const v = colouring ? colouring.data[k * nMembers + m] : NaN;
         if (Number.isFinite(v)) colourScales[colouring.scale](v, colouring, colour, 3 * m);
         else colour[3 * m] = colour[3 * m + 1] = colour[3 * m + 2] = 0.6;
-        for (let c = 0; c < 4; ++c) {
-          for (let i = 0; i < 6; ++i) cornerEnds[24 * m + 6 * c + i] = vertex[6 * m + i];
-          for (let i = 0; i < 3; ++i) cornerColour[12 * m + 3 * c + i] = colour[3 * m + i];
-        }
       }
+      members3d.update(vertex, colour);
       markers.forEach((e, i) => { for (let axis = 0; axis < 3; ++axis) markerPosition[3 * i + axis] = at(e.node, axis); });
-      ends.needsUpdate = true;
-      colourAttribute.needsUpdate = true;
       markerGeometry.attributes.position.needsUpdate = true;
       report.frame = k;
       document.getElementById('frame').value = k;
@@ -531,7 +576,7 @@
     report.memberEnds = () => Array.from({ length: nMembers }, (_, m) =>
       [project(vertex[6 * m], vertex[6 * m + 1], vertex[6 * m + 2]).slice(0, 2),
         project(vertex[6 * m + 3], vertex[6 * m + 4], vertex[6 * m + 5]).slice(0, 2)]);
-    report.memberWidths = Array.from(width);
+    report.memberWidths = members3d.wide ? Array.from(width) : new Array(nMembers).fill(1);
     report.markers = () => markers.map((e, i) => ({
       node: e.node, kind: e.kind, name: e.name,
       at: project(markerPosition[3 * i], markerPosition[3 * i + 1], markerPosition[3 * i + 2]).slice(0, 2),
