@@ -3,9 +3,12 @@
 the page and its size, and in headless
 Chromium (software WebGL: SwiftShader, so a lower bound of what a desktop GPU does) the time to
 open it and the time to draw one animation frame, on generated planar roofs of about 10², 10⁴
-and 10⁵ members. Medians of --repetitions; prints a Markdown table.
+and 10⁵ members. Medians of --repetitions; prints a Markdown table. With --baseline OTHER_CLI
+the page of the same run is also written by that build (an older viewer) and measured alike,
+one row each: the frame time before and after a change of the viewer.
 
 Usage: bench/report_bench.py --cli build/release/deploydyn [--units 33 3333 33333]
+                             [--baseline /path/to/older/deploydyn]
 """
 
 import argparse
@@ -26,14 +29,21 @@ def browser():
     return webdriver.Chrome(service=Service("/usr/bin/chromedriver"), options=options)
 
 
-def measure(cli, units, repetitions, work, driver):
+def measure(cli, units, repetitions, work, driver, baseline=None):
     model = os.path.join(work, f"roof_{units}.yaml")
     subprocess.run([cli, "generate", "roof", "--units", str(units), "--out", model], check=True,
                    capture_output=True)
     out = os.path.join(work, f"run_{units}")
     subprocess.run([cli, "run", model, "--out", out, "--quiet", "--set", "analysis.end=0.5",
                     "--set", "analysis.output_interval=0.01"], check=True)
-    page = os.path.join(out, "report.html")
+    rows = []
+    for label, page_cli in ([("baseline", baseline)] if baseline else []) + [("this build", cli)]:
+        page = os.path.join(out, "report.html")
+        rows.append(measure_page(page_cli, out, page, repetitions, driver) | {"units": units, "build": label})
+    return rows
+
+
+def measure_page(cli, out, page, repetitions, driver):
     writes = []
     for _ in range(repetitions):
         start = time.perf_counter()
@@ -60,7 +70,7 @@ def measure(cli, units, repetitions, work, driver):
         """))
     members = driver.execute_script("return JSON.parse(document.getElementById('deploydyn-data').textContent).members.names.length")
     n_frames = driver.execute_script("return window.deploydynReport.frameCount")
-    return {"units": units, "members": members, "frames": n_frames, "write_s": statistics.median(writes),
+    return {"members": members, "frames": n_frames, "write_s": statistics.median(writes),
             "size_MB": os.path.getsize(page) / 1e6, "open_s": statistics.median(opens),
             "frame_ms": statistics.median(frames)}
 
@@ -70,16 +80,18 @@ def main():
     parser.add_argument("--cli", required=True)
     parser.add_argument("--units", type=int, nargs="+", default=[33, 3333, 33333])
     parser.add_argument("--repetitions", type=int, default=3)
+    parser.add_argument("--baseline", help="another build's deploydyn: its page of the same run measured too")
     args = parser.parse_args()
-    print("| members | frames | write the page (s) | page (MB) | open in Chromium (s) | one frame (ms) |")
-    print("|---|---|---|---|---|---|")
+    print("| members | build | frames | write the page (s) | page (MB) | open in Chromium (s) | one frame (ms) |")
+    print("|---|---|---|---|---|---|---|")
     driver = browser()
     try:
         with tempfile.TemporaryDirectory() as work:
             for units in args.units:
-                r = measure(os.path.abspath(args.cli), units, args.repetitions, work, driver)
-                print(f"| {r['members']} | {r['frames']} | {r['write_s']:.2f} | {r['size_MB']:.1f} | "
-                      f"{r['open_s']:.1f} | {r['frame_ms']:.1f} |", flush=True)
+                baseline = os.path.abspath(args.baseline) if args.baseline else None
+                for r in measure(os.path.abspath(args.cli), units, args.repetitions, work, driver, baseline):
+                    print(f"| {r['members']} | {r['build']} | {r['frames']} | {r['write_s']:.2f} | {r['size_MB']:.1f} | "
+                          f"{r['open_s']:.1f} | {r['frame_ms']:.1f} |", flush=True)
     finally:
         driver.quit()
 

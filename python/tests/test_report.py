@@ -142,7 +142,8 @@ def test_members_with_capacities_are_coloured_by_utilization(browser, tmp_path):
     report = "window.deploydynReport"
     frames = browser.execute_script(f"return {report}.frameCount")
     assert browser.execute_script("return document.getElementById('colour-by-label').hidden") is False
-    assert browser.execute_script(f"return {report}.colourings") == ["utilization", "force"]
+    # Utilization first, then force; then stress and the history's other element quantities.
+    assert browser.execute_script(f"return {report}.colourings")[:3] == ["utilization", "force", "stress"]
     names = json.loads(browser.execute_script(
         "return JSON.stringify(JSON.parse(document.getElementById('deploydyn-data').textContent).members.names)"))
     link = names.index("link")

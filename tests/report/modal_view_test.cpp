@@ -22,6 +22,7 @@
 #include "deploydyn/report/run_report.hpp"
 #include "deploydyn/runs/modes_to_folder.hpp"
 #include "deploydyn/util/base64.hpp"
+#include "support/report_page.hpp"
 
 namespace deploydyn {
 namespace DEPLOYDYN_FILE_SCOPE {
@@ -55,11 +56,7 @@ std::vector<double> csv_column(const fs::path& file, const std::string& name) {
   return values;
 }
 
-nlohmann::json page_data(const std::string& html) {
-  const std::string open = "<script type=\"application/json\" id=\"deploydyn-data\">";
-  const std::size_t start = html.find(open) + open.size();
-  return nlohmann::json::parse(html.substr(start, html.find("</script>", start) - start));
-}
+using testing::page_data;
 
 TEST(ModalView, FrequenciesAreModesCsvAndEachModeMovesAboutItsEquilibrium) {
   const fs::path folder = fs::temp_directory_path() / "deploydyn_report_modal";

@@ -15,44 +15,16 @@
 #include "deploydyn/io/model_loader.hpp"
 #include "deploydyn/runs/run_to_folder.hpp"
 #include "deploydyn/report/run_report.hpp"
+#include "support/report_page.hpp"
 
 namespace deploydyn {
 namespace DEPLOYDYN_FILE_SCOPE {
 
 namespace fs = std::filesystem;
 
-// RFC 4648 decoding, written independently of the encoder.
-std::vector<unsigned char> decode_base64(const std::string& text) {
-  std::vector<unsigned char> out;
-  unsigned buffer = 0;
-  int bits = 0;
-  for (const char c : text) {
-    if (c == '=') break;
-    const char* digits = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
-    buffer = (buffer << 6) | static_cast<unsigned>(std::strchr(digits, c) - digits);
-    bits += 6;
-    if (bits >= 8) {
-      bits -= 8;
-      out.push_back(static_cast<unsigned char>((buffer >> bits) & 0xFF));
-    }
-  }
-  return out;
-}
-
-std::vector<float> float32_array(const nlohmann::json& base64) {
-  const std::vector<unsigned char> bytes = decode_base64(base64.get<std::string>());
-  std::vector<float> values(bytes.size() / 4);
-  std::memcpy(values.data(), bytes.data(), bytes.size());
-  return values;
-}
-
-// The animation's colouring called `name` (report/member_colourings.hpp), or null.
-nlohmann::json colouring(const nlohmann::json& animation, const std::string& name) {
-  for (const auto& c : animation["colourings"]) {
-    if (c["name"] == name) return c;
-  }
-  return nullptr;
-}
+using testing::colouring;
+using testing::float32_array;
+using testing::page_data;
 
 TEST(RunReport, FramesAreSpreadEvenlyWithTheFirstAndLastRow) {
   EXPECT_EQ(frame_rows(11, 3), (std::vector<std::size_t>{0, 5, 10}));
@@ -68,18 +40,12 @@ TEST(RunReport, Float32ArraysRoundTripThroughBase64) {
   for (std::size_t n : {0, 1, 2, 3, 7}) {  // every padding case
     std::vector<float> values;
     for (std::size_t i = 0; i < n; ++i) values.push_back(1.5f * static_cast<float>(i) - 3.25e-7f);
-    const std::vector<unsigned char> bytes = decode_base64(float32_base64(values));
+    const std::vector<unsigned char> bytes = testing::decode_base64_independently(float32_base64(values));
     ASSERT_EQ(bytes.size(), 4 * n);
     std::vector<float> back(n);
     if (n > 0) std::memcpy(back.data(), bytes.data(), bytes.size());  // (memcpy of null is undefined)
     EXPECT_EQ(back, values);
   }
-}
-
-nlohmann::json page_data(const std::string& html) {
-  const std::string open = "<script type=\"application/json\" id=\"deploydyn-data\">";
-  const std::size_t start = html.find(open) + open.size();
-  return nlohmann::json::parse(html.substr(start, html.find("</script>", start) - start));
 }
 
 TEST(RunReport, NodesWithoutPositionColumnsStayWhereTheModelPutsThem) {
@@ -90,7 +56,7 @@ TEST(RunReport, NodesWithoutPositionColumnsStayWhereTheModelPutsThem) {
   ASSERT_EQ(run_to_folder(model, folder).status, RunStatus::completed);
   const nlohmann::json data = page_data(run_report_html(folder));
   const auto& animation = data["animation"];
-  const std::vector<unsigned char> bytes = decode_base64(animation["positions"].get<std::string>());
+  const std::vector<unsigned char> bytes = testing::decode_base64_independently(animation["positions"].get<std::string>());
   const std::size_t n_nodes = model.nodes.size(), n_frames = animation["times"].size();
   ASSERT_EQ(bytes.size(), 4 * 3 * n_nodes * n_frames);
   std::vector<float> positions(bytes.size() / 4);

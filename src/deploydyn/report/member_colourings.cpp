@@ -6,8 +6,12 @@
 #include <cmath>
 #include <functional>
 #include <limits>
+#include <string_view>
+#include <utility>
 
+#include "deploydyn/elements/element_kinds.hpp"
 #include "deploydyn/report/drawn_utilizations.hpp"
+#include "deploydyn/report/member_sections.hpp"
 #include "deploydyn/report/run_report.hpp"
 
 namespace deploydyn {
@@ -59,7 +63,8 @@ std::vector<int> columns_of(const HistoryTable& table, const std::string& prefix
   return columns;
 }
 
-json diverging(const char* name, const char* label, const char* unit, std::string note, Colouring c) {
+json diverging(const std::string& name, const std::string& label, const std::string& unit, std::string note,
+               Colouring c) {
   const double range = c.diverging_range();
   if (c.largest_magnitude > 1.001 * range) {
     note += fmt::format("; saturated beyond (largest |{}| {:.4g} {})", name, c.largest_magnitude, unit);
@@ -68,7 +73,81 @@ json diverging(const char* name, const char* label, const char* unit, std::strin
           {"low", -range}, {"high", range}, {"largest", c.largest_magnitude}, {"note", note}};
 }
 
+// The extreme-fibre normal stress (Pa) of each member, tension positive: N/A for bars and cables,
+// N/A ± (|M_z|/W_z + |M_y|/W_y) for beams, the sign of the fibre of larger magnitude (the side
+// of N; tension when N = 0): the normal stress of (V2), (V3) in docs/theory.md, "Member checks
+// and the verdict", without the shear of (V3a)–(V3c). NaN without a force column or an area.
+Colouring stresses(const Model& model, const HistoryTable& history, const std::vector<std::string>& members,
+                   const std::vector<std::size_t>& rows, bool& moments_missing) {
+  const std::vector<DrawnSection> sections = drawn_sections(model, members);
+  const std::vector<int> force = columns_of(history, "force.", members);
+  const std::vector<int> moment_z = columns_of(history, "moment.", members);
+  const std::vector<int> moment_y = columns_of(history, "moment_y.", members);
+  Colouring c;
+  c.values.reserve(rows.size() * members.size());
+  for (const std::size_t row : rows) {
+    const auto value = [&](int column) { return column >= 0 ? history.values[static_cast<std::size_t>(column)][row] : 0.0; };
+    for (std::size_t m = 0; m < members.size(); ++m) {
+      const DrawnSection& s = sections[m];
+      if (force[m] < 0 || s.area_m2 <= 0.0) {
+        c.add(kNaN);
+        continue;
+      }
+      const double axial_N = value(force[m]);
+      double bending_Pa = 0.0;
+      if (s.kind == DrawnSection::Kind::beam && s.modulus_z_m3 > 0.0) {
+        moments_missing = moments_missing || moment_z[m] < 0 || (model.dimension == 3 && moment_y[m] < 0);
+        bending_Pa = std::abs(value(moment_z[m])) / s.modulus_z_m3;
+        if (s.modulus_y_m3 > 0.0) bending_Pa += std::abs(value(moment_y[m])) / s.modulus_y_m3;
+      }
+      c.add(axial_N / s.area_m2 + (axial_N < 0.0 ? -bending_Pa : bending_Pa));
+    }
+  }
+  return c;
+}
+
+// "shear_force_y_N" → ("shear force y", "N"): a ResultQuantity's name and its unit.
+std::pair<std::string, std::string> label_and_unit(std::string_view name) {
+  static constexpr std::pair<std::string_view, std::string_view> kUnits[] = {
+      {"_Nm", "N·m"}, {"_N", "N"}, {"_Pa", "Pa"}, {"_m", "m"}, {"_rad", "rad"}, {"_K", "K"}, {"_J", "J"}};
+  std::string unit = "1";  // dimensionless: a strain, a slack flag
+  for (const auto& [suffix, u] : kUnits) {
+    if (name.ends_with(suffix)) {
+      name.remove_suffix(suffix.size());
+      unit = u;
+      break;
+    }
+  }
+  std::string label(name);
+  std::replace(label.begin(), label.end(), '_', ' ');
+  return {label, unit};
+}
+
+// The other quantities the drawn members' types report (ElementKind::quantities) that history.csv
+// holds for some drawn member: (history column prefix, ResultQuantity name), in the types' order.
+std::vector<std::pair<std::string, std::string>> other_quantities(const Model& model, const HistoryTable& history,
+                                                                  const std::vector<std::string>& members) {
+  std::vector<std::pair<std::string, std::string>> out;
+  for (const ElementKind* kind : element_kinds()) {
+    if (kind->n_element_nodes() != 2 || kind->n_elements(model) == 0) continue;
+    for (const ResultQuantity& q : kind->quantities(model.dimension)) {
+      const std::string key(q.key);
+      // force and moment have their own colourings; stress is computed for every member.
+      if (key == "force" || key == "moment" || key == "stress" || !q.recorded) continue;
+      if (std::any_of(out.begin(), out.end(), [&](const auto& o) { return o.first == key; })) continue;
+      const std::vector<int> columns = columns_of(history, key + ".", members);
+      if (std::any_of(columns.begin(), columns.end(), [](int c) { return c >= 0; })) out.emplace_back(key, q.name);
+    }
+  }
+  return out;
+}
+
 }  // namespace
+
+std::size_t member_colourings_bound(const Model& model, const HistoryTable& history,
+                                    const std::vector<std::string>& members) {
+  return 5 + other_quantities(model, history, members).size();  // utilization, force, stress, moment, temperature
+}
 
 json member_colourings(const Model& model, const HistoryTable& history, const std::vector<std::string>& members,
                        const std::vector<std::size_t>& rows, const HistoryTable* temperatures, std::string& note) {
@@ -91,6 +170,12 @@ json member_colourings(const Model& model, const HistoryTable& history, const st
   }
   Colouring force = from_columns(history, columns_of(history, "force.", members), rows);
   if (force.any) out.push_back(diverging("force", "axial force (N)", "N", "blue compression, red tension", std::move(force)));
+  bool moments_missing = false;
+  if (Colouring stress = stresses(model, history, members, rows, moments_missing); stress.any) {
+    std::string what = "blue compression, red tension: N/A, and for beams the extreme fibre's N/A ± M/W";
+    if (moments_missing) what += "; beams' moments not in history.csv (output.select) are left out";
+    out.push_back(diverging("stress", "normal stress (Pa)", "Pa", what, std::move(stress)));
+  }
   Colouring moment = from_columns(history, columns_of(history, "moment.", members), rows);
   if (moment.any) {
     out.push_back(diverging("moment", "bending moment M_z (N·m)", "N·m", "blue negative, red positive", std::move(moment)));
@@ -109,6 +194,12 @@ json member_colourings(const Model& model, const HistoryTable& history, const st
                      {"values", float32_base64(c.values)}, {"low", c.low}, {"high", c.high}, {"largest", c.high},
                      {"note", "blue coldest, red hottest over the run"}});
     }
+  }
+  for (const auto& [key, quantity] : other_quantities(model, history, members)) {
+    Colouring c = from_columns(history, columns_of(history, key + ".", members), rows);
+    const auto [label, unit] = label_and_unit(quantity);
+    out.push_back(diverging(key, fmt::format("{} ({})", label, unit), unit, "blue negative, red positive (history.csv's " + key + ".*)",
+                            std::move(c)));
   }
   return out;
 }

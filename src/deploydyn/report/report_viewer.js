@@ -36,6 +36,23 @@
   function text(id, value) { document.getElementById(id).textContent = value; }
 
   // --- Summary -------------------------------------------------------------------------------
+  // A time history's events with their times: summary.json's element events (latches, slack
+  // cables, …, at most 200 of them) and the verdict's first failure; listed in the summary and
+  // marked on the time plots. A path's events are on its own plots.
+  function runEvents() {
+    const s = data.summary, out = [];
+    if (!s.analysis || s.analysis.type === 'modal' || s.analysis.type === 'continuation') return out;
+    for (const e of s.events || []) {
+      if (Number.isFinite(e.time_s)) out.push({ t: e.time_s, kind: `${e.type}.${e.what}`, label: `${e.type} ${e.element} ${e.what}` });
+    }
+    const f = s.verdict && !s.verdict.along ? s.verdict.first_failure : null;
+    if (f && Number.isFinite(f.time_s)) {
+      out.push({ t: f.time_s, kind: 'failure', label: `first failure: ${f.check}${f.member ? ' of ' + f.member : ''}` });
+    }
+    return out.sort((a, b) => a.t - b.t);
+  }
+  const kEventsListed = 12;
+
   function showSummary() {
     const s = data.summary;
     text('title', data.title);
@@ -72,6 +89,10 @@
     if (s.event_counts && Object.keys(s.event_counts).length) {
       rows.push(['events', Object.entries(s.event_counts).map(([k, n]) => `${k} ×${n}`).join(', ')]);
     }
+    const events = runEvents();
+    for (const e of events.slice(0, kEventsListed)) rows.push([e.kind === 'failure' ? 'failure' : 'event', `${e.label} at t = ${formatNumber(e.t)} s`]);
+    if (events.length > kEventsListed) rows.push(['', `… and ${events.length - kEventsListed} more events, marked on the time plots (summary.json lists them)`]);
+    report.events = events;
     if (s.output && s.output.note) rows.push(['history', s.output.note]);
     for (const w of s.warnings || []) rows.push(['warning', w]);
     if (data.notes.history) rows.push(['note', data.notes.history]);
@@ -154,6 +175,182 @@
     return frames;
   }
 
+  // Members as screen-space wide lines: one instanced quad a member, its width in pixels from
+  // its section's depth (report/member_sections.hpp), one draw call whatever the count. The
+  // depth cue darkens a member with its distance from the camera across the model's bounding
+  // sphere: near members read in front of far ones (3D only).
+  const memberVertexShader = `
+    attribute vec3 instanceStart;
+    attribute vec3 instanceEnd;
+    attribute vec3 instanceColour;
+    attribute float instanceWidth;
+    uniform vec2 resolution;
+    uniform vec2 depthRange;
+    uniform float depthCue;
+    varying vec3 vColour;
+    void main() {
+      vec4 a = modelViewMatrix * vec4(instanceStart, 1.0);
+      vec4 b = modelViewMatrix * vec4(instanceEnd, 1.0);
+      vec4 here = position.x < 0.5 ? a : b;
+      float far = clamp((-here.z - depthRange.x) / max(depthRange.y - depthRange.x, 1e-9), 0.0, 1.0);
+      vColour = instanceColour * (1.0 - depthCue * far);
+      vec4 ca = projectionMatrix * a, cb = projectionMatrix * b;
+      vec2 along = (cb.xy / cb.w - ca.xy / ca.w) * resolution;
+      along = length(along) > 1e-6 ? normalize(along) : vec2(1.0, 0.0);
+      vec2 across = vec2(-along.y, along.x);
+      vec4 clip = position.x < 0.5 ? ca : cb;
+      // Half the width to each side, and half a width beyond each end so that joints close.
+      vec2 offset = across * position.y + along * (position.x < 0.5 ? -0.5 : 0.5);
+      clip.xy += offset * instanceWidth * 2.0 / resolution * clip.w;  // NDC spans 2 over the resolution
+      gl_Position = clip;
+    }`;
+  const plainFragmentShader = `
+    varying vec3 vColour;
+    void main() { gl_FragColor = vec4(vColour, 1.0); }`;
+  // Node markers as points: a shape (0 dot, 1 square, 2 triangle, 3 open triangle, 4 ring,
+  // 5 open diamond) drawn in the point's square.
+  const markerVertexShader = `
+    attribute float shape;
+    attribute float size;
+    attribute vec3 colour;
+    uniform float pixelRatio;
+    varying float vShape;
+    varying vec3 vColour;
+    void main() {
+      vShape = shape;
+      vColour = colour;
+      gl_PointSize = size * pixelRatio;
+      gl_Position = projectionMatrix * modelViewMatrix * vec4(position, 1.0);
+    }`;
+  const markerFragmentShader = `
+    varying float vShape;
+    varying vec3 vColour;
+    bool inTriangle(vec2 p, float inset) {  // apex up; p in [0, 1]², y down
+      return p.y <= 0.95 - inset && abs(p.x - 0.5) <= (p.y - 0.05 - 1.2 * inset) * 0.55;
+    }
+    void main() {
+      vec2 p = gl_PointCoord;
+      float r = length(p - 0.5);
+      float d = abs(p.x - 0.5) + abs(p.y - 0.5);
+      int s = int(vShape + 0.5);
+      bool inside = s == 0 ? r <= 0.5
+        : s == 1 ? true
+        : s == 2 ? inTriangle(p, 0.0)
+        : s == 3 ? inTriangle(p, 0.0) && !inTriangle(p, 0.16)
+        : s == 4 ? r <= 0.5 && r >= 0.3
+        : d <= 0.5 && d >= 0.36;
+      if (!inside) discard;
+      gl_FragColor = vec4(vColour, 1.0);
+    }`;
+  // Marker kinds: shape, size (CSS px), colour, legend text (report/node_markers.hpp).
+  const markerKinds = {
+    node: { shape: 0, size: 4, colour: [0.25, 0.25, 0.25], legend: 'node' },
+    joint: { shape: 4, size: 9, colour: [0.2, 0.2, 0.2], legend: 'joint' },
+    roller: { shape: 3, size: 14, colour: [0.1, 0.55, 0.2], legend: 'roller support (some axes held)' },
+    fixed: { shape: 2, size: 14, colour: [0.1, 0.55, 0.2], legend: 'fixed support (pinned)' },
+    clamped: { shape: 1, size: 12, colour: [0.1, 0.55, 0.2], legend: 'clamped support (rotation held too)' },
+    driver: { shape: 5, size: 20, colour: [0.5, 0.1, 0.6], legend: 'driver' },
+  };
+  function markerSymbol(kind) {  // the legend's picture of a marker, as SVG
+    const k = markerKinds[kind], c = `rgb(${k.colour.map((v) => Math.round(255 * v)).join(',')})`;
+    const shapes = [
+      `<circle cx="7" cy="7" r="2.5" fill="${c}"/>`, `<rect x="2" y="2" width="10" height="10" fill="${c}"/>`,
+      `<polygon points="7,1 13,13 1,13" fill="${c}"/>`, `<polygon points="7,2 12.5,12.5 1.5,12.5" fill="none" stroke="${c}" stroke-width="2"/>`,
+      `<circle cx="7" cy="7" r="4.5" fill="none" stroke="${c}" stroke-width="2"/>`,
+      `<polygon points="7,1 13,7 7,13 1,7" fill="none" stroke="${c}" stroke-width="1.5"/>`];
+    return `<svg width="14" height="14" style="vertical-align:middle">${shapes[k.shape]}</svg>`;
+  }
+  // The markers drawn: one entry a node (its support, joint or plain dot) and one a driver's node.
+  // Above kMaxNodeDots nodes the plain dots are left out: they would only grey the picture.
+  const kMaxNodeDots = 5000;
+  function nodeMarkers(nNodes) {
+    const kindOf = new Array(nNodes).fill('node');
+    const markers = data.markers || { supports: [], joints: [], drivers: [] };
+    for (const node of markers.joints) kindOf[node] = 'joint';
+    for (const [node, kind] of markers.supports) kindOf[node] = kind;
+    const entries = kindOf.map((kind, node) => ({ node, kind }))
+      .filter((e) => e.kind !== 'node' || nNodes <= kMaxNodeDots);
+    for (const [node, name] of markers.drivers) entries.push({ node, kind: 'driver', name });
+    return entries;
+  }
+
+  // A round length (1, 2 or 5 × 10^k m) of about `target` pixels at `pixelsPerMetre`.
+  function roundLength(pixelsPerMetre, target) {
+    const raw = target / pixelsPerMetre, power = Math.pow(10, Math.floor(Math.log10(raw)));
+    const m = raw / power;
+    return (m < 1.5 ? 1 : m < 3.5 ? 2 : m < 7.5 ? 5 : 10) * power;
+  }
+
+  // The members' mesh: four corners a member, each with both ends, its colour and width
+  // (WebGL1 instancing of one quad was 27 times slower in software rendering at 10⁴ members:
+  // docs/report.md, "At scale"). update(ends, colours) takes 6 and 3 values a member.
+  function wideMembers(nMembers, width, uniforms) {
+    const geometry = new THREE.BufferGeometry();
+    const corner = new Float32Array(nMembers * 12), cornerWidth = new Float32Array(nMembers * 4);
+    const index = new (nMembers * 4 > 65535 ? Uint32Array : Uint16Array)(nMembers * 6);
+    const unitQuad = [0, -0.5, 0, 1, -0.5, 0, 1, 0.5, 0, 0, 0.5, 0];
+    for (let m = 0; m < nMembers; ++m) {
+      corner.set(unitQuad, 12 * m);
+      cornerWidth.fill(width[m], 4 * m, 4 * m + 4);
+      index.set([0, 1, 2, 0, 2, 3].map((i) => 4 * m + i), 6 * m);
+    }
+    const cornerEnds = new Float32Array(nMembers * 24), cornerColour = new Float32Array(nMembers * 12);
+    geometry.setAttribute('position', new THREE.BufferAttribute(corner, 3));
+    geometry.setIndex(new THREE.BufferAttribute(index, 1));
+    const ends = new THREE.InterleavedBuffer(cornerEnds, 6);
+    geometry.setAttribute('instanceStart', new THREE.InterleavedBufferAttribute(ends, 3, 0));
+    geometry.setAttribute('instanceEnd', new THREE.InterleavedBufferAttribute(ends, 3, 3));
+    const colourAttribute = new THREE.BufferAttribute(cornerColour, 3);
+    geometry.setAttribute('instanceColour', colourAttribute);
+    geometry.setAttribute('instanceWidth', new THREE.BufferAttribute(cornerWidth, 1));
+    const object = new THREE.Mesh(geometry, new THREE.ShaderMaterial({
+      uniforms, vertexShader: memberVertexShader, fragmentShader: plainFragmentShader, side: THREE.DoubleSide,
+    }));
+    function update(vertex, colour) {
+      for (let m = 0; m < nMembers; ++m) {
+        for (let c = 0; c < 4; ++c) {
+          for (let i = 0; i < 6; ++i) cornerEnds[24 * m + 6 * c + i] = vertex[6 * m + i];
+          for (let i = 0; i < 3; ++i) cornerColour[12 * m + 3 * c + i] = colour[3 * m + i];
+        }
+      }
+      ends.needsUpdate = true;
+      colourAttribute.needsUpdate = true;
+    }
+    return { object, update, wide: true };
+  }
+  // Above kMaxWideMembers members every band would be 1.5–2 px wide anyway: 1-px lines, at half
+  // the vertices, with the same depth cue.
+  const kMaxWideMembers = 20000;
+  const thinVertexShader = `
+    attribute vec3 instanceColour;
+    uniform vec2 depthRange;
+    uniform float depthCue;
+    varying vec3 vColour;
+    void main() {
+      vec4 here = modelViewMatrix * vec4(position, 1.0);
+      float far = clamp((-here.z - depthRange.x) / max(depthRange.y - depthRange.x, 1e-9), 0.0, 1.0);
+      vColour = instanceColour * (1.0 - depthCue * far);
+      gl_Position = projectionMatrix * here;
+    }`;
+  function thinMembers(nMembers, uniforms) {
+    const geometry = new THREE.BufferGeometry();
+    const ends = new Float32Array(nMembers * 6), endColour = new Float32Array(nMembers * 6);
+    geometry.setAttribute('position', new THREE.BufferAttribute(ends, 3));
+    geometry.setAttribute('instanceColour', new THREE.BufferAttribute(endColour, 3));
+    const object = new THREE.LineSegments(geometry, new THREE.ShaderMaterial({
+      uniforms, vertexShader: thinVertexShader, fragmentShader: plainFragmentShader,
+    }));
+    function update(vertex, colour) {
+      ends.set(vertex);
+      for (let m = 0; m < nMembers; ++m) {
+        for (let i = 0; i < 3; ++i) endColour[6 * m + i] = endColour[6 * m + 3 + i] = colour[3 * m + i];
+      }
+      geometry.attributes.position.needsUpdate = true;
+      geometry.attributes.instanceColour.needsUpdate = true;
+    }
+    return { object, update, wide: false };
+  }
+
   function showDeployment(frames) {
     const nNodes = data.nodes;
     const members = decode(data.members.nodes, Int32Array);
@@ -180,19 +377,55 @@
     text('animation-note', frames.note || data.notes.animation || '');
 
     const canvas = document.getElementById('view');
-    // Anti-aliased lines cost several samples a pixel: worth it for a few members, not for 10⁵.
+    const overlay = document.getElementById('view-overlay');
+    // Anti-aliasing costs several samples a pixel: worth it for a few members, not for 10⁵.
     const renderer = new THREE.WebGLRenderer({ canvas, antialias: nMembers <= 5000, preserveDrawingBuffer: true });
     renderer.setPixelRatio(window.devicePixelRatio || 1);
     renderer.setClearColor(0xffffff, 1);
     const scene = new THREE.Scene();
-    const geometry = new THREE.BufferGeometry();
+
+    // Members: end points (x y z of both ends, 6 a member, updated each frame), colour, width.
     const vertex = new Float32Array(nMembers * 6);
-    const colour = new Float32Array(nMembers * 6);
-    geometry.setAttribute('position', new THREE.BufferAttribute(vertex, 3));
-    geometry.setAttribute('color', new THREE.BufferAttribute(colour, 3));
-    const lines = new THREE.LineSegments(geometry, new THREE.LineBasicMaterial({ vertexColors: true }));
+    const colour = new Float32Array(nMembers * 3);
+    const width = new Float32Array(nMembers);
+    const depths = data.members.depth_m ? decode(data.members.depth_m, Float32Array) : new Float32Array(nMembers);
+    const deepest = depths.reduce((a, b) => Math.max(a, b), 0);
+    // The deepest section 6 px wide (less when many members share the canvas), the others in
+    // proportion to their depth, 1.5 px at least.
+    const widest = Math.max(2, Math.min(6, 6 * Math.sqrt(2000 / Math.max(nMembers, 1))));
+    for (let m = 0; m < nMembers; ++m) width[m] = deepest > 0 ? Math.max(1.5, widest * depths[m] / deepest) : 2;
+    const memberUniforms = {
+      resolution: { value: new THREE.Vector2(1, 1) },
+      depthRange: { value: new THREE.Vector2(0, 1) },
+      depthCue: { value: data.dimension === 3 ? 0.55 : 0 },  // a 2D model keeps its flat view
+    };
+    const members3d = nMembers <= kMaxWideMembers ? wideMembers(nMembers, width, memberUniforms)
+      : thinMembers(nMembers, memberUniforms);
+    const lines = members3d.object;
     lines.frustumCulled = false;
     scene.add(lines);
+
+    // Node markers: a point each, drawn over the members.
+    const markers = nodeMarkers(nNodes);
+    const markerPosition = new Float32Array(markers.length * 3);
+    const markerGeometry = new THREE.BufferGeometry();
+    markerGeometry.setAttribute('position', new THREE.BufferAttribute(markerPosition, 3));
+    markerGeometry.setAttribute('shape', new THREE.Float32BufferAttribute(markers.map((e) => markerKinds[e.kind].shape), 1));
+    // Smaller when many: half size at 8000 markers, 0.3 at 22 000 and beyond.
+    const markerScale = Math.max(0.3, Math.min(1, Math.sqrt(2000 / Math.max(markers.length, 1))));
+    markerGeometry.setAttribute('size', new THREE.Float32BufferAttribute(markers.map((e) => markerScale * markerKinds[e.kind].size), 1));
+    markerGeometry.setAttribute('colour', new THREE.Float32BufferAttribute(markers.flatMap((e) => markerKinds[e.kind].colour), 3));
+    const markerUniforms = { pixelRatio: { value: renderer.getPixelRatio() } };
+    const points = new THREE.Points(markerGeometry, new THREE.ShaderMaterial({
+      uniforms: markerUniforms, vertexShader: markerVertexShader, fragmentShader: markerFragmentShader, depthTest: false,
+    }));
+    points.frustumCulled = false;
+    points.renderOrder = 1;
+    scene.add(points);
+    const present = new Set(markers.map((e) => e.kind));
+    document.getElementById('marker-legend').innerHTML = Object.keys(markerKinds).filter((k) => present.has(k))
+      .map((k) => `<div>${markerSymbol(k)} ${markerKinds[k].legend}</div>`).join('') +
+      '<div class="note">line width: section depth</div>';
 
     // The camera frames every node over every frame.
     const box = new THREE.Box3();
@@ -216,26 +449,64 @@
     function setFrame(k) {
       k = Math.max(0, Math.min(nFrames - 1, k | 0));
       const initial = frames.initial(), positions = frames.at(k);
+      const at = (node, axis) => {
+        const x0 = initial[3 * node + axis];
+        return x0 + scale * (positions[3 * node + axis] - x0);
+      };
       for (let m = 0; m < nMembers; ++m) {
         for (let end = 0; end < 2; ++end) {
           const node = members[2 * m + end];
-          for (let axis = 0; axis < 3; ++axis) {
-            const x0 = initial[3 * node + axis];
-            vertex[6 * m + 3 * end + axis] = x0 + scale * (positions[3 * node + axis] - x0);
-          }
+          for (let axis = 0; axis < 3; ++axis) vertex[6 * m + 3 * end + axis] = at(node, axis);
         }
         const v = colouring ? colouring.data[k * nMembers + m] : NaN;
-        if (Number.isFinite(v)) colourScales[colouring.scale](v, colouring, colour, 6 * m);
-        else colour[6 * m] = colour[6 * m + 1] = colour[6 * m + 2] = 0.6;
-        colour.copyWithin(6 * m + 3, 6 * m, 6 * m + 3);
+        if (Number.isFinite(v)) colourScales[colouring.scale](v, colouring, colour, 3 * m);
+        else colour[3 * m] = colour[3 * m + 1] = colour[3 * m + 2] = 0.6;
       }
-      geometry.attributes.position.needsUpdate = true;
-      geometry.attributes.color.needsUpdate = true;
+      members3d.update(vertex, colour);
+      markers.forEach((e, i) => { for (let axis = 0; axis < 3; ++axis) markerPosition[3 * i + axis] = at(e.node, axis); });
+      markerGeometry.attributes.position.needsUpdate = true;
       report.frame = k;
       document.getElementById('frame').value = k;
       text('time', `${frames.label(k)} (frame ${k + 1} of ${nFrames})`);
       render();
       if (report.onFrame) report.onFrame(k);
+    }
+
+    // The axis triad (bottom left) and the scale bar (bottom right) on the overlay canvas.
+    const sphere = box.getBoundingSphere(new THREE.Sphere());
+    function drawOverlay(w, h) {
+      const dpr = window.devicePixelRatio || 1;
+      Object.assign(overlay.style, { left: `${canvas.offsetLeft + canvas.clientLeft}px`, top: `${canvas.offsetTop + canvas.clientTop}px`,
+        width: `${w}px`, height: `${h}px` });
+      overlay.width = w * dpr; overlay.height = h * dpr;
+      const g = overlay.getContext('2d');
+      g.setTransform(dpr, 0, 0, dpr, 0, 0);
+      g.clearRect(0, 0, w, h);
+      g.lineWidth = 2; g.font = 'bold 12px sans-serif'; g.textAlign = 'center'; g.textBaseline = 'middle';
+      const origin = [46, h - 46], axes = [];
+      const view = camera.matrixWorldInverse;
+      ['x', 'y', 'z'].slice(0, data.dimension === 2 ? 2 : 3).forEach((name, i) => {
+        const d = new THREE.Vector3(i === 0 ? 1 : 0, i === 1 ? 1 : 0, i === 2 ? 1 : 0).transformDirection(view);
+        const tip = [origin[0] + 30 * d.x, origin[1] - 30 * d.y];
+        const c = ['#c0392b', '#1e8449', '#1f4e9e'][i];
+        g.strokeStyle = c; g.fillStyle = c;
+        g.beginPath(); g.moveTo(origin[0], origin[1]); g.lineTo(tip[0], tip[1]); g.stroke();
+        const label = [origin[0] + 40 * d.x, origin[1] - 40 * d.y];
+        g.fillText(name, label[0], label[1]);
+        axes.push({ name, tip, label });
+      });
+      // Pixels per metre in the plane through the view's centre (the orbit target), square to
+      // the view: a perspective view's scale holds at that depth.
+      const distance = camera.position.distanceTo(controls.target);
+      const pixelsPerMetre = h / 2 / (distance * Math.tan(THREE.Math.degToRad(camera.fov) / 2));
+      const length = roundLength(pixelsPerMetre, 100), pixels = length * pixelsPerMetre;
+      const x1 = w - 20, x0 = x1 - pixels, y = h - 20;
+      g.strokeStyle = '#222'; g.fillStyle = '#222'; g.lineWidth = 2;
+      g.beginPath(); g.moveTo(x0, y - 5); g.lineTo(x0, y); g.lineTo(x1, y); g.lineTo(x1, y - 5); g.stroke();
+      g.font = '12px sans-serif'; g.textBaseline = 'bottom';
+      g.fillText(`${formatNumber(length)} m`, (x0 + x1) / 2, y - 4);
+      report.axes = axes;
+      report.scaleBar = { length_m: length, pixels, x0, x1, y, pixelsPerMetre };
     }
     function render() {
       const w = canvas.clientWidth, h = canvas.clientHeight;
@@ -244,7 +515,12 @@
         camera.aspect = w / Math.max(h, 1);
         camera.updateProjectionMatrix();
       }
+      camera.updateMatrixWorld();
+      memberUniforms.resolution.value.set(canvas.width, canvas.height);
+      const distance = camera.position.distanceTo(sphere.center);
+      memberUniforms.depthRange.value.set(Math.max(distance - sphere.radius, 0), distance + sphere.radius);
       renderer.render(scene, camera);
+      drawOverlay(w, h);
       report.framesDrawn += 1;
     }
     controls.addEventListener('change', render);
@@ -286,17 +562,30 @@
       if (playing) requestAnimationFrame(tick);
     });
     report.setFrame = setFrame;
-    // Where each member's midpoint is drawn, in canvas pixels (x right, y down): the browser
-    // test looks for the member's colour there.
-    report.memberMidpoints = () => {
-      const out = [], w = canvas.width, h = canvas.height, p = new THREE.Vector3();
-      for (let m = 0; m < nMembers; ++m) {
-        p.set((vertex[6 * m] + vertex[6 * m + 3]) / 2, (vertex[6 * m + 1] + vertex[6 * m + 4]) / 2,
-              (vertex[6 * m + 2] + vertex[6 * m + 5]) / 2).project(camera);
-        out.push([(p.x + 1) / 2 * w, (1 - p.y) / 2 * h]);
-      }
-      return out;
-    };
+    // Where a point is drawn, in canvas pixels (x right, y down), and its distance in front of
+    // the camera (m): the browser test looks for members and markers there.
+    function project(x, y, z) {
+      const p = new THREE.Vector3(x, y, z);
+      const depth = -p.clone().applyMatrix4(camera.matrixWorldInverse).z;
+      p.project(camera);
+      return [(p.x + 1) / 2 * canvas.width, (1 - p.y) / 2 * canvas.height, depth];
+    }
+    const midpoint = (m) => [0, 1, 2].map((a) => (vertex[6 * m + a] + vertex[6 * m + 3 + a]) / 2);
+    report.memberMidpoints = () => Array.from({ length: nMembers }, (_, m) => project(...midpoint(m)).slice(0, 2));
+    report.memberDepths = () => Array.from({ length: nMembers }, (_, m) => project(...midpoint(m))[2]);
+    report.memberEnds = () => Array.from({ length: nMembers }, (_, m) =>
+      [project(vertex[6 * m], vertex[6 * m + 1], vertex[6 * m + 2]).slice(0, 2),
+        project(vertex[6 * m + 3], vertex[6 * m + 4], vertex[6 * m + 5]).slice(0, 2)]);
+    report.memberWidths = members3d.wide ? Array.from(width) : new Array(nMembers).fill(1);
+    report.markers = () => markers.map((e, i) => ({
+      node: e.node, kind: e.kind, name: e.name,
+      at: project(markerPosition[3 * i], markerPosition[3 * i + 1], markerPosition[3 * i + 2]).slice(0, 2),
+    }));
+    report.depthCue = memberUniforms.depthCue.value;
+    report.camera = camera;
+    report.scene = scene;
+    report.controls = controls;
+    report.render = render;
     report.frameCount = nFrames;
     report.times = frames.times;
     report.frameRows = frames.rows;
@@ -473,6 +762,7 @@
     const context = canvas.getContext('2d');
     const palette = ['#1f77b4', '#d62728', '#2ca02c', '#ff7f0e', '#9467bd', '#8c564b', '#e377c2', '#17becf'];
     const cache = new Map();
+    const events = runEvents();
     let range = [t[0], t[t.length - 1]], drag = null;
     function chosen() { return Array.from(select.selectedOptions).map((o) => o.value); }
     function values(name) { if (!cache.has(name)) cache.set(name, series.get(name)()); return cache.get(name); }
@@ -512,6 +802,29 @@
         context.fillStyle = palette[n % palette.length];
         context.fillText(name, left + 8, top + 14 + 13 * n);
       });
+      // The events as vertical lines, labelled where the labels do not overlap.
+      const eventColours = { failure: '#c0392b', 'hinge.latched': '#1e8449', 'cable.slack': '#d68910' };
+      const lines = [];
+      let labelledAt = -Infinity;
+      context.save();
+      for (const e of events) {
+        if (e.t < range[0] || e.t > range[1]) continue;
+        const at = x(e.t);
+        context.strokeStyle = eventColours[e.kind] || '#777';
+        context.setLineDash(e.kind === 'failure' ? [] : [4, 3]);
+        context.beginPath(); context.moveTo(at, top); context.lineTo(at, H - bottom); context.stroke();
+        const labelled = at - labelledAt >= 14;
+        if (labelled) {
+          labelledAt = at;
+          context.save(); context.translate(at - 3, top + 4); context.rotate(-Math.PI / 2);
+          context.fillStyle = context.strokeStyle; context.textAlign = 'right';
+          context.fillText(e.label, 0, 0);
+          context.restore();
+        }
+        lines.push({ t: e.t, x: at, label: e.label, kind: e.kind, labelled });
+      }
+      context.restore();
+      report.eventLines = lines;
       if (drag) { context.fillStyle = 'rgba(31,58,95,0.15)'; context.fillRect(Math.min(drag[0], drag[1]), top, Math.abs(drag[1] - drag[0]), H - top - bottom); }
       report.plotted = names;
       report.plotRange = range.slice();

@@ -18,7 +18,9 @@
 #include "deploydyn/io/model_loader.hpp"
 #include "deploydyn/report/history_table.hpp"
 #include "deploydyn/report/member_colourings.hpp"
+#include "deploydyn/report/member_sections.hpp"
 #include "deploydyn/report/modal_view.hpp"
+#include "deploydyn/report/node_markers.hpp"
 #include "deploydyn/report/path_view.hpp"
 #include "deploydyn/output/checked_file.hpp"
 #include "deploydyn/output/envelope_table.hpp"
@@ -78,8 +80,10 @@ json animation(const Model& model, const HistoryTable& history, const HistoryTab
                std::string_view rows_are = "output times", std::string_view file = "history.csv") {
   const std::size_t n_nodes = model.nodes.size();
   const std::size_t n_members = members.names.size();
-  // Float32 positions and at most four colourings a member (report/member_colourings.hpp).
-  const std::size_t bytes_per_frame = 4 * (3 * n_nodes + 4 * n_members);
+  // Float32 positions and the colourings of each member (report/member_colourings.hpp); four
+  // at least, as before other quantities were offered, so that a model's frames stay as they were.
+  const std::size_t n_colourings = std::max<std::size_t>(4, member_colourings_bound(model, history, members.names));
+  const std::size_t bytes_per_frame = 4 * (3 * n_nodes + n_colourings * n_members);
   std::size_t n_frames = std::min<std::size_t>(static_cast<std::size_t>(options.max_frames), history.n_rows);
   n_frames = std::max<std::size_t>(1, std::min(n_frames, options.max_animation_bytes / std::max<std::size_t>(bytes_per_frame, 1)));
   const std::vector<std::size_t> rows = frame_rows(history.n_rows, n_frames);
@@ -260,6 +264,14 @@ json summary_panel(const json& summary) {
                           "event_counts", "mode_switches", "output", "path", "modes"}) {
     if (summary.contains(key)) out[key] = summary[key];
   }
+  // The verdict's first failure is marked on the time plots; its lists of members are left out.
+  if (summary.contains("verdict") && summary["verdict"].is_object()) {
+    json verdict = json::object();
+    for (const char* key : {"deploys", "reason", "first_failure", "along"}) {
+      if (summary["verdict"].contains(key)) verdict[key] = summary["verdict"][key];
+    }
+    out["verdict"] = verdict;
+  }
   if (summary.contains("events") && summary["events"].is_array()) {
     json events = json::array();
     for (std::size_t i = 0; i < summary["events"].size() && i < 200; ++i) events.push_back(summary["events"][i]);
@@ -423,7 +435,13 @@ std::string run_report_html(const fs::path& folder, const ReportOptions& options
   data["summary"] = summary_panel(summary);
   data["dimension"] = model.dimension;
   const Members members = members_of(model);
-  data["members"] = {{"nodes", binary_base64<std::int32_t>(members.nodes)}, {"names", members.names}};
+  std::vector<float> depths_m;
+  for (const DrawnSection& section : drawn_sections(model, members.names)) depths_m.push_back(static_cast<float>(section.depth_m));
+  // depth_m: each member's section size, from which the page takes its drawn width.
+  data["members"] = {{"nodes", binary_base64<std::int32_t>(members.nodes)},
+                     {"names", members.names},
+                     {"depth_m", float32_base64(depths_m)}};
+  data["markers"] = node_markers(model);
   data["nodes"] = model.nodes.size();
   switch (folder_kind(summary, model)) {
     case FolderKind::run:

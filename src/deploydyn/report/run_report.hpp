@@ -6,9 +6,12 @@
 //   - time histories of the history's columns, chosen from a list, in zoomable plots;
 //   - the envelope table (envelopes.csv: extremes over every step), sortable and filtered;
 //   - the deployment in 3D (WebGL through three.js, compiled into the program from Debian's
-//     libjs-three): members as one line set coloured by utilization, axial force, bending
-//     moment or temperature (report/member_colourings.hpp), a time slider, play,
-//     orbit camera and a deformation scale.
+//     libjs-three): members in one draw call, as wide as their section
+//     (report/member_sections.hpp), coloured by utilization, axial force, stress, bending
+//     moment, temperature or another quantity of the history (report/member_colourings.hpp);
+//     support, joint and driver markers (report/node_markers.hpp), an axis triad, a scale bar,
+//     a depth cue in 3D; a time slider, play, orbit camera and a deformation scale; the events
+//     marked on the time plots.
 // Data travel as base64 Float32/Float64 arrays in one JSON block; the animation's frames are
 // spread evenly over the history, at most ReportOptions::max_frames and within
 // max_animation_bytes, so that 10⁵ members stay one draw call and a file of tens of MB.
