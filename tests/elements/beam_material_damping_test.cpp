@@ -208,64 +208,100 @@ Model damped_strip(int n, double damping_time_s) {
   return model;
 }
 
+// The strip's angular momentum about the origin (kg·m²/s): Σ x × m ẋ + the sections' J θ̇.
+double angular_momentum(const Assembler& assembler, const MotionState& state) {
+  const DofMap& dofs = assembler.dof_map();
+  Eigen::VectorXd momentum;
+  assembler.mass_times(state.v, momentum);
+  double l = 0.0;
+  for (int node = 0; node < assembler.model().n_nodes(); ++node) {
+    const int x = dofs.index(node, 0), y = dofs.index(node, 1);
+    l += state.q[x] * momentum[y] - state.q[y] * momentum[x] + momentum[dofs.index(node, "rz")];
+  }
+  return l;
+}
+
+constexpr double kOmega_rad_s = 0.1;
+
+// The strip set spinning rigidly at ω about its centre, unstretched: the rates of a rigid spin
+// and, since no member is strained yet, q̈ = 0.
+MotionState rigid_spin_start(const Assembler& assembler, LinearSystem& system) {
+  const DofMap& dofs = assembler.dof_map();
+  MotionState state;
+  state.q = assembler.initial_coordinates();
+  state.history = assembler.initial_history();
+  state.v = Eigen::VectorXd::Zero(state.q.size());
+  for (int node = 0; node < assembler.model().n_nodes(); ++node) {
+    state.v[dofs.index(node, 1)] = kOmega_rad_s * (assembler.model().nodes[node].position_m[0] - 0.5 * kLength_m);
+    state.v[dofs.index(node, "rz")] = kOmega_rad_s;
+  }
+  double lost_J = 0.0;
+  EXPECT_TRUE(project_rates(assembler, system, state, lost_J).ok);
+  return state;
+}
+
+struct Spin {
+  double kinetic_J = 0.0, dissipated_J = 0.0;
+  double momentum_start = 0.0, momentum_end = 0.0;  // angular momentum (kg·m²/s)
+  MotionState end;
+};
+
+// The strip (damping time τ) run for `duration_s` in steps of h, from `start`, or from the rigid
+// spin when there is none; the energy its damping took (trapezoidal rule on f_d·q̇).
+Spin spin(double damping_time_s, double step_s, double duration_s, const MotionState* start = nullptr,
+          const NewtonOptions& newton = {}) {
+  Model model = damped_strip(4, damping_time_s);
+  model.analysis.newton = newton;
+  const Assembler assembler(model);
+  const auto system = make_linear_system(assembler);
+  MotionState state = start != nullptr ? *start : rigid_spin_start(assembler, *system);
+  GeneralizedAlphaIntegrator integrator(assembler, model.analysis);
+  Spin result;
+  result.momentum_start = angular_momentum(assembler, state);
+  Eigen::VectorXd force, momentum;
+  const auto power = [&]() {
+    assembler.rate_force(state.q, state.v, state.time_s, force);
+    return force.dot(state.v);
+  };
+  double power_before = power();
+  const double end_s = state.time_s + duration_s;
+  for (int step = 0; state.time_s < end_s - 0.5 * step_s; ++step) {
+    EXPECT_TRUE(integrator.step(step_s, *system, state).converged);
+    const double power_after = power();
+    result.dissipated_J += 0.5 * step_s * (power_before + power_after);
+    power_before = power_after;
+  }
+  assembler.mass_times(state.v, momentum);
+  result.kinetic_J = 0.5 * state.v.dot(momentum);
+  result.momentum_end = angular_momentum(assembler, state);
+  result.end = std::move(state);
+  return result;
+}
+
 // A free strip set spinning rigidly at ω about its centre. Its strains change only by the
 // centrifugal stretch ε ~ ρ ω² L² / E (here 4e-10) and by the time discretization: a step of
 // the integrator carries the nodes along chords of their circles, not the circles, so the
 // discrete motion strains the strip by O((ωh)²) and material damping takes a share of the
 // kinetic energy that must vanish as h² (the damping force itself is exactly zero on rigid
-// rates: ARigidMotionOfADeformedBeamHasNoDampingForce). Angular momentum likewise: the damping
-// forces have no resultant moment, so damped and undamped runs differ only by the integrator's
-// O(h²) error of it (measured: it is not, see below). A damping on absolute rates (mass-proportional, ζ = 1 % at 1 Hz) would take
-// 2.5 % of the energy per second, whatever the step.
+// rates: ARigidMotionOfADeformedBeamHasNoDampingForce). Angular momentum: the damping forces
+// have no moment (DampingForcesHaveNoMomentAtAnyConfiguration), so on the spinning motion a
+// damped run keeps the undamped run's to the integrator's error. Measured from a state 5 s into
+// the spin (its start-up over, AngularMomentumFloorIsTheStartUp): 6.0e-7, 9.4e-9, 1.4e-10 of
+// itself apart after 20 s at ωh = 0.005 to 0.00125, order 6. A damping on absolute rates
+// (mass-proportional, ζ = 1 % at 1 Hz) would take 2.5 % of the energy per second, whatever the step.
 TEST(BeamMaterialDamping, AFreelySpinningDampedBeamKeepsItsEnergyAndAngularMomentum) {
-  constexpr double kOmega_rad_s = 0.1, kDuration_s = 20.0;
-  struct Spin {
-    double kinetic_J = 0.0, angular_momentum = 0.0, dissipated_J = 0.0;
-  };
-  const auto spin = [&](double damping_time_s, double step_s) {
-    Model model = damped_strip(4, damping_time_s);
-    const Assembler assembler(model);
-    const DofMap dofs(model);
-    const auto system = make_linear_system(assembler);
-    MotionState state;
-    state.q = assembler.initial_coordinates();
-    state.history = assembler.initial_history();
-    state.v = Eigen::VectorXd::Zero(state.q.size());
-    for (int node = 0; node < model.n_nodes(); ++node) {
-      state.v[dofs.index(node, 1)] = kOmega_rad_s * (model.nodes[node].position_m[0] - 0.5 * kLength_m);
-      state.v[dofs.index(node, "rz")] = kOmega_rad_s;
-    }
-    double lost_J = 0.0;
-    EXPECT_TRUE(project_rates(assembler, *system, state, lost_J).ok);
-    GeneralizedAlphaIntegrator integrator(assembler, model.analysis);
-    Spin result;
-    Eigen::VectorXd force, momentum;
-    const auto power = [&]() {
-      assembler.rate_force(state.q, state.v, state.time_s, force);
-      return force.dot(state.v);
-    };
-    double power_before = power();
-    for (int step = 0; step * step_s < kDuration_s; ++step) {
-      EXPECT_TRUE(integrator.step(step_s, *system, state).converged);
-      const double power_after = power();
-      result.dissipated_J += 0.5 * step_s * (power_before + power_after);
-      power_before = power_after;
-    }
-    assembler.mass_times(state.v, momentum);
-    result.kinetic_J = 0.5 * state.v.dot(momentum);
-    for (int node = 0; node < model.n_nodes(); ++node) {
-      const int x = dofs.index(node, 0), y = dofs.index(node, 1);
-      result.angular_momentum += state.q[x] * momentum[y] - state.q[y] * momentum[x] + momentum[dofs.index(node, "rz")];
-    }
-    return result;
-  };
+  constexpr double kDuration_s = 20.0, kStartUp_s = 5.0;
   const double tau_s = 0.05;  // ζ = 5 % at 2 rad/s
   std::vector<double> energy_share, momentum_share;
   for (const double step_s : {0.05, 0.025, 0.0125}) {
-    const Spin undamped = spin(0.0, step_s), damped = spin(tau_s, step_s);
+    const Spin undamped = spin(0.0, step_s, kDuration_s), damped = spin(tau_s, step_s, kDuration_s);
     EXPECT_NEAR(undamped.kinetic_J, 3.68e-4, 0.01 * 3.68e-4);  // it spins (lumped: 0.09375 m L² ω²/2)
     energy_share.push_back(damped.dissipated_J / undamped.kinetic_J);
-    momentum_share.push_back(std::abs(damped.angular_momentum / undamped.angular_momentum - 1.0));
+    // Both from the same state on the spinning motion.
+    const Spin on_motion = spin(0.0, step_s, kStartUp_s);
+    const Spin undamped_on = spin(0.0, step_s, kDuration_s, &on_motion.end);
+    const Spin damped_on = spin(tau_s, step_s, kDuration_s, &on_motion.end);
+    momentum_share.push_back(std::abs(damped_on.momentum_end / undamped_on.momentum_end - 1.0));
   }
   // In 20 s at ωh = 0.005 to 0.00125: below 1e-3 of the energy, falling at order 2 at least
   // (measured: 8.5e-4, 5.2e-5, 3.2e-6, order 4).
@@ -273,9 +309,79 @@ TEST(BeamMaterialDamping, AFreelySpinningDampedBeamKeepsItsEnergyAndAngularMomen
   for (std::size_t k = 1; k < energy_share.size(); ++k) {
     EXPECT_GT(std::log2(energy_share[k - 1] / energy_share[k]), 1.9) << energy_share[k - 1] << " → " << energy_share[k];
   }
-  // Angular momentum: measured 3.6e-6, 1.5e-6, 1.2e-6 of itself apart from the undamped run's,
-  // a floor whose cause is not identified yet (the damping forces have no moment); bounded here.
-  for (const double share : momentum_share) EXPECT_LT(share, 1e-5);
+  EXPECT_LT(momentum_share.front(), 3e-6);
+  for (std::size_t k = 1; k < momentum_share.size(); ++k) {
+    EXPECT_GT(std::log2(momentum_share[k - 1] / momentum_share[k]), 3.9)
+        << momentum_share[k - 1] << " → " << momentum_share[k];
+  }
+}
+
+// Issue 28's "floor": from the rigid spin, damped and undamped runs end ~1e-6 of their angular
+// momentum apart, at every step tried. It is made in the first steps and kept after. The rigid
+// spin is not on the spinning motion: the strip is unstretched, so q̈ = 0 where the motion needs
+// −ω² (x − c); the first step's chord error, O(ω² r h²), is taken up by the stiff axial and shear
+// modes, which no step resolves (ω_axial h ≈ 1e3). While the integrator's numerical dissipation
+// (ρ∞) and, in the damped run, the material damping (τ ω_axial ≈ 1e3: overdamped) kill them,
+// generalized-α's discrete angular momentum moves: Σ m h² β a × q̇ with a pseudo-acceleration
+// a ~ ω² r/β of those modes, an O((ωh)²) change, but set by how each run kills them, so
+// erratic in h and ρ∞. The Newton tolerances play no part (the same to 1e-12 with a force
+// tolerance of 1e-14). Measured (CLI runs of this strip, docs/theory.md "Material damping").
+TEST(BeamMaterialDamping, AngularMomentumFloorIsTheStartUp) {
+  constexpr double kStartUp_s = 5.0, kDuration_s = 20.0;
+  NewtonOptions tight;
+  tight.force_tolerance = 1e-14;
+  tight.displacement_tolerance_m = 1e-20;
+  tight.max_iterations = 60;
+  for (const double step_s : {0.05, 0.025, 0.0125}) {
+    const double omega_h = kOmega_rad_s * step_s;
+    for (const double tau_s : {0.0, 0.05}) {
+      const Spin start_up = spin(tau_s, step_s, kStartUp_s);
+      const Spin after = spin(tau_s, step_s, kDuration_s - kStartUp_s, &start_up.end);
+      const double floor = start_up.momentum_end / start_up.momentum_start - 1.0;
+      // Made in the start-up, of order (ωh)²:
+      EXPECT_LT(std::abs(floor), 2.0 * omega_h * omega_h) << "τ = " << tau_s << ", h = " << step_s;
+      // kept after it to far less (the integrator's error on the spinning motion):
+      EXPECT_LT(std::abs(after.momentum_end / after.momentum_start - 1.0), 0.1 * omega_h * omega_h)
+          << "τ = " << tau_s << ", h = " << step_s;
+      // and not the Newton tolerances':
+      const Spin tight_start_up = spin(tau_s, step_s, kStartUp_s, nullptr, tight);
+      EXPECT_NEAR(tight_start_up.momentum_end / start_up.momentum_end - 1.0, 0.0, 1e-12)
+          << "τ = " << tau_s << ", h = " << step_s;
+    }
+  }
+}
+
+// The moment of the damping force about any axis through the origin is zero at every
+// configuration and for any rates, not only rigid ones: f_d · (the rigid turn's rates) = 0, as
+// for any force from objective strains. 2D: the turn about z (ẋ = ẑ × x, θ̇ = 1); 3D: about a
+// random axis w (ẋ = w × x, Ṙ = ŵ R).
+TEST(BeamMaterialDamping, DampingForcesHaveNoMomentAtAnyConfiguration) {
+  std::mt19937 rng(2814);
+  std::uniform_real_distribution<double> unit(-1.0, 1.0);
+  for (int c = 0; c < kConfigurations; ++c) {
+    const beam2d::Vector q = random_state_2d(rng);
+    beam2d::Vector v, turn;
+    for (int i = 0; i < beam2d::kDofs; ++i) v[i] = unit(rng);
+    for (const int node : {0, 3}) turn.segment<3>(node) << -q[node + 1], q[node], 1.0;
+    const beam2d::Vector f = damping_force_2d(q, v);
+    EXPECT_GT(f.norm(), 1e3);
+    EXPECT_LT(std::abs(f.dot(turn)), kRigidTolerance * f.norm() * turn.norm()) << "2D, configuration " << c;
+
+    const Configuration3d c3 = random_configuration_3d(rng);
+    const Eigen::VectorXd v3 = beam3d::ElementVector::Random();
+    const Eigen::Vector3d w = Eigen::Vector3d(unit(rng), unit(rng), unit(rng)).normalized();
+    Eigen::Matrix3d w_hat;
+    w_hat << 0, -w[2], w[1], w[2], 0, -w[0], -w[1], w[0], 0;
+    Eigen::VectorXd turn3(beam3d::kDofs);
+    for (const auto& [position, frame] : {std::pair{beam3d::kPositionA, beam3d::kFrameA},
+                                         std::pair{beam3d::kPositionB, beam3d::kFrameB}}) {
+      turn3.segment<3>(position) = w.cross(c3.q.segment<3>(position));
+      put_frame(turn3, frame, w_hat * beam3d::frame_of(c3.q, frame));
+    }
+    const Eigen::VectorXd f3 = damping_force_3d(c3, c3.q, v3);
+    EXPECT_GT(f3.norm(), 10.0);
+    EXPECT_LT(std::abs(f3.dot(turn3)), kRigidTolerance * f3.norm() * turn3.norm()) << "3D, configuration " << c;
+  }
 }
 
 // A cantilever strip of 8 elements under a tip load applied in 1 % of its first period, then
@@ -328,6 +434,7 @@ TEST(BeamMaterialDamping, CantileverFirstModeDecaysWithTheClosedFormDecrement) {
   EXPECT_GT(last.dissipated_J, 0.0);
   EXPECT_NEAR(balance(last), balance(run.records.front()), 1e-3 * last.dissipated_J);
 }
+
 
 }  // namespace
 }  // namespace deploydyn

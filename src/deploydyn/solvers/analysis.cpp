@@ -193,7 +193,7 @@ class ModeSwitchingStep {
       // balance (WorkCounter), the projection's loss beside it.
       lambda_ = next.lambda;
       double kinetic_energy_lost_J = 0.0;  // the balance takes the step's whole loss (WorkCounter)
-      const FactorizationStatus status = project_rates(assembler_, system_, next, kinetic_energy_lost_J);
+      const FactorizationStatus status = project_rates(assembler_, system_, next, kinetic_energy_lost_J, h);
       next.lambda.swap(lambda_);
       if (!status.ok) {
         result.converged = false;

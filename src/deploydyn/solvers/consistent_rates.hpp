@@ -26,8 +26,15 @@ FactorizationStatus initialise_rates_from(const Assembler& assembler, LinearSyst
 // step's end rates made consistent with the constraints now in force, from its own q̇ (a
 // perfectly inelastic impact: the M-orthogonal projection, as Moreau's impact law gives it);
 // the integrator then restarts from there as from t = 0. `kinetic_energy_lost_J` gets what the
-// projection took away (≥ 0).
+// projection took away.
+// With the members damped (a material's damping time, or Rayleigh damping) and the step
+// h = `step_s` given, the impact is taken over the step with the viscous forces implicit: the
+// projection in the metric W = M + h C, C = ∂f_d/∂q̇ (docs/theory.md, "Impacts on damped
+// members"). The M-projection changes only the rates of the nodes the lock touches and strains
+// the members at once; a member whose viscous time m/(τk) is far below h would answer with a
+// viscous force the step cannot resolve. In W such a member carries the impulse as a rigid link;
+// as h → 0, W → M (Moreau). Without member damping the M-projection stays, bit for bit.
 FactorizationStatus project_rates(const Assembler& assembler, LinearSystem& system,
-                                  MotionState& state, double& kinetic_energy_lost_J);
+                                  MotionState& state, double& kinetic_energy_lost_J, double step_s = 0.0);
 
 }  // namespace deploydyn
