@@ -6,6 +6,17 @@ from deploydyn._element_fields import element_spec
 from deploydyn._model import from_dict
 
 
+def _property(where, key, value):
+    """A material's E or alpha: a number, or a table {"temperature_C": [...], "value": [...]}
+    (its values checked at `build`, as the loader checks them)."""
+    if not isinstance(value, dict):
+        return checked.number(where, key, value)
+    if set(value) != {"temperature_C", "value"}:
+        raise TypeError(f"{where}: {key} as a table needs exactly the keys 'temperature_C' and 'value', "
+                        f"not {sorted(value)}")
+    return {column: checked.numbers(where, f"{key}.{column}", value[column]) for column in ("temperature_C", "value")}
+
+
 class ModelBuilder:
     """Builds a model in code, in the model file's terms (docs/model-format.md); SI units.
 
@@ -48,14 +59,16 @@ class ModelBuilder:
 
     def material(self, name, E, alpha=0.0, density=None, damping=None, yield_strength=None,
                  specific_heat=None, absorptivity=None, emissivity=None, conductivity=None):
-        """E (Pa), alpha (1/°C), density (kg/m³, for bars that give no mass), damping (material
+        """E (Pa), alpha (1/°C): each a number, or a table of temperature as data sheets give it,
+        {"temperature_C": [20, 200, 400], "value": [2.1e11, 1.95e11, 1.7e11]} (docs/theory.md,
+        "Temperature-dependent material properties"); density (kg/m³, for bars that give no mass), damping (material
         damping of its bars, cables and beams, as the model file's mapping: {"ratio": ζ, "frequency":
         f (Hz)}, {"loss_factor": η, "frequency": f} or {"time": τ (s)}), yield_strength (Pa, the
         stress the member checks allow); for an `environment`: specific_heat (J/(kg·K)),
         absorptivity α_s and emissivity ε (both in [0, 1]), conductivity (W/(m·K), for the
         beams' section_gradients)."""
         where = "ModelBuilder.material"
-        spec = {"E": checked.number(where, "E", E), "alpha": checked.number(where, "alpha", alpha)}
+        spec = {"E": _property(where, "E", E), "alpha": _property(where, "alpha", alpha)}
         for key, value in (("density", density), ("yield_strength", yield_strength),
                            ("specific_heat", specific_heat), ("absorptivity", absorptivity),
                            ("emissivity", emissivity), ("conductivity", conductivity)):
@@ -272,9 +285,15 @@ class ModelBuilder:
         self._section("functions")[checked.name(where, "name", name)] = checked.time_function(where, "spec", spec)
         return self
 
-    def thermal(self, dT):
-        """ΔT(t) (°C) of every bar without its own."""
-        self._section("thermal")["dT"] = checked.time_function("ModelBuilder.thermal", "dT", dT)
+    def thermal(self, dT=None, reference_temperature_C=None):
+        """ΔT(t) (°C) of every bar without its own; reference_temperature_C: the stress-free
+        temperature T_ref (°C, default 20) at which the materials' temperature tables are read
+        for ΔT = 0."""
+        if dT is not None:
+            self._section("thermal")["dT"] = checked.time_function("ModelBuilder.thermal", "dT", dT)
+        if reference_temperature_C is not None:
+            self._section("thermal")["reference_temperature_C"] = checked.number(
+                "ModelBuilder.thermal", "reference_temperature_C", reference_temperature_C)
         return self
 
     def environment(self, type, **keys):

@@ -268,6 +268,28 @@ def test_material_damping_and_strength_reach_the_model_and_the_verdict():
         deploydyn.ModelBuilder("x").material("steel", E=E, damping=0.02)
 
 
+def test_material_tables_of_temperature_reach_the_model():
+    """E and alpha as data-sheet tables (docs/theory.md, "Temperature-dependent material
+    properties"): the pinned bar at T = 20 + 230 °C carries N = −E(T) A ε_t(T), ε_t = ∫α dT."""
+    dT = 230.0
+    model = (deploydyn.ModelBuilder("heated bar, tables")
+             .node("A", 0, 0).node("B", 1.5, 0)
+             .material("steel", E={"temperature_C": [20, 400], "value": [2.1e11, 1.7e11]},
+                       alpha={"temperature_C": [20, 200, 400], "value": [1.2e-5, 1.3e-5, 1.4e-5]})
+             .bar("1", "A", "B", area=AREA, material="steel", mass=1.2)
+             .support("A").support("B")
+             .thermal(dT, reference_temperature_C=20)
+             .analysis(type="static", end=1.0, step=0.5)
+             .build())
+    youngs = 2.1e11 - 0.4e11 * dT / 380.0
+    # ∫ from 20 to 200 °C, then from 200 to 250 °C (α(250) = 1.325e-5): trapezoids of linear α.
+    strain = 180.0 * 1.25e-5 + 50.0 * (1.3e-5 + 1.325e-5) / 2
+    assert model.run(check=True)["force.1"][-1] == pytest.approx(-youngs * AREA * strain, rel=1e-12)
+    assert "temperature_C: [20, 200, 400]" in model.to_yaml()
+    with pytest.raises(TypeError, match="needs exactly the keys 'temperature_C' and 'value'"):
+        deploydyn.ModelBuilder("x").material("steel", E={"T": [20], "value": [2e11]})
+
+
 def test_ball_and_universal_joints_and_a_hinge_to_ground_reach_the_model():
     # The Cardan shaft of examples/joints/cardan_shaft.yaml, built in code: the output (30° from
     # the input) turns unevenly, tan ψ = tan φ / cos β (docs/theory.md, Eq. J3).

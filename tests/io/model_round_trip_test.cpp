@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <sstream>
+#include <utility>
 #include <string>
 
 #include "deploydyn/io/model_loader.hpp"
@@ -33,7 +34,15 @@ void expect_equal_models(const Model& a, const Model& b) {
     EXPECT_EQ(a.materials[i].expansion_per_C, b.materials[i].expansion_per_C);
     EXPECT_EQ(a.materials[i].density_kg_m3, b.materials[i].density_kg_m3);
     EXPECT_EQ(a.materials[i].yield_strength_Pa, b.materials[i].yield_strength_Pa);
+    for (const auto& [x, y] : {std::pair{&a.materials[i].youngs_modulus_table_Pa, &b.materials[i].youngs_modulus_table_Pa},
+                               std::pair{&a.materials[i].expansion_table_per_C, &b.materials[i].expansion_table_per_C}}) {
+      ASSERT_EQ(x->has_value(), y->has_value());
+      if (!x->has_value()) continue;
+      EXPECT_EQ((*x)->temperature_C, (*y)->temperature_C);
+      EXPECT_EQ((*x)->value, (*y)->value);
+    }
   }
+  EXPECT_EQ(a.reference_temperature_C, b.reference_temperature_C);
   ASSERT_EQ(a.sections.size(), b.sections.size());
   for (std::size_t i = 0; i < a.sections.size(); ++i) {
     SCOPED_TRACE("section " + a.sections[i].name);
@@ -390,6 +399,31 @@ elements:
 supports: [{node: A}, {node: C}]
 )", "cables"));
   expect_round_trip(load_model(fmt::format("{}/examples/cables/guyed_mast.yaml", DEPLOYDYN_SOURCE_DIR)));
+}
+
+// Materials with E(T) and α(T) tables, a stress-free temperature, and a beam whose G derives
+// from the table's E (written without shear_modulus so that it keeps following E(T)).
+TEST(ModelRoundTrip, TemperatureTables) {
+  const Model model = load_model_from_string(R"(
+nodes: {A: [0, 0], B: [1, 0], C: [2, 0.5]}
+materials:
+  steel: {E: {temperature_C: [20, 100, 200, 400], value: [2.1e11, 2.05e11, 1.95e11, 1.7e11]},
+          alpha: {temperature_C: [20, 200, 400], value: [1.2e-5, 1.3e-5, 1.4e-5]}, density: 7850}
+  cfrp: {E: 1.2e11, alpha: {temperature_C: [-100], value: [-3.0e-7]}}
+thermal: {dT: 80, reference_temperature_C: 15.5}
+elements:
+  1: {nodes: [A, B], area: 1.0e-4, material: steel, mass: 1}
+  2: {type: beam, nodes: [B, C], area: 1.0e-4, inertia_z: 1.0e-9, material: steel, mass: 1}
+  3: {type: beam, nodes: [A, C], area: 1.0e-4, inertia_z: 1.0e-9, material: cfrp, mass: 1, shear_modulus: 5.0e9}
+supports: [{node: A}, {node: C}]
+)", "tables");
+  expect_round_trip(model);
+  // Read at T_ref = 15.5 °C, below the table: held at its first entry.
+  EXPECT_EQ(model.materials[0].youngs_modulus_Pa, 2.1e11);
+  EXPECT_EQ(model.reference_temperature_C, 15.5);
+  const Model reloaded = load_model_from_string(saved(model), "saved");
+  EXPECT_FALSE(reloaded.beams[0].shear_modulus_given);
+  EXPECT_TRUE(reloaded.beams[1].shear_modulus_given);
 }
 
 // Capacities: sections of every shape, explicit second moments and section moduli, strengths,

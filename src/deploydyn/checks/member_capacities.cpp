@@ -15,6 +15,12 @@ double modulus_of(const Model& model, int material) {
   return model.materials[static_cast<std::size_t>(material)].youngs_modulus_Pa;
 }
 
+// The material's law where a table gives its E (else a constant law: the Euler load stays).
+MaterialLaw youngs_law(const Model& model, int material) {
+  const Material& m = model.materials[static_cast<std::size_t>(material)];
+  return m.youngs_modulus_table_Pa ? MaterialLaw(m, reference_temperature_C(model)) : MaterialLaw();
+}
+
 // An element's entry and its least bending stiffness E I (0 when I is unknown), its length.
 struct ElementData {
   CheckedElement checked;
@@ -32,6 +38,8 @@ ElementData element_data(const Model& model, MemberKind kind, int index) {
       d.checked.area_m2 = bar.area_m2;
       d.checked.yield_strength_Pa = strength_of(model, bar.material);
       d.least_bending_stiffness_Nm2 = modulus_of(model, bar.material) * bar.inertia_m4;
+      d.checked.temperature_change_C = &bar.temperature_change_C;
+      d.checked.law = youngs_law(model, bar.material);
       d.length_m = bar.reference_length_m;
       break;
     }
@@ -46,6 +54,8 @@ ElementData element_data(const Model& model, MemberKind kind, int index) {
       const double least_inertia =
           beam.inertia_y_m4 > 0.0 ? std::min(beam.inertia_y_m4, beam.inertia_z_m4) : beam.inertia_z_m4;
       d.least_bending_stiffness_Nm2 = modulus_of(model, beam.material) * least_inertia;
+      d.checked.temperature_change_C = &beam.temperature_change_C;
+      d.checked.law = youngs_law(model, beam.material);
       d.length_m = beam.reference_length_m;
       break;
     }

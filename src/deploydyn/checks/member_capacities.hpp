@@ -10,6 +10,7 @@
 
 #include "deploydyn/checks/check_kind.hpp"
 #include "deploydyn/checks/section_shear.hpp"
+#include "deploydyn/model/material_law.hpp"
 #include "deploydyn/model/model.hpp"
 
 namespace deploydyn {
@@ -23,6 +24,15 @@ struct CheckedElement {
   double section_modulus_y_m3 = 0.0;  // W_y (3D beams)
   SectionShear shear;                 // beams of a section shape; zeros without one
   double break_load_N = 0.0;          // cables
+  // Its material's E(T) and its ΔT(t) (in the model) where a table gives E, for its Euler load.
+  MaterialLaw law;
+  const TimeFunction* temperature_change_C = nullptr;
+
+  // E(T)/E(T_ref) at time t: 1 for a constant E.
+  double youngs_ratio(double t) const {
+    if (!law.varies() || temperature_change_C == nullptr) return 1.0;
+    return law.at(temperature_change_C->value(t)).youngs_modulus_Pa / law.reference_youngs_modulus_Pa();
+  }
 };
 
 struct CheckedMember {
@@ -35,7 +45,7 @@ struct CheckedMember {
   // pinned–free or free–free beam member, which is not checked for buckling.
   std::optional<double> buckling_length_factor;
   std::string buckling_length_source;  // where K comes from: "given", "clamped–pinned ends", ...
-  // N_cr = π² (EI)_min / (K L)² about the weak axis, the least EI of its elements (V1); 0 when
+  // N_cr = π² (EI)_min / (K L)² at E(T_ref) (the checks scale it by E(T)/E(T_ref)) about the weak axis, the least EI of its elements (V1); 0 when
   // an element's I is not known (a bar without `inertia` or `section`) or K is undefined.
   double critical_force_N = 0.0;
   bool slack_forbidden = false;  // cables

@@ -43,14 +43,15 @@ std::array<double, kNumCheckKinds> element_utilizations(const CheckedMember& mem
   const auto set = [&](CheckKind kind, double value) { u[static_cast<std::size_t>(kind)] = value; };
   const auto running = [&](CheckKind kind) { return runs[static_cast<std::size_t>(kind)]; };
   const double compression_N = std::max(0.0, -forces.axial_N);
+  const double critical_force_N = member.critical_force_N * forces.youngs_ratio;  // N_cr at E(T)
   const double axial_stress_Pa = std::abs(forces.axial_N) / e.area_m2;
   switch (member.kind) {
     case MemberKind::bar:
-      if (running(CheckKind::buckling)) set(CheckKind::buckling, compression_N / member.critical_force_N);  // (V1)
+      if (running(CheckKind::buckling)) set(CheckKind::buckling, compression_N / critical_force_N);  // (V1)
       if (e.yield_strength_Pa > 0.0) set(CheckKind::stress, axial_stress_Pa / e.yield_strength_Pa);         // (V2)
       break;
     case MemberKind::beam: {
-      if (running(CheckKind::buckling)) set(CheckKind::buckling, compression_N / member.critical_force_N);  // (V1)
+      if (running(CheckKind::buckling)) set(CheckKind::buckling, compression_N / critical_force_N);  // (V1)
       const bool known = e.yield_strength_Pa > 0.0 && e.section_modulus_z_m3 > 0.0 &&
                          (dimension == 2 || e.section_modulus_y_m3 > 0.0);
       if (!known) break;
@@ -66,7 +67,7 @@ std::array<double, kNumCheckKinds> element_utilizations(const CheckedMember& mem
                                 : normal_stress_Pa;
       set(CheckKind::stress, equivalent_stress_Pa / e.yield_strength_Pa);  // (V3)
       if (running(CheckKind::interaction)) {  // (V4): in compression only
-        const double resistance_N = std::min(member.critical_force_N, e.area_m2 * e.yield_strength_Pa);
+        const double resistance_N = std::min(critical_force_N, e.area_m2 * e.yield_strength_Pa);
         set(CheckKind::interaction,
             compression_N > 0.0 ? compression_N / resistance_N + bending_stress_Pa / e.yield_strength_Pa : 0.0);
       }
@@ -204,7 +205,8 @@ void MemberChecks::check_member(int m, const StepRecord& r) {
                                beam ? at(layout.moment_y) : 0.0,
                                beam ? at(layout.shear_y) : 0.0,
                                beam ? at(layout.shear_z) : 0.0,
-                               beam ? at(layout.torque) : 0.0};
+                               beam ? at(layout.torque) : 0.0,
+                               e.youngs_ratio(r.time_s)};
     const auto utilizations = element_utilizations(member, e, running, dimension_, forces);
     for (std::size_t k = 0; k < kNumCheckKinds; ++k) {
       if (!std::isnan(utilizations[k])) take(kCheckKinds.value(k), utilizations[k], e.element);

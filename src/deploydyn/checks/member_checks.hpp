@@ -65,6 +65,10 @@ struct ElementForces {
   double shear_y_N = 0.0;    // beams
   double shear_z_N = 0.0;    // 3D beams
   double torque_Nm = 0.0;    // 3D beams
+  // E(T)/E(T_ref) at the element's temperature, by which its Euler load N_cr scales (a material
+  // with a temperature table, docs/theory.md, "Temperature-dependent material properties"); 1
+  // for a constant E.
+  double youngs_ratio = 1.0;
 };
 
 // Which checks run on a member: has_capacity for each CheckKind.

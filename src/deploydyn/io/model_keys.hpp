@@ -29,7 +29,9 @@ inline constexpr std::array<std::string_view, 4> kRectangularTubeSection{"shape"
 inline constexpr std::array<std::string_view, 2> kCircleSection{"shape", "diameter"};
 inline constexpr std::array<std::string_view, 3> kRectangleSection{"shape", "width", "height"};
 inline constexpr std::array<std::string_view, 3> kMember{"elements", "buckling_length_factor", "slack"};
-inline constexpr std::array<std::string_view, 1> kThermal{"dT"};
+inline constexpr std::array<std::string_view, 2> kThermal{"dT", "reference_temperature_C"};
+// A material's E or alpha given at temperatures (model/property_table.hpp)
+inline constexpr std::array<std::string_view, 2> kPropertyTable{"temperature_C", "value"};
 inline constexpr std::array<std::string_view, 11> kOrbitEnvironment{
     "type", "reference_temperature", "initial_temperature", "sun_direction", "solar_constant", "sink_temperature",
     "eclipses", "penumbra", "shadows", "section_gradients", "conduction"};
@@ -101,11 +103,12 @@ struct Section {
   Keys keys;
 };
 
-inline constexpr std::array<Section, 51> kSections{{
+inline constexpr std::array<Section, 52> kSections{{
     {"top level", "### Top level", kTopLevel},
     {"nodes.NAME", "### `nodes`", kNode},
     {"materials.NAME", "### `materials`", kMaterial},
     {"materials.NAME.damping", "### `materials`", kMaterialDamping},
+    {"materials.NAME.E, materials.NAME.alpha (a table)", "### `materials`", kPropertyTable},
     {"sections.NAME (shape: circular_tube)", "### `sections`", kCircularTubeSection},
     {"sections.NAME (shape: rectangular_tube)", "### `sections`", kRectangularTubeSection},
     {"sections.NAME (shape: circle)", "### `sections`", kCircleSection},

@@ -25,6 +25,7 @@
 #include "deploydyn/io/text_file.hpp"
 #include "deploydyn/io/yaml_reader.hpp"
 #include "deploydyn/model/dof_map.hpp"
+#include "deploydyn/model/material_law.hpp"
 
 #include "deploydyn/results/history_layout.hpp"
 #include "deploydyn/results/result_file_names.hpp"
@@ -37,6 +38,7 @@ using io::YamlValue;
 
 constexpr std::string_view kPaperEq23 = "paper_eq23";
 constexpr std::size_t kUnbounded = std::numeric_limits<std::size_t>::max();
+constexpr double kAbsoluteZero_C = -273.15;
 // A step below 1 ns or a run of more than 1e8 steps is a typo in the file, not a choice.
 constexpr double kMinStep_s = 1e-9;
 constexpr double kMaxSteps = 1e8;
@@ -151,12 +153,9 @@ class ModelReader {
     }
     if (const auto functions = root_.find("functions")) read_functions(*functions);
     read_nodes(root_.at("nodes"));
+    if (const auto thermal = root_.find("thermal")) read_thermal(*thermal);
     read_materials(root_.at("materials"));
     if (const auto sections = root_.find("sections")) read_sections(*sections);
-    if (const auto thermal = root_.find("thermal")) {
-      thermal->expect_keys(model_keys::kThermal);
-      if (const auto dT = thermal->find("dT")) model_.temperature_change_C = function(*dT);
-    }
     read_elements(root_.at("elements"));
     if (const auto environment = root_.find("environment")) read_environment(*environment);
     if (const auto members = root_.find("members")) read_members(*members);
@@ -457,15 +456,80 @@ class ModelReader {
 
   // Materials and elements --------------------------------------------------------------------
 
+  // `thermal`: the model-wide ΔT(t) and the stress-free temperature T_ref.
+  void read_thermal(const YamlValue& thermal) {
+    thermal.expect_keys(model_keys::kThermal);
+    if (const auto dT = thermal.find("dT")) model_.temperature_change_C = function(*dT);
+    if (const auto reference = thermal.find("reference_temperature_C")) {
+      if (root_.find("environment")) {
+        reference->fail("the environment's reference_temperature (K) is the stress-free temperature; give only that");
+      }
+      model_.reference_temperature_C = reference->number(Sign::any, "°C");
+      if (!(*model_.reference_temperature_C > kAbsoluteZero_C)) {
+        reference->fail(fmt::format("must be above absolute zero ({} °C), got {}", kAbsoluteZero_C,
+                                    *model_.reference_temperature_C));
+      }
+    }
+  }
+
+  // T_ref (°C), at which the materials' tables are read for ΔT = 0 (model/material_law.hpp):
+  // `thermal.reference_temperature_C`, the environment's reference_temperature (read here
+  // ahead of the environment, which comes after the elements), or 20 °C.
+  double stress_free_temperature_C() const {
+    if (model_.reference_temperature_C) return *model_.reference_temperature_C;
+    const auto environment = root_.find("environment");
+    if (environment && environment->is_map()) {
+      if (const auto reference = environment->find("reference_temperature")) {
+        return reference->number(Sign::positive, "K") + kAbsoluteZero_C;
+      }
+    }
+    return reference_temperature_C(model_);
+  }
+
+  // E or alpha: a number, or a table {temperature_C: [...], value: [...]} (docs/model-format.md,
+  // "Temperature-dependent materials"); returns the value at T_ref.
+  static double material_property(const YamlValue& spec, Sign sign, std::string_view unit, double reference_C,
+                                  std::optional<PropertyTable>& table) {
+    if (!spec.is_map()) return spec.number(sign, unit);
+    spec.expect_keys(model_keys::kPropertyTable);
+    PropertyTable read;
+    const YamlValue temperatures = spec.at("temperature_C");
+    for (const YamlValue& item : temperatures.items(1, kUnbounded, "temperatures (°C), increasing")) {
+      const double temperature_C = item.number(Sign::any, "°C");
+      if (!(temperature_C > kAbsoluteZero_C)) {
+        item.fail(fmt::format("must be above absolute zero ({} °C), got {}", kAbsoluteZero_C, temperature_C));
+      }
+      if (!read.temperature_C.empty() && !(temperature_C > read.temperature_C.back())) {
+        item.fail(fmt::format("temperatures must increase strictly: {} °C follows {} °C", temperature_C,
+                              read.temperature_C.back()));
+      }
+      read.temperature_C.push_back(temperature_C);
+    }
+    const YamlValue values = spec.at("value");
+    const auto items = values.items(1, kUnbounded, fmt::format("values ({}), one per temperature", unit));
+    if (items.size() != read.temperature_C.size()) {
+      values.fail(fmt::format("needs one value per temperature: {} values for {} temperatures", items.size(),
+                              read.temperature_C.size()));
+    }
+    for (const YamlValue& item : items) read.value.push_back(item.number(sign, unit));
+    table = std::move(read);
+    return table_value(*table, reference_C);
+  }
+
   void read_materials(const YamlValue& section) {
     const auto entries = section.entries();
     if (entries.empty()) section.fail("needs at least one material");
+    const double reference_C = stress_free_temperature_C();
     for (const auto& [name, spec] : entries) {
       spec.expect_keys(model_keys::kMaterial);
       Material material;
       material.name = name;
-      material.youngs_modulus_Pa = spec.at("E").number(Sign::positive, "Pa");
-      material.expansion_per_C = spec.number_or("alpha", 0.0, Sign::any, "1/°C");
+      material.youngs_modulus_Pa =
+          material_property(spec.at("E"), Sign::positive, "Pa", reference_C, material.youngs_modulus_table_Pa);
+      if (const auto alpha = spec.find("alpha")) {
+        material.expansion_per_C =
+            material_property(*alpha, Sign::any, "1/°C", reference_C, material.expansion_table_per_C);
+      }
       if (const auto density = spec.find("density")) {
         material.density_kg_m3 = density->number(Sign::positive, "kg/m³");
       }

@@ -32,6 +32,24 @@ void emit_numbers(YAML::Emitter& out, std::initializer_list<double> values) {
   out << YAML::EndSeq;
 }
 
+// A material property: its constant, or its table (model/property_table.hpp).
+void emit_property(YAML::Emitter& out, const std::string& key, double constant,
+                   const std::optional<PropertyTable>& table) {
+  if (!table) {
+    emit_number(out, key, constant);
+    return;
+  }
+  emit_key(out, key);
+  out << YAML::Flow << YAML::BeginMap;
+  for (const auto& [name, column] : {std::pair{"temperature_C", &table->temperature_C}, std::pair{"value", &table->value}}) {
+    emit_key(out, name);
+    out << YAML::Flow << YAML::BeginSeq;
+    for (const double value : *column) out << number_text(value);
+    out << YAML::EndSeq;
+  }
+  out << YAML::EndMap;
+}
+
 void emit_vector(YAML::Emitter& out, const Eigen::Vector3d& vector, int dimension) {
   out << YAML::Flow << YAML::BeginSeq;
   for (int i = 0; i < dimension; ++i) out << number_text(vector[i]);
@@ -238,8 +256,8 @@ void emit_geometry(YAML::Emitter& out, const Model& model) {
   for (const Material& material : model.materials) {
     emit_key(out, material.name);
     out << YAML::Flow << YAML::BeginMap;
-    emit_number(out, "E", material.youngs_modulus_Pa);
-    emit_number(out, "alpha", material.expansion_per_C);
+    emit_property(out, "E", material.youngs_modulus_Pa, material.youngs_modulus_table_Pa);
+    emit_property(out, "alpha", material.expansion_per_C, material.expansion_table_per_C);
     if (material.density_kg_m3) emit_number(out, "density", *material.density_kg_m3);
     if (material.yield_strength_Pa) emit_number(out, "yield_strength", *material.yield_strength_Pa);
     if (material.specific_heat_J_kgK) emit_number(out, "specific_heat", *material.specific_heat_J_kgK);
@@ -292,6 +310,7 @@ void emit_geometry(YAML::Emitter& out, const Model& model) {
     out << YAML::BeginMap;
     emit_key(out, "dT");
     emit_function(out, model.temperature_change_C);
+    if (model.reference_temperature_C) emit_number(out, "reference_temperature_C", *model.reference_temperature_C);
     out << YAML::EndMap;
   }
 

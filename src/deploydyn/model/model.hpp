@@ -17,6 +17,7 @@
 #include "deploydyn/model/initial_velocities.hpp"
 #include "deploydyn/model/joint.hpp"
 #include "deploydyn/model/member.hpp"
+#include "deploydyn/model/property_table.hpp"
 #include "deploydyn/model/section.hpp"
 #include "deploydyn/model/time_function.hpp"
 #include "deploydyn/util/name_table.hpp"
@@ -46,6 +47,12 @@ struct Material {
   std::optional<double> absorptivity;         // α_s, solar, in [0, 1]
   std::optional<double> emissivity;           // ε, infrared, in [0, 1]
   std::optional<double> conductivity_W_mK;    // k: the section's sun-to-shade difference
+  // E(T) (Pa) and α(T) (1/°C) as data-sheet tables (model/material_law.hpp; docs/theory.md,
+  // "Temperature-dependent material properties"); empty: the constants above. With a table,
+  // the constant is the table's value at the model's reference temperature (what the checks and
+  // the studies read as the material's E or α).
+  std::optional<PropertyTable> youngs_modulus_table_Pa;
+  std::optional<PropertyTable> expansion_table_per_C;
 };
 
 // Ground support: the chosen coordinates of a node keep their initial values.
@@ -340,6 +347,10 @@ struct Model {
   std::vector<NodalLoad> loads;
   Eigen::Vector3d gravity_m_s2 = Eigen::Vector3d::Zero();
   TimeFunction temperature_change_C;  // model-wide ΔT(t), for bars that give none
+  // T_ref (°C), `thermal.reference_temperature_C`: the stress-free temperature, at which the
+  // materials' temperature tables are read for ΔT = 0. Empty: the environment's, else 20 °C
+  // (model/material_law.hpp, reference_temperature_C).
+  std::optional<double> reference_temperature_C;
   // When given, the members' temperatures come from it, step by step (thermal/), not from ΔT.
   std::optional<Environment> environment;
   // Dynamic runs from the initial equilibrium start with these (none given: at rest).

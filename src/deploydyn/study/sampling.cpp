@@ -1,12 +1,14 @@
 #include "deploydyn/study/sampling.hpp"
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 #include <fnmatch.h>
 
 #include <algorithm>
 #include <array>
 #include <cmath>
 #include <limits>
+#include <optional>
 #include <set>
 #include <stdexcept>
 
@@ -20,6 +22,17 @@ bool matches(const std::vector<std::string>& patterns, const std::string& name) 
 }
 
 std::string number(double value) { return fmt::format("{}", value); }
+
+// A material's E or α drawn as `factor` times its value: the constant, or every entry of its
+// temperature table (the shape of E(T), α(T) kept), as model-file flow text.
+std::string scaled_property(double constant, const std::optional<PropertyTable>& table, double factor) {
+  if (!table) return number(constant * factor);
+  std::vector<std::string> values;
+  for (const double value : table->value) values.push_back(number(value * factor));
+  std::vector<std::string> temperatures;
+  for (const double temperature_C : table->temperature_C) temperatures.push_back(number(temperature_C));
+  return fmt::format("{{temperature_C: [{}], value: [{}]}}", fmt::join(temperatures, ", "), fmt::join(values, ", "));
+}
 
 // Variables are numbered so that a member's draws do not depend on what else is sampled:
 // the field's two, then four per member (length, temperature scatter, E, α).
@@ -214,8 +227,9 @@ DrawnCase SampledCases::draw(long k) const {
       const Material& material = materials_[own.material];
       const double e_factor = 1.0 + sampling_.E_cv * draws_.standard_normal(k, member_variable(m, 2));
       const double alpha_factor = 1.0 + sampling_.alpha_cv * draws_.standard_normal(k, member_variable(m, 3));
-      std::string value = fmt::format("{{E: {}, alpha: {}", number(material.youngs_modulus_Pa * e_factor),
-                                      number(material.expansion_per_C * alpha_factor));
+      std::string value = fmt::format("{{E: {}, alpha: {}",
+                                      scaled_property(material.youngs_modulus_Pa, material.youngs_modulus_table_Pa, e_factor),
+                                      scaled_property(material.expansion_per_C, material.expansion_table_per_C, alpha_factor));
       if (material.density_kg_m3) value += fmt::format(", density: {}", number(*material.density_kg_m3));
       set("materials." + own.own_material, value + "}");
       set(element + ".material", own.own_material);

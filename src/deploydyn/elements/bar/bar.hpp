@@ -4,6 +4,8 @@
 //
 //   d = x_b − x_a,  ε = (d·d − L0²) / (2 L0²)        Green–Lagrange strain, Eq. (1)
 //   ε_m = ε − ε_t,  ε_t = α ΔT                        mechanical strain, Eq. (18)
+//                   (ε_t = ∫α dT and EA = E(T) A with temperature tables, docs/theory.md,
+//                   "Temperature-dependent material properties")
 //   U = ½ EA L0 ε_m²                                  strain energy (reference length L0)
 //   f = (EA ε_m / L0) [−d; d]                         internal force  = ∂U/∂q
 //   K = (EA/L0³) [ddᵀ −ddᵀ; −ddᵀ ddᵀ]                 material tangent
@@ -97,6 +99,20 @@ template <int D>
 ElementVector<D> internal_force_per_thermal_strain(const State<D>& s, const Section& section) {
   ElementVector<D> f;
   const Vector<D> g = (-s.strain_stiffness_N / section.reference_length_m) * s.d;
+  f << -g, g;
+  return f;
+}
+
+// ∂f/∂T at a fixed configuration for a material whose α and E follow the temperature
+// (docs/theory.md, "Temperature-dependent material properties"): through ε_t, dε_t/dT = α(T),
+// and through EA, d(EA)/dT = A dE/dT, with ∂f/∂(EA) = (ε_m / L0) [−d; d] (0 when slack).
+template <int D>
+ElementVector<D> internal_force_per_temperature(const State<D>& s, const Section& section,
+                                               double expansion_per_C, double axial_stiffness_slope_N_C) {
+  const double per_stiffness = s.slack ? 0.0 : s.mechanical_strain / section.reference_length_m;
+  const Vector<D> g = (axial_stiffness_slope_N_C * per_stiffness -
+                       expansion_per_C * s.strain_stiffness_N / section.reference_length_m) * s.d;
+  ElementVector<D> f;
   f << -g, g;
   return f;
 }

@@ -5,6 +5,7 @@
 
 #include "deploydyn/elements/bar/bar.hpp"
 #include "deploydyn/elements/bar/bar_entry.hpp"
+#include "deploydyn/elements/heated_material.hpp"
 #include "deploydyn/elements/local_element_group.hpp"
 #include "deploydyn/model/dof_map.hpp"
 #include "deploydyn/model/model.hpp"
@@ -19,28 +20,47 @@ struct BarRecord {
   static constexpr int kRigidBodyConditions = 1;  // its length
   using Vector = bar::ElementVector<D>;
   using Matrix = bar::ElementMatrix<D>;
-  using State = bar::State<D>;
+  // The bar's state, and its material's where E or α follows the temperature.
+  struct State : bar::State<D> {
+    HeatedMaterial material;
+  };
 
   std::array<int, kDofs> dofs{};
   bar::Section section;
   double mass_kg = 0.0;
   double expansion_per_C = 0.0;                        // α
+  MaterialLaw law;                                     // E(T), ε_t(T) when tables give them
   double area_m2 = 0.0;                                // A, for the stress N/A
   const TimeFunction* temperature_change_C = nullptr;  // ΔT(t), in the model
 
   double thermal_strain(double t) const { return expansion_per_C * temperature_change_C->value(t); }
 
   State evaluate(const Vector& q, double t, double thermal_factor) const {
-    return bar::evaluate<D>(q.template head<D>(), q.template tail<D>(), section,
-                            thermal_factor * thermal_strain(t));
+    if (!law.varies()) {
+      return {bar::evaluate<D>(q.template head<D>(), q.template tail<D>(), section,
+                               thermal_factor * thermal_strain(t)),
+              {}};
+    }
+    const HeatedMaterial m = HeatedMaterial::read(law, *temperature_change_C, t, thermal_factor);
+    bar::Section at_temperature = section;
+    at_temperature.axial_stiffness_N = m.at.youngs_modulus_Pa * area_m2;
+    return {bar::evaluate<D>(q.template head<D>(), q.template tail<D>(), at_temperature, m.at.thermal_strain), m};
   }
   Vector internal_force(const State& s) const { return bar::internal_force<D>(s, section); }
-  // The thermal strain of the factor is factor · ε_t: chain rule through ∂f/∂ε_t.
+  // ∂f/∂T: through ε_t, and through E(T) with a table.
+  Vector force_per_temperature(const State& s) const {
+    return bar::internal_force_per_temperature<D>(s, section, s.material.at.expansion_per_C,
+                                                  s.material.at.youngs_modulus_slope_Pa_C * area_m2);
+  }
+  // The thermal strain of the factor is factor · ε_t: chain rule through ∂f/∂ε_t; with tables,
+  // through ∂f/∂T and ∂T/∂λ = ΔT(t).
   Vector thermal_force_derivative(const State& s, double t) const {
+    if (law.varies()) return temperature_change_C->value(t) * force_per_temperature(s);
     return thermal_strain(t) * bar::internal_force_per_thermal_strain<D>(s, section);
   }
-  // ∂f/∂t through ε_t(t) = α ΔT(t).
+  // ∂f/∂t through ε_t(t) = α ΔT(t); with tables, through ∂f/∂T and ∂T/∂t.
   Vector thermal_force_rate(const State& s, double t) const {
+    if (law.varies()) return s.material.temperature_rate_C_s(*temperature_change_C, t) * force_per_temperature(s);
     return expansion_per_C * temperature_change_C->derivative(t) *
            bar::internal_force_per_thermal_strain<D>(s, section);
   }
@@ -90,6 +110,7 @@ template <int D>
 std::unique_ptr<ElementGroup> make_bars(const Model& model, const DofMap& dofs) {
   std::vector<BarRecord<D>> records;
   records.reserve(model.bars.size());
+  const double reference_C = reference_temperature_C(model);
   for (const BarElement& e : model.bars) {
     const Material& material = model.materials[e.material];
     BarRecord<D>& bar = records.emplace_back();
@@ -101,6 +122,7 @@ std::unique_ptr<ElementGroup> make_bars(const Model& model, const DofMap& dofs) 
                    material.damping_time_s};
     bar.mass_kg = e.mass_kg;
     bar.expansion_per_C = material.expansion_per_C;
+    bar.law = MaterialLaw(material, reference_C);
     bar.area_m2 = e.area_m2;
     bar.temperature_change_C = &e.temperature_change_C;
   }

@@ -103,6 +103,21 @@ inline Vector force_per_thermal_curvature(const State& st, const Section& s) {
   return -s.reference_length_m * s.bending_stiffness_Nm2 * st.d_curvature;
 }
 
+// δf at a fixed configuration when the section's stiffnesses change by `change` (its EA, GA_y,
+// EI; the rest unread) and the thermal strains by δ: a material whose E and α follow the
+// temperature (docs/theory.md, "Temperature-dependent material properties").
+//   δf = L0 [(δEA ε_m − EA δε_t) ε_q + δGA γ γ_q + (δEI κ_m − EI δκ_t) κ_q]
+inline Vector internal_force_change(const State& st, const Section& s, const Section& change,
+                                    const ThermalStrain& thermal_change) {
+  return s.reference_length_m *
+         ((change.axial_stiffness_N * st.mechanical_strain - s.axial_stiffness_N * thermal_change.axial) *
+              st.d_strain +
+          change.shear_stiffness_N * st.shear_strain * st.d_shear +
+          (change.bending_stiffness_Nm2 * st.mechanical_curvature_1_m -
+           s.bending_stiffness_Nm2 * thermal_change.curvature_1_m) *
+              st.d_curvature);
+}
+
 // EA ε_q ε_qᵀ + k_sGA γ_q γ_qᵀ + EI κ_q κ_qᵀ: the material part of K / L0 (B7).
 inline Matrix material_part(const State& st, const Section& s) {
   return s.axial_stiffness_N * st.d_strain * st.d_strain.transpose() +

@@ -196,6 +196,17 @@ inline ElementVector internal_force_per_thermal_strain(const State& s, const Sec
          (s.gradient.transpose() * section.stiffness.cwiseProduct(thermal));
 }
 
+// δf at a fixed configuration when the stiffnesses C change by δC and the thermal strains by
+// δs_t: L0 Tᵀ Gᵀ (δC (s − s_t) − C δs_t), for a material whose E and α follow the temperature
+// (docs/theory.md, "Temperature-dependent material properties").
+inline ElementVector internal_force_change(const State& s, const Section& section, const StrainVector& stiffness_change,
+                                           const StrainVector& thermal_change) {
+  const double l0 = section.reference_length_m;
+  return l0 * intermediate_map(l0).transpose() *
+         (s.gradient.transpose() *
+          (stiffness_change.cwiseProduct(s.mechanical) - section.stiffness.cwiseProduct(thermal_change)));
+}
+
 // K = ∂f/∂q: material + geometric (D6).
 inline ElementMatrix tangent(const State& s, const Section& section) {
   const double l0 = section.reference_length_m;

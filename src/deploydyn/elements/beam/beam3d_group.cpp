@@ -3,11 +3,13 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <optional>
 #include <stdexcept>
 
 #include "deploydyn/constraints/frame_orthonormality.hpp"
 #include "deploydyn/elements/beam/beam3d.hpp"
 #include "deploydyn/elements/beam/sectional_values.hpp"
+#include "deploydyn/elements/heated_material.hpp"
 #include "deploydyn/elements/local_element_group.hpp"
 #include "deploydyn/model/dof_map.hpp"
 #include "deploydyn/model/model.hpp"
@@ -26,10 +28,15 @@ struct Beam3dRecord {
   static constexpr int kRigidBodyConditions = 6;
   using Vector = beam3d::ElementVector;
   using Matrix = beam3d::ElementMatrix;
-  using State = beam3d::State;
+  // The beam's state; with a temperature table, its section and material at the evaluation's T.
+  struct State : beam3d::State {
+    std::optional<beam3d::Section> at_temperature;
+    HeatedMaterial material;
+    double gradient_y_C = 0.0, gradient_z_C = 0.0;  // λ ΔT_gy(t), λ ΔT_gz(t)
+  };
 
   std::array<int, kDofs> dofs{};
-  beam3d::Section section;
+  beam3d::Section section;  // at T_ref
   double mass_kg = 0.0;
   Eigen::Matrix3d rotary_per_length = Eigen::Matrix3d::Zero();  // J (kg·m)
   double expansion_per_C = 0.0;                                 // α
@@ -38,6 +45,28 @@ struct Beam3dRecord {
   const TimeFunction* temperature_change_C = nullptr;  // ΔT(t), in the model
   const TimeFunction* gradient_y_C = nullptr;          // ΔT_gy(t)
   const TimeFunction* gradient_z_C = nullptr;          // ΔT_gz(t)
+  MaterialLaw law;                                     // E(T), ε_t(T) when tables give them
+  beam3d::StrainVector youngs_share = beam3d::StrainVector::Zero();  // of C, following E(T)
+  double inverse_depth_z_1_m = 0.0;  // +1 / h_z: κ_t2 = α(T) ΔT_gz / h_z (0: no depth)
+  double inverse_depth_y_1_m = 0.0;  // −1 / h_y: κ_t3 = −α(T) ΔT_gy / h_y
+
+  const beam3d::Section& section_of(const State& s) const { return s.at_temperature ? *s.at_temperature : section; }
+  // s_t at the material's α(T) for gradients g_y, g_z (with ε_t given apart).
+  beam3d::StrainVector thermal_at(double thermal_strain, double expansion_per_C, double g_y, double g_z) const {
+    return beam3d::thermal_strains(thermal_strain, inverse_depth_z_1_m * expansion_per_C * g_z,
+                                   inverse_depth_y_1_m * expansion_per_C * g_y);
+  }
+  // δf for changes δT of the temperature and δg of the gradients: through C(E(T)), ε_t and the
+  // gradients' curvatures α(T) g / h (their δ: (α' δT g + α δg) / h).
+  Vector force_per_temperature_change(const State& s, double change_C, double g_y_change_C, double g_z_change_C) const {
+    const MaterialAt& m = s.material.at;
+    const beam3d::StrainVector thermal_change =
+        thermal_at(m.expansion_per_C * change_C, m.expansion_slope_per_C2 * change_C, s.gradient_y_C, s.gradient_z_C) +
+        thermal_at(0.0, m.expansion_per_C, g_y_change_C, g_z_change_C);
+    return beam3d::internal_force_change(
+        s, section_of(s), (m.youngs_modulus_slope_Pa_C * change_C / law.reference_youngs_modulus_Pa()) * youngs_share,
+        thermal_change);
+  }
 
   beam3d::StrainVector thermal(double t) const {
     return beam3d::thermal_strains(expansion_per_C * temperature_change_C->value(t),
@@ -51,23 +80,46 @@ struct Beam3dRecord {
   }
 
   State evaluate(const Vector& q, double t, double thermal_factor) const {
-    return beam3d::evaluate(q, section, thermal_factor * thermal(t));
+    if (law.varies()) {
+      State s;
+      s.material = HeatedMaterial::read(law, *temperature_change_C, t, thermal_factor);
+      s.gradient_y_C = thermal_factor * gradient_y_C->value(t);
+      s.gradient_z_C = thermal_factor * gradient_z_C->value(t);
+      const MaterialAt& m = s.material.at;
+      s.at_temperature = section;
+      s.at_temperature->stiffness += (m.youngs_modulus_Pa / law.reference_youngs_modulus_Pa() - 1.0) * youngs_share;
+      static_cast<beam3d::State&>(s) = beam3d::evaluate(
+          q, *s.at_temperature, thermal_at(m.thermal_strain, m.expansion_per_C, s.gradient_y_C, s.gradient_z_C));
+      return s;
+    }
+    return {beam3d::evaluate(q, section, thermal_factor * thermal(t)), std::nullopt, {}, 0.0, 0.0};
   }
-  Vector internal_force(const State& s) const { return beam3d::internal_force(s, section); }
-  // The factor scales every thermal strain: ∂f/∂factor = ∂f/∂s_t · s_t.
+  Vector internal_force(const State& s) const { return beam3d::internal_force(s, section_of(s)); }
+  // The factor scales every thermal strain: ∂f/∂factor = ∂f/∂s_t · s_t. With tables,
+  // T = T_ref + λ ΔT(t) and g = λ ΔT_g(t): δT = ΔT(t), δg = ΔT_g(t).
   Vector thermal_force_derivative(const State& s, double t) const {
+    if (law.varies()) {
+      return force_per_temperature_change(s, temperature_change_C->value(t), gradient_y_C->value(t),
+                                          gradient_z_C->value(t));
+    }
     return beam3d::internal_force_per_thermal_strain(s, section, thermal(t));
   }
   Vector thermal_force_rate(const State& s, double t) const {
+    if (law.varies()) {
+      const HeatedMaterial& m = s.material;
+      return force_per_temperature_change(s, m.temperature_rate_C_s(*temperature_change_C, t),
+                                          m.temperature_rate_C_s(*gradient_y_C, t),
+                                          m.temperature_rate_C_s(*gradient_z_C, t));
+    }
     return beam3d::internal_force_per_thermal_strain(s, section, thermal_rate(t));
   }
-  Matrix tangent(const State& s) const { return beam3d::tangent(s, section); }
+  Matrix tangent(const State& s) const { return beam3d::tangent(s, section_of(s)); }
   bool damped() const { return section.damping_time_s > 0.0; }
   Vector damping_force(const State& s, const Vector& v) const {
-    return beam3d::damping_force(s, section, v);
+    return beam3d::damping_force(s, section_of(s), v);
   }
   Matrix damping_tangent(const State& s, const Vector& v, double c_q, double c_v) const {
-    return beam3d::damping_tangent(s, section, v, c_q, c_v);
+    return beam3d::damping_tangent(s, section_of(s), v, c_q, c_v);
   }
   Matrix mass(MassMatrixKind kind) const {
     return beam3d::mass_matrix(mass_kg, rotary_per_length, section.reference_length_m, kind);
@@ -79,7 +131,7 @@ struct Beam3dRecord {
     f.segment<3>(beam3d::kPositionB) = 0.5 * mass_kg * gravity_m_s2;
     return f;
   }
-  double strain_energy(const State& s) const { return beam3d::strain_energy(s, section); }
+  double strain_energy(const State& s) const { return beam3d::strain_energy(s, section_of(s)); }
   // max(|Δ(x_b − x_a)| / L0, |ΔR_a|/√2, |ΔR_b|/√2) (Frobenius: ≈ the angle turned).
   double relative_change(const Vector& q, const Vector& q_before) const {
     const Vector change = q - q_before;
@@ -116,6 +168,7 @@ std::vector<int> frame_dofs(const DofMap& dofs, int node) {
 std::unique_ptr<ElementGroup> make_beam_group_3d(const Model& model, const DofMap& dofs) {
   std::vector<Beam3dRecord> records;
   records.reserve(model.beams.size());
+  const double reference_C = reference_temperature_C(model);
   for (const BeamElement& e : model.beams) {
     const Material& material = model.materials[e.material];
     Beam3dRecord& beam = records.emplace_back();
@@ -152,6 +205,12 @@ std::unique_ptr<ElementGroup> make_beam_group_3d(const Model& model, const DofMa
     beam.temperature_change_C = &e.temperature_change_C;
     beam.gradient_y_C = &e.temperature_gradient_y_C;
     beam.gradient_z_C = &e.temperature_gradient_z_C;
+    beam.law = MaterialLaw(material, reference_C);
+    const beam::SectionalStiffness share = beam::youngs_share(e, material);
+    beam.youngs_share << share.axial_N, share.shear_y_N, share.shear_z_N, share.torsional_Nm2, share.bending_y_Nm2,
+        share.bending_z_Nm2;
+    beam.inverse_depth_z_1_m = e.height_z_m > 0.0 ? 1.0 / e.height_z_m : 0.0;
+    beam.inverse_depth_y_1_m = e.height_y_m > 0.0 ? -1.0 / e.height_y_m : 0.0;
   }
   return std::make_unique<LocalElementGroup<Beam3dRecord>>(std::move(records), model.analysis.mass);
 }

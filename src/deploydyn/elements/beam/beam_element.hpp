@@ -30,6 +30,7 @@ struct BeamElement {
   bool orientation_given = false;
   double shear_factor = 5.0 / 6.0;  // k_s
   double shear_modulus_Pa = 0.0;    // G: given, or E / 2.6 (ν = 0.3)
+  bool shear_modulus_given = false;  // else G follows E(T) with a temperature table
   double height_y_m = 0.0;          // section depth along local y; 0: not given
   double height_z_m = 0.0;          // along local z (3D only); 0: not given
   TimeFunction temperature_gradient_y_C;  // T(+y face) − T(−y face), °C, over time

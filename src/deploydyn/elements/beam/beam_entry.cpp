@@ -201,8 +201,9 @@ void read_entry(const std::string& name, const ElementEntryReader& entry, Model&
   const Material& material = model.materials[beam.material];
   beam.shear_factor =
       entry.optional_number("shear_factor", ValueSign::positive, "").value_or(beam.shear_factor);
-  beam.shear_modulus_Pa = entry.optional_number("shear_modulus", ValueSign::positive, "Pa")
-                              .value_or(material.youngs_modulus_Pa / kYoungsToShearModulus);
+  const std::optional<double> shear_modulus = entry.optional_number("shear_modulus", ValueSign::positive, "Pa");
+  beam.shear_modulus_Pa = shear_modulus.value_or(material.youngs_modulus_Pa / kYoungsToShearModulus);
+  beam.shear_modulus_given = shear_modulus.has_value();
   read_sectional_values(entry, three_d, beam);
   read_gradient(entry, "dT_gradient_y", "height_y", beam.temperature_gradient_y_C,
                 beam.gradient_y_given, beam.height_y_m);
@@ -268,7 +269,11 @@ void write_entry(const Model& model, int index, ElementEntryWriter& entry) {
   } else {
     entry.number("shear_factor", beam.shear_factor);
   }
-  if (shear_modulus_used(beam, model.dimension)) entry.number("shear_modulus", beam.shear_modulus_Pa);
+  // A G derived from a temperature table's E stays derived, so that it follows E(T) on reload.
+  const bool derived_from_table = !beam.shear_modulus_given && model.materials[beam.material].youngs_modulus_table_Pa;
+  if (shear_modulus_used(beam, model.dimension) && !derived_from_table) {
+    entry.number("shear_modulus", beam.shear_modulus_Pa);
+  }
   if (beam.axial_stiffness_N > 0.0) entry.number("axial_stiffness", beam.axial_stiffness_N);
   const Eigen::Vector2d& bending = beam.bending_stiffness_Nm2;
   if (bending[1] > 0.0) per_axis("bending_stiffness", {bending[0], bending[1]}, bending[1]);

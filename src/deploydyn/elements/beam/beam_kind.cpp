@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <optional>
 #include <stdexcept>
 
 #include "deploydyn/elements/beam/beam2d.hpp"
@@ -10,6 +11,7 @@
 #include "deploydyn/elements/beam/beam3d_group.hpp"
 #include "deploydyn/elements/beam/beam_entry.hpp"
 #include "deploydyn/elements/beam/sectional_values.hpp"
+#include "deploydyn/elements/heated_material.hpp"
 #include "deploydyn/elements/local_element_group.hpp"
 #include "deploydyn/model/dof_map.hpp"
 #include "deploydyn/model/model.hpp"
@@ -23,47 +25,97 @@ struct Beam2dRecord {
   static constexpr int kRigidBodyConditions = 3;  // length, and both rotations = the chord's
   using Vector = beam2d::Vector;
   using Matrix = beam2d::Matrix;
-  using State = beam2d::State;
+  // The beam's state; with a temperature table, its section and material at the evaluation's T.
+  struct State : beam2d::State {
+    std::optional<beam2d::Section> at_temperature;
+    HeatedMaterial material;
+    double gradient_C = 0.0;  // λ ΔT_gy(t)
+  };
 
   std::array<int, kDofs> dofs{};
-  beam2d::Section section;
+  beam2d::Section section;  // at T_ref
   double mass_kg = 0.0;
   double rotary_inertia_kg_m2 = 0.0;                    // J_zz L0, or ρ I_z L0 = m I_z / A
   double expansion_per_C = 0.0;                         // α
   double gradient_curvature_per_C_m = 0.0;              // κ_t / ΔT_gy = −α / h_y (B5)
   const TimeFunction* temperature_change_C = nullptr;   // ΔT(t), in the model
   const TimeFunction* temperature_gradient_C = nullptr;  // ΔT_gy(t), in the model
+  MaterialLaw law;                    // E(T), ε_t(T) when tables give them
+  beam2d::Section youngs_share;       // the stiffnesses that follow E(T), at E(T_ref)
+  double inverse_depth_1_m = 0.0;     // −1 / h_y: κ_t = −α(T) ΔT_gy / h_y (0: no depth)
 
+  const beam2d::Section& section_of(const State& s) const { return s.at_temperature ? *s.at_temperature : section; }
+  // The section at E(T): the stiffnesses that follow E scaled by E(T) / E(T_ref).
+  beam2d::Section section_at(const MaterialAt& m) const {
+    const double ratio = m.youngs_modulus_Pa / law.reference_youngs_modulus_Pa() - 1.0;
+    beam2d::Section at = section;
+    at.axial_stiffness_N += ratio * youngs_share.axial_stiffness_N;
+    at.shear_stiffness_N += ratio * youngs_share.shear_stiffness_N;
+    at.bending_stiffness_Nm2 += ratio * youngs_share.bending_stiffness_Nm2;
+    return at;
+  }
+  // δf for changes δT of the temperature and δg of the gradient: through E(T) (the shares),
+  // ε_t (α δT) and κ_t = −α(T) g / h_y (its δ: −(α' δT g + α δg) / h_y).
+  Vector force_per_temperature_change(const State& s, double change_C, double gradient_change_C) const {
+    const MaterialAt& m = s.material.at;
+    const double per_stiffness = m.youngs_modulus_slope_Pa_C * change_C / law.reference_youngs_modulus_Pa();
+    beam2d::Section change = youngs_share;
+    change.axial_stiffness_N *= per_stiffness;
+    change.shear_stiffness_N *= per_stiffness;
+    change.bending_stiffness_Nm2 *= per_stiffness;
+    const beam2d::ThermalStrain thermal_change{
+        m.expansion_per_C * change_C,
+        inverse_depth_1_m * (m.expansion_slope_per_C2 * change_C * s.gradient_C + m.expansion_per_C * gradient_change_C)};
+    return beam2d::internal_force_change(s, section_of(s), change, thermal_change);
+  }
   beam2d::ThermalStrain thermal(double t) const {
     return {expansion_per_C * temperature_change_C->value(t),
             gradient_curvature_per_C_m * temperature_gradient_C->value(t)};
   }
 
   State evaluate(const Vector& q, double t, double thermal_factor) const {
+    if (law.varies()) {
+      State s;
+      s.material = HeatedMaterial::read(law, *temperature_change_C, t, thermal_factor);
+      s.gradient_C = thermal_factor * temperature_gradient_C->value(t);
+      s.at_temperature = section_at(s.material.at);
+      static_cast<beam2d::State&>(s) = beam2d::evaluate(
+          q, *s.at_temperature,
+          {s.material.at.thermal_strain, inverse_depth_1_m * s.material.at.expansion_per_C * s.gradient_C});
+      return s;
+    }
     const beam2d::ThermalStrain full = thermal(t);
-    return beam2d::evaluate(q, section,
-                            {thermal_factor * full.axial, thermal_factor * full.curvature_1_m});
+    return {beam2d::evaluate(q, section, {thermal_factor * full.axial, thermal_factor * full.curvature_1_m}),
+            std::nullopt, {}, 0.0};
   }
-  Vector internal_force(const State& s) const { return beam2d::internal_force(s, section); }
-  // The factor scales ε_t and κ_t alike: chain rule through ∂f/∂ε_t and ∂f/∂κ_t.
+  Vector internal_force(const State& s) const { return beam2d::internal_force(s, section_of(s)); }
+  // The factor scales ε_t and κ_t alike: chain rule through ∂f/∂ε_t and ∂f/∂κ_t. With tables,
+  // T = T_ref + λ ΔT(t) and g = λ ΔT_gy(t): δT = ΔT(t), δg = ΔT_gy(t).
   Vector thermal_force_derivative(const State& s, double t) const {
+    if (law.varies()) {
+      return force_per_temperature_change(s, temperature_change_C->value(t), temperature_gradient_C->value(t));
+    }
     const beam2d::ThermalStrain full = thermal(t);
     return full.axial * beam2d::force_per_axial_thermal_strain(s, section) +
            full.curvature_1_m * beam2d::force_per_thermal_curvature(s, section);
   }
   Vector thermal_force_rate(const State& s, double t) const {
+    if (law.varies()) {
+      return force_per_temperature_change(s, s.material.temperature_rate_C_s(*temperature_change_C, t),
+                                          s.material.temperature_rate_C_s(*temperature_gradient_C, t));
+    }
     return expansion_per_C * temperature_change_C->derivative(t) *
                beam2d::force_per_axial_thermal_strain(s, section) +
            gradient_curvature_per_C_m * temperature_gradient_C->derivative(t) *
                beam2d::force_per_thermal_curvature(s, section);
   }
-  Matrix tangent(const State& s) const { return beam2d::tangent(s, section); }
+  Matrix tangent(const State& s) const { return beam2d::tangent(s, section_of(s)); }
   bool damped() const { return section.damping_time_s > 0.0; }
   Vector damping_force(const State& s, const Vector& v) const {
-    return beam2d::damping_force(s, section, v);
+    return beam2d::damping_force(s, section_of(s), v);
   }
   Matrix damping_tangent(const State& s, const Vector& v, double c_q, double c_v) const {
-    return beam2d::damping_tangent(s, section, v, c_q, c_v);
+    return beam2d::damping_tangent(s, section_of(s), v, c_q, c_v);
   }
   Matrix mass(MassMatrixKind kind) const {
     return beam2d::mass_matrix(mass_kg, rotary_inertia_kg_m2, kind);
@@ -77,7 +129,7 @@ struct Beam2dRecord {
     }
     return f;
   }
-  double strain_energy(const State& s) const { return beam2d::strain_energy(s, section); }
+  double strain_energy(const State& s) const { return beam2d::strain_energy(s, section_of(s)); }
   // max(|Δ(x_b − x_a)| / L0, |Δθ_a|, |Δθ_b|): how far the beam turned, stretched or bent.
   double relative_change(const Vector& q, const Vector& q_before) const {
     const Vector change = q - q_before;
@@ -112,6 +164,7 @@ constexpr int kQuantities2d = 5;
 std::unique_ptr<ElementGroup> make_beam_group_2d(const Model& model, const DofMap& dofs) {
   std::vector<Beam2dRecord> records;
   records.reserve(model.beams.size());
+  const double reference_C = reference_temperature_C(model);
   for (const BeamElement& e : model.beams) {
     const Material& material = model.materials[e.material];
     Beam2dRecord& beam = records.emplace_back();
@@ -135,6 +188,12 @@ std::unique_ptr<ElementGroup> make_beam_group_2d(const Model& model, const DofMa
     beam.gradient_curvature_per_C_m = e.height_y_m > 0.0 ? -material.expansion_per_C / e.height_y_m : 0.0;
     beam.temperature_change_C = &e.temperature_change_C;
     beam.temperature_gradient_C = &e.temperature_gradient_y_C;
+    beam.law = MaterialLaw(material, reference_C);
+    const beam::SectionalStiffness share = beam::youngs_share(e, material);
+    beam.youngs_share = {.axial_stiffness_N = share.axial_N,
+                         .shear_stiffness_N = share.shear_y_N,
+                         .bending_stiffness_Nm2 = share.bending_z_Nm2};
+    beam.inverse_depth_1_m = e.height_y_m > 0.0 ? -1.0 / e.height_y_m : 0.0;
   }
   return std::make_unique<LocalElementGroup<Beam2dRecord>>(std::move(records), model.analysis.mass);
 }

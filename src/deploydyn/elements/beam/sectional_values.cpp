@@ -19,6 +19,18 @@ SectionalStiffness sectional_stiffness(const BeamElement& beam, const Material& 
           .bending_z_Nm2 = given_or(beam.bending_stiffness_Nm2[1], youngs * beam.inertia_z_m4)};
 }
 
+SectionalStiffness youngs_share(const BeamElement& beam, const Material& material) {
+  const SectionalStiffness all = sectional_stiffness(beam, material);
+  const auto derived = [](double given, double value) { return given > 0.0 ? 0.0 : value; };
+  const bool shear_follows = !beam.shear_modulus_given;
+  return {.axial_N = derived(beam.axial_stiffness_N, all.axial_N),
+          .shear_y_N = shear_follows ? derived(beam.shear_stiffness_N[0], all.shear_y_N) : 0.0,
+          .shear_z_N = shear_follows ? derived(beam.shear_stiffness_N[1], all.shear_z_N) : 0.0,
+          .torsional_Nm2 = shear_follows ? derived(beam.torsional_stiffness_Nm2, all.torsional_Nm2) : 0.0,
+          .bending_y_Nm2 = derived(beam.bending_stiffness_Nm2[0], all.bending_y_Nm2),
+          .bending_z_Nm2 = derived(beam.bending_stiffness_Nm2[1], all.bending_z_Nm2)};
+}
+
 double rotary_inertia_2d_kg_m2(const BeamElement& beam) {
   const double given = beam.rotary_inertia_per_length_kg_m[2];
   return given > 0.0 ? given * beam.reference_length_m : beam.mass_kg * beam.inertia_z_m4 / beam.area_m2;

@@ -22,6 +22,12 @@ struct SectionalStiffness {
 
 SectionalStiffness sectional_stiffness(const BeamElement& beam, const Material& material);
 
+// The share of sectional_stiffness that is proportional to the material's E (at E(T_ref)): the
+// products with E, and with a shear modulus derived from E (E / 2.6). Given stiffnesses and a
+// given shear modulus do not follow a temperature table's E(T) (docs/theory.md,
+// "Temperature-dependent material properties").
+SectionalStiffness youngs_share(const BeamElement& beam, const Material& material);
+
 // 2D: the rotary inertia of the whole beam about local z (kg·m²), J_zz L0 or m I_z / A (B8).
 double rotary_inertia_2d_kg_m2(const BeamElement& beam);
 

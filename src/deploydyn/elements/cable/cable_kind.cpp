@@ -6,6 +6,7 @@
 
 #include "deploydyn/elements/cable/cable.hpp"
 #include "deploydyn/elements/cable/cable_entry.hpp"
+#include "deploydyn/elements/heated_material.hpp"
 #include "deploydyn/elements/local_element_group.hpp"
 #include "deploydyn/elements/switching_group.hpp"
 #include "deploydyn/model/dof_map.hpp"
@@ -28,6 +29,7 @@ struct CableRecord {
     bar::State<D> bar;
     bar::Section section;
     double rest_length_rate_m_s = 0.0;  // L̇0: reeling, which the material damping leaves alone
+    HeatedMaterial material;            // where E or α follows the temperature
   };
 
   std::array<int, kDofs> dofs{};
@@ -35,6 +37,7 @@ struct CableRecord {
   double area_m2 = 0.0;            // A, for the stress N/A
   double mass_kg = 0.0;
   double expansion_per_C = 0.0;                        // α
+  MaterialLaw law;                                     // E(T), ε_t(T) when tables give them
   double damping_time_s = 0.0;                         // τ of the material damping
   double initial_rest_length_m = 0.0;                  // L0(0): the length scale
   const TimeFunction* rest_length_m = nullptr;         // L0(t), in the model
@@ -43,11 +46,23 @@ struct CableRecord {
   double thermal_strain(double t) const { return expansion_per_C * temperature_change_C->value(t); }
 
   State evaluate(const Vector& q, double t, double thermal_factor) const {
+    if (law.varies()) {
+      const HeatedMaterial m = HeatedMaterial::read(law, *temperature_change_C, t, thermal_factor);
+      const bar::Section section{m.at.youngs_modulus_Pa * area_m2, rest_length_m->value(t),
+                                 bar::ForceLaw::tension_only, damping_time_s};
+      return {bar::evaluate<D>(q.template head<D>(), q.template tail<D>(), section, m.at.thermal_strain),
+              section, rest_length_m->derivative(t), m};
+    }
     const bar::Section section{axial_stiffness_N, rest_length_m->value(t), bar::ForceLaw::tension_only,
                                damping_time_s};
     return {bar::evaluate<D>(q.template head<D>(), q.template tail<D>(), section,
                              thermal_factor * thermal_strain(t)),
-            section, rest_length_m->derivative(t)};
+            section, rest_length_m->derivative(t), {}};
+  }
+  // ∂f/∂T with tables: through ε_t and E(T), as the bar's.
+  Vector force_per_temperature(const State& s) const {
+    return bar::internal_force_per_temperature<D>(s.bar, s.section, s.material.at.expansion_per_C,
+                                                  s.material.at.youngs_modulus_slope_Pa_C * area_m2);
   }
   bool damped() const { return damping_time_s > 0.0; }
   Vector damping_force(const State& s, const Vector& v) const {
@@ -59,10 +74,15 @@ struct CableRecord {
   Vector internal_force(const State& s) const { return bar::internal_force<D>(s.bar, s.section); }
   // As the bar's: the factor scales ε_t (theory.md, "Cables", Eq. C4).
   Vector thermal_force_derivative(const State& s, double t) const {
+    if (law.varies()) return temperature_change_C->value(t) * force_per_temperature(s);
     return thermal_strain(t) * bar::internal_force_per_thermal_strain<D>(s.bar, s.section);
   }
   // ∂f/∂t through ε_t(t) = α ΔT(t) and through L0(t) (Eq. C5).
   Vector thermal_force_rate(const State& s, double t) const {
+    if (law.varies()) {
+      return s.material.temperature_rate_C_s(*temperature_change_C, t) * force_per_temperature(s) +
+             rest_length_m->derivative(t) * cable::internal_force_per_rest_length<D>(s.bar, s.section);
+    }
     return expansion_per_C * temperature_change_C->derivative(t) *
                bar::internal_force_per_thermal_strain<D>(s.bar, s.section) +
            rest_length_m->derivative(t) *
@@ -149,6 +169,7 @@ template <int D>
 std::unique_ptr<ElementGroup> make_cables(const Model& model, const DofMap& dofs) {
   std::vector<CableRecord<D>> records;
   records.reserve(model.cables.size());
+  const double reference_C = reference_temperature_C(model);
   for (const CableElement& e : model.cables) {
     const Material& material = model.materials[e.material];
     CableRecord<D>& cable = records.emplace_back();
@@ -160,6 +181,7 @@ std::unique_ptr<ElementGroup> make_cables(const Model& model, const DofMap& dofs
     cable.area_m2 = e.area_m2;
     cable.mass_kg = e.mass_kg;
     cable.expansion_per_C = material.expansion_per_C;
+    cable.law = MaterialLaw(material, reference_C);
     cable.damping_time_s = material.damping_time_s;
     cable.initial_rest_length_m = e.rest_length_m.value(0.0);
     cable.rest_length_m = &e.rest_length_m;

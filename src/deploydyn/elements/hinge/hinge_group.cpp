@@ -578,7 +578,8 @@ std::unique_ptr<ElementGroup> make_hinge_group(const Model& model, const DofMap&
     }
     const Material& material = model.materials[member->material];
     r.pin_member = PinMember{{material.youngs_modulus_Pa * member->area_m2, member->reference_length_m},
-                             material.expansion_per_C, &member->temperature_change_C};
+                             material.expansion_per_C, &member->temperature_change_C,
+                             MaterialLaw(material, reference_temperature_C(model)), member->area_m2};
   }
   return std::make_unique<HingeGroup>(std::move(records), std::move(labels), !model.drivers.empty());
 }

@@ -42,10 +42,19 @@ PinForce HingeRecord::pin_force(const HingeVector& q, double t) const {
   if (!pin_member) return p;
   const PinMember& m = *pin_member;
   const Eigen::Vector3d u = arm(q, dimension, 0);
-  const double l0 = m.section.reference_length_m, ea = m.section.axial_stiffness_N;
+  const double l0 = m.section.reference_length_m;
+  double ea = m.section.axial_stiffness_N;
+  double thermal_strain = 0.0;
+  if (m.law.varies()) {
+    const MaterialAt at = m.law.at(m.temperature_change_C->value(t));
+    ea = at.youngs_modulus_Pa * m.area_m2;
+    thermal_strain = at.thermal_strain;
+  } else {
+    thermal_strain = m.expansion_per_C * m.temperature_change_C->value(t);
+  }
   const double length = u.norm();
   const double strain = (length * length - l0 * l0) / (2.0 * l0 * l0);
-  const double pk2 = ea * (strain - m.expansion_per_C * m.temperature_change_C->value(t));
+  const double pk2 = ea * (strain - thermal_strain);
   const double force = pk2 * length / l0;
   p.magnitude_N = std::abs(force);
   const double sign = force >= 0.0 ? 1.0 : -1.0;

@@ -4,6 +4,7 @@
 //   bars:       unknowns [x_A, x_H, x_B] (D each), θ from constraints/hinge_angle.hpp,
 //               continued from the initial angle so that it runs smoothly through ±π;
 //               |N| = |axial force| of the bar A–H: N = S l / L0, S = EA (ε − α ΔT),
+//               (EA = E(T) A and ε_t = ∫α dT with temperature tables: model/material_law.hpp),
 //               ∂N/∂u = (EA l / L0³ + S / (L0 l)) u  with u = x_A − x_H.
 //   rotations:  unknowns [rz_A, rz_B], θ = rz_B − rz_A (linear), no pin force.
 
@@ -14,6 +15,7 @@
 #include "deploydyn/constraints/hinge_angle.hpp"
 #include "deploydyn/elements/bar/bar.hpp"
 #include "deploydyn/elements/hinge/hinge_element.hpp"
+#include "deploydyn/model/material_law.hpp"
 #include "deploydyn/model/time_function.hpp"
 
 namespace deploydyn {
@@ -28,6 +30,8 @@ struct PinMember {
   bar::Section section;
   double expansion_per_C = 0.0;
   const TimeFunction* temperature_change_C = nullptr;
+  MaterialLaw law;      // E(T), ε_t(T) when tables give them (then EA = E(T) A)
+  double area_m2 = 0.0;
 };
 
 // θ and its derivatives at one configuration.
