@@ -7,12 +7,16 @@
 //   BM_ThermalStep    the coupling's whole step (before_step + after_step): every member's
 //                     heat balance and ΔT(t), the shadows recomputed; `gradients:1` also the beams'
 //                     sun-to-shade differences
+//   BM_ThermalStepOnMotion  the same with `every: auto`, the structure drifting 0.2 mm a step
+//                     across the sun: the shadows recast every 13th step
 // Arguments: roofs as BM_RoofStep's (units, trusses: 10 × 3, 10 × 26, 10 × 263 units of
 // 10 trusses, ≈ 10², 10³, 10⁴ bars, and the planar 10⁴-unit roof); units 0 the scissor ring
 // example, 1000 the arch of BM_ScissorStep.
 // Sun oblique to every member family; steel tubes 20 mm × 0.8 mm.
 
 #include <benchmark/benchmark.h>
+
+#include <Eigen/Geometry>
 
 #include <vector>
 
@@ -86,16 +90,30 @@ Eigen::VectorXd node_positions(const Model& model) {
   return q;
 }
 
-void time_thermal_step(benchmark::State& state, Model model) {
+// With `step_across_sun_m` > 0 every node moves by that much a step ⟂ to the sun (a rigid
+// drift: the shadows stay, but every: auto must see the motion), to time `every: auto`.
+void time_thermal_step(benchmark::State& state, Model model, double step_across_sun_m = 0.0) {
+  if (step_across_sun_m > 0.0) model.environment->shadows->on_motion = true;
   thermal::ThermalCoupling coupling(model);
   MotionState at;
   at.q = node_positions(model);
+  const DofMap dofs(model);
+  const Eigen::Vector3d sun = model.environment->orbit.sun_direction.normalized();
+  const Eigen::Vector3d drift = step_across_sun_m * sun.cross(Eigen::Vector3d::UnitZ()).normalized();
   const double h = 1e-3;
+  const long updates_before = coupling.n_shadow_updates();
   for (auto _ : state) {
     coupling.before_step(at, h);
+    if (step_across_sun_m > 0.0) {
+      for (int node = 0; node < model.n_nodes(); ++node) {
+        for (int k = 0; k < model.dimension; ++k) at.q[dofs.index(node, k)] += drift[k];
+      }
+    }
     coupling.after_step(at, false);
   }
   state.counters["members"] = static_cast<double>(coupling.member_names().size());
+  state.counters["shadow_updates_per_step"] = benchmark::Counter(
+      static_cast<double>(coupling.n_shadow_updates() - updates_before), benchmark::Counter::kAvgIterations);
   double shaded = 0.0;
   for (const double f : coupling.shadowed_fractions()) shaded += f;
   state.counters["mean_shadowed"] = shaded / static_cast<double>(coupling.member_names().size());
@@ -133,6 +151,11 @@ void BM_Shadows(benchmark::State& state) {
 void BM_ThermalStep(benchmark::State& state) {
   time_thermal_step(state, roof(static_cast<int>(state.range(0)), static_cast<int>(state.range(1))));
 }
+// every: auto on the roofs drifting 0.2 mm a step across the sun (δ = r/4 = 2.5 mm: a recast
+// every 13th step).
+void BM_ThermalStepOnMotion(benchmark::State& state) {
+  time_thermal_step(state, roof(static_cast<int>(state.range(0)), static_cast<int>(state.range(1))), 2e-4);
+}
 void BM_ScissorShadows(benchmark::State& state) { time_shadows(state, arch(static_cast<int>(state.range(0)), false)); }
 void BM_ScissorThermalStep(benchmark::State& state) {
   time_thermal_step(state, arch(static_cast<int>(state.range(0)), state.range(1) != 0));
@@ -140,6 +163,7 @@ void BM_ScissorThermalStep(benchmark::State& state) {
 
 BENCHMARK(BM_Shadows)->Apply(roof_sizes);
 BENCHMARK(BM_ThermalStep)->Apply(roof_sizes);
+BENCHMARK(BM_ThermalStepOnMotion)->Apply(roof_sizes);
 BENCHMARK(BM_ScissorShadows)->ArgName("units")->Arg(0)->Arg(1000)->Unit(benchmark::kMicrosecond);
 BENCHMARK(BM_ScissorThermalStep)
     ->ArgNames({"units", "gradients"})
