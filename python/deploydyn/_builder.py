@@ -289,7 +289,7 @@ class ModelBuilder:
         """ΔT(t) (°C) of every bar without its own; reference_temperature_C: the stress-free
         temperature T_ref (°C, default 20) at which the materials' temperature tables are read
         for ΔT = 0."""
-        if dT is not None:
+        if dT is not None or reference_temperature_C is None:  # thermal(None) or thermal(): dT is wrong
             self._section("thermal")["dT"] = checked.time_function("ModelBuilder.thermal", "dT", dT)
         if reference_temperature_C is not None:
             self._section("thermal")["reference_temperature_C"] = checked.number(

@@ -46,6 +46,13 @@ std::vector<std::string> rows_from(const std::filesystem::path& folder, double t
   return rows;
 }
 
+std::vector<std::string> cells_of(const std::string& row) {
+  std::vector<std::string> cells;
+  std::istringstream in(row);
+  for (std::string cell; std::getline(in, cell, ',');) cells.push_back(cell);
+  return cells;
+}
+
 nlohmann::json summary_of(const std::filesystem::path& folder) {
   return nlohmann::json::parse(read_text(folder / "summary.json"));
 }
@@ -178,6 +185,41 @@ TEST(Restart, FromAChosenOutputTime) {
   ASSERT_EQ(run_restarted(load_model(parallel, parse_overrides({"analysis.end=0.6"})), on, {whole, 0.25, false}).status,
             RunStatus::completed);
   EXPECT_EQ(rows_from(on, 0.25), rows_from(whole, 0.25));
+}
+
+// A run restarted with material damping its first run had not (--set materials.steel.damping):
+// it takes the rate forces at the state (the first run kept none) and its energy balance
+// kinetic + strain − external + dissipated holds from the restart on, with energy dissipated.
+TEST(Restart, WithDampingAddedKeepsItsEnergyBalance) {
+  ScratchFolder scratch("restart_damping_added");
+  const std::string parallel = testing::example_path("parallel.yaml");
+  const std::filesystem::path first = scratch.path() / "first", damped = scratch.path() / "damped";
+  ASSERT_EQ(run_to_folder(load_model(parallel, parse_overrides({"analysis.end=0.5"})), first).status,
+            RunStatus::completed);
+  const Model with_damping =
+      load_model(parallel, parse_overrides({"analysis.end=1.0", "materials.steel.damping={loss_factor: 0.05, frequency: 50}"}));
+  ASSERT_EQ(run_restarted(with_damping, damped, {first, std::nullopt, false}).status, RunStatus::completed);
+  const std::vector<std::string> rows = rows_from(damped, 0.5);
+  ASSERT_GT(rows.size(), 50u);
+  const std::vector<std::string> header = cells_of(rows[0]);
+  const auto column = [&](const std::string& name) {
+    return static_cast<std::size_t>(std::find(header.begin(), header.end(), name) - header.begin());
+  };
+  const std::size_t kinetic = column("kinetic"), strain = column("strain_energy"), external = column("external_work"),
+                    dissipated = column("dissipated");
+  ASSERT_LT(dissipated, header.size());
+  double first_balance = 0.0, largest_change = 0.0, scale = 0.0, last_dissipated = 0.0;
+  for (std::size_t i = 1; i < rows.size(); ++i) {
+    const std::vector<std::string> cells = cells_of(rows[i]);
+    const auto at = [&](std::size_t c) { return std::stod(cells.at(c)); };
+    const double balance = at(kinetic) + at(strain) - at(external) + at(dissipated);
+    if (i == 1) first_balance = balance;
+    largest_change = std::max(largest_change, std::abs(balance - first_balance));
+    scale = std::max({scale, std::abs(at(kinetic)), std::abs(at(external))});
+    last_dissipated = at(dissipated);
+  }
+  EXPECT_GT(last_dissipated, 0.0);
+  EXPECT_LT(largest_change, 1e-3 * scale) << "scale " << scale << " J";
 }
 
 // What a restart refuses, each naming the option.

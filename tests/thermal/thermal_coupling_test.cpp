@@ -97,6 +97,16 @@ TEST(ThermalCoupling, BoomLeavingEclipseCoolsEndOnAndWarmsBroadside) {
 
 // Two steel tubes (d = 0.02 m) 1 m long in orbit, the sun straight above (+z): `lit` at z = 0,
 // `cover` 0.1 m above it.
+// At rest where the model file places the nodes (3D models of point nodes).
+MotionState at_file_positions(const Model& model, const DofMap& dofs) {
+  MotionState state;
+  state.q = Eigen::VectorXd::Zero(dofs.n_dofs());
+  for (int node = 0; node < model.n_nodes(); ++node) {
+    for (int k = 0; k < 3; ++k) state.q[dofs.index(node, k)] = model.nodes[node].position_m[k];
+  }
+  return state;
+}
+
 Model shaded_pair(const std::string& shadows) {
   return load_model_from_string(R"(
 nodes: {A: [0, 0, 0], B: [1, 0, 0], C: [0, 0, 0.1], D: [1, 0, 0.1]}
@@ -135,11 +145,7 @@ analysis: {type: static, end: 100, step: 1}
 std::pair<std::vector<double>, HeatTally> heat_for(Model model, double duration_s) {
   ThermalCoupling coupling(model);
   const DofMap dofs(model);
-  MotionState state;
-  state.q = Eigen::VectorXd::Zero(dofs.n_dofs());
-  for (int node = 0; node < 3; ++node) {
-    for (int k = 0; k < 3; ++k) state.q[dofs.index(node, k)] = model.nodes[node].position_m[k];
-  }
+  MotionState state = at_file_positions(model, dofs);
   for (double t = 0.0; t < duration_s; t += 10.0) {
     state.time_s = t;
     coupling.before_step(state, 10.0);
@@ -179,11 +185,7 @@ TEST(ThermalCoupling, AMemberLeavingAnothersShadowTakesTheSunAsTheGeometrySays) 
   ASSERT_TRUE(coupling.has_shadows());
   EXPECT_EQ(coupling.shadowed_fractions(), (std::vector<double>{1.0, 0.0}));  // at t = 0
   const DofMap dofs(model);
-  MotionState state;
-  state.q = Eigen::VectorXd::Zero(dofs.n_dofs());
-  for (int node = 0; node < 4; ++node) {
-    for (int k = 0; k < 3; ++k) state.q[dofs.index(node, k)] = model.nodes[node].position_m[k];
-  }
+  MotionState state = at_file_positions(model, dofs);
   // The cover slides sideways at 1 mm/s: its shadow leaves the lit tube's strip |y| ≤ r after
   // 2 r / v = 20 s. Shadows are cast from the step's start, the sun taken over the step.
   const double speed_m_s = 1e-3, radius_m = 0.01, full_W = 0.5 * 1361.0 * 0.02 * 1.0;
@@ -223,11 +225,7 @@ TEST(ThermalCoupling, ShadowsEveryNStepsKeepTheLastFractionsBetween) {
   Model model = shaded_pair("shadows: {every: 5}");
   ThermalCoupling coupling(model);
   const DofMap dofs(model);
-  MotionState state;
-  state.q = Eigen::VectorXd::Zero(dofs.n_dofs());
-  for (int node = 0; node < 4; ++node) {
-    for (int k = 0; k < 3; ++k) state.q[dofs.index(node, k)] = model.nodes[node].position_m[k];
-  }
+  MotionState state = at_file_positions(model, dofs);
   for (const int node : {2, 3}) state.q[dofs.index(node, 1)] = 1.0;  // the cover moved far away
   for (int step = 1; step <= 5; ++step) {
     coupling.before_step(state, 1.0);
@@ -246,11 +244,7 @@ TEST(ThermalCoupling, ShadowsOnMotionFollowTheCoverWithinOneSampleColumn) {
   ASSERT_TRUE(model.environment->shadows->on_motion);
   ThermalCoupling coupling(model);
   const DofMap dofs(model);
-  MotionState state;
-  state.q = Eigen::VectorXd::Zero(dofs.n_dofs());
-  for (int node = 0; node < 4; ++node) {
-    for (int k = 0; k < 3; ++k) state.q[dofs.index(node, k)] = model.nodes[node].position_m[k];
-  }
+  MotionState state = at_file_positions(model, dofs);
   const double step_m = 1e-4, radius_m = 0.01, tolerance_m = radius_m / 8;
   const int n_steps = 250;  // 25 mm: out of the shadow
   for (int step = 1; step <= n_steps; ++step) {

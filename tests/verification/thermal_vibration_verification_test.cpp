@@ -110,7 +110,9 @@ struct TubeRun {
 
 TubeRun run_tube(const Tube& tube, double span_m, int n_elements, double step_s, double end_s) {
   const Model model = load_model_from_string(tube_model(tube, span_m, n_elements, step_s, end_s), "boley_tube.yaml");
-  testing::ScratchFolder folder("boley_tube");
+  // A folder of its own per test and run: ctest runs this file's tests at once.
+  const std::string test = ::testing::UnitTest::GetInstance()->current_test_info()->name();
+  testing::ScratchFolder folder(fmt::format("boley_{}_{}_{:.0f}mm_{:.0f}us", test, n_elements, 1e3 * span_m, 1e6 * step_s));
   const RunReport report = run_to_folder(model, folder.path());
   EXPECT_EQ(report.status, RunStatus::completed) << report.message;
   const testing::CsvTable history = testing::read_csv_table(folder.path() / "history.csv");

@@ -105,6 +105,12 @@ class WorkCounter {
     tally_ = r.work;
     applied_ = r.applied_force_N;
     lost_ = r.lost_force_N;
+    // Restarted with dissipation the first run had not (damping added with --set): that run
+    // kept no rate forces, so they are taken at the state.
+    if (dissipative_ && lost_.size() != applied_.size()) {
+      Eigen::VectorXd applied;
+      forces(r.motion, applied, lost_);
+    }
   }
   const Eigen::VectorXd& applied_force() const { return applied_; }
   const Eigen::VectorXd& lost_force() const { return lost_; }
