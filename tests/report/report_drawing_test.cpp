@@ -89,8 +89,9 @@ TEST(ReportDrawing, NodeMarkersNameSupportsAndDriversNodes) {
   const Model frame = load_model(std::string(DEPLOYDYN_SOURCE_DIR) + "/examples/beams/frame3d.yaml");
   EXPECT_EQ(node_markers(frame)["supports"], json::array({pair(node(frame, "A"), "clamped")}));
   const Model mast = load_model(std::string(DEPLOYDYN_SOURCE_DIR) + "/examples/cables/guyed_mast.yaml");
-  EXPECT_EQ(node_markers(mast)["supports"].size(), 3u);
-  for (const auto& s : node_markers(mast)["supports"]) EXPECT_EQ(s[1], "fixed");
+  const json mast_markers = node_markers(mast);  // held: a range-for over a temporary's member dangles
+  EXPECT_EQ(mast_markers["supports"].size(), 3u);
+  for (const auto& s : mast_markers["supports"]) EXPECT_EQ(s[1], "fixed");
 }
 
 // The stress colouring at every frame: a bar's N/A, a beam's extreme fibre N/A ± |M|/W with W
