@@ -266,14 +266,16 @@ class ModelBuilder:
         return self
 
     def load(self, node, force=None, factor=None, moment=None):
-        """A nodal force (N) and, in 2D on a beam's node, a moment (N·m, counter-clockwise),
-        times factor(t) (default 1)."""
+        """A nodal force (N) and, on a beam's node, a moment (N·m): in 2D a number
+        (counter-clockwise about z), in 3D a vector [mx, my, mz] fixed in space; both times
+        factor(t) (default 1)."""
         where = "ModelBuilder.load"
         spec = {"node": checked.name(where, "node", node)}
         if force is not None:
             spec["force"] = checked.numbers(where, "force", force)
         if moment is not None:
-            spec["moment"] = checked.number(where, "moment", moment)
+            spec["moment"] = (checked.number(where, "moment", moment) if checked.is_number(moment)
+                              else checked.numbers(where, "moment", moment))
         if factor is not None:
             spec["factor"] = checked.time_function(where, "factor", factor)
         self._section("loads", list).append(spec)

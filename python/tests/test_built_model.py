@@ -170,6 +170,29 @@ def test_end_moment_on_a_beam_node_is_read_and_a_bar_node_rejects_it():
         builder.load("C", moment=2.0).build()
 
 
+def test_a_moment_vector_bends_a_3d_cantilever_into_its_arc():
+    # End moment about z, M L/EI = 1 rad: the tip on the arc (L sin φ/φ, L (1 − cos φ)/φ)
+    # (docs/theory.md, "Moments on 3D beam nodes"); 16 elements, whose curvature is second
+    # order in their turn, are within 2e-3 L of it.
+    inertia, n = 1e-10, 16
+    builder = deploydyn.ModelBuilder("curled").material("steel", E=E, density=7850)
+    for i in range(n + 1):
+        builder.node(f"N{i}", i / n, 0, 0)
+    for i in range(n):
+        builder.beam(f"b{i}", f"N{i}", f"N{i + 1}", area=AREA, inertia_z=inertia, inertia_y=4 * inertia,
+                     torsion=5 * inertia, orientation=[0, 1, 0], material="steel")
+    phi = 1.0
+    model = (builder.support("N0", fix=["x", "y", "z", "rotation"])
+             .load(f"N{n}", moment=[0, 0, phi * E * inertia], factor=deploydyn.smooth_step(0, 0, 1, 1))
+             .analysis(type="static", end=1.0, step=0.25).build())
+    assert model.to_yaml().count("moment:") == 1
+    result = model.run()
+    assert result[f"x.N{n}"][-1] == pytest.approx(math.sin(phi) / phi, abs=2e-3)
+    assert result[f"y.N{n}"][-1] == pytest.approx((1 - math.cos(phi)) / phi, abs=2e-3)
+    with pytest.raises(TypeError, match="moment"):
+        deploydyn.ModelBuilder("x").load("A", moment="1")
+
+
 def test_pin_joint_and_hinge_angle_driver_move_a_two_bar_chain():
     # Crank H–B turned by 0.3 rad about H by a hinge_angle driver measured from H→A; bar C–D is
     # pinned to the crank's tip (C at B) and slides with D along y = 1.

@@ -287,6 +287,28 @@ TEST(ModelRoundTrip, PaperExamples) {
 // The integrator is written whatever it is, so that a reload runs the same scheme: a file
 // without one gets the default (generalized-α, ρ∞ = 0.9) written out, and the paper's Newmark
 // (¼, ½), no longer the default, stays Newmark.
+// Moments on beam nodes: a number about z in 2D, a vector fixed in space in 3D.
+TEST(ModelRoundTrip, MomentsOnBeamNodes) {
+  const Model plane = load_model_from_string(R"(
+nodes: {A: [0, 0], B: [1, 0]}
+materials: {steel: {E: 2.0e11, density: 7850}}
+elements: {ab: {type: beam, nodes: [A, B], area: 1.0e-4, inertia_z: 1.0e-8, material: steel}}
+supports: [{node: A, fix: [x, y, rotation]}]
+loads: [{node: B, moment: -3.5, factor: {type: smooth_step, t0: 0, v0: 0, t1: 1, v1: 1}}]
+)", "plane.yaml");
+  EXPECT_EQ(plane.loads[0].moment_Nm, Eigen::Vector3d(0, 0, -3.5));
+  expect_round_trip(plane);
+  const Model space = load_model_from_string(R"(
+nodes: {A: [0, 0, 0], B: [1, 0, 0]}
+materials: {steel: {E: 2.0e11, density: 7850}}
+elements: {ab: {type: beam, nodes: [A, B], area: 1.0e-4, inertia_y: 1.0e-8, inertia_z: 1.0e-8, torsion: 2.0e-8, material: steel, orientation: [0, 0, 1]}}
+supports: [{node: A, fix: [x, y, z, rotation]}]
+loads: [{node: B, moment: [1.5, 0, -2], force: [0, 0, -10]}]
+)", "space.yaml");
+  EXPECT_EQ(space.loads[0].moment_Nm, Eigen::Vector3d(1.5, 0, -2));
+  expect_round_trip(space);
+}
+
 TEST(ModelRoundTrip, IntegratorIsWrittenSoThatAReloadRunsTheSameScheme) {
   const std::string base = R"(
 nodes: {A: [0, 0], B: [1, 0]}
@@ -648,7 +670,7 @@ loads:
   ASSERT_EQ(model.n_beams(), 2);
   EXPECT_TRUE(model.supports[0].rotation);
   EXPECT_EQ(model.drivers[0].element, 0);  // the first (only) bar
-  EXPECT_EQ(model.loads[1].moment_Nm, -1.25);
+  EXPECT_EQ(model.loads[1].moment_Nm, Eigen::Vector3d(0, 0, -1.25));
   EXPECT_NEAR(model.beams[0].shear_modulus_Pa, 2.1e11 / 2.6, 1e-3);
   expect_round_trip(model);
 }

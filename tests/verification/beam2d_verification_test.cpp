@@ -369,7 +369,7 @@ TEST(VerificationBeam2dElastica, EndMomentCurlsTheCantileverIntoACircle) {
   clamp(model, 0);
   model.loads.push_back({n, Eigen::Vector3d::Zero(),
                          TimeFunction(TimeFunction::Table{{0.0, 1.0}, {0.0, 1.0}}),
-                         2.0 * kPi * s.bending_stiffness() / kLength_m});
+                         Eigen::Vector3d(0.0, 0.0, 2.0 * kPi * s.bending_stiffness() / kLength_m)});
   const Equilibrium e = equilibrium(model, 1.0);
   double distance = kNoResult, rotation_error = kNoResult;
   if (e.converged) {

@@ -204,7 +204,7 @@ std::unique_ptr<Constraint> make_driver(const Driver& driver, const Model& model
 
 }  // namespace
 
-Assembler::Assembler(const Model& model) : model_(model), dofs_(model) {
+Assembler::Assembler(const Model& model) : model_(model), dofs_(model), frame_moments_(model, dofs_) {
   for (const ElementKind* kind : element_kinds()) {
     groups_.push_back(kind->make_group(model, dofs_));
     switching_.push_back(dynamic_cast<const SwitchingGroup*>(groups_.back().get()));
@@ -267,6 +267,9 @@ Assembler::Assembler(const Model& model) : model_(model), dofs_(model) {
 
   for (const auto& group : groups_) n_matrix_entries_ += group->n_matrix_entries();
   for (const Node& node : model.nodes) n_matrix_entries_ += node.point_mass_kg != 0.0 ? model.dimension : 0;
+  frame_moments_.for_each_block(0.0, 0.0, [&](std::span<const int> rows, std::span<const int> cols, const auto&) {
+    n_matrix_entries_ += static_cast<int>(rows.size() * cols.size());
+  });
   for (const auto& c : constraints_) {
     const int n_local = static_cast<int>(c->dofs().size());
     if (c->n_equations() > kMaxConstraintEquations || n_local > kMaxConstraintDofs) {
@@ -326,6 +329,7 @@ void Assembler::static_residual_time_derivative(const Eigen::VectorXd& q, double
   for (std::size_t g = 0; g < groups_.size(); ++g) groups_[g]->add_thermal_force_rate(point(g, q, t), dr);
   // Gravity does not change with t; the nodal loads change with their factors.
   add_nodal_loads([&](const NodalLoad& load) { return -load.factor.derivative(t); }, dr);
+  frame_moments_.add_force_rate(q, t, -1.0, dr);
   Eigen::VectorXd local;
   for (std::size_t c = 0; c < constraints_.size(); ++c) {
     const Constraint& con = *constraints_[c];
@@ -358,8 +362,14 @@ void Assembler::add_nodal_loads(auto&& factor_of, Eigen::VectorXd& f) const {
     for (int axis = 0; axis < model_.dimension; ++axis) {
       f[dofs_.index(load.node, axis)] += factor * load.force_N[axis];
     }
-    if (load.moment_Nm != 0.0) f[dofs_.index(load.node, "rz")] += factor * load.moment_Nm;
+    // 3D moments act on a frame and depend on q: frame_moments_.
+    if (model_.dimension == 2 && load.moment_Nm.z() != 0.0) f[dofs_.index(load.node, "rz")] += factor * load.moment_Nm.z();
   }
+}
+
+void Assembler::applied_loads(const Eigen::VectorXd& q, double t, Eigen::VectorXd& f) const {
+  external_force(t, f);
+  frame_moments_.add_force(q, t, 1.0, f);
 }
 
 void Assembler::mass_times(const Eigen::VectorXd& a, Eigen::VectorXd& out) const {
@@ -553,6 +563,7 @@ void Assembler::for_each_matrix_block(const Eigen::VectorXd& q, double t,
       emit(std::span<const int>(&i, 1), std::span<const int>(&i, 1), m);
     }
   }
+  frame_moments_.for_each_block(t, -w.stiffness * w.loads, emit);  // r = … − f_M
   LocalVector phi;
   LocalJacobian jacobian;
   std::array<int, kMaxConstraintEquations> rows{};

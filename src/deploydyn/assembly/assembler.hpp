@@ -17,6 +17,7 @@
 #include <utility>
 #include <vector>
 
+#include "deploydyn/assembly/frame_moments.hpp"
 #include "deploydyn/assembly/linear_system.hpp"
 #include "deploydyn/assembly/rayleigh_damping.hpp"
 #include "deploydyn/constraints/constraint.hpp"
@@ -69,7 +70,17 @@ class Assembler {
   void static_residual_time_derivative(const Eigen::VectorXd& q, double t,
                                        const Eigen::VectorXd& lambda, Eigen::VectorXd& dr,
                                        Eigen::VectorXd& dphi) const;
+  // f_ext(t): gravity, nodal forces and 2D moments, the loads that do not depend on q.
   void external_force(double t, Eigen::VectorXd& f) const;
+  // Moments on 3D beam nodes act on the frames, so their generalized forces f_M(q, t) depend
+  // on q (assembly/frame_moments.hpp): a residual adds them at its q, f += scale · f_M, with
+  // the scale its loads have; the matrix takes their load stiffness (MatrixWeights::loads).
+  bool has_frame_moments() const { return !frame_moments_.empty(); }
+  void add_frame_moments(const Eigen::VectorXd& q, double t, double scale, Eigen::VectorXd& f) const {
+    frame_moments_.add_force(q, t, scale, f);
+  }
+  // Every load at q: f_ext(t) + f_M(q, t) (the work the loads do).
+  void applied_loads(const Eigen::VectorXd& q, double t, Eigen::VectorXd& f) const;
   void mass_times(const Eigen::VectorXd& a, Eigen::VectorXd& out) const;  // M a
 
   // The forces that depend on the rates (dampers, sliding friction, material and Rayleigh
@@ -141,6 +152,9 @@ class Assembler {
     double constraint_scale = 1.0;
     double damping = 0.0;
     const Eigen::VectorXd* rates = nullptr;
+    // The loads' share of the residual (a continuation's or load ramp's factor; 0 without
+    // loads): weights the load stiffness −∂f_M/∂q of moments on 3D beam nodes.
+    double loads = 1.0;
   };
   // Writes the values into `system`, which must have been analysed with matrix_entries()
   // (assembly/linear_system_factory.hpp does that).
@@ -208,6 +222,7 @@ class Assembler {
                              const MatrixWeights& weights, Emit&& emit) const;
   const Model& model_;
   DofMap dofs_;
+  FrameMoments frame_moments_;
   std::vector<std::unique_ptr<ElementGroup>> groups_;  // [kind of element_kinds()]
   std::vector<std::unique_ptr<Constraint>> constraints_;  // supports, joints, drivers, then the elements'
   std::vector<int> first_row_;                            // [constraint] → first λ row

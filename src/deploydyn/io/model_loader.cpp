@@ -1286,9 +1286,16 @@ class ModelReader {
       }
       if (force) load.force_N = vector(*force, "N");
       if (moment) {
-        if (model_.dimension == 3) moment->fail("moments on 3D beam nodes are not available yet");
         check_rotation_unknowns(*moment, load.node, "no rotation for a moment to act on");
-        load.moment_Nm = moment->number(Sign::any, "N·m");
+        if (model_.dimension == 2) {
+          if (!moment->is_scalar()) moment->fail("in 2D a moment is a number (N·m, counter-clockwise about z), not a list");
+          load.moment_Nm.z() = moment->number(Sign::any, "N·m");
+        } else {
+          if (moment->is_scalar()) {
+            moment->fail("in 3D a moment is a vector [mx, my, mz] (N·m, global axes, fixed in space)");
+          }
+          load.moment_Nm = vector(*moment, "N·m");
+        }
       }
       if (const auto factor = spec.find("factor")) load.factor = function(*factor);
       model_.loads.push_back(load);

@@ -498,7 +498,11 @@ void emit_boundary_conditions(YAML::Emitter& out, const Model& model) {
       out << model.nodes[load.node].name;
       emit_key(out, "force");
       emit_vector(out, load.force_N, model.dimension);
-      if (load.moment_Nm != 0.0) emit_number(out, "moment", load.moment_Nm);
+      if (model.dimension == 2 && load.moment_Nm.z() != 0.0) emit_number(out, "moment", load.moment_Nm.z());
+      if (model.dimension == 3 && !load.moment_Nm.isZero(0.0)) {
+        emit_key(out, "moment");
+        emit_vector(out, load.moment_Nm, 3);
+      }
       emit_key(out, "factor");
       emit_function(out, load.factor);
       out << YAML::EndMap;

@@ -119,12 +119,14 @@ constexpr bool drives_rotation(Driver::Kind kind) {
   return kind != Driver::Kind::coordinate && kind != Driver::Kind::length;
 }
 
-// External force on a node: force_N · factor(t); in 2D also a moment on a beam's node.
+// External force on a node: force_N · factor(t); also a moment on a beam's node, times factor(t).
 struct NodalLoad {
   int node = 0;
   Eigen::Vector3d force_N = Eigen::Vector3d::Zero();
   TimeFunction factor = TimeFunction::constant(1.0);
-  double moment_Nm = 0.0;  // 2D: about z, counter-clockwise, on the node's rotation rz
+  // N·m. 2D: only z, counter-clockwise, on the node's rotation rz. 3D: fixed in space (global
+  // axes), on the node's frame (assembly/frame_moments.hpp).
+  Eigen::Vector3d moment_Nm = Eigen::Vector3d::Zero();
 };
 
 enum class AnalysisType { quasi_static, dynamic, continuation, modal };

@@ -27,8 +27,8 @@ namespace {
 
 using nlohmann::ordered_json;
 
-// What one unit of μ is in the model's terms: ΔT (°C), the largest load entry (N), or 1 s of
-// the deployment time.
+// What one unit of μ is in the model's terms: ΔT (°C), the largest load entry (N, or N·m of a
+// moment), or 1 s of the deployment time.
 double parameter_unit(const Assembler& assembler) {
   const Model& model = assembler.model();
   if (model.analysis.continuation.parameter == PathParameter::thermal) {
@@ -37,7 +37,10 @@ double parameter_unit(const Assembler& assembler) {
   if (model.analysis.continuation.parameter == PathParameter::driver) return 1.0;
   Eigen::VectorXd external;
   assembler.external_force(0.0, external);
-  return external.size() > 0 ? external.cwiseAbs().maxCoeff() : 0.0;
+  double unit = external.size() > 0 ? external.cwiseAbs().maxCoeff() : 0.0;
+  // A 3D moment's entry, as a 2D moment's entry in f_ext is its N·m.
+  for (const NodalLoad& load : model.loads) unit = std::max(unit, load.moment_Nm.cwiseAbs().maxCoeff());
+  return unit;
 }
 
 const char* parameter_column(const Model& model) {

@@ -134,7 +134,7 @@ class WorkCounter {
 
  private:
   void forces(const MotionState& s, Eigen::VectorXd& applied, Eigen::VectorXd& lost) {
-    assembler_.external_force(s.time_s, applied);
+    assembler_.applied_loads(s.q, s.time_s, applied);
     assembler_.constraint_force(s.q, s.time_s, s.lambda, reaction_);
     applied -= reaction_;
     if (!dissipative_) return;

@@ -24,7 +24,7 @@ void consistent_accelerations(const Assembler& assembler, LinearSystem& system, 
   Eigen::VectorXd rhs(n + m);
   Eigen::VectorXd phi_t, bias, internal, external, rate;
   assembler.internal_force(state.q, t, 1.0, internal);
-  assembler.external_force(t, external);
+  assembler.applied_loads(state.q, t, external);
   assembler.rate_force(state.q, state.v, t, rate);
   assembler.constraint_rates(state.q, state.v, t, phi_t, bias);
   rhs.head(n) = external - internal - rate;

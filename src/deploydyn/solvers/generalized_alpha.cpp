@@ -62,6 +62,7 @@ class GeneralizedAlphaEquations final : public DiscreteEquations {
     // internal forces).
     two_cores_.run(q.size() >= kTwoCoreResidualDofs, inertia_and_constraints, internal_forces);
     r = inertia_ + internal_ - external_ + reaction_;
+    assembler_.add_frame_moments(q, t_, -1.0, r);
     if (rate_forces_) {  // dampers, friction: f_d(q, q̇(q)) at the step's end
       rates(q);
       assembler_.rate_force(q, rates_, t_, rate_force_);

@@ -19,6 +19,7 @@ double ParametrizedEquilibrium::residual(const Eigen::VectorXd& q, const Eigen::
   assembler_.constraints_and_force(q, t, lambda, phi, reaction_);
   const double load = load_factor(mu);
   r = internal_ - load * external_ + reaction_;
+  assembler_.add_frame_moments(q, t, -load, r);
   return std::max({internal_.lpNorm<Eigen::Infinity>(),
                    std::abs(load) * external_.lpNorm<Eigen::Infinity>(),
                    reaction_.lpNorm<Eigen::Infinity>()});
@@ -35,6 +36,7 @@ void ParametrizedEquilibrium::parameter_derivative(const Eigen::VectorXd& q,
     case PathParameter::load:
       assembler_.external_force(time_s_, dr);
       dr = -dr;
+      assembler_.add_frame_moments(q, time_s_, -1.0, dr);
       dphi.setZero(assembler_.n_equations());
       return;
     case PathParameter::driver:
@@ -46,8 +48,9 @@ void ParametrizedEquilibrium::parameter_derivative(const Eigen::VectorXd& q,
 void ParametrizedEquilibrium::matrix(const Eigen::VectorXd& q, const Eigen::VectorXd& lambda,
                                      double mu, double constraint_scale,
                                      LinearSystem& system) const {
-  assembler_.iteration_matrix(q, time_s(mu), thermal_factor(mu), lambda, {0.0, 1.0, constraint_scale},
-                              system);
+  Assembler::MatrixWeights weights{0.0, 1.0, constraint_scale};
+  weights.loads = load_factor(mu);
+  assembler_.iteration_matrix(q, time_s(mu), thermal_factor(mu), lambda, weights, system);
 }
 
 }  // namespace deploydyn

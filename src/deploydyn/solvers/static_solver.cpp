@@ -37,13 +37,15 @@ class StaticEquations final : public DiscreteEquations {
     }
     assembler_.constraints_and_force(q, t_, lambda, phi, reaction_);
     r = internal_ - external_ + reaction_;
+    if (external_loads_) assembler_.add_frame_moments(q, t_, -load_factor_, r);
     return std::max({internal_.lpNorm<Eigen::Infinity>(), external_.lpNorm<Eigen::Infinity>(),
                      reaction_.lpNorm<Eigen::Infinity>()});
   }
   void matrix(const Eigen::VectorXd& q, const Eigen::VectorXd& lambda,
               LinearSystem& system) override {
-    assembler_.iteration_matrix(q, t_, thermal_factor_, lambda, {mass_regularization_, 1.0, scale_},
-                                system);
+    Assembler::MatrixWeights weights{mass_regularization_, 1.0, scale_};
+    weights.loads = external_loads_ ? load_factor_ : 0.0;
+    assembler_.iteration_matrix(q, t_, thermal_factor_, lambda, weights, system);
   }
   double constraint_scale() const override { return scale_; }
 
@@ -124,7 +126,7 @@ StaticResult apply_initial_loads(const Assembler& assembler, const AnalysisOptio
                                  LinearSystem& system, MotionState& state, const RunControl& control) {
   Eigen::VectorXd loads;
   assembler.external_force(state.time_s, loads);
-  if (loads.isZero()) {
+  if (loads.isZero() && !assembler.has_frame_moments()) {
     StaticResult none;
     none.path_factor = 1.0;
     return none;
