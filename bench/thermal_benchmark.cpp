@@ -8,7 +8,9 @@
 //                     heat balance and ΔT(t), the shadows recomputed; `gradients:1` also the beams'
 //                     sun-to-shade differences
 //   BM_ThermalStepOnMotion  the same with `every: auto`, the structure drifting 0.2 mm a step
-//                     across the sun: the shadows recast every 13th step
+//                     across the sun: the shadows recast every 13th step (also
+//                     BM_ScissorThermalStepOnMotion)
+//   BM_ScissorRingStep  the ring example's mechanical step, to compare its thermal step with
 // Arguments: roofs as BM_RoofStep's (units, trusses: 10 × 3, 10 × 26, 10 × 263 units of
 // 10 trusses, ≈ 10², 10³, 10⁴ bars, and the planar 10⁴-unit roof); units 0 the scissor ring
 // example, 1000 the arch of BM_ScissorStep.
@@ -25,7 +27,9 @@
 #include "deploydyn/model/dof_map.hpp"
 #include "deploydyn/thermal/member_shadows.hpp"
 #include "deploydyn/thermal/thermal_coupling.hpp"
+#include "support/allocation_counter.hpp"
 #include "support/cold_roof.hpp"
+#include "support/stepping_run.hpp"
 
 namespace deploydyn {
 namespace {
@@ -102,6 +106,7 @@ void time_thermal_step(benchmark::State& state, Model model, double step_across_
   const Eigen::Vector3d drift = step_across_sun_m * sun.cross(Eigen::Vector3d::UnitZ()).normalized();
   const double h = 1e-3;
   const long updates_before = coupling.n_shadow_updates();
+  const long allocations_before = bench::heap_allocations();
   for (auto _ : state) {
     coupling.before_step(at, h);
     if (step_across_sun_m > 0.0) {
@@ -111,6 +116,9 @@ void time_thermal_step(benchmark::State& state, Model model, double step_across_
     }
     coupling.after_step(at, false);
   }
+  // The shadows' Embree scene allocates when rebuilt; the heat balance and ΔT(t) should not.
+  state.counters["allocations_per_step"] = benchmark::Counter(
+      static_cast<double>(bench::heap_allocations() - allocations_before), benchmark::Counter::kAvgIterations);
   state.counters["members"] = static_cast<double>(coupling.member_names().size());
   state.counters["shadow_updates_per_step"] = benchmark::Counter(
       static_cast<double>(coupling.n_shadow_updates() - updates_before), benchmark::Counter::kAvgIterations);
@@ -160,6 +168,16 @@ void BM_ScissorShadows(benchmark::State& state) { time_shadows(state, arch(stati
 void BM_ScissorThermalStep(benchmark::State& state) {
   time_thermal_step(state, arch(static_cast<int>(state.range(0)), state.range(1) != 0));
 }
+void BM_ScissorThermalStepOnMotion(benchmark::State& state) {
+  time_thermal_step(state, arch(static_cast<int>(state.range(0)), state.range(1) != 0), 2e-4);
+}
+// The ring example's own mechanical step (its file's step and motor), the thermal part's
+// denominator; BM_ScissorStep times the arch's.
+void BM_ScissorRingStep(benchmark::State& state) {
+  bench::SteppingRun run(load_model(std::string(DEPLOYDYN_SOURCE_DIR) + "/examples/scissor/ring.yaml"));
+  state.counters["newton_per_step"] = run.step_loop(state, *run.system, run.model.analysis.end_time_s);
+  state.counters["beams"] = static_cast<double>(run.model.beams.size());
+}
 
 BENCHMARK(BM_Shadows)->Apply(roof_sizes);
 BENCHMARK(BM_ThermalStep)->Apply(roof_sizes);
@@ -172,6 +190,12 @@ BENCHMARK(BM_ScissorThermalStep)
     ->Args({1000, 0})
     ->Args({1000, 1})
     ->Unit(benchmark::kMicrosecond);
+BENCHMARK(BM_ScissorThermalStepOnMotion)
+    ->ArgNames({"units", "gradients"})
+    ->Args({0, 0})
+    ->Args({1000, 0})
+    ->Unit(benchmark::kMicrosecond);
+BENCHMARK(BM_ScissorRingStep)->Unit(benchmark::kMicrosecond);
 
 }  // namespace
 }  // namespace deploydyn
