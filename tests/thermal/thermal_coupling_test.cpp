@@ -179,6 +179,45 @@ TEST(ThermalCoupling, ConductionBetweenMembersAtOneTemperatureChangesNothing) {
   EXPECT_GT(alone_K[0], 250.0 + 10.0);  // and both warmed in the sun
 }
 
+// The pair of pair_at_a_node("[1, 0, 1]", true), `second` starting at its own node B2 pinned to
+// B: `contact` is the environment's joint_conductance and `own` the joint's conductance key.
+Model pair_pinned(const std::string& contact, const std::string& own) {
+  return load_model_from_string(R"(
+nodes: {A: [0, 0, 0], B: [1, 0, 0], B2: [1, 0, 0], C: [1, 0, 1]}
+materials:
+  alu: {E: 7.0e10, alpha: 2.3e-5, density: 2700, specific_heat: 900, absorptivity: 0.6, emissivity: 0.8, conductivity: 160}
+sections: {tube: {shape: circular_tube, outer_diameter: 0.02, wall_thickness: 0.001}}
+elements:
+  lit: {nodes: [A, B], section: tube, material: alu}
+  second: {nodes: [B2, C], section: tube, material: alu}
+supports: [{node: A}, {node: B}, {node: C}]
+joints: {pin: {type: ball, nodes: [B, B2])" + own + R"(}}
+environment: {type: orbit, sun_direction: [0, 0, 1], reference_temperature: 293.15, initial_temperature: 250,
+              conduction: true)" + contact + R"(}
+analysis: {type: static, end: 100, step: 1}
+)", "pair_pinned.yaml");
+}
+
+TEST(ThermalCoupling, AJointConductsThroughItsContactAndClosesTheHeatBalance) {
+  const auto [apart_K, apart_tally] = heat_for(pair_pinned("", ""), 3000.0);
+  const auto [alone_K, alone_tally] = heat_for(pair_at_a_node("[1, 0, 1]", false), 3000.0);
+  for (std::size_t i = 0; i < 2; ++i) EXPECT_NEAR(apart_K[i], alone_K[i], 1e-9) << i;  // no contact: no conduction
+  // A contact far stiffer than the halves (2 k A / L = 0.019 W/K) conducts as the shared node.
+  const auto [stiff_K, stiff_tally] = heat_for(pair_pinned(", joint_conductance: 1.0e6", ""), 3000.0);
+  const auto [shared_K, shared_tally] = heat_for(pair_at_a_node("[1, 0, 1]", true), 3000.0);
+  for (std::size_t i = 0; i < 2; ++i) EXPECT_NEAR(stiff_K[i], shared_K[i], 1e-6) << i;
+  // A worn contact of 5 mW/K: some heat, less than through the shared node; the joint's own
+  // value overrides the environment's.
+  const auto [worn_K, worn_tally] = heat_for(pair_pinned(", joint_conductance: 0.005", ""), 3000.0);
+  const auto [own_K, own_tally] = heat_for(pair_pinned(", joint_conductance: 7", ", conductance: 0.005"), 3000.0);
+  EXPECT_GT(worn_K[1], alone_K[1] + 0.5);
+  EXPECT_LT(worn_K[1], shared_K[1] - 0.5);
+  EXPECT_GT(worn_K[0], worn_K[1]);
+  for (std::size_t i = 0; i < 2; ++i) EXPECT_EQ(own_K[i], worn_K[i]) << i;
+  const double net_J = worn_tally.absorbed_J - worn_tally.emitted_J - worn_tally.convected_J;
+  EXPECT_NEAR(worn_tally.stored_J, net_J, 1e-9 * worn_tally.absorbed_J);
+}
+
 TEST(ThermalCoupling, AMemberLeavingAnothersShadowTakesTheSunAsTheGeometrySays) {
   Model model = shaded_pair("shadows: {every: 1, samples_along: 4, samples_across: 8}");
   ThermalCoupling coupling(model);
