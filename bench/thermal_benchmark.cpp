@@ -10,7 +10,6 @@
 //   BM_ThermalStepOnMotion  the same with `every: auto`, the structure drifting 0.2 mm a step
 //                     across the sun: the shadows recast every 13th step (also
 //                     BM_ScissorThermalStepOnMotion)
-//   BM_ScissorRingStep  the ring example's mechanical step, to compare its thermal step with
 // Arguments: roofs as BM_RoofStep's (units, trusses: 10 × 3, 10 × 26, 10 × 263 units of
 // 10 trusses, ≈ 10², 10³, 10⁴ bars, and the planar 10⁴-unit roof); units 0 the scissor ring
 // example, 1000 the arch of BM_ScissorStep.
@@ -29,7 +28,6 @@
 #include "deploydyn/thermal/thermal_coupling.hpp"
 #include "support/allocation_counter.hpp"
 #include "support/cold_roof.hpp"
-#include "support/stepping_run.hpp"
 
 namespace deploydyn {
 namespace {
@@ -171,14 +169,6 @@ void BM_ScissorThermalStep(benchmark::State& state) {
 void BM_ScissorThermalStepOnMotion(benchmark::State& state) {
   time_thermal_step(state, arch(static_cast<int>(state.range(0)), state.range(1) != 0), 2e-4);
 }
-// The ring example's own mechanical step (its file's step and motor), the thermal part's
-// denominator; BM_ScissorStep times the arch's.
-void BM_ScissorRingStep(benchmark::State& state) {
-  bench::SteppingRun run(load_model(std::string(DEPLOYDYN_SOURCE_DIR) + "/examples/scissor/ring.yaml"));
-  state.counters["newton_per_step"] = run.step_loop(state, *run.system, run.model.analysis.end_time_s);
-  state.counters["beams"] = static_cast<double>(run.model.beams.size());
-}
-
 BENCHMARK(BM_Shadows)->Apply(roof_sizes);
 BENCHMARK(BM_ThermalStep)->Apply(roof_sizes);
 BENCHMARK(BM_ThermalStepOnMotion)->Apply(roof_sizes);
@@ -195,7 +185,6 @@ BENCHMARK(BM_ScissorThermalStepOnMotion)
     ->Args({0, 0})
     ->Args({1000, 0})
     ->Unit(benchmark::kMicrosecond);
-BENCHMARK(BM_ScissorRingStep)->Unit(benchmark::kMicrosecond);
 
 }  // namespace
 }  // namespace deploydyn
