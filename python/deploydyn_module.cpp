@@ -352,6 +352,14 @@ class DictElementEntry final : public ElementEntryWriter {
   py::dict& d_;
 };
 
+// A material's E(T) or α(T) table as the model file spells it: {"temperature_C": (...), "value": (...)}.
+py::dict property_table_info(const PropertyTable& table) {
+  py::dict d;
+  d["temperature_C"] = py::tuple(py::cast(table.temperature_C));
+  d["value"] = py::tuple(py::cast(table.value));
+  return d;
+}
+
 py::list elements_info(const Model& model) {
   py::list out;
   for (const ElementRef& element : all_elements(model)) {
@@ -360,13 +368,16 @@ py::list elements_info(const Model& model) {
     d["type"] = std::string(element.kind->name());
     DictElementEntry entry(d);
     element.kind->write(model, element.index, entry);
-    // The material's constants beside its name, for elements made of one.
+    // The material's constants beside its name, for elements made of one; with a data-sheet
+    // table, E or α at the reference temperature and the table beside it.
     if (d.contains("material")) {
       const std::string material_name = py::cast<std::string>(d["material"]);
       for (const Material& material : model.materials) {
         if (material.name != material_name) continue;
         d["E"] = material.youngs_modulus_Pa;
         d["alpha"] = material.expansion_per_C;
+        if (material.youngs_modulus_table_Pa) d["E_table"] = property_table_info(*material.youngs_modulus_table_Pa);
+        if (material.expansion_table_per_C) d["alpha_table"] = property_table_info(*material.expansion_table_per_C);
       }
     }
     out.append(d);

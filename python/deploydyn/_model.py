@@ -84,7 +84,8 @@ class Model:
     def elements(self):
         """{name: {"type", then the keys of its type as the model file spells them (a bar:
         "nodes": (a, b), "area" m², "material", "mass" kg, "length" m (L0)), and "E" Pa,
-        "alpha" 1/°C of its material}}."""
+        "alpha" 1/°C of its material (at the reference temperature when a table gives them),
+        and "E_table", "alpha_table" ({"temperature_C": (...), "value": (...)}) when it does}}."""
         return {e["name"]: e for e in self._core.elements}
 
     @property

@@ -83,3 +83,27 @@ def test_saved_model_reads_back_the_same(general_model, tmp_path):
     again = deploydyn.load(tmp_path / "saved.yaml")
     assert again.to_yaml() == model.to_yaml()
     np.testing.assert_array_equal(again.run().values, model.run().values)
+
+
+def test_elements_show_their_materials_temperature_tables():
+    """A material's E(T) and α(T) tables beside E and α (at the reference temperature, 20 °C
+    here: the tables' values there), as the file gives them; a plain material has none."""
+    model = deploydyn.loads("""
+nodes: {A: [0, 0], B: [1, 0], C: [2, 0]}
+materials:
+  steel: {E: {temperature_C: [20, 100, 400], value: [2.1e11, 2.05e11, 1.7e11]},
+          alpha: {temperature_C: [0, 200], value: [1.1e-5, 1.5e-5]}, density: 7850}
+  plain: {E: 7.0e10, alpha: 2.3e-5, density: 2700}
+elements:
+  hot: {nodes: [A, B], area: 1.0e-4, material: steel}
+  cold: {nodes: [B, C], area: 1.0e-4, material: plain}
+supports: [{node: A}, {node: C}]
+""", "tables.yaml")
+    hot = model.elements["hot"]
+    assert hot["E_table"] == {"temperature_C": (20.0, 100.0, 400.0), "value": (2.1e11, 2.05e11, 1.7e11)}
+    assert hot["alpha_table"] == {"temperature_C": (0.0, 200.0), "value": (1.1e-5, 1.5e-5)}
+    assert hot["E"] == 2.1e11
+    assert abs(hot["alpha"] - (1.1e-5 + 20.0 / 200.0 * 0.4e-5)) < 1e-18
+    cold = model.elements["cold"]
+    assert "E_table" not in cold and "alpha_table" not in cold
+    assert cold["E"] == 7.0e10

@@ -202,6 +202,7 @@ void expect_equal_models(const Model& a, const Model& b) {
     EXPECT_EQ(a.joints[i].axis, b.joints[i].axis);
     EXPECT_EQ(a.joints[i].arms, b.joints[i].arms);
     EXPECT_EQ(a.joints[i].offsets_m, b.joints[i].offsets_m);
+    EXPECT_EQ(a.joints[i].conductance_W_K, b.joints[i].conductance_W_K);
   }
   ASSERT_EQ(a.loads.size(), b.loads.size());
   for (std::size_t i = 0; i < a.loads.size(); ++i) {
@@ -404,6 +405,23 @@ environment:
   EXPECT_EQ(ground.environment->initial_temperature_K, 300.0);
   EXPECT_TRUE(ground.environment->conduction);
   EXPECT_FALSE(orbit.environment->conduction);
+  // Joints' contact conductances: the environment's for all, one joint's own.
+  const Model pinned = load_model_from_string(R"(
+nodes: {A: [0, 0, 0], B: [1, 0, 0], B2: [1, 0, 0], C: [2, 0, 0], C2: [2, 0, 0], D: [3, 0, 0]}
+materials: {alu: {E: 7.0e10, density: 2700, specific_heat: 900, absorptivity: 0.35, emissivity: 0.85, conductivity: 160}}
+sections: {tube: {shape: circular_tube, outer_diameter: 0.02, wall_thickness: 0.001}}
+elements:
+  1: {nodes: [A, B], section: tube, material: alu}
+  2: {nodes: [B2, C], section: tube, material: alu}
+  3: {nodes: [C2, D], section: tube, material: alu}
+supports: [{node: A}, {node: D}]
+joints: {worn: {type: ball, nodes: [B, B2]}, bonded: {type: ball, nodes: [C, C2], conductance: 0.25}}
+environment: {type: orbit, sun_direction: [0, 0, 1], reference_temperature: 293.15, conduction: true, joint_conductance: 0.0125}
+)", "pinned tubes");
+  expect_round_trip(pinned);
+  EXPECT_EQ(pinned.environment->joint_conductance_W_K, 0.0125);
+  EXPECT_FALSE(pinned.joints[0].conductance_W_K);
+  EXPECT_EQ(pinned.joints[1].conductance_W_K, 0.25);
 }
 
 // Cables: a winch's rest length L0(t), a pretension (written as given, its L0 recomputed to the

@@ -1,7 +1,9 @@
 // Conduction between members that share a node (thermal/conduction_network.hpp) against closed
 // forms: the conductance matrix of a node, two members in series relaxing as the scheme's exact
 // solution says, a chain carrying one heat flow through every node (Fourier's law), a star that
-// keeps its heat, and the coupled step with radiation meeting its own equations.
+// keeps its heat, and the coupled step with radiation meeting its own equations. Joints: two
+// members joined by a pin conduct as their halves and the contact in series, a cluster of
+// joints creates no heat, and a stiff contact conducts as a shared node.
 
 #include "deploydyn/thermal/conduction_network.hpp"
 
@@ -21,6 +23,17 @@ LumpedMember store(double capacity_J_K) {
   return body;
 }
 
+// K symmetric, K·1 = 0 and K ≥ 0: conduction moves heat and creates none. K's eigenvalues,
+// ascending.
+Eigen::VectorXd expect_no_heat_created(const ConductionNetwork& network) {
+  const Eigen::MatrixXd k = Eigen::MatrixXd(network.conductance());
+  EXPECT_LT((k - k.transpose()).norm(), 1e-15);
+  EXPECT_LT((k * Eigen::VectorXd::Ones(k.rows())).norm(), 1e-14);
+  const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eigen(k);
+  EXPECT_GT(eigen.eigenvalues().minCoeff(), -1e-14);
+  return eigen.eigenvalues();
+}
+
 TEST(ConductionNetwork, ANodeOfTwoMembersConductsAsTheirHalvesInSeries) {
   const std::vector<ConductingMember> members{{0, 1, 2.0}, {1, 2, 6.0}};
   const ConductionNetwork network(members);
@@ -38,11 +51,7 @@ TEST(ConductionNetwork, ANodeOfManyMembersCreatesNoHeat) {
   const std::vector<ConductingMember> members{{9, 1, 1.0}, {2, 9, 3.0}, {9, 5, 0.5}, {5, 9, 7.0}};
   const ConductionNetwork network(members);
   EXPECT_EQ(network.shared_nodes(), 2);
-  const Eigen::MatrixXd k = Eigen::MatrixXd(network.conductance());
-  EXPECT_LT((k - k.transpose()).norm(), 1e-15);
-  EXPECT_LT((k * Eigen::VectorXd::Ones(4)).norm(), 1e-14);
-  const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eigen(k);
-  EXPECT_GT(eigen.eigenvalues().minCoeff(), -1e-14);
+  expect_no_heat_created(network);
 }
 
 TEST(ConductionNetwork, TwoMembersInSeriesRelaxAsTheSchemeSays) {
@@ -117,6 +126,72 @@ TEST(ConductionNetwork, TheCoupledStepMeetsItsEquationsWithRadiation) {
   }
   EXPECT_GT(t[0], t[1]);  // the lit member is warmest...
   EXPECT_GT(t[1], start[1]);  // ...and warms the cold one through the node
+}
+
+// The steady state of two members, the first absorbing Q, the second losing it to air by
+// convection (h_c A): T₂ − T_air = Q / (h_c A), T₁ − T₂ = Q / G. Steps long enough that
+// m c (T − T⁰) / h is below the tolerance.
+Eigen::VectorXd steady_pair(ConductionNetwork& network, double heat_W, const Surroundings& around) {
+  std::vector<LumpedMember> bodies(2, store(50.0));
+  bodies[0].surface_area_m2 = 0.0;  // only the second convects
+  Eigen::VectorXd t = Eigen::VectorXd::Constant(2, around.air_temperature_K);
+  for (int step = 0; step < 5; ++step) t = network.backward_euler_step(bodies, t, 1.0e12, Eigen::Vector2d(heat_W, 0.0), around);
+  return t;
+}
+
+TEST(ConductionNetwork, TwoMembersJoinedByAPinConductAsTheirHalvesAndTheContactInSeries) {
+  // Member 0 ends at node 1, member 1 starts at node 2; a pin joins nodes 1 and 2 with c.
+  const double g1 = 2.0, g2 = 6.0, c = 0.5;
+  const std::vector<ConductingMember> members{{0, 1, g1}, {2, 3, g2}};
+  const std::vector<ConductingJoint> joints{{1, 2, c}};
+  ConductionNetwork network(members, joints);
+  EXPECT_EQ(network.shared_nodes(), 0);
+  EXPECT_EQ(network.conducting_joints(), 1);
+  const double series = 1.0 / (1.0 / g1 + 1.0 / c + 1.0 / g2);
+  const Eigen::MatrixXd k = Eigen::MatrixXd(network.conductance());
+  EXPECT_NEAR(k(0, 0), series, 1e-14);
+  EXPECT_NEAR(k(1, 1), series, 1e-14);
+  EXPECT_NEAR(k(0, 1), -series, 1e-14);
+  EXPECT_NEAR(k(1, 0), -series, 1e-14);
+
+  Surroundings around;
+  around.air_temperature_K = 290.0;
+  around.convection_W_m2K = 10.0;
+  const double heat_W = 0.8;
+  const Eigen::VectorXd t = steady_pair(network, heat_W, around);
+  EXPECT_NEAR(t[1] - 290.0, heat_W / (10.0 * 0.06), 1e-9);
+  EXPECT_NEAR(t[0] - t[1], heat_W / series, 1e-9);
+}
+
+TEST(ConductionNetwork, AJointWithoutConductanceLeavesItsMembersApart) {
+  const std::vector<ConductingMember> members{{0, 1, 2.0}, {2, 3, 6.0}};
+  const std::vector<ConductingJoint> joints{{1, 2, 0.0}};
+  const ConductionNetwork network(members, joints);
+  EXPECT_EQ(network.conducting_joints(), 0);
+  EXPECT_EQ(Eigen::MatrixXd(network.conductance()).cwiseAbs().maxCoeff(), 0.0);
+}
+
+TEST(ConductionNetwork, AStiffContactConductsAsASharedNode) {
+  // Three members at node 5, two more at node 6 pinned to it with c ≫ g: as if all five met at
+  // one node, to O(g / c).
+  const std::vector<ConductingMember> shared{{0, 5, 1.0}, {1, 5, 3.0}, {5, 2, 0.5}, {3, 5, 2.0}, {5, 4, 4.0}};
+  const std::vector<ConductingMember> pinned{{0, 5, 1.0}, {1, 5, 3.0}, {5, 2, 0.5}, {3, 6, 2.0}, {6, 4, 4.0}};
+  const std::vector<ConductingJoint> stiff{{5, 6, 1.0e9}};
+  const Eigen::MatrixXd one_node = Eigen::MatrixXd(ConductionNetwork(shared).conductance());
+  const Eigen::MatrixXd joined = Eigen::MatrixXd(ConductionNetwork(pinned, stiff).conductance());
+  EXPECT_LT((joined - one_node).cwiseAbs().maxCoeff(), 1e-8);
+}
+
+TEST(ConductionNetwork, JointsCreateNoHeat) {
+  // A cluster of four nodes linked by three joints, one node (7) reached by no member, another
+  // member with both ends in the cluster; and a shared node outside it: K symmetric, K·1 = 0,
+  // K ≥ 0.
+  const std::vector<ConductingMember> members{{0, 1, 1.0}, {2, 9, 3.0}, {1, 3, 0.5}, {3, 9, 7.0}, {9, 4, 2.0}};
+  const std::vector<ConductingJoint> joints{{1, 2, 0.3}, {2, 7, 1.1}, {7, 3, 0.2}};
+  const ConductionNetwork network(members, joints);
+  EXPECT_EQ(network.conducting_joints(), 3);
+  const Eigen::VectorXd eigenvalues = expect_no_heat_created(network);
+  EXPECT_GT(eigenvalues(1), 1e-6);  // one network: only uniform temperatures are free
 }
 
 }  // namespace

@@ -13,6 +13,7 @@
 
 #include <cmath>
 #include <numbers>
+#include <optional>
 
 #include "deploydyn/io/model_loader.hpp"
 #include "deploydyn/thermal/section_temperature_difference.hpp"
@@ -123,21 +124,30 @@ analysis: {type: static, end: 100, step: 1}
 }
 
 // Two aluminium tubes meeting at B in orbit, the sun along z: `lit` lies broadside along x,
-// `second` along `second_axis` from B; conduction on or off.
-Model pair_at_a_node(const std::string& second_axis, bool conduction) {
-  return load_model_from_string(R"(
-nodes: {A: [0, 0, 0], B: [1, 0, 0], C: )" + second_axis + R"(}
+// `second` along `second_axis` from B. `conduction` is the environment's conduction value and
+// what follows it; with `pin` (the keys after its nodes) `second` starts at a node B2 of its
+// own, joined to B by a ball joint.
+Model tube_pair(const std::string& second_axis, const std::string& conduction,
+                const std::optional<std::string>& pin = std::nullopt) {
+  const std::string start = pin ? "B2" : "B";
+  return load_model_from_string(std::string(R"(
+nodes: {A: [0, 0, 0], B: [1, 0, 0], )") + (pin ? "B2: [1, 0, 0], " : "") + "C: " + second_axis + R"(}
 materials:
   alu: {E: 7.0e10, alpha: 2.3e-5, density: 2700, specific_heat: 900, absorptivity: 0.6, emissivity: 0.8, conductivity: 160}
 sections: {tube: {shape: circular_tube, outer_diameter: 0.02, wall_thickness: 0.001}}
 elements:
   lit: {nodes: [A, B], section: tube, material: alu}
-  second: {nodes: [B, C], section: tube, material: alu}
+  second: {nodes: [)" + start + R"(, C], section: tube, material: alu}
 supports: [{node: A}, {node: B}, {node: C}]
-environment: {type: orbit, sun_direction: [0, 0, 1], reference_temperature: 293.15, initial_temperature: 250, conduction: )" +
-                                    std::string(conduction ? "true" : "false") + R"(}
+)" + (pin ? "joints: {pin: {type: ball, nodes: [B, B2]" + *pin + "}}\n" : "") +
+                                R"(environment: {type: orbit, sun_direction: [0, 0, 1], reference_temperature: 293.15, initial_temperature: 250, conduction: )" +
+                                conduction + R"(}
 analysis: {type: static, end: 100, step: 1}
-)", "pair_at_a_node.yaml");
+)", "tube_pair.yaml");
+}
+
+Model pair_at_a_node(const std::string& second_axis, bool conduction) {
+  return tube_pair(second_axis, conduction ? "true" : "false");
 }
 
 // Steps of 10 s over `duration_s` at the file's configuration: the members' temperatures and
@@ -177,6 +187,32 @@ TEST(ThermalCoupling, ConductionBetweenMembersAtOneTemperatureChangesNothing) {
   const auto [joined_K, joined_tally] = heat_for(pair_at_a_node("[2, 0, 0]", true), 3000.0);
   for (std::size_t i = 0; i < 2; ++i) EXPECT_NEAR(joined_K[i], alone_K[i], 1e-9) << i;
   EXPECT_GT(alone_K[0], 250.0 + 10.0);  // and both warmed in the sun
+}
+
+// The pair of pair_at_a_node("[1, 0, 1]", true), `second` starting at its own node B2 pinned to
+// B: `contact` is the environment's joint_conductance and `own` the joint's conductance key.
+Model pair_pinned(const std::string& contact, const std::string& own) {
+  return tube_pair("[1, 0, 1]", "true" + contact, own);
+}
+
+TEST(ThermalCoupling, AJointConductsThroughItsContactAndClosesTheHeatBalance) {
+  const auto [apart_K, apart_tally] = heat_for(pair_pinned("", ""), 3000.0);
+  const auto [alone_K, alone_tally] = heat_for(pair_at_a_node("[1, 0, 1]", false), 3000.0);
+  for (std::size_t i = 0; i < 2; ++i) EXPECT_NEAR(apart_K[i], alone_K[i], 1e-9) << i;  // no contact: no conduction
+  // A contact far stiffer than the halves (2 k A / L = 0.019 W/K) conducts as the shared node.
+  const auto [stiff_K, stiff_tally] = heat_for(pair_pinned(", joint_conductance: 1.0e6", ""), 3000.0);
+  const auto [shared_K, shared_tally] = heat_for(pair_at_a_node("[1, 0, 1]", true), 3000.0);
+  for (std::size_t i = 0; i < 2; ++i) EXPECT_NEAR(stiff_K[i], shared_K[i], 1e-6) << i;
+  // A worn contact of 5 mW/K: some heat, less than through the shared node; the joint's own
+  // value overrides the environment's.
+  const auto [worn_K, worn_tally] = heat_for(pair_pinned(", joint_conductance: 0.005", ""), 3000.0);
+  const auto [own_K, own_tally] = heat_for(pair_pinned(", joint_conductance: 7", ", conductance: 0.005"), 3000.0);
+  EXPECT_GT(worn_K[1], alone_K[1] + 0.5);
+  EXPECT_LT(worn_K[1], shared_K[1] - 0.5);
+  EXPECT_GT(worn_K[0], worn_K[1]);
+  for (std::size_t i = 0; i < 2; ++i) EXPECT_EQ(own_K[i], worn_K[i]) << i;
+  const double net_J = worn_tally.absorbed_J - worn_tally.emitted_J - worn_tally.convected_J;
+  EXPECT_NEAR(worn_tally.stored_J, net_J, 1e-9 * worn_tally.absorbed_J);
 }
 
 TEST(ThermalCoupling, AMemberLeavingAnothersShadowTakesTheSunAsTheGeometrySays) {

@@ -32,17 +32,17 @@ inline constexpr std::array<std::string_view, 3> kMember{"elements", "buckling_l
 inline constexpr std::array<std::string_view, 2> kThermal{"dT", "reference_temperature_C"};
 // A material's E or alpha given at temperatures (model/property_table.hpp)
 inline constexpr std::array<std::string_view, 2> kPropertyTable{"temperature_C", "value"};
-inline constexpr std::array<std::string_view, 11> kOrbitEnvironment{
+inline constexpr std::array<std::string_view, 12> kOrbitEnvironment{
     "type", "reference_temperature", "initial_temperature", "sun_direction", "solar_constant", "sink_temperature",
-    "eclipses", "penumbra", "shadows", "section_gradients", "conduction"};
-inline constexpr std::array<std::string_view, 17> kGroundEnvironment{
+    "eclipses", "penumbra", "shadows", "section_gradients", "conduction", "joint_conductance"};
+inline constexpr std::array<std::string_view, 18> kGroundEnvironment{
     "type",       "reference_temperature", "initial_temperature", "latitude",      "longitude",
     "start",      "utc_offset",            "up",                  "north",         "direct_normal",
     "diffuse",    "sky_temperature",       "air_temperature",     "convection",    "shadows",
-    "section_gradients", "conduction"};
+    "section_gradients", "conduction", "joint_conductance"};
 inline constexpr std::array<std::string_view, 3> kShadows{"every", "samples_along", "samples_across"};
 inline constexpr std::array<std::string_view, 4> kSupport{"node", "fix", "axis", "offset"};
-inline constexpr std::array<std::string_view, 5> kJoint{"type", "nodes", "axis", "arms", "offsets"};
+inline constexpr std::array<std::string_view, 6> kJoint{"type", "nodes", "axis", "arms", "offsets", "conductance"};
 inline constexpr std::array<std::string_view, 7> kBarAngleDriver{"type", "element", "pivot", "axis",
                                                                   "profile", "reading", "torque_limit"};
 inline constexpr std::array<std::string_view, 6> kHingeAngleDriver{"type", "nodes", "axis", "profile",

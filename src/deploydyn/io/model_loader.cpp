@@ -612,6 +612,10 @@ class ModelReader {
       environment.section_gradients = gradients->choice({"false", "true"}) == 1;
     }
     if (const auto conduction = spec.find("conduction")) environment.conduction = conduction->choice({"false", "true"}) == 1;
+    if (const auto joint_conductance = spec.find("joint_conductance")) {
+      if (!environment.conduction) joint_conductance->fail("needs 'conduction: true': joints conduct between members that conduct");
+      environment.joint_conductance_W_K = joint_conductance->number(Sign::non_negative, "W/K");
+    }
     model_.environment = environment;
     check_heated_members(spec);
     if (environment.section_gradients) check_graded_beams(spec);
@@ -1063,6 +1067,12 @@ class ModelReader {
       const Node& b = model_.nodes[joint.nodes[1]];
       if (joint.nodes[0] == joint.nodes[1]) {
         nodes.fail(fmt::format("joins node '{}' to itself; a joint joins two different nodes", a.name));
+      }
+      if (const auto conductance = spec.find("conductance")) {
+        if (!model_.environment || !model_.environment->conduction) {
+          conductance->fail("needs an environment with 'conduction: true': the joint's contact conductance links its members' heat");
+        }
+        joint.conductance_W_K = conductance->number(Sign::non_negative, "W/K");
       }
       if (const auto offsets = spec.find("offsets")) {
         const auto pair = offsets->items(2, 2, "two offsets [[ox, oy, oz], [ox, oy, oz]] (m), from A and from B");

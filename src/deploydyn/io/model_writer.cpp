@@ -199,6 +199,7 @@ void emit_environment(YAML::Emitter& out, const Environment& environment) {
   if (environment.conduction) {
     emit_key(out, "conduction");
     out << true;
+    emit_number(out, "joint_conductance", environment.joint_conductance_W_K);
   }
   if (environment.kind == EnvironmentKind::orbit) {
     const OrbitEnvironment& orbit = environment.orbit;
@@ -421,6 +422,7 @@ void emit_boundary_conditions(YAML::Emitter& out, const Model& model) {
         for (const Eigen::Vector3d& offset : joint.offsets_m) emit_vector(out, offset, 3);
         out << YAML::EndSeq;
       }
+      if (joint.conductance_W_K) emit_number(out, "conductance", *joint.conductance_W_K);
       out << YAML::EndMap;
     }
     out << YAML::EndMap;

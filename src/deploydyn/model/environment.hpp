@@ -89,6 +89,9 @@ struct Environment {
   // Members that share a node exchange heat by conduction (thermal/conduction_network.hpp);
   // their materials need a conductivity.
   bool conduction = false;
+  // With conduction: the contact conductance (W/K) of every joint whose two nodes the members
+  // reach, unless the joint gives its own (Joint::conductance_W_K); 0: joints conduct nothing.
+  double joint_conductance_W_K = 0.0;
 };
 
 }  // namespace deploydyn

@@ -3,6 +3,7 @@
 
 #include <Eigen/Core>
 #include <array>
+#include <optional>
 #include <string>
 
 #include "deploydyn/util/name_table.hpp"
@@ -28,6 +29,9 @@ struct Joint {
   // Rigid offsets (m) from each node to the point where the joint acts, in the node's initial
   // frame (the global axes at the start); nonzero only on nodes with a frame (3D beam nodes).
   std::array<Eigen::Vector3d, 2> offsets_m{Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero()};
+  // With the environment's conduction: the contact conductance (W/K) between the two nodes;
+  // empty: the environment's joint_conductance_W_K (thermal/conduction_network.hpp).
+  std::optional<double> conductance_W_K;
   bool has_offsets() const { return !offsets_m[0].isZero(0.0) || !offsets_m[1].isZero(0.0); }
 };
 // As model files spell joint types.

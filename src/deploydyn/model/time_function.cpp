@@ -161,4 +161,11 @@ double TimeFunction::integral(double t) const {
   return evaluate(kind_, t, -1) - evaluate(kind_, 0.0, -1);
 }
 
+void TimeFunction::set_segment(double t0, double v0, double t1, double v1) {
+  auto* table = std::get_if<Table>(&kind_);
+  if (table == nullptr) table = &kind_.emplace<Table>();
+  table->times.assign({t0, t1});
+  table->values.assign({v0, v1});
+}
+
 }  // namespace deploydyn

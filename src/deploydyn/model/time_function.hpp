@@ -85,6 +85,10 @@ class TimeFunction {
   // ∫₀ᵗ f(τ) dτ (negative t integrates backwards).
   double integral(double t) const;
 
+  // Makes this the two-point table (t0, v0), (t1, v1), in the storage it holds when it is a
+  // table already: the thermal coupling sets one per member and step without allocating.
+  void set_segment(double t0, double v0, double t1, double v1);
+
   bool is_constant() const { return std::holds_alternative<Constant>(kind_); }
   const Kind& kind() const { return kind_; }
   bool operator==(const TimeFunction&) const = default;

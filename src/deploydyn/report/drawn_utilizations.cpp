@@ -10,7 +10,11 @@ namespace deploydyn {
 
 DrawnUtilizations::DrawnUtilizations(const Model& model, const std::vector<std::string>& drawn,
                                      const std::function<int(const std::string&)>& column)
-    : dimension_(model.dimension), members_(checked_members(model)), drawn_(drawn.size()) {
+    : dimension_(model.dimension),
+      reference_temperature_K_(model.environment ? model.environment->reference_temperature_K
+                                                 : std::numeric_limits<double>::quiet_NaN()),
+      members_(checked_members(model)),
+      drawn_(drawn.size()) {
   std::unordered_map<std::string, std::pair<int, int>> where;  // element name → (member, element)
   for (std::size_t m = 0; m < members_.size(); ++m) {
     const CheckedMember& member = members_[m];
@@ -44,16 +48,25 @@ DrawnUtilizations::DrawnUtilizations(const Model& model, const std::vector<std::
   }
 }
 
-double DrawnUtilizations::at(std::size_t i, const std::function<double(int column)>& value) const {
+double DrawnUtilizations::at(std::size_t i, const std::function<double(int column)>& value, double time_s,
+                             double temperature_K) const {
   constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
   const Drawn& d = drawn_[i];
   if (d.member < 0 || d.force < 0) return kNaN;
   const CheckedMember& member = members_[static_cast<std::size_t>(d.member)];
+  const CheckedElement& element = member.elements[static_cast<std::size_t>(d.element)];
   const auto at = [&](int column) { return column >= 0 ? value(column) : 0.0; };
-  const ElementForces forces{value(d.force), at(d.moment_z), at(d.moment_y), at(d.shear_y), at(d.shear_z), at(d.torque)};
+  // E(T)/E(T_ref) (docs/theory.md, "Temperature-dependent material properties"): an
+  // environment's temperatures are no ΔT(t) of the model file, only of the run.
+  const double youngs_ratio =
+      !std::isnan(temperature_K) && !std::isnan(reference_temperature_K_) && element.law.varies()
+          ? element.law.at(temperature_K - reference_temperature_K_).youngs_modulus_Pa /
+                element.law.reference_youngs_modulus_Pa()
+          : element.youngs_ratio(time_s);
+  const ElementForces forces{value(d.force), at(d.moment_z), at(d.moment_y), at(d.shear_y),
+                             at(d.shear_z),  at(d.torque),   youngs_ratio};
   double largest = kNaN;
-  for (const double u : element_utilizations(member, member.elements[static_cast<std::size_t>(d.element)], d.runs,
-                                             dimension_, forces)) {
+  for (const double u : element_utilizations(member, element, d.runs, dimension_, forces)) {
     if (!std::isnan(u) && (std::isnan(largest) || u > largest)) largest = u;
   }
   return largest;

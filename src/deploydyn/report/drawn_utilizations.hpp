@@ -26,9 +26,12 @@ class DrawnUtilizations {
   // A beam's stress check runs but its bending moments, shear forces or torque are not in the
   // history (output.select): its utilization then leaves them out.
   bool forces_missing() const { return forces_missing_; }
-  // The largest utilization of drawn element `i` at the row whose column values `value` gives;
-  // NaN when none of its checks runs or its force is not in the history.
-  double at(std::size_t i, const std::function<double(int column)>& value) const;
+  // The largest utilization of drawn element `i` at the row whose column values `value` gives,
+  // at `time_s`; NaN when none of its checks runs or its force is not in the history. Its Euler
+  // load at E(T): `temperature_K` its temperature there (temperatures.csv of a run with an
+  // environment), NaN when not known: then its ΔT(t) in the model, as the run's checks take it.
+  double at(std::size_t i, const std::function<double(int column)>& value, double time_s,
+            double temperature_K) const;
 
  private:
   struct Drawn {
@@ -38,6 +41,7 @@ class DrawnUtilizations {
     int force = -1, moment_z = -1, moment_y = -1, shear_y = -1, shear_z = -1, torque = -1;  // history columns
   };
   int dimension_ = 2;
+  double reference_temperature_K_ = 0.0;  // the environment's T_ref; NaN without one
   std::vector<CheckedMember> members_;
   std::vector<Drawn> drawn_;
   bool any_ = false;

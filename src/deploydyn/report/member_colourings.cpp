@@ -152,13 +152,27 @@ std::size_t member_colourings_bound(const Model& model, const HistoryTable& hist
 json member_colourings(const Model& model, const HistoryTable& history, const std::vector<std::string>& members,
                        const std::vector<std::size_t>& rows, const HistoryTable* temperatures, std::string& note) {
   json out = json::array();
+  // temperatures.csv has a row at every output time, as history.csv: the same rows.
+  const int temperature_time = temperatures != nullptr ? temperatures->column("t") : -1;
+  const bool aligned = temperature_time >= 0 && temperatures->n_rows >= history.n_rows &&
+                       std::all_of(rows.begin(), rows.end(), [&](std::size_t row) {
+                         return temperatures->values[static_cast<std::size_t>(temperature_time)][row] ==
+                                history.values[0][row];
+                       });
   const DrawnUtilizations drawn(model, members, [&](const std::string& name) { return history.column(name); });
   if (drawn.any()) {
+    const std::vector<int> temperature_columns =
+        aligned ? columns_of(*temperatures, "T.", members) : std::vector<int>(members.size(), -1);
     Colouring c;
     c.values.reserve(rows.size() * members.size());
     for (const std::size_t row : rows) {
       const auto value = [&](int column) { return history.values[static_cast<std::size_t>(column)][row]; };
-      for (std::size_t m = 0; m < members.size(); ++m) c.add(drawn.at(m, value));
+      for (std::size_t m = 0; m < members.size(); ++m) {
+        const int column = temperature_columns[m];
+        const double temperature_K = column >= 0 ? temperatures->values[static_cast<std::size_t>(column)][row]
+                                                 : std::numeric_limits<double>::quiet_NaN();
+        c.add(drawn.at(m, value, history.values[0][row], temperature_K));
+      }
     }
     std::string what = "red: over capacity";
     if (drawn.forces_missing()) {
@@ -181,12 +195,6 @@ json member_colourings(const Model& model, const HistoryTable& history, const st
     out.push_back(diverging("moment", "bending moment M_z (N·m)", "N·m", "blue negative, red positive", std::move(moment)));
   }
   if (temperatures != nullptr) {
-    // temperatures.csv has a row at every output time, as history.csv: the same rows.
-    const int t = temperatures->column("t");
-    const bool aligned = t >= 0 && temperatures->n_rows >= history.n_rows &&
-                         std::all_of(rows.begin(), rows.end(), [&](std::size_t row) {
-                           return temperatures->values[static_cast<std::size_t>(t)][row] == history.values[0][row];
-                         });
     if (!aligned) {
       note += " temperatures.csv's times are not history.csv's: the members are not coloured by temperature.";
     } else if (Colouring c = from_columns(*temperatures, columns_of(*temperatures, "T.", members), rows); c.any) {

@@ -23,12 +23,7 @@ double absorbed_power_W(const LumpedMember& member, const Eigen::Vector3d& axis,
 }
 
 double emitted_power_W(const LumpedMember& member, double temperature_K, const Surroundings& around) {
-  const double sink4 = std::pow(around.sink_temperature_K, 4);
-  return member.emissivity * kStefanBoltzmann_W_m2K4 * member.surface_area_m2 * (std::pow(temperature_K, 4) - sink4);
-}
-
-double convected_power_W(const LumpedMember& member, double temperature_K, const Surroundings& around) {
-  return around.convection_W_m2K * member.surface_area_m2 * (temperature_K - around.air_temperature_K);
+  return emitted_power_W(member, temperature_K, std::pow(around.sink_temperature_K, 4));
 }
 
 double backward_euler_step(const LumpedMember& member, double temperature_K, double step_s,
@@ -36,10 +31,11 @@ double backward_euler_step(const LumpedMember& member, double temperature_K, dou
   const double radiation_W_K4 = member.emissivity * kStefanBoltzmann_W_m2K4 * member.surface_area_m2;
   const double convection_W_K = around.convection_W_m2K * member.surface_area_m2;
   const double capacity = member.heat_capacity_J_K;
+  const double sink4 = std::pow(around.sink_temperature_K, 4);
   // g(T) = m c (T − T₀) − h (Q − ε σ A (T⁴ − T_s⁴) − h_c A (T − T_a)): g' > 0, g'' ≥ 0 for T > 0.
   const auto g = [&](double t) {
     return capacity * (t - temperature_K) -
-           step_s * (absorbed_W - emitted_power_W(member, t, around) - convected_power_W(member, t, around));
+           step_s * (absorbed_W - emitted_power_W(member, t, sink4) - convected_power_W(member, t, around));
   };
   double t = temperature_K;
   constexpr int kMaxIterations = 100;

@@ -16,6 +16,7 @@
 // unconditionally stable, monotone, first order in the step h.
 
 #include <Eigen/Core>
+#include <cmath>
 
 namespace deploydyn::thermal {
 
@@ -48,7 +49,14 @@ double projected_area_m2(const LumpedMember& member, const Eigen::Vector3d& axis
 // Q_abs (W) of a member whose axis (length L) is `axis`.
 double absorbed_power_W(const LumpedMember& member, const Eigen::Vector3d& axis, const Surroundings& around);
 double emitted_power_W(const LumpedMember& member, double temperature_K, const Surroundings& around);
-double convected_power_W(const LumpedMember& member, double temperature_K, const Surroundings& around);
+// ε σ A (T⁴ − T_sink⁴) with T_sink⁴ given: a loop over members raises the sink to the 4th power
+// once (std::pow is most of a member's step); the same arithmetic as the function above.
+inline double emitted_power_W(const LumpedMember& member, double temperature_K, double sink4_K4) {
+  return member.emissivity * kStefanBoltzmann_W_m2K4 * member.surface_area_m2 * (std::pow(temperature_K, 4) - sink4_K4);
+}
+inline double convected_power_W(const LumpedMember& member, double temperature_K, const Surroundings& around) {
+  return around.convection_W_m2K * member.surface_area_m2 * (temperature_K - around.air_temperature_K);
+}
 
 // T at the end of a step of `step_s` from `temperature_K`, by backward Euler:
 //   m c (T₁ − T₀) = h [Q_abs − ε σ A (T₁⁴ − T_sink⁴) − h_c A (T₁ − T_air)],

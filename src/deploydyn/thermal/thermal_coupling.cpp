@@ -4,6 +4,7 @@
 
 #include <Eigen/Geometry>
 #include <algorithm>
+#include <cmath>
 #include <limits>
 #include <numbers>
 #include <stdexcept>
@@ -68,28 +69,31 @@ ThermalCoupling::ThermalCoupling(Model& model) : model_(model), dofs_(model) {
           fmt::format("member '{}' takes no section: an environment needs one for its sunlit width", name));
     }
     HeatedElement& member = members_.emplace_back();
+    LumpedMember& body = bodies_.emplace_back();
     member.kind = ref.kind;
     member.index = ref.index;
     member.node_a = ref.kind->element_node(model, ref.index, 0);
     member.node_b = ref.kind->element_node(model, ref.index, 1);
+    member.first_dof_a = dofs_.first(member.node_a);
+    member.first_dof_b = dofs_.first(member.node_b);
     const auto [width_m, perimeter_m] = sunlit_width_and_perimeter(model.sections[heated->section]);
     // The area of the member as the file placed it: its length changes by strains only.
     const double reference_length_m =
         (model.nodes[member.node_b].position_m - model.nodes[member.node_a].position_m).norm();
-    member.body.heat_capacity_J_K =
+    body.heat_capacity_J_K =
         ref.kind->mass_kg(model, ref.index) * required(material.specific_heat_J_kgK, material, "specific_heat", name);
-    member.body.absorptivity = required(material.absorptivity, material, "absorptivity", name);
-    member.body.emissivity = required(material.emissivity, material, "emissivity", name);
-    member.body.sunlit_width_m = width_m;
-    member.body.surface_area_m2 = perimeter_m * reference_length_m;
-    if (!(member.body.heat_capacity_J_K > 0.0)) {
+    body.absorptivity = required(material.absorptivity, material, "absorptivity", name);
+    body.emissivity = required(material.emissivity, material, "emissivity", name);
+    body.sunlit_width_m = width_m;
+    body.surface_area_m2 = perimeter_m * reference_length_m;
+    if (!(body.heat_capacity_J_K > 0.0)) {
       throw std::invalid_argument(fmt::format("member '{}' has no mass: its heat capacity m c would be 0", name));
     }
     member.outer_radius_m = 0.5 * width_m;
     member.initial_axis = (model.nodes[member.node_b].position_m - model.nodes[member.node_a].position_m).normalized();
     if (model.environment->section_gradients && heated->local_y.squaredNorm() > 0.0) {
       member.initial_local_y = heated->local_y;
-      member.section = round_section(model.sections[heated->section], material, member.body.heat_capacity_J_K,
+      member.section = round_section(model.sections[heated->section], material, body.heat_capacity_J_K,
                                      reference_length_m, name);
       graded_.push_back(static_cast<int>(members_.size()) - 1);
       // Before the mechanics is built: the beam takes its section's depths for the gradients.
@@ -104,7 +108,13 @@ ThermalCoupling::ThermalCoupling(Model& model) : model_(model), dofs_(model) {
     names_.push_back(name);
   }
   const Environment& environment = *model.environment;
-  if (environment.conduction) conduction_.emplace(conducting);
+  if (environment.conduction) {
+    std::vector<ConductingJoint> joints;
+    for (const Joint& joint : model.joints) {
+      joints.push_back({joint.nodes[0], joint.nodes[1], joint.conductance_W_K.value_or(environment.joint_conductance_W_K)});
+    }
+    conduction_.emplace(conducting, joints);
+  }
   differences_K_.assign(members_.size(), Eigen::Vector3d::Zero());
   pending_differences_K_ = differences_K_;
   local_axes_.assign(members_.size(), {Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero()});
@@ -124,6 +134,7 @@ ThermalCoupling::ThermalCoupling(Model& model) : model_(model), dofs_(model) {
   const double initial_K = environment.initial_temperature_K.value_or(environment.reference_temperature_K);
   temperatures_K_.assign(members_.size(), initial_K);
   pending_K_ = temperatures_K_;
+  absorbed_W_.assign(members_.size(), 0.0);
   for (std::size_t i = 0; i < members_.size(); ++i) {
     members_[i].kind->set_element_temperature_change(
         model_, members_[i].index, TimeFunction::constant(initial_K - environment.reference_temperature_K));
@@ -138,9 +149,7 @@ void ThermalCoupling::start(double time_s) {
 
 Eigen::Vector3d ThermalCoupling::axis_at(const Eigen::VectorXd& q, const HeatedElement& member) const {
   Eigen::Vector3d axis = Eigen::Vector3d::Zero();
-  for (int k = 0; k < model_.dimension; ++k) {
-    axis[k] = q[dofs_.index(member.node_b, k)] - q[dofs_.index(member.node_a, k)];
-  }
+  for (int k = 0; k < model_.dimension; ++k) axis[k] = q[member.first_dof_b + k] - q[member.first_dof_a + k];
   return axis;
 }
 
@@ -167,7 +176,7 @@ void ThermalCoupling::update_shadows(const Eigen::VectorXd* q, double time_s) {
   shadows_->compute(capsules_, shadow_sun_, shadowed_);
   ++n_shadow_updates_;
   for (std::size_t i = 0; i < members_.size(); ++i) {
-    members_[i].body.shadowed_fraction = shadowed_[i];
+    bodies_[i].shadowed_fraction = shadowed_[i];
     if (most_shadowed_.member < 0 || shadowed_[i] > most_shadowed_.temperature_K) {
       most_shadowed_ = {shadowed_[i], static_cast<int>(i), time_s};
     }
@@ -181,14 +190,14 @@ void ThermalCoupling::update_shadows(const Eigen::VectorXd* q, double time_s) {
 bool ThermalCoupling::shadows_due(const Eigen::VectorXd& q, double time_s) const {
   const Eigen::Vector3d sun = surroundings_at(*model_.environment, time_s).sun_direction.normalized();
   if ((sun - shadow_sun_).norm() * shadow_extent_m_ > shadow_tolerance_m_) return true;
-  const auto moved_across = [&](int node, const Eigen::Vector3d& before) {
+  const auto moved_across = [&](int first_dof, const Eigen::Vector3d& before) {
     Eigen::Vector3d moved = -before;
-    for (int k = 0; k < model_.dimension; ++k) moved[k] += q[dofs_.index(node, k)];
+    for (int k = 0; k < model_.dimension; ++k) moved[k] += q[first_dof + k];
     return (moved - moved.dot(sun) * sun).norm();
   };
   for (std::size_t i = 0; i < members_.size(); ++i) {
-    if (moved_across(members_[i].node_a, capsules_[i].end_a_m) > shadow_tolerance_m_ ||
-        moved_across(members_[i].node_b, capsules_[i].end_b_m) > shadow_tolerance_m_) {
+    if (moved_across(members_[i].first_dof_a, capsules_[i].end_a_m) > shadow_tolerance_m_ ||
+        moved_across(members_[i].first_dof_b, capsules_[i].end_b_m) > shadow_tolerance_m_) {
       return true;
     }
   }
@@ -207,7 +216,7 @@ void ThermalCoupling::before_step(const MotionState& start, double step_s) {
     const Eigen::Vector3d along = axis_at(start.q, member).normalized();
     const Eigen::Vector3d across_sun = around.sun_direction - around.sun_direction.dot(along) * along;  // |s⊥| = |sin θ|
     const double sin_theta = across_sun.norm();
-    const double flux_W_m2 = around.direct_W_m2 * sin_theta * (1.0 - member.body.shadowed_fraction);
+    const double flux_W_m2 = around.direct_W_m2 * sin_theta * (1.0 - bodies_[i].shadowed_fraction);
     const SectionDifferenceLaw law = section_difference_law(*member.section, flux_W_m2, pending_K_[i], around.convection_W_m2K);
     const Eigen::Vector3d steady_K = sin_theta > 1e-12 ? Eigen::Vector3d(law.steady_K / sin_theta * across_sun)
                                                        : Eigen::Vector3d::Zero();
@@ -222,31 +231,28 @@ void ThermalCoupling::before_step(const MotionState& start, double step_s) {
   set_temperature_changes(start.time_s, end_s);
 }
 
-// Every member's T at the step's end into pending_K_, and the heat balance's tally.
+// Every member's T at the step's end into pending_K_, and the heat balance's tally: loops over
+// the members' contiguous bodies, no allocation (but conduction's vector of temperatures).
 void ThermalCoupling::advance_temperatures(const MotionState& start, double step_s, const Surroundings& around) {
-  std::vector<double> absorbed_W(members_.size());
-  for (std::size_t i = 0; i < members_.size(); ++i) {
-    absorbed_W[i] = absorbed_power_W(members_[i].body, axis_at(start.q, members_[i]), around);
-  }
+  const std::size_t n = members_.size();
+  for (std::size_t i = 0; i < n; ++i) absorbed_W_[i] = absorbed_power_W(bodies_[i], axis_at(start.q, members_[i]), around);
   if (conduction_) {
-    std::vector<LumpedMember> bodies;
-    bodies.reserve(members_.size());
-    for (const HeatedElement& member : members_) bodies.push_back(member.body);
     const Eigen::VectorXd end_K = conduction_->backward_euler_step(
-        bodies, Eigen::Map<const Eigen::VectorXd>(temperatures_K_.data(), std::ssize(temperatures_K_)), step_s,
-        Eigen::Map<const Eigen::VectorXd>(absorbed_W.data(), std::ssize(absorbed_W)), around);
-    pending_K_.assign(end_K.begin(), end_K.end());
+        bodies_, Eigen::Map<const Eigen::VectorXd>(temperatures_K_.data(), std::ssize(temperatures_K_)), step_s,
+        Eigen::Map<const Eigen::VectorXd>(absorbed_W_.data(), std::ssize(absorbed_W_)), around);
+    std::copy(end_K.begin(), end_K.end(), pending_K_.begin());
   } else {
-    for (std::size_t i = 0; i < members_.size(); ++i) {
-      pending_K_[i] = backward_euler_step(members_[i].body, temperatures_K_[i], step_s, absorbed_W[i], around);
+    for (std::size_t i = 0; i < n; ++i) {
+      pending_K_[i] = backward_euler_step(bodies_[i], temperatures_K_[i], step_s, absorbed_W_[i], around);
     }
   }
   // Conduction moves heat between members and is no term of the sum (K·1 = 0).
+  const double sink4 = std::pow(around.sink_temperature_K, 4);
   pending_tally_ = tally_;
-  for (std::size_t i = 0; i < members_.size(); ++i) {
-    const LumpedMember& body = members_[i].body;
-    pending_tally_.absorbed_J += step_s * absorbed_W[i];
-    pending_tally_.emitted_J += step_s * emitted_power_W(body, pending_K_[i], around);
+  for (std::size_t i = 0; i < n; ++i) {
+    const LumpedMember& body = bodies_[i];
+    pending_tally_.absorbed_J += step_s * absorbed_W_[i];
+    pending_tally_.emitted_J += step_s * emitted_power_W(body, pending_K_[i], sink4);
     pending_tally_.convected_J += step_s * convected_power_W(body, pending_K_[i], around);
     pending_tally_.stored_J += body.heat_capacity_J_K * (pending_K_[i] - temperatures_K_[i]);
   }
@@ -267,17 +273,18 @@ void ThermalCoupling::after_step(const MotionState& end, bool output) {
 
 void ThermalCoupling::set_temperature_changes(double t0, double t1) {
   const double reference_K = model_.environment->reference_temperature_K;
+  // The segments are written into storage kept from step to step, and copied into the elements'
+  // tables of the same size: no allocation per member and step.
   for (std::size_t i = 0; i < members_.size(); ++i) {
-    TimeFunction::Table table{{t0, t1}, {temperatures_K_[i] - reference_K, pending_K_[i] - reference_K}};
-    members_[i].kind->set_element_temperature_change(model_, members_[i].index, TimeFunction(std::move(table)));
+    segment_.set_segment(t0, temperatures_K_[i] - reference_K, t1, pending_K_[i] - reference_K);
+    members_[i].kind->set_element_temperature_change(model_, members_[i].index, segment_);
   }
   for (const int graded : graded_) {
     const auto i = static_cast<std::size_t>(graded);
     const auto& [local_y, local_z] = local_axes_[i];
-    TimeFunction::Table across_y{{t0, t1}, {differences_K_[i].dot(local_y), pending_differences_K_[i].dot(local_y)}};
-    TimeFunction::Table across_z{{t0, t1}, {differences_K_[i].dot(local_z), pending_differences_K_[i].dot(local_z)}};
-    members_[i].kind->set_element_temperature_gradients(model_, members_[i].index, TimeFunction(std::move(across_y)),
-                                                        TimeFunction(std::move(across_z)));
+    segment_.set_segment(t0, differences_K_[i].dot(local_y), t1, pending_differences_K_[i].dot(local_y));
+    segment_across_z_.set_segment(t0, differences_K_[i].dot(local_z), t1, pending_differences_K_[i].dot(local_z));
+    members_[i].kind->set_element_temperature_gradients(model_, members_[i].index, segment_, segment_across_z_);
   }
 }
 

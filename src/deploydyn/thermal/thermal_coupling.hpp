@@ -100,7 +100,7 @@ class ThermalCoupling final : public StepHook {
     const ElementKind* kind = nullptr;
     int index = 0;
     int node_a = 0, node_b = 0;
-    LumpedMember body;
+    int first_dof_a = 0, first_dof_b = 0;     // the nodes' x in q
     double outer_radius_m = 0.0;              // of the capsule that casts and takes shadows
     Eigen::Vector3d initial_axis = Eigen::Vector3d::Zero();  // unit, as the file places it
     Eigen::Vector3d initial_local_y = Eigen::Vector3d::Zero();  // zero: no section gradient
@@ -116,6 +116,8 @@ class ThermalCoupling final : public StepHook {
   Model& model_;
   DofMap dofs_;
   std::vector<HeatedElement> members_;
+  std::vector<LumpedMember> bodies_;    // members_[i]'s heat balance, contiguous for the step's loops
+  std::vector<double> absorbed_W_;      // work space of a step: Q_abs per member
   std::vector<std::string> names_;
   std::vector<double> temperatures_K_;  // at the last accepted step
   std::vector<double> pending_K_;       // at the end of the step being tried
@@ -142,6 +144,7 @@ class ThermalCoupling final : public StepHook {
   std::vector<Eigen::Vector3d> pending_differences_K_;
   std::vector<std::pair<Eigen::Vector3d, Eigen::Vector3d>> local_axes_;  // y, z per member at the step's start
   TemperatureExtreme largest_difference_{0.0, -1, 0.0};
+  TimeFunction segment_, segment_across_z_;  // the ΔT(t) segments handed to the elements, reused
 };
 
 }  // namespace deploydyn::thermal
