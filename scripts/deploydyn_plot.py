@@ -389,8 +389,9 @@ def plot_modal(out, usable, args, title):
     written = []
     if not tables:
         return written
+    units = modes_figures.driver_units(args.model or pathlib.Path(usable[0][1]) / "model.yaml")
     fig, ax = plt.subplots(figsize=(11.0, 5.0))
-    modes_figures.plot_frequencies(ax, tables)
+    modes_figures.plot_frequencies(ax, tables, units)
     fig.suptitle(title, fontsize=10.5)
     fig.tight_layout()
     save(fig, out, "frequencies", args.format)
@@ -400,7 +401,8 @@ def plot_modal(out, usable, args, title):
     table = dict(tables)[label] if label in dict(tables) else None
     if structure is not None and table is not None:
         angles = view_angles(args.view, args.azim, args.elev, structure.dimension)
-        fig = modes_figures.plot_mode_shapes(structure, table, modes_figures.mode_frames(folder, structure), angles)
+        fig = modes_figures.plot_mode_shapes(structure, table, modes_figures.mode_frames(folder, structure), angles,
+                                                units)
         if fig is not None:
             fig.suptitle(f"{title}: mode shapes of {label}", fontsize=10.5)
             fig.tight_layout()

@@ -20,6 +20,7 @@ import xml.etree.ElementTree as ElementTree
 
 import matplotlib.pyplot as plt
 import numpy as np
+import yaml
 from matplotlib.collections import LineCollection
 
 from structure_view import axis_labels, project, segments
@@ -34,20 +35,35 @@ def signed_frequency_Hz(omega2):
     return np.sign(omega2) * np.sqrt(np.abs(omega2)) / (2.0 * np.pi)
 
 
-def position_axis(table):
-    """(x values, x label) of modes.csv rows: the first driver's position, else the time."""
+def driver_units(model_file):
+    """{driver name: "m" or "rad"} of a model.yaml's drivers: `coordinate` and `length` drivers
+    set a length, the others an angle (docs/model-format.md, "drivers"); {} without the file."""
+    path = pathlib.Path(model_file)
+    if not path.exists():
+        return {}
+    drivers = (yaml.safe_load(path.read_text(encoding="utf-8")) or {}).get("drivers") or {}
+    return {str(name): "m" if (d or {}).get("type") in ("coordinate", "length") else "rad"
+            for name, d in drivers.items()}
+
+
+def position_axis(table, units=None):
+    """(x values, x label, unit) of modes.csv rows: the first driver's position (its unit from
+    `units`, driver_units), else the time."""
     drivers = [c for c in table if c.startswith("position.")]
     if drivers:
-        return table[drivers[0]], f"position of driver {drivers[0][len('position.'):]} (rad or m)"
-    return table["t"], "time t (s) where the drivers stand"
+        name = drivers[0][len("position."):]
+        unit = (units or {}).get(name, "rad or m")
+        return table[drivers[0]], f"position of driver {name} ({unit})", unit
+    return table["t"], "time t (s) where the drivers stand", "s"
 
 
-def plot_frequencies(ax, runs):
-    """runs: [(label, modes.csv as {column: array})]. One line per run and mode."""
+def plot_frequencies(ax, runs, units=None):
+    """runs: [(label, modes.csv as {column: array})]; units: driver_units. One line per run and
+    mode."""
     styles = ("-", "--", ":", "-.")
     unstable_marked = False
     for i, (label, table) in enumerate(runs):
-        x, xlabel = position_axis(table)
+        x, xlabel, _ = position_axis(table, units)
         f = signed_frequency_Hz(table["omega2"])
         modes = table["mode"].astype(int)
         for j, mode in enumerate(sorted(set(modes))):
@@ -108,7 +124,7 @@ def chosen_rows(values, count):
     return [distinct[round(k * (len(distinct) - 1) / (count - 1))] for k in range(count)]
 
 
-def plot_mode_shapes(structure, table, frames, angles):
+def plot_mode_shapes(structure, table, frames, angles, units=None):
     """A figure of mode shapes: rows the driver positions, columns the modes, all panels at one
     scale. None when the folder has no frames to draw."""
     times = chosen_rows(table["t"], MAX_SHAPE_ROWS)
@@ -130,7 +146,7 @@ def plot_mode_shapes(structure, table, frames, angles):
     height = max(0.8, width * (high[1] - low[1]) / max(high[0] - low[0], 1e-12))
     fig, axes = plt.subplots(len(times), len(modes), squeeze=False,
                              figsize=(width * len(modes) + 1.2, (height + 0.6) * len(times) + 1.2))
-    x, _ = position_axis(table)
+    x, _, unit = position_axis(table, units)
     for r, t in enumerate(times):
         for c, mode in enumerate(modes):
             ax = axes[r][c]
@@ -149,7 +165,7 @@ def plot_mode_shapes(structure, table, frames, angles):
             f = signed_frequency_Hz(table["omega2"][row])
             ax.set_title(f"mode {mode}: {f:.4g} Hz" + (" (unstable)" if f < 0 else ""), fontsize=9)
             if c == 0:
-                ax.set_ylabel(f"t = {t:g} s\nposition {x[row]:.4g}", fontsize=9)
+                ax.set_ylabel(f"t = {t:g} s\nposition {x[row]:.4g} {unit}", fontsize=9)
     xlabel, ylabel = axis_labels(*angles)
     fig.supxlabel(f"projection: {xlabel} across, {ylabel} up, one scale; grey: equilibrium; blue: mode "
                   "(largest move a tenth of the shortest bar)", fontsize=9)

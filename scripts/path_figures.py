@@ -65,11 +65,11 @@ def plot_path(fig, runs):
         mark_events(axes[-1], marks, horizontal=False)
     axes[0].set_xlabel("displacement norm ‖q − q₀‖ (m)")
     for ax in axes[:-1]:
-        ax.set_ylabel("load factor μ")
+        ax.set_ylabel("load factor μ (1)")
     eigen_axis = axes[-1]
     eigen_axis.axhline(0.0, color="grey", linewidth=0.8)
     eigen_axis.set_yscale("symlog", linthresh=_linear_range(runs))
-    eigen_axis.set_xlabel("load factor μ")
+    eigen_axis.set_xlabel("load factor μ (1)")
     eigen_axis.set_ylabel("lowest eigenvalues (N/m); < 0: unstable")
     for ax in axes:
         ax.grid(True, alpha=0.3)

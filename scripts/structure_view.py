@@ -107,7 +107,7 @@ def axis_labels(azim, elev):
     for name, angles in VIEWS.items():
         if np.allclose(angles, (azim, elev)) and name != "iso":
             return f"{name[0]} (m)", f"{name[1]} (m)"
-    return f"view azim {azim:g}°, elev {elev:g}° (m)", ""
+    return f"across the view azim {azim:g}°, elev {elev:g}° (m)", "up the view (m)"
 
 
 def segments(structure, points2):

@@ -294,10 +294,61 @@ def test_continuation_folders_draw_their_path_and_events(tmp_path, monkeypatch):
     events = json.loads((folder / "summary.json").read_text())["events"]
     limit_points = sorted(e["mu"] for e in events if e["kind"] == "limit_point")
     assert len(limit_points) == 2
-    ax = figure_axes(figures, "load factor μ")
+    ax = figure_axes(figures, "load factor μ (1)")
     marked = sorted(line.get_ydata()[0] for line in ax.lines if line.get_linestyle() == ":")
     assert marked == pytest.approx(limit_points)
     path = [line for line in ax.lines if line.get_label() == "path"][0]
     assert max(path.get_ydata()) == pytest.approx(1.1)              # to the end of the range
     eigen = figure_axes(figures, "lowest eigenvalues (N/m); < 0: unstable")
     assert min(min(line.get_ydata()) for line in eigen.lines if line.get_label() == "λ1") < 0
+
+
+def has_unit(label):
+    """Whether an axis label names its unit, as "(N·m)" or "(µε)" does."""
+    return "(" in label and label.rstrip().endswith(")") or "(" in label and ")" in label.split("(", 1)[1]
+
+
+def test_every_axis_of_every_figure_names_its_unit(tmp_path, monkeypatch):
+    """Issue 31: units on every axis, in the figures of a time history (bars, drivers, energies),
+    a hinged boom, a 3D frame of beams (its structure in the iso view too), a modal folder and a
+    continuation folder. An axis sharing its x with a labelled one counts as labelled (stacked
+    panels label the bottom one)."""
+    folders = {"linkage": tmp_path / "linkage", "boom": tmp_path / "boom", "frame": tmp_path / "frame",
+               "modal": tmp_path / "modal", "path": tmp_path / "path"}
+    run_cli("run", PAPER / "general.yaml", "--out", folders["linkage"], "--quiet", "--set", f"analysis.end={END}")
+    run_cli("run", SOURCE_DIR / "examples" / "boom" / "boom.yaml", "--out", folders["boom"], "--quiet")
+    run_cli("run", SOURCE_DIR / "examples" / "beams" / "frame3d.yaml", "--out", folders["frame"], "--quiet")
+    run_cli("modes", PAPER / "parallel.yaml", "--count", 2, "--at", 0, 1, "--out", folders["modal"])
+    (tmp_path / "mises.yaml").write_text(MISES)
+    run_cli("run", tmp_path / "mises.yaml", "--quiet", "--out", folders["path"])
+    import deploydyn_plot
+    from matplotlib.figure import Figure
+    close = deploydyn_plot.plt.close
+    for name, folder in folders.items():
+        for view in ([["--view", "iso"], []] if name == "frame" else [[]]):
+            figures = []
+            monkeypatch.setattr(deploydyn_plot.plt, "close", lambda fig=None: figures.append(fig))
+            assert deploydyn_plot.main([str(folder), "--out", str(tmp_path / f"plots_{name}"), "--format", "png",
+                                        *view]) == 0
+            for figure in [f for f in figures if isinstance(f, Figure)]:
+                drawn = [ax for ax in figure.axes if ax.get_visible() and (ax.lines or ax.collections or ax.images)]
+                for ax in drawn:
+                    title = figure._suptitle.get_text() if figure._suptitle else ""
+                    where = f"{name} {view}: figure {title!r}, axes {ax.get_title()!r}"
+                    if not len(ax.get_xticks()) and not len(ax.get_yticks()):
+                        continue  # a picture without a scale (the mode shapes' grid)
+                    colour_bar = ax.get_label() == "<colorbar>"
+                    if colour_bar:
+                        label = ax.get_ylabel() or ax.get_xlabel()
+                        assert has_unit(label), f"{where}: colour bar {label!r}"
+                        continue
+                    y = ax.get_ylabel()
+                    if figure._supylabel is not None and not has_unit(y):
+                        y = figure._supylabel.get_text()
+                    assert has_unit(y), f"{where}: y label {y!r}"
+                    x_labels = [other.get_xlabel() for other in figure.axes
+                                if other is ax or ax.get_shared_x_axes().joined(ax, other)]
+                    if figure._supxlabel is not None:
+                        x_labels.append(figure._supxlabel.get_text())
+                    assert any(has_unit(x) for x in x_labels), f"{where}: x labels {x_labels!r}"
+            close("all")

@@ -27,6 +27,7 @@
 #include <string>
 #include <vector>
 
+#include "deploydyn/checks/box_sweep.hpp"
 #include "deploydyn/checks/member_checks.hpp"
 #include "deploydyn/checks/verdict.hpp"
 #include "deploydyn/io/model_loader.hpp"
@@ -371,6 +372,55 @@ TEST(Clearance, VerletListReportsWhatEveryPairAtEveryRecordGives) {
     ASSERT_TRUE(pair.first_violation_s) << v.member_a << " " << v.member_b;
     EXPECT_NEAR(v.first_violation_s, *pair.first_violation_s, 1e-9);
     EXPECT_NEAR(v.min_distance_m, pair.min_m, 1e-12);
+  }
+}
+
+// The broad phase's sort and sweep (checks/box_sweep.hpp) against every pair of boxes: with a
+// fixed pruning distance it visits exactly the pairs whose boxes are closer, each once; with a
+// pruning distance that falls at each visit it still visits every pair closer than the last.
+TEST(BoxSweep, VisitsThePairsEveryPairOfBoxesGivesBelowThePruningDistance) {
+  std::mt19937 random(3);
+  std::uniform_real_distribution<double> place(0.0, 10.0), size(0.0, 1.5);
+  std::vector<AxisBox> boxes(300);
+  for (AxisBox& b : boxes) {
+    b.low_m = Eigen::Vector3d(place(random), place(random), 0.3 * place(random));
+    b.high_m = b.low_m + Eigen::Vector3d(size(random), size(random), size(random));
+  }
+  const auto box_distance = [&](int i, int j) {
+    const AxisBox& a = boxes[static_cast<std::size_t>(i)];
+    const AxisBox& b = boxes[static_cast<std::size_t>(j)];
+    return (b.low_m - a.high_m).cwiseMax(a.low_m - b.high_m).cwiseMax(0.0).norm();
+  };
+  const int n = static_cast<int>(boxes.size());
+  BoxSweep sweep;
+  constexpr double kPruning_m = 0.4;
+  std::vector<int> visits(static_cast<std::size_t>(n * n), 0);
+  sweep.pairs(boxes, kPruning_m, [&](int i, int j) {
+    ++visits[static_cast<std::size_t>(std::min(i, j) * n + std::max(i, j))];
+    return kPruning_m;
+  });
+  int n_close = 0;
+  for (int i = 0; i < n; ++i) {
+    for (int j = i + 1; j < n; ++j) {
+      const bool close = box_distance(i, j) < kPruning_m;
+      n_close += close ? 1 : 0;
+      EXPECT_EQ(visits[static_cast<std::size_t>(i * n + j)], close ? 1 : 0) << i << ", " << j;
+    }
+  }
+  EXPECT_GT(n_close, 100);  // not a vacuous check
+  // Falling: from everything (infinite) down to 0.2 m after 50 visits.
+  std::vector<bool> seen(static_cast<std::size_t>(n * n), false);
+  int n_visits = 0;
+  double pruning_m = std::numeric_limits<double>::infinity();
+  sweep.pairs(boxes, pruning_m, [&](int i, int j) {
+    seen[static_cast<std::size_t>(std::min(i, j) * n + std::max(i, j))] = true;
+    pruning_m = ++n_visits < 50 ? std::numeric_limits<double>::infinity() : 0.2;
+    return pruning_m;
+  });
+  for (int i = 0; i < n; ++i) {
+    for (int j = i + 1; j < n; ++j) {
+      if (box_distance(i, j) < pruning_m) EXPECT_TRUE(seen[static_cast<std::size_t>(i * n + j)]) << i << ", " << j;
+    }
   }
 }
 

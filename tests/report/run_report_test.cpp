@@ -1,6 +1,6 @@
 // The report's data, checked apart from the browser (python/tests/test_report.py drives that):
 // frame selection, the Float32 encoding the page decodes, what a folder with a reduced history
-// gives, and the errors of a folder that is not a run's.
+// gives, the errors of a folder that is not a run's, and the units of the plotted columns.
 
 #include <gtest/gtest.h>
 
@@ -13,6 +13,8 @@
 #include <string>
 
 #include "deploydyn/io/model_loader.hpp"
+#include "deploydyn/report/column_units.hpp"
+#include "deploydyn/results/history_layout.hpp"
 #include "deploydyn/runs/run_to_folder.hpp"
 #include "deploydyn/report/run_report.hpp"
 #include "support/report_page.hpp"
@@ -160,6 +162,64 @@ TEST(RunReport, AFolderThatIsNotARunsNamesTheMissingFile) {
     EXPECT_NE(std::string(error.what()).find((folder / "summary.json").string()), std::string::npos) << error.what();
   }
   EXPECT_THROW(run_report_html(folder / "nowhere"), ReportError);
+}
+
+// The units the plots label their axes with (report/column_units.hpp): every history column a
+// model can give has one, the one docs/model-format.md declares for its family, written here
+// apart from the program's tables. The unit of a column's prefix (before its first dot):
+const std::map<std::string, std::string> kDocumentedUnits = {
+    {"t", "s"}, {"x", "m"}, {"y", "m"}, {"z", "m"}, {"rz", "rad"}, {"ux", "m"}, {"uy", "m"}, {"uz", "m"},
+    {"strain", "1"}, {"mstrain", "1"}, {"force", "N"}, {"stress", "Pa"}, {"moment", "N·m"},
+    {"shear", "N"}, {"rest", "m"}, {"slack", "1"}, {"hinge_angle", "rad"}, {"hinge_torque", "N·m"},
+    {"spring_torque", "N·m"}, {"damper_torque", "N·m"}, {"friction_torque", "N·m"},
+    {"lock_torque", "N·m"}, {"pin_force", "N"}, {"dissipated", "J"}, {"hinge_state", "1"},
+    {"torque", "N·m"}, {"kinetic", "J"}, {"strain_energy", "J"}, {"external_work", "J"}};
+
+std::string documented_unit(const std::string& column) {
+  if (column.starts_with("reaction.")) return column.ends_with(".rz") ? "N·m" : "N";
+  return kDocumentedUnits.at(column.substr(0, column.find('.')));
+}
+
+// A mast of a beam, two bars and a cable, a hinge between the bars and a motor on one: every
+// element family of a 2D model.
+constexpr const char* kEveryFamilyModel = R"(
+name: every family
+nodes: {A: [0, 0], B: [0, 1], C: [1, 1], D: [1, 0], E: [2, 0]}
+materials: {steel: {E: 2.0e11, alpha: 1.2e-5, density: 7850}}
+elements:
+  mast: {type: beam, nodes: [A, B], area: 1.0e-4, inertia_z: 1.0e-8, material: steel}
+  arm: {nodes: [B, C], area: 1.0e-4, material: steel}
+  leg: {nodes: [C, D], area: 1.0e-4, material: steel}
+  stay: {type: cable, nodes: [E, C], area: 1.0e-5, material: steel}
+  knee: {type: hinge, nodes: [B, C, D], stiffness: 10}
+supports: [{node: A, fix: [x, y, rotation]}, {node: D}, {node: E}]
+drivers:
+  motor: {type: bar_angle, element: arm, pivot: B, profile: {type: constant, value: 0.1}}
+analysis: {type: dynamic, end: 0.01, step: 0.001}
+output: {select: {quantities: [position, displacement, strain, mstrain, force, stress, moment, shear, rest, slack, hinge_angle, hinge_torque, spring_torque, damper_torque, friction_torque, lock_torque, pin_force, dissipated, hinge_state, driver, energy, reaction]}}
+)";
+
+TEST(ColumnUnits, EveryHistoryColumnHasTheUnitItsFamilyIsDocumentedIn) {
+  const Model model = load_model_from_string(kEveryFamilyModel, "every_family.yaml");
+  const HistoryLayout layout(model);
+  std::map<std::string, int> prefixes;
+  for (const std::string& column : layout.columns()) {
+    EXPECT_EQ(history_column_unit(model, column), documented_unit(column)) << column;
+    ++prefixes[column.substr(0, column.find('.'))];
+  }
+  // Each element family, the driver, the energies and the reactions are among them.
+  for (const char* family : {"moment", "slack", "hinge_angle", "pin_force", "kinetic", "reaction", "torque", "rz"}) {
+    EXPECT_GT(prefixes[family], 0) << family;
+  }
+  EXPECT_EQ(history_column_unit(model, "no_such.column"), "");
+}
+
+TEST(ColumnUnits, AQuantityNameGivesItsLabelAndUnit) {
+  using Labelled = std::pair<std::string, std::string>;
+  EXPECT_EQ(quantity_label_and_unit("bending_moment_z_Nm"), (Labelled{"bending moment z", "N·m"}));
+  EXPECT_EQ(quantity_label_and_unit("shear_force_y_N"), (Labelled{"shear force y", "N"}));
+  EXPECT_EQ(quantity_label_and_unit("rest_length_m"), (Labelled{"rest length", "m"}));
+  EXPECT_EQ(quantity_label_and_unit("mechanical_strain"), (Labelled{"mechanical strain", "1"}));
 }
 
 }  // namespace

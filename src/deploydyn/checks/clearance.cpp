@@ -1,11 +1,8 @@
 #include "deploydyn/checks/clearance.hpp"
 
-#include <fcl/broadphase/broadphase_dynamic_AABB_tree.h>
-#include <fcl/geometry/shape/capsule.h>
-#include <fcl/narrowphase/collision_object.h>
 #include <fcl/narrowphase/detail/primitive_shape_algorithm/capsule_capsule.h>
 
-#include <Eigen/Geometry>
+#include <Eigen/Core>
 #include <algorithm>
 #include <array>
 #include <chrono>
@@ -18,6 +15,7 @@
 #include <unordered_map>
 #include <unordered_set>
 
+#include "deploydyn/checks/box_sweep.hpp"
 #include "deploydyn/checks/member_capacities.hpp"
 #include "deploydyn/checks/member_pairs.hpp"
 #include "deploydyn/model/dof_map.hpp"
@@ -68,10 +66,8 @@ struct ClearanceWatch::State {
   bool watches_violations = false;  // ClearanceReport::watches_violations
   double limit_m = 0.0;  // closer than this violates: the required clearance, else 0 (overlap)
 
-  std::vector<std::shared_ptr<fcl::Capsuled>> shapes;
-  std::vector<std::unique_ptr<fcl::CollisionObjectd>> objects;
-  std::vector<fcl::CollisionObjectd*> registered;  // objects, as the manager takes them
-  fcl::DynamicAABBTreeCollisionManagerd manager;
+  std::vector<AxisBox> boxes;  // the capsules' boxes at the last broad phase
+  BoxSweep sweep;
 
   // The Verlet list (docs/theory.md, "The broad phase"): the capsule pairs that were within the
   // threshold plus the skin when it was made, and the coordinates then.
@@ -201,28 +197,24 @@ struct ClearanceWatch::State {
   // the list when within the threshold plus the skin. The threshold only falls, during the walk
   // and over the run, so the list holds every pair that can matter until a node has moved half
   // the skin (docs/theory.md, "The broad phase").
-  static bool visit(fcl::CollisionObjectd* o1, fcl::CollisionObjectd* o2, void* data, double& pruning_m) {
-    auto& state = *static_cast<State*>(data);
-    const int a = static_cast<int>(reinterpret_cast<std::intptr_t>(o1->getUserData()));
-    const int b = static_cast<int>(reinterpret_cast<std::intptr_t>(o2->getUserData()));
-    if (const std::optional<std::uint64_t> k = state.watched_pair(a, b)) {
-      const double distance_m = state.distance(a, b, state.positions_m);
-      PairState* pair = state.take(*k, nullptr, a, b, distance_m);
-      const double threshold_m = state.threshold();
-      if (distance_m < threshold_m + state.skin_m) {
-        state.near.push_back({a, b, *k, pair, state.skip_until(distance_m, threshold_m)});
-      }
+  // Returns the pruning distance from then on.
+  double visit(int a, int b) {
+    if (a > b) std::swap(a, b);  // the capsules' order, whatever the sweep's
+    if (const std::optional<std::uint64_t> k = watched_pair(a, b)) {
+      const double distance_m = distance(a, b, positions_m);
+      PairState* pair = take(*k, nullptr, a, b, distance_m);
+      const double threshold_m = threshold();
+      if (distance_m < threshold_m + skin_m) near.push_back({a, b, *k, pair, skip_until(distance_m, threshold_m)});
     }
-    pruning_m = state.threshold() + state.skin_m;
-    return false;
+    return threshold() + skin_m;
   }
 
   // The broad phase at record coordinates `q`: every pair of boxes closer than the threshold plus
   // the skin measured, and the list made of them.
   void make_list() {
-    move_capsules();
+    place_boxes();
     near.clear();
-    manager.distance(this, &State::visit);
+    sweep.pairs(boxes, threshold() + skin_m, [this](int a, int b) { return visit(a, b); });
     listed_positions_m = positions_m;
     ++n_lists;
   }
@@ -289,28 +281,15 @@ struct ClearanceWatch::State {
     return std::sqrt(largest_m2_s2);
   }
 
-  void move_capsules() {
+  // Each capsule's box: its axis's end points' box grown by its radius.
+  void place_boxes() {
+    boxes.resize(capsules.size());
     for (std::size_t c = 0; c < capsules.size(); ++c) {
       const Eigen::Vector3d& a = positions_m[static_cast<std::size_t>(capsules[c].nodes[0])];
       const Eigen::Vector3d& b = positions_m[static_cast<std::size_t>(capsules[c].nodes[1])];
-      const Eigen::Vector3d along = b - a;
-      const double length_m = along.norm();
-      // FCL's capsule lies along its frame's z, centred on its origin.
-      fcl::Transform3d frame = fcl::Transform3d::Identity();
-      if (length_m > 0.0) {
-        frame.linear() = Eigen::Quaterniond::FromTwoVectors(Eigen::Vector3d::UnitZ(), along / length_m).toRotationMatrix();
-      }
-      frame.translation() = 0.5 * (a + b);
-      shapes[c]->lz = length_m;
-      shapes[c]->computeLocalAABB();
-      objects[c]->setTransform(frame);
-      objects[c]->computeAABB();
+      boxes[c].low_m = a.cwiseMin(b).array() - capsules[c].radius_m;
+      boxes[c].high_m = a.cwiseMax(b).array() + capsules[c].radius_m;
     }
-    // Built anew from the boxes: a refitted tree keeps a topology that a deployment's large
-    // motion spoils (boxes that were neighbours folded are far apart deployed).
-    manager.clear();
-    manager.registerObjects(registered);
-    manager.setup();
   }
 };
 
@@ -330,17 +309,11 @@ ClearanceWatch::ClearanceWatch(const Model& model) : state_(std::make_unique<Sta
   if (!s.applies) return;
   for (std::size_t m = 0; m < members.size(); ++m) {
     for (const CheckedElement& e : members[m].elements) {
-      const int capsule = static_cast<int>(s.capsules.size());
       const double radius_m = capsule_radius(model, members[m].kind, e.element);
       s.capsules.push_back({static_cast<int>(m), element_nodes(model, members[m].kind, e.element), radius_m});
-      s.shapes.push_back(std::make_shared<fcl::Capsuled>(radius_m, 0.0));
-      s.objects.push_back(std::make_unique<fcl::CollisionObjectd>(s.shapes.back()));
-      s.objects.back()->setUserData(reinterpret_cast<void*>(static_cast<std::intptr_t>(capsule)));
-      s.registered.push_back(s.objects.back().get());
     }
   }
-  // The manager takes the capsules at the first record, placed (move_capsules); the skin is a
-  // share of their mean length in the model.
+  // The skin is a share of the capsules' mean length in the model.
   double total_length_m = 0.0;
   for (const State::Capsule& c : s.capsules) {
     total_length_m += (model.nodes[static_cast<std::size_t>(c.nodes[1])].position_m -

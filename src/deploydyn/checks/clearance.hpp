@@ -8,8 +8,9 @@
 // node has moved half its skin. It only watches: members are not stopped by each other (no
 // contact response), so a clash is reported, never prevented.
 //
-// The broad phase and the capsule distances are FCL's (libfcl-dev), behind this header: what
-// includes it does not see FCL. Which members are watched, as what capsules: checks/member_pairs.hpp.
+// The capsule distances are FCL's segment–segment kernel (libfcl-dev), behind this header: what
+// includes it does not see FCL; the broad phase is a sort and sweep of the capsules' boxes
+// (checks/box_sweep.hpp). Which members are watched, as what capsules: checks/member_pairs.hpp.
 
 #include <memory>
 #include <optional>

@@ -10,6 +10,7 @@
 #include <utility>
 
 #include "deploydyn/elements/element_kinds.hpp"
+#include "deploydyn/report/column_units.hpp"
 #include "deploydyn/report/drawn_utilizations.hpp"
 #include "deploydyn/report/member_sections.hpp"
 #include "deploydyn/report/run_report.hpp"
@@ -106,23 +107,6 @@ Colouring stresses(const Model& model, const HistoryTable& history, const std::v
   return c;
 }
 
-// "shear_force_y_N" → ("shear force y", "N"): a ResultQuantity's name and its unit.
-std::pair<std::string, std::string> label_and_unit(std::string_view name) {
-  static constexpr std::pair<std::string_view, std::string_view> kUnits[] = {
-      {"_Nm", "N·m"}, {"_N", "N"}, {"_Pa", "Pa"}, {"_m", "m"}, {"_rad", "rad"}, {"_K", "K"}, {"_J", "J"}};
-  std::string unit = "1";  // dimensionless: a strain, a slack flag
-  for (const auto& [suffix, u] : kUnits) {
-    if (name.ends_with(suffix)) {
-      name.remove_suffix(suffix.size());
-      unit = u;
-      break;
-    }
-  }
-  std::string label(name);
-  std::replace(label.begin(), label.end(), '_', ' ');
-  return {label, unit};
-}
-
 // The other quantities the drawn members' types report (ElementKind::quantities) that history.csv
 // holds for some drawn member: (history column prefix, ResultQuantity name), in the types' order.
 std::vector<std::pair<std::string, std::string>> other_quantities(const Model& model, const HistoryTable& history,
@@ -205,7 +189,7 @@ json member_colourings(const Model& model, const HistoryTable& history, const st
   }
   for (const auto& [key, quantity] : other_quantities(model, history, members)) {
     Colouring c = from_columns(history, columns_of(history, key + ".", members), rows);
-    const auto [label, unit] = label_and_unit(quantity);
+    const auto [label, unit] = quantity_label_and_unit(quantity);
     out.push_back(diverging(key, fmt::format("{} ({})", label, unit), unit, "blue negative, red positive (history.csv's " + key + ".*)",
                             std::move(c)));
   }

@@ -35,6 +35,60 @@
   }
   function text(id, value) { document.getElementById(id).textContent = value; }
 
+  // --- Plot axes -----------------------------------------------------------------------------
+  // Round ticks over [lo, hi]: a step of 1, 2 or 5 × 10^n giving about `target` intervals, and
+  // its multiples k·step in the range; `cover` widens the range to the multiples around it, so
+  // that the first and last ticks bound the data.
+  function niceTicks(lo, hi, { target = 6, cover = false } = {}) {
+    if (!Number.isFinite(lo) || !Number.isFinite(hi)) { lo = -1; hi = 1; }  // nothing drawn
+    if (!(hi > lo)) { lo -= 1; hi += 1; }
+    const raw = (hi - lo) / target;
+    const n = Math.floor(Math.log10(raw));
+    const mantissa = [1, 2, 5, 10].find((m) => m * 10 ** n >= raw * (1 - 1e-9));
+    // k·m·10^n, divided rather than multiplied by a negative power: 3 × 0.1 prints 0.3.
+    const at = (k) => (n < 0 ? (k * mantissa) / 10 ** -n : k * mantissa * 10 ** n);
+    const step = at(1);
+    const first = (cover ? Math.floor : Math.ceil)(lo / step - (cover ? -1e-9 : 1e-9));
+    const last = (cover ? Math.ceil : Math.floor)(hi / step + (cover ? -1e-9 : 1e-9));
+    const ticks = [];
+    for (let k = first; k <= last; ++k) ticks.push(at(k));
+    const digits = Math.max(0, -Math.floor(Math.log10(step) + 1e-9));
+    const largest = Math.max(Math.abs(ticks[0]), Math.abs(ticks[ticks.length - 1]));
+    const exponential = largest >= 1e6 || step < 1e-4;
+    const format = (v) => {
+      if (v === 0) return '0';
+      if (!exponential) return v.toFixed(digits);
+      return v.toExponential(Math.max(0, Math.floor(Math.log10(largest)) - Math.floor(Math.log10(step) + 1e-9)));
+    };
+    return { lo: cover ? ticks[0] : lo, hi: cover ? ticks[ticks.length - 1] : hi, step, ticks, labels: ticks.map(format) };
+  }
+  // The frame, round ticks and labels of a plot; `x` and `y` from niceTicks, `at` their pixel
+  // mappings. Recorded in report.plotAxes[canvas id] for the browser tests.
+  function drawAxes(context, canvas, { box, x, y, px, py, xLabel, yLabel, xUnit, yUnit }) {
+    const [left, top, right, bottom] = box;
+    context.strokeStyle = '#999'; context.fillStyle = '#333'; context.font = '11px sans-serif';
+    context.strokeRect(left, top, right - left, bottom - top);
+    context.textAlign = 'right';
+    y.ticks.forEach((v, k) => {
+      context.fillText(y.labels[k], left - 5, py(v) + 4);
+      context.beginPath(); context.moveTo(left - 3, py(v)); context.lineTo(left, py(v)); context.stroke();
+    });
+    context.textAlign = 'center';
+    x.ticks.forEach((v, k) => {
+      context.fillText(x.labels[k], px(v), bottom + 14);
+      context.beginPath(); context.moveTo(px(v), bottom); context.lineTo(px(v), bottom + 3); context.stroke();
+    });
+    context.fillText(xLabel, (left + right) / 2, bottom + 28);
+    context.save(); context.translate(12, (top + bottom) / 2); context.rotate(-Math.PI / 2);
+    context.fillText(yLabel, 0, 0); context.restore();
+    context.textAlign = 'start';
+    report.plotAxes = report.plotAxes || {};
+    report.plotAxes[canvas.id] = {
+      x: { label: xLabel, unit: xUnit, lo: x.lo, hi: x.hi, step: x.step, ticks: x.ticks, labels: x.labels },
+      y: { label: yLabel, unit: yUnit, lo: y.lo, hi: y.hi, step: y.step, ticks: y.ticks, labels: y.labels },
+    };
+  }
+
   // --- Summary -------------------------------------------------------------------------------
   // A time history's events with their times: summary.json's element events (latches, slack
   // cables, …, at most 200 of them) and the verdict's first failure; listed in the summary and
@@ -635,7 +689,7 @@
   // --- Continuation folder: the path and its eigenvalues, events marked ----------------------
   // A line plot on `canvas`: series [{x, y, colour, label}], marks [{x, y, symbol}], vertical
   // lines at `verticals`, a ring at `chosen`. Returns the pixel mapping (CSS pixels).
-  function linePlot(canvas, { xLabel, yLabel, series, marks = [], verticals = [], chosen = null, zero = false }) {
+  function linePlot(canvas, { xLabel, yLabel, xUnit, yUnit, series, marks = [], verticals = [], chosen = null, zero = false }) {
     const dpr = window.devicePixelRatio || 1;
     canvas.width = canvas.clientWidth * dpr; canvas.height = canvas.clientHeight * dpr;
     const context = canvas.getContext('2d');
@@ -652,19 +706,12 @@
     if (zero) { y0 = Math.min(y0, 0); y1 = Math.max(y1, 0); }
     if (!(x1 > x0)) { x0 -= 1; x1 += 1; }
     if (!(y1 > y0)) { y0 -= 1; y1 += 1; }
-    const padY = 0.04 * (y1 - y0); y0 -= padY; y1 += padY;
+    const xAxis = niceTicks(x0, x1, { cover: true }), yAxis = niceTicks(y0, y1, { target: 5, cover: true });
+    x0 = xAxis.lo; x1 = xAxis.hi; y0 = yAxis.lo; y1 = yAxis.hi;
     const px = (v) => left + (v - x0) / (x1 - x0) * (W - left - right);
     const py = (v) => top + (y1 - v) / (y1 - y0) * (H - top - bottom);
-    context.strokeStyle = '#999'; context.fillStyle = '#333'; context.font = '11px sans-serif';
-    context.strokeRect(left, top, W - left - right, H - top - bottom);
-    for (let k = 0; k <= 4; ++k) {
-      const v = y0 + (y1 - y0) * k / 4, u = x0 + (x1 - x0) * k / 4;
-      context.fillText(formatNumber(v), 18, py(v) + 4);  // right of the rotated y label
-      context.fillText(formatNumber(u), px(u) - 12, H - 20);
-    }
-    context.fillText(xLabel, left + (W - left - right) / 2 - 40, H - 4);
-    context.save(); context.translate(12, top + (H - top - bottom) / 2 + 40); context.rotate(-Math.PI / 2);
-    context.fillText(yLabel, 0, 0); context.restore();
+    drawAxes(context, canvas, { box: [left, top, W - right, H - bottom], x: xAxis, y: yAxis, px, py,
+                                xLabel, yLabel, xUnit, yUnit });
     if (zero && y0 < 0 && y1 > 0) {
       context.strokeStyle = '#bbb'; context.beginPath(); context.moveTo(left, py(0)); context.lineTo(W - right, py(0)); context.stroke();
     }
@@ -701,8 +748,9 @@
   function showPath(frames) {
     const path = data.path;
     document.getElementById('path-section').hidden = false;
-    const labels = { dT_C: 'ΔT (°C)', load_N: 'load (N)', time_s: 'drivers\' time t (s)' };
-    const parameterLabel = labels[path.parameter] || path.parameter;
+    const labels = { dT_C: ['ΔT', '°C'], load_N: ['load', 'N'], time_s: ['drivers\' time t', 's'] };
+    const [parameterName, parameterUnit] = labels[path.parameter] || [path.parameter, ''];
+    const parameterLabel = parameterUnit ? `${parameterName} (${parameterUnit})` : parameterName;
     const symbols = { limit_point: '◆', bifurcation: '▲', singular_constraints: '✕' };
     const palette = ['#1f77b4', '#d62728', '#2ca02c', '#ff7f0e', '#9467bd', '#8c564b'];
     const pathCanvas = document.getElementById('path-plot'), eigenCanvas = document.getElementById('eigen-plot');
@@ -712,11 +760,11 @@
       const marks = path.events.map((e) => ({ x: path.displacement_norm[e.row], y: path.value[e.row], symbol: symbols[e.kind] || '●' }));
       const chosen = chosenRow === null ? null : { x: path.displacement_norm[chosenRow], y: path.value[chosenRow] };
       mapping = linePlot(pathCanvas, {
-        xLabel: 'displacement norm ‖q − q₀‖ (m)', yLabel: parameterLabel, marks, chosen,
+        xLabel: 'displacement norm ‖q − q₀‖ (m)', yLabel: parameterLabel, xUnit: 'm', yUnit: parameterUnit, marks, chosen,
         series: [{ x: path.displacement_norm, y: path.value, colour: '#1f3a5f', label: 'path' }],
       });
       linePlot(eigenCanvas, {
-        xLabel: parameterLabel, yLabel: 'lowest eigenvalues (N/m)', zero: true,
+        xLabel: parameterLabel, yLabel: 'lowest eigenvalues (N/m)', xUnit: parameterUnit, yUnit: 'N/m', zero: true,
         verticals: path.events.map((e) => path.value[e.row]),
         series: path.eigenvalues.map((v, k) => ({ x: path.value, y: v, colour: palette[k % palette.length], label: `λ${k + 1}` })),
         chosen: chosenRow === null || !path.eigenvalues.length ? null : { x: path.value[chosenRow], y: path.eigenvalues[0][chosenRow] },
@@ -750,9 +798,10 @@
     const t = decode(p.t, Float64Array);
     const series = new Map();
     const select = document.getElementById('plot-columns');
+    const unitOf = new Map(p.columns.map((name, k) => [name, (p.units || [])[k] || '']));
     p.columns.forEach((name, k) => {
       const option = document.createElement('option');
-      option.value = name; option.textContent = name;
+      option.value = name; option.textContent = unitOf.get(name) ? `${name} (${unitOf.get(name)})` : name;
       option.selected = p.defaults.includes(name);
       select.append(option);
       series.set(name, () => decode(p.values[k], Float64Array));
@@ -770,7 +819,7 @@
       const dpr = window.devicePixelRatio || 1;
       canvas.width = canvas.clientWidth * dpr; canvas.height = canvas.clientHeight * dpr;
       context.setTransform(dpr, 0, 0, dpr, 0, 0);
-      const W = canvas.clientWidth, H = canvas.clientHeight, left = 70, right = 10, top = 10, bottom = 30;
+      const W = canvas.clientWidth, H = canvas.clientHeight, left = 80, right = 10, top = 10, bottom = 34;
       context.clearRect(0, 0, W, H);
       const names = chosen();
       let lo = Infinity, hi = -Infinity;
@@ -779,16 +828,22 @@
         for (let i = 0; i < t.length; ++i) if (t[i] >= range[0] && t[i] <= range[1] && Number.isFinite(v[i])) { lo = Math.min(lo, v[i]); hi = Math.max(hi, v[i]); }
       }
       if (!(hi > lo)) { lo -= 1; hi += 1; }
+      // The time axis keeps the chosen range (zoom) with the round ticks inside it; the value
+      // axis widens to the ticks around the data.
+      const yAxis = niceTicks(lo, hi, { target: 5, cover: true });
+      lo = yAxis.lo; hi = yAxis.hi;
       const x = (s) => left + (s - range[0]) / (range[1] - range[0] || 1) * (W - left - right);
       const y = (v) => top + (hi - v) / (hi - lo) * (H - top - bottom);
-      context.strokeStyle = '#999'; context.fillStyle = '#333'; context.font = '11px sans-serif';
-      context.strokeRect(left, top, W - left - right, H - top - bottom);
-      for (let k = 0; k <= 4; ++k) {
-        const v = lo + (hi - lo) * k / 4, s = range[0] + (range[1] - range[0]) * k / 4;
-        context.fillText(formatNumber(v), 4, y(v) + 4);
-        context.fillText(formatNumber(s), x(s) - 10, H - 12);
-      }
-      context.fillText('t (s)', W - 40, H - 2);
+      // The y label: the chosen quantities (column prefixes) and their units.
+      const distinct = (list) => [...new Set(list)];
+      const kinds = distinct(names.map((name) => name.split('.')[0]));
+      const units = distinct(names.map((name) => unitOf.get(name) || '?'));
+      const quantity = kinds.length > 3 ? `${kinds.slice(0, 3).join(', ')}, …` : kinds.join(', ');
+      drawAxes(context, canvas, {
+        box: [left, top, W - right, H - bottom], x: niceTicks(range[0], range[1] > range[0] ? range[1] : range[0] + 1),
+        y: yAxis, px: x, py: y, xLabel: 't (s)', yLabel: `${quantity || 'value'} (${units.join(', ') || '–'})`,
+        xUnit: 's', yUnit: units.join(', '),
+      });
       names.forEach((name, n) => {
         const v = values(name);
         context.strokeStyle = palette[n % palette.length];
@@ -800,7 +855,7 @@
         }
         context.stroke();
         context.fillStyle = palette[n % palette.length];
-        context.fillText(name, left + 8, top + 14 + 13 * n);
+        context.fillText(unitOf.get(name) ? `${name} (${unitOf.get(name)})` : name, left + 8, top + 14 + 13 * n);
       });
       // The events as vertical lines, labelled where the labels do not overlap.
       const eventColours = { failure: '#c0392b', 'hinge.latched': '#1e8449', 'cable.slack': '#d68910' };

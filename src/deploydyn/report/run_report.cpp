@@ -16,6 +16,7 @@
 
 #include "deploydyn/elements/element_kinds.hpp"
 #include "deploydyn/io/model_loader.hpp"
+#include "deploydyn/report/column_units.hpp"
 #include "deploydyn/report/history_table.hpp"
 #include "deploydyn/report/member_colourings.hpp"
 #include "deploydyn/report/member_sections.hpp"
@@ -135,7 +136,8 @@ bool is_position(const std::string& column, const Model& model) {
   return prefix.size() == 3 && prefix[0] == 'R' && (model.dimension == 3);
 }
 
-// The columns offered to plot (not positions: the animation shows those), as Float64 arrays,
+// The columns offered to plot (not positions: the animation shows those), as Float64 arrays with
+// their units (report/column_units.hpp),
 // decimated to at most 5000 rows. Within options.max_plot_values: the drivers, energies and
 // reactions, then the elements' forces by peak, then their other quantities.
 json plot_data(const Model& model, const HistoryTable& history, const ReportOptions& options, std::string& note) {
@@ -183,9 +185,10 @@ json plot_data(const Model& model, const HistoryTable& history, const ReportOpti
     for (std::size_t r = 0; r < history.n_rows; r += stride) v.push_back(history.values[c][r]);
     return binary_base64<double>(v);
   };
-  json columns = json::array(), values = json::array();
+  json columns = json::array(), units = json::array(), values = json::array();
   for (const std::size_t c : chosen) {
     columns.push_back(history.columns[c]);
+    units.push_back(history_column_unit(model, history.columns[c]));
     values.push_back(decimated(c));
   }
   // Shown at first: the drivers' efforts, or without drivers the three most loaded members.
@@ -197,7 +200,7 @@ json plot_data(const Model& model, const HistoryTable& history, const ReportOpti
     defaults.push_back(history.columns[forces[k].second]);
   }
   if (defaults.empty() && !columns.empty()) defaults.push_back(columns[0]);
-  return {{"t", decimated(0)}, {"columns", columns}, {"values", values}, {"defaults", defaults}};
+  return {{"t", decimated(0)}, {"columns", columns}, {"units", units}, {"values", values}, {"defaults", defaults}};
 }
 
 // envelopes.csv as rows for the table; beyond max_table_rows, the rows of highest peak of each

@@ -3,7 +3,8 @@
 // browser opens without a server or a network (docs/report.md):
 //   - the summary: model, status and why the run ended, analysis, steps, drivers' peaks,
 //     warnings, events;
-//   - time histories of the history's columns, chosen from a list, in zoomable plots;
+//   - time histories of the history's columns, chosen from a list, in zoomable plots, each
+//     column with its unit (report/column_units.hpp) and every axis with round ticks;
 //   - the envelope table (envelopes.csv: extremes over every step), sortable and filtered;
 //   - the deployment in 3D (WebGL through three.js, compiled into the program from Debian's
 //     libjs-three): members in one draw call, as wide as their section
