@@ -127,7 +127,8 @@ TEST(FrameMoments, LoadStiffnessRateAndScaleAreDerivativesOfTheResidual) {
     return r;
   };
   const Eigen::VectorXd time_difference = (full(t + kStep) - full(t - kStep)) / (2 * kStep);
-  EXPECT_LT(relative_error(by_time, time_difference), kTolerance);
+  // The whole residual differenced in t: its round-off, ε |r| / h, is larger (7.6e-6 under clang -O1).
+  EXPECT_LT(relative_error(by_time, time_difference), 1e-4);
 
   // Every load at q: f_ext + f_M.
   Eigen::VectorXd applied, external;
