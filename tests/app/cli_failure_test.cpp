@@ -77,6 +77,17 @@ TEST(CliFailure, UndrivenMechanismInAStaticRunNamesTheFreeMotion) {
       << run.outcome.output;
 }
 
+// Pinned at A alone, the chain A–B–C–D has three independent motions: the failure says so, not
+// one combination of them.
+TEST(CliFailure, UnderSupportedChainCountsItsIndependentMotions) {
+  ScratchFolder folder("chain_on_one_pin");
+  std::string model = kLinkage;
+  model.replace(model.find("supports: [{node: A}, {node: D}]"), 32, "supports: [{node: A}]");
+  const ModelRun run = run_model(folder, model + "analysis: {type: static, end: 1, step: 0.1}\n");
+  expect_failure_naming(run, "part with nodes B, C, D: ");
+  expect_failure_naming(run, "(and 2 more independent motions of this part)");
+}
+
 // Two drivers turning the same bar are redundant: the singular matrix names both.
 TEST(CliFailure, RedundantDriversAreNamed) {
   ScratchFolder folder("redundant");

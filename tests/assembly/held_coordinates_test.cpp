@@ -156,8 +156,9 @@ TEST(HeldCoordinates, AZeroPivotInALargeSystemNamesItsEquation) {
   system.values()[system.slots().back()] = 1.0;
   const FactorizationStatus status = system.factorize();
   EXPECT_FALSE(status.ok);
-  ASSERT_EQ(status.null_vector.size(), kKept + 2);
-  EXPECT_EQ(status.null_vector[kKept + 1], 1.0);
+  ASSERT_EQ(status.null_vectors.rows(), kKept + 2);
+  ASSERT_EQ(status.null_vectors.cols(), 1);
+  EXPECT_EQ(status.null_vectors(kKept + 1, 0), 1.0);
 }
 
 TEST(HeldCoordinates, AZeroPivotOfAPairIsASingularMatrix) {
@@ -171,10 +172,11 @@ TEST(HeldCoordinates, AZeroPivotOfAPairIsASingularMatrix) {
       const FactorizationStatus status = system->factorize();
       EXPECT_FALSE(status.ok);
       EXPECT_NE(status.message.find("singular"), std::string::npos) << status.message;
-      // The null vector (LinearSystem::null_vector); with column 5 empty it is unknown 5 alone.
-      ASSERT_EQ(status.null_vector.size(), 8);
+      // The null vectors (LinearSystem::null_vectors); with column 5 empty, unknown 5 alone.
+      ASSERT_EQ(status.null_vectors.rows(), 8);
       if (zeroed == 26) {
-        EXPECT_NEAR(std::abs(status.null_vector[5]), 1.0, 1e-12);
+        ASSERT_EQ(status.null_vectors.cols(), 1);
+        EXPECT_NEAR(std::abs(status.null_vectors(5, 0)), 1.0, 1e-12);
       }
     }
   }

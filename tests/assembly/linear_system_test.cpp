@@ -146,12 +146,15 @@ Model straight_chain(int bars) {
 void expect_free_sideways_motion(const Assembler& assembler, const FactorizationStatus& status) {
   EXPECT_FALSE(status.ok);
   EXPECT_NE(status.message.find("singular"), std::string::npos) << status.message;
-  ASSERT_EQ(status.null_vector.size(), assembler.n_unknowns());
-  // Its large entries are y coordinates (odd indices of q): the free motion.
-  Eigen::Index largest = 0;
-  status.null_vector.cwiseAbs().maxCoeff(&largest);
-  ASSERT_LT(largest, assembler.n_dofs());
-  EXPECT_EQ(assembler.dof_map().label(static_cast<int>(largest))[0], 'y');
+  ASSERT_EQ(status.null_vectors.rows(), assembler.n_unknowns());
+  ASSERT_GE(status.null_vectors.cols(), 1);
+  // Each one's largest entry is a y coordinate: a free sideways motion.
+  for (Eigen::Index c = 0; c < status.null_vectors.cols(); ++c) {
+    Eigen::Index largest = 0;
+    status.null_vectors.col(c).cwiseAbs().maxCoeff(&largest);
+    ASSERT_LT(largest, assembler.n_dofs());
+    EXPECT_EQ(assembler.dof_map().label(static_cast<int>(largest))[0], 'y');
+  }
 }
 
 TEST(LinearSystem, SingularMatrixIsFoundAndItsFreeMotionNamed) {
@@ -167,7 +170,7 @@ TEST(LinearSystem, SingularMatrixIsFoundAndItsFreeMotionNamed) {
 }
 
 // Deferred (a solver that retries, solvers/static_solver.cpp), a singular factorization leaves the
-// null-space diagnosis out, the dense back end then giving no null vector; null_vector() computes
+// null-space diagnosis out, the dense back end then giving no null vector; null_vectors() computes
 // it on demand and names the same free motion.
 TEST(LinearSystem, DeferredNullVectorIsComputedOnDemand) {
   const Model model = straight_chain(10);
@@ -175,11 +178,11 @@ TEST(LinearSystem, DeferredNullVectorIsComputedOnDemand) {
   const auto system = make_linear_system(assembler, LinearSolverKind::dense);
   assembler.iteration_matrix(assembler.initial_coordinates(), 0.0, 1.0,
                              Eigen::VectorXd::Zero(assembler.n_equations()), {0.0, 1.0, 1e9}, *system);
-  system->defer_null_vector(true);
+  system->defer_null_vectors(true);
   FactorizationStatus status = system->factorize();
   EXPECT_FALSE(status.ok);
-  EXPECT_EQ(status.null_vector.size(), 0);
-  status.null_vector = system->null_vector();
+  EXPECT_EQ(status.null_vectors.size(), 0);
+  status.null_vectors = system->null_vectors();
   expect_free_sideways_motion(assembler, status);
 }
 
@@ -199,11 +202,11 @@ TEST(LinearSystem, StaticSolverNamesTheFreeMotionOfItsLastAttempt) {
       solve_static(assembler, model.analysis, LoadPath::thermal_ramp(0.0), 1, *system, state);
   EXPECT_FALSE(result.newton.converged);
   EXPECT_TRUE(result.newton.singular);
-  EXPECT_FALSE(system->null_vector_deferred());  // restored
+  EXPECT_FALSE(system->null_vectors_deferred());  // restored
   FactorizationStatus status;
   status.ok = false;
   status.message = result.newton.failure;
-  status.null_vector = result.newton.null_vector;
+  status.null_vectors = result.newton.null_vectors;
   expect_free_sideways_motion(assembler, status);
 }
 

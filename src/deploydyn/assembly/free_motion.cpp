@@ -118,13 +118,13 @@ RigidFit fit_rigid(int dimension, const std::vector<Eigen::Vector3d>& x, const s
   return fit;
 }
 
-std::string number(double value, double scale) {
+std::string rounded_number(double value, double scale) {
   return fmt::format("{:.4g}", std::abs(value) <= 1e-9 * scale ? 0.0 : value);
 }
 
 std::string point_text(int dimension, const Eigen::Vector3d& p, double scale) {
   std::vector<std::string> parts;
-  for (int axis = 0; axis < dimension; ++axis) parts.push_back(number(p[axis], scale));
+  for (int axis = 0; axis < dimension; ++axis) parts.push_back(rounded_number(p[axis], scale));
   return fmt::format("({})", fmt::join(parts, ", "));
 }
 

@@ -167,9 +167,9 @@ FactorizationStatus KluLinearSystem::factorize_fully() {
   if (k.numeric == nullptr || k.common.status == KLU_SINGULAR) {
     const int column = k.common.singular_col;
     FactorizationStatus status = singular(0.0);
-    if (status.null_vector.size() == 0 && column >= 0 && column < factored_size()) {
+    if (status.null_vectors.size() == 0 && column >= 0 && column < factored_size()) {
       // Too large for an SVD: KLU's first zero pivot names one unknown of the null space.
-      status.null_vector = Eigen::VectorXd::Unit(size_, unknown_of(column));
+      status.null_vectors = Eigen::VectorXd::Unit(size_, unknown_of(column));
     }
     if (k.numeric != nullptr) klu_free_numeric(&k.numeric, &k.common);
     return status;

@@ -52,11 +52,11 @@ FactorizationStatus LinearSystem::singular(double reciprocal_condition) const {
       "the iteration matrix is singular (reciprocal condition {:.2e}): a free mechanism "
       "motion, or redundant or conflicting constraints",
       reciprocal_condition);
-  if (!defer_null_vector_) status.null_vector = null_vector();
+  if (!defer_null_vectors_) status.null_vectors = null_vectors();
   return status;
 }
 
-Eigen::VectorXd LinearSystem::null_vector() const {
+Eigen::MatrixXd LinearSystem::null_vectors() const {
   if (size_ > kLargestNullSpaceDiagnosis || size_ == 0) return {};
   // Sparse inverse iteration (docs/theory.md, "Diagnosis of free motions", D1), not a dense SVD:
   // 1248 unknowns took 2.1 s by SVD, 19 ms so (bench/free_motion_benchmark.cpp).
@@ -70,9 +70,7 @@ Eigen::VectorXd LinearSystem::null_vector() const {
   matrix.setFromTriplets(triplets.begin(), triplets.end());  // repeats add up, as in to_dense
   const NullSpace null = null_space(matrix, kMostNullVectors, kNullResidual);
   if (null.vectors.cols() == 0) return null.nearest;
-  // The sum of an orthonormal basis: every independent motion (each free part) shows in it.
-  const Eigen::VectorXd sum = null.vectors.rowwise().sum();
-  return sum / sum.norm();
+  return null.vectors;
 }
 
 }  // namespace deploydyn

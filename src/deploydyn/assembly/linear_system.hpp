@@ -23,10 +23,10 @@ struct FactorizationStatus {
   bool ok = true;
   double reciprocal_condition = 1.0;  // estimate; 0 when exactly singular
   std::string message;                // why it failed
-  // When singular: a unit vector the matrix (nearly) maps to zero, in the unknowns' order
-  // (q, then λ). Its large entries name the free motion or the redundant constraints. Empty
-  // when the back end cannot say.
-  Eigen::VectorXd null_vector;
+  // When singular: orthonormal columns the matrix (nearly) maps to zero, in the unknowns' order
+  // (q, then λ), one for each independent free motion or redundant constraint (at least one);
+  // their large entries name them. Empty when the back end cannot say.
+  Eigen::MatrixXd null_vectors;
 };
 
 class LinearSystem {
@@ -58,13 +58,14 @@ class LinearSystem {
 
   // The matrix as dense, for diagnosis of small systems and for tests.
   Eigen::MatrixXd to_dense() const;
-  // The unit vector the current matrix (nearly) maps to zero: the sum of its null space's basis
-  // by sparse inverse iteration (assembly/null_space.hpp); empty above 50 000
-  // unknowns. A singular factorization reports it, unless deferred: a solver that retries a
-  // singular matrix (load steps halved) asks for it once, for the failure it reports.
-  Eigen::VectorXd null_vector() const;
-  void defer_null_vector(bool defer) { defer_null_vector_ = defer; }
-  bool null_vector_deferred() const { return defer_null_vector_; }
+  // The columns the current matrix (nearly) maps to zero: its null space's basis by sparse
+  // inverse iteration (assembly/null_space.hpp), or the nearest vector when none is within the
+  // tolerance; empty above 50 000 unknowns. A singular factorization reports them, unless
+  // deferred: a solver that retries a singular matrix (load steps halved) asks for them once,
+  // for the failure it reports.
+  Eigen::MatrixXd null_vectors() const;
+  void defer_null_vectors(bool defer) { defer_null_vectors_ = defer; }
+  bool null_vectors_deferred() const { return defer_null_vectors_; }
 
  protected:
   // factorize() once the values are known to be finite.
@@ -84,7 +85,7 @@ class LinearSystem {
   int size_ = 0;
   long factorizations_ = 0;
   std::vector<int> slots_;
-  bool defer_null_vector_ = false;
+  bool defer_null_vectors_ = false;
   std::vector<double> values_;
 };
 

@@ -188,7 +188,7 @@ FactorizationStatus SparseLinearSystem::factorize_finite() {
     if (values_[pivot_slot(p)] != 0.0 && values_[partner_slot(p)] != 0.0) continue;
     FactorizationStatus status = singular(0.0);
     // Too large for an SVD: name the pair's equation (its constraint is degenerate).
-    if (status.null_vector.size() == 0) status.null_vector = Eigen::VectorXd::Unit(size_, held_[p].equation);
+    if (status.null_vectors.size() == 0) status.null_vectors = Eigen::VectorXd::Unit(size_, held_[p].equation);
     return status;
   }
   return factored_size() > 0 ? factorize_pattern() : FactorizationStatus{};

@@ -160,7 +160,10 @@ bool has_capacity(const CheckedMember& member, CheckKind kind, int dimension) {
       return member.kind == MemberKind::cable && any([](const CheckedElement& e) { return e.break_load_N > 0.0; });
     case CheckKind::cable_slack:
       return member.kind == MemberKind::cable;
-    case CheckKind::driver_effort:
+    case CheckKind::driver_effort:  // drivers, hinges and the run itself are checked, not members
+    case CheckKind::latch_load:
+    case CheckKind::stop_load:
+    case CheckKind::jam:
       return false;
   }
   return false;

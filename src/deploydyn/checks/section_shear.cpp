@@ -7,7 +7,6 @@
 namespace deploydyn {
 namespace {
 
-constexpr double kPi = std::numbers::pi;
 
 // Jourawski at the neutral axis of a solid rectangle `across` wide and `deep` deep (V along
 // `deep`), less the inner one of a tube: Q = (b h² − b_i h_i²)/8, I = (b h³ − b_i h_i³)/12, and
@@ -32,7 +31,7 @@ SectionShear section_shear(const Section& section) {
       const double outer = section.diameter_m;
       const double inner = section.shape == SectionShape::circular_tube ? outer - 2.0 * t : 0.0;
       const double first_moment = (outer * outer * outer - inner * inner * inner) / 12.0;
-      const double inertia = kPi * (std::pow(outer, 4) - std::pow(inner, 4)) / 64.0;
+      const double inertia = std::numbers::pi * (std::pow(outer, 4) - std::pow(inner, 4)) / 64.0;
       s.per_shear_y = s.per_shear_z = first_moment / (inertia * (outer - inner));
       s.per_torque = 1.0 / (2.0 * inertia / (0.5 * outer));  // W_t = J / r, J = 2I       (V3b)
       break;

@@ -24,7 +24,7 @@ constexpr long long kFineOutputMaxBars = 1000;
 // Below this ΔT the Green–Lagrange thermal strain αΔT ≤ −½ asks a bar to shrink to nothing.
 constexpr double kLowestDeltaT_C = -0.5 / kRoofExpansion_per_C;
 
-[[noreturn]] void reject(const std::string& what) { throw std::invalid_argument("roof: " + what); }
+[[noreturn]] void reject_roof(const std::string& what) { throw std::invalid_argument("roof: " + what); }
 
 // Adds bars in order, numbering nothing by name: indices are known where they are made.
 class RoofBuilder {
@@ -129,42 +129,42 @@ RoofSize roof_size(int n_units, int n_trusses, RoofBearings bearings) {
 }
 
 void validate(const RoofOptions& options) {
-  if (options.n_units < 1) reject(fmt::format("units must be at least 1, got {}", options.n_units));
+  if (options.n_units < 1) reject_roof(fmt::format("units must be at least 1, got {}", options.n_units));
   if (options.n_trusses < 1) {
-    reject(
+    reject_roof(
         fmt::format("trusses must be at least 1 (1: a planar truss), got {}", options.n_trusses));
   }
   if (!std::ranges::any_of(kRoofBearingNames,
                            [&](const auto& entry) { return entry.second == options.bearings; })) {
-    reject(fmt::format("bearings must be one of {}, got the value {}", roof_bearing_choices(),
+    reject_roof(fmt::format("bearings must be one of {}, got the value {}", roof_bearing_choices(),
                        static_cast<int>(options.bearings)));
   }
   const RoofSize size = roof_size(options.n_units, options.n_trusses, options.bearings);
   if (size.n_bars > kRoofMaxBars) {
-    reject(fmt::format("{} units × {} trusses make {} bars; at most {} are allowed",
+    reject_roof(fmt::format("{} units × {} trusses make {} bars; at most {} are allowed",
                        options.n_units, options.n_trusses, size.n_bars, kRoofMaxBars));
   }
   if (!std::isfinite(options.delta_t_C) || options.delta_t_C <= kLowestDeltaT_C) {
-    reject(
+    reject_roof(
         fmt::format("delta-t must be a finite temperature change above {} °C (α = {} /°C), got {}",
                     kLowestDeltaT_C, kRoofExpansion_per_C, options.delta_t_C));
   }
   if (!(std::isfinite(options.truss_spacing_m) && options.truss_spacing_m > 0.0)) {
-    reject(fmt::format("truss spacing must be positive (m), got {}", options.truss_spacing_m));
+    reject_roof(fmt::format("truss spacing must be positive (m), got {}", options.truss_spacing_m));
   }
   if (!(std::isfinite(options.end_time_s) && options.end_time_s > 0.0)) {
-    reject(fmt::format("end time must be positive (s), got {}", options.end_time_s));
+    reject_roof(fmt::format("end time must be positive (s), got {}", options.end_time_s));
   }
   if (!(std::isfinite(options.step_s) && options.step_s > 0.0 &&
         options.step_s <= options.end_time_s)) {
-    reject(fmt::format("step must be positive and at most the end time {} s, got {}",
+    reject_roof(fmt::format("step must be positive and at most the end time {} s, got {}",
                        options.end_time_s, options.step_s));
   }
   if (options.output_interval_s != 0.0) {
     const double ratio = options.output_interval_s / options.step_s;
     if (!(std::isfinite(ratio) && ratio >= 1.0 &&
           std::abs(ratio - std::round(ratio)) <= 1e-9 * ratio)) {
-      reject(
+      reject_roof(
           fmt::format("output interval must be 0 (automatic) or a whole multiple of the step "
                       "{} s, got {}",
                       options.step_s, options.output_interval_s));

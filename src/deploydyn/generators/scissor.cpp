@@ -12,8 +12,7 @@
 namespace deploydyn {
 namespace {
 
-constexpr double kPi = std::numbers::pi;
-constexpr double kDegree = kPi / 180.0;
+constexpr double kDegree = std::numbers::pi / 180.0;
 // Default opening angles of the arches: members 10° from upright folded, 35° above the chord
 // deployed (ψ = π − 2α).
 constexpr double kArchFolded_rad = 20.0 * kDegree;
@@ -23,7 +22,7 @@ constexpr double kRingMargin_rad = 10.0 * kDegree;
 constexpr int kMaxUnits = 100'000;
 constexpr double kScissorOutput_s = 0.05;
 
-[[noreturn]] void reject(const std::string& what) {
+[[noreturn]] void reject_scissor(const std::string& what) {
   throw std::invalid_argument("scissor: " + what);
 }
 
@@ -63,8 +62,8 @@ ScissorShape arch_shape(int n_units, double a, double b, double alpha) {
 // Ring: opening ψ = π + 2π/n − 2δ; H_k at radius ρ = l cos δ / sin(π/n) on the bisector of the
 // radial lines k and k+1; P_k, Q_k at radii ρ cos(π/n) ∓ l sin δ (scissor.hpp).
 ScissorShape ring_shape(int n_units, double arm, double opening) {
-  const double half = kPi / n_units;
-  const double delta = 0.5 * (kPi + 2.0 * half - opening);
+  const double half = std::numbers::pi / n_units;
+  const double delta = 0.5 * (std::numbers::pi + 2.0 * half - opening);
   const double rho = arm * std::cos(delta) / std::sin(half);
   const double middle = rho * std::cos(half), reach = arm * std::sin(delta);
   ScissorShape shape;
@@ -152,66 +151,66 @@ class ScissorBuilder {
 double folded_opening_rad(const ScissorOptions& options) {
   if (options.folded_angle_deg != 0.0) return options.folded_angle_deg * kDegree;
   // Ring: δ_f = π/2 − π/n − margin.
-  return is_ring(options) ? 4.0 * kPi / options.n_units + 2.0 * kRingMargin_rad : kArchFolded_rad;
+  return is_ring(options) ? 4.0 * std::numbers::pi / options.n_units + 2.0 * kRingMargin_rad : kArchFolded_rad;
 }
 
 double deployed_opening_rad(const ScissorOptions& options) {
   if (options.deployed_angle_deg != 0.0) return options.deployed_angle_deg * kDegree;
-  return is_ring(options) ? kPi + 2.0 * kPi / options.n_units - 2.0 * kRingMargin_rad
+  return is_ring(options) ? std::numbers::pi + 2.0 * std::numbers::pi / options.n_units - 2.0 * kRingMargin_rad
                           : kArchDeployed_rad;
 }
 
 void validate(const ScissorOptions& o) {
   if (is_ring(o)) {
     if (o.n_units < 8 || o.n_units % 4 != 0 || o.n_units > kMaxUnits) {
-      reject(fmt::format("units must be a multiple of 4 from 8 to {} for a ring (its supports "
+      reject_scissor(fmt::format("units must be a multiple of 4 from 8 to {} for a ring (its supports "
                          "guide nodes on the x and y axes), got {}",
                          kMaxUnits, o.n_units));
     }
   } else if (o.n_units < 1 || o.n_units > kMaxUnits) {
-    reject(fmt::format("units must be from 1 to {}, got {}", kMaxUnits, o.n_units));
+    reject_scissor(fmt::format("units must be from 1 to {}, got {}", kMaxUnits, o.n_units));
   }
   if (!(o.span_m > 0.0) || !std::isfinite(o.span_m)) {
-    reject(fmt::format("span must be > 0 m, got {}", o.span_m));
+    reject_scissor(fmt::format("span must be > 0 m, got {}", o.span_m));
   }
   if (o.form == ScissorForm::polar) {
     if (!(o.hinge_offset > 0.0 && o.hinge_offset <= 0.9)) {
-      reject(fmt::format("hinge offset of polar units must be in (0, 0.9], got {}",
+      reject_scissor(fmt::format("hinge offset of polar units must be in (0, 0.9], got {}",
                          o.hinge_offset));
     }
   }
   if (o.elements_per_arm < 1 || o.elements_per_arm > 100) {
-    reject(fmt::format("elements per arm must be from 1 to 100, got {}", o.elements_per_arm));
+    reject_scissor(fmt::format("elements per arm must be from 1 to 100, got {}", o.elements_per_arm));
   }
   for (const auto& [name, value] : {std::pair{"area", o.area_m2}, std::pair{"inertia", o.inertia_m4},
                                     std::pair{"depth", o.depth_m},
                                     std::pair{"deploy time", o.deploy_time_s},
                                     std::pair{"step", o.step_s}}) {
     if (!(value > 0.0) || !std::isfinite(value)) {
-      reject(fmt::format("{} must be > 0, got {}", name, value));
+      reject_scissor(fmt::format("{} must be > 0, got {}", name, value));
     }
   }
   if (!(o.end_time_s >= o.deploy_time_s)) {
-    reject(fmt::format("end time must be at least the deploy time {} s, got {} s",
+    reject_scissor(fmt::format("end time must be at least the deploy time {} s, got {} s",
                        o.deploy_time_s, o.end_time_s));
   }
   if (!std::isfinite(o.delta_t_C) || !std::isfinite(o.gradient_C)) {
-    reject("delta-t and gradient must be finite numbers");
+    reject_scissor("delta-t and gradient must be finite numbers");
   }
   const double folded = folded_opening_rad(o), deployed = deployed_opening_rad(o);
   // The mechanism's range: arches 0 < ψ < π (members not crossing the chord), ring
   // 4π/n < ψ < π + 2π/n (P inside the centre, P = Q at the extended dead point).
-  const double lowest = is_ring(o) ? 4.0 * kPi / o.n_units : 0.0;
-  const double highest = is_ring(o) ? kPi + 2.0 * kPi / o.n_units : kPi;
+  const double lowest = is_ring(o) ? 4.0 * std::numbers::pi / o.n_units : 0.0;
+  const double highest = is_ring(o) ? std::numbers::pi + 2.0 * std::numbers::pi / o.n_units : std::numbers::pi;
   for (const auto& [name, value] : {std::pair{"folded angle", folded},
                                     std::pair{"deployed angle", deployed}}) {
     if (!(value > lowest && value < highest)) {
-      reject(fmt::format("{} must be between {:.6g} and {:.6g} degrees for this form, got {:.6g}",
+      reject_scissor(fmt::format("{} must be between {:.6g} and {:.6g} degrees for this form, got {:.6g}",
                          name, lowest / kDegree, highest / kDegree, value / kDegree));
     }
   }
   if (!(deployed > folded)) {
-    reject(fmt::format("deployed angle ({:.6g}°) must be larger than the folded one ({:.6g}°)",
+    reject_scissor(fmt::format("deployed angle ({:.6g}°) must be larger than the folded one ({:.6g}°)",
                        deployed / kDegree, folded / kDegree));
   }
 }
@@ -220,7 +219,7 @@ ScissorShape scissor_shape(const ScissorOptions& options, double arm_m, double o
   if (is_ring(options)) return ring_shape(options.n_units, arm_m, opening_rad);
   const double e = options.form == ScissorForm::polar ? options.hinge_offset : 0.0;
   return arch_shape(options.n_units, arm_m * (1.0 - e), arm_m * (1.0 + e),
-                    0.5 * (kPi - opening_rad));
+                    0.5 * (std::numbers::pi - opening_rad));
 }
 
 Model make_scissor(const ScissorOptions& options) {

@@ -7,7 +7,6 @@
 namespace deploydyn {
 namespace {
 
-constexpr double kInfinity = std::numeric_limits<double>::infinity();
 // Bisection halves a bracket per step: 200 halvings reach adjacent doubles from any finite one.
 constexpr int kMaxBisections = 200;
 
@@ -80,12 +79,12 @@ double least_polynomial_value(const std::vector<double>& c, double from, double 
   // p → −∞ at +∞ when it leads negative; at −∞ also when it leads positive with odd degree.
   const bool falls_right = p.back() < 0.0;
   const bool falls_left = (p.back() < 0.0) == (degree % 2 == 0);
-  if ((to == kInfinity && falls_right) || (from == -kInfinity && falls_left)) return -kInfinity;
+  if ((to == std::numeric_limits<double>::infinity() && falls_right) || (from == -std::numeric_limits<double>::infinity() && falls_left)) return -std::numeric_limits<double>::infinity();
   // Cauchy's bound: every root of p' lies within |x| ≤ 1 + max |d[k] / d.back()|.
   const std::vector<double> d = trimmed(derivative_coefficients(p));
   double bound = 1.0;
   for (std::size_t k = 0; k + 1 < d.size(); ++k) bound = std::max(bound, 1.0 + std::abs(d[k] / d.back()));
-  double least = kInfinity;
+  double least = std::numeric_limits<double>::infinity();
   if (std::isfinite(from)) least = polynomial_derivative(p, from, 0);
   if (std::isfinite(to)) least = std::min(least, polynomial_derivative(p, to, 0));
   const double lo = std::max(from, -bound), hi = std::min(to, bound);

@@ -6,7 +6,6 @@
 namespace deploydyn {
 namespace {
 
-constexpr double kPi = std::numbers::pi;
 
 double cubic(double s, int order, double scale) {
   switch (order) {
@@ -19,20 +18,20 @@ double cubic(double s, int order, double scale) {
 
 double cosine(double s, int order, double scale) {
   switch (order) {
-    case -1: return scale * (0.5 * s - std::sin(kPi * s) / (2.0 * kPi));
-    case 0: return scale * 0.5 * (1.0 - std::cos(kPi * s));
-    case 1: return scale * 0.5 * kPi * std::sin(kPi * s);
-    default: return scale * 0.5 * kPi * kPi * std::cos(kPi * s);
+    case -1: return scale * (0.5 * s - std::sin(std::numbers::pi * s) / (2.0 * std::numbers::pi));
+    case 0: return scale * 0.5 * (1.0 - std::cos(std::numbers::pi * s));
+    case 1: return scale * 0.5 * std::numbers::pi * std::sin(std::numbers::pi * s);
+    default: return scale * 0.5 * std::numbers::pi * std::numbers::pi * std::cos(std::numbers::pi * s);
   }
 }
 
 double cycloidal(double s, int order, double scale) {
-  const double angle = 2.0 * kPi * s;
+  const double angle = 2.0 * std::numbers::pi * s;
   switch (order) {
-    case -1: return scale * (0.5 * s * s + (std::cos(angle) - 1.0) / (4.0 * kPi * kPi));
-    case 0: return scale * (s - std::sin(angle) / (2.0 * kPi));
+    case -1: return scale * (0.5 * s * s + (std::cos(angle) - 1.0) / (4.0 * std::numbers::pi * std::numbers::pi));
+    case 0: return scale * (s - std::sin(angle) / (2.0 * std::numbers::pi));
     case 1: return scale * (1.0 - std::cos(angle));
-    default: return scale * 2.0 * kPi * std::sin(angle);
+    default: return scale * 2.0 * std::numbers::pi * std::sin(angle);
   }
 }
 

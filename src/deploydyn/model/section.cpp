@@ -9,7 +9,6 @@
 namespace deploydyn {
 namespace {
 
-constexpr double kPi = std::numbers::pi;
 
 // Torsion constant of a solid rectangle a × b, a ≥ b (Young & Budynas, Roark's Formulas for
 // Stress and Strain, 7th ed., Table 10.7, case 4): J = a b³ (1/3 − 0.21 (b/a)(1 − b⁴/(12 a⁴))).
@@ -31,8 +30,8 @@ SectionProperties section_properties(const Section& s) {
       const double outer = s.diameter_m;
       const double inner = s.shape == SectionShape::circle ? 0.0 : outer - 2.0 * s.wall_thickness_m;
       const double outer2 = outer * outer, inner2 = inner * inner;
-      p.area_m2 = kPi / 4.0 * (outer2 - inner2);
-      p.inertia_y_m4 = p.inertia_z_m4 = kPi / 64.0 * (outer2 * outer2 - inner2 * inner2);
+      p.area_m2 = std::numbers::pi / 4.0 * (outer2 - inner2);
+      p.inertia_y_m4 = p.inertia_z_m4 = std::numbers::pi / 64.0 * (outer2 * outer2 - inner2 * inner2);
       p.torsion_m4 = 2.0 * p.inertia_z_m4;  // the polar moment: exact for circular sections
       p.section_modulus_y_m3 = p.section_modulus_z_m3 = p.inertia_z_m4 / (outer / 2.0);
       break;

@@ -13,7 +13,7 @@
 namespace deploydyn {
 namespace {
 
-constexpr const char* kAxes[] = {"x", "y", "z"};
+constexpr const char* kAxisLetters[] = {"x", "y", "z"};
 
 // Names are the model's (letters, digits, _ . -): no quoting needed, but a comma would break
 // the row, so it is quoted defensively.
@@ -72,7 +72,7 @@ std::string envelope_table(const Model& model, const Envelope& envelope) {
       for (int axis = 0; axis < model.dimension; ++axis) {
         const auto dof = static_cast<std::size_t>(dofs.index(node, axis));
         if (dof >= envelope.coordinates().size()) continue;
-        append_row(out, model.nodes[node].name, "node", fmt::format("displacement_{}_m", kAxes[axis]),
+        append_row(out, model.nodes[node].name, "node", fmt::format("displacement_{}_m", kAxisLetters[axis]),
                    envelope.coordinates()[dof], model.nodes[node].position_m[axis]);
       }
     }

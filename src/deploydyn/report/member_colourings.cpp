@@ -20,7 +20,6 @@ namespace {
 
 using nlohmann::json;
 
-constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
 // Values per frame and member, with what the scale needs.
 struct Colouring {
@@ -53,7 +52,7 @@ Colouring from_columns(const HistoryTable& table, const std::vector<int>& column
   Colouring c;
   c.values.reserve(rows.size() * columns.size());
   for (const std::size_t row : rows) {
-    for (const int column : columns) c.add(column >= 0 ? table.values[static_cast<std::size_t>(column)][row] : kNaN);
+    for (const int column : columns) c.add(column >= 0 ? table.values[static_cast<std::size_t>(column)][row] : std::numeric_limits<double>::quiet_NaN());
   }
   return c;
 }
@@ -91,7 +90,7 @@ Colouring stresses(const Model& model, const HistoryTable& history, const std::v
     for (std::size_t m = 0; m < members.size(); ++m) {
       const DrawnSection& s = sections[m];
       if (force[m] < 0 || s.area_m2 <= 0.0) {
-        c.add(kNaN);
+        c.add(std::numeric_limits<double>::quiet_NaN());
         continue;
       }
       const double axial_N = value(force[m]);

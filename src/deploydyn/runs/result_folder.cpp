@@ -62,11 +62,6 @@ std::string utc_now() {
   return text;
 }
 
-std::string host_name() {
-  char name[256] = {};
-  return ::gethostname(name, sizeof name - 1) == 0 ? name : "";
-}
-
 // `status` (a JSON object) with its "files" cut to those in `folder`: a run that stopped early
 // never wrote some (envelopes.csv after a failed write), and the status must not claim them.
 // `indent` as nlohmann::json::dump.
@@ -104,6 +99,12 @@ std::string dangling_link(const std::filesystem::path& folder) {
 }
 
 }  // namespace
+
+std::string host_name() {
+  char name[256] = {};
+  return ::gethostname(name, sizeof name - 1) == 0 ? name : "";
+}
+
 
 bool folder_in_use(const std::filesystem::path& folder) {
   const int fd = ::open((folder / kLockFileName).c_str(), O_RDONLY | O_CLOEXEC);

@@ -32,6 +32,9 @@ inline constexpr std::size_t kReservedStatusBytes = 4096;
 // that says "running" in a folder nobody owns is a killed run's.
 bool folder_in_use(const std::filesystem::path& folder);
 
+// This machine's name, as a folder's status records who runs in it; empty if it cannot be told.
+std::string host_name();
+
 class ResultFolder {
  public:
   // Creates `folder` if needed and takes its lock. Throws OutputError when the folder cannot

@@ -36,20 +36,21 @@ std::string settled_position_text(const Assembler& assembler, int node, const Ei
   return fmt::format("; node {} at ({}) m", model.nodes[node].name, fmt::join(coordinates, ", "));
 }
 
-// Names what a singular matrix's null vector moves: the free motions grouped by part and fitted
-// as rigid motions at q (assembly/free_motion.hpp), and the constraints that are redundant or in
-// conflict. The coordinates themselves are behind `check --all`.
-std::string describe_null_vector(const Assembler& assembler, const Eigen::VectorXd& q,
-                                 const Eigen::VectorXd& null_vector) {
-  constexpr double kInvolved = 0.1;  // of the largest entry
-  const double largest = null_vector.cwiseAbs().maxCoeff();
+// Names what a singular matrix's null vectors move: the free motions grouped by part and fitted
+// as rigid motions at q (assembly/free_motion.hpp), each independent one apart, and the
+// constraints that are redundant or in conflict (a large entry in some column). The coordinates
+// themselves are behind `check --all`.
+std::string describe_null_space(const Assembler& assembler, const Eigen::VectorXd& q,
+                                const Eigen::MatrixXd& null_vectors) {
+  constexpr double kInvolved = 0.1;  // of the column's largest entry
+  const Eigen::RowVectorXd largest = null_vectors.cwiseAbs().colwise().maxCoeff();
   std::vector<std::string> constraints;
-  for (int i = assembler.n_dofs(); i < null_vector.size(); ++i) {
-    if (std::abs(null_vector[i]) < kInvolved * largest) continue;
+  for (int i = assembler.n_dofs(); i < null_vectors.rows(); ++i) {
+    if ((null_vectors.row(i).cwiseAbs().array() < kInvolved * largest.array()).all()) continue;
     constraints.push_back(assembler.describe_equation(i - assembler.n_dofs()));
   }
   const Model& model = assembler.model();
-  std::string text = describe(model, free_motions(model, assembler.dof_map(), q, null_vector));
+  std::string text = describe(model, free_motions(model, assembler.dof_map(), q, null_vectors));
   if (!text.empty()) text = "free motion: " + text + " (`deploydyn check --all` lists the coordinates)";
   if (!constraints.empty()) {
     text += fmt::format("{}constraints involved: {}", text.empty() ? "" : "; ", fmt::join(constraints, "; "));
@@ -69,7 +70,7 @@ FailureReport describe_failure(const Assembler& assembler, std::string phase, do
   if (newton.worst_equation >= 0) f.worst_constraint = assembler.describe_equation(newton.worst_equation);
   if (newton.worst_dof >= 0) f.worst_dof = assembler.dof_map().label(newton.worst_dof);
   f.reason = newton.failure;
-  if (newton.null_vector.size() > 0) f.reason += "; " + describe_null_vector(assembler, q, newton.null_vector);
+  if (newton.null_vectors.size() > 0) f.reason += "; " + describe_null_space(assembler, q, newton.null_vectors);
   return f;
 }
 
@@ -422,7 +423,7 @@ RunReport run_analysis(const Assembler& assembler, RecordSink& sink, const RunCo
       f.phase = "initial equilibrium";
       f.reason = "no static stiffness at the initial state (a bifurcation or dead point, or a motion "
                  "that no bar, support or driver resists)";
-      if (stiffness.null_vector.size() > 0) f.reason += ": " + describe_null_vector(assembler, state.q, stiffness.null_vector);
+      if (stiffness.null_vectors.size() > 0) f.reason += ": " + describe_null_space(assembler, state.q, stiffness.null_vectors);
       return fail(f);
     }
   }
@@ -439,7 +440,7 @@ RunReport run_analysis(const Assembler& assembler, RecordSink& sink, const RunCo
       FailureReport f;
       f.phase = "initial rates";
       f.reason = status.message;
-      if (status.null_vector.size() > 0) f.reason += "; " + describe_null_vector(assembler, state.q, status.null_vector);
+      if (status.null_vectors.size() > 0) f.reason += "; " + describe_null_space(assembler, state.q, status.null_vectors);
       return fail(f);
     }
   }

@@ -16,7 +16,6 @@
 namespace deploydyn {
 namespace {
 
-constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
 // The model with the same uniform ΔT on every bar: what the path scales.
 Model with_uniform_temperature(const Model& model, double delta_t_C) {
@@ -35,7 +34,7 @@ WindowSample sample(const Assembler& assembler, const PathPoint& point, double t
   WindowSample s;
   s.time_s = time_s;
   s.delta_t_C = thermal_factor * reach_C;
-  s.lowest_eigenvalue_N_m = point.lowest_eigenvalues.size() > 0 ? point.lowest_eigenvalues[0] : kNaN;
+  s.lowest_eigenvalue_N_m = point.lowest_eigenvalues.size() > 0 ? point.lowest_eigenvalues[0] : std::numeric_limits<double>::quiet_NaN();
   for (const double force_N : assembler.element_quantity("axial_force_N", point.q, time_s, thermal_factor)) {
     s.peak_axial_force_N = std::max(s.peak_axial_force_N, std::abs(force_N));
   }

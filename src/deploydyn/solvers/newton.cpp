@@ -98,7 +98,7 @@ NewtonResult NewtonSolver::iterate(DiscreteEquations& equations, LinearSystem& s
       if (!status.ok) {
         factored_system_ = nullptr;
         result.failure = status.message;
-        result.null_vector = status.null_vector;
+        result.null_vectors = status.null_vectors;
         result.singular = true;
         return result;
       }

@@ -36,7 +36,7 @@ struct NewtonResult {
   int worst_dof = -1;                  // index of the largest |r|
   int worst_equation = -1;             // index of the largest |Φ|
   std::string failure;                 // why it did not converge
-  Eigen::VectorXd null_vector;         // when the matrix was singular (see FactorizationStatus)
+  Eigen::MatrixXd null_vectors;         // when the matrix was singular (see FactorizationStatus)
   bool singular = false;               // the failure was a singular matrix
 };
 

@@ -69,12 +69,12 @@ StaticResult solve_static(const Assembler& assembler, const AnalysisOptions& opt
   double increment = requested_increment;
   NewtonSolver newton(options.newton);
   // Halved steps may meet the same singular matrix again and again: its null vector is computed
-  // once, for the failure reported (LinearSystem::null_vector).
-  struct DeferredNullVector {
+  // once, for the failure reported (LinearSystem::null_vectors).
+  struct DeferredNullVectors {
     LinearSystem& system;
-    bool before = system.null_vector_deferred();
-    explicit DeferredNullVector(LinearSystem& s) : system(s) { system.defer_null_vector(true); }
-    ~DeferredNullVector() { system.defer_null_vector(before); }
+    bool before = system.null_vectors_deferred();
+    explicit DeferredNullVectors(LinearSystem& s) : system(s) { system.defer_null_vectors(true); }
+    ~DeferredNullVectors() { system.defer_null_vectors(before); }
   } deferred(system);
   while (result.path_factor < 1.0) {
     if (stop_requested(control)) {
@@ -100,7 +100,7 @@ StaticResult solve_static(const Assembler& assembler, const AnalysisOptions& opt
           result.newton.failure = "the load step cannot be made small enough to follow the equilibrium path";
         }
         if (result.newton.singular && !deferred.before) {
-          if (Eigen::VectorXd v = system.null_vector(); v.size() > 0) result.newton.null_vector = std::move(v);
+          if (Eigen::MatrixXd v = system.null_vectors(); v.size() > 0) result.newton.null_vectors = std::move(v);
         }
         return result;
       }

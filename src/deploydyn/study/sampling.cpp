@@ -21,16 +21,16 @@ bool matches(const std::vector<std::string>& patterns, const std::string& name) 
   });
 }
 
-std::string number(double value) { return fmt::format("{}", value); }
+std::string value_text(double value) { return fmt::format("{}", value); }
 
 // A material's E or α drawn as `factor` times its value: the constant, or every entry of its
 // temperature table (the shape of E(T), α(T) kept), as model-file flow text.
 std::string scaled_property(double constant, const std::optional<PropertyTable>& table, double factor) {
-  if (!table) return number(constant * factor);
+  if (!table) return value_text(constant * factor);
   std::vector<std::string> values;
-  for (const double value : table->value) values.push_back(number(value * factor));
+  for (const double value : table->value) values.push_back(value_text(value * factor));
   std::vector<std::string> temperatures;
-  for (const double temperature_C : table->temperature_C) temperatures.push_back(number(temperature_C));
+  for (const double temperature_C : table->temperature_C) temperatures.push_back(value_text(temperature_C));
   return fmt::format("{{temperature_C: [{}], value: [{}]}}", fmt::join(temperatures, ", "), fmt::join(values, ", "));
 }
 
@@ -202,7 +202,7 @@ DrawnCase SampledCases::draw(long k) const {
     }
     const double error_m = member_error_m[*own.length_member];
     const double part_m = member.elements.size() == 1 ? error_m : error_m * (own.length_m / member.length_m);
-    set(element + "." + own.length_key, number(own.length_m + part_m));
+    set(element + "." + own.length_key, value_text(own.length_m + part_m));
   };
   double uniform_C = 0.0, gradient_C = 0.0;
   const std::optional<TemperatureField>& temperature = sampling_.temperature;
@@ -220,7 +220,7 @@ DrawnCase SampledCases::draw(long k) const {
       const double scatter_C =
           temperature->scatter_C > 0.0 ? temperature->scatter_C * draws_.standard_normal(k, member_variable(m, 1)) : 0.0;
       const double dT_C = uniform_C + gradient_C * own.side + scatter_C;
-      set(element + ".dT", number(dT_C));
+      set(element + ".dT", value_text(dT_C));
       drawn.drawn.emplace_back("dT_C." + own.name, dT_C);
     }
     if (!own.own_material.empty()) {
@@ -230,7 +230,7 @@ DrawnCase SampledCases::draw(long k) const {
       std::string value = fmt::format("{{E: {}, alpha: {}",
                                       scaled_property(material.youngs_modulus_Pa, material.youngs_modulus_table_Pa, e_factor),
                                       scaled_property(material.expansion_per_C, material.expansion_table_per_C, alpha_factor));
-      if (material.density_kg_m3) value += fmt::format(", density: {}", number(*material.density_kg_m3));
+      if (material.density_kg_m3) value += fmt::format(", density: {}", value_text(*material.density_kg_m3));
       set("materials." + own.own_material, value + "}");
       set(element + ".material", own.own_material);
       drawn.drawn.emplace_back("E_factor." + own.name, e_factor);

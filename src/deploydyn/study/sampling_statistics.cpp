@@ -8,12 +8,10 @@
 #include <map>
 #include <optional>
 
+#include "deploydyn/study/study_table.hpp"
+
 namespace deploydyn {
 namespace {
-
-constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
-
-std::string number(double value) { return std::isnan(value) ? "" : fmt::format("{}", value); }
 
 struct Row {
   std::string quantity, item, unit;
@@ -25,13 +23,13 @@ struct Row {
 std::string probability_fields(std::size_t k, std::size_t n) {
   if (n == 0) return ",,";
   const ProbabilityInterval interval = wilson_interval(k, n);
-  return fmt::format("{},{},{}", number(static_cast<double>(k) / static_cast<double>(n)), number(interval.low),
-                     number(interval.high));
+  return fmt::format("{},{},{}", table_number(static_cast<double>(k) / static_cast<double>(n)), table_number(interval.low),
+                     table_number(interval.high));
 }
 
 std::string format_row(const Row& row) {
   const auto n = static_cast<double>(row.values.size());
-  double mean = kNaN, deviation = kNaN;
+  double mean = std::numeric_limits<double>::quiet_NaN(), deviation = std::numeric_limits<double>::quiet_NaN();
   if (!row.values.empty()) {
     mean = 0.0;
     for (const double v : row.values) mean += v;
@@ -48,10 +46,10 @@ std::string format_row(const Row& row) {
     exceed = probability_fields(static_cast<std::size_t>(above), row.values.size());
   }
   return fmt::format("{},{},{},{},{},{},{},{},{},{},{},{},{},{}\n", row.quantity, row.item, row.unit,
-                     row.values.size(), number(mean), number(deviation), number(percentile(row.values, 0)),
-                     number(percentile(row.values, 5)), number(percentile(row.values, 50)),
-                     number(percentile(row.values, 95)), number(percentile(row.values, 99)),
-                     number(percentile(row.values, 100)), row.limit ? number(*row.limit) : "", exceed);
+                     row.values.size(), table_number(mean), table_number(deviation), table_number(percentile(row.values, 0)),
+                     table_number(percentile(row.values, 5)), table_number(percentile(row.values, 50)),
+                     table_number(percentile(row.values, 95)), table_number(percentile(row.values, 99)),
+                     table_number(percentile(row.values, 100)), row.limit ? table_number(*row.limit) : "", exceed);
 }
 
 }  // namespace
@@ -68,7 +66,7 @@ ProbabilityInterval wilson_interval(std::size_t k, std::size_t n) {
 }
 
 double percentile(std::vector<double> values, double p) {
-  if (values.empty()) return kNaN;
+  if (values.empty()) return std::numeric_limits<double>::quiet_NaN();
   std::sort(values.begin(), values.end());
   const double position = p / 100.0 * static_cast<double>(values.size() - 1);
   const auto below = static_cast<std::size_t>(std::floor(position));
@@ -97,7 +95,7 @@ std::string samples_csv(const Study& study, const std::vector<CaseResult>& resul
     for (const std::string& name : names) {
       const auto value = values.find(name);
       text += ',';
-      if (value != values.end()) text += number(value->second);
+      if (value != values.end()) text += table_number(value->second);
     }
     text += "\n";
   }
@@ -152,10 +150,10 @@ std::string statistics_csv(const Study& study, const std::vector<CaseResult>& re
     }
   }
   const auto probability_row = [&](const char* quantity, std::size_t k) {
-    const ProbabilityInterval interval = n_drawn > 0 ? wilson_interval(k, n_drawn) : ProbabilityInterval{kNaN, kNaN};
+    const ProbabilityInterval interval = n_drawn > 0 ? wilson_interval(k, n_drawn) : ProbabilityInterval{std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::quiet_NaN()};
     return fmt::format("{},*,1,{},{},,,,,,,,,,{},{}\n", quantity, n_drawn,
-                       number(n_drawn > 0 ? static_cast<double>(k) / static_cast<double>(n_drawn) : kNaN),
-                       number(interval.low), number(interval.high));
+                       table_number(n_drawn > 0 ? static_cast<double>(k) / static_cast<double>(n_drawn) : std::numeric_limits<double>::quiet_NaN()),
+                       table_number(interval.low), table_number(interval.high));
   };
   std::string text = "quantity,item,unit,n,mean,std,min,p05,p50,p95,p99,max,limit,p_exceed,p_low,p_high\n";
   text += probability_row("not_deployed", n_failed);

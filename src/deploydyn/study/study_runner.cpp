@@ -61,11 +61,6 @@ CaseRun run_case(const Study& study, std::size_t index, const std::atomic<bool>*
   return run;
 }
 
-std::string host_name() {
-  char name[256] = {};
-  return gethostname(name, sizeof name - 1) == 0 ? std::string(name) : std::string();
-}
-
 // Whether process `pid` on `host` still exists. On another host it cannot be told: assumed
 // alive (mpirun's own abort then ends the study; rerun it with resume).
 bool process_alive(long pid, const std::string& host) {

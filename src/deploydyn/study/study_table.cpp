@@ -28,9 +28,6 @@ std::string csv_field(const std::string& text) {
   return quoted + '"';
 }
 
-// Shortest text that reads back as the same double; empty for NaN (no value).
-std::string number(double value) { return std::isnan(value) ? "" : fmt::format("{}", value); }
-
 struct Peak {
   double value = kNaN;
   std::string element;
@@ -59,16 +56,18 @@ void add_verdict_columns(const std::optional<CaseResult::Verdict>& verdict, cons
   }
   const bool failed = !verdict->first_check.empty();
   row.insert(row.end(), {verdict->deploys ? "yes" : "no", csv_field(verdict->first_check),
-                         csv_field(verdict->first_member), failed ? number(verdict->first_time_s) : ""});
+                         csv_field(verdict->first_member), failed ? table_number(verdict->first_time_s) : ""});
   for (const std::string& check : checks) {
     const auto found = std::find_if(verdict->max_utilization.begin(), verdict->max_utilization.end(),
                                     [&](const auto& entry) { return entry.first == check; });
-    row.push_back(found == verdict->max_utilization.end() ? "" : number(found->second));
+    row.push_back(found == verdict->max_utilization.end() ? "" : table_number(found->second));
   }
-  if (clearance) row.push_back(verdict->min_clearance_m ? number(*verdict->min_clearance_m) : "");
+  if (clearance) row.push_back(verdict->min_clearance_m ? table_number(*verdict->min_clearance_m) : "");
 }
 
 }  // namespace
+
+std::string table_number(double value) { return std::isnan(value) ? "" : fmt::format("{}", value); }
 
 std::string study_table_csv(const Study& study, const std::vector<CaseResult>& outcomes) {
   if (outcomes.size() != study.n_cases()) {
@@ -139,7 +138,7 @@ std::string study_table_csv(const Study& study, const std::vector<CaseResult>& o
     }
     const Peak strain = completed ? largest(outcome.peak_mstrain) : Peak{};
     const Peak force = completed ? largest(outcome.peak_force_N) : Peak{};
-    row.insert(row.end(), {number(strain.value), csv_field(strain.element), number(force.value),
+    row.insert(row.end(), {table_number(strain.value), csv_field(strain.element), table_number(force.value),
                            csv_field(force.element)});
     for (const DriverColumn& column : drivers) {
       double peak = kNaN;
@@ -148,16 +147,16 @@ std::string study_table_csv(const Study& study, const std::vector<CaseResult>& o
           if (d.name == column.name) peak = d.peak;
         }
       }
-      row.push_back(number(peak));
+      row.push_back(table_number(peak));
     }
     const bool comparable = completed && reference.status == RunStatus::completed;
-    row.push_back(number(comparable ? final_shape_error_m(outcome, reference) : kNaN));
+    row.push_back(table_number(comparable ? final_shape_error_m(outcome, reference) : kNaN));
     if (verdicts) add_verdict_columns(outcome.verdict, checks, clearances, row);
     const bool ran = outcome.ran;
-    row.push_back(ran ? number(outcome.time_reached_s) : "");
+    row.push_back(ran ? table_number(outcome.time_reached_s) : "");
     row.push_back(ran ? fmt::format("{}", outcome.steps) : "");
     row.push_back(ran ? fmt::format("{}", outcome.newton_iterations) : "");
-    row.push_back(ran ? number(outcome.wall_time_s) : "");
+    row.push_back(ran ? table_number(outcome.wall_time_s) : "");
     row.push_back(csv_field(outcome.message));
     text += fmt::format("{}\n", fmt::join(row, ","));
   }

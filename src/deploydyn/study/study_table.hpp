@@ -23,6 +23,10 @@
 namespace deploydyn {
 
 // The CSV text (header and one line per case).
+// A value as the study's tables write it: the shortest text that reads back as the same double;
+// empty for NaN (no value).
+std::string table_number(double value);
+
 std::string study_table_csv(const Study& study, const std::vector<CaseResult>& outcomes);
 
 // Written whole to a temporary file and renamed, as summary.json is; OutputError if it cannot.

@@ -11,9 +11,9 @@
 namespace deploydyn::bar {
 namespace {
 
-constexpr std::string_view kSectionKeys[] = {"area", "inertia"};
+constexpr std::string_view kBarSectionKeys[] = {"area", "inertia"};
 
-constexpr ElementField kFields[] = {
+constexpr ElementField kBarFields[] = {
     {"nodes", "", "required", "two different node names, at different initial positions"},
     {"area", "m²", "required unless `section`", "> 0"},
     {"section", "", "none", "a name from `sections`: the bar's area and second moment (its weakest axis's) come from it; not with `area` or `inertia`"},
@@ -26,7 +26,7 @@ constexpr ElementField kFields[] = {
 
 }  // namespace
 
-std::span<const ElementField> entry_fields() { return kFields; }
+std::span<const ElementField> entry_fields() { return kBarFields; }
 
 void read_entry(const std::string& name, const ElementEntryReader& entry, Model& model) {
   BarElement bar;
@@ -34,7 +34,7 @@ void read_entry(const std::string& name, const ElementEntryReader& entry, Model&
   const TwoNodeEnds ends = read_two_node_ends(entry, model, "bar");
   bar.node_a = ends.node_a;
   bar.node_b = ends.node_b;
-  if (const std::optional<int> section = read_section(entry, kSectionKeys)) {
+  if (const std::optional<int> section = read_section(entry, kBarSectionKeys)) {
     bar.section = *section;
     const SectionProperties& p = model.sections[static_cast<std::size_t>(*section)].properties;
     bar.area_m2 = p.area_m2;

@@ -87,7 +87,7 @@ struct BarRecord {
     }
     return std::sqrt(change2) / section.reference_length_m;
   }
-  // In the order of kQuantities.
+  // In the order of kBarQuantities.
   void results(const State& s, std::span<double> out) const {
     out[0] = s.strain;
     out[1] = s.mechanical_strain;
@@ -98,7 +98,7 @@ struct BarRecord {
   double reference_length_m() const { return section.reference_length_m; }
 };
 
-constexpr ResultQuantity kQuantities[] = {
+constexpr ResultQuantity kBarQuantities[] = {
     {"strain", "strain", true},              // total Green–Lagrange ε
     {"mstrain", "mechanical_strain", true},  // ε_m = ε − αΔT
     {"force", "axial_force_N", true},        // true axial force N, tension positive
@@ -132,7 +132,7 @@ std::unique_ptr<ElementGroup> make_bars(const Model& model, const DofMap& dofs) 
 class BarKind final : public ElementKind {
  public:
   std::string_view name() const override { return "bar"; }
-  std::span<const ResultQuantity> quantities(int) const override { return kQuantities; }
+  std::span<const ResultQuantity> quantities(int) const override { return kBarQuantities; }
   int n_elements(const Model& model) const override { return model.n_bars(); }
   const std::string& element_name(const Model& model, int element) const override {
     return model.bars[element].name;

@@ -19,7 +19,7 @@ constexpr double kYoungsToShearModulus = 2.6;
 // |orientation × e1| / |orientation| below this: the orientation is parallel to the beam.
 constexpr double kMinOrientationSine = 1e-6;
 
-constexpr ElementField kFields[] = {
+constexpr ElementField kBeamFields[] = {
     {"nodes", "", "required", "two different node names, at different initial positions"},
     {"area", "m²", "required unless `section`", "> 0"},
     {"inertia_z", "m⁴", "required unless `section`", "> 0: second moment of area about local z (in-plane bending in 2D)"},
@@ -54,7 +54,7 @@ constexpr ElementField kFields[] = {
 
 constexpr std::string_view kOnly3D[] = {"inertia_y", "torsion", "orientation", "height_z",
                                         "dT_gradient_z", "section_modulus_y", "torsional_stiffness"};
-constexpr std::string_view kSectionKeys[] = {"area", "inertia_z", "inertia_y", "torsion",
+constexpr std::string_view kBeamSectionKeys[] = {"area", "inertia_z", "inertia_y", "torsion",
                                              "section_modulus_z", "section_modulus_y"};
 
 // A gradient needs the depth it acts over; a depth without a gradient is harmless.
@@ -142,7 +142,7 @@ void read_sectional_values(const ElementEntryReader& entry, bool three_d, BeamEl
 
 }  // namespace
 
-std::span<const ElementField> entry_fields() { return kFields; }
+std::span<const ElementField> entry_fields() { return kBeamFields; }
 
 void read_entry(const std::string& name, const ElementEntryReader& entry, Model& model) {
   const bool three_d = model.dimension == 3;
@@ -164,7 +164,7 @@ void read_entry(const std::string& name, const ElementEntryReader& entry, Model&
   const Eigen::Vector3d chord =
       model.nodes[beam.node_b].position_m - model.nodes[beam.node_a].position_m;
   const double distance = ends.distance_m;
-  if (const std::optional<int> section = read_section(entry, kSectionKeys)) {
+  if (const std::optional<int> section = read_section(entry, kBeamSectionKeys)) {
     beam.section = *section;
     const SectionProperties& p = model.sections[static_cast<std::size_t>(*section)].properties;
     beam.area_m2 = p.area_m2;

@@ -137,7 +137,7 @@ struct Beam2dRecord {
         std::hypot(change[3] - change[0], change[4] - change[1]) / section.reference_length_m;
     return std::max({chord, std::abs(change[2]), std::abs(change[5])});
   }
-  // In the order of kQuantities.
+  // In the order of kBeamQuantities.
   void results(const State& s, std::span<double> out) const {
     out[0] = s.strain;
     out[1] = s.mechanical_strain;
@@ -149,7 +149,7 @@ struct Beam2dRecord {
 };
 
 // 2D: the first five; 3D: all (the 2D ones first, in the same places).
-constexpr ResultQuantity kQuantities[] = {
+constexpr ResultQuantity kBeamQuantities[] = {
     {"strain", "strain", true},                   // total axial ε at the mid-point
     {"mstrain", "mechanical_strain", true},       // ε − αΔT
     {"force", "axial_force_N", true},             // N, tension positive
@@ -159,7 +159,7 @@ constexpr ResultQuantity kQuantities[] = {
     {"torque", "torque_Nm", true},                // 3D: about the axis
     {"moment_y", "bending_moment_y_Nm", true},    // 3D: about local y
 };
-constexpr int kQuantities2d = 5;
+constexpr int kBeamQuantities2d = 5;
 
 std::unique_ptr<ElementGroup> make_beam_group_2d(const Model& model, const DofMap& dofs) {
   std::vector<Beam2dRecord> records;
@@ -202,8 +202,8 @@ class BeamKind final : public ElementKind {
  public:
   std::string_view name() const override { return "beam"; }
   std::span<const ResultQuantity> quantities(int dimension) const override {
-    return std::span<const ResultQuantity>(kQuantities).first(dimension == 2 ? kQuantities2d
-                                                                               : std::size(kQuantities));
+    return std::span<const ResultQuantity>(kBeamQuantities).first(dimension == 2 ? kBeamQuantities2d
+                                                                               : std::size(kBeamQuantities));
   }
   int n_elements(const Model& model) const override { return model.n_beams(); }
   const std::string& element_name(const Model& model, int element) const override {

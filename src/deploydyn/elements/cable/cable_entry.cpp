@@ -15,7 +15,7 @@
 namespace deploydyn::cable {
 namespace {
 
-constexpr ElementField kFields[] = {
+constexpr ElementField kCableFields[] = {
     {"nodes", "", "required", "two different node names, at different initial positions"},
     {"area", "m²", "required unless `section`", "> 0"},
     {"section", "", "none", "a name from `sections`: the cable's area comes from it; not with `area`"},
@@ -31,12 +31,12 @@ constexpr ElementField kFields[] = {
     {"break_load", "N", "none", "> 0: the tension at which the cable breaks (its minimum breaking load), for the overload check"},
 };
 
-constexpr std::string_view kSectionKeys[] = {"area"};
+constexpr std::string_view kCableSectionKeys[] = {"area"};
 constexpr double kForever_s = std::numeric_limits<double>::infinity();
 
 }  // namespace
 
-std::span<const ElementField> entry_fields() { return kFields; }
+std::span<const ElementField> entry_fields() { return kCableFields; }
 
 void read_entry(const std::string& name, const ElementEntryReader& entry, Model& model) {
   CableElement cable;
@@ -44,7 +44,7 @@ void read_entry(const std::string& name, const ElementEntryReader& entry, Model&
   const TwoNodeEnds ends = read_two_node_ends(entry, model, "cable");
   cable.node_a = ends.node_a;
   cable.node_b = ends.node_b;
-  if (const std::optional<int> section = read_section(entry, kSectionKeys)) {
+  if (const std::optional<int> section = read_section(entry, kCableSectionKeys)) {
     cable.section = *section;
     cable.area_m2 = model.sections[static_cast<std::size_t>(*section)].properties.area_m2;
   } else {

@@ -102,7 +102,7 @@ struct CableRecord {
     const Vector change = q - q_before;
     return (change.template tail<D>() - change.template head<D>()).norm() / initial_rest_length_m;
   }
-  // In the order of kQuantities.
+  // In the order of kCableQuantities.
   void results(const State& s, std::span<double> out) const {
     out[0] = s.bar.strain;
     out[1] = s.bar.mechanical_strain;
@@ -115,7 +115,7 @@ struct CableRecord {
   double reference_length_m() const { return initial_rest_length_m; }
 };
 
-constexpr ResultQuantity kQuantities[] = {
+constexpr ResultQuantity kCableQuantities[] = {
     {"strain", "strain", true},              // total Green–Lagrange ε, relative to L0(t)
     {"mstrain", "mechanical_strain", true},  // ε_m = ε − αΔT
     {"force", "axial_force_N", true},        // true axial force N ≥ 0; 0 when slack
@@ -193,7 +193,7 @@ std::unique_ptr<ElementGroup> make_cables(const Model& model, const DofMap& dofs
 class CableKind final : public ElementKind {
  public:
   std::string_view name() const override { return "cable"; }
-  std::span<const ResultQuantity> quantities(int) const override { return kQuantities; }
+  std::span<const ResultQuantity> quantities(int) const override { return kCableQuantities; }
   int n_elements(const Model& model) const override { return model.n_cables(); }
   const std::string& element_name(const Model& model, int element) const override {
     return model.cables[element].name;

@@ -10,7 +10,7 @@
 namespace deploydyn::hinge {
 namespace {
 
-constexpr ElementField kFields[] = {
+constexpr ElementField kHingeFields[] = {
     {"nodes", "", "required (or `rotation_nodes`)",
      "three node names A, H, B: bars meeting at H; θ is the angle at H from H→A to H→B"},
     {"rotation_nodes", "", "required (or `nodes`)",
@@ -78,7 +78,7 @@ void check_reachable(const ElementEntryReader& entry, std::string_view key, doub
 
 }  // namespace
 
-std::span<const ElementField> entry_fields() { return kFields; }
+std::span<const ElementField> entry_fields() { return kHingeFields; }
 
 void read_entry(const std::string& name, const ElementEntryReader& entry, Model& model) {
   HingeElement h;
