@@ -67,6 +67,7 @@
 #include "deploydyn/thermal/sun_position.hpp"
 #include "deploydyn/thermal/thermal_coupling.hpp"
 #include "deploydyn/util/stop_point.hpp"
+#include "deploydyn/model/hinge_to_ground_driver.hpp"
 
 namespace py = pybind11;
 using namespace deploydyn;
@@ -453,7 +454,11 @@ py::list drivers_info(const Model& model) {
         d["direction"] = std::string(1, "xyz"[driver.direction]);
         break;
       case Driver::Kind::revolute:
-        d["joint"] = model.joints[static_cast<std::size_t>(driver.joint)].name;
+        if (drives_hinge_to_ground(driver)) {
+          d["support"] = model.nodes[driver.node].name;
+        } else {
+          d["joint"] = model.joints[static_cast<std::size_t>(driver.joint)].name;
+        }
         break;
       case Driver::Kind::hinge_angle: {
         py::list nodes;
