@@ -40,6 +40,7 @@
 #include "deploydyn/io/input_error.hpp"
 #include "deploydyn/io/model_loader.hpp"
 #include "deploydyn/io/model_writer.hpp"
+#include "deploydyn/model/hinge_to_ground_driver.hpp"
 #include "deploydyn/results/envelope.hpp"
 #include "deploydyn/output/history_writer.hpp"
 #include "deploydyn/runs/modes_to_folder.hpp"
@@ -67,7 +68,6 @@
 #include "deploydyn/thermal/sun_position.hpp"
 #include "deploydyn/thermal/thermal_coupling.hpp"
 #include "deploydyn/util/stop_point.hpp"
-#include "deploydyn/model/hinge_to_ground_driver.hpp"
 
 namespace py = pybind11;
 using namespace deploydyn;

@@ -259,15 +259,8 @@ struct Located {
   double load_factor = 0.0;
   double bound = 0.0;
 };
-Located bifurcation_of(int n, const std::string& support_a, const std::string& support_b) {
-  const Model unloaded = load_model_from_string(column(n, support_a, support_b), "column.yaml");
-  const double critical_N = member_named(checked_members(unloaded), "column").critical_force_N;
-  const Model model = load_model_from_string(
-      column(n, support_a, support_b,
-             fmt::format("loads: [{{node: B, force: [{:.17g}, 0]}}]\n"
-                         "analysis: {{type: continuation, parameter: load, start: 0, end: 1.3}}\n",
-                         -critical_N)),
-      "loaded_column.yaml");
+// The first bifurcation on the continuation `model` describes.
+Located first_bifurcation(const Model& model) {
   const Assembler assembler(model);
   const auto system = make_linear_system(assembler);
   const ContinuationResult path = trace_path(assembler, path_options(model), *system, assembler.initial_coordinates(),
@@ -278,6 +271,18 @@ Located bifurcation_of(int n, const std::string& support_a, const std::string& s
   }
   ADD_FAILURE() << "no bifurcation: " << path.message;
   return {};
+}
+
+Located bifurcation_of(int n, const std::string& support_a, const std::string& support_b) {
+  const Model unloaded = load_model_from_string(column(n, support_a, support_b), "column.yaml");
+  const double critical_N = member_named(checked_members(unloaded), "column").critical_force_N;
+  const Model model = load_model_from_string(
+      column(n, support_a, support_b,
+             fmt::format("loads: [{{node: B, force: [{:.17g}, 0]}}]\n"
+                         "analysis: {{type: continuation, parameter: load, start: 0, end: 1.3}}\n",
+                         -critical_N)),
+      "loaded_column.yaml");
+  return first_bifurcation(model);
 }
 
 // The beam column buckles in the solution where the check's Euler load is, within the
@@ -347,22 +352,13 @@ TEST(BucklingLength, PerAxisEulerLoadIsWhereTheThreeDimensionalBeamColumnBuckles
                                     "analysis: {{type: continuation, parameter: load, start: 0, end: 1.15}}\n",
                                     -critical_N)),
         "loaded_column3d.yaml");
-    const Assembler assembler(model);
-    const auto system = make_linear_system(assembler);
-    const ContinuationResult path = trace_path(assembler, path_options(model), *system, assembler.initial_coordinates(),
-                                               Eigen::VectorXd::Zero(assembler.n_equations()));
-    EXPECT_EQ(path.end, ContinuationEnd::reached_end) << path.message;
-    std::optional<Located> located;
-    for (const PathEvent& e : path.events) {
-      if (e.kind == PathEventKind::bifurcation && !located) located = Located{e.parameter, e.parameter_error};
-    }
-    ASSERT_TRUE(located.has_value()) << "no bifurcation: " << path.message;
+    const Located located = first_bifurcation(model);
     const double estimate = std::pow(kPi / (0.5 * n), 2) / 6.0;
     fmt::print("3D column, K_z = 0.5, {} elements: bifurcation at μ = 1 {:+.4e} (± {:.1e}); (kh)²/6 = {:.4e}\n", n,
-               located->load_factor - 1.0, located->bound, estimate);
-    EXPECT_GT(located->load_factor - 1.0, -located->bound);
-    EXPECT_LT(located->load_factor - 1.0, 1.5 * estimate + located->bound);
-    errors.push_back(located->load_factor - 1.0);
+               located.load_factor - 1.0, located.bound, estimate);
+    EXPECT_GT(located.load_factor - 1.0, -located.bound);
+    EXPECT_LT(located.load_factor - 1.0, 1.5 * estimate + located.bound);
+    errors.push_back(located.load_factor - 1.0);
   }
   EXPECT_GT(errors[0] / errors[1], 3.5);
   EXPECT_LT(errors[0] / errors[1], 4.5);

@@ -34,7 +34,7 @@ Eigen::Vector3d DrivenRevolute::w_prime(double s) const {
 }
 
 Eigen::Matrix3d DrivenRevolute::frame_a(const Eigen::VectorXd& x, bool rate) const {
-  if (grounded_) return rate ? Eigen::Matrix3d::Zero() : Eigen::Matrix3d::Identity();
+  if (grounded_) return rate ? Eigen::Matrix3d(Eigen::Matrix3d::Zero()) : Eigen::Matrix3d(Eigen::Matrix3d::Identity());
   return frame_dot::frame(x, dofs(), 0);
 }
 

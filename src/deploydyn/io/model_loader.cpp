@@ -25,11 +25,11 @@
 #include "deploydyn/io/text_file.hpp"
 #include "deploydyn/io/yaml_reader.hpp"
 #include "deploydyn/model/dof_map.hpp"
+#include "deploydyn/model/hinge_to_ground_driver.hpp"
 #include "deploydyn/model/material_law.hpp"
 
 #include "deploydyn/results/history_layout.hpp"
 #include "deploydyn/results/result_file_names.hpp"
-#include "deploydyn/model/hinge_to_ground_driver.hpp"
 
 namespace deploydyn {
 namespace {

@@ -2,9 +2,9 @@
 
 #include "deploydyn/elements/element_kinds.hpp"
 #include "deploydyn/model/dof_map.hpp"
+#include "deploydyn/model/hinge_to_ground_driver.hpp"
 #include "deploydyn/util/overloaded.hpp"
 #include "deploydyn/util/stop_point.hpp"
-#include "deploydyn/model/hinge_to_ground_driver.hpp"
 
 #include <fmt/format.h>
 #include <yaml-cpp/yaml.h>

@@ -1,7 +1,8 @@
 #include "deploydyn/report/node_markers.hpp"
-#include "deploydyn/model/hinge_to_ground_driver.hpp"
 
 #include <algorithm>
+
+#include "deploydyn/model/hinge_to_ground_driver.hpp"
 
 namespace deploydyn {
 
