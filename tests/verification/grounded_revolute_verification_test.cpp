@@ -104,30 +104,29 @@ Difference grounded_against_stub(int dimension, const std::string& analysis) {
 
 constexpr const char* kDynamic = "{type: dynamic, end: 1.2, step: 2.0e-3, output_interval: 0.01}";
 
-TEST(GroundedRevolute, MatchesTheStubBeamJointAndDriverIn2D) {
-  const Difference d = grounded_against_stub(2, kDynamic);
+// Rows `first_row` (nodes) and the next (torque) of case 23.
+void expect_the_stub_models_run(int dimension, int first_row, const std::string& how) {
+  const Difference d = grounded_against_stub(dimension, kDynamic);
   EXPECT_GT(d.travel_m, 0.5) << "the beam did not turn";
   EXPECT_GT(d.largest_torque_Nm, 1.0);
-  check({"23.1", "2D beam driven 1.2 rad at its hinge to ground vs. pinned to a clamped stub and driven on the pin, "
-                 "dynamic: largest node distance (m)",
+  check({fmt::format("23.{}", first_row),
+         fmt::format("{}D beam driven 1.2 rad {} vs. pinned to a clamped stub and driven on the pin, dynamic: "
+                     "largest node distance (m)",
+                     dimension, how),
          "the stub model, same equations", d.position_m, kSameRunTolerance_m, "m"});
-  check({"23.2", "2D: driver torque, largest difference / largest torque", "the stub model's driver torque",
-         d.torque, kSameTorqueRelativeTolerance, ""});
-  std::printf("2D grounded revolute vs stub: nodes %.3g m, torque %.3g (largest %.4g N·m), travel %.3g m\n",
-              d.position_m, d.torque, d.largest_torque_Nm, d.travel_m);
+  check({fmt::format("23.{}", first_row + 1),
+         fmt::format("{}D: driver torque, largest difference / largest torque", dimension),
+         "the stub model's driver torque", d.torque, kSameTorqueRelativeTolerance, ""});
+  std::printf("%dD grounded revolute vs stub: nodes %.3g m, torque %.3g (largest %.4g N·m), travel %.3g m\n",
+              dimension, d.position_m, d.torque, d.largest_torque_Nm, d.travel_m);
+}
+
+TEST(GroundedRevolute, MatchesTheStubBeamJointAndDriverIn2D) {
+  expect_the_stub_models_run(2, 1, "at its hinge to ground");
 }
 
 TEST(GroundedRevolute, MatchesTheStubBeamJointAndDriverIn3D) {
-  const Difference d = grounded_against_stub(3, kDynamic);
-  EXPECT_GT(d.travel_m, 0.5) << "the beam did not turn";
-  EXPECT_GT(d.largest_torque_Nm, 1.0);
-  check({"23.3", "3D beam driven 1.2 rad about a tilted support axis vs. pinned to a clamped stub and driven on the "
-                 "pin, dynamic: largest node distance (m)",
-         "the stub model, same equations", d.position_m, kSameRunTolerance_m, "m"});
-  check({"23.4", "3D: driver torque, largest difference / largest torque", "the stub model's driver torque",
-         d.torque, kSameTorqueRelativeTolerance, ""});
-  std::printf("3D grounded revolute vs stub: nodes %.3g m, torque %.3g (largest %.4g N·m), travel %.3g m\n",
-              d.position_m, d.torque, d.largest_torque_Nm, d.travel_m);
+  expect_the_stub_models_run(3, 3, "about a tilted support axis");
 }
 
 // Statics about a horizontal hinge: the beam along x, the axis z (3D: a support with axis
