@@ -40,6 +40,7 @@
 #include "deploydyn/io/input_error.hpp"
 #include "deploydyn/io/model_loader.hpp"
 #include "deploydyn/io/model_writer.hpp"
+#include "deploydyn/model/hinge_to_ground_driver.hpp"
 #include "deploydyn/results/envelope.hpp"
 #include "deploydyn/output/history_writer.hpp"
 #include "deploydyn/runs/modes_to_folder.hpp"
@@ -453,7 +454,11 @@ py::list drivers_info(const Model& model) {
         d["direction"] = std::string(1, "xyz"[driver.direction]);
         break;
       case Driver::Kind::revolute:
-        d["joint"] = model.joints[static_cast<std::size_t>(driver.joint)].name;
+        if (drives_hinge_to_ground(driver)) {
+          d["support"] = model.nodes[driver.node].name;
+        } else {
+          d["joint"] = model.joints[static_cast<std::size_t>(driver.joint)].name;
+        }
         break;
       case Driver::Kind::hinge_angle: {
         py::list nodes;

@@ -228,14 +228,25 @@ class ModelBuilder:
         [u, w] (u fixed in A's frame, w in B's, perpendicular) stay perpendicular."""
         return self.joint(name, node_a, node_b, type="universal", arms=arms, offsets=offsets)
 
-    def revolute_driver(self, name, joint, profile, reading="angular_velocity"):
+    def revolute_driver(self, name, joint=None, profile=None, reading="angular_velocity", support=None):
         """Turn node B of pin `joint` relative to node A about the joint's axis (nodes with
-        rotations: beams); reading "angular_velocity" (rad/s) or "angle" (rad)."""
+        rotations: beams), or, with `support` (a node name) in place of `joint`, that node
+        about the axis of its hinge to ground (3D: a support with `axis`; 2D: rz free);
+        reading "angular_velocity" (rad/s) or "angle" (rad)."""
         where = "ModelBuilder.revolute_driver"
-        self._section("drivers")[checked.name(where, "name", name)] = {
-            "type": "revolute", "joint": checked.name(where, "joint", joint),
-            "profile": checked.time_function(where, "profile", profile),
-            "reading": checked.text(where, "reading", reading)}
+        if (joint is None) == (support is None):
+            raise TypeError(f"{where}: give either joint (a pin between two nodes) or support (a "
+                            f"node's hinge to ground), not {'both' if joint is not None else 'neither'}")
+        if profile is None:
+            raise TypeError(f"{where}: profile is required")
+        spec = {"type": "revolute"}
+        if joint is not None:
+            spec["joint"] = checked.name(where, "joint", joint)
+        else:
+            spec["support"] = checked.name(where, "support", support)
+        spec["profile"] = checked.time_function(where, "profile", profile)
+        spec["reading"] = checked.text(where, "reading", reading)
+        self._section("drivers")[checked.name(where, "name", name)] = spec
         return self
 
     def hinge_angle_driver(self, name, node_a, hinge, node_b, profile, axis=None,

@@ -103,7 +103,7 @@ class Model:
     @property
     def drivers(self):
         """{name: {"type", then by type: bar_angle "element", "pivot" (3D "axis"); coordinate
-        "node", "direction"; revolute "joint"; hinge_angle "nodes" [A, H, B] (3D "axis");
+        "node", "direction"; revolute "joint" or "support"; hinge_angle "nodes" [A, H, B] (3D "axis");
         "reading", "effort": "torque" | "force"}}."""
         return {d["name"]: d for d in self._core.drivers}
 

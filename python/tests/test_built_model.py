@@ -346,6 +346,39 @@ def test_ball_and_universal_joints_and_a_hinge_to_ground_reach_the_model():
     assert z_turned @ np.array([0, 0, 1]) == pytest.approx(math.cos(psi), abs=1e-6)
 
 
+@pytest.mark.parametrize("dimension", [2, 3])
+def test_a_revolute_driver_at_a_hinge_to_ground_holds_the_weight(dimension):
+    """revolute_driver(support=...) turns a beam about its hinge to ground (no stub beam): in
+    statics its torque holds the weight, m g (L/2) cos θ (docs/theory.md, "Revolute driver at a
+    hinge to ground")."""
+    density, area, length, g = 2700.0, 2.0e-3, 1.0, 9.81
+    b = deploydyn.ModelBuilder("crank").material("stiff", E=2.0e12, density=density)
+    z = [0] if dimension == 3 else []
+    b.node("A", 0, 0, *z).node("M", length / 2, 0, *z).node("B", length, 0, *z)
+    section = dict(area=area, inertia_z=3e-7, material="stiff")
+    if dimension == 3:
+        section.update(inertia_y=3e-7, torsion=6e-7)
+    b.beam("b0", "A", "M", **section).beam("b1", "M", "B", **section)
+    if dimension == 3:
+        b.support("A", axis=[0, 0, 1])
+    else:
+        b.support("A", fix=["x", "y"])
+    b.gravity([0, -g] + z)
+    b.revolute_driver("crank", support="A", profile=deploydyn.smooth_step(0, 0, 1, 1.0), reading="angle")
+    b.analysis(type="static", end=1.0, step=0.25)
+    model = b.build()
+    assert model.drivers["crank"]["support"] == "A"
+    assert "support: A" in model.to_yaml()
+    result = model.run(check=True)
+    # The tip lags the driven 1 rad by the beam's sag under its weight (~6e-6 rad here).
+    theta = math.atan2(result["y.B"][-1], result["x.B"][-1])
+    assert theta == pytest.approx(1.0, abs=1e-4)
+    weight_moment = density * area * length * g * length / 2
+    assert result["torque.crank"][-1] == pytest.approx(weight_moment * math.cos(theta), rel=5e-6)
+    with pytest.raises(TypeError, match="give either joint .* or support"):
+        deploydyn.ModelBuilder("x").revolute_driver("m", "hinge", 0.1, support="A")
+
+
 def test_joint_arms_must_be_two_vectors():
     builder = deploydyn.ModelBuilder("bad")
     with pytest.raises(TypeError, match="arms must be two vectors"):

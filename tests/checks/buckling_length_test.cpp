@@ -171,10 +171,65 @@ supports: [{{node: A, {}}}, {{node: B, fix: [y, z]}}]
   };
   const Model clamped = load_model_from_string(column3d("fix: [x, y, z, rotation]"), "clamped3d.yaml");
   EXPECT_EQ(member_named(checked_members(clamped), "column").buckling_length_source, "clamped–pinned ends");
-  // A revolute hinge to ground turns about z only: clamped about y, pinned about z; both are
-  // taken as pinned, the larger K.
+  // A revolute hinge to ground turns about z only: clamped about y (the hinge holds that turn),
+  // pinned about z. With I_y = I_z the z axis governs, with the pinned–pinned K = 1.
   const Model hinged = load_model_from_string(column3d("fix: [x, y, z], axis: [0, 0, 1]"), "hinged3d.yaml");
-  EXPECT_EQ(member_named(checked_members(hinged), "column").buckling_length_source, "pinned–pinned ends");
+  const CheckedMember column = member_named(checked_members(hinged), "column");
+  EXPECT_EQ(column.buckling_length_source, "about y: clamped–pinned ends; about z: pinned–pinned ends");
+  EXPECT_EQ(column.buckling_length_factor, 1.0);
+  ASSERT_TRUE(column.buckling_length_factors.has_value());
+  EXPECT_NEAR((*column.buckling_length_factors)[0].value(), kPi / 4.493409457909064, 1e-12);
+  EXPECT_EQ((*column.buckling_length_factors)[1], 1.0);
+  EXPECT_NEAR(column.critical_force_N, kPi * kPi * 2.1e11 * 1e-10, 1e-9);
+}
+
+// ---------------------------------------------------------------------------------------------
+// Per axis (docs/theory.md, "Buckling length from the end conditions", V1a). A 3D column of `n`
+// beams along x, local y along global y, hinged to ground about y at both ends (A holds x, y, z;
+// B y and z, an axial roller): about y pinned–pinned (K_y = 1), about z clamped–clamped
+// (K_z = 1/2, the hinges hold that turn). With I_z = I_y/5 the z axis governs:
+//   N_y = π² E I_y / L²,   N_z = π² E I_z / (L/2)² = 0.8 N_y.
+// One K for both axes (the larger, as before per-axis K) would give π² E I_z / L² = N_z/4.
+constexpr double kInertiaY_m4 = 1e-10, kInertiaZ_m4 = 2e-11;
+std::string hinged_column3d(int n, const std::string& member_keys = "", const std::string& rest = "") {
+  std::string nodes = "A: [0, 0, 0]", elements, names;
+  for (int i = 1; i <= n; ++i) {
+    const std::string node = i == n ? "B" : fmt::format("N{}", i);
+    const std::string previous = i == 1 ? "A" : fmt::format("N{}", i - 1);
+    nodes += fmt::format(", {}: [{}, 0, 0]", node, static_cast<double>(i) / n);
+    elements += fmt::format("  c{}: {{type: beam, nodes: [{}, {}], area: 1.0e-4, inertia_y: {}, inertia_z: {}, "
+                            "torsion: 1.0e-10, material: steel, orientation: [0, 1, 0]}}\n",
+                            i, previous, node, kInertiaY_m4, kInertiaZ_m4);
+    names += fmt::format("{}c{}", i == 1 ? "" : ", ", i);
+  }
+  return fmt::format(R"(
+nodes: {{{}}}
+materials: {{steel: {{E: 2.1e11, density: 7850}}}}
+elements:
+{}members:
+  column: {{elements: [{}]{}}}
+supports: [{{node: A, fix: [x, y, z], axis: [0, 1, 0]}}, {{node: B, fix: [y, z], axis: [0, 1, 0]}}]
+{})",
+                     nodes, elements, names, member_keys, rest);
+}
+
+TEST(BucklingLength, PerAxisFromAHingeToGroundClampedAboutOneAxisPinnedAboutTheOther) {
+  const double youngs_Pa = 2.1e11;
+  const double about_y_N = kPi * kPi * youngs_Pa * kInertiaY_m4, about_z_N = 4.0 * kPi * kPi * youngs_Pa * kInertiaZ_m4;
+  ASSERT_LT(about_z_N, about_y_N);
+  const CheckedMember derived = member_named(checked_members(load_model_from_string(hinged_column3d(4), "h.yaml")), "column");
+  ASSERT_TRUE(derived.buckling_length_factors.has_value());
+  EXPECT_EQ((*derived.buckling_length_factors)[0], 1.0);
+  EXPECT_EQ((*derived.buckling_length_factors)[1], 0.5);
+  EXPECT_EQ(derived.buckling_length_factor, 0.5);  // z governs
+  EXPECT_EQ(derived.buckling_length_source, "about y: pinned–pinned ends; about z: clamped–clamped ends");
+  EXPECT_NEAR(derived.critical_force_N, about_z_N, 1e-12 * about_z_N);
+
+  // A given K is both axes' K: the weak axis governs.
+  const CheckedMember one = member_named(
+      checked_members(load_model_from_string(hinged_column3d(4, ", buckling_length_factor: 1"), "one.yaml")), "column");
+  EXPECT_FALSE(one.buckling_length_factors.has_value());
+  EXPECT_NEAR(one.critical_force_N, kPi * kPi * youngs_Pa * kInertiaZ_m4, 1e-12 * about_z_N);
 }
 
 TEST(BucklingLength, CheckListsEachFactorAndWhereItComesFrom) {
@@ -204,15 +259,8 @@ struct Located {
   double load_factor = 0.0;
   double bound = 0.0;
 };
-Located bifurcation_of(int n, const std::string& support_a, const std::string& support_b) {
-  const Model unloaded = load_model_from_string(column(n, support_a, support_b), "column.yaml");
-  const double critical_N = member_named(checked_members(unloaded), "column").critical_force_N;
-  const Model model = load_model_from_string(
-      column(n, support_a, support_b,
-             fmt::format("loads: [{{node: B, force: [{:.17g}, 0]}}]\n"
-                         "analysis: {{type: continuation, parameter: load, start: 0, end: 1.3}}\n",
-                         -critical_N)),
-      "loaded_column.yaml");
+// The first bifurcation on the continuation `model` describes.
+Located first_bifurcation(const Model& model) {
   const Assembler assembler(model);
   const auto system = make_linear_system(assembler);
   const ContinuationResult path = trace_path(assembler, path_options(model), *system, assembler.initial_coordinates(),
@@ -223,6 +271,18 @@ Located bifurcation_of(int n, const std::string& support_a, const std::string& s
   }
   ADD_FAILURE() << "no bifurcation: " << path.message;
   return {};
+}
+
+Located bifurcation_of(int n, const std::string& support_a, const std::string& support_b) {
+  const Model unloaded = load_model_from_string(column(n, support_a, support_b), "column.yaml");
+  const double critical_N = member_named(checked_members(unloaded), "column").critical_force_N;
+  const Model model = load_model_from_string(
+      column(n, support_a, support_b,
+             fmt::format("loads: [{{node: B, force: [{:.17g}, 0]}}]\n"
+                         "analysis: {{type: continuation, parameter: load, start: 0, end: 1.3}}\n",
+                         -critical_N)),
+      "loaded_column.yaml");
+  return first_bifurcation(model);
 }
 
 // The beam column buckles in the solution where the check's Euler load is, within the
@@ -276,6 +336,39 @@ TEST(BucklingLength, HeatedClampedStrutFailsAtTheClosedFormTemperature) {
   EXPECT_EQ(verdict->first_failure->check, "buckling");
   EXPECT_EQ(verdict->first_failure->member, "column");
   EXPECT_NEAR(verdict->first_failure->time_s, critical_dT_C, 1e-9 * critical_dT_C);  // a ΔT (°C) here
+}
+
+// The meshed column under a dead end load P = μ N_cr (the check's, about z) buckles about z at
+// μ = 1 within the beam's discretization error, which falls at second order (the 3D beam's
+// constant is ~2.7 times the 2D one-point rule's (k h)²/6 here: measured +6.85e-2 at 16 and
+// +1.63e-2 at 32 elements), so that Richardson's extrapolation of the two lands on μ = 1 to
+// 1.1e-3. About y it would buckle at μ = 1.25; one K for both axes (the larger, K = 1) would
+// have put N_cr at μ = 0.25.
+constexpr double kExtrapolatedTolerance = 3e-3;
+TEST(BucklingLength, PerAxisEulerLoadIsWhereTheThreeDimensionalBeamColumnBuckles) {
+  std::vector<double> errors;
+  for (const int n : {16, 32}) {
+    const Model unloaded = load_model_from_string(hinged_column3d(n), "column3d.yaml");
+    const double critical_N = member_named(checked_members(unloaded), "column").critical_force_N;
+    const Model model = load_model_from_string(
+        hinged_column3d(n, "",
+                        fmt::format("loads: [{{node: B, force: [{:.17g}, 0, 0]}}]\n"
+                                    "analysis: {{type: continuation, parameter: load, start: 0, end: 1.15}}\n",
+                                    -critical_N)),
+        "loaded_column3d.yaml");
+    const Located located = first_bifurcation(model);
+    fmt::print("3D column, K_z = 0.5, {} elements: bifurcation at μ = 1 {:+.4e} (± {:.1e})\n", n,
+               located.load_factor - 1.0, located.bound);
+    // The beam is stiffer than the continuum: above N_cr.
+    EXPECT_GT(located.load_factor - 1.0, -located.bound);
+    EXPECT_LT(located.load_factor - 1.0, 0.1);
+    errors.push_back(located.load_factor - 1.0);
+  }
+  EXPECT_GT(errors[0] / errors[1], 3.5);
+  EXPECT_LT(errors[0] / errors[1], 4.5);
+  const double extrapolated = errors[1] - (errors[0] - errors[1]) / 3.0;
+  fmt::print("3D column: extrapolated μ = 1 {:+.3e}\n", extrapolated);
+  EXPECT_LT(std::abs(extrapolated), kExtrapolatedTolerance);
 }
 
 }  // namespace

@@ -112,6 +112,12 @@ std::vector<Case> cases() {
                                                                  Eigen::Vector3d::UnitZ(), driver_motion(), "r")});
   out.push_back({"revolute 3D",
                  std::make_unique<DrivenRevolute>(frame_a, frame_b, tilted_axis, driver_motion(), "r")});
+  // At a hinge to ground: node A is the ground (no unknowns).
+  out.push_back({"revolute 2D at a hinge to ground", std::make_unique<DrivenRevolute>(
+                                                         std::vector<int>{}, std::vector<int>{23},
+                                                         Eigen::Vector3d::UnitZ(), driver_motion(), "r")});
+  out.push_back({"revolute 3D at a hinge to ground",
+                 std::make_unique<DrivenRevolute>(std::vector<int>{}, frame_b, tilted_axis, driver_motion(), "r")});
   out.push_back({"hinge angle 2D",
                  std::make_unique<DrivenHingeAngle>(std::vector<int>{6, 7}, std::vector<int>{1, 3}, std::vector<int>{9, 0},
                                                     Eigen::Vector3d(1.0, 0.2, 0.0), Eigen::Vector3d(0.1, 0.1, 0.0),

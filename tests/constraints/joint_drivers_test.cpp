@@ -134,6 +134,39 @@ TEST(RevoluteDriver, In2DIsTheDifferenceOfTheNodeRotations) {
   EXPECT_NEAR(driver.effort(q, 0.4, Eigen::VectorXd::Constant(1, 2.5)), -2.5, kRoundOff);
 }
 
+// At a hinge to ground A is the ground: the same constraint as the joint's with R_A = I (θ_A = 0
+// in 2D), on B's unknowns alone.
+TEST(RevoluteDriver, AtAHingeToGroundIsTheJointsWithTheGroundAsA) {
+  const DrivenRevolute grounded({}, range(0, 9), kAxis, angle_equal_to_time(), "g");
+  const DrivenRevolute joint(range(0, 9), range(9, 9), kAxis, angle_equal_to_time(), "r");
+  ASSERT_EQ(grounded.dofs().size(), 9U);
+  EXPECT_FALSE(grounded.nonlinear());
+  constexpr double t = 0.9;
+  const Eigen::VectorXd lambda = Eigen::VectorXd::Constant(1, 2.5);
+  for (const double psi : {0.9, 0.9 + 0.2, 0.9 - 0.5}) {
+    const Eigen::Matrix3d r_b = Eigen::AngleAxisd(psi, kAxis).toRotationMatrix()  *
+                                Eigen::AngleAxisd(0.1 * psi, kAxis.unitOrthogonal()).toRotationMatrix();
+    const Eigen::VectorXd q_joint = frames(Eigen::Matrix3d::Identity(), r_b);
+    const Eigen::VectorXd q_b = q_joint.tail(9);
+    Eigen::VectorXd value_g(1), value_j(1);
+    Eigen::MatrixXd jacobian_g(1, 9), jacobian_j(1, 18);
+    grounded.evaluate(q_b, t, value_g, jacobian_g);
+    joint.evaluate(q_joint, t, value_j, jacobian_j);
+    EXPECT_NEAR(value_g[0], value_j[0], kRoundOff) << psi;
+    EXPECT_LT((jacobian_g - jacobian_j.rightCols(9)).cwiseAbs().maxCoeff(), kRoundOff) << psi;
+    EXPECT_NEAR(grounded.effort(q_b, t, lambda), joint.effort(q_joint, t, lambda), kRoundOff) << psi;
+  }
+  const Eigen::Matrix3d at_s = Eigen::AngleAxisd(t, kAxis).toRotationMatrix();
+  EXPECT_NEAR(phi(grounded, frames(Eigen::Matrix3d::Identity(), at_s).tail(9), t), 0.0, kRoundOff);
+  EXPECT_NEAR(grounded.effort(frames(Eigen::Matrix3d::Identity(), at_s).tail(9), t, lambda), -2.5, kRoundOff);
+
+  const DrivenRevolute planar({}, {0}, Eigen::Vector3d::UnitZ(), angle_equal_to_time(), "g");
+  const Eigen::VectorXd theta = Eigen::VectorXd::Constant(1, 0.4);
+  EXPECT_NEAR(phi(planar, theta, 0.4), 0.0, kRoundOff);
+  EXPECT_NEAR(phi(planar, theta, 0.1), 0.3, kRoundOff);
+  EXPECT_NEAR(planar.effort(theta, 0.4, lambda), -2.5, kRoundOff);
+}
+
 TEST(PinJoint, KeepsPositionsAndTheAxisAndLeavesTheRotationAboutItFree) {
   Eigen::VectorXd q = Eigen::VectorXd::Zero(24);
   q.head(6) << 0.1, 0.2, 0.3, 0.1, 0.2, 0.3;  // x_A = x_B

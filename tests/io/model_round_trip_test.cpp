@@ -9,6 +9,7 @@
 
 #include "deploydyn/io/model_loader.hpp"
 #include "deploydyn/io/model_writer.hpp"
+#include "deploydyn/model/hinge_to_ground_driver.hpp"
 
 namespace deploydyn {
 namespace DEPLOYDYN_FILE_SCOPE {
@@ -183,6 +184,7 @@ void expect_equal_models(const Model& a, const Model& b) {
         break;
       case Driver::Kind::revolute:
         EXPECT_EQ(x.joint, y.joint);
+        if (drives_hinge_to_ground(x)) EXPECT_EQ(x.node, y.node);
         break;
       case Driver::Kind::hinge_angle:
         EXPECT_EQ(x.hinge_nodes, y.hinge_nodes);
@@ -363,6 +365,33 @@ joints:
   lug: {type: ball, nodes: [B, C], offsets: [[0, 0, 0.1], [0, 0, 0]]}
   end: {type: ball, nodes: [D, E]}
 )", "3D ball joints and offsets"));
+  // Revolute drivers at hinges to ground, 2D and 3D, beside one on a pin.
+  const Model plane = load_model_from_string(R"(
+nodes: {A: [0, 0], B: [1, 0]}
+materials: {steel: {E: 2.0e11, density: 7850}}
+elements: {ab: {type: beam, nodes: [A, B], area: 1.0e-4, inertia_z: 1.0e-8, material: steel}}
+supports: [{node: A, fix: [x, y]}]
+drivers: {crank: {type: revolute, support: A, profile: 0.2, torque_limit: 50}}
+)", "2D grounded revolute");
+  ASSERT_TRUE(drives_hinge_to_ground(plane.drivers[0]));
+  ASSERT_EQ(hinge_to_ground_support(plane, plane.drivers[0]), 0);
+  expect_round_trip(plane);
+  const Model space = load_model_from_string(R"(
+nodes: {G: [-1, 0, 0], A: [0, 0, 0], B: [1, 0, 0], C: [1, 0, 0], D: [2, 0, 0]}
+materials: {steel: {E: 2.0e11, density: 7800}}
+elements:
+  b1: {type: beam, nodes: [A, B], material: steel, area: 1.0e-4, inertia_y: 1.0e-8, inertia_z: 1.0e-8, torsion: 2.0e-8}
+  b2: {type: beam, nodes: [C, D], material: steel, area: 1.0e-4, inertia_y: 1.0e-8, inertia_z: 1.0e-8, torsion: 2.0e-8}
+  bar: {nodes: [G, A], material: steel, area: 1.0e-4}
+supports: [{node: G}, {node: A, axis: [0, 0.6, 0.8]}]
+joints: {hinge: {type: pin, nodes: [B, C], axis: [0, 0, 1]}}
+drivers:
+  base: {type: revolute, support: A, reading: angle, profile: {type: smooth_step, t0: 0, v0: 0, t1: 1, v1: 0.5}}
+  elbow: {type: revolute, joint: hinge, profile: 0.1}
+)", "3D grounded revolute");
+  ASSERT_EQ(hinge_to_ground_support(space, space.drivers[0]), 1);
+  ASSERT_FALSE(drives_hinge_to_ground(space.drivers[1]));
+  expect_round_trip(space);
 }
 
 // Environments: an orbit with eclipses, a ground site at a local time with turned axes; the

@@ -18,6 +18,7 @@
 #include "deploydyn/constraints/prescribed_coordinates.hpp"
 #include "deploydyn/elements/beam/beam3d_group.hpp"
 #include "deploydyn/elements/element_kinds.hpp"
+#include "deploydyn/model/hinge_to_ground_driver.hpp"
 
 namespace deploydyn {
 namespace {
@@ -166,6 +167,19 @@ std::unique_ptr<Constraint> make_driver(const Driver& driver, const Model& model
           motion);
     }
     case Driver::Kind::revolute: {
+      if (drives_hinge_to_ground(driver)) {
+        // A hinge to ground: the ground frame is A (constraints/driven_revolute.hpp).
+        const FixedNode& support = model.supports[static_cast<std::size_t>(hinge_to_ground_support(model, driver))];
+        std::vector<int> rotation = rotation_dofs(support.node, model, dofs);
+        if (rotation.empty()) {
+          throw std::invalid_argument(label + ": revolute at the support of node " +
+                                      model.nodes[support.node].name + ", which carries no rotation");
+        }
+        return std::make_unique<DrivenRevolute>(std::vector<int>{}, std::move(rotation),
+                                                support.axis.value_or(Eigen::Vector3d::UnitZ()), motion,
+                                                label + " (revolute at the support of " +
+                                                    model.nodes[support.node].name + ")");
+      }
       const Joint& joint = model.joints[driver.joint];
       const auto [a, b] = joint.nodes;
       std::vector<int> rotation_a = rotation_dofs(a, model, dofs), rotation_b = rotation_dofs(b, model, dofs);

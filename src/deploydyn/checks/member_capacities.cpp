@@ -1,5 +1,7 @@
 #include "deploydyn/checks/member_capacities.hpp"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <numbers>
 
@@ -25,6 +27,7 @@ MaterialLaw youngs_law(const Model& model, int material) {
 struct ElementData {
   CheckedElement checked;
   double least_bending_stiffness_Nm2 = 0.0;
+  std::array<double, 2> bending_stiffness_Nm2{};  // 3D beams: E I_y, E I_z
   double length_m = 0.0;
 };
 
@@ -54,6 +57,8 @@ ElementData element_data(const Model& model, MemberKind kind, int index) {
       const double least_inertia =
           beam.inertia_y_m4 > 0.0 ? std::min(beam.inertia_y_m4, beam.inertia_z_m4) : beam.inertia_z_m4;
       d.least_bending_stiffness_Nm2 = modulus_of(model, beam.material) * least_inertia;
+      d.bending_stiffness_Nm2 = {modulus_of(model, beam.material) * beam.inertia_y_m4,
+                                 modulus_of(model, beam.material) * beam.inertia_z_m4};
       d.checked.temperature_change_C = &beam.temperature_change_C;
       d.checked.law = youngs_law(model, beam.material);
       d.length_m = beam.reference_length_m;
@@ -70,29 +75,65 @@ ElementData element_data(const Model& model, MemberKind kind, int index) {
   return d;
 }
 
-CheckedMember checked_member(const Model& model, const BucklingLengths& lengths, std::string name, MemberKind kind,
-                             const std::vector<int>& elements, std::optional<double> given_factor) {
-  CheckedMember member;
-  member.name = std::move(name);
-  member.kind = kind;
-  if (kind != MemberKind::cable) {
-    BucklingLength length = lengths.of(kind, elements, given_factor);
-    member.buckling_length_factor = length.factor;
-    member.buckling_length_source = std::move(length.source);
+double euler_load_N(double bending_stiffness_Nm2, double factor, double length_m) {
+  const double buckling_length_m = factor * length_m;
+  return std::numbers::pi * std::numbers::pi * bending_stiffness_Nm2 / (buckling_length_m * buckling_length_m);
+}
+
+// A 3D beam member buckles about the axis of the lower Euler load, each axis with its own K and
+// least EI (docs/theory.md, "Buckling length from the end conditions", V1a).
+void set_per_axis_buckling(const BucklingLengths& lengths, const Member& given, const std::array<double, 2>& stiffness_Nm2,
+                           CheckedMember& member) {
+  const std::array<BucklingLength, 2> about = lengths.of_axes(given.elements, given.buckling_length_factor);
+  std::array<double, 2> load_N{0.0, 0.0};
+  for (std::size_t k = 0; k < 2; ++k) {
+    if (about[k].factor && stiffness_Nm2[k] > 0.0) load_N[k] = euler_load_N(stiffness_Nm2[k], *about[k].factor, member.length_m);
   }
+  const std::size_t governing = load_N[1] < load_N[0] ? 1 : 0;
+  const bool defined = about[0].factor && about[1].factor && load_N[0] > 0.0 && load_N[1] > 0.0;
+  member.critical_force_N = defined ? load_N[governing] : 0.0;
+  if (about[0].factor == about[1].factor && about[0].source == about[1].source) {
+    member.buckling_length_factor = about[0].factor;
+    member.buckling_length_source = about[0].source;
+    return;
+  }
+  member.buckling_length_factors = std::array{about[0].factor, about[1].factor};
+  member.buckling_length_factor = defined ? about[governing].factor : std::nullopt;
+  member.buckling_length_source =
+      about[0].source == about[1].source
+          ? about[0].source
+          : fmt::format("about y: {}; about z: {}", about[0].source, about[1].source);
+}
+
+CheckedMember checked_member(const Model& model, const BucklingLengths& lengths, const Member& given) {
+  const MemberKind kind = given.kind;
+  CheckedMember member;
+  member.name = given.name;
+  member.kind = kind;
   double least_bending_stiffness_Nm2 = -1.0;
-  for (const int e : elements) {
+  std::array<double, 2> least_per_axis_Nm2{-1.0, -1.0};
+  for (const int e : given.elements) {
     const ElementData d = element_data(model, kind, e);
     member.elements.push_back(d.checked);
     member.length_m += d.length_m;
     least_bending_stiffness_Nm2 = least_bending_stiffness_Nm2 < 0.0
                                       ? d.least_bending_stiffness_Nm2
                                       : std::min(least_bending_stiffness_Nm2, d.least_bending_stiffness_Nm2);
+    for (std::size_t k = 0; k < 2; ++k) {
+      least_per_axis_Nm2[k] = least_per_axis_Nm2[k] < 0.0 ? d.bending_stiffness_Nm2[k]
+                                                          : std::min(least_per_axis_Nm2[k], d.bending_stiffness_Nm2[k]);
+    }
   }
+  if (kind == MemberKind::cable) return member;
+  if (kind == MemberKind::beam && model.dimension == 3) {
+    set_per_axis_buckling(lengths, given, least_per_axis_Nm2, member);
+    return member;
+  }
+  BucklingLength length = lengths.of(kind, given.elements, given.buckling_length_factor);
+  member.buckling_length_factor = length.factor;
+  member.buckling_length_source = std::move(length.source);
   if (member.buckling_length_factor && least_bending_stiffness_Nm2 > 0.0) {
-    const double buckling_length_m = *member.buckling_length_factor * member.length_m;
-    member.critical_force_N =
-        std::numbers::pi * std::numbers::pi * least_bending_stiffness_Nm2 / (buckling_length_m * buckling_length_m);
+    member.critical_force_N = euler_load_N(least_bending_stiffness_Nm2, *member.buckling_length_factor, member.length_m);
   }
   return member;
 }
@@ -121,8 +162,7 @@ std::vector<CheckedMember> checked_members(const Model& model) {
     return kind == MemberKind::bar ? listed_bars : kind == MemberKind::beam ? listed_beams : listed_cables;
   };
   for (const Member& m : model.members) {
-    CheckedMember& member = members.emplace_back(
-        checked_member(model, lengths, m.name, m.kind, m.elements, m.buckling_length_factor));
+    CheckedMember& member = members.emplace_back(checked_member(model, lengths, m));
     member.listed = true;
     member.slack_forbidden = m.slack_forbidden;
     for (const int e : m.elements) listed_of(m.kind)[static_cast<std::size_t>(e)] = 1;
@@ -132,8 +172,9 @@ std::vector<CheckedMember> checked_members(const Model& model) {
     for (std::size_t e = 0; e < listed.size(); ++e) {
       if (listed[e] != 0) continue;
       const int index = static_cast<int>(e);
-      members.push_back(checked_member(model, lengths, member_element_name(model, kind, index), kind, {index},
-                                       std::nullopt));
+      members.push_back(checked_member(model, lengths, Member{.name = member_element_name(model, kind, index),
+                                                               .kind = kind,
+                                                               .elements = {index}}));
     }
   }
   return members;

@@ -4,6 +4,7 @@
 // (docs/theory.md, "Member checks and the verdict"). A check runs on a member only when its
 // capacity is known (has_capacity); the others are reported as not checked.
 
+#include <array>
 #include <optional>
 #include <string>
 #include <vector>
@@ -45,8 +46,12 @@ struct CheckedMember {
   // pinned–free or free–free beam member, which is not checked for buckling.
   std::optional<double> buckling_length_factor;
   std::string buckling_length_source;  // where K comes from: "given", "clamped–pinned ends", ...
+  // 3D beam members whose K differs per local axis: [K_y, K_z] (either empty: undefined about
+  // that axis); then K above is the governing axis's, the one of the lower Euler load.
+  std::optional<std::array<std::optional<double>, 2>> buckling_length_factors;
   // N_cr = π² (EI)_min / (K L)² at E(T_ref) (the checks scale it by E(T)/E(T_ref)) about the weak axis, the least EI of its elements (V1); 0 when
   // an element's I is not known (a bar without `inertia` or `section`) or K is undefined.
+  // 3D beam members: the lower of π² (EI_y)_min / (K_y L)² and π² (EI_z)_min / (K_z L)² (V1a).
   double critical_force_N = 0.0;
   bool slack_forbidden = false;  // cables
 };

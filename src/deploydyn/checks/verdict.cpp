@@ -170,7 +170,8 @@ Verdict make_verdict(const Model& model, const MemberChecks& checks, const RunRe
     const int m = static_cast<int>(i);
     const CheckedMember& member = members[i];
     MemberUtilization utilization{member.name, std::string(kMemberKinds.name(member.kind)), "", 0.0,
-                                  member.buckling_length_factor, member.buckling_length_source, {}};
+                                  member.buckling_length_factor, member.buckling_length_source, {},
+                                  member.buckling_length_factors};
     for (const CheckKind kind : checks_of(member.kind)) {
       CheckOverview& o = overview(kind);
       o.applies = true;
@@ -399,6 +400,11 @@ ordered_json verdict_json(const Verdict& v) {
     if (!m.buckling_length_source.empty()) {
       entry["buckling_length_factor"] = m.buckling_length_factor ? ordered_json(*m.buckling_length_factor) : ordered_json(nullptr);
       entry["buckling_length_source"] = m.buckling_length_source;
+      if (m.buckling_length_factors) {
+        ordered_json per_axis = ordered_json::array();
+        for (const std::optional<double>& k : *m.buckling_length_factors) per_axis.push_back(k ? ordered_json(*k) : ordered_json(nullptr));
+        entry["buckling_length_factors"] = per_axis;  // [K_y, K_z]
+      }
     }
     for (const MemberUtilization::Entry& e : m.checks) entry[name(e.check)] = history_json(e.history, e.element);
     members[m.name] = entry;

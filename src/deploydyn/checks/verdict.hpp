@@ -93,6 +93,8 @@ struct MemberUtilization {
     std::string element;
   };
   std::vector<Entry> checks;
+  // 3D beam members whose K differs per local axis: [K_y, K_z] (CheckedMember).
+  std::optional<std::array<std::optional<double>, 2>> buckling_length_factors;
 };
 
 struct Verdict {

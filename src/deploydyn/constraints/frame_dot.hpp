@@ -20,17 +20,26 @@ inline Eigen::Matrix3d frame(const Eigen::VectorXd& x, std::span<const int> dofs
   return r;
 }
 
+// The R_B part of the gradient row, columns [first_b, first_b + 9): all of it when A is the
+// ground (R_A fixed).
+template <class Row>
+void gradient_b(const Eigen::Matrix3d& r_a, const Eigen::Vector3d& p, const Eigen::Vector3d& r, int first_b,
+                Row&& row) {
+  const Eigen::Vector3d a_p = r_a * p;
+  for (int m = 0; m < 3; ++m) {
+    for (int l = 0; l < 3; ++l) row(first_b + 3 * m + l) = r[l] * a_p[m];
+  }
+}
+
 // Gradient row: columns [first_a, first_a + 9) for R_A and [first_b, first_b + 9) for R_B.
 template <class Row>
 void gradient(const Eigen::Matrix3d& r_a, const Eigen::Matrix3d& r_b, const Eigen::Vector3d& p,
               const Eigen::Vector3d& r, int first_a, int first_b, Row&& row) {
-  const Eigen::Vector3d a_p = r_a * p, b_r = r_b * r;
+  const Eigen::Vector3d b_r = r_b * r;
   for (int m = 0; m < 3; ++m) {
-    for (int j = 0; j < 3; ++j) {
-      row(first_a + 3 * m + j) = p[j] * b_r[m];
-      row(first_b + 3 * m + j) = r[j] * a_p[m];
-    }
+    for (int j = 0; j < 3; ++j) row(first_a + 3 * m + j) = p[j] * b_r[m];
   }
+  gradient_b(r_a, p, r, first_b, row);
 }
 
 // Adds weight · ∂²/∂R² into the local Hessian (both off-diagonal blocks).

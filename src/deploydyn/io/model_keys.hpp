@@ -47,8 +47,8 @@ inline constexpr std::array<std::string_view, 7> kBarAngleDriver{"type", "elemen
                                                                   "profile", "reading", "torque_limit"};
 inline constexpr std::array<std::string_view, 6> kHingeAngleDriver{"type", "nodes", "axis", "profile",
                                                                    "reading", "torque_limit"};
-inline constexpr std::array<std::string_view, 5> kRevoluteDriver{"type", "joint", "profile", "reading",
-                                                                 "torque_limit"};
+inline constexpr std::array<std::string_view, 6> kRevoluteDriver{"type", "joint", "support", "profile",
+                                                                 "reading", "torque_limit"};
 inline constexpr std::array<std::string_view, 6> kCoordinateDriver{"type", "node", "direction",
                                                                    "profile", "reading", "force_limit"};
 inline constexpr std::array<std::string_view, 5> kLengthDriver{"type", "nodes", "profile", "reading",

@@ -25,6 +25,7 @@
 #include "deploydyn/io/text_file.hpp"
 #include "deploydyn/io/yaml_reader.hpp"
 #include "deploydyn/model/dof_map.hpp"
+#include "deploydyn/model/hinge_to_ground_driver.hpp"
 #include "deploydyn/model/material_law.hpp"
 
 #include "deploydyn/results/history_layout.hpp"
@@ -1207,6 +1208,21 @@ class ModelReader {
 
   void read_revolute(const YamlValue& spec, Driver& driver) const {
     spec.expect_keys(model_keys::kRevoluteDriver);
+    const auto support = spec.find("support");
+    if (support && spec.find("joint")) {
+      support->fail("the driver also names a joint; give either 'joint' (a pin between two nodes) or 'support' "
+                    "(a node's hinge to ground)");
+    }
+    if (support) {
+      driver.joint = kHingeToGround;
+      driver.node = hinge_to_ground_node(*support);
+      driver.reading = reading(spec, {"angular_velocity", "angle"});
+      return;
+    }
+    if (!spec.find("joint")) {
+      spec.fail_key("joint", "required: the pin joint to turn (or 'support': the node whose hinge to ground "
+                             "to turn)");
+    }
     const YamlValue joint_name = spec.at("joint");
     driver.joint = joints_.find(joint_name);
     const Joint& joint = model_.joints[static_cast<std::size_t>(driver.joint)];
@@ -1224,6 +1240,38 @@ class ModelReader {
       }
     }
     driver.reading = reading(spec, {"angular_velocity", "angle"});
+  }
+
+  // A revolute driver's `support` names the node of a hinge to ground: a support that leaves
+  // the node's rotation free about one axis (3D: its `axis`; 2D: rz not fixed).
+  int hinge_to_ground_node(const YamlValue& reference) const {
+    const int node = nodes_.find(reference);
+    const std::string& name = model_.nodes[static_cast<std::size_t>(node)].name;
+    const auto& supports = model_.supports;
+    const auto found = std::find_if(supports.begin(), supports.end(),
+                                    [&](const FixedNode& support) { return support.node == node; });
+    if (found == supports.end()) {
+      reference.fail(fmt::format("node '{}' has no support; a revolute driver turns a node about the axis "
+                                 "of its support (a hinge to ground: 'supports' {{node: {}, axis: [ax, ay, az]}})",
+                                 name, name));
+    }
+    if (!has_rotations(node)) {
+      reference.fail(fmt::format("node '{}' carries no rotation (only beam nodes do); a revolute driver turns "
+                                 "a node's frame",
+                                 name));
+    }
+    if (model_.dimension == 3 && !found->axis) {
+      reference.fail(fmt::format("the support of node '{}' holds no axis; a revolute driver turns the node "
+                                 "about its support's 'axis' (a hinge to ground)",
+                                 name));
+    }
+    if (found->rotation) {
+      reference.fail(fmt::format("the support of node '{}' fixes its rotation; a revolute driver needs a "
+                                 "hinge to ground ({})",
+                                 name, model_.dimension == 3 ? "'axis' in place of 'rotation'" :
+                                                               "drop 'rotation' from 'fix'"));
+    }
+    return node;
   }
 
   // A linear actuator between nodes A and B: their distance, from its initial value by the

@@ -2,6 +2,7 @@
 
 #include "deploydyn/elements/element_kinds.hpp"
 #include "deploydyn/model/dof_map.hpp"
+#include "deploydyn/model/hinge_to_ground_driver.hpp"
 #include "deploydyn/util/overloaded.hpp"
 #include "deploydyn/util/stop_point.hpp"
 
@@ -455,6 +456,11 @@ void emit_boundary_conditions(YAML::Emitter& out, const Model& model) {
           out << kAxisNames[static_cast<std::size_t>(driver.direction)];
           break;
         case Driver::Kind::revolute:
+          if (drives_hinge_to_ground(driver)) {
+            emit_key(out, "support");
+            out << model.nodes[driver.node].name;
+            break;
+          }
           emit_key(out, "joint");
           out << model.joints[static_cast<std::size_t>(driver.joint)].name;
           break;

@@ -2,6 +2,8 @@
 
 #include <algorithm>
 
+#include "deploydyn/model/hinge_to_ground_driver.hpp"
+
 namespace deploydyn {
 
 nlohmann::json node_markers(const Model& model) {
@@ -24,7 +26,8 @@ nlohmann::json node_markers(const Model& model) {
         drivers.push_back({d.node, d.name});
         break;
       case Driver::Kind::revolute:
-        drivers.push_back({model.joints[static_cast<std::size_t>(d.joint)].nodes[1], d.name});
+        drivers.push_back(
+            {drives_hinge_to_ground(d) ? d.node : model.joints[static_cast<std::size_t>(d.joint)].nodes[1], d.name});
         break;
       case Driver::Kind::hinge_angle:
         drivers.push_back({d.hinge_nodes[1], d.name});
