@@ -44,6 +44,7 @@ std::string text(const ordered_json& j) { return j.dump(2, ' ', false, ordered_j
 ordered_json origin_json(const WindowOrigin& origin, const char* status, const std::string& message) {
   return {{"model", origin.model_file},
           {"set", origin.overrides},
+          {"load", to_string(origin.options.load)},
           {"range", {origin.options.coldest_C, origin.options.hottest_C}},
           {"positions_asked", origin.options.n_positions},
           {"deployments_asked", origin.options.n_deployments},
@@ -60,11 +61,26 @@ std::string samples_csv(const WindowResult& window) {
   return csv;
 }
 
+// The model's own thermal load at μ = 1, t = 0: what a level of a `model` window multiplies.
+ordered_json pattern_json(const ThermalPattern& pattern) {
+  return {{"meaning", "every dT of this window is the scale μ of the model's thermal load; these are its values at μ = 1, t = 0 (°C)"},
+          {"coldest_axis_dT", pattern.coldest_axis_C},
+          {"coldest_axis_element", pattern.coldest_axis_element},
+          {"hottest_axis_dT", pattern.hottest_axis_C},
+          {"hottest_axis_element", pattern.hottest_axis_element},
+          {"largest_depth_difference", pattern.largest_depth_difference_C},
+          {"depth_difference_element", pattern.depth_difference_element},
+          {"varies_in_time", pattern.varies_in_time}};
+}
+
 std::string window_json(const WindowOrigin& origin, const WindowResult& window, double regime_step_C,
-                        const std::vector<Verdict>& verdicts) {
+                        const std::vector<Verdict>& verdicts, const ThermalPattern& pattern) {
   ordered_json j = origin_json(origin, window.stopped ? "interrupted" : "completed",
                                window.stopped ? "interrupted; the samples computed until then are kept" : "");
-  j["units"] = {{"dT", "°C"}, {"t", "s"}, {"eigenvalue", "N/m"}, {"force", "N"}};
+  const bool scaled = origin.options.load == WindowLoad::model;
+  // With the model's load every "dT" is the scale μ of its pattern (solvers/window_thermal_load.hpp).
+  j["units"] = {{"dT", scaled ? "1" : "°C"}, {"t", "s"}, {"eigenvalue", "N/m"}, {"force", "N"}};
+  if (scaled) j["pattern"] = pattern_json(pattern);
   j["positions"] = window.times_s;
   j["cold"] = side_json(window.cold);
   j["hot"] = side_json(window.hot);
@@ -103,6 +119,20 @@ WindowRun run_window(const Model& model, const WindowOrigin& origin, const std::
   }
   WindowOptions options = origin.options;
   validate(options);
+  const ThermalPattern pattern = thermal_pattern(model);
+  if (options.load == WindowLoad::model) {
+    if (model.environment) {
+      throw InputError(origin.model_file, 0, 0, "environment",
+                       "the window's `model` load scales the model's given ΔT and through-depth differences, and an "
+                       "environment's temperatures come from a run's heat balance: give them as dT tables, or take "
+                       "the `uniform` load");
+    }
+    if (pattern.empty()) {
+      throw InputError(origin.model_file, 0, 0, "thermal",
+                       "the window's `model` load scales the model's thermal load, and it has none (every dT and "
+                       "through-depth difference is 0): give one, or take the `uniform` load");
+    }
+  }
   WindowVerdicts deployment_verdicts(model);
   deployment_verdicts.watch(options);
   std::optional<WindowFolder> taken;
@@ -110,7 +140,7 @@ WindowRun run_window(const Model& model, const WindowOrigin& origin, const std::
   WindowRun run;
   run.window = deployability_window(model, options);
   run.verdicts = deployment_verdicts.verdicts(run.window);
-  run.json = window_json(origin, run.window, kWindowRegimeStep_C, run.verdicts);
+  run.json = window_json(origin, run.window, window_regime_step(options), run.verdicts, pattern);
   if (taken) taken->write(run.window, run.json);
   return run;
 }

@@ -2,9 +2,11 @@
 // The deployability window's result folder (solvers/deployability_window.hpp), owned as a
 // run's is (runs/result_folder.hpp): its lock for the whole computation, so that a second
 // window (or run) into it is refused; window.json saying "running" from the start; then
-//   window.csv   one row per sample: t (s), dT (°C), lowest_eigenvalue (N/m),
+//   window.csv   one row per sample: t (s), dT (°C; the scale μ with the model's load),
+//                lowest_eigenvalue (N/m),
 //                peak_axial_force (N), peak_mstrain, driver_effort (N·m or N)
-//   window.json  how it was made (the model file, its --set overrides, the ΔT range, the
+//   window.json  how it was made (the model file, its --set overrides, the load swept
+//                (uniform or model; with model, the pattern's values at μ = 1), the range, the
 //                positions and deployments asked for), its status (completed, interrupted or
 //                failed, with a message); per side (cold, hot): the range's end, the threshold
 //                (ΔT, its error bound, kind, driver time, description), the first event at
@@ -34,8 +36,13 @@ struct WindowOrigin {
   WindowOptions options;
 };
 
-// The regime table's ΔT interval in window.json (°C).
+// The regime table's ΔT interval in window.json (°C), and its interval of the scale μ with the
+// model's own load.
 inline constexpr double kWindowRegimeStep_C = 10.0;
+inline constexpr double kWindowRegimeScaleStep = 0.05;
+inline double window_regime_step(const WindowOptions& options) {
+  return options.load == WindowLoad::model ? kWindowRegimeScaleStep : kWindowRegimeStep_C;
+}
 
 // A window as `deploydyn window` and Python's Model.window compute it: the result, each
 // deployment's verdict, and window.json's text.

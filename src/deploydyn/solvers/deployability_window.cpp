@@ -10,23 +10,12 @@
 #include <unordered_set>
 
 #include "deploydyn/assembly/linear_system_factory.hpp"
-#include "deploydyn/elements/element_kinds.hpp"
 #include "deploydyn/solvers/static_solver.hpp"
 
 namespace deploydyn {
 namespace {
 
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
-
-// The model with the same uniform ΔT on every bar: what the path scales.
-Model with_uniform_temperature(const Model& model, double delta_t_C) {
-  Model uniform = model;
-  uniform.temperature_change_C = TimeFunction::constant(delta_t_C);
-  for (const ElementKind* kind : element_kinds()) {
-    kind->set_temperature_change(uniform, uniform.temperature_change_C);
-  }
-  return uniform;
-}
 
 // A point of a path at driver time `time_s`, with every ΔT of the model scaled by
 // `thermal_factor` (ΔT = thermal_factor × reach_C).
@@ -211,7 +200,7 @@ WindowResult deployability_window(const Model& model, const WindowOptions& optio
     if (side->reach_C == 0.0) continue;
     Side& s = sides.emplace_back();
     s.side = side;
-    s.model = std::make_unique<const Model>(with_uniform_temperature(model, side->reach_C));
+    s.model = std::make_unique<const Model>(with_window_load(model, options.load, side->reach_C));
     s.assembler = std::make_unique<Assembler>(*s.model);
     s.system = make_linear_system(*s.assembler);
   }
@@ -232,7 +221,7 @@ WindowResult deployability_window(const Model& model, const WindowOptions& optio
     }
     const double delta_t_C = n_levels == 1 ? options.coldest_C
                                            : options.coldest_C + (options.hottest_C - options.coldest_C) * j / (n_levels - 1);
-    const Model heated = with_uniform_temperature(model, delta_t_C);
+    const Model heated = with_window_load(model, options.load, delta_t_C);
     const Assembler assembler(heated);
     const auto system = make_linear_system(assembler);
     RecordSink* sink = options.deployment_sink ? options.deployment_sink(j) : nullptr;

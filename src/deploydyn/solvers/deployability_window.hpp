@@ -1,7 +1,8 @@
 #pragma once
-// The deployability window: over a range of uniform temperature changes, where along its
-// deployment a structure stays stress-free, becomes stressed, jams or snaps
-// (docs/theory.md, "The deployability window").
+// The deployability window: over a range of thermal load levels, where along its deployment a
+// structure stays stress-free, becomes stressed, jams or snaps (docs/theory.md, "The
+// deployability window"). The level is a uniform ΔT (°C), or a scale μ of the model's own
+// thermal load (solvers/window_thermal_load.hpp); "ΔT" below is that level.
 //
 // At each of n driver positions (times t_k spread over the analysis, the drivers stopped
 // there), the structure is brought to its stress-free equilibrium at ΔT = 0, then its static
@@ -30,11 +31,15 @@
 #include "deploydyn/model/model.hpp"
 #include "deploydyn/solvers/continuation.hpp"
 #include "deploydyn/solvers/step_record.hpp"
+#include "deploydyn/solvers/window_thermal_load.hpp"
 
 namespace deploydyn {
 
 struct WindowOptions {
-  double coldest_C = -200.0;  // ΔT range (°C): coldest < 0 < hottest, or one side only
+  WindowLoad load = WindowLoad::uniform;
+  // The range of levels: ΔT (°C) for a uniform load, the scale μ (1) for the model's;
+  // coldest < 0 < hottest, or one side only.
+  double coldest_C = -200.0;
   double hottest_C = 200.0;
   int n_positions = 21;       // driver positions t_k = k·end/(n − 1)
   int n_deployments = 9;      // ΔT levels deployed, evenly over [coldest, hottest]; 0: none
