@@ -71,8 +71,21 @@ std::string deployment_line(const WindowDeployment& d, const Level& level) {
   } else if (!d.failure.empty()) {
     return line + " (" + d.failure + ")";
   }
-  return line + fmt::format("; peak |axial force| {:.4g} N, peak driver effort {:.4g}", d.peak_axial_force_N,
-                            d.peak_driver_effort);
+  if (d.stop && d.stop->time_s == 0.0) {
+    line += fmt::format(" (the branch traced from {} = 0 ends at {:+.6g}{})", level.name, d.stop->delta_t_C, level.unit);
+  } else {
+    line += fmt::format("; peak |axial force| {:.4g} N, peak driver effort {:.4g}", d.peak_axial_force_N,
+                        d.peak_driver_effort);
+  }
+  if (!d.stressed) return line;
+  const WindowStressedState& s = *d.stressed;
+  if (!s.failure.empty()) return line + "\n      stressed branch not found: " + s.failure;
+  // The peaks above are the traced branch's; the structure sits on the stressed one.
+  return line + fmt::format("\n      on the stressed branch at t = {:g} s: |axial force| up to {:.4g} N, |mechanical "
+                            "strain| up to {:.4g}, driver effort {:.4g}, {}",
+                            s.sample.time_s, s.sample.peak_axial_force_N, s.sample.peak_mechanical_strain,
+                            s.sample.driver_effort,
+                            s.n_negative < 0 ? "stability not computed" : s.n_negative == 0 ? "stable" : "unstable");
 }
 
 }  // namespace

@@ -683,9 +683,10 @@ py::dict window_of(const LoadedModel& loaded, const std::string& model_file, std
   origin.options.stop = watch.flag();
   const WindowRun run = watch.run([&] { return run_window(loaded.model, origin, folder.value_or(std::filesystem::path())); });
   py::dict samples;
+  const std::vector<WindowSample> rows = window_rows(run.window);
   const auto column = [&](const char* name, double WindowSample::*member) {
     std::vector<double> values;
-    for (const WindowSample& s : run.window.samples) values.push_back(s.*member);
+    for (const WindowSample& s : rows) values.push_back(s.*member);
     samples[name] = py::array_t<double>(static_cast<py::ssize_t>(values.size()), values.data());
   };
   column("t", &WindowSample::time_s);
@@ -694,6 +695,9 @@ py::dict window_of(const LoadedModel& loaded, const std::string& model_file, std
   column("peak_axial_force", &WindowSample::peak_axial_force_N);
   column("peak_mstrain", &WindowSample::peak_mechanical_strain);
   column("driver_effort", &WindowSample::driver_effort);
+  std::vector<std::string> branches;
+  for (const WindowSample& s : rows) branches.emplace_back(window_branch(s));
+  samples["branch"] = branches;
   py::dict out;
   out["json"] = run.json;
   out["samples"] = samples;

@@ -239,10 +239,11 @@ class Model:
         window.json are written into that folder as the command's --out writes them. Returns
         window.json's content as a dict ("cold" and "hot": "reach", "threshold" {dT, dT_error,
         kind, t, description} or None, the first event per position in "edges"; "regimes" every
-        10 °C or 0.05 of μ; "deployments" with their "verdict"; "status") and "samples":
-        window.csv's columns as numpy arrays ("t", "dT", "lowest_eigenvalue",
-        "peak_axial_force", "peak_mstrain", "driver_effort"). stop: a threading.Event as for
-        run; once set, the window ends "interrupted" with what it has."""
+        10 °C or 0.05 of μ; "deployments" with their "verdict" and, where one jams, "stressed":
+        the stressed equilibrium it sits on instead; "status") and "samples": window.csv's
+        columns as numpy arrays ("t", "dT", "lowest_eigenvalue", "peak_axial_force",
+        "peak_mstrain", "driver_effort", and "branch": "traced" or "stressed"). stop: a
+        threading.Event as for run; once set, the window ends "interrupted" with what it has."""
         where = "Model.window"
         if load not in ("uniform", "model"):
             raise ValueError(f"{where}: load must be 'uniform' or 'model', not {checked.shown(load)}")

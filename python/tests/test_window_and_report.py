@@ -27,9 +27,16 @@ def test_window_gives_what_the_command_gives(tmp_path):
     assert window["hot"]["threshold"] is None
     assert [d["regime"] for d in window["deployments"]] == ["jams", "stress-free", "stress-free"]
     assert window["deployments"][0]["verdict"]["deploys"] is False
-    table = np.loadtxt(tmp_path / "cli" / "window.csv", delimiter=",", skiprows=1)
+    table = np.loadtxt(tmp_path / "cli" / "window.csv", delimiter=",", skiprows=1, usecols=range(6))
     for i, name in enumerate(("t", "dT", "lowest_eigenvalue", "peak_axial_force", "peak_mstrain", "driver_effort")):
         np.testing.assert_allclose(window["samples"][name], table[:, i], rtol=1e-15, atol=0, err_msg=name)
+    branches = np.loadtxt(tmp_path / "cli" / "window.csv", delimiter=",", skiprows=1, usecols=6, dtype=str)
+    assert list(window["samples"]["branch"]) == list(branches)
+    # The −170 °C level cannot start: its stressed equilibrium is the last row, pulled straight.
+    assert branches[-1] == "stressed" and list(branches[:-1]) == ["traced"] * (len(branches) - 1)
+    stressed = window["deployments"][0]["stressed"]
+    assert stressed["peak_mstrain"] == pytest.approx(652e-6, abs=1e-6)
+    assert abs(stressed["driver_effort"]) == pytest.approx(62.8, abs=0.05)
 
 
 def test_window_of_a_model_with_overrides_records_them():

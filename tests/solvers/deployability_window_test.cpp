@@ -10,6 +10,8 @@
 
 #include <fmt/format.h>
 
+#include <Eigen/Dense>
+#include <algorithm>
 #include <cmath>
 #include <nlohmann/json.hpp>
 
@@ -17,6 +19,7 @@
 #include "deploydyn/io/model_loader.hpp"
 #include "deploydyn/solvers/static_solver.hpp"
 #include "support/cli.hpp"
+#include "support/csv_table.hpp"
 
 namespace deploydyn {
 namespace DEPLOYDYN_FILE_SCOPE {
@@ -261,6 +264,77 @@ TEST(WindowThermalLoad, TheModelLoadRefusesAnEnvironment) {
   EXPECT_THROW(with_window_load(model, WindowLoad::model, 1.0), std::invalid_argument);
 }
 
+// The cold parallel linkage below its jam cannot start; it sits on its stressed branch instead:
+// pulled straight. Node B, held by bars 1 and 2 only, lies on the line A–C (bars 1 and 2 carry
+// one tension N), and C, on the driven bar's ray D + r e_γ, balances along that ray: bar 3
+// carries N (u_CA · e_γ). With Green strains, N_i = E A ε_m,i l_i / L_i and
+// ε_m,i = (l_i² − L_i²) / (2 L_i²) − α ΔT, compatibility l_1 + l_2 = |C(r)|, l_3 = r closes it:
+// three equations in l_1, l_2, r, solved here by Newton on finite differences.
+struct PulledStraight {
+  double force_12_N, force_3_N, mechanical_strain_max, torque_Nm;
+};
+
+PulledStraight pulled_straight(double delta_t_C) {
+  constexpr double kEA_N = 1.5e11 * 4.64e-5, kAlpha = 2.0e-5, kGamma = 5.0 * M_PI / 180.0;
+  constexpr double kL1 = 0.288, kL2 = 0.357, kL3 = 0.288;
+  const Eigen::Vector2d d(0.357, 0.0), e(std::cos(kGamma), std::sin(kGamma)), normal(-e.y(), e.x());
+  const auto strain = [&](double l, double L) { return (l * l - L * L) / (2.0 * L * L) - kAlpha * delta_t_C; };
+  const auto force = [&](double l, double L) { return kEA_N * strain(l, L) * l / L; };
+  const auto residual = [&](const Eigen::Vector3d& x) {
+    const Eigen::Vector2d c = d + x[2] * e;
+    const Eigen::Vector2d towards_a = -c.normalized();
+    return Eigen::Vector3d(x[0] + x[1] - c.norm(), (force(x[0], kL1) - force(x[1], kL2)) / kEA_N,
+                           (force(x[2], kL3) - force(x[1], kL2) * towards_a.dot(e)) / kEA_N);
+  };
+  Eigen::Vector3d x(kL1, kL2, kL3);
+  for (int iteration = 0; iteration < 30; ++iteration) {
+    Eigen::Matrix3d jacobian;
+    for (int k = 0; k < 3; ++k) {
+      Eigen::Vector3d step = Eigen::Vector3d::Zero();
+      step[k] = 1e-7;
+      jacobian.col(k) = (residual(x + step) - residual(x - step)) / 2e-7;
+    }
+    x -= jacobian.fullPivLu().solve(residual(x));
+  }
+  EXPECT_LT(residual(x).norm(), 1e-13);
+  const Eigen::Vector2d c = d + x[2] * e;
+  const double n = force(x[1], kL2);
+  return {n, force(x[2], kL3),
+          std::max({std::abs(strain(x[0], kL1)), std::abs(strain(x[1], kL2)), std::abs(strain(x[2], kL3))}),
+          std::abs(n * (-c.normalized()).dot(normal)) * x[2]};
+}
+
+TEST(DeployabilityWindow, AColdLevelThatCannotStartSitsOnThePulledStraightBranch) {
+  const Model model = load_model(example_path("parallel.yaml"));
+  WindowOptions options;
+  options.coldest_C = -170.0;
+  options.hottest_C = 0.0;
+  options.n_positions = 1;
+  options.n_deployments = 1;  // the coldest level alone
+  const WindowResult window = deployability_window(model, options);
+  ASSERT_EQ(window.deployments.size(), 1u);
+  const WindowDeployment& d = window.deployments.front();
+  ASSERT_EQ(d.regime(), "jams");
+  EXPECT_EQ(d.peak_axial_force_N, 0.0) << "no point of the traced branch at the level";
+  ASSERT_TRUE(d.stressed.has_value());
+  const WindowStressedState& stressed = *d.stressed;
+  ASSERT_TRUE(stressed.failure.empty()) << stressed.failure;
+  const PulledStraight exact = pulled_straight(-170.0);
+  EXPECT_EQ(stressed.sample.time_s, 0.0);
+  EXPECT_EQ(stressed.sample.delta_t_C, -170.0);
+  EXPECT_TRUE(stressed.sample.stressed_branch);
+  // Newton's force tolerance, 1e-8 of the largest force term, leaves ~1e-8 relative.
+  ASSERT_EQ(stressed.axial_forces_N.size(), 3u);
+  EXPECT_NEAR(stressed.axial_forces_N[0], exact.force_12_N, 1e-6 * std::abs(exact.force_12_N));
+  EXPECT_NEAR(stressed.axial_forces_N[1], exact.force_12_N, 1e-6 * std::abs(exact.force_12_N));
+  EXPECT_NEAR(stressed.axial_forces_N[2], exact.force_3_N, 1e-6 * std::abs(exact.force_3_N));
+  EXPECT_NEAR(stressed.sample.peak_mechanical_strain, exact.mechanical_strain_max, 1e-6 * exact.mechanical_strain_max);
+  EXPECT_NEAR(std::abs(stressed.sample.driver_effort), exact.torque_Nm, 1e-6 * exact.torque_Nm);
+  EXPECT_GT(stressed.sample.lowest_eigenvalue_N_m, 0.0) << "a stable equilibrium";
+  EXPECT_EQ(stressed.n_negative, 0);
+}
+
+
 TEST(DeployabilityWindow, RangesWithoutZeroAreRejected) {
   WindowOptions options;
   options.coldest_C = 10.0;
@@ -323,6 +397,36 @@ TEST(WindowCommand, LoadOptionsThatDoNotFitExitWithTwo) {
     EXPECT_EQ(outcome.exit_code, 2) << arguments << ": " << outcome.output;
     EXPECT_NE(outcome.output.find(message), std::string::npos) << arguments << ": " << outcome.output;
   }
+}
+
+// The dynamic −170 °C run starts where the window's stressed branch is: its initial
+// equilibrium at t = 0 (docs/paper-study.md: 652 µε, 62.8 N·m).
+TEST(WindowCommand, TheStressedBranchIsWhereTheColdDynamicRunStarts) {
+  const ScratchFolder folder("window_command_stressed_branch");
+  const std::string model = example_path("parallel.yaml");
+  const auto window_run = run_cli("window " + model + " --dT -170:0 --positions 1 --deployments 1 --out " +
+                                  (folder.path() / "window").string());
+  ASSERT_EQ(window_run.exit_code, 0) << window_run.output;
+  EXPECT_NE(window_run.output.find("on the stressed branch at t = 0 s"), std::string::npos) << window_run.output;
+  const auto run = run_cli("run " + model + " --quiet --set thermal.dT=-170 --set analysis.end=0.002 --out " +
+                           (folder.path() / "run").string());
+  ASSERT_EQ(run.exit_code, 0) << run.output;
+  const nlohmann::json window = nlohmann::json::parse(read_text(folder.path() / "window" / "window.json"));
+  const nlohmann::json& stressed = window["deployments"][0]["stressed"];
+  ASSERT_TRUE(stressed.is_object()) << window["deployments"][0].dump();
+  EXPECT_EQ(stressed["branch"], "stressed");
+  const testing::CsvTable history = testing::read_csv_table(folder.path() / "run" / "history.csv");
+  for (const char* bar : {"1", "2", "3"}) {
+    const double force_N = history.at(0, std::string("force.") + bar);
+    EXPECT_NEAR(stressed["axial_forces"][bar].get<double>(), force_N, 1e-6 * std::abs(force_N)) << bar;
+  }
+  const double torque_Nm = history.at(0, "torque.motor");
+  EXPECT_NEAR(stressed["driver_effort"].get<double>(), torque_Nm, 1e-6 * std::abs(torque_Nm));
+  EXPECT_NEAR(stressed["peak_mstrain"].get<double>(), 652e-6, 1e-6);
+  EXPECT_NEAR(std::abs(torque_Nm), 62.8, 0.05);
+  const std::string csv = read_text(folder.path() / "window" / "window.csv");
+  EXPECT_EQ(csv.substr(0, csv.find('\n')), "t,dT,lowest_eigenvalue,peak_axial_force,peak_mstrain,driver_effort,branch");
+  EXPECT_NE(csv.find(",stressed\n"), std::string::npos);
 }
 
 }  // namespace

@@ -9,6 +9,7 @@
 #include <utility>
 
 #include "deploydyn/checks/window_verdicts.hpp"
+#include "deploydyn/elements/element_kinds.hpp"
 #include "deploydyn/io/input_error.hpp"
 #include "deploydyn/output/checked_file.hpp"
 #include "deploydyn/output/output_error.hpp"
@@ -53,12 +54,32 @@ ordered_json origin_json(const WindowOrigin& origin, const char* status, const s
 }
 
 std::string samples_csv(const WindowResult& window) {
-  std::string csv = "t,dT,lowest_eigenvalue,peak_axial_force,peak_mstrain,driver_effort\n";
-  for (const WindowSample& s : window.samples) {
-    csv += fmt::format("{},{},{},{},{},{}\n", s.time_s, s.delta_t_C, s.lowest_eigenvalue_N_m,
-                       s.peak_axial_force_N, s.peak_mechanical_strain, s.driver_effort);
+  std::string csv = "t,dT,lowest_eigenvalue,peak_axial_force,peak_mstrain,driver_effort,branch\n";
+  for (const WindowSample& s : window_rows(window)) {
+    csv += fmt::format("{},{},{},{},{},{},{}\n", s.time_s, s.delta_t_C, s.lowest_eigenvalue_N_m,
+                       s.peak_axial_force_N, s.peak_mechanical_strain, s.driver_effort, window_branch(s));
   }
   return csv;
+}
+
+// A deployment's stressed equilibrium where it jams (WindowStressedState), its forces by element.
+ordered_json stressed_json(const Model& model, const std::optional<WindowStressedState>& stressed) {
+  if (!stressed) return nullptr;
+  const WindowSample& s = stressed->sample;
+  ordered_json forces = ordered_json::object();
+  const std::vector<std::string> names = element_names(model, "axial_force_N");
+  for (std::size_t i = 0; i < names.size() && i < stressed->axial_forces_N.size(); ++i) {
+    forces[names[i]] = stressed->axial_forces_N[i];
+  }
+  return {{"branch", "stressed"},
+          {"t", s.time_s},
+          {"peak_axial_force", s.peak_axial_force_N},
+          {"peak_mstrain", s.peak_mechanical_strain},
+          {"driver_effort", s.driver_effort},
+          {"lowest_eigenvalue", std::isnan(s.lowest_eigenvalue_N_m) ? ordered_json(nullptr) : ordered_json(s.lowest_eigenvalue_N_m)},
+          {"negative_eigenvalues", stressed->n_negative < 0 ? ordered_json(nullptr) : ordered_json(stressed->n_negative)},
+          {"axial_forces", forces},
+          {"failure", stressed->failure}};
 }
 
 // The model's own thermal load at μ = 1, t = 0: what a level of a `model` window multiplies.
@@ -73,7 +94,7 @@ ordered_json pattern_json(const ThermalPattern& pattern) {
           {"varies_in_time", pattern.varies_in_time}};
 }
 
-std::string window_json(const WindowOrigin& origin, const WindowResult& window, double regime_step_C,
+std::string window_json(const Model& model, const WindowOrigin& origin, const WindowResult& window, double regime_step_C,
                         const std::vector<Verdict>& verdicts, const ThermalPattern& pattern) {
   ordered_json j = origin_json(origin, window.stopped ? "interrupted" : "completed",
                                window.stopped ? "interrupted; the samples computed until then are kept" : "");
@@ -96,6 +117,7 @@ std::string window_json(const WindowOrigin& origin, const WindowResult& window, 
     const WindowDeployment& d = window.deployments[i];
     deployments.push_back({{"dT", d.delta_t_C},
                            {"regime", d.regime()},
+                           {"branch", "traced"},  // the peaks below: up to the stop, on the branch it started on
                            {"completed", d.completed},
                            {"stop", d.stop ? edge_json(*d.stop) : ordered_json(nullptr)},
                            {"peak_axial_force", d.peak_axial_force_N},
@@ -104,6 +126,7 @@ std::string window_json(const WindowOrigin& origin, const WindowResult& window, 
                            {"lowest_eigenvalue", std::isnan(d.lowest_eigenvalue_N_m) ? ordered_json(nullptr)
                                                                                      : ordered_json(d.lowest_eigenvalue_N_m)},
                            {"failure", d.failure},
+                           {"stressed", stressed_json(model, d.stressed)},
                            {"verdict", i < verdicts.size() ? verdict_json(verdicts[i]) : ordered_json(nullptr)}});
   }
   j["deployments"] = deployments;
@@ -140,7 +163,7 @@ WindowRun run_window(const Model& model, const WindowOrigin& origin, const std::
   WindowRun run;
   run.window = deployability_window(model, options);
   run.verdicts = deployment_verdicts.verdicts(run.window);
-  run.json = window_json(origin, run.window, window_regime_step(options), run.verdicts, pattern);
+  run.json = window_json(model, origin, run.window, window_regime_step(options), run.verdicts, pattern);
   if (taken) taken->write(run.window, run.json);
   return run;
 }
