@@ -1,7 +1,10 @@
 #pragma once
-// `deploydyn window MODEL [--dT LO:HI] [--positions N] [--set PATH=VALUE ...] [--out DIR]`:
-// the deployability window (solvers/deployability_window.hpp): per side of the ΔT range, the
-// threshold beyond which the deployment jams or snaps and where; the regime at every 10 °C;
+// `deploydyn window MODEL [--load uniform|model] [--dT LO:HI | --scale LO:HI] [--positions N]
+// [--set PATH=VALUE ...] [--out DIR]`: the deployability window
+// (solvers/deployability_window.hpp) of a uniform ΔT range, or of a range of scales μ of the
+// model's own thermal load (solvers/window_thermal_load.hpp): per side of the range, the
+// threshold beyond which the deployment jams or snaps and where; the regime at every 10 °C
+// (0.05 of μ);
 // with --out, window.csv and window.json in a folder it owns (runs/window_folder.hpp), which
 // scripts/deploydyn_window.py draws.
 
@@ -15,7 +18,9 @@ namespace deploydyn::cli {
 struct WindowArguments {
   std::string model_file;
   std::vector<std::string> sets;
-  std::string range_C = "-200:200";
+  std::string load = "uniform";
+  std::string range_C;  // --dT; empty: -200:200 (uniform load only)
+  std::string scale;    // --scale; empty: -2:2 (model load only)
   int n_positions = 21;
   int n_deployments = 9;
   std::string out_dir;  // empty: print only

@@ -676,9 +676,11 @@ py::dict modes_at(const LoadedModel& loaded, int n_modes, std::vector<double> ti
 // into `folder` when given: window.json's text, and window.csv's columns as arrays.
 py::dict window_of(const LoadedModel& loaded, const std::string& model_file, std::vector<std::string> overrides,
                    double coldest_C, double hottest_C, int n_positions, int n_deployments,
-                   const std::optional<std::filesystem::path>& folder, const py::object& stop) {
+                   const std::optional<std::filesystem::path>& folder, const py::object& stop,
+                   const std::string& load) {
   StopWatch watch(stop);
   WindowOrigin origin{model_file, std::move(overrides), {}};
+  origin.options.load = *kWindowLoads.find(load);  // the Python side checked the name
   origin.options.coldest_C = coldest_C;
   origin.options.hottest_C = hottest_C;
   origin.options.n_positions = n_positions;
@@ -686,9 +688,10 @@ py::dict window_of(const LoadedModel& loaded, const std::string& model_file, std
   origin.options.stop = watch.flag();
   const WindowRun run = watch.run([&] { return run_window(loaded.model, origin, folder.value_or(std::filesystem::path())); });
   py::dict samples;
+  const std::vector<WindowSample> rows = window_rows(run.window);
   const auto column = [&](const char* name, double WindowSample::*member) {
     std::vector<double> values;
-    for (const WindowSample& s : run.window.samples) values.push_back(s.*member);
+    for (const WindowSample& s : rows) values.push_back(s.*member);
     samples[name] = py::array_t<double>(static_cast<py::ssize_t>(values.size()), values.data());
   };
   column("t", &WindowSample::time_s);
@@ -697,6 +700,9 @@ py::dict window_of(const LoadedModel& loaded, const std::string& model_file, std
   column("peak_axial_force", &WindowSample::peak_axial_force_N);
   column("peak_mstrain", &WindowSample::peak_mechanical_strain);
   column("driver_effort", &WindowSample::driver_effort);
+  std::vector<std::string> branches;
+  for (const WindowSample& s : rows) branches.emplace_back(window_branch(s));
+  samples["branch"] = branches;
   py::dict out;
   out["json"] = run.json;
   out["samples"] = samples;
@@ -843,7 +849,7 @@ PYBIND11_MODULE(_core, m) {
            py::arg("hinges") = "free", py::arg("from_folder") = py::none())
       .def("window", &window_of, py::arg("model_file"), py::arg("overrides"), py::arg("coldest_C"),
            py::arg("hottest_C"), py::arg("n_positions"), py::arg("n_deployments"), py::arg("folder") = py::none(),
-           py::arg("stop") = py::none())
+           py::arg("stop") = py::none(), py::arg("load") = "uniform")
       .def("continuation", &continuation_of, py::arg("parameter"), py::arg("start"), py::arg("end"),
            py::arg("eigenvalues"), py::arg("max_steps"), py::arg("time"), py::arg("switch_branch"),
            py::arg("stop_at"), py::arg("stop") = py::none())

@@ -30,7 +30,10 @@ def draw(folder, title, out):
     folder = pathlib.Path(folder)
     try:
         summary = json.loads((folder / "window.json").read_text(encoding="utf-8"))
-        samples = np.loadtxt(folder / "window.csv", delimiter=",", skiprows=1, ndmin=2)
+        samples = np.loadtxt(folder / "window.csv", delimiter=",", skiprows=1, ndmin=2, usecols=range(6))
+        branches = np.loadtxt(folder / "window.csv", delimiter=",", skiprows=1, ndmin=1, usecols=6, dtype=str)
+        # The stressed equilibria of jammed levels are drawn with the deployments' stops, not as samples.
+        samples = samples[branches != "stressed"] if samples.size else samples
     except (OSError, ValueError) as error:
         print(f"window: {folder}: cannot read the window: {error}", file=sys.stderr)
         return 1
@@ -55,14 +58,21 @@ def draw(folder, title, out):
         threshold = data["threshold"]
         if threshold:
             ax.axhline(threshold["dT"], color="black", ls="--", lw=1,
-                       label=f"{side} threshold ΔT = {threshold['dT']:+.4g} °C at t = {threshold['t']:g} s")
+                       label=f"{side} threshold {'μ' if summary.get('load') == 'model' else 'ΔT'} = "
+                             f"{threshold['dT']:+.4g}{'' if summary.get('load') == 'model' else ' °C'} at t = {threshold['t']:g} s")
     stops = [d for d in summary.get("deployments", []) if d["stop"]]
     for i, d in enumerate(stops):
         ax.plot(d["stop"]["t"], d["dT"], "o", mfc="none", color="crimson", ms=9, zorder=6,
                 label="deployment stops here" if i == 0 else None)
+    stressed = [d for d in summary.get("deployments", []) if d.get("stressed") and not d["stressed"]["failure"]]
+    for i, d in enumerate(stressed):
+        s = d["stressed"]
+        ax.annotate(f"stressed: {s['peak_axial_force']:.3g} N, {s['peak_mstrain'] * 1e6:.0f} µε", (s["t"], d["dT"]),
+                    xytext=(8, -3), textcoords="offset points", fontsize=7, color="crimson")
     ax.axhline(0.0, color="grey", lw=0.5)
     ax.set_xlabel("driver position: time t (s)")
-    ax.set_ylabel("uniform temperature change ΔT (°C)")
+    scaled = summary.get("load") == "model"
+    ax.set_ylabel("scale μ of the model's thermal load" if scaled else "uniform temperature change ΔT (°C)")
     ax.set_title(title or f"deployability window: {folder.name}")
     if ax.get_legend_handles_labels()[0]:
         ax.legend(loc="upper center", bbox_to_anchor=(0.5, -0.12), ncol=2, fontsize=8)

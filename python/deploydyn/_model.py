@@ -226,25 +226,39 @@ class Model:
                          for e in raw["events"]]
         return out
 
-    def window(self, dT=(-200.0, 200.0), positions=21, deployments=9, out=None, stop=None):
+    def window(self, dT=None, positions=21, deployments=9, out=None, stop=None, load="uniform", scale=None):
         """The deployability window, as `deploydyn window` computes it (docs/theory.md, "The
-        deployability window"): over the uniform ΔT range dT = (lo, hi), lo ≤ 0 ≤ hi (°C), where
-        the deployment stays stress-free, is stressed, jams or snaps, the thresholds located by
-        continuation in ΔT at `positions` driver positions (1 to 10 000) over the analysis time,
-        and `deployments` uniform ΔT levels (0 to 1000) deployed quasi-statically, each with its
-        verdict. With `out`, window.csv and window.json are written into that folder as the
-        command's --out writes them. Returns window.json's content as a dict ("cold" and "hot":
-        "reach", "threshold" {dT, dT_error, kind, t, description} or None, the first event per
-        position in "edges"; "regimes" every 10 °C; "deployments" with their "verdict"; "status")
-        and "samples": window.csv's columns as numpy arrays ("t", "dT", "lowest_eigenvalue",
-        "peak_axial_force", "peak_mstrain", "driver_effort"). stop: a threading.Event as for
-        run; once set, the window ends "interrupted" with what it has."""
+        deployability window"): over a range of thermal load levels, where the deployment stays
+        stress-free, is stressed, jams or snaps, the thresholds located by continuation in the
+        level at `positions` driver positions (1 to 10 000) over the analysis time, and
+        `deployments` levels (0 to 1000) deployed quasi-statically, each with its verdict.
+        load: "uniform" (the same ΔT on every member, over dT = (lo, hi), lo ≤ 0 ≤ hi, °C;
+        default (-200, 200)) or "model" (the model's own ΔT and through-depth differences times
+        a scale μ over scale = (lo, hi), lo ≤ 0 ≤ hi; default (-2, 2); every "dT" of the result
+        is then μ, and "pattern" gives the model's values at μ = 1). With `out`, window.csv and
+        window.json are written into that folder as the command's --out writes them. Returns
+        window.json's content as a dict ("cold" and "hot": "reach", "threshold" {dT, dT_error,
+        kind, t, description} or None, the first event per position in "edges"; "regimes" every
+        10 °C or 0.05 of μ; "deployments" with their "verdict" and, where one jams, "stressed":
+        the stressed equilibrium it sits on instead; "status") and "samples": window.csv's
+        columns as numpy arrays ("t", "dT", "lowest_eigenvalue", "peak_axial_force",
+        "peak_mstrain", "driver_effort", and "branch": "traced" or "stressed"). stop: a
+        threading.Event as for run; once set, the window ends "interrupted" with what it has."""
         where = "Model.window"
-        if checked.is_number(dT) or isinstance(dT, str) or len(dT) != 2:
-            raise TypeError(f"{where}: dT must be a pair (lo, hi) of temperature changes (°C), not {checked.shown(dT)}")
-        lo, hi = (checked.finite(where, name, value) for name, value in (("dT[0]", dT[0]), ("dT[1]", dT[1])))
+        if load not in ("uniform", "model"):
+            raise ValueError(f"{where}: load must be 'uniform' or 'model', not {checked.shown(load)}")
+        name, given, unit = ("scale", scale, "") if load == "model" else ("dT", dT, " (°C)")
+        wrong = dT if load == "model" else scale
+        if wrong is not None:
+            raise ValueError(f"{where}: with load={load!r} the range is `{name}`, not "
+                             f"`{'dT' if load == 'model' else 'scale'}`")
+        if given is None:
+            given = (-2.0, 2.0) if load == "model" else (-200.0, 200.0)
+        if checked.is_number(given) or isinstance(given, str) or len(given) != 2:
+            raise TypeError(f"{where}: {name} must be a pair (lo, hi){unit}, not {checked.shown(given)}")
+        lo, hi = (checked.finite(where, f"{name}[{i}]", value) for i, value in enumerate(given))
         if not lo <= 0.0 <= hi or lo == hi:
-            raise ValueError(f"{where}: dT must be (lo, hi) with lo ≤ 0 ≤ hi and lo < hi (°C), got ({lo}, {hi})")
+            raise ValueError(f"{where}: {name} must be (lo, hi) with lo ≤ 0 ≤ hi and lo < hi{unit}, got ({lo}, {hi})")
         positions = checked.count(where, "positions", positions)
         deployments = checked.count(where, "deployments", deployments, minimum=0)
         if positions > 10000 or deployments > 1000:
@@ -252,7 +266,7 @@ class Model:
         folder = None if out is None else checked.path(where, "out", out)
         overrides = [f"{path}={value}" for path, value in self._overrides]
         raw = self._core.window(str(self.source), overrides, lo, hi, positions, deployments, folder,
-                                checked.stop(where, stop))
+                                checked.stop(where, stop), load)
         result = json.loads(raw["json"])
         result["samples"] = {name: np.asarray(values) for name, values in raw["samples"].items()}
         return result

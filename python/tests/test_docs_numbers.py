@@ -73,3 +73,12 @@ def test_tutorial_drive_ringing_and_peaks(tmp_path):
         peak = json.loads((out / "summary.json").read_text(encoding="utf-8"))["drivers"]["motor"]["peak"]
         assert ringing == pytest.approx(quotes[run][0], abs=0.5), run
         assert peak == pytest.approx(quotes[run][1], abs=0.5), run
+
+
+def test_readme_stressed_branch_of_the_cold_parallel_linkage(tmp_path):
+    strain, torque = quoted(README, r"−170 °C is pulled straight with (\d+) µε and ([\d.]+) N·m")
+    run_cli("window", SOURCE_DIR / "examples" / "paper" / "parallel.yaml", "--dT", "-170:0", "--positions", "1",
+            "--deployments", "1", "--out", tmp_path)
+    stressed = json.loads((tmp_path / "window.json").read_text(encoding="utf-8"))["deployments"][0]["stressed"]
+    assert stressed["peak_mstrain"] * 1e6 == pytest.approx(strain, abs=0.5)
+    assert abs(stressed["driver_effort"]) == pytest.approx(torque, abs=0.05)

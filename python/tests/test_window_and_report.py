@@ -27,9 +27,16 @@ def test_window_gives_what_the_command_gives(tmp_path):
     assert window["hot"]["threshold"] is None
     assert [d["regime"] for d in window["deployments"]] == ["jams", "stress-free", "stress-free"]
     assert window["deployments"][0]["verdict"]["deploys"] is False
-    table = np.loadtxt(tmp_path / "cli" / "window.csv", delimiter=",", skiprows=1)
+    table = np.loadtxt(tmp_path / "cli" / "window.csv", delimiter=",", skiprows=1, usecols=range(6))
     for i, name in enumerate(("t", "dT", "lowest_eigenvalue", "peak_axial_force", "peak_mstrain", "driver_effort")):
         np.testing.assert_allclose(window["samples"][name], table[:, i], rtol=1e-15, atol=0, err_msg=name)
+    branches = np.loadtxt(tmp_path / "cli" / "window.csv", delimiter=",", skiprows=1, usecols=6, dtype=str)
+    assert list(window["samples"]["branch"]) == list(branches)
+    # The −170 °C level cannot start: its stressed equilibrium is the last row, pulled straight.
+    assert branches[-1] == "stressed" and list(branches[:-1]) == ["traced"] * (len(branches) - 1)
+    stressed = window["deployments"][0]["stressed"]
+    assert stressed["peak_mstrain"] == pytest.approx(652e-6, abs=1e-6)
+    assert abs(stressed["driver_effort"]) == pytest.approx(62.8, abs=0.05)
 
 
 def test_window_of_a_model_with_overrides_records_them():
@@ -52,6 +59,23 @@ def test_window_arguments_and_models_it_refuses():
         model.window(positions=10001)
     with pytest.raises(deploydyn.InputError, match="spring"):  # a spring-driven boom has no drivers to move
         deploydyn.load(BOOM).window()
+    with pytest.raises(ValueError, match="load must be 'uniform' or 'model'"):
+        model.window(load="hot")
+    with pytest.raises(ValueError, match="with load='model' the range is `scale`"):
+        model.window(load="model", dT=(-10, 10))
+    with pytest.raises(ValueError, match=r"scale must be \(lo, hi\) with lo ≤ 0 ≤ hi"):
+        model.window(load="model", scale=(1, 2))
+    with pytest.raises(deploydyn.InputError, match="it has none"):  # the example's dT is 0
+        model.window(load="model")
+
+
+def test_window_of_the_models_own_load_is_in_its_scale():
+    # 60 °C on every bar as the pattern: the cold jam at −84.8435 °C is at μ = −1.41406.
+    window = deploydyn.load(PARALLEL, overrides={"thermal.dT": 60}).window(load="model", scale=(-2, 0), positions=1,
+                                                                          deployments=0)
+    assert window["load"] == "model" and window["units"]["dT"] == "1"
+    assert window["pattern"]["hottest_axis_dT"] == 60.0
+    assert window["cold"]["threshold"]["dT"] * 60.0 == pytest.approx(-84.8435, abs=1e-3)
 
 
 def test_report_writes_what_the_command_writes(tmp_path):

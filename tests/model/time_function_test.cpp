@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "deploydyn/model/least_value.hpp"
+#include "deploydyn/model/scaled_time_function.hpp"
 
 namespace deploydyn {
 namespace DEPLOYDYN_FILE_SCOPE {
@@ -223,6 +224,33 @@ TEST(TimeFunction, LeastValueIsTheSampledMinimum) {
   const TimeFunction opposed(TimeFunction::Sum{{TimeFunction(TimeFunction::Harmonic{1.0, 1.0, 0.0, 0.0}),
                                                 TimeFunction(TimeFunction::Harmonic{1.0, 1.0, kPi, 0.0})}});
   EXPECT_EQ(least_value(opposed, 0.0, 1.0), -2.0);
+}
+
+// k·f(t) of every kind: value, derivative and integral k times f's (model/scaled_time_function.hpp).
+TEST(ScaledTimeFunction, IsFactorTimesTheFunctionForEveryKind) {
+  using F = TimeFunction;
+  const std::vector<F> functions{
+      F::constant(3.0),
+      F(F::Ramp{0.1, -2.0, 0.8, 5.0, RampShape::cubic}),
+      F::paper_eq23(),
+      F(F::Table{{0.0, 0.5, 1.0}, {1.0, -3.0, 2.0}}),
+      F(F::Polynomial{{1.0, -2.0, 0.5}, true, 0.1, 0.9}),
+      F(F::Harmonic{2.0, 1.5, 0.3, 0.7}),
+      F(F::Piecewise{{0.0, 0.5, 1.0}, {F::constant(1.0), F(F::Ramp{0.5, 1.0, 1.0, 2.0, RampShape::cubic})}}),
+      F(F::Sum{{F::constant(1.0), F(F::Harmonic{2.0, 1.5, 0.3, 0.7})}}),
+  };
+  constexpr double kFactor = -1.7;
+  for (std::size_t i = 0; i < functions.size(); ++i) {
+    SCOPED_TRACE(i);
+    const F& f = functions[i];
+    const F g = scaled(f, kFactor);
+    EXPECT_EQ(scaled(f, 1.0), f);
+    for (const double t : {0.0, 0.3, 0.65, 1.2}) {
+      EXPECT_NEAR(g.value(t), kFactor * f.value(t), 1e-14 * (1.0 + std::abs(f.value(t))));
+      EXPECT_NEAR(g.derivative(t), kFactor * f.derivative(t), 1e-12 * (1.0 + std::abs(f.derivative(t))));
+      EXPECT_NEAR(g.integral(t), kFactor * f.integral(t), 1e-12 * (1.0 + std::abs(f.integral(t))));
+    }
+  }
 }
 
 }  // namespace

@@ -9,6 +9,7 @@
 #include <utility>
 
 #include "deploydyn/checks/window_verdicts.hpp"
+#include "deploydyn/elements/element_kinds.hpp"
 #include "deploydyn/io/input_error.hpp"
 #include "deploydyn/output/checked_file.hpp"
 #include "deploydyn/output/output_error.hpp"
@@ -44,6 +45,7 @@ std::string text(const ordered_json& j) { return j.dump(2, ' ', false, ordered_j
 ordered_json origin_json(const WindowOrigin& origin, const char* status, const std::string& message) {
   return {{"model", origin.model_file},
           {"set", origin.overrides},
+          {"load", to_string(origin.options.load)},
           {"range", {origin.options.coldest_C, origin.options.hottest_C}},
           {"positions_asked", origin.options.n_positions},
           {"deployments_asked", origin.options.n_deployments},
@@ -52,19 +54,54 @@ ordered_json origin_json(const WindowOrigin& origin, const char* status, const s
 }
 
 std::string samples_csv(const WindowResult& window) {
-  std::string csv = "t,dT,lowest_eigenvalue,peak_axial_force,peak_mstrain,driver_effort\n";
-  for (const WindowSample& s : window.samples) {
-    csv += fmt::format("{},{},{},{},{},{}\n", s.time_s, s.delta_t_C, s.lowest_eigenvalue_N_m,
-                       s.peak_axial_force_N, s.peak_mechanical_strain, s.driver_effort);
+  std::string csv = "t,dT,lowest_eigenvalue,peak_axial_force,peak_mstrain,driver_effort,branch\n";
+  for (const WindowSample& s : window_rows(window)) {
+    csv += fmt::format("{},{},{},{},{},{},{}\n", s.time_s, s.delta_t_C, s.lowest_eigenvalue_N_m,
+                       s.peak_axial_force_N, s.peak_mechanical_strain, s.driver_effort, window_branch(s));
   }
   return csv;
 }
 
-std::string window_json(const WindowOrigin& origin, const WindowResult& window, double regime_step_C,
-                        const std::vector<Verdict>& verdicts) {
+// A deployment's stressed equilibrium where it jams (WindowStressedState), its forces by element.
+ordered_json stressed_json(const Model& model, const std::optional<WindowStressedState>& stressed) {
+  if (!stressed) return nullptr;
+  const WindowSample& s = stressed->sample;
+  ordered_json forces = ordered_json::object();
+  const std::vector<std::string> names = element_names(model, "axial_force_N");
+  for (std::size_t i = 0; i < names.size() && i < stressed->axial_forces_N.size(); ++i) {
+    forces[names[i]] = stressed->axial_forces_N[i];
+  }
+  return {{"branch", "stressed"},
+          {"t", s.time_s},
+          {"peak_axial_force", s.peak_axial_force_N},
+          {"peak_mstrain", s.peak_mechanical_strain},
+          {"driver_effort", s.driver_effort},
+          {"lowest_eigenvalue", std::isnan(s.lowest_eigenvalue_N_m) ? ordered_json(nullptr) : ordered_json(s.lowest_eigenvalue_N_m)},
+          {"negative_eigenvalues", stressed->n_negative < 0 ? ordered_json(nullptr) : ordered_json(stressed->n_negative)},
+          {"axial_forces", forces},
+          {"failure", stressed->failure}};
+}
+
+// The model's own thermal load at μ = 1, t = 0: what a level of a `model` window multiplies.
+ordered_json pattern_json(const ThermalPattern& pattern) {
+  return {{"meaning", "every dT of this window is the scale μ of the model's thermal load; these are its values at μ = 1, t = 0 (°C)"},
+          {"coldest_axis_dT", pattern.coldest_axis_C},
+          {"coldest_axis_element", pattern.coldest_axis_element},
+          {"hottest_axis_dT", pattern.hottest_axis_C},
+          {"hottest_axis_element", pattern.hottest_axis_element},
+          {"largest_depth_difference", pattern.largest_depth_difference_C},
+          {"depth_difference_element", pattern.depth_difference_element},
+          {"varies_in_time", pattern.varies_in_time}};
+}
+
+std::string window_json(const Model& model, const WindowOrigin& origin, const WindowResult& window, double regime_step_C,
+                        const std::vector<Verdict>& verdicts, const ThermalPattern& pattern) {
   ordered_json j = origin_json(origin, window.stopped ? "interrupted" : "completed",
                                window.stopped ? "interrupted; the samples computed until then are kept" : "");
-  j["units"] = {{"dT", "°C"}, {"t", "s"}, {"eigenvalue", "N/m"}, {"force", "N"}};
+  const bool scaled = origin.options.load == WindowLoad::model;
+  // With the model's load every "dT" is the scale μ of its pattern (solvers/window_thermal_load.hpp).
+  j["units"] = {{"dT", scaled ? "1" : "°C"}, {"t", "s"}, {"eigenvalue", "N/m"}, {"force", "N"}};
+  if (scaled) j["pattern"] = pattern_json(pattern);
   j["positions"] = window.times_s;
   j["cold"] = side_json(window.cold);
   j["hot"] = side_json(window.hot);
@@ -80,6 +117,7 @@ std::string window_json(const WindowOrigin& origin, const WindowResult& window, 
     const WindowDeployment& d = window.deployments[i];
     deployments.push_back({{"dT", d.delta_t_C},
                            {"regime", d.regime()},
+                           {"branch", "traced"},  // the peaks below: up to the stop, on the branch it started on
                            {"completed", d.completed},
                            {"stop", d.stop ? edge_json(*d.stop) : ordered_json(nullptr)},
                            {"peak_axial_force", d.peak_axial_force_N},
@@ -88,6 +126,7 @@ std::string window_json(const WindowOrigin& origin, const WindowResult& window, 
                            {"lowest_eigenvalue", std::isnan(d.lowest_eigenvalue_N_m) ? ordered_json(nullptr)
                                                                                      : ordered_json(d.lowest_eigenvalue_N_m)},
                            {"failure", d.failure},
+                           {"stressed", stressed_json(model, d.stressed)},
                            {"verdict", i < verdicts.size() ? verdict_json(verdicts[i]) : ordered_json(nullptr)}});
   }
   j["deployments"] = deployments;
@@ -103,6 +142,20 @@ WindowRun run_window(const Model& model, const WindowOrigin& origin, const std::
   }
   WindowOptions options = origin.options;
   validate(options);
+  const ThermalPattern pattern = thermal_pattern(model);
+  if (options.load == WindowLoad::model) {
+    if (model.environment) {
+      throw InputError(origin.model_file, 0, 0, "environment",
+                       "the window's `model` load scales the model's given ΔT and through-depth differences, and an "
+                       "environment's temperatures come from a run's heat balance: give them as dT tables, or take "
+                       "the `uniform` load");
+    }
+    if (pattern.empty()) {
+      throw InputError(origin.model_file, 0, 0, "thermal",
+                       "the window's `model` load scales the model's thermal load, and it has none (every dT and "
+                       "through-depth difference is 0): give one, or take the `uniform` load");
+    }
+  }
   WindowVerdicts deployment_verdicts(model);
   deployment_verdicts.watch(options);
   std::optional<WindowFolder> taken;
@@ -110,7 +163,7 @@ WindowRun run_window(const Model& model, const WindowOrigin& origin, const std::
   WindowRun run;
   run.window = deployability_window(model, options);
   run.verdicts = deployment_verdicts.verdicts(run.window);
-  run.json = window_json(origin, run.window, kWindowRegimeStep_C, run.verdicts);
+  run.json = window_json(model, origin, run.window, window_regime_step(options), run.verdicts, pattern);
   if (taken) taken->write(run.window, run.json);
   return run;
 }

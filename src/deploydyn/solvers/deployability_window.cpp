@@ -10,22 +10,12 @@
 #include <unordered_set>
 
 #include "deploydyn/assembly/linear_system_factory.hpp"
-#include "deploydyn/elements/element_kinds.hpp"
+#include "deploydyn/solvers/path_stability.hpp"
 #include "deploydyn/solvers/static_solver.hpp"
 
 namespace deploydyn {
 namespace {
 
-
-// The model with the same uniform ΔT on every bar: what the path scales.
-Model with_uniform_temperature(const Model& model, double delta_t_C) {
-  Model uniform = model;
-  uniform.temperature_change_C = TimeFunction::constant(delta_t_C);
-  for (const ElementKind* kind : element_kinds()) {
-    kind->set_temperature_change(uniform, uniform.temperature_change_C);
-  }
-  return uniform;
-}
 
 // A point of a path at driver time `time_s`, with every ΔT of the model scaled by
 // `thermal_factor` (ΔT = thermal_factor × reach_C).
@@ -118,9 +108,11 @@ WindowDeployment deploy(const Assembler& assembler, LinearSystem& system, double
     const ContinuationResult heated = trace_path(assembler, heat, system, q, lambda);
     if (!heated.events.empty()) {
       const PathEvent& event = heated.events.front();
+      const bool scaled = options.load == WindowLoad::model;
       deployment.stop = WindowEdge{0.0, event.parameter * delta_t_C, event.parameter_error * std::abs(delta_t_C),
-                                   event.kind, "at the start, heated to ΔT = " +
-                                                   fmt::format("{:+.6g} °C: {}", event.parameter * delta_t_C, event.description)};
+                                   event.kind, fmt::format("at the start, heated to {} = {:+.6g}{}: {}", scaled ? "μ" : "ΔT",
+                                                           event.parameter * delta_t_C, scaled ? "" : " °C",
+                                                           event.description)};
       return deployment;
     }
     if (heated.end != ContinuationEnd::reached_end) {
@@ -154,7 +146,60 @@ WindowDeployment deploy(const Assembler& assembler, LinearSystem& system, double
   return deployment;
 }
 
+// The stressed equilibrium at driver time `time_s` and the full load of `assembler`'s model
+// (WindowStressedState).
+WindowStressedState stressed_state(const Assembler& assembler, LinearSystem& system, double time_s, double level) {
+  const Model& model = assembler.model();
+  WindowStressedState stressed;
+  stressed.sample.time_s = time_s;
+  stressed.sample.delta_t_C = level;
+  stressed.sample.stressed_branch = true;
+  MotionState state;
+  state.q = assembler.initial_coordinates();
+  state.v = state.a = Eigen::VectorXd::Zero(assembler.n_dofs());
+  state.lambda = Eigen::VectorXd::Zero(assembler.n_equations());
+  if (time_s > 0.0) {
+    const StaticResult moved = solve_static(assembler, model.analysis, LoadPath{0.0, time_s, 0.0, 0.0}, 1, system, state);
+    if (!moved.newton.converged) {
+      stressed.failure = fmt::format("no equilibrium at ΔT = 0, t = {:g} s: {}", time_s, moved.newton.failure);
+      return stressed;
+    }
+  }
+  const StaticResult heated =
+      solve_static(assembler, model.analysis, LoadPath::thermal_ramp(time_s), model.analysis.load_steps, system, state);
+  if (!heated.newton.converged || heated.path_factor < 1.0) {
+    stressed.failure = fmt::format("the load steps reached {:.1f}% of the level: {}", 100.0 * heated.path_factor,
+                                   heated.newton.failure);
+    return stressed;
+  }
+  PathPoint point;
+  point.parameter = 1.0;
+  point.q = state.q;
+  point.lambda = state.lambda;
+  ContinuationOptions at_level;
+  at_level.parameter = PathParameter::thermal;
+  at_level.time_s = time_s;
+  const ParametrizedEquilibrium equilibrium(assembler, PathParameter::thermal, time_s);
+  PathStability(assembler, at_level, system).analyse(equilibrium, assembler.stiffness_scale(state.q, time_s), point);
+  const WindowSample at = sample(assembler, point, time_s, 1.0, level);
+  stressed.sample.lowest_eigenvalue_N_m = at.lowest_eigenvalue_N_m;
+  stressed.sample.peak_axial_force_N = at.peak_axial_force_N;
+  stressed.sample.peak_mechanical_strain = at.peak_mechanical_strain;
+  stressed.sample.driver_effort = at.driver_effort;
+  stressed.n_negative = point.n_negative;
+  stressed.axial_forces_N = assembler.element_quantity("axial_force_N", state.q, time_s, 1.0);
+  return stressed;
+}
+
 }  // namespace
+
+std::vector<WindowSample> window_rows(const WindowResult& window) {
+  std::vector<WindowSample> rows = window.samples;
+  for (const WindowDeployment& d : window.deployments) {
+    if (d.stressed) rows.push_back(d.stressed->sample);
+  }
+  return rows;
+}
 
 std::string WindowDeployment::regime(double stress_free_strain) const {
   if (stop) return stop->kind == PathEventKind::bifurcation ? "snaps" : "jams";
@@ -210,7 +255,7 @@ WindowResult deployability_window(const Model& model, const WindowOptions& optio
     if (side->reach_C == 0.0) continue;
     Side& s = sides.emplace_back();
     s.side = side;
-    s.model = std::make_unique<const Model>(with_uniform_temperature(model, side->reach_C));
+    s.model = std::make_unique<const Model>(with_window_load(model, options.load, side->reach_C));
     s.assembler = std::make_unique<Assembler>(*s.model);
     s.system = make_linear_system(*s.assembler);
   }
@@ -231,12 +276,15 @@ WindowResult deployability_window(const Model& model, const WindowOptions& optio
     }
     const double delta_t_C = n_levels == 1 ? options.coldest_C
                                            : options.coldest_C + (options.hottest_C - options.coldest_C) * j / (n_levels - 1);
-    const Model heated = with_uniform_temperature(model, delta_t_C);
+    const Model heated = with_window_load(model, options.load, delta_t_C);
     const Assembler assembler(heated);
     const auto system = make_linear_system(assembler);
     RecordSink* sink = options.deployment_sink ? options.deployment_sink(j) : nullptr;
-    window.deployments.push_back(
+    WindowDeployment& deployment = window.deployments.emplace_back(
         deploy(assembler, *system, delta_t_C, model.analysis.end_time_s, options, window.samples, sink));
+    if (deployment.regime() == "jams") {
+      deployment.stressed = stressed_state(assembler, *system, deployment.stop->time_s, delta_t_C);
+    }
   }
   return window;
 }
