@@ -121,11 +121,11 @@ void expect_the_stub_models_run(int dimension, int first_row, const std::string&
               dimension, d.position_m, d.torque, d.largest_torque_Nm, d.travel_m);
 }
 
-TEST(GroundedRevolute, MatchesTheStubBeamJointAndDriverIn2D) {
+TEST(VerificationGroundedRevolute, MatchesTheStubBeamJointAndDriverIn2D) {
   expect_the_stub_models_run(2, 1, "at its hinge to ground");
 }
 
-TEST(GroundedRevolute, MatchesTheStubBeamJointAndDriverIn3D) {
+TEST(VerificationGroundedRevolute, MatchesTheStubBeamJointAndDriverIn3D) {
   expect_the_stub_models_run(3, 3, "about a tilted support axis");
 }
 
@@ -167,7 +167,7 @@ double largest_static_torque_error(int dimension) {
   return largest;
 }
 
-TEST(GroundedRevolute, HoldsTheWeightWithTheStaticTorque) {
+TEST(VerificationGroundedRevolute, HoldsTheWeightWithTheStaticTorque) {
   check({"23.5", "2D beam turned 2 rad about its hinge to ground, statics: driver torque / (m g L/2)",
          "m g (L/2) cos θ", largest_static_torque_error(2), kStaticTorqueRelativeTolerance, ""});
   check({"23.6", "3D beam turned 2 rad about its support's axis z, statics: driver torque / (m g L/2)",
@@ -176,7 +176,7 @@ TEST(GroundedRevolute, HoldsTheWeightWithTheStaticTorque) {
 
 // check's count: the beam hinged to ground has one free motion (the turn about the axis), which
 // the driver takes; as rigid, the count and the rank agree on 0 with the driver.
-TEST(GroundedRevolute, MobilityCountsTheDriver) {
+TEST(VerificationGroundedRevolute, MobilityCountsTheDriver) {
   for (const int dimension : {2, 3}) {
     const Model model = load_model_from_string(driven_hinge_yaml(dimension, false, kDynamic), "grounded");
     const Assembler assembler(model);
