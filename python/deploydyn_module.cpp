@@ -40,7 +40,6 @@
 #include "deploydyn/io/input_error.hpp"
 #include "deploydyn/io/model_loader.hpp"
 #include "deploydyn/io/model_writer.hpp"
-#include "deploydyn/model/hinge_to_ground_driver.hpp"
 #include "deploydyn/results/envelope.hpp"
 #include "deploydyn/output/history_writer.hpp"
 #include "deploydyn/runs/modes_to_folder.hpp"
@@ -454,8 +453,8 @@ py::list drivers_info(const Model& model) {
         d["direction"] = std::string(1, "xyz"[driver.direction]);
         break;
       case Driver::Kind::revolute:
-        if (drives_hinge_to_ground(driver)) {
-          d["support"] = model.nodes[driver.node].name;
+        if (driver.support) {
+          d["support"] = model.nodes[model.supports[static_cast<std::size_t>(*driver.support)].node].name;
         } else {
           d["joint"] = model.joints[static_cast<std::size_t>(driver.joint)].name;
         }

@@ -230,6 +230,26 @@ TEST(BucklingLength, PerAxisFromAHingeToGroundClampedAboutOneAxisPinnedAboutTheO
       checked_members(load_model_from_string(hinged_column3d(4, ", buckling_length_factor: 1"), "one.yaml")), "column");
   EXPECT_FALSE(one.buckling_length_factors.has_value());
   EXPECT_NEAR(one.critical_force_N, kPi * kPi * youngs_Pa * kInertiaZ_m4, 1e-12 * about_z_N);
+
+  // K given per axis, [K_y, K_z]: a brace that halves the buckling length about y only. Then
+  // N_y = π² E I_y / (0.5 L)² = 20 N_y(K=1) and N_z = π² E I_z / (2 L)² governs.
+  const Model braced = load_model_from_string(hinged_column3d(4, ", buckling_length_factor: [0.5, 2]"), "yz.yaml");
+  ASSERT_EQ(braced.members.front().buckling_length_factors_yz, (std::array{0.5, 2.0}));
+  const CheckedMember given = member_named(checked_members(braced), "column");
+  ASSERT_TRUE(given.buckling_length_factors.has_value());
+  EXPECT_EQ((*given.buckling_length_factors)[0], 0.5);
+  EXPECT_EQ((*given.buckling_length_factors)[1], 2.0);
+  EXPECT_EQ(given.buckling_length_factor, 2.0);  // z governs
+  EXPECT_EQ(given.buckling_length_source, "given");
+  const double braced_z_N = kPi * kPi * youngs_Pa * kInertiaZ_m4 / 4.0;
+  EXPECT_NEAR(given.critical_force_N, braced_z_N, 1e-12 * braced_z_N);
+  // The other way round, y governs: N_y = π² E I_y / (3 L)² against N_z = π² E I_z / L².
+  const CheckedMember swapped = member_named(
+      checked_members(load_model_from_string(hinged_column3d(4, ", buckling_length_factor: [3, 1]"), "zy.yaml")),
+      "column");
+  const double swapped_y_N = kPi * kPi * youngs_Pa * kInertiaY_m4 / 9.0;
+  EXPECT_EQ(swapped.buckling_length_factor, 3.0);
+  EXPECT_NEAR(swapped.critical_force_N, swapped_y_N, 1e-12 * swapped_y_N);
 }
 
 TEST(BucklingLength, CheckListsEachFactorAndWhereItComesFrom) {

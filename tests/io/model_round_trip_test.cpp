@@ -9,7 +9,6 @@
 
 #include "deploydyn/io/model_loader.hpp"
 #include "deploydyn/io/model_writer.hpp"
-#include "deploydyn/model/hinge_to_ground_driver.hpp"
 
 namespace deploydyn {
 namespace DEPLOYDYN_FILE_SCOPE {
@@ -61,6 +60,7 @@ void expect_equal_models(const Model& a, const Model& b) {
     EXPECT_EQ(a.members[i].kind, b.members[i].kind);
     EXPECT_EQ(a.members[i].elements, b.members[i].elements);
     EXPECT_EQ(a.members[i].buckling_length_factor, b.members[i].buckling_length_factor);
+    EXPECT_EQ(a.members[i].buckling_length_factors_yz, b.members[i].buckling_length_factors_yz);
     EXPECT_EQ(a.members[i].slack_forbidden, b.members[i].slack_forbidden);
   }
   ASSERT_EQ(a.n_bars(), b.n_bars());
@@ -183,8 +183,8 @@ void expect_equal_models(const Model& a, const Model& b) {
         EXPECT_EQ(x.direction, y.direction);
         break;
       case Driver::Kind::revolute:
-        EXPECT_EQ(x.joint, y.joint);
-        if (drives_hinge_to_ground(x)) EXPECT_EQ(x.node, y.node);
+        EXPECT_EQ(x.support, y.support);
+        if (!x.support) EXPECT_EQ(x.joint, y.joint);
         break;
       case Driver::Kind::hinge_angle:
         EXPECT_EQ(x.hinge_nodes, y.hinge_nodes);
@@ -373,8 +373,7 @@ elements: {ab: {type: beam, nodes: [A, B], area: 1.0e-4, inertia_z: 1.0e-8, mate
 supports: [{node: A, fix: [x, y]}]
 drivers: {crank: {type: revolute, support: A, profile: 0.2, torque_limit: 50}}
 )", "2D grounded revolute");
-  ASSERT_TRUE(drives_hinge_to_ground(plane.drivers[0]));
-  ASSERT_EQ(hinge_to_ground_support(plane, plane.drivers[0]), 0);
+  ASSERT_EQ(plane.drivers[0].support, 0);
   expect_round_trip(plane);
   const Model space = load_model_from_string(R"(
 nodes: {G: [-1, 0, 0], A: [0, 0, 0], B: [1, 0, 0], C: [1, 0, 0], D: [2, 0, 0]}
@@ -389,8 +388,8 @@ drivers:
   base: {type: revolute, support: A, reading: angle, profile: {type: smooth_step, t0: 0, v0: 0, t1: 1, v1: 0.5}}
   elbow: {type: revolute, joint: hinge, profile: 0.1}
 )", "3D grounded revolute");
-  ASSERT_EQ(hinge_to_ground_support(space, space.drivers[0]), 1);
-  ASSERT_FALSE(drives_hinge_to_ground(space.drivers[1]));
+  ASSERT_EQ(space.drivers[0].support, 1);
+  ASSERT_FALSE(space.drivers[1].support);
   expect_round_trip(space);
 }
 
@@ -525,6 +524,19 @@ drivers:
     SCOPED_TRACE(name);
     expect_round_trip(load_model(fmt::format("{}/examples/checks/{}.yaml", DEPLOYDYN_SOURCE_DIR, name)));
   }
+  // K per bending axis of a 3D beam member.
+  const Model boom = load_model_from_string(R"(
+nodes: {A: [0, 0, 0], B: [1, 0, 0], C: [2, 0, 0]}
+materials: {steel: {E: 2.0e11, density: 7850}}
+elements:
+  b1: {type: beam, nodes: [A, B], area: 1.0e-4, inertia_y: 1.0e-8, inertia_z: 2.0e-8, torsion: 2.0e-8, material: steel}
+  b2: {type: beam, nodes: [B, C], area: 1.0e-4, inertia_y: 1.0e-8, inertia_z: 2.0e-8, torsion: 2.0e-8, material: steel}
+members:
+  boom: {elements: [b1, b2], buckling_length_factor: [0.7, 2.1]}
+supports: [{node: A, fix: [x, y, z, rotation]}]
+)", "per-axis K");
+  ASSERT_EQ(boom.members.front().buckling_length_factors_yz, (std::array{0.7, 2.1}));
+  expect_round_trip(boom);
 }
 
 // Hinges of both forms, every key, and the spring-driven mast with end_when.

@@ -94,7 +94,9 @@ TEST(VerificationSampledFailure, ProbabilityOfACableGoingSlackMatchesTheNormalTa
     n_slack += slack ? 1 : 0;
     EXPECT_EQ(row.at("status"), "completed") << row.at("case");
     EXPECT_EQ(row.at("deploys"), slack ? "no" : "yes") << row.at("case") << ": δ = " << error_m.at(row.at("case"));
-    if (slack) EXPECT_EQ(row.at("first_failure"), "cable_slack") << row.at("case");
+    if (slack) {
+      EXPECT_EQ(row.at("first_failure"), "cable_slack") << row.at("case");
+    }
   }
 
   const Rows statistics = read_rows(study.out_folder / kStatisticsFileName);

@@ -90,7 +90,9 @@ struct Column {
     Model m;
     m.name = "slender column";
     m.dimension = 2;
-    m.materials.push_back({.name = "steel", .youngs_modulus_Pa = kYoungsModulus_Pa, .density_kg_m3 = 7850.0});
+    Material steel;
+    steel.name = "steel", steel.youngs_modulus_Pa = kYoungsModulus_Pa, steel.density_kg_m3 = 7850.0;
+    m.materials.push_back(steel);
     for (int i = 0; i <= n_elements; ++i) {
       m.nodes.push_back({"N" + std::to_string(i), Eigen::Vector3d(kLength_m * i / n_elements, 0.0, 0.0), 0.0});
     }

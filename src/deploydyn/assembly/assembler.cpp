@@ -18,7 +18,6 @@
 #include "deploydyn/constraints/prescribed_coordinates.hpp"
 #include "deploydyn/elements/beam/beam3d_group.hpp"
 #include "deploydyn/elements/element_kinds.hpp"
-#include "deploydyn/model/hinge_to_ground_driver.hpp"
 
 namespace deploydyn {
 namespace {
@@ -167,9 +166,9 @@ std::unique_ptr<Constraint> make_driver(const Driver& driver, const Model& model
           motion);
     }
     case Driver::Kind::revolute: {
-      if (drives_hinge_to_ground(driver)) {
+      if (driver.support) {
         // A hinge to ground: the ground frame is A (constraints/driven_revolute.hpp).
-        const FixedNode& support = model.supports[static_cast<std::size_t>(hinge_to_ground_support(model, driver))];
+        const FixedNode& support = model.supports[static_cast<std::size_t>(*driver.support)];
         std::vector<int> rotation = rotation_dofs(support.node, model, dofs);
         if (rotation.empty()) {
           throw std::invalid_argument(label + ": revolute at the support of node " +

@@ -44,8 +44,11 @@ FactorColumn factor_column(const double* lu, const int* start, const int* length
   return {reinterpret_cast<const int*>(at), at + index_doubles, n};
 }
 
+}  // namespace
+
 // The two-domain split of the factors (assembly/metis_ordering.hpp) and the work space of the
-// solve that runs the domains on two cores.
+// solve that runs the domains on two cores. Outside the anonymous namespace: Handles, declared
+// in the header, holds one.
 struct TwoDomainSolve {
   int first = 0, second = 0;   // the domains' sizes, in pivot order; the separator follows
   bool split = false;          // the last full factorization kept the domains apart
@@ -53,6 +56,8 @@ struct TwoDomainSolve {
   std::vector<double> second_to_separator;  // the second domain's updates of the separator's rows
   TwoCoreChoice two_cores;     // the domains side by side when that is faster
 };
+
+namespace {
 
 int two_domains_for_klu(int n, int* column_start, int* row_index, int* perm, klu_common* common) {
   const TwoDomainOrder order = two_domain_order(n, column_start, row_index, perm);

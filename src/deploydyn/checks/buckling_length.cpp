@@ -123,9 +123,10 @@ std::optional<std::array<MemberEnd, 2>> BucklingLengths::beam_member_ends(const 
   return std::array{end_condition((*ends)[0], chord), end_condition((*ends)[1], chord)};
 }
 
-std::array<BucklingLength, 2> BucklingLengths::of_axes(const std::vector<int>& beams,
-                                                       std::optional<double> given) const {
+std::array<BucklingLength, 2> BucklingLengths::of_axes(const std::vector<int>& beams, std::optional<double> given,
+                                                       const std::optional<std::array<double, 2>>& given_yz) const {
   if (given) return {BucklingLength{given, "given"}, BucklingLength{given, "given"}};
+  if (given_yz) return {BucklingLength{(*given_yz)[0], "given"}, BucklingLength{(*given_yz)[1], "given"}};
   const auto ends = end_nodes(beams);
   if (!ends) {
     const BucklingLength unknown{1.0, "ends not found (a branched or closed member)"};

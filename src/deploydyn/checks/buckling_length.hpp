@@ -47,9 +47,10 @@ class BucklingLengths {
   // beams, by kind (cables do not buckle: K is not asked of them).
   BucklingLength of(MemberKind kind, const std::vector<int>& elements, std::optional<double> given) const;
 
-  // 3D beam members: K about the member's local y and z (the first element's axes): both
-  // `given`, else from the end conditions about each axis.
-  std::array<BucklingLength, 2> of_axes(const std::vector<int>& beams, std::optional<double> given) const;
+  // 3D beam members: K about the member's local y and z (the first element's axes): `given`
+  // for both, else `given_yz` per axis, else from the end conditions about each axis.
+  std::array<BucklingLength, 2> of_axes(const std::vector<int>& beams, std::optional<double> given,
+                                        const std::optional<std::array<double, 2>>& given_yz) const;
 
   // The conditions at the two ends of a beam member, the nodes that only one of its elements
   // holds; empty when it has not exactly two (a branched or closed member).

@@ -84,7 +84,8 @@ double euler_load_N(double bending_stiffness_Nm2, double factor, double length_m
 // least EI (docs/theory.md, "Buckling length from the end conditions", V1a).
 void set_per_axis_buckling(const BucklingLengths& lengths, const Member& given, const std::array<double, 2>& stiffness_Nm2,
                            CheckedMember& member) {
-  const std::array<BucklingLength, 2> about = lengths.of_axes(given.elements, given.buckling_length_factor);
+  const std::array<BucklingLength, 2> about = lengths.of_axes(given.elements, given.buckling_length_factor,
+                                                                   given.buckling_length_factors_yz);
   std::array<double, 2> load_N{0.0, 0.0};
   for (std::size_t k = 0; k < 2; ++k) {
     if (about[k].factor && stiffness_Nm2[k] > 0.0) load_N[k] = euler_load_N(stiffness_Nm2[k], *about[k].factor, member.length_m);
@@ -172,9 +173,11 @@ std::vector<CheckedMember> checked_members(const Model& model) {
     for (std::size_t e = 0; e < listed.size(); ++e) {
       if (listed[e] != 0) continue;
       const int index = static_cast<int>(e);
-      members.push_back(checked_member(model, lengths, Member{.name = member_element_name(model, kind, index),
-                                                               .kind = kind,
-                                                               .elements = {index}}));
+      Member own;  // the element as a member of its own
+      own.name = member_element_name(model, kind, index);
+      own.kind = kind;
+      own.elements = {index};
+      members.push_back(checked_member(model, lengths, own));
     }
   }
   return members;

@@ -225,7 +225,7 @@ Verdict make_verdict(const Model& model, const MemberChecks& checks, const RunRe
                           h.first_exceeded_step_s, h.utilization_at_first, "", std::nullopt});
     }
     v.members.push_back({model.drivers[d].name, "driver", name(CheckKind::driver_effort), h.max, std::nullopt, "",
-                         {{CheckKind::driver_effort, h, ""}}});
+                         {{CheckKind::driver_effort, h, ""}}, std::nullopt});
   }
   // Latch and stop loads (V9): only in a model that gives a hinge such a capacity.
   for (const CheckKind kind : {CheckKind::latch_load, CheckKind::stop_load}) {
@@ -255,7 +255,7 @@ Verdict make_verdict(const Model& model, const MemberChecks& checks, const RunRe
       const auto listed = std::find_if(v.members.begin(), v.members.end(),
                                        [&](const MemberUtilization& m) { return m.kind == "hinge" && m.name == hinge.name; });
       MemberUtilization& entry = listed != v.members.end() ? *listed : v.members.emplace_back(
-                                                                           MemberUtilization{hinge.name, "hinge", "", 0.0, std::nullopt, "", {}});
+                                                                           MemberUtilization{hinge.name, "hinge", "", 0.0, std::nullopt, "", {}, std::nullopt});
       entry.checks.push_back({kind, h, ""});
       if (entry.governing.empty() || h.max > entry.max) {
         entry.governing = name(kind);

@@ -36,6 +36,7 @@
 #include "deploydyn/constraints/constraint.hpp"
 #include "deploydyn/elements/element_entry.hpp"
 #include "deploydyn/elements/evaluation_point.hpp"
+#include "deploydyn/model/time_function.hpp"
 
 namespace deploydyn {
 
@@ -83,6 +84,13 @@ struct HeatedBody {
   // A beam's local y as the file places it (unit, ⟂ its axis): the axes its through-depth
   // gradients take; zero for an element that does not bend under one.
   Eigen::Vector3d local_y = Eigen::Vector3d::Zero();
+};
+
+// An element's own thermal load over time (°C): the ΔT of its axis and, for a type that bends
+// under them (beams), the through-depth differences T(+y face) − T(−y face) and across z.
+struct ElementThermalLoad {
+  TimeFunction axis_C;
+  std::optional<TimeFunction> across_y_C, across_z_C;  // empty: the type does not bend under them
 };
 
 class ElementGroup {
@@ -157,6 +165,11 @@ class ElementKind {
   virtual void set_temperature_change(Model& model, const TimeFunction& change_C) const = 0;
   // The element as a body an environment heats; empty for one with no body of its own (a hinge).
   virtual std::optional<HeatedBody> heated_body(const Model& model, int element) const = 0;
+  // The element's own thermal load as the model holds it; empty for a type with no temperature
+  // (a hinge). The deployability window reads and rescales it (solvers/window_thermal_load.hpp).
+  virtual std::optional<ElementThermalLoad> thermal_load(const Model& model, int element) const = 0;
+  // Replaces the functions `thermal_load` gives, and nothing else; a type with none ignores it.
+  virtual void set_thermal_load(Model& model, int element, const ElementThermalLoad& load) const = 0;
   // Gives element `element` alone the temperature change ΔT(t) (°C): the environment's coupling
   // (thermal/thermal_coupling.hpp) sets it each step. A type with no temperature ignores it.
   virtual void set_element_temperature_change(Model& model, int element,

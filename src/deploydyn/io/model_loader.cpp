@@ -25,7 +25,6 @@
 #include "deploydyn/io/text_file.hpp"
 #include "deploydyn/io/yaml_reader.hpp"
 #include "deploydyn/model/dof_map.hpp"
-#include "deploydyn/model/hinge_to_ground_driver.hpp"
 #include "deploydyn/model/material_law.hpp"
 
 #include "deploydyn/results/history_layout.hpp"
@@ -843,7 +842,15 @@ class ModelReader {
       }
       if (const auto factor = spec.find("buckling_length_factor")) {
         if (member.kind == MemberKind::cable) factor->fail("applies to bars and beams; a cable does not buckle");
-        member.buckling_length_factor = factor->number(Sign::positive, "");
+        if (factor->is_scalar()) {
+          member.buckling_length_factor = factor->number(Sign::positive, "");
+        } else if (member.kind != MemberKind::beam || model_.dimension != 3) {
+          factor->fail("a list [K_y, K_z] gives K per bending axis of a 3D beam member; give one number K here");
+        } else {
+          const auto both = factor->items(2, 2, "[K_y, K_z]: K about the section's local y and z axes");
+          member.buckling_length_factors_yz = std::array{both[0].number(Sign::positive, ""),
+                                                         both[1].number(Sign::positive, "")};
+        }
       }
       if (const auto slack = spec.find("slack")) {
         if (member.kind != MemberKind::cable) {
@@ -1214,8 +1221,7 @@ class ModelReader {
                     "(a node's hinge to ground)");
     }
     if (support) {
-      driver.joint = kHingeToGround;
-      driver.node = hinge_to_ground_node(*support);
+      driver.support = hinge_to_ground(*support);
       driver.reading = reading(spec, {"angular_velocity", "angle"});
       return;
     }
@@ -1243,8 +1249,9 @@ class ModelReader {
   }
 
   // A revolute driver's `support` names the node of a hinge to ground: a support that leaves
-  // the node's rotation free about one axis (3D: its `axis`; 2D: rz not fixed).
-  int hinge_to_ground_node(const YamlValue& reference) const {
+  // the node's rotation free about one axis (3D: its `axis`; 2D: rz not fixed). Gives the
+  // support's index into Model::supports.
+  int hinge_to_ground(const YamlValue& reference) const {
     const int node = nodes_.find(reference);
     const std::string& name = model_.nodes[static_cast<std::size_t>(node)].name;
     const auto& supports = model_.supports;
@@ -1271,7 +1278,7 @@ class ModelReader {
                                  name, model_.dimension == 3 ? "'axis' in place of 'rotation'" :
                                                                "drop 'rotation' from 'fix'"));
     }
-    return node;
+    return static_cast<int>(found - supports.begin());
   }
 
   // A linear actuator between nodes A and B: their distance, from its initial value by the

@@ -2,7 +2,6 @@
 
 #include "deploydyn/elements/element_kinds.hpp"
 #include "deploydyn/model/dof_map.hpp"
-#include "deploydyn/model/hinge_to_ground_driver.hpp"
 #include "deploydyn/util/overloaded.hpp"
 #include "deploydyn/util/stop_point.hpp"
 
@@ -350,6 +349,11 @@ void emit_geometry(YAML::Emitter& out, const Model& model) {
         out << (member.slack_forbidden ? "forbidden" : "allowed");
       } else if (member.buckling_length_factor) {  // not given: it stays derived when read back
         emit_number(out, "buckling_length_factor", *member.buckling_length_factor);
+      } else if (member.buckling_length_factors_yz) {
+        emit_key(out, "buckling_length_factor");
+        out << YAML::Flow << YAML::BeginSeq;
+        for (const double k : *member.buckling_length_factors_yz) out << k;
+        out << YAML::EndSeq;
       }
       out << YAML::EndMap;
     }
@@ -456,9 +460,9 @@ void emit_boundary_conditions(YAML::Emitter& out, const Model& model) {
           out << kAxisNames[static_cast<std::size_t>(driver.direction)];
           break;
         case Driver::Kind::revolute:
-          if (drives_hinge_to_ground(driver)) {
+          if (driver.support) {
             emit_key(out, "support");
-            out << model.nodes[driver.node].name;
+            out << model.nodes[model.supports[static_cast<std::size_t>(*driver.support)].node].name;
             break;
           }
           emit_key(out, "joint");

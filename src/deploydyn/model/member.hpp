@@ -27,6 +27,9 @@ struct Member {
   // K given in the file: the buckling length is K times the member's length. Empty: K follows
   // from the member's end conditions (checks/buckling_length.hpp).
   std::optional<double> buckling_length_factor;
+  // 3D beam members: K given per local bending axis, [K_y, K_z] (buckling about the section's y
+  // and z axes). Empty, and no single K given: each axis's K from its own end conditions.
+  std::optional<std::array<double, 2>> buckling_length_factors_yz;
   bool slack_forbidden = false;         // cables: going slack fails the verdict
 };
 

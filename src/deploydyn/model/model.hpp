@@ -84,7 +84,7 @@ struct Driver {
                   // 3D); the bar stays free to stretch
     coordinate,   // prescribes one coordinate of a node
     revolute,     // turns node B of a pin joint relative to node A about the joint's axis
-                  // (nodes with rotations: beams); 1 equation
+                  // (nodes with rotations: beams), or a node about its hinge to ground; 1 equation
     hinge_angle,  // the angle from H→A to H→B about an axis (bars); 1 equation
     length,       // a linear actuator: the distance between two nodes; 1 equation
   };
@@ -96,7 +96,11 @@ struct Driver {
   Eigen::Vector3d axis = Eigen::Vector3d::UnitZ();
   int node = 0;     // coordinate: the node
   int direction = 0;  // coordinate: 0 = x, 1 = y, 2 = z
-  int joint = 0;    // revolute: index into Model::joints
+  int joint = 0;    // revolute: index into Model::joints (unused when `support` is given)
+  // revolute at a hinge to ground: index into Model::supports; the support's node turns about
+  // the support's axis relative to the fixed ground (docs/theory.md, "Revolute driver at a hinge
+  // to ground").
+  std::optional<int> support;
   std::array<int, 3> hinge_nodes{};  // hinge_angle: A, H, B
   std::array<int, 2> ends{};         // length: A, B, the actuator's two ends
   TimeFunction profile;

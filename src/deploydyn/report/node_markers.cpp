@@ -2,7 +2,6 @@
 
 #include <algorithm>
 
-#include "deploydyn/model/hinge_to_ground_driver.hpp"
 
 namespace deploydyn {
 
@@ -27,7 +26,9 @@ nlohmann::json node_markers(const Model& model) {
         break;
       case Driver::Kind::revolute:
         drivers.push_back(
-            {drives_hinge_to_ground(d) ? d.node : model.joints[static_cast<std::size_t>(d.joint)].nodes[1], d.name});
+            {d.support ? model.supports[static_cast<std::size_t>(*d.support)].node
+                       : model.joints[static_cast<std::size_t>(d.joint)].nodes[1],
+             d.name});
         break;
       case Driver::Kind::hinge_angle:
         drivers.push_back({d.hinge_nodes[1], d.name});

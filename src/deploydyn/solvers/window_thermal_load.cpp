@@ -8,16 +8,33 @@
 
 namespace deploydyn {
 
+namespace {
+
+// `loaded` with every element's own thermal load rewritten, through the element interface: the
+// axis ΔT(t) as `axis` makes it of the old one, each through-depth difference as `difference`.
+template <class Axis, class Difference>
+void rewrite_thermal_loads(Model& loaded, Axis axis, Difference difference) {
+  for (const ElementRef& e : all_elements(loaded)) {
+    std::optional<ElementThermalLoad> load = e.kind->thermal_load(loaded, e.index);
+    if (!load) continue;  // no temperature of its own (a hinge)
+    load->axis_C = axis(load->axis_C);
+    for (std::optional<TimeFunction>* across : {&load->across_y_C, &load->across_z_C}) {
+      if (*across) **across = difference(**across);
+    }
+    e.kind->set_thermal_load(loaded, e.index, *load);
+  }
+}
+
+}  // namespace
+
 Model with_window_load(const Model& model, WindowLoad load, double level) {
   Model loaded = model;
   if (load == WindowLoad::uniform) {
-    loaded.temperature_change_C = TimeFunction::constant(level);
-    for (const ElementKind* kind : element_kinds()) kind->set_temperature_change(loaded, loaded.temperature_change_C);
     // Uniform means uniform: a beam's through-depth difference is part of the model's own load.
-    for (BeamElement& beam : loaded.beams) {
-      if (beam.gradient_y_given) beam.temperature_gradient_y_C = TimeFunction::constant(0.0);
-      if (beam.gradient_z_given) beam.temperature_gradient_z_C = TimeFunction::constant(0.0);
-    }
+    loaded.temperature_change_C = TimeFunction::constant(level);
+    rewrite_thermal_loads(
+        loaded, [&](const TimeFunction&) { return loaded.temperature_change_C; },
+        [](const TimeFunction&) { return TimeFunction::constant(0.0); });
     return loaded;
   }
   if (model.environment) {
@@ -26,38 +43,31 @@ Model with_window_load(const Model& model, WindowLoad load, double level) {
         "temperatures come from a run's heat balance step by step: give them as ΔT tables, or take `uniform`");
   }
   loaded.temperature_change_C = scaled(model.temperature_change_C, level);
-  for (BarElement& bar : loaded.bars) bar.temperature_change_C = scaled(bar.temperature_change_C, level);
-  for (CableElement& cable : loaded.cables) cable.temperature_change_C = scaled(cable.temperature_change_C, level);
-  for (BeamElement& beam : loaded.beams) {
-    beam.temperature_change_C = scaled(beam.temperature_change_C, level);
-    beam.temperature_gradient_y_C = scaled(beam.temperature_gradient_y_C, level);
-    beam.temperature_gradient_z_C = scaled(beam.temperature_gradient_z_C, level);
-  }
+  const auto times_level = [&](const TimeFunction& f) { return scaled(f, level); };
+  rewrite_thermal_loads(loaded, times_level, times_level);
   return loaded;
 }
 
 ThermalPattern thermal_pattern(const Model& model) {
   ThermalPattern pattern;
   bool first = true;
+  const auto varies = [](const TimeFunction& f) { return !f.is_constant(); };
   for (const ElementRef& e : all_elements(model)) {
-    if (!e.kind->heated_body(model, e.index)) continue;  // no temperature of its own (a hinge)
-    const double dT = e.kind->temperature_change_C(model, e.index, 0.0);
+    const std::optional<ElementThermalLoad> load = e.kind->thermal_load(model, e.index);
+    if (!load) continue;  // no temperature of its own (a hinge)
+    const double dT = load->axis_C.value(0.0);
     const std::string& name = e.kind->element_name(model, e.index);
     if (first || dT < pattern.coldest_axis_C) pattern.coldest_axis_C = dT, pattern.coldest_axis_element = name;
     if (first || dT > pattern.hottest_axis_C) pattern.hottest_axis_C = dT, pattern.hottest_axis_element = name;
     first = false;
-  }
-  const auto varies = [](const TimeFunction& f) { return !f.is_constant(); };
-  for (const BarElement& bar : model.bars) pattern.varies_in_time |= varies(bar.temperature_change_C);
-  for (const CableElement& cable : model.cables) pattern.varies_in_time |= varies(cable.temperature_change_C);
-  for (const BeamElement& beam : model.beams) {
-    pattern.varies_in_time |= varies(beam.temperature_change_C) || varies(beam.temperature_gradient_y_C) ||
-                              varies(beam.temperature_gradient_z_C);
-    for (const TimeFunction* difference : {&beam.temperature_gradient_y_C, &beam.temperature_gradient_z_C}) {
-      const double d = difference->value(0.0);
+    pattern.varies_in_time |= varies(load->axis_C);
+    for (const std::optional<TimeFunction>* difference : {&load->across_y_C, &load->across_z_C}) {
+      if (!*difference) continue;
+      pattern.varies_in_time |= varies(**difference);
+      const double d = (*difference)->value(0.0);
       if (std::abs(d) > std::abs(pattern.largest_depth_difference_C)) {
         pattern.largest_depth_difference_C = d;
-        pattern.depth_difference_element = beam.name;
+        pattern.depth_difference_element = name;
       }
     }
   }

@@ -151,6 +151,12 @@ class BarKind final : public ElementKind {
   void set_temperature_change(Model& model, const TimeFunction& change_C) const override {
     for (BarElement& bar : model.bars) bar.temperature_change_C = change_C;
   }
+  std::optional<ElementThermalLoad> thermal_load(const Model& model, int element) const override {
+    return ElementThermalLoad{model.bars[element].temperature_change_C, {}, {}};
+  }
+  void set_thermal_load(Model& model, int element, const ElementThermalLoad& load) const override {
+    model.bars[element].temperature_change_C = load.axis_C;
+  }
   std::optional<HeatedBody> heated_body(const Model& model, int element) const override {
     return HeatedBody{model.bars[element].material, model.bars[element].section};
   }

@@ -223,6 +223,16 @@ class BeamKind final : public ElementKind {
   void set_temperature_change(Model& model, const TimeFunction& change_C) const override {
     for (BeamElement& beam : model.beams) beam.temperature_change_C = change_C;
   }
+  std::optional<ElementThermalLoad> thermal_load(const Model& model, int element) const override {
+    const BeamElement& beam = model.beams[element];
+    return ElementThermalLoad{beam.temperature_change_C, beam.temperature_gradient_y_C, beam.temperature_gradient_z_C};
+  }
+  void set_thermal_load(Model& model, int element, const ElementThermalLoad& load) const override {
+    BeamElement& beam = model.beams[element];
+    beam.temperature_change_C = load.axis_C;
+    if (load.across_y_C) beam.temperature_gradient_y_C = *load.across_y_C;
+    if (load.across_z_C) beam.temperature_gradient_z_C = *load.across_z_C;
+  }
   std::optional<HeatedBody> heated_body(const Model& model, int element) const override {
     const BeamElement& beam = model.beams[element];
     HeatedBody body{beam.material, beam.section};

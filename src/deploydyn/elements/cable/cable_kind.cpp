@@ -212,6 +212,12 @@ class CableKind final : public ElementKind {
   void set_temperature_change(Model& model, const TimeFunction& change_C) const override {
     for (CableElement& cable : model.cables) cable.temperature_change_C = change_C;
   }
+  std::optional<ElementThermalLoad> thermal_load(const Model& model, int element) const override {
+    return ElementThermalLoad{model.cables[element].temperature_change_C, {}, {}};
+  }
+  void set_thermal_load(Model& model, int element, const ElementThermalLoad& load) const override {
+    model.cables[element].temperature_change_C = load.axis_C;
+  }
   std::optional<HeatedBody> heated_body(const Model& model, int element) const override {
     return HeatedBody{model.cables[element].material, model.cables[element].section};
   }

@@ -25,6 +25,8 @@ class HingeKind final : public ElementKind {
   // A hinge has no temperature of its own; its friction feels ΔT through the bar A–H.
   double temperature_change_C(const Model&, int, double) const override { return 0.0; }
   void set_temperature_change(Model&, const TimeFunction&) const override {}
+  std::optional<ElementThermalLoad> thermal_load(const Model&, int) const override { return std::nullopt; }
+  void set_thermal_load(Model&, int, const ElementThermalLoad&) const override {}
   std::optional<HeatedBody> heated_body(const Model&, int) const override { return std::nullopt; }
   void set_element_temperature_change(Model&, int, const TimeFunction&) const override {}
   void add_node_unknowns(const Model&, std::vector<std::vector<std::string>>&) const override {}
