@@ -29,6 +29,7 @@ ROOT = pathlib.Path(__file__).resolve().parent.parent
 sys.path.insert(0, str(ROOT / "python" / "deploydyn"))
 import result_folder  # noqa: E402
 from demo_verdict import print_verdicts  # noqa: E402
+from plot_legend import legend_beside  # noqa: E402
 
 MODEL = ROOT / "examples" / "boom" / "boom.yaml"
 CASES = (("hot", 130.0), ("normal", 0.0), ("cold", -170.0))
@@ -150,7 +151,7 @@ def plot(results, analyses, out_root):
         return
     styles = ("-", "--", "-.", ":")
     # Openings against time.
-    figure, axes = plt.subplots(figsize=(7.5, 4.5))
+    figure, axes = plt.subplots(figsize=(10, 4.5))
     for r, a in done:
         history, col = a["history"], a["col"]
         t = [row[col["t"]] for row in history.values]
@@ -162,7 +163,7 @@ def plot(results, analyses, out_root):
     axes.set_xlabel("time (s)")
     axes.set_ylabel("bay opening (°): 10 folded, 90 latched")
     axes.set_title("four-bay mast: hinge openings")
-    axes.legend(fontsize=7, ncol=3, loc="lower right")
+    legend_beside(axes, fontsize=7)
     figure.tight_layout()
     figure.savefig(out / "boom_angles.png", dpi=120)
     plt.close(figure)
@@ -182,14 +183,14 @@ def plot(results, analyses, out_root):
         axes.axvline(90.0, color="grey", linewidth=0.8)
         axes.set_xlabel("bay opening (°)")
         axes.set_title(f"{r['case']} ({r['dT']:+.0f} °C)")
-        axes.legend(fontsize=7, loc="upper right")
+    legend_beside(panels[0][-1], fontsize=7)  # the same lines in every panel
     panels[0][0].set_ylabel("torque (N·m)")
     figure.suptitle("spring torque against the friction the pin holds (μ r N)")
     figure.tight_layout()
     figure.savefig(out / "boom_torques.png", dpi=120)
     plt.close(figure)
     # Final shapes.
-    figure, axes = plt.subplots(figsize=(5.5, 6))
+    figure, axes = plt.subplots(figsize=(8, 6))
     for r, a in done:
         row = a["history"].values[-1]
         col = a["col"]
@@ -206,7 +207,7 @@ def plot(results, analyses, out_root):
     axes.set_xlabel("x (m)")
     axes.set_ylabel("y (m)")
     axes.set_title("final shapes")
-    axes.legend(fontsize=8, loc="upper right")
+    legend_beside(axes)
     figure.tight_layout()
     figure.savefig(out / "boom_shapes.png", dpi=120)
     plt.close(figure)

@@ -23,6 +23,7 @@ import numpy as np
 
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
+from plot_legend import legend_beside  # noqa: E402
 
 
 def read_rows(path):
@@ -54,7 +55,7 @@ def histogram(axis, values, label, unit, limit=np.nan, percentiles=None):
         axis.axvline(limit, color="C3", label=f"limit {limit:.4g} {unit}: P(exceed) = {exceed:.3g}")
     axis.set_xlabel(f"{label} ({unit})")
     axis.set_ylabel("cases")
-    axis.legend(fontsize="x-small")
+    legend_beside(axis, fontsize="x-small")
 
 
 def statistics_by_key(rows):
@@ -73,7 +74,7 @@ def plot(folder, out, formats):
     drawn = [row for row in drawn_cases(study_rows, samples_rows) if row["status"] == "completed"]
     nominal = next((row for row in study_rows if row["case"] == "nominal"), None)
 
-    figure, axes = plt.subplots(2, 2, figsize=(12, 8.5))
+    figure, axes = plt.subplots(2, 2, figsize=(15, 8.5))
     n_failed = len(samples_rows) - len(drawn)
     figure.suptitle(f"{folder.name}: {len(samples_rows)} drawn cases, {len(drawn)} completed"
                     + (f", {n_failed} did not deploy" if n_failed else ""))
@@ -89,7 +90,7 @@ def plot(folder, out, formats):
     axes[0, 1].set_xlabel("peak |driver effort| (N·m or N)")
     axes[0, 1].set_ylabel("cases")
     if drivers:
-        axes[0, 1].legend(fontsize="x-small")
+        legend_beside(axes[0, 1], fontsize="x-small")
 
     shape = statistics.get(("shape_error", "*"))
     histogram(axes[1, 0], [number(r["shape_error"]) for r in drawn], "final shape error from nominal", "m",
@@ -111,11 +112,11 @@ def plot(folder, out, formats):
         axis.set_ylabel("peak |axial force| (N)")
         if len(members) <= 30:
             axis.set_xticks(x, [r["item"] for r in members], rotation=90, fontsize="xx-small")
-        axis.legend(fontsize="x-small")
+        legend_beside(axis, fontsize="x-small")
     if nominal and nominal["peak_force"]:
         axes[0, 0].axvline(number(nominal["peak_force"]), color="k", linestyle="--", linewidth=0.8,
                            label="nominal")
-        axes[0, 0].legend(fontsize="x-small")
+        legend_beside(axes[0, 0], fontsize="x-small")
     figure.tight_layout()
     out = pathlib.Path(out or folder)
     out.mkdir(parents=True, exist_ok=True)

@@ -21,6 +21,7 @@ matplotlib.use("Agg")
 import matplotlib.colors as colors  # noqa: E402  (after choosing the backend)
 import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
+from plot_legend import legend_below  # noqa: E402
 
 MARKERS = {"limit_point": ("x", "jam (limit point)"), "bifurcation": ("^", "snap (bifurcation)"),
            "singular_constraints": ("s", "dead centre")}
@@ -74,8 +75,7 @@ def draw(folder, title, out):
     scaled = summary.get("load") == "model"
     ax.set_ylabel("scale μ of the model's thermal load" if scaled else "uniform temperature change ΔT (°C)")
     ax.set_title(title or f"deployability window: {folder.name}")
-    if ax.get_legend_handles_labels()[0]:
-        ax.legend(loc="upper center", bbox_to_anchor=(0.5, -0.12), ncol=2, fontsize=8)
+    legend_below(ax)
     fig.savefig(out, dpi=120)
     plt.close(fig)
     print(f"window: {out}", file=sys.stderr)

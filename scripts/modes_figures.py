@@ -24,6 +24,7 @@ import yaml
 from matplotlib.collections import LineCollection
 
 from structure_view import axis_labels, project, segments
+from plot_legend import legend_beside
 
 MAX_SHAPE_ROWS = 4     # driver positions shown in mode_shapes
 MAX_SHAPE_MODES = 4    # modes shown per position
@@ -81,7 +82,7 @@ def plot_frequencies(ax, runs, units=None):
     ax.set_xlabel(xlabel)
     ax.set_ylabel("frequency f (Hz); < 0: −√|ω²|/2π")
     ax.grid(True, alpha=0.3)
-    ax.legend(fontsize=8, loc="upper left", bbox_to_anchor=(1.01, 1.0), borderaxespad=0.0)
+    legend_beside(ax)
 
 
 def vtu_array(piece, name):

@@ -12,6 +12,8 @@ force.<element>, ...; output.select applies).
 """
 import numpy as np
 
+from plot_legend import legend_beside
+
 EVENT_COLOURS = {"limit_point": "tab:red", "bifurcation": "tab:purple"}
 
 
@@ -73,7 +75,7 @@ def plot_path(fig, runs):
     eigen_axis.set_ylabel("lowest eigenvalues (N/m); < 0: unstable")
     for ax in axes:
         ax.grid(True, alpha=0.3)
-        ax.legend(fontsize=8, loc="upper left", bbox_to_anchor=(1.01, 1.0), borderaxespad=0.0)
+        legend_beside(ax)
     return True
 
 

@@ -40,6 +40,7 @@ ROOT = pathlib.Path(__file__).resolve().parent.parent
 # the scripts run without the built module.
 sys.path.insert(0, str(ROOT / "python" / "deploydyn"))
 import result_folder  # noqa: E402
+from plot_legend import legend_beside  # noqa: E402
 
 ALPHA = 2.0e-5                                                    # 1/°C, paper §3
 CASES = (("hot", 130.0), ("normal", 0.0), ("cold", -170.0))      # paper Eq. (22)
@@ -205,8 +206,7 @@ def _draw_panel(ax, panel, runs, data):
         ax.set_yscale("symlog", linthresh=panel.linthresh)
     ax.set_ylabel(panel.ylabel)
     ax.grid(True, alpha=0.3)
-    ax.legend(fontsize=8, loc="upper left", bbox_to_anchor=(1.01, 1.0), borderaxespad=0.0,
-              title=textwrap.fill(panel.note, 32) if panel.note else None, title_fontsize=8)
+    legend_beside(ax, title=textwrap.fill(panel.note, 32) if panel.note else None, title_fontsize=8)
 
 
 def plot_columns(out_png, runs, panels, title, ncols=1, xlabel="time t (s)", also=()):

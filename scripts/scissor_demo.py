@@ -26,6 +26,7 @@ ROOT = pathlib.Path(__file__).resolve().parent.parent
 sys.path.insert(0, str(ROOT / "python" / "deploydyn"))
 import result_folder  # noqa: E402
 from demo_verdict import print_verdicts  # noqa: E402
+from plot_legend import legend_beside  # noqa: E402
 
 ALPHA = 1.2e-5  # 1/°C, steel: generators/scissor.hpp
 CASES = (("hot", 130.0), ("normal", 0.0), ("cold", -170.0))
@@ -113,7 +114,7 @@ def print_table(structure, results):
 
 def plot(structure, results, out_root):
     """Deployed shapes (every beam as a line) and the actuator torque, per case."""
-    figure, (shape_axes, torque_axes) = plt.subplots(1, 2, figsize=(12, 4.8))
+    figure, (shape_axes, torque_axes) = plt.subplots(1, 2, figsize=(14, 4.8))
     drawn = False
     for r in results:
         if not r["ok"]:
@@ -147,11 +148,11 @@ def plot(structure, results, out_root):
     shape_axes.set_xlabel("x (m)")
     shape_axes.set_ylabel("y (m)")
     shape_axes.set_title("deployed shape")
-    shape_axes.legend(loc="best", fontsize=8)
+    legend_beside(shape_axes)
     torque_axes.set_xlabel("time (s)")
     torque_axes.set_ylabel("actuator torque (kN·m)")
     torque_axes.set_title("revolute actuator at a central hinge")
-    torque_axes.legend(loc="best", fontsize=8)
+    legend_beside(torque_axes)
     figure.suptitle(STRUCTURES[structure][0])
     figure.tight_layout()
     out = pathlib.Path(out_root) / f"{structure}.png"

@@ -68,3 +68,17 @@ def test_not_a_sampled_study_is_refused(tmp_path):
     done = subprocess.run(["/usr/bin/python3", str(SCRIPT), str(tmp_path)], capture_output=True, text=True)
     assert done.returncode == 2
     assert "not a sampled study" in done.stderr
+
+
+def test_no_legend_covers_a_histogram(sampled_study, tmp_path, monkeypatch):
+    """Issue 31: the four panels' legends sit beside their axes, over none of them."""
+    import sys
+    sys.path.insert(0, str(SCRIPT.parent))
+    import deploydyn_study_plot
+    from plot_legend import legends_over_axes
+    figures = []
+    monkeypatch.setattr(deploydyn_study_plot.plt, "close", lambda fig=None: figures.append(fig))
+    deploydyn_study_plot.plot(sampled_study, tmp_path, ["png"])
+    assert len(figures) == 1
+    assert sum(ax.get_legend() is not None for ax in figures[0].axes) >= 3
+    assert legends_over_axes(figures[0]) == []
