@@ -3,8 +3,8 @@
 // run's is (runs/result_folder.hpp): its lock for the whole computation, so that a second
 // window (or run) into it is refused; window.json saying "running" from the start; then
 //   window.csv   one row per sample: t (s), dT (°C; the scale μ with the model's load),
-//                lowest_eigenvalue (N/m),
-//                peak_axial_force (N), peak_mstrain, driver_effort (N·m or N), branch
+//                lowest_eigenvalue (N/m), peak_axial_force (N), peak_mstrain, driver_effort
+//                (N·m or N), branch
 //                ("traced": on a path from the stress-free state at ΔT = 0, up to its first
 //                event; "stressed": the stressed equilibrium of a level that jams, at its stop)
 //   window.json  how it was made (the model file, its --set overrides, the load swept
@@ -17,9 +17,9 @@
 //                (jam or snap: kind, t), peak |axial force|, peak mechanical strain, peak
 //                driver effort and lowest stability eigenvalue on the traced branch ("branch":
 //                "traced"); where it jams, "stressed": the stressed equilibrium it sits on
-//                (t, peaks, driver effort, eigenvalue, axial force per element), and its verdict (as a
-//                run's summary.json has it, of its member checks along the deployment;
-//                checks/window_verdicts.hpp).
+//                (t, peaks, driver effort, eigenvalue, axial force per element); and its
+//                verdict (as a run's summary.json has it, of its member checks along the
+//                deployment; checks/window_verdicts.hpp).
 // The deployments' path points are samples in window.csv too (rows at their ΔT level).
 
 #include <filesystem>
