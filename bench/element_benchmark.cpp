@@ -27,7 +27,9 @@ enum ElementType { kBar = 0, kBeam = 1 };
 Model chain(ElementType type, int dimension) {
   Model model;
   model.dimension = dimension;
-  model.materials.push_back({"steel", 2.1e11, 1.2e-5, 7850.0, {}});
+  Material steel;
+  steel.name = "steel", steel.youngs_modulus_Pa = 2.1e11, steel.expansion_per_C = 1.2e-5, steel.density_kg_m3 = 7850.0;
+  model.materials.push_back(steel);
   model.temperature_change_C = TimeFunction::constant(50.0);
   for (int i = 0; i <= kChainElements; ++i) {
     const double s = 0.1 * i;

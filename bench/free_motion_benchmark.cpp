@@ -39,13 +39,15 @@ void BM_CanopyNullVectorSparse(benchmark::State& state) {
   const Model model = canopy_without_a_support();
   const Assembler assembler(model);
   const std::unique_ptr<LinearSystem> system = singular_iteration_matrix(assembler);
-  Eigen::VectorXd v;
-  for (auto _ : state) benchmark::DoNotOptimize(v = system->null_vector());
+  Eigen::MatrixXd basis;
+  for (auto _ : state) benchmark::DoNotOptimize(basis = system->null_vectors());
   state.counters["unknowns"] = system->size();
-  state.counters["relative_residual"] = (system->to_dense() * v).norm() / system->to_dense().cwiseAbs().maxCoeff();
+  state.counters["null_space_dimension"] = static_cast<double>(basis.cols());
+  state.counters["relative_residual"] =
+      (system->to_dense() * basis).colwise().norm().maxCoeff() / system->to_dense().cwiseAbs().maxCoeff();
 }
 
-// What LinearSystem::null_vector did before: the right singular vector of the smallest singular
+// What LinearSystem::null_vectors did before (for one vector): the right singular vector of the smallest singular
 // value of the dense matrix.
 void BM_CanopyNullVectorDenseSvd(benchmark::State& state) {
   const Model model = canopy_without_a_support();
