@@ -184,7 +184,9 @@ void expect_equal_models(const Model& a, const Model& b) {
         break;
       case Driver::Kind::revolute:
         EXPECT_EQ(x.support, y.support);
-        if (!x.support) EXPECT_EQ(x.joint, y.joint);
+        if (!x.support) {
+          EXPECT_EQ(x.joint, y.joint);
+        }
         break;
       case Driver::Kind::hinge_angle:
         EXPECT_EQ(x.hinge_nodes, y.hinge_nodes);

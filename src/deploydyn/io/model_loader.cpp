@@ -18,7 +18,7 @@
 #include <tuple>
 #include <unordered_map>
 
-#include "deploydyn/assembly/assembler.hpp"
+#include "deploydyn/assembly/model_constraints.hpp"
 #include "deploydyn/assembly/rayleigh_damping.hpp"
 #include "deploydyn/elements/element_kinds.hpp"
 #include "deploydyn/io/model_keys.hpp"
@@ -1514,11 +1514,14 @@ class ModelReader {
     if (const auto mass = spec.find("mass")) read_mass(*mass);
     if (const auto solver = spec.find("linear_solver")) read_linear_solver(*solver);
     if (const auto newton = spec.find("newton")) read_newton(*newton);
-    // The constrained system's size when no constraint is redundant (solvers/modal_analysis.hpp).
-    const Assembler assembler(model_);
-    const int n_free = assembler.n_dofs() - assembler.n_equations();
-    const std::string size = fmt::format("the model has {} coordinates and {} constraint equations",
-                                         assembler.n_dofs(), assembler.n_equations());
+    // The constrained system's size when no constraint is redundant (solvers/modal_analysis.hpp),
+    // counted from the constraints alone, without the element groups. Hinge locks are not among
+    // them: they hold only in some modes (the modal analysis counts them when they do).
+    const DofMap dofs(model_);
+    const int n_dofs = dofs.n_dofs(), n_equations = make_model_constraints(model_, dofs).n_equations();
+    const int n_free = n_dofs - n_equations;
+    const std::string size =
+        fmt::format("the model has {} coordinates and {} constraint equations", n_dofs, n_equations);
     if (n_free < 1) spec.fail(size + ": no motion is left to vibrate");
     if (const auto modes = spec.find("modes")) {
       modal.n_modes = modes->integer(1);
