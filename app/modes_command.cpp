@@ -79,12 +79,13 @@ int modes_command(const ModesArguments& arguments, const std::atomic<bool>& stop
   ModesStart start;
   if (!arguments.hinges.empty()) start.hinges = kHingeHolds.find(arguments.hinges).value();
   start.from_folder = arguments.from_folder;
+  // Hinge locks count when they hold (--hinges held or latched: the modal analysis checks again).
   const Assembler assembler(model);
-  if (const int n_free = assembler.n_dofs() - assembler.n_equations(); modal.n_modes > n_free) {
+  const int n_equations = assembler.n_equations_in_force();
+  if (const int n_free = assembler.n_dofs() - n_equations; modal.n_modes > n_free) {
     throw InputError(fmt::format("--count {}", modal.n_modes), 0, 0, "",
                      fmt::format("{} has {} coordinates and {} constraint equations: at most {} modes",
-                                 arguments.model_file, assembler.n_dofs(), assembler.n_equations(),
-                                 std::max(n_free, 0)));
+                                 arguments.model_file, assembler.n_dofs(), n_equations, std::max(n_free, 0)));
   }
   fmt::print("{:>10} {:>5} {:>16} {:>14}\n", "t (s)", "mode", "ω² (rad²/s²)", "f (Hz)");
   const auto print = [](const EquilibriumModes& at) {

@@ -163,6 +163,50 @@ class ModelBuilder:
         where = "ModelBuilder.element"
         return self._element(where, name, checked.name(where, "type", type), {}, {}, fields)
 
+    def cross_section(self, name, shape, **dimensions):
+        """A named cross-section that bars, beams and cables take with `section="name"`
+        (docs/model-format.md, `sections`), dimensions in metres: shape "circular_tube"
+        (outer_diameter, wall_thickness), "rectangular_tube" (width, height, wall_thickness),
+        "circle" (diameter) or "rectangle" (width, height). Area, second moments, torsion
+        constant and section moduli follow from it. Checked at `build`."""
+        where = "ModelBuilder.cross_section"
+        spec = {"shape": checked.text(where, "shape", shape)}
+        for key, value in dimensions.items():
+            spec[key] = checked.number(where, key, value)
+        self._section("sections")[checked.name(where, "name", name)] = spec
+        return self
+
+    def member(self, name, elements, buckling_length_factor=None, slack=None):
+        """Elements of one type that form one structural part, which the member checks treat as
+        one (docs/model-format.md, `members`): a tube meshed as several beams, joined end to end.
+        Bars and beams: `buckling_length_factor` K (> 0; a 3D beam member may give [K_y, K_z],
+        K about the section's local y and z); not given, K follows from the member's ends.
+        Cables: `slack` "allowed" (default) or "forbidden" (going slack fails the verdict)."""
+        where = "ModelBuilder.member"
+        spec = {"elements": checked.names(where, "elements", elements)}
+        if buckling_length_factor is not None:
+            if checked.is_number(buckling_length_factor):
+                spec["buckling_length_factor"] = checked.number(where, "buckling_length_factor", buckling_length_factor)
+            else:
+                spec["buckling_length_factor"] = checked.numbers(where, "buckling_length_factor", buckling_length_factor)
+        if slack is not None:
+            spec["slack"] = checked.text(where, "slack", slack)
+        self._section("members")[checked.name(where, "name", name)] = spec
+        return self
+
+    def checks(self, clearance=None, clearance_m=None):
+        """The clearance watch (docs/model-format.md, `checks`): `clearance` False turns it off;
+        `clearance_m` (m) the least distance members must keep, a violation failing the verdict."""
+        where = "ModelBuilder.checks"
+        spec = self._section("checks")
+        if clearance is not None:
+            if not isinstance(clearance, bool):
+                raise TypeError(f"{where}: clearance must be True or False, not {checked.shown(clearance)}")
+            spec["clearance"] = clearance
+        if clearance_m is not None:
+            spec["clearance_m"] = checked.number(where, "clearance_m", clearance_m)
+        return self
+
     def support(self, node, fix=None, axis=None, offset=None):
         """Fix a node's coordinates: all axes, or those in `fix` (e.g. ["y"], or "y"); "rotation"
         in `fix` clamps a beam's node. On a 3D beam node, `axis` [ax, ay, az] makes it a hinge

@@ -412,3 +412,50 @@ def test_a_beam_given_by_its_sectional_values_bends_as_timoshenko(dimension):
     assert result[f"y.N{n}"][-1] == pytest.approx(1 / (3 * ei_z) + 1 / ga_y, rel=2e-3)
     if dimension == 3:
         assert result[f"z.N{n}"][-1] == pytest.approx(1 / (3 * ei_y) + 1 / ga_z, rel=2e-3)
+
+
+def test_a_member_of_a_tube_section_is_checked_against_its_euler_load():
+    """Issue 27 in the builder: a heated tube strut between pins, one member with a given K,
+    carries N = E A α ΔT against N_cr = π² E I / (K L)² and its stress N/A against f_y."""
+    d, t, dT, K, f_y = 0.02, 0.002, 50.0, 0.7, 3.55e8
+    area = math.pi / 4 * (d**2 - (d - 2 * t)**2)
+    inertia = math.pi / 64 * (d**4 - (d - 2 * t)**4)
+    model = (deploydyn.ModelBuilder("heated strut")
+             .node("A", 0, 0).node("B", 1, 0)
+             .material("steel", E=E, alpha=ALPHA, density=7850, yield_strength=f_y)
+             .cross_section("tube", "circular_tube", outer_diameter=d, wall_thickness=t)
+             .element("s", "bar", nodes=["A", "B"], section="tube", material="steel")
+             .member("strut", ["s"], buckling_length_factor=K)
+             .support("A").support("B")
+             .thermal(dT)
+             .checks(clearance=False)
+             .analysis(type="static", end=1.0, step=0.5)
+             .build())
+    verdict = model.run(check=True).summary["verdict"]
+    strut = verdict["members"]["strut"]
+    assert strut["buckling_length_factor"] == K and strut["buckling_length_source"] == "given"
+    euler = math.pi**2 * E * inertia / K**2
+    assert strut["buckling"]["utilization"] == pytest.approx(E * area * ALPHA * dT / euler, rel=1e-9)
+    assert strut["stress"]["utilization"] == pytest.approx(E * ALPHA * dT / f_y, rel=1e-9)
+    assert verdict["deploys"] and "clearance" not in verdict["checks_run"]
+
+
+def test_a_3d_beam_member_takes_k_per_axis_and_a_cable_member_its_slack_rule():
+    builder = (deploydyn.ModelBuilder("boom")
+               .node("A", 0, 0, 0).node("B", 1, 0, 0).node("C", 2, 0, 0)
+               .material("steel", E=E, density=7850)
+               .element("b1", "beam", nodes=["A", "B"], area=AREA, inertia_y=1e-8, inertia_z=2e-8,
+                        torsion=2e-8, material="steel")
+               .element("b2", "beam", nodes=["B", "C"], area=AREA, inertia_y=1e-8, inertia_z=2e-8,
+                        torsion=2e-8, material="steel")
+               .member("boom", ["b1", "b2"], buckling_length_factor=[0.7, 2.1])
+               .support("A", fix=["x", "y", "z", "rotation"]))
+    assert "buckling_length_factor: [0.7, 2.1]" in builder.build().to_yaml()
+    with pytest.raises(TypeError, match="ModelBuilder.member: elements"):
+        builder.member("bad", "b1")
+    builder.node("D", 2, 1, 0).element("c", "cable", nodes=["C", "D"], area=1e-5, material="steel")
+    assert "guy: {elements: [c], slack: forbidden}" in builder.member("guy", ["c"], slack="forbidden").build().to_yaml()
+    strut = (deploydyn.ModelBuilder("strut").node("A", 0, 0).node("B", 1, 0).material("steel", E=E)
+             .bar("s", "A", "B", area=AREA, material="steel", mass=1.0).support("A").support("B"))
+    with pytest.raises(deploydyn.InputError, match="members.stay.slack: applies to cables"):
+        strut.member("stay", ["s"], slack="forbidden").build()

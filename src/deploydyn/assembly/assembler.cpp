@@ -140,6 +140,14 @@ Eigen::VectorXd Assembler::initial_coordinates() const {
   return q;
 }
 
+int Assembler::n_equations_in_force() const {
+  int n = n_equations_;
+  for (const auto& c : constraints_) {
+    if (c->switchable() && !c->active()) n -= c->n_equations();
+  }
+  return n;
+}
+
 int Assembler::n_rigid_body_conditions() const {
   int n = 0;
   for (const auto& group : groups_) n += group->n_rigid_body_conditions();

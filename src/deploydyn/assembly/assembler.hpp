@@ -53,6 +53,9 @@ class Assembler {
   int n_rigid_body_conditions() const;
   // Rows of the switched constraints (hinge locks), the last of the n_equations().
   int n_switched_equations() const { return n_switched_equations_; }
+  // Rows that hold in the history in force: n_equations() less the switched ones that are off
+  // (a free hinge's lock).
+  int n_equations_in_force() const;
 
   Eigen::VectorXd initial_coordinates() const;
 

@@ -351,9 +351,8 @@ void emit_geometry(YAML::Emitter& out, const Model& model) {
         emit_number(out, "buckling_length_factor", *member.buckling_length_factor);
       } else if (member.buckling_length_factors_yz) {
         emit_key(out, "buckling_length_factor");
-        out << YAML::Flow << YAML::BeginSeq;
-        for (const double k : *member.buckling_length_factors_yz) out << k;
-        out << YAML::EndSeq;
+        const auto [k_y, k_z] = *member.buckling_length_factors_yz;
+        emit_numbers(out, {k_y, k_z});
       }
       out << YAML::EndMap;
     }

@@ -43,11 +43,13 @@ Eigen::VectorXd ModalResult::frequencies_Hz() const {
 ModalResult natural_modes(const Assembler& assembler, const MotionState& equilibrium,
                           LinearSystem& system, const ModalOptions& options) {
   const int n_dofs = assembler.n_dofs();
-  const int n_free = n_dofs - assembler.n_equations();
+  // A hinge's lock counts only while it holds (a free hinge's turn is a motion that vibrates).
+  const int n_equations = assembler.n_equations_in_force();
+  const int n_free = n_dofs - n_equations;
   if (options.n_modes < 1 || options.n_modes > n_free) {
     throw std::invalid_argument(fmt::format(
-        "{} modes asked for; the model has {} coordinates and {} constraint equations, so at most {}",
-        options.n_modes, n_dofs, assembler.n_equations(), std::max(n_free, 0)));
+        "{} modes asked for; the model has {} coordinates and {} constraint equations in force, so at most {}",
+        options.n_modes, n_dofs, n_equations, std::max(n_free, 0)));
   }
   ModalResult result;
   const double stiffness_scale = assembler.stiffness_scale(equilibrium.q, equilibrium.time_s);
