@@ -60,14 +60,43 @@ TEST(StepController, NewtonFailuresHalveTheStepDownToItsLimit) {
   StepController steps(options(0.01, 0.1, true));
   double h = 0.01;
   int cuts = 0;
-  while (steps.cut_after_failure(h)) {
+  while (steps.cut_after_failure(0.0, h)) {
     h = steps.next_step(0.0);
     ++cuts;
   }
   EXPECT_EQ(cuts, 6);  // 0.01 / 2⁶ = 1.6e-4 ≥ min_step 1e-4 > 0.01 / 2⁷
   EXPECT_GE(h, 1e-4);
   StepController fixed(options(0.01, 0.1, false));
-  EXPECT_FALSE(fixed.cut_after_failure(0.01)) << "fixed steps are not cut";
+  EXPECT_FALSE(fixed.cut_after_failure(0.0, 0.01)) << "fixed steps are not cut";
+}
+
+// Where cables may make Newton cycle: a failed fixed step is taken as sub-steps that end where
+// it would have ended, and the model's step resumes there; at most kMaxCutsOfAFixedStep cuts.
+TEST(StepController, FixedStepsOfCablesAreCutAndResumeAtTheFailedStepsEnd) {
+  StepController steps(options(0.01, 0.1, false), true);
+  double t = 0.02;
+  ASSERT_TRUE(steps.cut_after_failure(t, 0.01));
+  EXPECT_NEAR(steps.next_step(t), 0.005, 1e-15);
+  ASSERT_TRUE(steps.cut_after_failure(t, 0.005));
+  // Three sub-steps of 2.5 ms; the third ends at the failed step's end, 0.03 s.
+  for (int i = 0; i < 3; ++i) {
+    const double h = steps.next_step(t);
+    EXPECT_NEAR(h, 0.0025, 1e-15) << "sub-step " << i;
+    EXPECT_TRUE(steps.accept(h, 1e9));
+    t += h;
+  }
+  // A failure within the sub-steps cuts them further; their end stays 0.03 s.
+  ASSERT_TRUE(steps.cut_after_failure(t, 0.0025));
+  EXPECT_NEAR(steps.next_step(t), 0.00125, 1e-15);
+  t += 0.00125;
+  EXPECT_NEAR(steps.next_step(t), 0.00125, 1e-15);
+  t += 0.00125;
+  EXPECT_NEAR(t, 0.03, 1e-15);
+  EXPECT_NEAR(steps.next_step(t), 0.01, 1e-15) << "the model's step resumes";
+
+  int cuts = 0;
+  for (double h = 0.01; steps.cut_after_failure(t, h); h = steps.next_step(t)) ++cuts;
+  EXPECT_EQ(cuts, StepController::kMaxCutsOfAFixedStep);
 }
 
 TEST(StepController, AStepAtTheSmallestSizeIsKeptWhateverItsError) {

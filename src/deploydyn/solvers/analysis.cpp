@@ -458,7 +458,8 @@ RunReport run_analysis(const Assembler& assembler, RecordSink& sink, const RunCo
   if (options.end_when == EndCondition::settled && dynamic) settling.emplace(assembler, options.settling);
 
   const std::unique_ptr<TimeIntegrator> integrator = make_time_integrator(assembler, options);
-  StepController steps(options);
+  // Cables may make Newton cycle between slack and taut: their fixed steps may be cut.
+  StepController steps(options, dynamic && assembler.model().n_cables() > 0);
   if (start != nullptr) {
     steps.restore(start->steps);
     integrator->restore(start->integrator_memory);
@@ -502,7 +503,7 @@ RunReport run_analysis(const Assembler& assembler, RecordSink& sink, const RunCo
     report.max_iterations_per_step = std::max(report.max_iterations_per_step, newton.iterations);
     if (!newton.converged) {
       switching.drop_events();
-      if (steps.cut_after_failure(step)) {
+      if (steps.cut_after_failure(state.time_s, step)) {
         ++report.rejected_steps;
         continue;
       }

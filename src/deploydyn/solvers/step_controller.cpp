@@ -16,8 +16,9 @@ constexpr double kSliver = 1e-6;
 
 }  // namespace
 
-StepController::StepController(const AnalysisOptions& options)
+StepController::StepController(const AnalysisOptions& options, bool cut_fixed_steps)
     : adaptive_(options.adaptive.enabled && options.type == AnalysisType::dynamic),
+      cut_fixed_steps_(cut_fixed_steps),
       tolerance_m_(options.adaptive.tolerance_m),
       min_step_s_(options.adaptive.min_step_s),
       end_s_(options.end_time_s),
@@ -29,7 +30,12 @@ StepController::StepController(const AnalysisOptions& options)
 
 double StepController::next_step(double t) const {
   const double remaining = next_output_s_ - t;
-  const double step = std::min(step_s_, cap_s_);
+  double step = std::min(step_s_, cap_s_);
+  if (t < sub_steps_end_s_ - kSliver * step_s_) {
+    step = std::min(sub_step_s_, cap_s_);
+    const double to_end = sub_steps_end_s_ - t;
+    if (to_end <= step * (1.0 + kSliver)) step = to_end;
+  }
   return remaining <= step * (1.0 + kSliver) ? remaining : step;
 }
 
@@ -49,9 +55,17 @@ void StepController::restore(const StepControllerMemory& memory) {
   next_output_s_ = std::min(end_s_, static_cast<double>(outputs_written_ + 1) * output_interval_s_);
 }
 
-bool StepController::cut_after_failure(double tried_step) {
-  if (!adaptive_ || tried_step * 0.5 < min_step_s_) return false;
-  step_s_ = tried_step * 0.5;
+bool StepController::cut_after_failure(double t, double tried_step) {
+  if (adaptive_) {
+    if (tried_step * 0.5 < min_step_s_) return false;
+    step_s_ = tried_step * 0.5;
+    return true;
+  }
+  if (!cut_fixed_steps_ || tried_step * 0.5 < std::ldexp(step_s_, -kMaxCutsOfAFixedStep) * (1.0 - kSliver))
+    return false;
+  // The first cut of a step marks its end: the sub-steps land there.
+  if (!(t < sub_steps_end_s_ - kSliver * step_s_)) sub_steps_end_s_ = t + tried_step;
+  sub_step_s_ = tried_step * 0.5;
   return true;
 }
 

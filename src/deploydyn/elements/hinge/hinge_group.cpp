@@ -86,7 +86,7 @@ class HingeGroup final : public ElementGroup, public SwitchingGroup {
     for (std::size_t i = 0; i < records_.size(); ++i) {
       const HingeRecord& r = records_[i];
       if (r.element->stiffness_Nm_per_rad == 0.0 && sites_[i].empty()) continue;
-      const HingeKinematics k = r.kinematics(r.gather(at.q));
+      const HingeKinematics k = r.angle_and_gradient(r.gather(at.q));
       double torque = spring_torque(r, k.angle_rad);
       if (!sites_[i].empty()) torque += contact_torques(i, history_of(at.history, static_cast<int>(i)), k.angle_rad, 0.0).elastic;
       scatter(r, torque * k.gradient, f);
@@ -104,7 +104,7 @@ class HingeGroup final : public ElementGroup, public SwitchingGroup {
       const HingeRecord& r = records_[i];
       const double k = r.element->stiffness_Nm_per_rad;
       if (k == 0.0 && sites_[i].empty()) continue;
-      const double angle = r.kinematics(r.gather(at.q)).angle_rad;
+      const double angle = r.angle_and_gradient(r.gather(at.q)).angle_rad;
       const double twist = angle - r.element->rest_angle_rad;
       if (k != 0.0) energy += 0.5 * k * twist * twist;
       for (const ContactSite& s : sites_[i]) {  // ½ k δ² of an engaged contact
@@ -120,7 +120,7 @@ class HingeGroup final : public ElementGroup, public SwitchingGroup {
     double largest = 0.0;
     for (std::size_t i = 0; i < records_.size(); ++i) {
       const HingeRecord& r = records_[i];
-      const HingeKinematics k = r.kinematics(r.gather(at.q));
+      const HingeKinematics k = r.angle_and_gradient(r.gather(at.q));
       double stiffness = r.element->stiffness_Nm_per_rad;
       if (!sites_[i].empty()) {
         stiffness += contact_torques(i, history_of(at.history, static_cast<int>(i)), k.angle_rad, 0.0).elastic_per_angle;
@@ -202,7 +202,7 @@ class HingeGroup final : public ElementGroup, public SwitchingGroup {
       const bool slides = sliding(i, at);
       if (r.element->damping_Nms_per_rad == 0.0 && !slides && sites_[i].empty()) continue;
       const HingeVector q_local = r.gather(at.q);
-      const HingeKinematics k = r.kinematics(q_local);
+      const HingeKinematics k = r.angle_and_gradient(q_local);
       const double slip = slides ? hinge_state(at.history, i).slip : 0.0;
       const HingeVector rates = r.gather(*at.rates);
       const HingeTorques torques = rate_torques(r, k, q_local, rates, at.t, slip);
@@ -221,7 +221,7 @@ class HingeGroup final : public ElementGroup, public SwitchingGroup {
     const HingeRecord& r = records_[static_cast<std::size_t>(element)];
     const std::span<const double> h = history_of(at.history, element);
     const HingeVector q_local = r.gather(at.q);
-    const HingeKinematics k = r.kinematics(q_local);
+    const HingeKinematics k = r.angle_and_gradient(q_local);
     const auto mode = h.empty() ? HingeMode::free : static_cast<HingeMode>(static_cast<int>(h[kMode]));
     const double slip = h.empty() || mode != HingeMode::free || r.element->friction_coefficient == 0.0 ? 0.0 : h[kSlip];
     const HingeVector rates = at.rates != nullptr ? r.gather(*at.rates) : HingeVector::Zero(r.n_dofs());
@@ -398,7 +398,7 @@ class HingeGroup final : public ElementGroup, public SwitchingGroup {
   void track_contacts(std::size_t i, const StepEnds& ends, std::span<const double> before, std::span<double> after,
                       std::vector<ElementEvent>& events) const {
     const HingeRecord& r = records_[i];
-    const HingeKinematics k0 = r.kinematics(r.gather(ends.q_before)), k1 = r.kinematics(r.gather(ends.q_after));
+    const HingeKinematics k0 = r.angle_and_gradient(r.gather(ends.q_before)), k1 = r.angle_and_gradient(r.gather(ends.q_after));
     const double rate0 = k0.gradient.dot(r.gather(ends.v_before)), rate1 = k1.gradient.dot(r.gather(ends.v_after));
     const double t0 = ends.time_before_s, t1 = ends.time_after_s;
     bool touching = false;
@@ -446,8 +446,8 @@ class HingeGroup final : public ElementGroup, public SwitchingGroup {
       return true;
     };
     const HingeVector q1 = r.gather(ends.q_after);
-    const HingeKinematics k1 = r.kinematics(q1);
-    const HingeKinematics k0 = r.kinematics(r.gather(ends.q_before));
+    const HingeKinematics k1 = r.angle_and_gradient(q1);
+    const HingeKinematics k0 = r.angle_and_gradient(r.gather(ends.q_before));
     const double angle0 = k0.angle_rad, angle1 = k1.angle_rad;
     const double lock = lock_torque(i, mode, ends);
     switch (mode) {
@@ -506,8 +506,8 @@ class HingeGroup final : public ElementGroup, public SwitchingGroup {
     const HingeRecord& r = records_[i];
     const auto mode = static_cast<HingeMode>(static_cast<int>(before[kMode]));
     const HingeVector q1 = r.gather(ends.q_after), v1 = r.gather(ends.v_after);
-    const HingeKinematics k1 = r.kinematics(q1);
-    const double angle0 = r.kinematics(r.gather(ends.q_before)).angle_rad;
+    const HingeKinematics k1 = r.angle_and_gradient(q1);
+    const double angle0 = r.angle_and_gradient(r.gather(ends.q_before)).angle_rad;
     const double slip = mode == HingeMode::free && r.element->friction_coefficient > 0.0 ? before[kSlip] : 0.0;
     const HingeTorques torques = rate_torques(r, k1, q1, v1, ends.time_after_s, slip);
     const double lock = lock_torque(i, mode, ends);

@@ -14,7 +14,7 @@ void HingeLock::evaluate(const EvaluationPoint& at, Eigen::Ref<Eigen::VectorXd> 
     jacobian.setZero();
     return;
   }
-  const HingeKinematics k = record_.kinematics(record_.gather(at.q));
+  const HingeKinematics k = record_.angle_and_gradient(record_.gather(at.q));
   phi[0] = k.angle_rad - s.lock_angle_rad;
   jacobian.row(0) = k.gradient.transpose();
 }

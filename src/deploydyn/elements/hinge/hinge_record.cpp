@@ -15,22 +15,34 @@ Eigen::Vector3d arm(const HingeVector& q, int dimension, int k) {
 
 }  // namespace
 
-HingeKinematics HingeRecord::kinematics(const HingeVector& q) const {
+HingeKinematics HingeRecord::angle_and_gradient(const HingeVector& q) const {
   HingeKinematics k;
   if (element->form == HingeElement::Form::rotations) {
     k.angle_rad = q[1] - q[0];
     k.gradient.resize(2);
     k.gradient << -1.0, 1.0;
-    k.hessian = HingeMatrix::Zero(2, 2);
     return k;
   }
   const Eigen::Vector3d u = arm(q, dimension, 0), v = arm(q, dimension, 1);
   k.angle_rad = geometry.angle_near(u, v, element->initial_angle_rad);
   if (dimension == 2) {
     k.gradient = geometry.gradient<2>(u, v);
-    k.hessian = geometry.hessian<2>(u, v);
   } else {
     k.gradient = geometry.gradient<3>(u, v);
+  }
+  return k;
+}
+
+HingeKinematics HingeRecord::kinematics(const HingeVector& q) const {
+  HingeKinematics k = angle_and_gradient(q);
+  if (element->form == HingeElement::Form::rotations) {
+    k.hessian = HingeMatrix::Zero(2, 2);
+    return k;
+  }
+  const Eigen::Vector3d u = arm(q, dimension, 0), v = arm(q, dimension, 1);
+  if (dimension == 2) {
+    k.hessian = geometry.hessian<2>(u, v);
+  } else {
     k.hessian = geometry.hessian<3>(u, v);
   }
   return k;

@@ -63,6 +63,10 @@ struct HingeRecord {
   }
 
   HingeKinematics kinematics(const HingeVector& q) const;
+  // θ and ∇θ only (the hessian left empty): forces, energies and the modes' tests need no
+  // more, and ∇²θ is most of a hinge's cost per residual (docs/performance.md, "Hinges and
+  // cables at scale").
+  HingeKinematics angle_and_gradient(const HingeVector& q) const;
   // At thermal factor 1 (friction acts in a run, not in a path in ΔT).
   PinForce pin_force(const HingeVector& q, double t) const;
 };
