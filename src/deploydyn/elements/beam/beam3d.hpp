@@ -22,7 +22,7 @@
 // J = E S Eᵀ, S the section's second moments of mass per length: ρ diag(0, I_z, I_y) from
 // the geometry, or from a given rotary inertia diag(J_xx, J_yy, J_zz) by (D7a);
 // lumped: the halves on each node's diagonal blocks. A mass centroid off the axis at c = E(0, y_m,
-// z_m) adds μ ṙ·ḋ_c to T, ḋ_c = Ṙ c_local: blocks (m/6)[2 1; 1 2] ⊗ cᵀ between x and each row of R
+// z_m) adds μ ṙ·(Ṙ c) to T: blocks (m/6)[2 1; 1 2] ⊗ cᵀ between x and each row of R
 // (D7b).
 
 #include <Eigen/Core>
