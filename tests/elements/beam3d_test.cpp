@@ -11,6 +11,7 @@
 #include <string>
 
 #include "deploydyn/constraints/frame_orthonormality.hpp"
+#include "deploydyn/elements/beam/sectional_values.hpp"
 #include "support/finite_difference.hpp"
 #include "support/frames.hpp"
 
@@ -419,6 +420,62 @@ TEST(FrameClamp, HoldsTheIdentityAndMeasuresSmallRotations) {
     EXPECT_NEAR(phi.norm(), std::abs(phi[axis]), 1e-15);
   }
   EXPECT_EQ(clamp.describe(1), "support A, rotation y");
+}
+
+// --- The sectional stiffness about the beam's axis (elements/beam/sectional_values.hpp;
+// docs/theory.md, "Sections with offsets", D4a): the offsets' couplings entry by entry against
+// the closed forms the theory lists, the diagonal case unchanged, and a given full matrix used as
+// given (with no share following E(T)).
+constexpr double kEA = 1.0e7, kGAy = 5.0e6, kGAz = 3.0e6, kGJ = 8.0e2, kEIy = 2.0e3, kEIz = 1.0e3;
+
+BeamElement given_section() {
+  BeamElement beam;
+  beam.axial_stiffness_N = kEA;
+  beam.shear_stiffness_N = {kGAy, kGAz};
+  beam.torsional_stiffness_Nm2 = kGJ;
+  beam.bending_stiffness_Nm2 = {kEIy, kEIz};
+  return beam;
+}
+
+TEST(Beam3dSectionalStiffness, OffsetsCoupleAsTheTheoryLists) {
+  BeamElement beam = given_section();
+  const double e_y = 0.01, e_z = -0.02, y_s = 0.015, z_s = 0.03;
+  beam.centroid_offset_m = {e_y, e_z};
+  beam.shear_centre_offset_m = {y_s, z_s};
+  const beam::StiffnessMatrix c = beam::stiffness_about_axis(beam, Material{});
+  beam::StiffnessMatrix expected = beam::StiffnessMatrix::Zero();  // order (Γ1, Γ2, Γ3, K1, K2, K3)
+  expected(0, 0) = kEA;
+  expected(0, 4) = expected(4, 0) = kEA * e_z;
+  expected(0, 5) = expected(5, 0) = -kEA * e_y;
+  expected(4, 4) = kEIy + kEA * e_z * e_z;
+  expected(5, 5) = kEIz + kEA * e_y * e_y;
+  expected(4, 5) = expected(5, 4) = -kEA * e_y * e_z;
+  expected(1, 1) = kGAy;
+  expected(2, 2) = kGAz;
+  expected(1, 3) = expected(3, 1) = -kGAy * z_s;
+  expected(2, 3) = expected(3, 2) = kGAz * y_s;
+  expected(3, 3) = kGJ + kGAy * z_s * z_s + kGAz * y_s * y_s;
+  EXPECT_LT((c - expected).norm(), 1e-14 * expected.norm()) << c;
+}
+
+TEST(Beam3dSectionalStiffness, NoOffsetsGiveTheDiagonalExactly) {
+  beam::StiffnessMatrix expected = beam::StiffnessMatrix::Zero();
+  expected.diagonal() << kEA, kGAy, kGAz, kGJ, kEIy, kEIz;
+  EXPECT_EQ(beam::stiffness_about_axis(given_section(), Material{}), expected);
+}
+
+TEST(Beam3dSectionalStiffness, AGivenFullMatrixIsUsedAsGivenAndDoesNotFollowE) {
+  BeamElement beam;
+  beam.area_m2 = 1e-4;
+  beam.inertia_y_m4 = beam.inertia_z_m4 = beam.torsion_m4 = 1e-9;
+  beam.sectional_stiffness_given = true;
+  beam.sectional_stiffness_matrix = beam::StiffnessMatrix::Identity();
+  beam.sectional_stiffness_matrix(0, 5) = beam.sectional_stiffness_matrix(5, 0) = 0.5;
+  Material material;
+  material.youngs_modulus_Pa = 7e10;
+  EXPECT_EQ(beam::stiffness_about_axis(beam, material), beam.sectional_stiffness_matrix);
+  EXPECT_EQ(beam::youngs_share_about_axis(beam, material), beam::StiffnessMatrix::Zero());
+  EXPECT_FALSE(beam::shear_modulus_used(beam, 3));
 }
 
 }  // namespace
