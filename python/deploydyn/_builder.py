@@ -117,7 +117,9 @@ class ModelBuilder:
         as engineers give them: mass_per_length (kg/m), rotary_inertia_per_length (kg·m; 3D
         [J_xx, J_yy, J_zz] in the local frame, 2D J_zz), shear_stiffness (N; 3D [GA_y, GA_z],
         2D GA_y), axial_stiffness (N), bending_stiffness (N·m²; 3D [EI_y, EI_z], 2D EI_z) and
-        torsional_stiffness (N·m², 3D). Its nodes carry a rotation: clamp one with
+        torsional_stiffness (N·m², 3D); in 3D also the full sectional_stiffness (36 numbers,
+        the rows of C about the axis) and the local [y, z] (m) of the centroid_offset,
+        shear_centre_offset and mass_centroid_offset. Its nodes carry a rotation: clamp one with
         support(node, fix=["x", "y", "rotation"])."""
         where = "ModelBuilder.beam"
         nodes = [checked.name(where, "node_a", node_a), checked.name(where, "node_b", node_b)]

@@ -11,6 +11,7 @@
 #include <string>
 
 #include "deploydyn/constraints/frame_orthonormality.hpp"
+#include "deploydyn/elements/beam/sectional_values.hpp"
 #include "support/finite_difference.hpp"
 #include "support/frames.hpp"
 
@@ -24,11 +25,21 @@ constexpr double kDerivativeTolerance = 1e-6;  // relative, in the norm of the a
 constexpr double kRoundOff = 1e-12;            // relative: rigid motion, mass, symmetry
 constexpr int kConfigurations = 6;
 
-beam3d::Section random_section(std::mt19937& rng, const Eigen::Vector3d& chord) {
+// `coupled`: a full symmetric positive definite C = D^½ AᵀA D^½ (A = I + random entries of 0.3),
+// every strain coupled to every other, as offsets and rotated principal axes give (D4a).
+beam3d::Section random_section(std::mt19937& rng, const Eigen::Vector3d& chord, bool coupled = false) {
   std::uniform_real_distribution<double> unit(-1.0, 1.0);
   beam3d::Section section;
   // Of one order, so that every term weighs in the norms: EA, k_sGA_y, k_sGA_z, GJ, EI_y, EI_z.
-  section.stiffness << 3.0e4, 1.1e4, 0.9e4, 2.1e3, 4.3e3, 5.2e3;
+  section.stiffness.diagonal() << 3.0e4, 1.1e4, 0.9e4, 2.1e3, 4.3e3, 5.2e3;
+  if (coupled) {
+    beam3d::StiffnessMatrix a = beam3d::StiffnessMatrix::Identity();
+    for (int i = 0; i < beam3d::kStrains; ++i) {
+      for (int j = 0; j < beam3d::kStrains; ++j) a(i, j) += 0.3 * unit(rng);
+    }
+    const beam3d::StrainVector root = section.stiffness.diagonal().cwiseSqrt();
+    section.stiffness = root.asDiagonal() * a.transpose() * a * root.asDiagonal();
+  }
   section.reference_length_m = chord.norm() * (1.0 + 0.1 * unit(rng));
   const Eigen::Vector3d orientation(unit(rng), unit(rng), unit(rng));
   EXPECT_TRUE(beam3d::element_frame(chord, orientation, section.frame));
@@ -46,11 +57,11 @@ struct Configuration {
   Eigen::VectorXd q{beam3d::kDofs};
 };
 
-Configuration random_configuration(std::mt19937& rng) {
+Configuration random_configuration(std::mt19937& rng, bool coupled = false) {
   std::uniform_real_distribution<double> unit(-1.0, 1.0);
   const Eigen::Vector3d chord(0.8 + 0.2 * unit(rng), 0.3 * unit(rng), 0.3 * unit(rng));
   Configuration c;
-  c.section = random_section(rng, chord);
+  c.section = random_section(rng, chord, coupled);
   const Eigen::Matrix3d base = random_rotation(rng, M_PI);
   const Eigen::Matrix3d r_a = base * random_rotation(rng, 0.5);
   const Eigen::Matrix3d r_b = base * random_rotation(rng, 0.5);
@@ -81,16 +92,28 @@ double relative_error(const Eigen::MatrixXd& analytic, const Eigen::MatrixXd& re
   return (analytic - reference).norm() / reference.norm();
 }
 
+// |f − ∂U/∂q| / |∂U/∂q|, the gradient by central differences.
+double force_against_energy(const Configuration& c) {
+  const auto energy = [&](const Eigen::VectorXd& y) { return beam3d::strain_energy(state_at(c, y), c.section); };
+  const Eigen::VectorXd fd = testing::central_gradient(energy, c.q, kStep);
+  return relative_error(beam3d::internal_force(state_at(c, c.q), c.section), fd);
+}
+
+// |K − ∂f/∂q| / |∂f/∂q|; K must also be symmetric (it is the Hessian of U).
+double tangent_against_force(const Configuration& c) {
+  const auto force = [&](const Eigen::VectorXd& y) {
+    return Eigen::VectorXd(beam3d::internal_force(state_at(c, y), c.section));
+  };
+  const Eigen::MatrixXd fd = testing::central_jacobian(force, c.q, kStep);
+  const Eigen::MatrixXd tangent = beam3d::tangent(state_at(c, c.q), c.section);
+  EXPECT_LT((tangent - tangent.transpose()).norm(), kRoundOff * tangent.norm());
+  return relative_error(tangent, fd);
+}
+
 TEST(Beam3d, InternalForceIsTheGradientOfStrainEnergy) {
   std::mt19937 rng(13);
   for (int k = 0; k < kConfigurations; ++k) {
-    const Configuration c = random_configuration(rng);
-    const auto energy = [&](const Eigen::VectorXd& y) {
-      return beam3d::strain_energy(state_at(c, y), c.section);
-    };
-    const Eigen::VectorXd fd = testing::central_gradient(energy, c.q, kStep);
-    const Eigen::VectorXd f = beam3d::internal_force(state_at(c, c.q), c.section);
-    const double error = relative_error(f, fd);
+    const double error = force_against_energy(random_configuration(rng));
     EXPECT_LT(error, kDerivativeTolerance) << "configuration " << k;
     RecordProperty("force_vs_energy_error_" + std::to_string(k), scientific(error));
   }
@@ -99,16 +122,25 @@ TEST(Beam3d, InternalForceIsTheGradientOfStrainEnergy) {
 TEST(Beam3d, TangentIsTheJacobianOfInternalForce) {
   std::mt19937 rng(31);
   for (int k = 0; k < kConfigurations; ++k) {
-    const Configuration c = random_configuration(rng);
-    const auto force = [&](const Eigen::VectorXd& y) {
-      return Eigen::VectorXd(beam3d::internal_force(state_at(c, y), c.section));
-    };
-    const Eigen::MatrixXd fd = testing::central_jacobian(force, c.q, kStep);
-    const Eigen::MatrixXd tangent = beam3d::tangent(state_at(c, c.q), c.section);
-    const double error = relative_error(tangent, fd);
+    const double error = tangent_against_force(random_configuration(rng));
     EXPECT_LT(error, kDerivativeTolerance) << "configuration " << k;
     RecordProperty("tangent_vs_force_error_" + std::to_string(k), scientific(error));
-    EXPECT_LT((tangent - tangent.transpose()).norm(), kRoundOff * tangent.norm());
+  }
+}
+
+// A full coupled C (offsets, rotated principal axes: D4a) changes f = L0 Tᵀ Gᵀ C(s − s_t) and the
+// geometric part of K through C(s − s_t) and Gᵀ C G: both still the derivatives of U.
+TEST(Beam3d, ForceAndTangentAreTheDerivativesWithACoupledSection) {
+  std::mt19937 rng(61);
+  for (int k = 0; k < kConfigurations; ++k) {
+    const Configuration c = random_configuration(rng, true);
+    ASSERT_GT((c.section.stiffness - beam3d::StiffnessMatrix(c.section.stiffness.diagonal().asDiagonal())).norm(),
+              0.1 * c.section.stiffness.norm());
+    const double force_error = force_against_energy(c), tangent_error = tangent_against_force(c);
+    EXPECT_LT(force_error, kDerivativeTolerance) << "configuration " << k;
+    EXPECT_LT(tangent_error, kDerivativeTolerance) << "configuration " << k;
+    RecordProperty("coupled_force_vs_energy_error_" + std::to_string(k), scientific(force_error));
+    RecordProperty("coupled_tangent_vs_force_error_" + std::to_string(k), scientific(tangent_error));
   }
 }
 
@@ -116,7 +148,7 @@ TEST(Beam3d, TangentIsTheJacobianOfInternalForce) {
 TEST(Beam3d, ThermalForceDerivativeMatchesFiniteDifferences) {
   std::mt19937 rng(47);
   for (int k = 0; k < kConfigurations; ++k) {
-    const Configuration c = random_configuration(rng);
+    const Configuration c = random_configuration(rng, k % 2 == 1);  // odd: a coupled C
     const auto force_at = [&](double factor) {
       return Eigen::VectorXd(
           beam3d::internal_force(state_at(c, c.q, factor * kThermal), c.section));
@@ -190,7 +222,7 @@ TEST(Beam3d, ConsistentMassGivesTheKineticEnergy) {
     const Eigen::Matrix3d& e = section.frame;
     const Eigen::Matrix3d j =
         beam3d::rotary_inertia_per_length(mass, area, inertia_y, inertia_z, l0, e);
-    const beam3d::ElementMatrix m = beam3d::mass_matrix(mass, j, l0, MassMatrixKind::consistent);
+    const beam3d::ElementMatrix m = beam3d::mass_matrix(mass, j, Eigen::Vector3d::Zero(), l0, MassMatrixKind::consistent);
     Eigen::VectorXd v(beam3d::kDofs);
     for (int i = 0; i < beam3d::kDofs; ++i) v[i] = unit(rng);
     const double density = mass / (area * l0);
@@ -211,7 +243,7 @@ TEST(Beam3d, ConsistentMassGivesTheKineticEnergy) {
                   inertia_y * (rate * e.col(2)).squaredNorm());
     }
     EXPECT_NEAR(0.5 * v.dot(m * v), kinetic, kRoundOff * kinetic);
-    const beam3d::ElementMatrix lumped = beam3d::mass_matrix(mass, j, l0, MassMatrixKind::lumped);
+    const beam3d::ElementMatrix lumped = beam3d::mass_matrix(mass, j, Eigen::Vector3d::Zero(), l0, MassMatrixKind::lumped);
     // Both give a translation v the kinetic energy ½ m |v|², and the same rotary inertia.
     Eigen::VectorXd translation = Eigen::VectorXd::Zero(beam3d::kDofs);
     translation.segment<3>(beam3d::kPositionA) = translation.segment<3>(beam3d::kPositionB) =
@@ -220,6 +252,47 @@ TEST(Beam3d, ConsistentMassGivesTheKineticEnergy) {
     EXPECT_NEAR(0.5 * translation.dot(m * translation), expected, kRoundOff * expected);
     EXPECT_NEAR(0.5 * translation.dot(lumped * translation), expected, kRoundOff * expected);
     EXPECT_NEAR(lumped.sum(), m.sum(), kRoundOff * m.sum());
+  }
+}
+
+// A section of four point masses μ_k per length at (y_k, z_k), off the axis: ½ vᵀ M v against
+// ½∫Σ_k μ_k |ṙ + Ṙ P_k|² ds (P_k = E(0, y_k, z_k)) by two-point Gauss, exact, with M from (D7b):
+// the mass centroid c = Σ μ_k P_k / μ and J about the axis Σ μ_k P_k P_kᵀ.
+TEST(Beam3d, ConsistentMassWithAnOffsetMassCentroidGivesTheKineticEnergy) {
+  std::mt19937 rng(83);
+  std::uniform_real_distribution<double> unit(-1.0, 1.0);
+  const double point_masses[4] = {0.7, 1.1, 0.4, 0.9};  // kg/m
+  for (int k = 0; k < kConfigurations; ++k) {
+    const Eigen::Vector3d chord(unit(rng), unit(rng), unit(rng));
+    const beam3d::Section section = random_section(rng, chord);
+    const double l0 = section.reference_length_m;
+    const Eigen::Matrix3d& e = section.frame;
+    Eigen::Vector3d points[4];
+    double per_length = 0.0;
+    Eigen::Vector3d first_moment = Eigen::Vector3d::Zero();
+    Eigen::Matrix3d rotary = Eigen::Matrix3d::Zero();
+    for (int p = 0; p < 4; ++p) {
+      points[p] = 0.2 * (unit(rng) * e.col(1) + unit(rng) * e.col(2));
+      per_length += point_masses[p];
+      first_moment += point_masses[p] * points[p];
+      rotary += point_masses[p] * points[p] * points[p].transpose();
+    }
+    const beam3d::ElementMatrix m =
+        beam3d::mass_matrix(per_length * l0, rotary, first_moment / per_length, l0, MassMatrixKind::consistent);
+    Eigen::VectorXd v(beam3d::kDofs);
+    for (int i = 0; i < beam3d::kDofs; ++i) v[i] = unit(rng);
+    double kinetic = 0.0;
+    for (const double xi : {0.5 - 0.5 / std::sqrt(3.0), 0.5 + 0.5 / std::sqrt(3.0)}) {
+      Eigen::Matrix3d rate;
+      for (int row = 0; row < 3; ++row) {
+        rate.row(row) = ((1 - xi) * v.segment<3>(beam3d::kFrameA + 3 * row) +
+                         xi * v.segment<3>(beam3d::kFrameB + 3 * row)).transpose();
+      }
+      const Eigen::Vector3d r_dot = (1 - xi) * v.segment<3>(beam3d::kPositionA) + xi * v.segment<3>(beam3d::kPositionB);
+      for (int p = 0; p < 4; ++p) kinetic += 0.5 * l0 * 0.5 * point_masses[p] * (r_dot + rate * points[p]).squaredNorm();
+    }
+    EXPECT_NEAR(0.5 * v.dot(m * v), kinetic, kRoundOff * kinetic) << "configuration " << k;
+    EXPECT_LT((m - m.transpose()).norm(), kRoundOff * m.norm());
   }
 }
 
@@ -247,7 +320,7 @@ TEST(Beam3d, GivenRotaryInertiaActsAboutEveryAxis) {
     const Eigen::Matrix3d spatial = rotation * e * given.asDiagonal() * e.transpose() * rotation.transpose();
     const double expected = 0.5 * l0 * omega.dot(spatial * omega);
     for (const MassMatrixKind kind : {MassMatrixKind::consistent, MassMatrixKind::lumped}) {
-      const beam3d::ElementMatrix m = beam3d::mass_matrix(1.0, j, l0, kind);
+      const beam3d::ElementMatrix m = beam3d::mass_matrix(1.0, j, Eigen::Vector3d::Zero(), l0, kind);
       EXPECT_NEAR(0.5 * v.dot(m * v), expected, kRoundOff * expected) << "configuration " << k;
     }
     const double mass = 2.7, area = 3e-3, inertia_y = 4e-6, inertia_z = 9e-6, density = mass / (area * l0);
@@ -347,6 +420,62 @@ TEST(FrameClamp, HoldsTheIdentityAndMeasuresSmallRotations) {
     EXPECT_NEAR(phi.norm(), std::abs(phi[axis]), 1e-15);
   }
   EXPECT_EQ(clamp.describe(1), "support A, rotation y");
+}
+
+// --- The sectional stiffness about the beam's axis (elements/beam/sectional_values.hpp;
+// docs/theory.md, "Sections with offsets", D4a): the offsets' couplings entry by entry against
+// the closed forms the theory lists, the diagonal case unchanged, and a given full matrix used as
+// given (with no share following E(T)).
+constexpr double kEA = 1.0e7, kGAy = 5.0e6, kGAz = 3.0e6, kGJ = 8.0e2, kEIy = 2.0e3, kEIz = 1.0e3;
+
+BeamElement given_section() {
+  BeamElement beam;
+  beam.axial_stiffness_N = kEA;
+  beam.shear_stiffness_N = {kGAy, kGAz};
+  beam.torsional_stiffness_Nm2 = kGJ;
+  beam.bending_stiffness_Nm2 = {kEIy, kEIz};
+  return beam;
+}
+
+TEST(Beam3dSectionalStiffness, OffsetsCoupleAsTheTheoryLists) {
+  BeamElement beam = given_section();
+  const double e_y = 0.01, e_z = -0.02, y_s = 0.015, z_s = 0.03;
+  beam.centroid_offset_m = {e_y, e_z};
+  beam.shear_centre_offset_m = {y_s, z_s};
+  const beam::StiffnessMatrix c = beam::stiffness_about_axis(beam, Material{});
+  beam::StiffnessMatrix expected = beam::StiffnessMatrix::Zero();  // order (Γ1, Γ2, Γ3, K1, K2, K3)
+  expected(0, 0) = kEA;
+  expected(0, 4) = expected(4, 0) = kEA * e_z;
+  expected(0, 5) = expected(5, 0) = -kEA * e_y;
+  expected(4, 4) = kEIy + kEA * e_z * e_z;
+  expected(5, 5) = kEIz + kEA * e_y * e_y;
+  expected(4, 5) = expected(5, 4) = -kEA * e_y * e_z;
+  expected(1, 1) = kGAy;
+  expected(2, 2) = kGAz;
+  expected(1, 3) = expected(3, 1) = -kGAy * z_s;
+  expected(2, 3) = expected(3, 2) = kGAz * y_s;
+  expected(3, 3) = kGJ + kGAy * z_s * z_s + kGAz * y_s * y_s;
+  EXPECT_LT((c - expected).norm(), 1e-14 * expected.norm()) << c;
+}
+
+TEST(Beam3dSectionalStiffness, NoOffsetsGiveTheDiagonalExactly) {
+  beam::StiffnessMatrix expected = beam::StiffnessMatrix::Zero();
+  expected.diagonal() << kEA, kGAy, kGAz, kGJ, kEIy, kEIz;
+  EXPECT_EQ(beam::stiffness_about_axis(given_section(), Material{}), expected);
+}
+
+TEST(Beam3dSectionalStiffness, AGivenFullMatrixIsUsedAsGivenAndDoesNotFollowE) {
+  BeamElement beam;
+  beam.area_m2 = 1e-4;
+  beam.inertia_y_m4 = beam.inertia_z_m4 = beam.torsion_m4 = 1e-9;
+  beam.sectional_stiffness_given = true;
+  beam.sectional_stiffness_matrix = beam::StiffnessMatrix::Identity();
+  beam.sectional_stiffness_matrix(0, 5) = beam.sectional_stiffness_matrix(5, 0) = 0.5;
+  Material material;
+  material.youngs_modulus_Pa = 7e10;
+  EXPECT_EQ(beam::stiffness_about_axis(beam, material), beam.sectional_stiffness_matrix);
+  EXPECT_EQ(beam::youngs_share_about_axis(beam, material), beam::StiffnessMatrix::Zero());
+  EXPECT_FALSE(beam::shear_modulus_used(beam, 3));
 }
 
 }  // namespace

@@ -100,7 +100,7 @@ Configuration3d random_configuration_3d(std::mt19937& rng) {
   std::uniform_real_distribution<double> unit(-1.0, 1.0);
   const Eigen::Vector3d chord(0.8 + 0.2 * unit(rng), 0.3 * unit(rng), 0.3 * unit(rng));
   Configuration3d c;
-  c.section.stiffness << 3.0e4, 1.1e4, 0.9e4, 2.1e3, 4.3e3, 5.2e3;
+  c.section.stiffness.diagonal() << 3.0e4, 1.1e4, 0.9e4, 2.1e3, 4.3e3, 5.2e3;
   c.section.reference_length_m = chord.norm() * (1.0 + 0.1 * unit(rng));
   c.section.damping_time_s = 3e-3;
   EXPECT_TRUE(beam3d::element_frame(chord, Eigen::Vector3d(unit(rng), unit(rng), unit(rng)), c.section.frame));

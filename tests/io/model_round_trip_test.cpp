@@ -113,6 +113,11 @@ void expect_equal_models(const Model& a, const Model& b) {
     EXPECT_EQ(x.axial_stiffness_N, y.axial_stiffness_N);
     EXPECT_EQ(x.bending_stiffness_Nm2, y.bending_stiffness_Nm2);
     EXPECT_EQ(x.torsional_stiffness_Nm2, y.torsional_stiffness_Nm2);
+    EXPECT_EQ(x.sectional_stiffness_matrix, y.sectional_stiffness_matrix);
+    EXPECT_EQ(x.sectional_stiffness_given, y.sectional_stiffness_given);
+    EXPECT_EQ(x.centroid_offset_m, y.centroid_offset_m);
+    EXPECT_EQ(x.shear_centre_offset_m, y.shear_centre_offset_m);
+    EXPECT_EQ(x.mass_centroid_offset_m, y.mass_centroid_offset_m);
     EXPECT_EQ(x.reference_length_m, y.reference_length_m);
     EXPECT_EQ(x.temperature_change_C, y.temperature_change_C);
     EXPECT_EQ(x.temperature_given, y.temperature_given);
@@ -789,6 +794,36 @@ supports: [{node: A}]
   EXPECT_EQ(b.shear_stiffness_N, Eigen::Vector2d(5.0e6, 0));
   EXPECT_EQ(b.bending_stiffness_Nm2, Eigen::Vector2d(0, 1.2e3));
   expect_round_trip(plane);
+}
+
+// A full sectional stiffness and the three offsets (docs/model-format.md, "Sections with offsets")
+// are read as given and written back.
+TEST(ModelRoundTrip, BeamSectionalStiffnessAndOffsets) {
+  const Model model = load_model_from_string(R"(
+nodes: {A: [0, 0, 0], B: [2, 0, 0], C: [2, 1, 0]}
+materials: {steel: {E: 2.1e11, density: 7850}}
+elements:
+  full: {type: beam, nodes: [A, B], material: steel, area: 1e-4, inertia_z: 8.3e-10, inertia_y: 4.1e-10,
+         torsion: 1.4e-9, mass_centroid_offset: [0.01, -0.02],
+         sectional_stiffness: [2.0e7, 0, 0, 0, 1.0e4, -2.0e3,
+                               0, 5.0e6, 0, -3.0e2, 0, 0,
+                               0, 0, 4.0e6, 1.0e2, 0, 0,
+                               0, -3.0e2, 1.0e2, 9.0e2, 0, 0,
+                               1.0e4, 0, 0, 0, 1.0e3, 1.5e2,
+                               -2.0e3, 0, 0, 0, 1.5e2, 1.1e3]}
+  offset: {type: beam, nodes: [B, C], material: steel, area: 1e-4, inertia_z: 8.3e-10, inertia_y: 4.1e-10,
+           torsion: 1.4e-9, centroid_offset: [0.003, -0.001], shear_centre_offset: [-0.002, 0.004]}
+supports: [{node: A}]
+)", "sectional stiffness and offsets");
+  const BeamElement& full = model.beams[0];
+  ASSERT_TRUE(full.sectional_stiffness_given);
+  EXPECT_EQ(full.sectional_stiffness_matrix(0, 4), 1.0e4);
+  EXPECT_EQ(full.sectional_stiffness_matrix(5, 0), -2.0e3);
+  EXPECT_EQ(full.sectional_stiffness_matrix(3, 1), -3.0e2);
+  EXPECT_EQ(full.mass_centroid_offset_m, Eigen::Vector2d(0.01, -0.02));
+  EXPECT_EQ(model.beams[1].centroid_offset_m, Eigen::Vector2d(0.003, -0.001));
+  EXPECT_EQ(model.beams[1].shear_centre_offset_m, Eigen::Vector2d(-0.002, 0.004));
+  expect_round_trip(model);
 }
 
 }  // namespace

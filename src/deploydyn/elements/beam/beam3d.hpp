@@ -11,7 +11,8 @@
 //   Γ = (d1·r' − 1, d2·r', d3·r')                       axial and shear strains   (theory D3)
 //   K_k = ½(d_j·d_i' − d_i·d_j'),  (k,i,j) = (1,2,3), (2,3,1), (3,1,2)
 //                                                       torsion, bending about d2, d3 (D3)
-//   U = ½ L0 (s − s_t)ᵀ C (s − s_t),  s = (Γ, K),  C = diag(EA, GA_y, GA_z, GJ, EI_y, EI_z),
+//   U = ½ L0 (s − s_t)ᵀ C (s − s_t),  s = (Γ, K),  C = diag(EA, GA_y, GA_z, GJ, EI_y, EI_z)
+//   or a full symmetric positive definite C (offsets, coupling: D4a),
 //   s_t = (αΔT, 0, 0, 0, κ_t2, κ_t3)                   strain energy              (D4, D5)
 // Every strain is a quadratic form of q (bilinear in (r', R̄) and in (R̄, R')), so with
 // z = T q = (r', R̄, R') and the gradients G = ∂s/∂z and constant Hessians H_k = ∂²s_k/∂z²:
@@ -20,7 +21,9 @@
 // (m/6)[2I I; I 2I] on positions and (L0/6)[2 1; 1 2] ⊗ (I₃ ⊗ J) on the R's with
 // J = E S Eᵀ, S the section's second moments of mass per length: ρ diag(0, I_z, I_y) from
 // the geometry, or from a given rotary inertia diag(J_xx, J_yy, J_zz) by (D7a);
-// lumped: the halves on each node's diagonal blocks.
+// lumped: the halves on each node's diagonal blocks. A mass centroid off the axis at c = E(0, y_m,
+// z_m) adds μ ṙ·(Ṙ c) to T: blocks (m/6)[2 1; 1 2] ⊗ cᵀ between x and each row of R
+// (D7b).
 
 #include <Eigen/Core>
 #include <Eigen/Geometry>
@@ -41,11 +44,12 @@ using ElementMatrix = Eigen::Matrix<double, kDofs, kDofs>;
 using StrainVector = Eigen::Matrix<double, kStrains, 1>;
 using StrainGradient = Eigen::Matrix<double, kStrains, kIntermediate>;
 using IntermediateMatrix = Eigen::Matrix<double, kIntermediate, kIntermediate>;
+using StiffnessMatrix = Eigen::Matrix<double, kStrains, kStrains>;
 
 // The section constants one evaluation needs.
 struct Section {
-  StrainVector stiffness =
-      StrainVector::Zero();         // C: EA, GA_y, GA_z (N), GJ, EI_y, EI_z (N·m²)
+  // C in the order EA, GA_y, GA_z (N), GJ, EI_y, EI_z (N·m²); full when offsets couple (D4a).
+  StiffnessMatrix stiffness = StiffnessMatrix::Zero();
   double reference_length_m = 0.0;  // L0
   Eigen::Matrix3d frame = Eigen::Matrix3d::Identity();  // E = [e1 e2 e3], initial
   double damping_time_s = 0.0;  // τ of the material's viscous resultants τ C ṡ (0: undamped)
@@ -130,7 +134,7 @@ inline State evaluate(const ElementVector& q, const Section& section, const Stra
     }
   }
   s.mechanical = s.strain - thermal;
-  s.resultants = section.stiffness.cwiseProduct(s.mechanical);
+  s.resultants = section.stiffness * s.mechanical;
   return s;
 }
 
@@ -193,18 +197,18 @@ inline ElementVector internal_force_per_thermal_strain(const State& s, const Sec
                                                        const StrainVector& thermal) {
   const double l0 = section.reference_length_m;
   return -l0 * intermediate_map(l0).transpose() *
-         (s.gradient.transpose() * section.stiffness.cwiseProduct(thermal));
+         (s.gradient.transpose() * (section.stiffness * thermal));
 }
 
 // δf at a fixed configuration when the stiffnesses C change by δC and the thermal strains by
 // δs_t: L0 Tᵀ Gᵀ (δC (s − s_t) − C δs_t), for a material whose E and α follow the temperature
 // (docs/theory.md, "Temperature-dependent material properties").
-inline ElementVector internal_force_change(const State& s, const Section& section, const StrainVector& stiffness_change,
+inline ElementVector internal_force_change(const State& s, const Section& section, const StiffnessMatrix& stiffness_change,
                                            const StrainVector& thermal_change) {
   const double l0 = section.reference_length_m;
   return l0 * intermediate_map(l0).transpose() *
          (s.gradient.transpose() *
-          (stiffness_change.cwiseProduct(s.mechanical) - section.stiffness.cwiseProduct(thermal_change)));
+          (stiffness_change * s.mechanical - section.stiffness * thermal_change));
 }
 
 // K = ∂f/∂q: material + geometric (D6).
@@ -212,7 +216,7 @@ inline ElementMatrix tangent(const State& s, const Section& section) {
   const double l0 = section.reference_length_m;
   const Eigen::Matrix<double, kIntermediate, kDofs> t = intermediate_map(l0);
   const IntermediateMatrix kz =
-      s.gradient.transpose() * section.stiffness.asDiagonal() * s.gradient +
+      s.gradient.transpose() * section.stiffness * s.gradient +
       weighted_strain_hessian(s.resultants, section.frame);
   return l0 * t.transpose() * kz * t;
 }
@@ -226,7 +230,7 @@ inline ElementMatrix tangent(const State& s, const Section& section) {
 inline ElementVector damping_force(const State& s, const Section& section, const ElementVector& v) {
   const double l0 = section.reference_length_m;
   const Eigen::Matrix<double, kIntermediate, kDofs> t = intermediate_map(l0);
-  const StrainVector viscous = section.stiffness.cwiseProduct(s.gradient * (t * v));
+  const StrainVector viscous = section.stiffness * (s.gradient * (t * v));
   return section.damping_time_s * l0 * t.transpose() * (s.gradient.transpose() * viscous);
 }
 
@@ -236,15 +240,15 @@ inline ElementMatrix damping_tangent(const State& s, const Section& section, con
   const double l0 = section.reference_length_m;
   const Eigen::Matrix<double, kIntermediate, kDofs> t = intermediate_map(l0);
   const Eigen::Matrix<double, kIntermediate, 1> z_rate = t * v;
-  IntermediateMatrix kz = c_v * s.gradient.transpose() * section.stiffness.asDiagonal() * s.gradient;
+  IntermediateMatrix kz = c_v * s.gradient.transpose() * section.stiffness * s.gradient;
   if (c_q != 0.0) {
-    const StrainVector viscous = section.stiffness.cwiseProduct(s.gradient * z_rate);
+    const StrainVector viscous = section.stiffness * (s.gradient * z_rate);
     StrainGradient gradient_rate;  // Ġ
     for (int k = 0; k < kStrains; ++k) {
       gradient_rate.row(k) =
           (weighted_strain_hessian(StrainVector::Unit(k), section.frame) * z_rate).transpose();
     }
-    kz += c_q * (s.gradient.transpose() * section.stiffness.asDiagonal() * gradient_rate +
+    kz += c_q * (s.gradient.transpose() * section.stiffness * gradient_rate +
                  weighted_strain_hessian(viscous, section.frame));
   }
   return section.damping_time_s * l0 * t.transpose() * kz * t;
@@ -272,9 +276,10 @@ inline Eigen::Matrix3d rotary_inertia_per_length(const Eigen::Vector3d& given_kg
   return out;
 }
 
-// (D7).
+// (D7), (D7b): `mass_centroid` is c = E (0, y_m, z_m), the mass centroid's offset from the axis in
+// the initial frame; `rotary_per_length` is then about the axis (J_c + μ c cᵀ).
 inline ElementMatrix mass_matrix(double mass_kg, const Eigen::Matrix3d& rotary_per_length,
-                                 double l0, MassMatrixKind kind) {
+                                 const Eigen::Vector3d& mass_centroid_m, double l0, MassMatrixKind kind) {
   ElementMatrix m = ElementMatrix::Zero();
   const double own = kind == MassMatrixKind::consistent ? 1.0 / 3.0 : 0.5;
   const double shared = kind == MassMatrixKind::consistent ? 1.0 / 6.0 : 0.0;
@@ -287,6 +292,9 @@ inline ElementMatrix mass_matrix(double mass_kg, const Eigen::Matrix3d& rotary_p
       m.block<3, 3>(position[a], position[b]) = share * mass_kg * Eigen::Matrix3d::Identity();
       for (int row = 0; row < 3; ++row) {  // the rows of R: d_i's components along one axis
         m.block<3, 3>(frame[a] + 3 * row, frame[b] + 3 * row) = share * l0 * rotary_per_length;
+        // ẋ_row · (Ṙ_row · c): position component `row` with row `row` of R.
+        m.block<1, 3>(position[a] + row, frame[b] + 3 * row) = share * mass_kg * mass_centroid_m.transpose();
+        m.block<3, 1>(frame[b] + 3 * row, position[a] + row) = share * mass_kg * mass_centroid_m;
       }
     }
   }

@@ -38,7 +38,8 @@ struct Beam3dRecord {
   std::array<int, kDofs> dofs{};
   beam3d::Section section;  // at T_ref
   double mass_kg = 0.0;
-  Eigen::Matrix3d rotary_per_length = Eigen::Matrix3d::Zero();  // J (kg·m)
+  Eigen::Matrix3d rotary_per_length = Eigen::Matrix3d::Zero();  // J (kg·m), about the axis
+  Eigen::Vector3d mass_centroid_m = Eigen::Vector3d::Zero();     // c = E (0, y_m, z_m) (D7b)
   double expansion_per_C = 0.0;                                 // α
   double curvature_y_per_C_m = 0.0;                    // κ_t2 / ΔT_gz = +α / h_z (theory D5)
   double curvature_z_per_C_m = 0.0;                    // κ_t3 / ΔT_gy = −α / h_y
@@ -46,7 +47,7 @@ struct Beam3dRecord {
   const TimeFunction* gradient_y_C = nullptr;          // ΔT_gy(t)
   const TimeFunction* gradient_z_C = nullptr;          // ΔT_gz(t)
   MaterialLaw law;                                     // E(T), ε_t(T) when tables give them
-  beam3d::StrainVector youngs_share = beam3d::StrainVector::Zero();  // of C, following E(T)
+  beam3d::StiffnessMatrix youngs_share = beam3d::StiffnessMatrix::Zero();  // of C, following E(T)
   double inverse_depth_z_1_m = 0.0;  // +1 / h_z: κ_t2 = α(T) ΔT_gz / h_z (0: no depth)
   double inverse_depth_y_1_m = 0.0;  // −1 / h_y: κ_t3 = −α(T) ΔT_gy / h_y
 
@@ -122,13 +123,20 @@ struct Beam3dRecord {
     return beam3d::damping_tangent(s, section_of(s), v, c_q, c_v);
   }
   Matrix mass(MassMatrixKind kind) const {
-    return beam3d::mass_matrix(mass_kg, rotary_per_length, section.reference_length_m, kind);
+    return beam3d::mass_matrix(mass_kg, rotary_per_length, mass_centroid_m, section.reference_length_m, kind);
   }
-  // The weight is shared equally by the two nodes' positions (a uniform beam: no moment).
+  // The weight is shared equally by the two nodes' positions (a uniform beam: no moment); a mass
+  // centroid off the axis at R c adds m g_row c / 2 on each node's row of R (D7b).
   Vector weight(const Eigen::Vector3d& gravity_m_s2) const {
     Vector f = Vector::Zero();
-    f.segment<3>(beam3d::kPositionA) = 0.5 * mass_kg * gravity_m_s2;
-    f.segment<3>(beam3d::kPositionB) = 0.5 * mass_kg * gravity_m_s2;
+    for (const int position : {beam3d::kPositionA, beam3d::kPositionB}) {
+      f.segment<3>(position) = 0.5 * mass_kg * gravity_m_s2;
+    }
+    for (const int frame : {beam3d::kFrameA, beam3d::kFrameB}) {
+      for (int row = 0; row < 3; ++row) {
+        f.segment<3>(frame + 3 * row) = 0.5 * mass_kg * gravity_m_s2[row] * mass_centroid_m;
+      }
+    }
     return f;
   }
   double strain_energy(const State& s) const { return beam3d::strain_energy(s, section_of(s)); }
@@ -187,9 +195,7 @@ std::unique_ptr<ElementGroup> make_beam_group_3d(const Model& model, const DofMa
       throw std::invalid_argument("beam " + e.name +
                                   ": a 3D beam needs area, inertia_y, inertia_z and torsion > 0");
     }
-    const beam::SectionalStiffness c = beam::sectional_stiffness(e, material);  // (D4)
-    beam.section.stiffness << c.axial_N, c.shear_y_N, c.shear_z_N, c.torsional_Nm2, c.bending_y_Nm2,
-        c.bending_z_Nm2;
+    beam.section.stiffness = beam::stiffness_about_axis(e, material);  // (D4), (D4a)
     beam.section.reference_length_m = e.reference_length_m;
     beam.section.damping_time_s = material.damping_time_s;
     beam.mass_kg = e.mass_kg;
@@ -199,6 +205,11 @@ std::unique_ptr<ElementGroup> make_beam_group_3d(const Model& model, const DofMa
             : beam3d::rotary_inertia_per_length(e.mass_kg, e.area_m2, e.inertia_y_m4,
                                                 e.inertia_z_m4, e.reference_length_m,
                                                 beam.section.frame);
+    if (!e.mass_centroid_offset_m.isZero()) {  // J about the centroid moved to the axis (D7b)
+      beam.mass_centroid_m = beam.section.frame.rightCols<2>() * e.mass_centroid_offset_m;
+      beam.rotary_per_length += e.mass_kg / e.reference_length_m * beam.mass_centroid_m *
+                                beam.mass_centroid_m.transpose();
+    }
     beam.expansion_per_C = material.expansion_per_C;
     beam.curvature_y_per_C_m = e.height_z_m > 0.0 ? material.expansion_per_C / e.height_z_m : 0.0;
     beam.curvature_z_per_C_m = e.height_y_m > 0.0 ? -material.expansion_per_C / e.height_y_m : 0.0;
@@ -206,9 +217,7 @@ std::unique_ptr<ElementGroup> make_beam_group_3d(const Model& model, const DofMa
     beam.gradient_y_C = &e.temperature_gradient_y_C;
     beam.gradient_z_C = &e.temperature_gradient_z_C;
     beam.law = MaterialLaw(material, reference_C);
-    const beam::SectionalStiffness share = beam::youngs_share(e, material);
-    beam.youngs_share << share.axial_N, share.shear_y_N, share.shear_z_N, share.torsional_Nm2, share.bending_y_Nm2,
-        share.bending_z_Nm2;
+    beam.youngs_share = beam::youngs_share_about_axis(e, material);
     beam.inverse_depth_z_1_m = e.height_z_m > 0.0 ? 1.0 / e.height_z_m : 0.0;
     beam.inverse_depth_y_1_m = e.height_y_m > 0.0 ? -1.0 / e.height_y_m : 0.0;
   }

@@ -48,6 +48,18 @@ struct BeamElement {
   double axial_stiffness_N = 0.0;                                     // EA
   Eigen::Vector2d bending_stiffness_Nm2 = Eigen::Vector2d::Zero();    // EI_y, EI_z; 2D: EI_z
   double torsional_stiffness_Nm2 = 0.0;                               // GJ (3D only)
+  // The full sectional stiffness C about the reference axis (the nodes' line) in the local
+  // frame, order (EA, GA_y, GA_z, GJ, EI_y, EI_z) — N, N·m, N·m² by block; 2D: the
+  // (EA, GA_y, EI_z) block top left. Symmetric positive definite; replaces the diagonal values
+  // when given (docs/theory.md, "Sections with offsets").
+  Eigen::Matrix<double, 6, 6> sectional_stiffness_matrix = Eigen::Matrix<double, 6, 6>::Zero();
+  bool sectional_stiffness_given = false;
+  // Local (y, z) of the elastic centroid and of the shear centre from the reference axis (m):
+  // they move C from those points to the axis (docs/theory.md, "Sections with offsets").
+  Eigen::Vector2d centroid_offset_m = Eigen::Vector2d::Zero();
+  Eigen::Vector2d shear_centre_offset_m = Eigen::Vector2d::Zero();
+  // Local (y, z) of the mass centroid from the reference axis (m); couples ẍ with the directors.
+  Eigen::Vector2d mass_centroid_offset_m = Eigen::Vector2d::Zero();
   double reference_length_m = 0.0;  // L0: given, or the distance of the nodes' initial positions
   bool length_given = false;
   TimeFunction temperature_change_C;  // ΔT_e(t) of the axis, °C

@@ -5,6 +5,7 @@
 
 #include <fmt/format.h>
 
+#include <Eigen/Eigenvalues>
 #include <Eigen/Geometry>
 #include <cmath>
 #include <optional>
@@ -48,12 +49,26 @@ constexpr ElementField kBeamFields[] = {
     {"bending_stiffness", "N·m²", "`E · [inertia_y, inertia_z]`",
      "a number or a vector: 3D [EI_y, EI_z] for bending about local y, z, each > 0; 2D the number EI_z > 0"},
     {"torsional_stiffness", "N·m²", "`shear_modulus · torsion`", "> 0: GJ; 3D only"},
+    {"sectional_stiffness", "N, N·m, N·m²", "diag(EA, GA_y, GA_z, GJ, EI_y, EI_z) of the keys above",
+     "a vector of 36 numbers, the rows of the full 6 × 6 C about the beam's axis in its local frame, order (axial, shear y, shear z, torsion, bending about y, about z); symmetric positive definite; 3D only; not with the stiffness keys above, `shear_factor`, `shear_modulus` or the two offsets below"},
+    {"centroid_offset", "m", "[0, 0]", "[e_y, e_z]: the elastic centroid in local (y, z) from the beam's axis; EA, EI_y, EI_z are about it; 3D only"},
+    {"shear_centre_offset", "m", "[0, 0]", "[y_s, z_s]: the shear centre in local (y, z) from the axis; GA_y, GA_z, GJ are about it; 3D only"},
+    {"mass_centroid_offset", "m", "[0, 0]", "[y_m, z_m]: the mass centroid in local (y, z) from the axis; `rotary_inertia_per_length` is about it; 3D only"},
     {"length", "m", "distance of the nodes' initial positions", "> 0: the reference length L0"},
     {"dT", "°C", "`thermal.dT`", "a function: this beam's own ΔT(t) of its axis"},
 };
 
-constexpr std::string_view kOnly3D[] = {"inertia_y", "torsion", "orientation", "height_z",
-                                        "dT_gradient_z", "section_modulus_y", "torsional_stiffness"};
+constexpr std::string_view kOnly3D[] = {"inertia_y",           "torsion",         "orientation",
+                                        "height_z",            "dT_gradient_z",   "section_modulus_y",
+                                        "torsional_stiffness", "sectional_stiffness", "centroid_offset",
+                                        "shear_centre_offset", "mass_centroid_offset"};
+// What a full `sectional_stiffness` replaces, and the offsets it already holds.
+constexpr std::string_view kReplacedBySectionalStiffness[] = {
+    "axial_stiffness", "shear_stiffness", "bending_stiffness", "torsional_stiffness", "shear_factor",
+    "shear_modulus",   "centroid_offset", "shear_centre_offset"};
+// Relative asymmetry |C_ij − C_ji| / √(C_ii C_jj) tolerated in a given C (rounded decimals).
+constexpr double kSectionalAsymmetryTolerance = 1e-9;
+
 constexpr std::string_view kBeamSectionKeys[] = {"area", "inertia_z", "inertia_y", "torsion",
                                              "section_modulus_z", "section_modulus_y"};
 
@@ -140,6 +155,55 @@ void read_sectional_values(const ElementEntryReader& entry, bool three_d, BeamEl
   }
 }
 
+// `sectional_stiffness` (docs/theory.md, D4a): symmetric (within rounding, then made exactly so)
+// and positive definite. Definiteness is judged on D^-½ C D^-½ (unit diagonal), so that EA ~ 1e8 N
+// and GJ ~ 1 N·m² do not hide a singular coupling.
+void read_sectional_stiffness(const ElementEntryReader& entry, BeamElement& beam) {
+  const std::optional<std::vector<double>> values = entry.optional_numbers("sectional_stiffness", 36, "N, N·m, N·m²");
+  if (!values) return;
+  for (const std::string_view key : kReplacedBySectionalStiffness) {
+    if (entry.has(key)) {
+      entry.fail(key, fmt::format("give either 'sectional_stiffness' (the full 6 × 6 C about the axis) or '{}', "
+                                  "not both: the full matrix already holds it",
+                                  key));
+    }
+  }
+  const Eigen::Matrix<double, 6, 6> given = Eigen::Map<const Eigen::Matrix<double, 6, 6, Eigen::RowMajor>>(values->data());
+  const Eigen::Matrix<double, 6, 1> diagonal = given.diagonal();
+  for (int i = 0; i < 6; ++i) {
+    if (!(diagonal[i] > 0.0)) {
+      entry.fail("sectional_stiffness", fmt::format("diagonal entry C{}{} must be positive, got {}", i + 1, i + 1, diagonal[i]));
+    }
+    for (int j = 0; j < i; ++j) {
+      const double scale = std::sqrt(diagonal[i] * diagonal[j]);
+      if (!(std::abs(given(i, j) - given(j, i)) <= kSectionalAsymmetryTolerance * scale)) {
+        entry.fail("sectional_stiffness", fmt::format("must be symmetric: C{}{} = {} but C{}{} = {}", i + 1, j + 1,
+                                                      given(i, j), j + 1, i + 1, given(j, i)));
+      }
+    }
+  }
+  const Eigen::Matrix<double, 6, 6> symmetric = 0.5 * (given + given.transpose());
+  const Eigen::Matrix<double, 6, 1> inverse_root = diagonal.cwiseSqrt().cwiseInverse();
+  const Eigen::Matrix<double, 6, 6> unit_diagonal = inverse_root.asDiagonal() * symmetric * inverse_root.asDiagonal();
+  const double least = Eigen::SelfAdjointEigenSolver<Eigen::Matrix<double, 6, 6>>(unit_diagonal, Eigen::EigenvaluesOnly)
+                           .eigenvalues()
+                           .minCoeff();
+  if (!(least > kSectionalAsymmetryTolerance)) {
+    entry.fail("sectional_stiffness",
+               fmt::format("must be positive definite: scaled to a unit diagonal its least eigenvalue is {} (a "
+                           "coupling term too large for the diagonal ones)",
+                           least));
+  }
+  beam.sectional_stiffness_matrix = symmetric;
+  beam.sectional_stiffness_given = true;
+}
+
+// An offset [y, z] (m) in the section, zero when not given.
+Eigen::Vector2d read_offset(const ElementEntryReader& entry, std::string_view key) {
+  const std::optional<std::vector<double>> values = entry.optional_numbers(key, 2, "m");
+  return values ? Eigen::Vector2d((*values)[0], (*values)[1]) : Eigen::Vector2d::Zero();
+}
+
 }  // namespace
 
 std::span<const ElementField> entry_fields() { return kBeamFields; }
@@ -204,6 +268,12 @@ void read_entry(const std::string& name, const ElementEntryReader& entry, Model&
   const std::optional<double> shear_modulus = entry.optional_number("shear_modulus", ValueSign::positive, "Pa");
   beam.shear_modulus_Pa = shear_modulus.value_or(material.youngs_modulus_Pa / kYoungsToShearModulus);
   beam.shear_modulus_given = shear_modulus.has_value();
+  if (three_d) {
+    read_sectional_stiffness(entry, beam);
+    beam.centroid_offset_m = read_offset(entry, "centroid_offset");
+    beam.shear_centre_offset_m = read_offset(entry, "shear_centre_offset");
+    beam.mass_centroid_offset_m = read_offset(entry, "mass_centroid_offset");
+  }
   read_sectional_values(entry, three_d, beam);
   read_gradient(entry, "dT_gradient_y", "height_y", beam.temperature_gradient_y_C,
                 beam.gradient_y_given, beam.height_y_m);
@@ -264,11 +334,20 @@ void write_entry(const Model& model, int index, ElementEntryWriter& entry) {
     per_axis("rotary_inertia_per_length", {inertia[0], inertia[1], inertia[2]}, inertia[2]);
   }
   const Eigen::Vector2d& shear = beam.shear_stiffness_N;
-  if (shear[0] > 0.0) {
+  if (beam.sectional_stiffness_given) {
+    const Eigen::Matrix<double, 6, 6, Eigen::RowMajor> rows = beam.sectional_stiffness_matrix;
+    entry.numbers("sectional_stiffness", std::vector<double>(rows.data(), rows.data() + rows.size()));
+  } else if (shear[0] > 0.0) {
     per_axis("shear_stiffness", {shear[0], shear[1]}, shear[0]);
   } else {
     entry.number("shear_factor", beam.shear_factor);
   }
+  const auto offset = [&](std::string_view key, const Eigen::Vector2d& value) {
+    if (!value.isZero()) entry.numbers(key, {value[0], value[1]});
+  };
+  offset("centroid_offset", beam.centroid_offset_m);
+  offset("shear_centre_offset", beam.shear_centre_offset_m);
+  offset("mass_centroid_offset", beam.mass_centroid_offset_m);
   // A G derived from a temperature table's E stays derived, so that it follows E(T) on reload.
   const bool derived_from_table = !beam.shear_modulus_given && model.materials[beam.material].youngs_modulus_table_Pa;
   if (shear_modulus_used(beam, model.dimension) && !derived_from_table) {

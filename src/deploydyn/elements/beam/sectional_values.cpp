@@ -6,6 +6,24 @@ namespace {
 // A given value (> 0), else the derived one.
 double given_or(double given, double derived) { return given > 0.0 ? given : derived; }
 
+// Tᵀ diag(c) T (D4a).
+StiffnessMatrix moved_to_axis(const BeamElement& beam, const SectionalStiffness& diagonal) {
+  StiffnessMatrix c = StiffnessMatrix::Zero();
+  c.diagonal() << diagonal.axial_N, diagonal.shear_y_N, diagonal.shear_z_N, diagonal.torsional_Nm2,
+      diagonal.bending_y_Nm2, diagonal.bending_z_Nm2;
+  const Eigen::Vector2d& centroid = beam.centroid_offset_m;
+  const Eigen::Vector2d& shear_centre = beam.shear_centre_offset_m;
+  if (centroid.isZero() && shear_centre.isZero()) return c;
+  // The strains at the offset points from those at the axis (D4a): a fibre at (y, z) stretches by
+  // Γ1 + z K2 − y K3 and shears by (Γ2 − z K1, Γ3 + y K1).
+  StiffnessMatrix t = StiffnessMatrix::Identity();
+  t(0, 4) = centroid[1];
+  t(0, 5) = -centroid[0];
+  t(1, 3) = -shear_centre[1];
+  t(2, 3) = shear_centre[0];
+  return t.transpose() * c * t;
+}
+
 }  // namespace
 
 SectionalStiffness sectional_stiffness(const BeamElement& beam, const Material& material) {
@@ -31,12 +49,23 @@ SectionalStiffness youngs_share(const BeamElement& beam, const Material& materia
           .bending_z_Nm2 = derived(beam.bending_stiffness_Nm2[1], all.bending_z_Nm2)};
 }
 
+StiffnessMatrix stiffness_about_axis(const BeamElement& beam, const Material& material) {
+  if (beam.sectional_stiffness_given) return beam.sectional_stiffness_matrix;
+  return moved_to_axis(beam, sectional_stiffness(beam, material));
+}
+
+StiffnessMatrix youngs_share_about_axis(const BeamElement& beam, const Material& material) {
+  if (beam.sectional_stiffness_given) return StiffnessMatrix::Zero();
+  return moved_to_axis(beam, youngs_share(beam, material));
+}
+
 double rotary_inertia_2d_kg_m2(const BeamElement& beam) {
   const double given = beam.rotary_inertia_per_length_kg_m[2];
   return given > 0.0 ? given * beam.reference_length_m : beam.mass_kg * beam.inertia_z_m4 / beam.area_m2;
 }
 
 bool shear_modulus_used(const BeamElement& beam, int dimension) {
+  if (beam.sectional_stiffness_given) return false;
   return !(beam.shear_stiffness_N[0] > 0.0 && (dimension == 2 || beam.torsional_stiffness_Nm2 > 0.0));
 }
 

@@ -28,6 +28,18 @@ SectionalStiffness sectional_stiffness(const BeamElement& beam, const Material& 
 // "Temperature-dependent material properties").
 SectionalStiffness youngs_share(const BeamElement& beam, const Material& material);
 
+// C about the reference axis, in the order (EA, GA_y, GA_z, GJ, EI_y, EI_z) of (D4).
+using StiffnessMatrix = Eigen::Matrix<double, 6, 6>;
+
+// The given `sectional_stiffness`, else Tᵀ diag(c) T: the diagonal values c of
+// sectional_stiffness, taken at the elastic centroid (EA, EI_y, EI_z) and the shear centre
+// (GA_y, GA_z, GJ), moved to the reference axis by the beam's offsets (D4a). Without offsets:
+// diag(c), bit for bit.
+StiffnessMatrix stiffness_about_axis(const BeamElement& beam, const Material& material);
+
+// youngs_share moved to the axis the same way; zero for a given `sectional_stiffness`.
+StiffnessMatrix youngs_share_about_axis(const BeamElement& beam, const Material& material);
+
 // 2D: the rotary inertia of the whole beam about local z (kg·m²), J_zz L0 or m I_z / A (B8).
 double rotary_inertia_2d_kg_m2(const BeamElement& beam);
 
