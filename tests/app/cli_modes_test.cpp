@@ -2,7 +2,6 @@
 
 #include <gtest/gtest.h>
 
-#include <filesystem>
 #include <fstream>
 #include <sstream>
 #include <string>
@@ -127,27 +126,16 @@ TEST(ModesCommand, TimesThatAreNotFiniteOrAbsurdAreRefusedShortly) {
 namespace deploydyn {
 namespace DEPLOYDYN_FILE_SCOPE {
 
-// A free hinge's turn is a motion that vibrates, its lock no constraint: two bars (m = ρ A L =
-// 0.785 kg, L = 1 m) pinned at A, on a roller at B, with a hinge spring k = 10 N·m/rad at H
-// between them. H rising by δ turns each bar by δ/L and the hinge by 2δ/L, so with the bars'
+// A free hinge's turn is a motion that vibrates, its lock no constraint: the two-bar chain of
+// tests/assembly/models/hinge_chain_modal.yaml (m = 0.785 kg, L = 1 m, hinge spring k = 10
+// N·m/rad). H rising by δ turns each bar by δ/L and the hinge by 2δ/L, so with the bars'
 // consistent mass (each turning about its far end, J = m L²/3):
 //   ω² = ½ k (2/L)² · 2 / (2 m L²/3 / L²) = 6 k / (m L²).
 // Held (--hinges held), the lock holds and the turn is no mode: 2 of 3 are left.
 TEST(ModesCommand, AFreeHingeTurnsWithItsSpringAndAHeldOneIsNoMode) {
   const ScratchFolder folder("modes_hinge_chain");
-  std::filesystem::create_directories(folder.path());
-  const auto model = folder.path() / "chain.yaml";
-  std::ofstream(model) << R"(
-nodes: {A: [0, 0], H: [1, 0], B: [2, 0]}
-materials: {steel: {E: 2.0e11, density: 7850}}
-elements:
-  a: {nodes: [A, H], area: 1.0e-4, material: steel}
-  b: {nodes: [H, B], area: 1.0e-4, material: steel}
-  h: {type: hinge, nodes: [A, H, B], stiffness: 10, latch: 0.5}
-supports: [{node: A}, {node: B, fix: [y]}]
-analysis: {type: modal, modes: 3}
-)";
-  const auto free = run_cli("modes " + model.string() + " --out " + (folder.path() / "free").string());
+  const std::string model = std::string(DEPLOYDYN_SOURCE_DIR) + "/tests/assembly/models/hinge_chain_modal.yaml";
+  const auto free = run_cli("modes " + model + " --out " + (folder.path() / "free").string());
   ASSERT_EQ(free.exit_code, 0) << free.output;
   std::istringstream lines(read_text(folder.path() / "free" / "modes.csv"));
   std::string line;
@@ -160,7 +148,7 @@ analysis: {type: modal, modes: 3}
   const double mass_kg = 7850.0 * 1.0e-4 * 1.0;
   EXPECT_EQ(mode, "1");
   EXPECT_NEAR(std::stod(omega2), 6.0 * 10.0 / mass_kg, 1e-6 * 6.0 * 10.0 / mass_kg);
-  const auto held = run_cli("modes " + model.string() + " --hinges held --out " + (folder.path() / "held").string());
+  const auto held = run_cli("modes " + model + " --hinges held --out " + (folder.path() / "held").string());
   EXPECT_NE(held.output.find("4 constraint equations in force, so at most 2"), std::string::npos) << held.output;
 }
 

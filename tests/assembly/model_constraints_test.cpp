@@ -40,25 +40,10 @@ TEST(ModelConstraints, TheAssemblersRowsInTheAssemblersOrderBeforeTheHingeLocks)
 // The loader's bound on the modes counts the constraints without the hinge locks: a hinge that
 // is free leaves its motion to vibrate.
 TEST(ModelConstraints, TheModalBoundLeavesOutHingeLocks) {
-  const std::string hinge_chain = R"(
-nodes: {A: [0, 0], H: [1, 0], B: [2, 0]}
-materials: {steel: {E: 2.0e11, density: 7850}}
-elements:
-  a: {nodes: [A, H], area: 1.0e-4, material: steel}
-  b: {nodes: [H, B], area: 1.0e-4, material: steel}
-  h: {type: hinge, nodes: [A, H, B], stiffness: 10, latch: 0.5}
-supports: [{node: A}, {node: B, fix: [y]}]
-analysis: {type: modal, modes: MODES}
-)";
-  const auto with_modes = [&](int n) {
-    std::string text = hinge_chain;
-    text.replace(text.find("MODES"), 5, std::to_string(n));
-    return text;
-  };
-  // 6 coordinates, 3 support rows: 3 free (two stretches and the hinge's turn).
-  EXPECT_EQ(load_model_from_string(with_modes(3), "chain.yaml").analysis.modal.n_modes, 3);
+  const std::string chain = std::string(DEPLOYDYN_SOURCE_DIR) + "/tests/assembly/models/hinge_chain_modal.yaml";
+  EXPECT_EQ(load_model(chain).analysis.modal.n_modes, 3);
   try {
-    load_model_from_string(with_modes(4), "chain.yaml");
+    load_model(chain, parse_overrides({"analysis.modes=4"}));
     FAIL() << "4 modes of 3 free motions accepted";
   } catch (const std::exception& e) {
     EXPECT_NE(std::string(e.what()).find("6 coordinates and 3 constraint equations: at most 3 modes, got 4"),
