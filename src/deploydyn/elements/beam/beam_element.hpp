@@ -49,9 +49,9 @@ struct BeamElement {
   Eigen::Vector2d bending_stiffness_Nm2 = Eigen::Vector2d::Zero();    // EI_y, EI_z; 2D: EI_z
   double torsional_stiffness_Nm2 = 0.0;                               // GJ (3D only)
   // The full sectional stiffness C about the reference axis (the nodes' line) in the local
-  // frame, order (EA, GA_y, GA_z, GJ, EI_y, EI_z) — N, N·m, N·m² by block; 2D: the
-  // (EA, GA_y, EI_z) block top left. Symmetric positive definite; replaces the diagonal values
-  // when given (docs/theory.md, "Sections with offsets").
+  // frame, order (EA, GA_y, GA_z, GJ, EI_y, EI_z) — N, N·m, N·m² by block; 3D only (a 2D
+  // beam refuses it). Symmetric positive definite; replaces the diagonal values when given
+  // (docs/theory.md, "Sections with offsets").
   Eigen::Matrix<double, 6, 6> sectional_stiffness_matrix = Eigen::Matrix<double, 6, 6>::Zero();
   bool sectional_stiffness_given = false;
   // Local (y, z) of the elastic centroid and of the shear centre from the reference axis (m):
