@@ -192,3 +192,56 @@ def test_a_folder_without_results_is_a_clear_error(tmp_path):
     assert done.returncode == 2
     assert "summary.json" in done.stderr and str(tmp_path) in done.stderr
     assert not (tmp_path / "report.html").exists()
+
+
+PER_AXIS_COLUMN = """
+name: column, K per axis
+nodes: {A: [0, 0, 0], M: [0.5, 0, 0], B: [1, 0, 0]}
+materials: {steel: {E: 2.1e11, density: 7850, yield_strength: 3.55e8}}
+elements:
+  c1: {type: beam, nodes: [A, M], area: 1.0e-4, inertia_y: 4.0e-8, inertia_z: 1.0e-8, torsion: 1.0e-8, material: steel, orientation: [0, 1, 0]}
+  c2: {type: beam, nodes: [M, B], area: 1.0e-4, inertia_y: 4.0e-8, inertia_z: 1.0e-8, torsion: 1.0e-8, material: steel, orientation: [0, 1, 0]}
+members:
+  column: {elements: [c1, c2], buckling_length_factor: [0.5, 2]}
+supports: [{node: A, fix: [x, y, z], axis: [0, 1, 0]}, {node: B, fix: [y, z], axis: [0, 1, 0]}]
+loads:
+  - {node: B, force: [-1000, 0, 0]}
+analysis: {type: static, end: 1, step: 0.5}
+"""
+
+
+def test_the_verdict_lists_checks_and_members_with_their_buckling_length_factors(browser, tmp_path):
+    """The report's verdict section: the outcome, each check's largest utilization, and the
+    members by utilization with the K each was checked with, K_y and K_z where a 3D beam
+    member's differ; a failing run (the heated bay) is marked as failing."""
+    model = tmp_path / "column.yaml"
+    model.write_text(PER_AXIS_COLUMN)
+    folder = tmp_path / "column"
+    run_cli("run", model, "--out", folder, "--quiet")
+    run_cli("report", folder, "--quiet")
+    verdict = json.loads((folder / "summary.json").read_text())["verdict"]
+    open_report(browser, folder / "report.html")
+    assert browser.find_element("id", "verdict-section").is_displayed()
+    outcome = browser.find_element("id", "verdict-outcome")
+    assert outcome.text.startswith("deploys: ") and "fails" not in outcome.get_attribute("class")
+    checks = browser.execute_script(
+        "return Array.from(document.querySelectorAll('#verdict-checks tbody tr')).map(r => r.cells[0].textContent)")
+    assert checks == list(verdict["checks"])
+    member, kind, governing, utilization, _, factor = browser.execute_script(
+        "return window.deploydynReport.verdictMembers")[0]
+    assert (member, kind, governing) == ("column", "beam", "buckling")
+    assert utilization == verdict["members"]["column"]["utilization"]
+    # N = 1 kN against π² E I_z / (K_z L)² with K_z = 2: the weak axis at its given K governs.
+    assert utilization == pytest.approx(1000 / (np.pi ** 2 * 2.1e11 * 1e-8 / 4), rel=1e-3)
+    assert factor == "K_y = 0.5, K_z = 2 (given)"
+    assert severe_messages(browser) == []
+
+    bay = tmp_path / "bay"
+    run_cli("run", SOURCE_DIR / "examples" / "checks" / "heated_bay.yaml", "--out", bay, "--quiet")
+    run_cli("report", bay, "--quiet")
+    open_report(browser, bay / "report.html")
+    outcome = browser.find_element("id", "verdict-outcome")
+    assert outcome.text.startswith("does not deploy: ") and "fails" in outcome.get_attribute("class")
+    over = browser.execute_script("return document.querySelectorAll('#verdict-members td.over').length")
+    assert over >= 1
+    assert severe_messages(browser) == []

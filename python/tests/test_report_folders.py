@@ -112,6 +112,7 @@ def test_a_continuation_folder_draws_its_path_and_the_structure_at_a_chosen_poin
     browser.execute_script(f"{report}.setFrame({report}.frameCount - 1)")
     last = drawn(canvas_pixels(browser))
     canvas = browser.find_element("id", "path-plot")
+    browser.execute_script("arguments[0].scrollIntoView({block: 'center'})", canvas)  # the whole plot in view
     from selenium.webdriver.common.action_chains import ActionChains
     size = canvas.size
     x0, y0 = points[0]

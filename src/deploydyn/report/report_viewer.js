@@ -159,6 +159,60 @@
     }
   }
 
+  // --- Verdict -------------------------------------------------------------------------------
+  // summary.json's verdict (docs/model-format.md): the outcome, the largest utilization of each
+  // check, and the members by utilization with the buckling length factor each was checked with
+  // (per axis, K_y and K_z, for a 3D beam member whose axes differ).
+  function bucklingFactor(m) {
+    if (!m.buckling_length_source) return '';
+    const [ky, kz] = m.buckling_length_factors || [];
+    const k = (ky !== undefined && ky !== null && kz !== undefined && kz !== null && ky !== kz)
+      ? `K_y = ${formatNumber(ky)}, K_z = ${formatNumber(kz)}`
+      : m.buckling_length_factor !== null && m.buckling_length_factor !== undefined ? `K = ${formatNumber(m.buckling_length_factor)}` : 'K —';
+    return `${k} (${m.buckling_length_source})`;
+  }
+  function fillTable(id, columns, rows) {
+    const head = document.querySelector(`#${id} thead`), body = document.querySelector(`#${id} tbody`);
+    const tr = document.createElement('tr');
+    for (const c of columns) { const th = document.createElement('th'); th.textContent = c; tr.append(th); }
+    head.append(tr);
+    for (const row of rows) {
+      const line = document.createElement('tr');
+      row.forEach((v, k) => {
+        const td = document.createElement('td');
+        td.textContent = typeof v === 'number' ? formatNumber(v) : (v ?? '');
+        if (typeof v === 'number') td.className = 'numeric';
+        if (columns[k] === 'utilization' && v > 1) td.classList.add('over');  // beyond capacity
+        line.append(td);
+      });
+      body.append(line);
+    }
+  }
+  function showVerdict() {
+    const v = data.summary.verdict;
+    report.verdictMembers = [];
+    if (!v) return;
+    document.getElementById('verdict-section').hidden = false;
+    const along = v.along ? `${v.along.quantity}${v.along.unit ? ' (' + v.along.unit + ')' : ''}` : 't (s)';
+    const outcome = v.along ? (v.deploys ? 'every check passes' : 'a check fails') : (v.deploys ? 'deploys' : 'does not deploy');
+    text('verdict-outcome', `${outcome}: ${v.reason}`);
+    document.getElementById('verdict-outcome').classList.toggle('fails', !v.deploys);
+    const checks = Object.entries(v.checks || {}).map(([name, c]) => [
+      name, c.max_utilization ?? null, c.member || '', c.element || '', c.time_s ?? null, c.checked, c.exceeded]);
+    fillTable('verdict-checks', ['check', 'utilization', 'member', 'element', along, 'checked', 'exceeded'], checks);
+    const notRun = Object.entries(v.checks_not_run || {}).map(([name, why]) => `${name}: ${why}`);
+    text('verdict-checks-note', notRun.length ? `not checked: ${notRun.join('; ')}` : '');
+    // summary.json lists the members of highest utilization only (its members_note says so).
+    const members = Object.entries(v.members || {}).sort((a, b) => b[1].utilization - a[1].utilization);
+    const rows = members.map(([name, m]) => {
+      const governing = m[m.governing] || {};
+      return [name, m.kind, m.governing, m.utilization, governing.time_s ?? null, bucklingFactor(m)];
+    });
+    fillTable('verdict-members', ['member', 'kind', 'governing check', 'utilization', along, 'buckling length factor'], rows);
+    report.verdictMembers = rows;
+    text('verdict-members-note', v.members_note || '');
+  }
+
   // --- 3D deployment -------------------------------------------------------------------------
   // Colour scales (report/member_colourings.hpp); grey for a member without a value.
   const colourScales = {
@@ -944,6 +998,7 @@
   }
 
   showSummary();
+  showVerdict();
   report.kind = data.kind || 'run';
   if (report.kind === 'run') {
     showTable();

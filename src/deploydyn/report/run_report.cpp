@@ -267,10 +267,12 @@ json summary_panel(const json& summary) {
                           "event_counts", "mode_switches", "output", "path", "modes"}) {
     if (summary.contains(key)) out[key] = summary[key];
   }
-  // The verdict's first failure is marked on the time plots; its lists of members are left out.
+  // The verdict's section (the first failure is also marked on the time plots): its checks and
+  // members, which summary.json already lists only for the members of highest utilization.
   if (summary.contains("verdict") && summary["verdict"].is_object()) {
     json verdict = json::object();
-    for (const char* key : {"deploys", "reason", "first_failure", "along"}) {
+    for (const char* key : {"deploys", "reason", "first_failure", "along", "checks", "checks_not_run", "members",
+                            "members_note"}) {
       if (summary["verdict"].contains(key)) verdict[key] = summary["verdict"][key];
     }
     out["verdict"] = verdict;
