@@ -13,6 +13,7 @@
 #include <Eigen/Dense>
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <nlohmann/json.hpp>
 
 #include "deploydyn/assembly/linear_system_factory.hpp"
@@ -332,6 +333,71 @@ TEST(DeployabilityWindow, AColdLevelThatCannotStartSitsOnThePulledStraightBranch
   EXPECT_NEAR(std::abs(stressed.sample.driver_effort), exact.torque_Nm, 1e-6 * exact.torque_Nm);
   EXPECT_GT(stressed.sample.lowest_eigenvalue_N_m, 0.0) << "a stable equilibrium";
   EXPECT_EQ(stressed.n_negative, 0);
+}
+
+// Driven the other way, from γ = 5° down to 1°, the cold linkage jams after it has started: the
+// flatter it is, the less shrinkage it can close over. The stress-free shrunk linkage (Green
+// strain: every bar's stress-free length L √(1 + 2 α ΔT)) can close while
+// |D + L₃' e_γ| ≤ L₁' + L₂'; equality gives the jam angle γ*(ΔT), reached at
+// t* = 5 s (5° − γ*) / 4°, and the threshold ΔT*(γ) of each position.
+double closing_gap_m(double gamma, double delta_t_C) {
+  const double stretch = std::sqrt(1.0 + 2.0 * 2.0e-5 * delta_t_C);
+  return (Eigen::Vector2d(0.357, 0.0) + 0.288 * stretch * Eigen::Vector2d(std::cos(gamma), std::sin(gamma))).norm() -
+         0.645 * stretch;
+}
+
+double bisect(const std::function<double(double)>& f, double lo, double hi) {
+  for (int k = 0; k < 200 && hi - lo > 1e-15 * std::abs(hi); ++k) {
+    const double mid = 0.5 * (lo + hi);
+    (f(mid) > 0.0) == (f(lo) > 0.0) ? lo = mid : hi = mid;
+  }
+  return 0.5 * (lo + hi);
+}
+
+TEST(DeployabilityWindow, ALinkageDrivenFlatterJamsAfterItStartsWhereTheClosedFormSays) {
+  constexpr double kDegree = M_PI / 180.0, kLevel_C = -50.0;
+  const Model model = load_model(example_path("parallel.yaml"),
+                                 parse_overrides({"drivers.motor.reading=angle",
+                                                  "drivers.motor.profile={type: table, points: [[0, 0], [5, -0.06981317007977318]]}"}));
+  WindowOptions options;
+  options.coldest_C = kLevel_C;
+  options.hottest_C = 0.0;
+  options.n_positions = 3;    // γ = 5°, 3°, 1°
+  options.n_deployments = 1;  // the coldest level alone
+  const WindowResult window = deployability_window(model, options);
+
+  // It starts (−50 °C is above the jam at 5°, −84.8 °C) and jams at γ*(−50 °C) = 3.837°.
+  const double jam_angle = bisect([&](double g) { return closing_gap_m(g, kLevel_C); }, 1e-4, 5.0 * kDegree);
+  const double jam_time_s = 5.0 * (5.0 * kDegree - jam_angle) / (4.0 * kDegree);
+  ASSERT_EQ(window.deployments.size(), 1u);
+  const WindowDeployment& d = window.deployments.front();
+  ASSERT_EQ(d.regime(), "jams");
+  ASSERT_TRUE(d.stop.has_value());
+  EXPECT_EQ(d.stop->kind, PathEventKind::limit_point);
+  EXPECT_GT(d.stop->time_s, 1.0);
+  EXPECT_NEAR(d.stop->time_s, jam_time_s, 1e-6) << "closed form " << jam_time_s << " s";
+
+  // The stressed branch at the stop: the jam is where the two branches meet, so the members are
+  // (to the fold's tolerance) unstrained, against E A α |ΔT| = 6 960 N at the level.
+  ASSERT_TRUE(d.stressed.has_value());
+  const WindowStressedState& stressed = *d.stressed;
+  ASSERT_TRUE(stressed.failure.empty()) << stressed.failure;
+  EXPECT_EQ(stressed.sample.time_s, d.stop->time_s);
+  EXPECT_EQ(stressed.sample.delta_t_C, kLevel_C);
+  ASSERT_EQ(stressed.axial_forces_N.size(), 3u);
+  for (double force_N : stressed.axial_forces_N) EXPECT_LT(std::abs(force_N), 1e-6 * 6960.0);
+
+  // The edges: none at 5° (its jam, −84.8 °C, lies beyond the range), then ΔT*(3°) and ΔT*(1°);
+  // the flattest position's is the threshold.
+  ASSERT_EQ(window.cold.edges.size(), 2u);
+  for (const WindowEdge& edge : window.cold.edges) {
+    const double gamma = (5.0 - 4.0 * edge.time_s / 5.0) * kDegree;
+    const double exact_C = bisect([&](double dT) { return closing_gap_m(gamma, dT); }, -84.9, -1e-6);
+    EXPECT_NEAR(edge.delta_t_C, exact_C, 1e-6 * std::abs(exact_C)) << "at t = " << edge.time_s << " s";
+  }
+  const auto cold = window.cold.threshold();
+  ASSERT_TRUE(cold.has_value());
+  EXPECT_EQ(cold->time_s, 5.0);
 }
 
 
