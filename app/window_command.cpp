@@ -112,6 +112,10 @@ CLI::App* add_window_command(CLI::App& app, WindowArguments& arguments) {
                      "Uniform ΔT levels deployed quasi-statically, evenly over the range")
       ->capture_default_str()
       ->check(CLI::Range(0, 1000));
+  window->add_option("--environment-time", arguments.environment_time_s,
+                     "With --load model on a model with an environment: the time (s) of the environment's state "
+                     "whose steady member temperatures are the load scaled by μ (a ground site's hour follows from "
+                     "its start); default 0");
   window->add_option("--set,-s", arguments.sets, "Override a value of the model: PATH=VALUE (VALUE may be a YAML flow [list] or {mapping})");
   window->add_option("--out,-o", arguments.out_dir, "Folder for window.csv and window.json");
   return window;
@@ -128,9 +132,14 @@ int window_command(const WindowArguments& arguments, const std::atomic<bool>& st
   const auto [lo, hi] = scaled ? parse_range("--scale", arguments.scale.empty() ? "-2:2" : arguments.scale)
                                : parse_range("--dT", arguments.range_C.empty() ? "-200:200" : arguments.range_C);
   const Model model = load_model(arguments.model_file, parse_overrides(arguments.sets));
+  if (arguments.environment_time_s != 0.0 && !(scaled && model.environment)) {
+    throw InputError("--environment-time", 0, 0, "",
+                     "the environment state of `--load model` on a model with an environment; this window has none");
+  }
   if (model.environment && !scaled) {
-    fmt::print(stderr, "warning: {}: the window does not use the model's environment: it imposes a uniform ΔT "
-                       "over its range\n", arguments.model_file);
+    fmt::print(stderr, "warning: {}: the uniform window does not use the model's environment: it imposes a "
+                       "uniform ΔT over its range (`--load model` scales the environment's steady temperatures)\n",
+               arguments.model_file);
   }
   WindowOptions options;
   options.load = load;
@@ -139,7 +148,8 @@ int window_command(const WindowArguments& arguments, const std::atomic<bool>& st
   options.n_positions = arguments.n_positions;
   options.n_deployments = arguments.n_deployments;
   options.stop = &stop;
-  const WindowRun run = run_window(model, WindowOrigin{arguments.model_file, arguments.sets, options}, arguments.out_dir);
+  const WindowRun run = run_window(
+      model, WindowOrigin{arguments.model_file, arguments.sets, options, arguments.environment_time_s}, arguments.out_dir);
   const WindowResult& window = run.window;
   const std::vector<Verdict>& verdicts = run.verdicts;
   const Level level = scaled ? Level{"μ", ""} : Level{"ΔT", " °C"};

@@ -23,6 +23,7 @@ struct WindowArguments {
   std::string scale;    // --scale; empty: -2:2 (model load only)
   int n_positions = 21;
   int n_deployments = 9;
+  double environment_time_s = 0.0;  // --environment-time: the environment state of --load model
   std::string out_dir;  // empty: print only
 };
 

@@ -676,9 +676,9 @@ py::dict modes_at(const LoadedModel& loaded, int n_modes, std::vector<double> ti
 py::dict window_of(const LoadedModel& loaded, const std::string& model_file, std::vector<std::string> overrides,
                    double coldest_C, double hottest_C, int n_positions, int n_deployments,
                    const std::optional<std::filesystem::path>& folder, const py::object& stop,
-                   const std::string& load) {
+                   const std::string& load, double environment_time_s) {
   StopWatch watch(stop);
-  WindowOrigin origin{model_file, std::move(overrides), {}};
+  WindowOrigin origin{model_file, std::move(overrides), {}, environment_time_s};
   origin.options.load = *kWindowLoads.find(load);  // the Python side checked the name
   origin.options.coldest_C = coldest_C;
   origin.options.hottest_C = hottest_C;
@@ -848,7 +848,7 @@ PYBIND11_MODULE(_core, m) {
            py::arg("hinges") = "free", py::arg("from_folder") = py::none())
       .def("window", &window_of, py::arg("model_file"), py::arg("overrides"), py::arg("coldest_C"),
            py::arg("hottest_C"), py::arg("n_positions"), py::arg("n_deployments"), py::arg("folder") = py::none(),
-           py::arg("stop") = py::none(), py::arg("load") = "uniform")
+           py::arg("stop") = py::none(), py::arg("load") = "uniform", py::arg("environment_time") = 0.0)
       .def("continuation", &continuation_of, py::arg("parameter"), py::arg("start"), py::arg("end"),
            py::arg("eigenvalues"), py::arg("max_steps"), py::arg("time"), py::arg("switch_branch"),
            py::arg("stop_at"), py::arg("stop") = py::none())

@@ -226,7 +226,8 @@ class Model:
                          for e in raw["events"]]
         return out
 
-    def window(self, dT=None, positions=21, deployments=9, out=None, stop=None, load="uniform", scale=None):
+    def window(self, dT=None, positions=21, deployments=9, out=None, stop=None, load="uniform", scale=None,
+               environment_time=None):
         """The deployability window, as `deploydyn window` computes it (docs/theory.md, "The
         deployability window"): over a range of thermal load levels, where the deployment stays
         stress-free, is stressed, jams or snaps, the thresholds located by continuation in the
@@ -235,7 +236,9 @@ class Model:
         load: "uniform" (the same ΔT on every member, over dT = (lo, hi), lo ≤ 0 ≤ hi, °C;
         default (-200, 200)) or "model" (the model's own ΔT and through-depth differences times
         a scale μ over scale = (lo, hi), lo ≤ 0 ≤ hi; default (-2, 2); every "dT" of the result
-        is then μ, and "pattern" gives the model's values at μ = 1). With `out`, window.csv and
+        is then μ, and "pattern" gives the model's values at μ = 1; for a model with an
+        `environment` the load is the members' steady temperatures in the environment's state at
+        environment_time (s, default 0), the structure as the file places it). With `out`, window.csv and
         window.json are written into that folder as the command's --out writes them. Returns
         window.json's content as a dict ("cold" and "hot": "reach", "threshold" {dT, dT_error,
         kind, t, description} or None, the first event per position in "edges"; "regimes" every
@@ -264,9 +267,12 @@ class Model:
         if positions > 10000 or deployments > 1000:
             raise ValueError(f"{where}: at most 10000 positions and 1000 deployments, got {positions} and {deployments}")
         folder = None if out is None else checked.path(where, "out", out)
+        if environment_time is not None and load != "model":
+            raise ValueError(f"{where}: environment_time is the environment state of load='model'")
+        at = 0.0 if environment_time is None else checked.finite(where, "environment_time", environment_time)
         overrides = [f"{path}={value}" for path, value in self._overrides]
         raw = self._core.window(str(self.source), overrides, lo, hi, positions, deployments, folder,
-                                checked.stop(where, stop), load)
+                                checked.stop(where, stop), load, at)
         result = json.loads(raw["json"])
         result["samples"] = {name: np.asarray(values) for name, values in raw["samples"].items()}
         return result

@@ -95,7 +95,7 @@ TEST(ModesCommand, ModesAndWindowSayTheyDoNotUseTheEnvironment) {
   const ScratchFolder folder("window_environment");
   const auto window = run_cli("window " + model + " --dT=-10:10 --positions 3 --deployments 2 --out " +
                               folder.path().string());
-  EXPECT_NE(window.output.find("the window does not use the model's environment"), std::string::npos)
+  EXPECT_NE(window.output.find("the uniform window does not use the model's environment"), std::string::npos)
       << window.output;
 }
 

@@ -18,6 +18,7 @@
 
 #include "deploydyn/assembly/linear_system_factory.hpp"
 #include "deploydyn/io/model_loader.hpp"
+#include "deploydyn/runs/window_folder.hpp"
 #include "deploydyn/solvers/static_solver.hpp"
 #include "support/cli.hpp"
 #include "support/csv_table.hpp"
@@ -400,6 +401,41 @@ TEST(DeployabilityWindow, ALinkageDrivenFlatterJamsAfterItStartsWhereTheClosedFo
   EXPECT_EQ(cold->time_s, 5.0);
 }
 
+// `window --load model` on a model with an environment sweeps its steady field at t = 0: a steel
+// tube pinned at both ends, broadside to the sun in orbit, at its radiative equilibrium T*
+// carries E A α (T* − T_ref) μ at every level μ.
+TEST(WindowCommand, AnEnvironmentsSteadyFieldIsTheModelsLoad) {
+  const Model model = load_model_from_string(R"(
+nodes: {A: [0, 0, 0], B: [1, 0, 0]}
+materials:
+  steel: {E: 2.0e11, alpha: 1.2e-5, density: 7850, specific_heat: 490, absorptivity: 0.5, emissivity: 0.8}
+sections: {tube: {shape: circular_tube, outer_diameter: 0.02, wall_thickness: 0.001}}
+elements: {tube: {nodes: [A, B], section: tube, material: steel}}
+supports: [{node: A}, {node: B}]
+environment: {type: orbit, sun_direction: [0, 0, 1], reference_temperature: 293.15}
+analysis: {type: static, end: 1, step: 0.5}
+)", "sunlit_tube.yaml");
+  WindowOptions options;
+  options.load = WindowLoad::model;
+  options.coldest_C = -1.0;
+  options.hottest_C = 1.0;
+  options.n_positions = 2;
+  options.n_deployments = 0;
+  const WindowRun run = run_window(model, WindowOrigin{"sunlit_tube.yaml", {}, options}, {});
+  const nlohmann::json window = nlohmann::json::parse(run.json);
+  // T*⁴ = α_s S d L / (ε σ π d L) + T_sink⁴, T_sink = 3 K.
+  const double steady_K = std::pow(0.5 * 1361.0 / (0.8 * 5.670374419e-8 * M_PI) + 81.0, 0.25);
+  const double pattern_C = steady_K - 293.15;
+  EXPECT_NEAR(window["pattern"]["hottest_axis_dT"].get<double>(), pattern_C, 1e-9 * 293.15);
+  EXPECT_NE(window["pattern"]["source"].get<std::string>().find("steady"), std::string::npos);
+  const double ea_alpha_N_C = 2.0e11 * M_PI / 4.0 * (0.02 * 0.02 - 0.018 * 0.018) * 1.2e-5;
+  ASSERT_GT(run.window.samples.size(), 4u);
+  for (const WindowSample& sample : run.window.samples) {
+    EXPECT_NEAR(sample.peak_axial_force_N, ea_alpha_N_C * std::abs(pattern_C * sample.delta_t_C),
+                1e-6 * ea_alpha_N_C * std::abs(pattern_C))
+        << "μ = " << sample.delta_t_C;
+  }
+}
 
 TEST(DeployabilityWindow, RangesWithoutZeroAreRejected) {
   WindowOptions options;

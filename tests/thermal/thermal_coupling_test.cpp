@@ -12,9 +12,11 @@
 #include <nlohmann/json.hpp>
 
 #include <cmath>
+#include <map>
 #include <numbers>
 #include <optional>
 
+#include "deploydyn/elements/element_kinds.hpp"
 #include "deploydyn/io/model_loader.hpp"
 #include "deploydyn/thermal/section_temperature_difference.hpp"
 #include "deploydyn/runs/run_to_folder.hpp"
@@ -347,6 +349,32 @@ analysis: {type: static, end: 3000, step: 10, output_interval: 100}
   const nlohmann::json summary = nlohmann::json::parse(testing::read_text(folder.path() / "summary.json"));
   EXPECT_NEAR(summary.at("temperatures").at("section_difference_max_K").get<double>(),
               temperatures.at(last, "dT_section.left"), 0.05);
+}
+
+// The steady field of one environment state (ThermalCoupling::settle): the cover in full sun
+// sits at its radiative equilibrium T⁴ = α_s S d L / (ε σ π d L) + T_sink⁴, the member it
+// shades wholly at the sink's temperature; the copy carries them as constant ΔT = T − T_ref
+// and has no environment.
+TEST(ThermalCoupling, TheSteadyFieldIsEachMembersRadiativeEquilibrium) {
+  const Model model = shaded_pair("shadows: true");
+  const Model settled = with_steady_temperatures(model, 0.0);
+  EXPECT_FALSE(settled.environment.has_value());
+  const double sink_K = 3.0, reference_K = 293.15;
+  const double cover_K = std::pow(0.5 * 1361.0 / (0.8 * kStefanBoltzmann_W_m2K4 * std::numbers::pi) + std::pow(sink_K, 4), 0.25);
+  const std::map<std::string, double> expected_C{{"cover", cover_K - reference_K}, {"lit", sink_K - reference_K}};
+  for (const ElementRef& ref : all_elements(settled)) {
+    const std::string& name = ref.kind->element_name(settled, ref.index);
+    SCOPED_TRACE(name);
+    const std::optional<ElementThermalLoad> load = ref.kind->thermal_load(settled, ref.index);
+    ASSERT_TRUE(load.has_value());
+    for (const double t : {0.0, 0.5, 100.0}) EXPECT_NEAR(load->axis_C.value(t), expected_C.at(name), 1e-9 * reference_K);
+  }
+  // The coupling's own view: the same temperatures, stored as the last state.
+  Model coupled = model;
+  ThermalCoupling coupling(coupled);
+  coupling.settle(0.0);
+  EXPECT_NEAR(coupling.temperatures_K()[1], cover_K, 1e-9 * cover_K);
+  EXPECT_EQ(coupling.shadowed_fractions()[0], 1.0);
 }
 
 TEST(ThermalCoupling, RunsWithoutAnEnvironmentAreUntouched) {

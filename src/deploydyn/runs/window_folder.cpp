@@ -14,6 +14,7 @@
 #include "deploydyn/output/checked_file.hpp"
 #include "deploydyn/output/output_error.hpp"
 #include "deploydyn/solvers/hinge_poses.hpp"
+#include "deploydyn/thermal/thermal_coupling.hpp"
 
 namespace deploydyn {
 namespace {
@@ -94,14 +95,18 @@ ordered_json pattern_json(const ThermalPattern& pattern) {
           {"varies_in_time", pattern.varies_in_time}};
 }
 
+// `pattern_source`: where the model's load comes from (its given ΔT, or its environment's steady field).
 std::string window_json(const Model& model, const WindowOrigin& origin, const WindowResult& window, double regime_step_C,
-                        const std::vector<Verdict>& verdicts, const ThermalPattern& pattern) {
+                        const std::vector<Verdict>& verdicts, const ThermalPattern& pattern, const std::string& pattern_source) {
   ordered_json j = origin_json(origin, window.stopped ? "interrupted" : "completed",
                                window.stopped ? "interrupted; the samples computed until then are kept" : "");
   const bool scaled = origin.options.load == WindowLoad::model;
   // With the model's load every "dT" is the scale μ of its pattern (solvers/window_thermal_load.hpp).
   j["units"] = {{"dT", scaled ? "1" : "°C"}, {"t", "s"}, {"eigenvalue", "N/m"}, {"force", "N"}};
-  if (scaled) j["pattern"] = pattern_json(pattern);
+  if (scaled) {
+    j["pattern"] = pattern_json(pattern);
+    j["pattern"]["source"] = pattern_source;
+  }
   j["positions"] = window.times_s;
   j["cold"] = side_json(window.cold);
   j["hot"] = side_json(window.hot);
@@ -136,34 +141,43 @@ std::string window_json(const Model& model, const WindowOrigin& origin, const Wi
 
 }  // namespace
 
-WindowRun run_window(const Model& model, const WindowOrigin& origin, const std::filesystem::path& folder) {
-  if (const std::string why = spring_driven_limit(model, "the deployability window"); !why.empty()) {
+WindowRun run_window(const Model& given, const WindowOrigin& origin, const std::filesystem::path& folder) {
+  if (const std::string why = spring_driven_limit(given, "the deployability window"); !why.empty()) {
     throw InputError(origin.model_file, 0, 0, "", why);
   }
   WindowOptions options = origin.options;
   validate(options);
-  const ThermalPattern pattern = thermal_pattern(model);
-  if (options.load == WindowLoad::model) {
-    if (model.environment) {
-      throw InputError(origin.model_file, 0, 0, "environment",
-                       "the window's `model` load scales the model's given ΔT and through-depth differences, and an "
-                       "environment's temperatures come from a run's heat balance: give them as dT tables, or take "
-                       "the `uniform` load");
-    }
-    if (pattern.empty()) {
-      throw InputError(origin.model_file, 0, 0, "thermal",
-                       "the window's `model` load scales the model's thermal load, and it has none (every dT and "
-                       "through-depth difference is 0): give one, or take the `uniform` load");
-    }
+  // With an environment the model's load is its steady temperature field at one time (docs/theory.md,
+  // "The steady field of an environment"), which the copy carries as given ΔT.
+  const bool settled = options.load == WindowLoad::model && given.environment.has_value();
+  const double at_s = origin.environment_time_s;
+  if (!(std::isfinite(at_s) && at_s >= 0.0) || (at_s != 0.0 && !settled)) {
+    throw InputError(origin.model_file, 0, 0, "environment_time",
+                     fmt::format("{} s: the time of the environment's state whose steady temperatures the `model` "
+                                 "load scales; a finite time ≥ 0 (s), for a model with an environment only",
+                                 at_s));
   }
-  WindowVerdicts deployment_verdicts(model);
+  const Model model = settled ? thermal::with_steady_temperatures(given, at_s) : Model{};
+  const Model& swept = settled ? model : given;
+  const ThermalPattern pattern = thermal_pattern(swept);
+  if (options.load == WindowLoad::model && pattern.empty()) {
+    throw InputError(origin.model_file, 0, 0, settled ? "environment" : "thermal",
+                     settled ? "the window's `model` load scales the environment's steady temperatures, and they "
+                               "equal the reference temperature everywhere: nothing to scale"
+                             : "the window's `model` load scales the model's thermal load, and it has none (every dT "
+                               "and through-depth difference is 0): give one, or take the `uniform` load");
+  }
+  WindowVerdicts deployment_verdicts(swept);
   deployment_verdicts.watch(options);
   std::optional<WindowFolder> taken;
   if (!folder.empty()) taken.emplace(folder, origin);
   WindowRun run;
-  run.window = deployability_window(model, options);
+  run.window = deployability_window(swept, options);
   run.verdicts = deployment_verdicts.verdicts(run.window);
-  run.json = window_json(model, origin, run.window, window_regime_step(options), run.verdicts, pattern);
+  run.json = window_json(swept, origin, run.window, window_regime_step(options), run.verdicts, pattern,
+                         settled ? fmt::format("the environment's steady temperatures at t = {} s, the structure as "
+                                               "the file places it", at_s)
+                                 : "the model's given dT and through-depth differences");
   if (taken) taken->write(run.window, run.json);
   return run;
 }

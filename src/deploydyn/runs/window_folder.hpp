@@ -38,6 +38,9 @@ struct WindowOrigin {
   std::string model_file;
   std::vector<std::string> overrides;  // the --set PATH=VALUE arguments
   WindowOptions options;
+  // With the model's load (WindowLoad::model) on a model with an environment: the time (s) of
+  // the environment's state whose steady temperatures are the load (thermal::with_steady_temperatures).
+  double environment_time_s = 0.0;
 };
 
 // window.csv's branch of a row: "traced" or "stressed" (WindowSample::stressed_branch).

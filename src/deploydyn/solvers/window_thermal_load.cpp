@@ -40,7 +40,8 @@ Model with_window_load(const Model& model, WindowLoad load, double level) {
   if (model.environment) {
     throw std::invalid_argument(
         "the window's `model` load scales the model's given ΔT and through-depth differences; an environment's "
-        "temperatures come from a run's heat balance step by step: give them as ΔT tables, or take `uniform`");
+        "temperatures come from its heat balance: take its steady field first (thermal::with_steady_temperatures, "
+        "as runs/window_folder does)");
   }
   loaded.temperature_change_C = scaled(model.temperature_change_C, level);
   const auto times_level = [&](const TimeFunction& f) { return scaled(f, level); };

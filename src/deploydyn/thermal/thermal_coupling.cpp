@@ -206,14 +206,20 @@ bool ThermalCoupling::shadows_due(const Eigen::VectorXd& q, double time_s) const
 
 void ThermalCoupling::before_step(const MotionState& start, double step_s) {
   const double end_s = start.time_s + step_s;
-  const Surroundings around = surroundings_at(*model_.environment, end_s);
-  advance_temperatures(start, step_s, around);
+  advance(start.q, step_s, surroundings_at(*model_.environment, end_s));
+  set_temperature_changes(start.time_s, end_s);
+}
+
+// The members' T and section differences at the end of a step of step_s from the structure at q,
+// in the surroundings `around`, into pending_K_ and pending_differences_K_.
+void ThermalCoupling::advance(const Eigen::VectorXd& q, double step_s, const Surroundings& around) {
+  advance_temperatures(q, step_s, around);
   // The sun-to-shade differences (docs/theory.md, "The section's sun-to-shade difference"):
   // D towards the sun's direction ⟂ the axis, relaxing as the mean temperature does.
   for (const int graded : graded_) {
     const auto i = static_cast<std::size_t>(graded);
     const HeatedElement& member = members_[i];
-    const Eigen::Vector3d along = axis_at(start.q, member).normalized();
+    const Eigen::Vector3d along = axis_at(q, member).normalized();
     const Eigen::Vector3d across_sun = around.sun_direction - around.sun_direction.dot(along) * along;  // |s⊥| = |sin θ|
     const double sin_theta = across_sun.norm();
     const double flux_W_m2 = around.direct_W_m2 * sin_theta * (1.0 - bodies_[i].shadowed_fraction);
@@ -228,14 +234,57 @@ void ThermalCoupling::before_step(const MotionState& start, double step_s) {
     const Eigen::Vector3d local_y = Eigen::Quaterniond::FromTwoVectors(member.initial_axis, along) * member.initial_local_y;
     local_axes_[i] = {local_y, along.cross(local_y)};
   }
-  set_temperature_changes(start.time_s, end_s);
+}
+
+// Pseudo-transient continuation (Kelley & Keyes, SIAM J. Numer. Anal. 35, 1998): backward Euler
+// steps so long that the stored heat m c (T₁ − T₀)/h drops out of the balance, each from the
+// last, until no temperature moves; conduction and the section differences settle with them.
+void ThermalCoupling::settle(double time_s) {
+  Eigen::VectorXd q = Eigen::VectorXd::Zero(dofs_.n_dofs());  // the positions the file gives
+  for (int node = 0; node < model_.n_nodes(); ++node) {
+    for (int axis = 0; axis < model_.dimension; ++axis) q[dofs_.index(node, axis)] = model_.nodes[node].position_m[axis];
+  }
+  if (shadows_) update_shadows(&q, time_s);
+  const Surroundings around = surroundings_at(*model_.environment, time_s);
+  constexpr double kSteadyStep_s = 1e15;  // m c / h below 1e-12 W/K for any member of our sizes
+  constexpr int kMaxSteps = 50;
+  double change_K = std::numeric_limits<double>::infinity();
+  for (int k = 0; k < kMaxSteps && change_K > 1e-9; ++k) {
+    advance(q, kSteadyStep_s, around);
+    change_K = 0.0;
+    for (std::size_t i = 0; i < members_.size(); ++i) change_K = std::max(change_K, std::abs(pending_K_[i] - temperatures_K_[i]));
+    for (const int graded : graded_) {
+      const auto i = static_cast<std::size_t>(graded);
+      change_K = std::max(change_K, (pending_differences_K_[i] - differences_K_[i]).norm());
+    }
+    temperatures_K_ = pending_K_;
+    differences_K_ = pending_differences_K_;
+  }
+  if (change_K > 1e-9) {
+    throw std::runtime_error(fmt::format("the environment's steady temperatures at t = {} s did not settle in {} "
+                                         "steps (last change {:.3g} K)", time_s, kMaxSteps, change_K));
+  }
+  time_s_ = time_s;
+  track_extremes(time_s);
+  const double reference_K = model_.environment->reference_temperature_K;
+  for (std::size_t i = 0; i < members_.size(); ++i) {
+    members_[i].kind->set_element_temperature_change(model_, members_[i].index,
+                                                     TimeFunction::constant(temperatures_K_[i] - reference_K));
+  }
+  for (const int graded : graded_) {
+    const auto i = static_cast<std::size_t>(graded);
+    const auto& [local_y, local_z] = local_axes_[i];
+    members_[i].kind->set_element_temperature_gradients(model_, members_[i].index,
+                                                        TimeFunction::constant(differences_K_[i].dot(local_y)),
+                                                        TimeFunction::constant(differences_K_[i].dot(local_z)));
+  }
 }
 
 // Every member's T at the step's end into pending_K_, and the heat balance's tally: loops over
 // the members' contiguous bodies, no allocation (but conduction's vector of temperatures).
-void ThermalCoupling::advance_temperatures(const MotionState& start, double step_s, const Surroundings& around) {
+void ThermalCoupling::advance_temperatures(const Eigen::VectorXd& q, double step_s, const Surroundings& around) {
   const std::size_t n = members_.size();
-  for (std::size_t i = 0; i < n; ++i) absorbed_W_[i] = absorbed_power_W(bodies_[i], axis_at(start.q, members_[i]), around);
+  for (std::size_t i = 0; i < n; ++i) absorbed_W_[i] = absorbed_power_W(bodies_[i], axis_at(q, members_[i]), around);
   if (conduction_) {
     const Eigen::VectorXd end_K = conduction_->backward_euler_step(
         bodies_, Eigen::Map<const Eigen::VectorXd>(temperatures_K_.data(), std::ssize(temperatures_K_)), step_s,
@@ -323,6 +372,13 @@ std::vector<double> ThermalCoupling::extra_column_values() const {
   if (shadows_) values = shadowed_;
   for (const int graded : graded_) values.push_back(differences_K_[static_cast<std::size_t>(graded)].norm());
   return values;
+}
+
+Model with_steady_temperatures(const Model& model, double time_s) {
+  Model settled = model;
+  ThermalCoupling(settled).settle(time_s);  // writes the members' ΔT functions into `settled`
+  settled.environment.reset();
+  return settled;
 }
 
 }  // namespace deploydyn::thermal

@@ -71,6 +71,11 @@ class ThermalCoupling final : public StepHook {
   void after_step(const MotionState& end, bool output) override;
   // The t = 0 output, when the initial equilibrium has been written.
   void start(double time_s);
+  // In place of a run: the steady temperatures (and section differences) of the members with
+  // the structure held as the file places it, in the surroundings of `time_s` (docs/theory.md,
+  // "The steady field of an environment"), written into the model as constant ΔT (and
+  // through-depth differences). Throws std::runtime_error if they do not settle.
+  void settle(double time_s);
 
   const std::vector<std::string>& member_names() const { return names_; }
   const std::vector<double>& temperatures_K() const { return temperatures_K_; }
@@ -109,7 +114,8 @@ class ThermalCoupling final : public StepHook {
   Eigen::Vector3d axis_at(const Eigen::VectorXd& q, const HeatedElement& member) const;
   void update_shadows(const Eigen::VectorXd* q, double time_s);
   bool shadows_due(const Eigen::VectorXd& q, double time_s) const;
-  void advance_temperatures(const MotionState& start, double step_s, const Surroundings& around);
+  void advance(const Eigen::VectorXd& q, double step_s, const Surroundings& around);
+  void advance_temperatures(const Eigen::VectorXd& q, double step_s, const Surroundings& around);
   void set_temperature_changes(double t0, double t1);
   void track_extremes(double time_s);
 
@@ -146,5 +152,11 @@ class ThermalCoupling final : public StepHook {
   TemperatureExtreme largest_difference_{0.0, -1, 0.0};
   TimeFunction segment_, segment_across_z_;  // the ΔT(t) segments handed to the elements, reused
 };
+
+// A copy of `model` without its environment whose members carry, as given constant ΔT and
+// through-depth differences, the environment's steady temperatures at `time_s`
+// (ThermalCoupling::settle): the temperature field of one environment state, for analyses that
+// take a given field (`window --load model`).
+Model with_steady_temperatures(const Model& model, double time_s);
 
 }  // namespace deploydyn::thermal
