@@ -20,6 +20,15 @@
 #include "deploydyn/checks/member_pairs.hpp"
 #include "deploydyn/model/dof_map.hpp"
 
+// FCL's segment–segment distance (Ericson, "Real-Time Collision Detection", 5.1.9), instantiated
+// here from its header, where libfcl only declares it (extern template): the watch runs FCL's
+// own code without loading libfcl and the libraries it pulls in (docs/performance.md, "A light
+// start").
+template double fcl::detail::clamp<double>(double, double, double);
+template double fcl::detail::closestPtSegmentSegment<double>(const fcl::Vector3d&, const fcl::Vector3d&,
+                                                             const fcl::Vector3d&, const fcl::Vector3d&, double*,
+                                                             double*, fcl::Vector3d*, fcl::Vector3d*);
+
 namespace deploydyn {
 namespace {
 

@@ -8,8 +8,9 @@
 // node has moved half its skin. It only watches: members are not stopped by each other (no
 // contact response), so a clash is reported, never prevented.
 //
-// The capsule distances are FCL's segment–segment kernel (libfcl-dev), behind this header: what
-// includes it does not see FCL; the broad phase is a sort and sweep of the capsules' boxes
+// The capsule distances are FCL's segment–segment kernel (libfcl-dev), instantiated from its
+// header in clearance.cpp, so no program loads libfcl; what includes this header does not see
+// FCL. The broad phase is a sort and sweep of the capsules' boxes
 // (checks/box_sweep.hpp). Which members are watched, as what capsules: checks/member_pairs.hpp.
 
 #include <memory>
@@ -65,15 +66,6 @@ class ClearanceSink : public RecordSink {
   bool wants_every_step() const override { return true; }
   virtual ClearanceReport report() const = 0;
 };
-
-// The FCL module's ClearanceWatch (modules/fcl_module.cpp, deploydyn_fcl.so), for the command
-// and the Python module, which do not link FCL (util/optional_module.hpp; docs/performance.md,
-// "A light start"). Throws std::runtime_error when the module cannot be loaded.
-std::unique_ptr<ClearanceSink> clearance_watch_from_module(const Model& model);
-
-using MakeClearanceWatch = ClearanceSink* (*)(const Model& model);
-inline constexpr const char* kFclModuleName = "deploydyn_fcl";
-inline constexpr const char* kMakeClearanceWatchSymbol = "deploydyn_make_clearance_watch";
 
 class ClearanceWatch final : public ClearanceSink {
  public:

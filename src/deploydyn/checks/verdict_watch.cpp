@@ -3,7 +3,7 @@
 namespace deploydyn {
 
 VerdictWatch::VerdictWatch(const Model& model) : model_(model), checks_(model) {
-  if (model.checks.clearance) clearance_ = clearance_watch_from_module(model);
+  if (model.checks.clearance) clearance_ = std::make_unique<ClearanceWatch>(model);
 }
 
 void VerdictWatch::record(const StepRecord& record) {

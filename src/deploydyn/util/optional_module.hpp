@@ -11,7 +11,6 @@
 //   deploydyn_mpi     Open MPI      `deploydyn study` was started by mpirun
 //   deploydyn_embree  Embree, TBB   an environment casts shadows between members
 //   deploydyn_umfpack UMFPACK (CHOLMOD, LAPACK, BLAS, gfortran)   `linear_solver: umfpack`
-//   deploydyn_fcl     FCL           a run watches the clearance between members (the default)
 //
 // Each module holds its own copy of the class it offers, from the static library, where the
 // class stays for the programs that link the library (and its library) themselves. The module
