@@ -514,7 +514,11 @@ py::dict continuation_of(const LoadedModel& loaded, const std::string& parameter
     throw std::invalid_argument("continuation: parameter must be 'thermal', 'load' or 'driver', got '" +
                                 parameter + "'");
   }
-  const Assembler assembler(loaded.model);  // std::invalid_argument → ValueError
+  // A model with an environment is traced in its steady temperature field at `time_s`.
+  const std::optional<Model> settled =
+      loaded.model.environment ? std::optional(thermal::with_steady_temperatures(loaded.model, time_s)) : std::nullopt;
+  const Model& traced = settled ? *settled : loaded.model;
+  const Assembler assembler(traced);  // std::invalid_argument → ValueError
   ContinuationOptions options;
   options.parameter = *path_parameter;
   options.start = start;
@@ -533,7 +537,7 @@ py::dict continuation_of(const LoadedModel& loaded, const std::string& parameter
   options.stop = watch.flag();  // ends the path "stopped", keeping its points
   // At each point as it is reached (the elements' history in force), history.csv's columns as
   // path.csv holds them (results/path_quantities.hpp).
-  const PathQuantities quantities(loaded.model);
+  const PathQuantities quantities(traced);
   const ParametrizedEquilibrium at_point(assembler, options.parameter, options.time_s);
   std::vector<double> rows;
   options.on_point = [&](const PathPoint& p, const PathEvent* /*event*/) {

@@ -189,7 +189,9 @@ class Model:
         model of `analysis: {type: continuation}` does: "thermal" scales every ΔT (μ = 1: the
         model's own), "load" scales the loads and gravity; drivers and ΔT(t) are read at `time`
         (s). "driver" follows a quasi-static deployment: μ is the time (s) at which the drivers'
-        positions, ΔT(t) and the loads are read (`time` is not used). With `switch_branch`, the
+        positions, ΔT(t) and the loads are read (`time` is not used). A model with an
+        `environment` is traced in its steady temperature field at `time` (docs/theory.md, "The
+        steady field of an environment"). With `switch_branch`, the
         path leaves at its first bifurcation along the critical mode and follows the bifurcated
         branch. stop_at: "end" (the path goes on to `end`) or "first_event" (it ends at its first
         event, that event its last point, "end" then "first_event"), as the model key `stop_at`.

@@ -120,3 +120,10 @@ analysis: {type: static, end: 1, step: 0.5}
         model.window(environment_time=150)
     done = run_cli("window", source, "--environment-time", "150", check=False)
     assert done.returncode == 2 and "--environment-time" in done.stderr
+    # A continuation is traced in the steady field at its `time`: the held tube's force is
+    # −E A α ΔT* μ (Green strain, l = L), in the sun and in the eclipse.
+    ea_alpha = 2.0e11 * np.pi / 4 * (0.02 ** 2 - 0.018 ** 2) * 1.2e-5
+    for time, dT in ((0.0, steady_K - 293.15), (150.0, 3.0 - 293.15)):
+        path = model.continuation("thermal", 1.0, time=time, eigenvalues=0)
+        force = path["values"][:, path["columns"].index("force.tube")]
+        assert force == pytest.approx(-ea_alpha * dT * path["mu"], rel=1e-6, abs=1e-6 * ea_alpha * abs(dT))

@@ -219,3 +219,51 @@ TEST(CliContinuation, PathCsvFollowsOutputSelect) {
 }
 
 }  // namespace
+
+namespace DEPLOYDYN_FILE_SCOPE {
+
+// A continuation of a model with an environment is traced in its steady field at t = 0: a steel
+// tube pinned at both ends, broadside to the sun in orbit, at its radiative equilibrium
+// T*⁴ = α_s S/(ε σ π) + T_sink⁴, carries E A α (T* − T_ref) μ along a thermal path.
+TEST(CliContinuation, AModelWithAnEnvironmentIsTracedInItsSteadyField) {
+  const ScratchFolder folder("continuation_environment");
+  std::filesystem::create_directories(folder.path());
+  const auto model = folder.path() / "sunlit_tube.yaml";
+  std::ofstream(model) << R"(
+nodes: {A: [0, 0, 0], B: [1, 0, 0]}
+materials:
+  steel: {E: 2.0e11, alpha: 1.2e-5, density: 7850, specific_heat: 490, absorptivity: 0.5, emissivity: 0.8}
+sections: {tube: {shape: circular_tube, outer_diameter: 0.02, wall_thickness: 0.001}}
+elements: {tube: {nodes: [A, B], section: tube, material: steel}}
+supports: [{node: A}, {node: B}]
+environment: {type: orbit, sun_direction: [0, 0, 1], reference_temperature: 293.15}
+analysis: {type: continuation, parameter: thermal, start: 0, end: 1}
+)";
+  const auto out = folder.path() / "out";
+  const auto outcome = run_cli("run " + model.string() + " --quiet --out " + out.string());
+  ASSERT_EQ(outcome.exit_code, 0) << outcome.output;
+  std::istringstream lines(read_text(out / "path.csv"));
+  std::string line, cell;
+  std::getline(lines, line);
+  std::vector<std::string> columns;
+  for (std::istringstream header(line); std::getline(header, cell, ',');) columns.push_back(cell);
+  const auto mu_at = std::ranges::find(columns, "mu") - columns.begin();
+  const auto force_at = std::ranges::find(columns, "force.tube") - columns.begin();
+  ASSERT_LT(force_at, static_cast<std::ptrdiff_t>(columns.size())) << line;
+  const double steady_K = std::pow(0.5 * 1361.0 / (0.8 * 5.670374419e-8 * M_PI) + 81.0, 0.25);
+  const double full_N = 2.0e11 * M_PI / 4.0 * (0.02 * 0.02 - 0.018 * 0.018) * 1.2e-5 * (steady_K - 293.15);
+  int points = 0;
+  double last_mu = 0.0;
+  while (std::getline(lines, line)) {
+    std::vector<double> row;
+    for (std::istringstream cells(line); std::getline(cells, cell, ',');) row.push_back(std::atof(cell.c_str()));
+    last_mu = row[static_cast<std::size_t>(mu_at)];
+    // Green strain: the force of a held bar is E A ε_m with ε_m = −α ΔT μ exactly (l = L).
+    EXPECT_NEAR(row[static_cast<std::size_t>(force_at)], -full_N * last_mu, 1e-6 * std::abs(full_N)) << "μ = " << last_mu;
+    ++points;
+  }
+  EXPECT_GT(points, 1);
+  EXPECT_DOUBLE_EQ(last_mu, 1.0);
+}
+
+}  // namespace DEPLOYDYN_FILE_SCOPE

@@ -172,9 +172,9 @@ class ModelReader {
     if (const auto checks = root_.find("checks")) read_checks(*checks);
     if (const auto velocities = root_.find("initial_velocities")) read_initial_velocities(*velocities);
     if (const auto environment = root_.find("environment");
-        environment && model_.analysis.type != AnalysisType::dynamic && model_.analysis.type != AnalysisType::quasi_static) {
-      environment->fail(fmt::format("sets the temperatures of a time history (analysis type dynamic or static), not of "
-                                    "analysis type {}",
+        environment && model_.analysis.type == AnalysisType::modal) {
+      environment->fail(fmt::format("sets the temperatures of a time history (analysis type dynamic or static) or, "
+                                    "as its steady field at t = 0, of a continuation; not of analysis type {}",
                                     to_string(model_.analysis.type)));
     }
     return std::move(model_);

@@ -21,6 +21,7 @@
 #include "deploydyn/results/result_file_names.hpp"
 #include "deploydyn/solvers/parametrized_equilibrium.hpp"
 #include "deploydyn/solvers/hinge_poses.hpp"
+#include "deploydyn/thermal/thermal_coupling.hpp"
 
 namespace deploydyn {
 namespace {
@@ -159,13 +160,15 @@ namespace {
 // goes, and the path's summary.
 class PathRun final : public FolderRun {
  public:
-  // The path's verdict is left in `verdict` when given.
-  PathRun(const Model& model, std::optional<Verdict>* verdict)
-      : wall_start_(std::chrono::steady_clock::now()),
-        assembler_(model),  // may throw before any file is touched
+  // The path's verdict is left in `verdict` when given. A model with an environment is traced
+  // in its steady temperature field at t = 0 (docs/theory.md, "The steady field of an environment").
+  PathRun(const Model& given, std::optional<Verdict>* verdict)
+      : settled_(given.environment ? std::optional(thermal::with_steady_temperatures(given, 0.0)) : std::nullopt),
+        wall_start_(std::chrono::steady_clock::now()),
+        assembler_(settled_ ? *settled_ : given),  // may throw before any file is touched
         verdict_(verdict),
-        watch_(model) {
-    if (const std::string why = spring_driven_limit(model, "a continuation"); !why.empty()) {
+        watch_(assembler_.model()) {
+    if (const std::string why = spring_driven_limit(given, "a continuation"); !why.empty()) {
       throw std::invalid_argument(why);
     }
   }
@@ -263,6 +266,7 @@ class PathRun final : public FolderRun {
     return record;
   }
 
+  std::optional<Model> settled_;  // with an environment: the model in its steady field
   std::chrono::steady_clock::time_point wall_start_;
   Assembler assembler_;
   ContinuationResult result_;
