@@ -375,6 +375,17 @@ TEST(ThermalCoupling, TheSteadyFieldIsEachMembersRadiativeEquilibrium) {
   coupling.settle(0.0);
   EXPECT_NEAR(coupling.temperatures_K()[1], cover_K, 1e-9 * cover_K);
   EXPECT_EQ(coupling.shadowed_fractions()[0], 1.0);
+
+  // In the dark with a sink at 0 K nothing settles (T = 0 is a double root): a clear error.
+  Model dark = model;
+  dark.environment->orbit.sink_temperature_K = 0.0;
+  dark.environment->orbit.eclipses = {{0.0, 100.0}};
+  try {
+    (void)with_steady_temperatures(dark, 0.0);
+    ADD_FAILURE() << "a dark member at a 0 K sink settled";
+  } catch (const std::runtime_error& error) {
+    EXPECT_NE(std::string(error.what()).find("sink_temperature above 0 K"), std::string::npos) << error.what();
+  }
 }
 
 TEST(ThermalCoupling, RunsWithoutAnEnvironmentAreUntouched) {

@@ -249,10 +249,14 @@ void ThermalCoupling::settle(double time_s) {
   constexpr double kSteadyStep_s = 1e15;  // m c / h below 1e-12 W/K for any member of our sizes
   constexpr int kMaxSteps = 50;
   double change_K = std::numeric_limits<double>::infinity();
+  std::size_t moving = 0;  // the member that changed most in the last step
   for (int k = 0; k < kMaxSteps && change_K > 1e-9; ++k) {
     advance(q, kSteadyStep_s, around);
     change_K = 0.0;
-    for (std::size_t i = 0; i < members_.size(); ++i) change_K = std::max(change_K, std::abs(pending_K_[i] - temperatures_K_[i]));
+    for (std::size_t i = 0; i < members_.size(); ++i) {
+      const double change = std::abs(pending_K_[i] - temperatures_K_[i]);
+      if (change > change_K) change_K = change, moving = i;
+    }
     for (const int graded : graded_) {
       const auto i = static_cast<std::size_t>(graded);
       change_K = std::max(change_K, (pending_differences_K_[i] - differences_K_[i]).norm());
@@ -261,8 +265,15 @@ void ThermalCoupling::settle(double time_s) {
     differences_K_ = pending_differences_K_;
   }
   if (change_K > 1e-9) {
-    throw std::runtime_error(fmt::format("the environment's steady temperatures at t = {} s did not settle in {} "
-                                         "steps (last change {:.3g} K)", time_s, kMaxSteps, change_K));
+    // A member that takes no heat (no sun, sky, air or neighbour) cools towards the sink without
+    // end when the sink is at 0 K: T = 0 is a double root of the balance.
+    throw std::runtime_error(fmt::format(
+        "the environment's steady temperatures at t = {} s did not settle in {} steps: member '{}' still moved by "
+        "{:.3g} K, at {:.4g} K{}",
+        time_s, kMaxSteps, names_[moving], change_K, temperatures_K_[moving],
+        around.sink_temperature_K == 0.0 ? " (it takes no heat and cools towards a sink at 0 K without end: give "
+                                           "the environment a sink_temperature above 0 K, deep space's is 3 K)"
+                                         : ""));
   }
   time_s_ = time_s;
   track_extremes(time_s);
