@@ -33,7 +33,9 @@ Model canopy_at_constant_rate(int girders, int units) {
 void BM_BeamCanopyStep(benchmark::State& state) {
   bench::SteppingRun run(canopy_at_constant_rate(static_cast<int>(state.range(0)), static_cast<int>(state.range(1))));
   const KluBlocks blocks = state.range(2) != 0 ? KluBlocks::triangular : KluBlocks::whole;
-  auto klu = std::make_unique<KluLinearSystem>(KluOrdering::automatic, blocks);
+  const KluOrdering ordering = state.range(3) == 1 ? KluOrdering::amd
+                               : state.range(3) == 2 ? KluOrdering::two_domains : KluOrdering::automatic;
+  auto klu = std::make_unique<KluLinearSystem>(ordering, blocks);
   klu->analyze(run.assembler->n_unknowns(), run.assembler->matrix_entries());
   KluLinearSystem& system = *klu;
   run.system = std::move(klu);
@@ -47,11 +49,15 @@ void BM_BeamCanopyStep(benchmark::State& state) {
 }
 
 BENCHMARK(BM_BeamCanopyStep)
-    ->ArgNames({"girders", "units", "btf"})
-    ->Args({2, 3, 0})
-    ->Args({2, 3, 1})
-    ->Args({25, 50, 0})
-    ->Args({25, 50, 1})
+    ->ArgNames({"girders", "units", "btf", "ordering"})
+    ->Args({2, 3, 0, 0})
+    ->Args({2, 3, 1, 0})
+    ->Args({4, 8, 0, 1})
+    ->Args({4, 8, 0, 2})
+    ->Args({10, 20, 0, 1})
+    ->Args({10, 20, 0, 2})
+    ->Args({25, 50, 0, 0})
+    ->Args({25, 50, 1, 0})
     ->Unit(benchmark::kMillisecond);
 
 }  // namespace

@@ -419,7 +419,9 @@ TEST(BoxSweep, VisitsThePairsEveryPairOfBoxesGivesBelowThePruningDistance) {
   });
   for (int i = 0; i < n; ++i) {
     for (int j = i + 1; j < n; ++j) {
-      if (box_distance(i, j) < pruning_m) EXPECT_TRUE(seen[static_cast<std::size_t>(i * n + j)]) << i << ", " << j;
+      if (box_distance(i, j) < pruning_m) {
+        EXPECT_TRUE(seen[static_cast<std::size_t>(i * n + j)]) << i << ", " << j;
+      }
     }
   }
 }

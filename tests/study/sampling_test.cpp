@@ -382,8 +382,8 @@ TEST(SamplingStatistics, CountsExceedanceAndCasesThatDidNotDeploy) {
     results[i].peak_force_N = {{"bar", peaks[i]}};
   }
   // s2's verdict fails its buckling check (utilization 1.5); s3's passes at 0.5.
-  results[2].verdict = CaseResult::Verdict{false, "buckling", "bar", 0.5, {{"buckling", 1.5}}};
-  results[3].verdict = CaseResult::Verdict{true, "", "", 0.0, {{"buckling", 0.5}}};
+  results[2].verdict = CaseResult::Verdict{false, "buckling", "bar", 0.5, {{"buckling", 1.5}}, std::nullopt};
+  results[3].verdict = CaseResult::Verdict{true, "", "", 0.0, {{"buckling", 0.5}}, std::nullopt};
   const std::string text = statistics_csv(study, results);
   const auto fields = [](ProbabilityInterval i) { return fmt::format("{},{}", i.low, i.high); };
   EXPECT_NE(text.find(fmt::format("not_deployed,*,1,4,0.25,,,,,,,,,,{}\n", fields(wilson_interval(1, 4)))),

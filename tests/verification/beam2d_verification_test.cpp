@@ -67,7 +67,12 @@ Model straight_beam(int n, const Section& s, TimeFunction dT = {}, TimeFunction 
   Model model;
   model.name = "beam";
   model.dimension = 2;
-  model.materials.push_back({.name = "steel", .youngs_modulus_Pa = s.youngs_modulus_Pa, .expansion_per_C = s.expansion_per_C, .density_kg_m3 = s.density_kg_m3});
+  Material material;  // the rest of Material at its defaults
+  material.name = "steel";
+  material.youngs_modulus_Pa = s.youngs_modulus_Pa;
+  material.expansion_per_C = s.expansion_per_C;
+  material.density_kg_m3 = s.density_kg_m3;
+  model.materials.push_back(material);
   for (int i = 0; i <= n; ++i) {
     model.nodes.push_back(
         {"N" + std::to_string(i), Eigen::Vector3d(kLength_m * i / n, 0.0, 0.0), 0.0});

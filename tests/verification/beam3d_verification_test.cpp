@@ -50,7 +50,12 @@ struct BeamSpec {
 Model straight_beam(const BeamSpec& spec, int n_elements, bool clamp_start) {
   Model model;
   model.dimension = 3;
-  model.materials.push_back({.name = "metal", .youngs_modulus_Pa = spec.youngs_Pa, .expansion_per_C = spec.expansion_per_C, .density_kg_m3 = spec.density_kg_m3});
+  Material material;  // the rest of Material at its defaults
+  material.name = "metal";
+  material.youngs_modulus_Pa = spec.youngs_Pa;
+  material.expansion_per_C = spec.expansion_per_C;
+  material.density_kg_m3 = spec.density_kg_m3;
+  model.materials.push_back(material);
   const double l0 = spec.length_m / n_elements;
   for (int i = 0; i <= n_elements; ++i) {
     model.nodes.push_back({fmt::format("N{}", i), (i * l0) * spec.axis, 0.0});
