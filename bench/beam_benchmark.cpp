@@ -4,8 +4,9 @@
 // (`btf:0`, what 3D beam models get now) and with it (`btf:1`, as before): the two in one
 // process, so that they can be run interleaved (--benchmark_enable_random_interleaving).
 // docs/performance.md, "3D beams".
-//   BM_BeamCanopyStep/girders/units/btf   time per step, Newton iterations per step, unknowns,
-//                                         beams, KLU's operations and factor entries per LU
+//   BM_BeamCanopyStep/girders/units/btf/ordering   time per step, Newton iterations per step,
+//                                         unknowns, beams, KLU's operations and factor entries per LU;
+//                                         ordering 0 automatic, 1 AMD, 2 two domains
 
 #include <benchmark/benchmark.h>
 
