@@ -94,22 +94,12 @@ def test_report_writes_what_the_command_writes(tmp_path):
         deploydyn.report(tmp_path / "run", frames=100_001)
 
 
-def test_the_window_of_an_environment_sweeps_its_steady_field_at_the_time_asked(tmp_path):
+def test_the_window_of_an_environment_sweeps_its_steady_field_at_the_time_asked():
     """`load="model"` on a model with an environment: the members' steady temperatures at
     `environment_time`: a sunlit pinned tube at its radiative equilibrium outside the eclipse,
     at the sink's 3 K inside it."""
-    source = tmp_path / "tube.yaml"
-    source.write_text("""
-nodes: {A: [0, 0, 0], B: [1, 0, 0]}
-materials:
-  steel: {E: 2.0e11, alpha: 1.2e-5, density: 7850, specific_heat: 490, absorptivity: 0.5, emissivity: 0.8}
-sections: {tube: {shape: circular_tube, outer_diameter: 0.02, wall_thickness: 0.001}}
-elements: {tube: {nodes: [A, B], section: tube, material: steel}}
-supports: [{node: A}, {node: B}]
-environment: {type: orbit, sun_direction: [0, 0, 1], reference_temperature: 293.15, eclipses: [[100, 200]]}
-analysis: {type: static, end: 1, step: 0.5}
-""")
-    model = deploydyn.load(source)
+    source = SOURCE_DIR / "tests" / "thermal" / "models" / "sunlit_tube.yaml"
+    model = deploydyn.load(source, overrides={"environment.eclipses": [[100, 200]]})
     lit = model.window(load="model", scale=(-1, 1), positions=2, deployments=0)
     steady_K = (0.5 * 1361.0 / (0.8 * 5.670374419e-8 * np.pi) + 3.0 ** 4) ** 0.25
     assert lit["pattern"]["hottest_axis_dT"] == pytest.approx(steady_K - 293.15, rel=1e-9)

@@ -227,20 +227,9 @@ namespace DEPLOYDYN_FILE_SCOPE {
 // T*⁴ = α_s S/(ε σ π) + T_sink⁴, carries E A α (T* − T_ref) μ along a thermal path.
 TEST(CliContinuation, AModelWithAnEnvironmentIsTracedInItsSteadyField) {
   const ScratchFolder folder("continuation_environment");
-  std::filesystem::create_directories(folder.path());
-  const auto model = folder.path() / "sunlit_tube.yaml";
-  std::ofstream(model) << R"(
-nodes: {A: [0, 0, 0], B: [1, 0, 0]}
-materials:
-  steel: {E: 2.0e11, alpha: 1.2e-5, density: 7850, specific_heat: 490, absorptivity: 0.5, emissivity: 0.8}
-sections: {tube: {shape: circular_tube, outer_diameter: 0.02, wall_thickness: 0.001}}
-elements: {tube: {nodes: [A, B], section: tube, material: steel}}
-supports: [{node: A}, {node: B}]
-environment: {type: orbit, sun_direction: [0, 0, 1], reference_temperature: 293.15}
-analysis: {type: continuation, parameter: thermal, start: 0, end: 1}
-)";
+  const std::string model = std::string(DEPLOYDYN_SOURCE_DIR) + "/tests/thermal/models/sunlit_tube.yaml";
   const auto out = folder.path() / "out";
-  const auto outcome = run_cli("run " + model.string() + " --quiet --out " + out.string());
+  const auto outcome = run_cli("run " + model + " --set 'analysis={type: continuation, parameter: thermal, start: 0, end: 1}' --quiet --out " + out.string());
   ASSERT_EQ(outcome.exit_code, 0) << outcome.output;
   std::istringstream lines(read_text(out / "path.csv"));
   std::string line, cell;

@@ -405,16 +405,7 @@ TEST(DeployabilityWindow, ALinkageDrivenFlatterJamsAfterItStartsWhereTheClosedFo
 // tube pinned at both ends, broadside to the sun in orbit, at its radiative equilibrium T*
 // carries E A α (T* − T_ref) μ at every level μ.
 TEST(WindowCommand, AnEnvironmentsSteadyFieldIsTheModelsLoad) {
-  const Model model = load_model_from_string(R"(
-nodes: {A: [0, 0, 0], B: [1, 0, 0]}
-materials:
-  steel: {E: 2.0e11, alpha: 1.2e-5, density: 7850, specific_heat: 490, absorptivity: 0.5, emissivity: 0.8}
-sections: {tube: {shape: circular_tube, outer_diameter: 0.02, wall_thickness: 0.001}}
-elements: {tube: {nodes: [A, B], section: tube, material: steel}}
-supports: [{node: A}, {node: B}]
-environment: {type: orbit, sun_direction: [0, 0, 1], reference_temperature: 293.15}
-analysis: {type: static, end: 1, step: 0.5}
-)", "sunlit_tube.yaml");
+  const Model model = load_model(std::string(DEPLOYDYN_SOURCE_DIR) + "/tests/thermal/models/sunlit_tube.yaml");
   WindowOptions options;
   options.load = WindowLoad::model;
   options.coldest_C = -1.0;
