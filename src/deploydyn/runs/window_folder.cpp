@@ -157,8 +157,9 @@ WindowRun run_window(const Model& given, const WindowOrigin& origin, const std::
                                  "load scales; a finite time ≥ 0 (s), for a model with an environment only",
                                  at_s));
   }
-  const Model model = settled ? thermal::with_steady_temperatures(given, at_s) : Model{};
-  const Model& swept = settled ? model : given;
+  const std::optional<Model> steady =
+      settled ? std::optional(thermal::with_steady_temperatures(given, at_s)) : std::nullopt;
+  const Model& swept = steady ? *steady : given;
   const ThermalPattern pattern = thermal_pattern(swept);
   if (options.load == WindowLoad::model && pattern.empty()) {
     throw InputError(origin.model_file, 0, 0, settled ? "environment" : "thermal",

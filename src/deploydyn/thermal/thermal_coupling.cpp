@@ -255,7 +255,10 @@ void ThermalCoupling::settle(double time_s) {
     change_K = 0.0;
     for (std::size_t i = 0; i < members_.size(); ++i) {
       const double change = std::abs(pending_K_[i] - temperatures_K_[i]);
-      if (change > change_K) change_K = change, moving = i;
+      if (change > change_K) {
+        change_K = change;
+        moving = i;
+      }
     }
     for (const int graded : graded_) {
       const auto i = static_cast<std::size_t>(graded);
