@@ -119,7 +119,7 @@ Eigen::VectorXd ConductionNetwork::backward_euler_step(std::span<const LumpedMem
   const Eigen::Index n = start_K.size();
   Eigen::VectorXd t = start_K;
   Eigen::VectorXd residual(n);
-  const double sink4 = std::pow(around.sink_temperature_K, 4);
+  const double sink4 = fourth_power(around.sink_temperature_K);
   constexpr int kMaxIterations = 50;
   for (int iteration = 0; iteration < kMaxIterations; ++iteration) {
     // F(T) = m c (T − T⁰) − h (Q − P_rad(T) − P_conv(T) − K T); its Jacobian h K + diag(…).

@@ -23,7 +23,7 @@ double absorbed_power_W(const LumpedMember& member, const Eigen::Vector3d& axis,
 }
 
 double emitted_power_W(const LumpedMember& member, double temperature_K, const Surroundings& around) {
-  return emitted_power_W(member, temperature_K, std::pow(around.sink_temperature_K, 4));
+  return emitted_power_W(member, temperature_K, fourth_power(around.sink_temperature_K));
 }
 
 double backward_euler_step(const LumpedMember& member, double temperature_K, double step_s,
@@ -31,7 +31,7 @@ double backward_euler_step(const LumpedMember& member, double temperature_K, dou
   const double radiation_W_K4 = member.emissivity * kStefanBoltzmann_W_m2K4 * member.surface_area_m2;
   const double convection_W_K = around.convection_W_m2K * member.surface_area_m2;
   const double capacity = member.heat_capacity_J_K;
-  const double sink4 = std::pow(around.sink_temperature_K, 4);
+  const double sink4 = fourth_power(around.sink_temperature_K);
   // g(T) = m c (T − T₀) − h (Q − ε σ A (T⁴ − T_s⁴) − h_c A (T − T_a)): g' > 0, g'' ≥ 0 for T > 0.
   const auto g = [&](double t) {
     return capacity * (t - temperature_K) -
@@ -54,7 +54,7 @@ double backward_euler_step(const LumpedMember& member, double temperature_K, dou
 
 double radiative_equilibrium_K(const LumpedMember& member, double absorbed_W, const Surroundings& around) {
   return std::pow(absorbed_W / (member.emissivity * kStefanBoltzmann_W_m2K4 * member.surface_area_m2) +
-                      std::pow(around.sink_temperature_K, 4),
+                      fourth_power(around.sink_temperature_K),
                   0.25);
 }
 

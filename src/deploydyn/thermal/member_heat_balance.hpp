@@ -49,10 +49,16 @@ double projected_area_m2(const LumpedMember& member, const Eigen::Vector3d& axis
 // Q_abs (W) of a member whose axis (length L) is `axis`.
 double absorbed_power_W(const LumpedMember& member, const Eigen::Vector3d& axis, const Surroundings& around);
 double emitted_power_W(const LumpedMember& member, double temperature_K, const Surroundings& around);
+// T⁴ as two squarings: std::pow was a fifth of a member's thermal step (docs/performance.md,
+// "Thermal coupling and shadows"); within an ulp or two of it.
+inline double fourth_power(double temperature_K) {
+  const double squared = temperature_K * temperature_K;
+  return squared * squared;
+}
 // ε σ A (T⁴ − T_sink⁴) with T_sink⁴ given: a loop over members raises the sink to the 4th power
-// once (std::pow is most of a member's step); the same arithmetic as the function above.
+// once; the same arithmetic as the function above.
 inline double emitted_power_W(const LumpedMember& member, double temperature_K, double sink4_K4) {
-  return member.emissivity * kStefanBoltzmann_W_m2K4 * member.surface_area_m2 * (std::pow(temperature_K, 4) - sink4_K4);
+  return member.emissivity * kStefanBoltzmann_W_m2K4 * member.surface_area_m2 * (fourth_power(temperature_K) - sink4_K4);
 }
 inline double convected_power_W(const LumpedMember& member, double temperature_K, const Surroundings& around) {
   return around.convection_W_m2K * member.surface_area_m2 * (temperature_K - around.air_temperature_K);

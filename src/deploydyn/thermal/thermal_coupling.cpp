@@ -310,7 +310,7 @@ void ThermalCoupling::advance_temperatures(const Eigen::VectorXd& q, double step
     }
   }
   // Conduction moves heat between members and is no term of the sum (K·1 = 0).
-  const double sink4 = std::pow(around.sink_temperature_K, 4);
+  const double sink4 = fourth_power(around.sink_temperature_K);
   pending_tally_ = tally_;
   for (std::size_t i = 0; i < n; ++i) {
     const LumpedMember& body = bodies_[i];
