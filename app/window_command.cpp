@@ -156,7 +156,7 @@ int window_command(const WindowArguments& arguments, const std::atomic<bool>& st
   if (scaled) {
     fmt::print("{}: deployability window, the model's thermal load × μ = {:+g} … {:+g}, {} driver positions over {:g} s\n",
                arguments.model_file, lo, hi, window.times_s.size(), model.analysis.end_time_s);
-    fmt::print("{}\n", pattern_line(thermal_pattern(model)));
+    fmt::print("  the load: {}\n{}\n", run.pattern_source, pattern_line(run.pattern));
   } else {
     fmt::print("{}: deployability window, uniform ΔT {:+g} … {:+g} °C, {} driver positions over {:g} s\n",
                arguments.model_file, lo, hi, window.times_s.size(), model.analysis.end_time_s);

@@ -418,7 +418,9 @@ TEST(WindowCommand, AnEnvironmentsSteadyFieldIsTheModelsLoad) {
   const double steady_K = std::pow(0.5 * 1361.0 / (0.8 * 5.670374419e-8 * M_PI) + 81.0, 0.25);
   const double pattern_C = steady_K - 293.15;
   EXPECT_NEAR(window["pattern"]["hottest_axis_dT"].get<double>(), pattern_C, 1e-9 * 293.15);
-  EXPECT_NE(window["pattern"]["source"].get<std::string>().find("steady"), std::string::npos);
+  EXPECT_EQ(window["pattern"]["source"], run.pattern_source);
+  EXPECT_NE(run.pattern_source.find("steady"), std::string::npos);
+  EXPECT_EQ(run.pattern.hottest_axis_C, window["pattern"]["hottest_axis_dT"].get<double>());
   const double ea_alpha_N_C = 2.0e11 * M_PI / 4.0 * (0.02 * 0.02 - 0.018 * 0.018) * 1.2e-5;
   ASSERT_GT(run.window.samples.size(), 4u);
   for (const WindowSample& sample : run.window.samples) {

@@ -175,10 +175,12 @@ WindowRun run_window(const Model& given, const WindowOrigin& origin, const std::
   WindowRun run;
   run.window = deployability_window(swept, options);
   run.verdicts = deployment_verdicts.verdicts(run.window);
+  run.pattern = pattern;
+  run.pattern_source = steady ? fmt::format("the environment's steady temperatures at t = {} s, the structure as "
+                                            "the file places it", at_s)
+                              : "the model's given dT and through-depth differences";
   run.json = window_json(swept, origin, run.window, window_regime_step(options), run.verdicts, pattern,
-                         settled ? fmt::format("the environment's steady temperatures at t = {} s, the structure as "
-                                               "the file places it", at_s)
-                                 : "the model's given dT and through-depth differences");
+                         run.pattern_source);
   if (taken) taken->write(run.window, run.json);
   return run;
 }

@@ -60,6 +60,8 @@ struct WindowRun {
   WindowResult window;
   std::vector<Verdict> verdicts;  // per deployment, in its order
   std::string json;
+  ThermalPattern pattern;      // the swept load at μ = 1 (WindowLoad::model)
+  std::string pattern_source;  // where it came from: the model's given ΔT, or its environment's steady field
 };
 
 // Refuses a spring-driven model (InputError naming origin.model_file); with a `folder`, takes it
