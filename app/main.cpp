@@ -356,8 +356,18 @@ int check_command(const std::string& model_file, const std::vector<std::string>&
     fmt::print("free        not named above {} coordinates (`deploydyn run` names them if the matrix is singular)\n",
                kMaxFreeMotionUnknowns);
   }
-  fmt::print("thermal     ΔT(0) = {:g} °C on {} without their own\n", model.temperature_change_C.value(0.0),
-             elements_word);
+  if (model.environment) {  // the environment sets every member's ΔT = T − T_ref
+    const Environment& e = *model.environment;
+    fmt::print("thermal     from the {} environment, ΔT = T − T_ref (T_ref = {:g} K): {}\n",
+               kEnvironmentKinds.name(e.kind), e.reference_temperature_K,
+               a.type == AnalysisType::continuation
+                   ? std::string("the members' steady temperatures at t = 0, the structure as the file places it")
+                   : fmt::format("every member's T by its heat balance each step, from {:g} K at t = 0",
+                                 e.initial_temperature_K.value_or(e.reference_temperature_K)));
+  } else {
+    fmt::print("thermal     ΔT(0) = {:g} °C on {} without their own\n", model.temperature_change_C.value(0.0),
+               elements_word);
+  }
   if (const std::string gradients = through_depth_gradients(model, list_all); !gradients.empty()) {
     fmt::print("gradients   {}\n", gradients);
   }

@@ -253,6 +253,12 @@ TEST(CliContinuation, AModelWithAnEnvironmentIsTracedInItsSteadyField) {
   }
   EXPECT_GT(points, 1);
   EXPECT_DOUBLE_EQ(last_mu, 1.0);
+  // `check` says where the temperatures come from.
+  const auto checked = run_cli("check " + model + " --set 'analysis={type: continuation, parameter: thermal, start: 0, end: 1}'");
+  EXPECT_NE(checked.output.find("from the orbit environment, ΔT = T − T_ref (T_ref = 293.15 K): the members' steady "
+                                "temperatures at t = 0"),
+            std::string::npos)
+      << checked.output;
 }
 
 }  // namespace DEPLOYDYN_FILE_SCOPE
