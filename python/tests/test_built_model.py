@@ -414,6 +414,67 @@ def test_a_beam_given_by_its_sectional_values_bends_as_timoshenko(dimension):
         assert result[f"z.N{n}"][-1] == pytest.approx(1 / (3 * ei_y) + 1 / ga_z, rel=2e-3)
 
 
+def test_a_2d_beam_off_its_centroid_bends_under_an_axial_force():
+    """Issue 33 in the builder: a 2D cantilever whose elastic centroid is e off its line, given as
+    centroid_offset (a number in 2D) or as the 3 × 3 sectional_stiffness Tᵀ diag T, bends under an
+    axial tip force P on the line by P e L²/(2EI) (docs/theory.md, "Sections with offsets")."""
+    n, ea, ga, ei, e, load = 8, 1.0e7, 5.0e6, 1.0e3, 0.01, 0.1
+
+    def tip(**section):
+        b = deploydyn.ModelBuilder("offset cantilever").material("steel", E=E, density=7850)
+        for i in range(n + 1):
+            b.node(f"N{i}", i / n, 0)
+        for i in range(n):
+            b.beam(f"b{i}", f"N{i}", f"N{i + 1}", area=AREA, inertia_z=1e-8, material="steel",
+                   mass_per_length=1.0, **section)
+        b.support("N0", fix=["x", "y", "rotation"])
+        b.load(f"N{n}", force=[load, 0])
+        b.analysis(type="static", end=1.0, step=1.0)
+        return b.build().run(check=True)[f"y.N{n}"][-1]
+
+    by_keys = tip(axial_stiffness=ea, shear_stiffness=ga, bending_stiffness=ei, centroid_offset=e)
+    by_matrix = tip(sectional_stiffness=[ea, 0, -ea * e, 0, ga, 0, -ea * e, 0, ei + ea * e * e])
+    assert by_keys == pytest.approx(load * e / (2 * ei), rel=1e-4)
+    assert by_matrix == pytest.approx(by_keys, rel=1e-10)
+
+
+def test_a_3d_beam_takes_its_sectional_mass_or_the_full_rotary_inertia_tensor():
+    """Issue 33 in the builder: a 3D cantilever whose section is given by its 6 × 6 sectional_mass
+    (μ, the mass centroid y_m off the line, J with a product J_yz) sags and twists under its weight
+    as the one given by mass_per_length, the six-number rotary_inertia_per_length and
+    mass_centroid_offset; the weight off the line twists it by −μ g y_m L²/(2GJ)."""
+    n, mu, y_m, gj, g = 4, 2.0, 0.25, 8.0e2, 9.81
+    j_c = [[12.0, 0.0, 0.0], [0.0, 9.0, -2.0], [0.0, -2.0, 5.0]]
+    # About the axis: J_c + μ(|S|² I − S Sᵀ), S = (0, y_m, 0).
+    j = [[j_c[0][0] + mu * y_m**2, 0.0, 0.0], [0.0, j_c[1][1], j_c[1][2]], [0.0, j_c[2][1], j_c[2][2] + mu * y_m**2]]
+    sectional_mass = [mu, 0, 0, 0, 0, -mu * y_m,
+                      0, mu, 0, 0, 0, 0,
+                      0, 0, mu, mu * y_m, 0, 0,
+                      0, 0, mu * y_m, *j[0],
+                      0, 0, 0, *j[1],
+                      -mu * y_m, 0, 0, *j[2]]
+
+    def run(**section):
+        b = deploydyn.ModelBuilder("sagging cantilever").material("steel", E=E, density=7850)
+        for i in range(n + 1):
+            b.node(f"N{i}", i / n, 0, 0)
+        for i in range(n):
+            b.beam(f"b{i}", f"N{i}", f"N{i + 1}", area=AREA, inertia_z=1e-8, material="steel",
+                   inertia_y=1e-8, torsion=2e-8, orientation=[0, 1, 0], axial_stiffness=1e9,
+                   shear_stiffness=[1e8, 1e8], torsional_stiffness=gj, bending_stiffness=[1e6, 1e6], **section)
+        b.support("N0", fix=["x", "y", "z", "rotation"])
+        b.gravity([0, 0, -g])
+        b.analysis(type="static", end=1.0, step=1.0)
+        result = b.build().run(check=True)
+        return result[f"z.N{n}"][-1], result[f"R32.N{n}"][-1]  # R32 ≈ the twist about x
+
+    keys = run(mass_per_length=mu, mass_centroid_offset=[y_m, 0],
+               rotary_inertia_per_length=[j_c[0][0], j_c[1][1], j_c[2][2], 0, 0, j_c[1][2]])
+    full = run(sectional_mass=sectional_mass)
+    assert full == pytest.approx(keys, rel=1e-12)
+    assert keys[1] == pytest.approx(-mu * g * y_m / (2 * gj), rel=1e-4)
+
+
 def test_a_member_of_a_tube_section_is_checked_against_its_euler_load():
     """Issue 27 in the builder: a heated tube strut between pins, one member with a given K,
     carries N = E A α ΔT against N_cr = π² E I / (K L)² and its stress N/A against f_y."""

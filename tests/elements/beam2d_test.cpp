@@ -12,6 +12,7 @@
 
 #include "deploydyn/elements/beam/beam_kind.hpp"
 #include "deploydyn/model/dof_map.hpp"
+#include "support/coupled_section.hpp"
 #include "support/finite_difference.hpp"
 
 namespace deploydyn {
@@ -33,6 +34,9 @@ const beam2d::Section kSection{.axial_stiffness_N = 2.0e7,
                                .reference_length_m = 0.8,
                                .initial_angle_rad = 0.6};
 const beam2d::ThermalStrain kThermal{0.011, -0.35};  // large, to weigh in the tangent
+// The same with a full C (B4a).
+const beam2d::Section kCoupledSection = testing::coupled_section(kSection);
+const beam2d::Section* const kSections[] = {&kSection, &kCoupledSection};
 
 // Nodal positions anywhere, the element stretched by up to ±20 %, turned by any angle, and
 // nodal rotations up to ±π beyond (large rotations: the mid-point frame turns a full circle).
@@ -49,38 +53,93 @@ beam2d::Vector random_state(std::mt19937& rng) {
   return q;
 }
 
-beam2d::State state_at(const Eigen::VectorXd& q) { return beam2d::evaluate(q, kSection, kThermal); }
+beam2d::State state_at(const Eigen::VectorXd& q, const beam2d::Section& section = kSection) {
+  return beam2d::evaluate(q, section, kThermal);
+}
 
 double relative_error(const Eigen::MatrixXd& analytic, const Eigen::MatrixXd& reference) {
   return (analytic - reference).norm() / reference.norm();
 }
 
+// Both with the diagonal section and with the coupled one.
 TEST(Beam2d, InternalForceIsTheGradientOfStrainEnergy) {
   std::mt19937 rng(20261123);
-  for (int c = 0; c < kConfigurations; ++c) {
-    const beam2d::Vector q = random_state(rng);
-    const auto energy = [](const Eigen::VectorXd& y) {
-      return beam2d::strain_energy(state_at(y), kSection);
-    };
-    const Eigen::VectorXd fd = testing::central_gradient(energy, q, kStep);
-    const Eigen::VectorXd f = beam2d::internal_force(state_at(q), kSection);
-    EXPECT_LT(relative_error(f, fd), kDerivativeTolerance)
-        << "state " << c << ": q = " << q.transpose();
+  for (const beam2d::Section* section : kSections) {
+    for (int c = 0; c < kConfigurations; ++c) {
+      const beam2d::Vector q = random_state(rng);
+      const auto energy = [&](const Eigen::VectorXd& y) {
+        return beam2d::strain_energy(state_at(y, *section), *section);
+      };
+      const Eigen::VectorXd fd = testing::central_gradient(energy, q, kStep);
+      const Eigen::VectorXd f = beam2d::internal_force(state_at(q, *section), *section);
+      EXPECT_LT(relative_error(f, fd), kDerivativeTolerance)
+          << "coupled " << beam2d::coupled(*section) << ", state " << c << ": q = " << q.transpose();
+    }
   }
 }
 
 TEST(Beam2d, TangentIsTheJacobianOfInternalForce) {
   std::mt19937 rng(17);
-  for (int c = 0; c < kConfigurations; ++c) {
+  for (const beam2d::Section* section : kSections) {
+    for (int c = 0; c < kConfigurations; ++c) {
+      const beam2d::Vector q = random_state(rng);
+      const auto force = [&](const Eigen::VectorXd& y) {
+        return Eigen::VectorXd(beam2d::internal_force(state_at(y, *section), *section));
+      };
+      const Eigen::MatrixXd fd = testing::central_jacobian(force, q, kStep);
+      const beam2d::Matrix k = beam2d::tangent(state_at(q, *section), *section);
+      EXPECT_LT(relative_error(k, fd), kDerivativeTolerance)
+          << "coupled " << beam2d::coupled(*section) << ", state " << c << ": q = " << q.transpose();
+      EXPECT_LT((k - k.transpose()).norm(), 1e-12 * k.norm()) << "state " << c;  // a Hessian
+    }
+  }
+}
+
+// The energy is ½ L0 (s − s_t)ᵀ C (s − s_t) with the full C (B4a), and the thermal and stiffness
+// derivatives of the force (continuation in ΔT, E(T) tables) are those of finite differences in
+// ε_t, κ_t and in C along the coupled section itself.
+TEST(Beam2d, CoupledSectionHasTheFullQuadraticEnergyAndItsDerivatives) {
+  std::mt19937 rng(2503);
+  const beam2d::Section& c = kCoupledSection;
+  Eigen::Matrix3d full;
+  full << c.axial_stiffness_N, c.axial_shear_N, c.axial_bending_Nm, c.axial_shear_N, c.shear_stiffness_N,
+      c.shear_bending_Nm, c.axial_bending_Nm, c.shear_bending_Nm, c.bending_stiffness_Nm2;
+  const auto with_thermal = [&](const Eigen::VectorXd& q, double axial, double curvature) {
+    return Eigen::VectorXd(beam2d::internal_force(beam2d::evaluate(q, c, {axial, curvature}), c));
+  };
+  const auto scaled = [&](double factor) {  // C (1 + factor)
+    beam2d::Section out = c;
+    out.axial_stiffness_N *= 1.0 + factor;
+    out.shear_stiffness_N *= 1.0 + factor;
+    out.bending_stiffness_Nm2 *= 1.0 + factor;
+    out.axial_shear_N *= 1.0 + factor;
+    out.axial_bending_Nm *= 1.0 + factor;
+    out.shear_bending_Nm *= 1.0 + factor;
+    return out;
+  };
+  for (int k = 0; k < kConfigurations; ++k) {
     const beam2d::Vector q = random_state(rng);
-    const auto force = [](const Eigen::VectorXd& y) {
-      return Eigen::VectorXd(beam2d::internal_force(state_at(y), kSection));
+    const beam2d::State st = state_at(q, c);
+    const Eigen::Vector3d strains(st.mechanical_strain, st.shear_strain, st.mechanical_curvature_1_m);
+    EXPECT_NEAR(beam2d::strain_energy(st, c), 0.5 * c.reference_length_m * strains.dot(full * strains),
+                1e-12 * c.reference_length_m * strains.dot(full * strains));
+    const double h = 1e-7;
+    const Eigen::VectorXd by_axial =
+        (with_thermal(q, kThermal.axial + h, kThermal.curvature_1_m) - with_thermal(q, kThermal.axial - h, kThermal.curvature_1_m)) /
+        (2.0 * h);
+    const Eigen::VectorXd by_curvature =
+        (with_thermal(q, kThermal.axial, kThermal.curvature_1_m + h) - with_thermal(q, kThermal.axial, kThermal.curvature_1_m - h)) /
+        (2.0 * h);
+    EXPECT_LT(relative_error(beam2d::force_per_axial_thermal_strain(st, c), by_axial), kDerivativeTolerance);
+    EXPECT_LT(relative_error(beam2d::force_per_thermal_curvature(st, c), by_curvature), kDerivativeTolerance);
+    // δf for δC = C h and δs_t = (0.3, −2) h.
+    const auto force_at = [&](double factor) {
+      const beam2d::Section s = scaled(factor);
+      return Eigen::VectorXd(beam2d::internal_force(
+          beam2d::evaluate(q, s, {kThermal.axial + 0.3 * factor, kThermal.curvature_1_m - 2.0 * factor}), s));
     };
-    const Eigen::MatrixXd fd = testing::central_jacobian(force, q, kStep);
-    const beam2d::Matrix k = beam2d::tangent(state_at(q), kSection);
-    EXPECT_LT(relative_error(k, fd), kDerivativeTolerance)
-        << "state " << c << ": q = " << q.transpose();
-    EXPECT_LT((k - k.transpose()).norm(), 1e-12 * k.norm()) << "state " << c;  // a Hessian
+    const Eigen::VectorXd by_change = (force_at(h) - force_at(-h)) / (2.0 * h);
+    EXPECT_LT(relative_error(beam2d::internal_force_change(st, c, c, {0.3, -2.0}), by_change), kDerivativeTolerance);
   }
 }
 

@@ -20,6 +20,7 @@
 #include "deploydyn/model/dof_map.hpp"
 #include "deploydyn/solvers/consistent_rates.hpp"
 #include "deploydyn/solvers/generalized_alpha.hpp"
+#include "support/coupled_section.hpp"
 #include "support/finite_difference.hpp"
 #include "support/frames.hpp"
 #include "support/model_builder.hpp"
@@ -56,8 +57,12 @@ beam2d::Vector random_state_2d(std::mt19937& rng) {
   return q;
 }
 
-beam2d::Vector damping_force_2d(const Eigen::VectorXd& q, const Eigen::VectorXd& v) {
-  return beam2d::damping_force(beam2d::evaluate(q, kSection2d, {}), kSection2d, v);
+// With a full C (B4a).
+const beam2d::Section kCoupledSection2d = testing::coupled_section(kSection2d);
+
+beam2d::Vector damping_force_2d(const Eigen::VectorXd& q, const Eigen::VectorXd& v,
+                                const beam2d::Section& section = kSection2d) {
+  return beam2d::damping_force(beam2d::evaluate(q, section, {}), section, v);
 }
 
 double relative_error(const Eigen::MatrixXd& analytic, const Eigen::MatrixXd& reference) {
@@ -67,22 +72,25 @@ double relative_error(const Eigen::MatrixXd& analytic, const Eigen::MatrixXd& re
 TEST(BeamMaterialDamping, TangentsMatchFiniteDifferences2d) {
   std::mt19937 rng(2811);
   std::uniform_real_distribution<double> unit(-1.0, 1.0);
-  for (int c = 0; c < kConfigurations; ++c) {
-    const beam2d::Vector q = random_state_2d(rng);
-    beam2d::Vector v;
-    for (int i = 0; i < beam2d::kDofs; ++i) v[i] = unit(rng);
-    const beam2d::State state = beam2d::evaluate(q, kSection2d, {});
-    const Eigen::MatrixXd by_q = testing::central_jacobian(
-        [&](const Eigen::VectorXd& y) { return damping_force_2d(y, v); }, q, kStep);
-    const Eigen::MatrixXd by_v = testing::central_jacobian(
-        [&](const Eigen::VectorXd& y) { return damping_force_2d(q, y); }, v, kStep);
-    EXPECT_LT(relative_error(beam2d::damping_tangent(state, kSection2d, v, 1.0, 0.0), by_q),
-              kDerivativeTolerance) << "∂f_d/∂q, configuration " << c;
-    EXPECT_LT(relative_error(beam2d::damping_tangent(state, kSection2d, v, 0.0, 1.0), by_v),
-              kDerivativeTolerance) << "∂f_d/∂q̇, configuration " << c;
-    // Against the stiffness: ∂f_d/∂q̇ = τ K_mat, and f_d = τ K_mat q̇.
-    EXPECT_LT((damping_force_2d(q, v) - beam2d::damping_tangent(state, kSection2d, v, 0.0, 1.0) * v).norm(),
-              1e-12 * damping_force_2d(q, v).norm());
+  for (const beam2d::Section* section : {&kSection2d, &kCoupledSection2d}) {
+    for (int c = 0; c < kConfigurations; ++c) {
+      const beam2d::Vector q = random_state_2d(rng);
+      beam2d::Vector v;
+      for (int i = 0; i < beam2d::kDofs; ++i) v[i] = unit(rng);
+      const beam2d::State state = beam2d::evaluate(q, *section, {});
+      const Eigen::MatrixXd by_q = testing::central_jacobian(
+          [&](const Eigen::VectorXd& y) { return damping_force_2d(y, v, *section); }, q, kStep);
+      const Eigen::MatrixXd by_v = testing::central_jacobian(
+          [&](const Eigen::VectorXd& y) { return damping_force_2d(q, y, *section); }, v, kStep);
+      SCOPED_TRACE(beam2d::coupled(*section) ? "coupled C" : "diagonal C");
+      EXPECT_LT(relative_error(beam2d::damping_tangent(state, *section, v, 1.0, 0.0), by_q),
+                kDerivativeTolerance) << "∂f_d/∂q, configuration " << c;
+      EXPECT_LT(relative_error(beam2d::damping_tangent(state, *section, v, 0.0, 1.0), by_v),
+                kDerivativeTolerance) << "∂f_d/∂q̇, configuration " << c;
+      // Against the stiffness: ∂f_d/∂q̇ = τ K_mat, and f_d = τ K_mat q̇.
+      EXPECT_LT((damping_force_2d(q, v, *section) - beam2d::damping_tangent(state, *section, v, 0.0, 1.0) * v).norm(),
+                1e-12 * damping_force_2d(q, v, *section).norm());
+    }
   }
 }
 

@@ -109,6 +109,9 @@ void expect_equal_models(const Model& a, const Model& b) {
     EXPECT_EQ(x.mass_kg, y.mass_kg);
     EXPECT_EQ(x.mass_per_length_kg_m, y.mass_per_length_kg_m);
     EXPECT_EQ(x.rotary_inertia_per_length_kg_m, y.rotary_inertia_per_length_kg_m);
+    EXPECT_EQ(x.rotary_inertia_products_kg_m, y.rotary_inertia_products_kg_m);
+    EXPECT_EQ(x.sectional_mass_matrix, y.sectional_mass_matrix);
+    EXPECT_EQ(x.sectional_mass_given, y.sectional_mass_given);
     EXPECT_EQ(x.shear_stiffness_N, y.shear_stiffness_N);
     EXPECT_EQ(x.axial_stiffness_N, y.axial_stiffness_N);
     EXPECT_EQ(x.bending_stiffness_Nm2, y.bending_stiffness_Nm2);
@@ -824,6 +827,56 @@ supports: [{node: A}]
   EXPECT_EQ(model.beams[1].centroid_offset_m, Eigen::Vector2d(0.003, -0.001));
   EXPECT_EQ(model.beams[1].shear_centre_offset_m, Eigen::Vector2d(-0.002, 0.004));
   expect_round_trip(model);
+}
+
+// The rotary inertia tensor (6 numbers) and a sectional mass in 3D, the 3 × 3 sectional stiffness and
+// the centroid offset in 2D (docs/model-format.md, "Sectional mass", "Sections with offsets") are
+// read as given, set what they set and are written back.
+TEST(ModelRoundTrip, BeamSectionalMassAndPlaneStiffness) {
+  const Model solid = load_model_from_string(R"(
+nodes: {A: [0, 0, 0], B: [2, 0, 0], C: [2, 1, 0]}
+materials: {steel: {E: 2.1e11, density: 7850}}
+elements:
+  tensor: {type: beam, nodes: [A, B], material: steel, area: 1e-4, inertia_z: 8.3e-10, inertia_y: 4.1e-10,
+           torsion: 1.4e-9, mass_per_length: 2, rotary_inertia_per_length: [12, 9, 5, 1, -0.5, -2]}
+  mass: {type: beam, nodes: [B, C], material: steel, area: 1e-4, inertia_z: 8.3e-10, inertia_y: 4.1e-10,
+         torsion: 1.4e-9,
+         sectional_mass: [2, 0, 0, 0, 0.25, -0.5,
+                          0, 2, 0, -0.25, 0, 0,
+                          0, 0, 2, 0.5, 0, 0,
+                          0, -0.25, 0.5, 12.3, 0, 0,
+                          0.25, 0, 0, 0, 9.1, 0.1,
+                          -0.5, 0, 0, 0, 0.1, 5.2]}
+supports: [{node: A}]
+)", "sectional mass");
+  const BeamElement& tensor = solid.beams[0];
+  EXPECT_EQ(tensor.rotary_inertia_per_length_kg_m, Eigen::Vector3d(12, 9, 5));
+  EXPECT_EQ(tensor.rotary_inertia_products_kg_m, Eigen::Vector3d(1, -0.5, -2));
+  const BeamElement& mass = solid.beams[1];
+  ASSERT_TRUE(mass.sectional_mass_given);
+  EXPECT_EQ(mass.mass_per_length_kg_m, 2.0);
+  EXPECT_EQ(mass.mass_kg, 2.0);
+  EXPECT_EQ(mass.mass_centroid_offset_m, Eigen::Vector2d(0.25, 0.125));  // M43 / μ, M51 / μ
+  EXPECT_EQ(mass.sectional_mass_matrix(3, 3), 12.3);
+  expect_round_trip(solid);
+
+  const Model plane = load_model_from_string(R"(
+nodes: {A: [0, 0], B: [1.5, 0], C: [1.5, 1]}
+materials: {steel: {E: 2.1e11, density: 7850}}
+elements:
+  full: {type: beam, nodes: [A, B], material: steel, area: 1e-4, inertia_z: 8.3e-10,
+         sectional_stiffness: [2.0e7, 1.0e5, -2.0e4, 1.0e5, 5.0e6, 3.0e2, -2.0e4, 3.0e2, 1.2e3]}
+  offset: {type: beam, nodes: [B, C], material: steel, area: 1e-4, inertia_z: 8.3e-10, centroid_offset: -0.004}
+supports: [{node: A}]
+)", "plane sectional stiffness");
+  const BeamElement& full = plane.beams[0];
+  ASSERT_TRUE(full.sectional_stiffness_given);
+  EXPECT_EQ(full.sectional_stiffness_matrix(0, 5), -2.0e4);  // (ε, κ) sits in rows and columns 0, 5
+  EXPECT_EQ(full.sectional_stiffness_matrix(1, 5), 3.0e2);
+  EXPECT_EQ(full.sectional_stiffness_matrix(5, 5), 1.2e3);
+  EXPECT_EQ(full.sectional_stiffness_matrix(2, 2), 0.0);
+  EXPECT_EQ(plane.beams[1].centroid_offset_m, Eigen::Vector2d(-0.004, 0));
+  expect_round_trip(plane);
 }
 
 }  // namespace

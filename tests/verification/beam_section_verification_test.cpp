@@ -17,6 +17,7 @@
 #include <limits>
 #include <numbers>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "deploydyn/assembly/assembler.hpp"
@@ -72,17 +73,19 @@ Eigen::Vector3d position(const Assembler& assembler, const Eigen::VectorXd& q, i
 }
 
 // The rates of a rigid spin at ω about `centre` from q with R = I: node velocities ω × (x − c),
-// frame rates Ṙ = ω̂ R = ω̂.
+// frame rates Ṙ = ω̂ R = ω̂; with `accelerations`, the steady spin's ω × (ω × (x − c)) and ω̂ω̂.
 Eigen::VectorXd rigid_spin(const Assembler& assembler, const Eigen::VectorXd& q, const Eigen::Vector3d& w,
-                           const Eigen::Vector3d& centre) {
+                           const Eigen::Vector3d& centre, bool accelerations = false) {
   Eigen::Matrix3d w_hat;
   w_hat << 0, -w.z(), w.y(), w.z(), 0, -w.x(), -w.y(), w.x(), 0;
+  const Eigen::Matrix3d frame_rate = accelerations ? Eigen::Matrix3d(w_hat * w_hat) : w_hat;
   Eigen::VectorXd v = Eigen::VectorXd::Zero(assembler.n_dofs());
   for (int node = 0; node < assembler.model().n_nodes(); ++node) {
-    const Eigen::Vector3d velocity = w.cross(position(assembler, q, node) - centre);
+    Eigen::Vector3d velocity = w.cross(position(assembler, q, node) - centre);
+    if (accelerations) velocity = w.cross(velocity);
     for (int a = 0; a < 3; ++a) v[assembler.dof_map().index(node, a)] = velocity[a];
     const std::vector<int> frame = frame_dofs(assembler.dof_map(), node);
-    for (int entry = 0; entry < 9; ++entry) v[frame[entry]] = w_hat(entry / 3, entry % 3);
+    for (int entry = 0; entry < 9; ++entry) v[frame[entry]] = frame_rate(entry / 3, entry % 3);
   }
   return v;
 }
@@ -240,6 +243,20 @@ double tip_deflection(const std::string& text, int tip, int axis, int dimension)
   });
 }
 
+// A 2D cantilever of n elements from the origin along x, L = 1 m, clamped at N0; `section` as in
+// beam_model_3d (the in-plane keys).
+std::string beam_model_2d(int n, const std::string& section) {
+  std::string text = "nodes:\n";
+  for (int i = 0; i <= n; ++i) text += fmt::format("  N{}: [{:.17g}, 0]\n", i, static_cast<double>(i) / n);
+  text += "materials: {metal: {E: 7.0e10, density: 2700}}\nelements:\n";
+  for (int i = 0; i < n; ++i) {
+    text += fmt::format("  b{}: {{type: beam, nodes: [N{}, N{}], material: metal, area: 1.0e-4, inertia_z: 1.0e-10, {}}}\n",
+                        i, i, i + 1, section);
+  }
+  text += "supports:\n  - {node: N0, fix: [x, y, rotation]}\nanalysis: {type: static, end: 1, step: 1}\n";
+  return text;
+}
+
 TEST(VerificationBeamSection, CantileverWithTwoShearStiffnessesBendsAsTimoshenkoInEachPlane) {
   const double ei_y = 2e6, ei_z = 1e6, ga_y = 5.0e6, ga_z = 23.4e6;
   const double exact_y = 1.0 / (3.0 * ei_z) + 1.0 / ga_y, exact_z = 1.0 / (3.0 * ei_y) + 1.0 / ga_z;
@@ -254,16 +271,8 @@ TEST(VerificationBeamSection, CantileverWithTwoShearStiffnessesBendsAsTimoshenko
     errors_y.push_back(std::abs(tip_deflection(text, n, 1, 3) - exact_y) / exact_y);
     errors_z.push_back(std::abs(tip_deflection(text, n, 2, 3) - exact_z) / exact_z);
     // The same in 2D: the in-plane subset of the keys.
-    std::string plane = "nodes:\n";
-    for (int i = 0; i <= n; ++i) plane += fmt::format("  N{}: [{:.17g}, 0]\n", i, static_cast<double>(i) / n);
-    plane += "materials: {metal: {E: 7.0e10, density: 2700}}\nelements:\n";
-    for (int i = 0; i < n; ++i) {
-      plane += fmt::format(
-          "  b{}: {{type: beam, nodes: [N{}, N{}], material: metal, area: 1.0e-4, inertia_z: 1.0e-10, "
-          "mass_per_length: 1, axial_stiffness: 1.0e9, bending_stiffness: {}, shear_stiffness: {}}}\n",
-          i, i, i + 1, ei_z, ga_y);
-    }
-    plane += "supports:\n  - {node: N0, fix: [x, y, rotation]}\nanalysis: {type: static, end: 1, step: 1}\n";
+    const std::string plane = beam_model_2d(
+        n, fmt::format("mass_per_length: 1, axial_stiffness: 1.0e9, bending_stiffness: {}, shear_stiffness: {}", ei_z, ga_y));
     errors_2d.push_back(std::abs(tip_deflection(plane, n, 1, 2) - exact_y) / exact_y);
   }
   check({"19.3a",
@@ -291,12 +300,17 @@ std::string diagonal_keys() {
       kAxial_N, kShearY_N, kShearZ_N, kTorsional_Nm2, kBendingY_Nm2, kBendingZ_Nm2);
 }
 
-std::string sectional_stiffness_key(const Eigen::Matrix<double, 6, 6>& c) {
+// `key: [...]`, the matrix's rows one after the other, exact to the last bit.
+std::string matrix_key(std::string_view key, const Eigen::MatrixXd& matrix) {
   std::vector<std::string> entries;
-  for (int i = 0; i < 6; ++i) {
-    for (int j = 0; j < 6; ++j) entries.push_back(fmt::format("{:.17g}", c(i, j)));
+  for (Eigen::Index i = 0; i < matrix.rows(); ++i) {
+    for (Eigen::Index j = 0; j < matrix.cols(); ++j) entries.push_back(fmt::format("{:.17g}", matrix(i, j)));
   }
-  return fmt::format("mass_per_length: 1, sectional_stiffness: [{}]", fmt::join(entries, ", "));
+  return fmt::format("{}: [{}]", key, fmt::join(entries, ", "));
+}
+
+std::string sectional_stiffness_key(const Eigen::Matrix<double, 6, 6>& c) {
+  return "mass_per_length: 1, " + matrix_key("sectional_stiffness", c);
 }
 
 Eigen::Matrix<double, 6, 6> diagonal_stiffness() {
@@ -477,6 +491,282 @@ TEST(VerificationBeamSectionOffsets, WeightOffTheLineTwistsTheBeam) {
   check({"24.6",
          "3D cantilever under its weight, mass_centroid_offset [0.05, 0] m, gravity −z, 8 elements: tip twist",
          "−μ g y_m L²/(2GJ) (D7b)", std::abs(twist - expected) / std::abs(expected), 1e-5, ""});
+}
+
+// === Case 25: the full rotary inertia tensor and the sectional mass (3D); the 2D beam's 3 × 3 C ===
+// (docs/theory.md, "Sectional mass", "Sections with offsets", D7a, D7c, B4a.)
+
+// The assembled mass matrix, column by column.
+Eigen::MatrixXd mass_matrix_of(const Assembler& assembler) {
+  Eigen::MatrixXd m(assembler.n_dofs(), assembler.n_dofs());
+  for (int k = 0; k < assembler.n_dofs(); ++k) {
+    Eigen::VectorXd column;
+    assembler.mass_times(Eigen::VectorXd::Unit(assembler.n_dofs(), k), column);
+    m.col(k) = column;
+  }
+  return m;
+}
+
+Eigen::MatrixXd mass_matrix_of(const std::string& text) {
+  const Model model = load_model_from_string(text, "mass");
+  return mass_matrix_of(Assembler(model));
+}
+
+// The keys of a rotary inertia tensor J (local frame): [J_xx, J_yy, J_zz, J_xy, J_xz, J_yz].
+std::string rotary_inertia_key(const Eigen::Matrix3d& j) {
+  return fmt::format("rotary_inertia_per_length: [{:.17g}, {:.17g}, {:.17g}, {:.17g}, {:.17g}, {:.17g}]", j(0, 0),
+                     j(1, 1), j(2, 2), j(0, 1), j(0, 2), j(1, 2));
+}
+
+// The rigid section's [[μ I, μ S̃ᵀ], [μ S̃, J_c + μ(|S|² I − S Sᵀ)]] about the axis, S = (0, y_m, z_m).
+Eigen::Matrix<double, 6, 6> rigid_section_mass(double mu, const Eigen::Matrix3d& about_centroid, double y_m, double z_m) {
+  const Eigen::Vector3d s(0.0, y_m, z_m);
+  Eigen::Matrix3d s_hat;
+  s_hat << 0, -s.z(), s.y(), s.z(), 0, -s.x(), -s.y(), s.x(), 0;
+  Eigen::Matrix<double, 6, 6> m;
+  m << mu * Eigen::Matrix3d::Identity(), mu * s_hat.transpose(), mu * s_hat,
+      about_centroid + mu * (s.squaredNorm() * Eigen::Matrix3d::Identity() - s * s.transpose());
+  return m;
+}
+
+std::string sectional_mass_key(const Eigen::Matrix<double, 6, 6>& m) { return matrix_key("sectional_mass", m); }
+
+// A section's rotary inertia with every product: J_xy = 1, J_xz = −0.5, J_yz = −2 kg·m (principal
+// moments ≈ 12.4, 9.7, 3.9: positive, triangle inequality held). Dyadic, for bit-for-bit routes.
+Eigen::Matrix3d skew_rotary_inertia() {
+  Eigen::Matrix3d j;
+  j << 12.0, 1.0, -0.5, 1.0, 9.0, -2.0, -0.5, -2.0, 5.0;
+  return j;
+}
+
+// 25.1: a free beam (4 elements, skew in space) with that J about its line and μ = 3 kg/m, spun
+// rigidly at ω about local x, y, z and a skew axis through its centre: h = I ω and T = ½ ωᵀ I ω,
+// I = L E J Eᵀ + μL³/12 (I − e1e1ᵀ); with the products, h is not along ω (D7a with a full J: exact
+// for a rigid motion).
+TEST(VerificationBeamSectionalMass, RigidSpinCarriesTheFullRotaryInertiaTensor) {
+  const Eigen::Vector3d axis = Eigen::Vector3d(1.0, 2.0, 2.0) / 1.5, orientation(0.0, 0.0, 1.0);
+  const double mass_per_length = 3.0, length = axis.norm(), omega = 2.5;
+  const Eigen::Matrix3d j = skew_rotary_inertia();
+  const Model model = load_model_from_string(
+      beam_model_3d(axis, orientation, 4, false, fmt::format("mass_per_length: {}, {}", mass_per_length, rotary_inertia_key(j))),
+      "tensor spin");
+  const Assembler assembler(model);
+  const Eigen::VectorXd q = assembler.initial_coordinates();
+  const Eigen::Matrix3d e = frame_of(axis, orientation);
+  const Eigen::Matrix3d inertia = length * e * j * e.transpose() + mass_per_length * std::pow(length, 3) / 12.0 *
+                                                                       (Eigen::Matrix3d::Identity() - e.col(0) * e.col(0).transpose());
+  double energy_error = 0.0, momentum_error = 0.0, largest_turn = 0.0;
+  for (const Eigen::Vector3d& local : {Eigen::Vector3d::UnitX().eval(), Eigen::Vector3d::UnitY().eval(),
+                                       Eigen::Vector3d::UnitZ().eval(), Eigen::Vector3d(1.0, -2.0, 2.0).normalized()}) {
+    const Eigen::Vector3d w = omega * e * local;
+    const Momenta spun = momenta(assembler, q, rigid_spin(assembler, q, w, 0.5 * axis));
+    const Eigen::Vector3d h = inertia * w;
+    energy_error = std::max(energy_error, std::abs(spun.kinetic_energy_J - 0.5 * w.dot(h)) / (0.5 * w.dot(h)));
+    momentum_error = std::max(momentum_error, (spun.angular - h).norm() / h.norm());
+    largest_turn = std::max(largest_turn, std::acos(h.normalized().dot(w.normalized())));
+  }
+  EXPECT_GT(largest_turn, 0.1);  // the products turn h away from ω
+  check({"25.1a",
+         "free 3D beam (4 elements) spun rigidly about local x, y, z and a skew axis, rotary_inertia_per_length "
+         "with the products [12, 9, 5, 1, −0.5, −2] kg·m: kinetic energy, largest relative error",
+         "½ ωᵀ(L E J Eᵀ + μL³/12 (I − e1e1ᵀ))ω, D7a", energy_error, 1e-12, ""});
+  check({"25.1b", "the same: angular momentum (up to 0.1 rad off ω), largest relative error",
+         "(L E J Eᵀ + μL³/12 (I − e1e1ᵀ)) ω", momentum_error, 1e-12, ""});
+}
+
+// 25.2: a steady spin at ω about an axis must be held by the torque dh/dt = ω × I ω. The beam along
+// x (J_xy = J_xz = 0, J_yz = −2 kg·m) spun about its local y: the torque of the inertial forces
+// M q̈ of that rigid motion (q̈: ω × (ω × (x − c)) and ω̂ω̂ R; the frames' constraint forces have no
+// moment) is ω² L J_yz about the beam's axis (the rocking inertia μL³/12 is the same about y and
+// z and cancels). About the principal axis at tan 2φ = 2J_yz/(J_yy − J_zz) in the section, none.
+TEST(VerificationBeamSectionalMass, SteadySpinAboutANonPrincipalAxisNeedsTheTorqueOfTheProduct) {
+  const double mass_per_length = 3.0, omega = 2.5, j_yz = -2.0;
+  Eigen::Matrix3d j;
+  j << 12.0, 0.0, 0.0, 0.0, 9.0, j_yz, 0.0, j_yz, 5.0;
+  const Model model = load_model_from_string(
+      beam_model_3d(Eigen::Vector3d::UnitX(), Eigen::Vector3d::UnitY(), 4, false,
+                    fmt::format("mass_per_length: {}, {}", mass_per_length, rotary_inertia_key(j))),
+      "steady spin");
+  const Assembler assembler(model);
+  const Eigen::VectorXd q = assembler.initial_coordinates();
+  const Eigen::Vector3d centre(0.5, 0.0, 0.0);
+  const auto torque = [&](const Eigen::Vector3d& w) {
+    const Momenta inertial = momenta(assembler, q, rigid_spin(assembler, q, w, centre, true));
+    EXPECT_LT(inertial.linear.norm(), 1e-12 * mass_per_length * omega * omega);  // the centre of mass stays
+    return inertial.angular;  // about the origin = about the centre, the net force being zero
+  };
+  const double expected = omega * omega * 1.0 * j_yz;
+  const Eigen::Vector3d about_y = torque(omega * Eigen::Vector3d::UnitY());
+  const double phi = 0.5 * std::atan2(2.0 * j_yz, j(1, 1) - j(2, 2));
+  const Eigen::Vector3d about_principal = torque(omega * Eigen::Vector3d(0.0, std::cos(phi), std::sin(phi)));
+  check({"25.2a",
+         "free 3D beam along x (4 elements), rotary_inertia_per_length [12, 9, 5, 0, 0, −2] kg·m, steady spin at "
+         "2.5 rad/s about local y: torque of M q̈, relative error",
+         "ω² L J_yz about x (ω × I ω)", (about_y - expected * Eigen::Vector3d::UnitX()).norm() / std::abs(expected),
+         1e-12, ""});
+  check({"25.2b", "the same, spun about the section's principal axis (φ = ½ atan(2J_yz/(J_yy − J_zz))): |torque| / "
+         "ω² L |J_yz|",
+         "0", about_principal.norm() / std::abs(expected), 1e-12, ""});
+}
+
+// 25.3: `sectional_mass` against the separate keys (mass_per_length, the rotary inertia tensor
+// about the mass centroid, mass_centroid_offset) for the same section: the 6 × 6 built by hand,
+// [[μ I, μ S̃ᵀ], [μ S̃, J_c + μ(|S|² I − S Sᵀ)]]. On a beam along x (E = I) with dyadic values every
+// step of either route is exact: the mass matrices and the equilibrium under the weight (which
+// acts at the mass centroid) are the same bit for bit; on a skew beam, to round-off.
+TEST(VerificationBeamSectionalMass, SectionalMassEqualsTheSeparateKeysBitForBit) {
+  const double mu = 2.0, y_m = 0.25, z_m = -0.125;
+  const Eigen::Matrix3d j = skew_rotary_inertia();
+  const std::string stiffness = ", axial_stiffness: 1.0e7, shear_stiffness: [5.0e6, 3.0e6], torsional_stiffness: 8.0e2, "
+                                "bending_stiffness: [2.0e3, 1.0e3]";
+  const std::string keys = fmt::format("mass_per_length: {}, {}, mass_centroid_offset: [{}, {}]", mu,
+                                       rotary_inertia_key(j), y_m, z_m) + stiffness;
+  const std::string full = sectional_mass_key(rigid_section_mass(mu, j, y_m, z_m)) + stiffness;
+  const int n = 4;
+  const auto model = [&](const Eigen::Vector3d& axis, const Eigen::Vector3d& orientation, const std::string& section) {
+    return beam_model_3d(axis, orientation, n, true, section) + "gravity: [0, 3.0, -9.81]\n";
+  };
+  const Eigen::MatrixXd m_keys = mass_matrix_of(model(Eigen::Vector3d::UnitX(), Eigen::Vector3d::UnitY(), keys));
+  const Eigen::MatrixXd m_full = mass_matrix_of(model(Eigen::Vector3d::UnitX(), Eigen::Vector3d::UnitY(), full));
+  const auto read_q = [](const Assembler&, const Eigen::VectorXd& q) { return q; };
+  const Eigen::VectorXd q_keys =
+      loaded_equilibrium(model(Eigen::Vector3d::UnitX(), Eigen::Vector3d::UnitY(), keys), n, Eigen::Vector3d::Zero(), read_q);
+  const Eigen::VectorXd q_full =
+      loaded_equilibrium(model(Eigen::Vector3d::UnitX(), Eigen::Vector3d::UnitY(), full), n, Eigen::Vector3d::Zero(), read_q);
+  EXPECT_GT(std::abs(tip_motion(model(Eigen::Vector3d::UnitX(), Eigen::Vector3d::UnitY(), keys), n,
+                                Eigen::Vector3d::Zero()).rotation.x()),
+            1e-6);  // the weight off the line twists it
+  const Eigen::Vector3d skew = Eigen::Vector3d(1.0, 2.0, 2.0) / 3.0, orientation(0.0, 0.0, 1.0);
+  const Eigen::MatrixXd m_skew_keys = mass_matrix_of(model(skew, orientation, keys));
+  const double skew_difference = (mass_matrix_of(model(skew, orientation, full)) - m_skew_keys).cwiseAbs().maxCoeff() /
+                                 m_skew_keys.cwiseAbs().maxCoeff();
+  check({"25.3a",
+         "3D beam along x (4 elements), sectional_mass [[μ I, μ S̃ᵀ], [μ S̃, J]] against mass_per_length, "
+         "rotary_inertia_per_length (6 numbers) and mass_centroid_offset: largest |ΔM|",
+         "0 (bit for bit)", (m_keys - m_full).cwiseAbs().maxCoeff(), 0.0, ""});
+  check({"25.3b", "the same, clamped, under its weight (gravity [0, 3, −9.81] m/s²): largest |Δq|", "0 (bit for bit)",
+         (q_keys - q_full).cwiseAbs().maxCoeff(), 0.0, ""});
+  check({"25.3c", "the same on a skew beam: largest |ΔM| / largest |M|", "0 (round-off)", skew_difference, 1e-14, ""});
+}
+
+// 25.4: a section whose principal axes of inertia are turned by β = 0.6 rad about x from local y, z:
+// J = P diag(J) Pᵀ, P = [1 0 0; 0 c −s; 0 s c] (given as 6 numbers, and as a sectional_mass), must
+// have the mass matrix of the diagonal J on a beam whose orientation is turned by β (an
+// independent route: there the frame E carries the turn).
+TEST(VerificationBeamSectionalMass, TurnedPrincipalAxesOfInertiaMatchATurnedOrientation) {
+  const double beta = 0.6, c = std::cos(beta), s = std::sin(beta);
+  const Eigen::Vector3d principal(12.0, 9.0, 5.0);
+  Eigen::Matrix3d p;
+  p << 1.0, 0.0, 0.0, 0.0, c, -s, 0.0, s, c;
+  const Eigen::Matrix3d turned = p * principal.asDiagonal() * p.transpose();
+  const Eigen::Vector3d axis = Eigen::Vector3d(1.0, 2.0, 2.0) / 3.0, orientation(0.0, 0.0, 1.0);
+  const Eigen::Matrix3d e = frame_of(axis, orientation);
+  const Eigen::Vector3d turned_orientation = c * e.col(1) + s * e.col(2);
+  const Eigen::MatrixXd oriented = mass_matrix_of(beam_model_3d(
+      axis, turned_orientation, 4, false,
+      fmt::format("mass_per_length: 3, rotary_inertia_per_length: [{}, {}, {}]", principal[0], principal[1], principal[2])));
+  const Eigen::MatrixXd by_tensor =
+      mass_matrix_of(beam_model_3d(axis, orientation, 4, false, "mass_per_length: 3, " + rotary_inertia_key(turned)));
+  const Eigen::MatrixXd by_matrix = mass_matrix_of(
+      beam_model_3d(axis, orientation, 4, false, sectional_mass_key(rigid_section_mass(3.0, turned, 0.0, 0.0))));
+  const double scale = oriented.cwiseAbs().maxCoeff();
+  check({"25.4",
+         "free 3D beam (4 elements), rotary inertia [12, 9, 5] kg·m with principal axes turned 0.6 rad about x, as "
+         "rotary_inertia_per_length (6 numbers) and as sectional_mass, against the diagonal one on a beam "
+         "whose orientation is turned 0.6 rad: largest |ΔM| / largest |M|",
+         "0 (round-off; independent route)",
+         std::max((by_tensor - oriented).cwiseAbs().maxCoeff(), (by_matrix - oriented).cwiseAbs().maxCoeff()) / scale,
+         1e-14, ""});
+}
+
+// 25.5: a 2D cantilever (L = 1 m) whose elastic centroid is e = 0.01 m off its line (along local
+// y), an axial tip force P on the line: the moment P e about the centroid bends it with K = P e/EI,
+// the tip deflecting by P e L²/(2EI) and the line stretching by P L (1/EA + e²/EI) (B4a).
+TEST(VerificationBeamSectionalMass, AxialForceOffThe2dCentroidBendsTheBeam) {
+  const double e = 0.01, load = 0.1, axial = 1.0e7, bending = 1.0e3;
+  const int n = 8;
+  const std::string text = beam_model_2d(
+      n, fmt::format("mass_per_length: 1, axial_stiffness: {}, shear_stiffness: 5.0e6, bending_stiffness: {}, "
+                     "centroid_offset: {}",
+                     axial, bending, e));
+  const Eigen::Vector2d tip = loaded_equilibrium(text, n, Eigen::Vector3d(load, 0.0, 0.0),
+                                                 [&](const Assembler& assembler, const Eigen::VectorXd& q) {
+                                                   return Eigen::Vector2d(q[assembler.dof_map().index(n, 0)] - 1.0,
+                                                                          q[assembler.dof_map().index(n, 1)]);
+                                                 });
+  const double deflection = load * e / (2.0 * bending), stretch = load * (1.0 / axial + e * e / bending);
+  check({"25.5a",
+         "2D cantilever, centroid_offset 0.01 m, axial tip force P on the nodes' line (PL²/EI = 1e-4), 8 elements: "
+         "tip deflection",
+         "P e L²/(2EI) (the centroidal moment P e of B4a)", std::abs(tip[1] - deflection) / deflection, 1e-4, ""});
+  check({"25.5b", "the same: tip displacement along the beam", "P L (1/EA + e²/EI) (B4a)",
+         std::abs(tip[0] - stretch) / stretch, 1e-4, ""});
+}
+
+// 25.6: the 2D sectional_stiffness diag(EA, GA_y, EI_z) against the same values as separate keys,
+// at a tip load that moves the tip by ~10 % of L: the same equilibrium, bit for bit; and
+// Tᵀ diag T of the centroid offset given as a sectional_stiffness against centroid_offset.
+TEST(VerificationBeamSectionalMass, Diagonal2dSectionalStiffnessReproducesTheKeysBitForBit) {
+  const int n = 8;
+  const double axial = 1.0e7, shear = 5.0e6, bending = 1.0e3, e = 0.01;
+  const Eigen::Vector3d force(90.0, 300.0, 0.0);
+  const auto read_q = [](const Assembler&, const Eigen::VectorXd& q) { return q; };
+  const auto solve = [&](const std::string& section) {
+    return loaded_equilibrium(beam_model_2d(n, "mass_per_length: 1, " + section), n, force, read_q);
+  };
+  const Eigen::VectorXd keys =
+      solve(fmt::format("axial_stiffness: {}, shear_stiffness: {}, bending_stiffness: {}", axial, shear, bending));
+  const Eigen::VectorXd full = solve(fmt::format("sectional_stiffness: [{}, 0, 0, 0, {}, 0, 0, 0, {}]", axial, shear, bending));
+  EXPECT_GT(tip_deflection(beam_model_2d(n, fmt::format("mass_per_length: 1, axial_stiffness: {}, shear_stiffness: {}, "
+                                                        "bending_stiffness: {}",
+                                                        axial, shear, bending)),
+                           n, 1, 2) * force[1],
+            0.05);  // far from linear (tip_deflection takes a unit load)
+  const Eigen::VectorXd offset = solve(fmt::format(
+      "axial_stiffness: {}, shear_stiffness: {}, bending_stiffness: {}, centroid_offset: {}", axial, shear, bending, e));
+  const Eigen::VectorXd moved = solve(fmt::format("sectional_stiffness: [{:.17g}, 0, {:.17g}, 0, {}, 0, {:.17g}, 0, {:.17g}]",
+                                                  axial, -axial * e, shear, -axial * e, bending + axial * e * e));
+  check({"25.6a",
+         "2D cantilever (8 elements, tip travel ~0.1 L): sectional_stiffness diag(EA, GA_y, EI_z) against the same "
+         "values as separate keys: largest |Δq|",
+         "0 (bit for bit)", (keys - full).cwiseAbs().maxCoeff(), 0.0, ""});
+  check({"25.6b", "the same with centroid_offset 0.01 m against its Tᵀ diag T given as sectional_stiffness: largest "
+         "|Δq| / L",
+         "0 (round-off)", (offset - moved).cwiseAbs().maxCoeff(), 1e-12, ""});
+}
+
+// 25.7: a 2D cantilever with a fully coupled C (axial–shear, axial–bending, shear–bending of 0.3,
+// 0.4, −0.2 of √(C_ii C_jj)) under a transverse tip load P: with F = C⁻¹ on (ε, γ, κ) and the
+// resultants (0, P, P(L − x)), the tip moves along the beam by P (F_εγ L + F_εκ L²/2) and across it
+// by P (F_γγ L + (F_γκ + F_κγ) L²/2 + F_κκ L³/3) (θ' = κ, v' = θ + γ). P L²/EI = 1e-6: the
+// shortening by the bending (∫½v'², ∝ P²) is 4e-5 of the stretch the couplings give (∝ P). The
+// one-point element is exact along the beam (ε linear in x) and O(L0²) across it.
+TEST(VerificationBeamSectionalMass, Coupled2dCantileverMovesAsItsCompliance) {
+  Eigen::Matrix3d c;
+  const Eigen::Vector3d diagonal(1.0e7, 5.0e6, 1.0e3);
+  c << 1.0, 0.3, 0.4, 0.3, 1.0, -0.2, 0.4, -0.2, 1.0;
+  c = diagonal.cwiseSqrt().asDiagonal() * c * diagonal.cwiseSqrt().asDiagonal();
+  const Eigen::Matrix3d f = c.inverse();
+  const double load = 1e-3;
+  const Eigen::Vector2d expected(load * (f(0, 1) + f(0, 2) / 2.0), load * (f(1, 1) + f(1, 2) + f(2, 2) / 3.0));
+  std::vector<double> along, across;
+  for (const int n : {8, 16, 32}) {
+    const Eigen::Vector2d tip = loaded_equilibrium(
+        beam_model_2d(n, "mass_per_length: 1, " + matrix_key("sectional_stiffness", c)), n,
+        Eigen::Vector3d(0.0, load, 0.0), [&](const Assembler& assembler, const Eigen::VectorXd& q) {
+          return Eigen::Vector2d(q[assembler.dof_map().index(n, 0)] - 1.0, q[assembler.dof_map().index(n, 1)]);
+        });
+    along.push_back(std::abs(tip[0] - expected[0]) / std::abs(expected[0]));
+    across.push_back(std::abs(tip[1] - expected[1]) / std::abs(expected[1]));
+  }
+  check({"25.7a",
+         "2D cantilever, sectional_stiffness with couplings 0.3, 0.4, −0.2 of √(C_ii C_jj), transverse tip load "
+         "(PL²/EI = 1e-6), 8 elements: tip displacement along the beam (a stretch by the couplings alone)",
+         "P (F_εγ L + F_εκ L²/2), F = C⁻¹ (exact for the element)", along[0], 1e-4, ""});
+  check({"25.7b", "the same, 32 elements: tip displacement across the beam",
+         "P (F_γγ L + 2F_γκ L²/2 + F_κκ L³/3)", across[2], 1e-3, ""});
+  check({"25.7c", "the same: order across (16 → 32 elements)", "2", order(across[1], across[2]), 1.9, "",
+         Bound::at_least});
 }
 
 }  // namespace

@@ -36,7 +36,12 @@ class ElementEntryReader {
                                                 std::string_view unit) const = 0;
   // Exactly `count` node names, as indices into Model::nodes.
   // Exactly `count` numbers (a direction, say), or empty when the entry does not give the key.
-  virtual std::optional<std::vector<double>> optional_numbers(std::string_view key, int count,
+  std::optional<std::vector<double>> optional_numbers(std::string_view key, int count,
+                                                      std::string_view unit) const {
+    return optional_numbers(key, count, count, unit);
+  }
+  // From `min_count` to `max_count` numbers (a tensor by its diagonal or in full), or empty.
+  virtual std::optional<std::vector<double>> optional_numbers(std::string_view key, int min_count, int max_count,
                                                               std::string_view unit) const = 0;
   virtual std::vector<int> nodes(std::string_view key, int count) const = 0;
   virtual int material(std::string_view key) const = 0;  // index into Model::materials

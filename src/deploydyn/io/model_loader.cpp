@@ -939,11 +939,13 @@ class ModelReader {
       const auto value = spec_.find(key);
       return value ? std::optional<double>(value->number(io_sign(sign), unit)) : std::nullopt;
     }
-    std::optional<std::vector<double>> optional_numbers(std::string_view key, int count,
+    using ElementEntryReader::optional_numbers;
+    std::optional<std::vector<double>> optional_numbers(std::string_view key, int min_count, int max_count,
                                                         std::string_view unit) const override {
       const auto value = spec_.find(key);
-      const auto n = static_cast<std::size_t>(count);
-      return value ? std::optional<std::vector<double>>(value->numbers(n, n, unit)) : std::nullopt;
+      return value ? std::optional<std::vector<double>>(value->numbers(
+                         static_cast<std::size_t>(min_count), static_cast<std::size_t>(max_count), unit))
+                   : std::nullopt;
     }
     std::vector<int> nodes(std::string_view key, int count) const override {
       std::vector<int> indices;

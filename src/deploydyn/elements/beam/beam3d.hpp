@@ -20,7 +20,8 @@
 // Mass (D7), from T = ½∫(μ|ṙ|² + Σ_ij S_ij ḋ_i·ḋ_j) with linear interpolation: constant,
 // (m/6)[2I I; I 2I] on positions and (L0/6)[2 1; 1 2] ⊗ (I₃ ⊗ J) on the R's with
 // J = E S Eᵀ, S the section's second moments of mass per length: ρ diag(0, I_z, I_y) from
-// the geometry, or from a given rotary inertia diag(J_xx, J_yy, J_zz) by (D7a);
+// the geometry, or from a given rotary inertia tensor J (its diagonal J_xx, J_yy, J_zz and its
+// products, or a `sectional_mass`'s rotation block about the axis) by (D7a);
 // lumped: the halves on each node's diagonal blocks. A mass centroid off the axis at c = E(0, y_m,
 // z_m) adds μ ṙ·(Ṙ c) to T: blocks (m/6)[2 1; 1 2] ⊗ cᵀ between x and each row of R
 // (D7b).
@@ -263,17 +264,25 @@ inline Eigen::Matrix3d rotary_inertia_per_length(double mass_kg, double area_m2,
                     inertia_y_m4 * frame.col(2) * frame.col(2).transpose());
 }
 
-// J = E S Eᵀ from a given rotary inertia per length (J_xx, J_yy, J_zz) in the local frame (kg·m):
-// the second moments of mass S_11 = (J_yy + J_zz − J_xx)/2, S_22 = (J_xx + J_zz − J_yy)/2,
-// S_33 = (J_xx + J_yy − J_zz)/2, so that a rigid turn at ω has the kinetic energy ½ L0 ωᵀJω (D7a).
-inline Eigen::Matrix3d rotary_inertia_per_length(const Eigen::Vector3d& given_kg_m,
-                                                 const Eigen::Matrix3d& frame) {
-  const double half_sum = 0.5 * given_kg_m.sum();
+// J = E S Eᵀ from a given rotary inertia tensor per length J in the local frame (kg·m): the
+// second moments of mass S = (tr J / 2) I − J, so that a rigid turn at ω has the kinetic energy
+// ½ L0 ωᵀJω (D7a; for a diagonal J: S_11 = (J_yy + J_zz − J_xx)/2 and its turns). The sum runs
+// over every (i, j), so a diagonal J adds exact zeros to the diagonal terms.
+inline Eigen::Matrix3d rotary_inertia_per_length(const Eigen::Matrix3d& given_kg_m, const Eigen::Matrix3d& frame) {
+  const double half_sum = 0.5 * (given_kg_m(0, 0) + given_kg_m(1, 1) + given_kg_m(2, 2));
   Eigen::Matrix3d out = Eigen::Matrix3d::Zero();
   for (int i = 0; i < 3; ++i) {
-    out += (half_sum - given_kg_m[i]) * frame.col(i) * frame.col(i).transpose();
+    for (int j = 0; j < 3; ++j) {
+      const double second_moment = (i == j ? half_sum : 0.0) - given_kg_m(i, j);
+      out += second_moment * frame.col(i) * frame.col(j).transpose();
+    }
   }
   return out;
+}
+
+// The same from the diagonal (J_xx, J_yy, J_zz).
+inline Eigen::Matrix3d rotary_inertia_per_length(const Eigen::Vector3d& given_kg_m, const Eigen::Matrix3d& frame) {
+  return rotary_inertia_per_length(Eigen::Matrix3d(given_kg_m.asDiagonal()), frame);
 }
 
 // (D7), (D7b): `mass_centroid` is c = E (0, y_m, z_m), the mass centroid's offset from the axis in

@@ -199,16 +199,21 @@ std::unique_ptr<ElementGroup> make_beam_group_3d(const Model& model, const DofMa
     beam.section.reference_length_m = e.reference_length_m;
     beam.section.damping_time_s = material.damping_time_s;
     beam.mass_kg = e.mass_kg;
-    beam.rotary_per_length =  // (D7), (D7a)
-        e.rotary_inertia_per_length_kg_m[0] > 0.0
-            ? beam3d::rotary_inertia_per_length(e.rotary_inertia_per_length_kg_m, beam.section.frame)
-            : beam3d::rotary_inertia_per_length(e.mass_kg, e.area_m2, e.inertia_y_m4,
-                                                e.inertia_z_m4, e.reference_length_m,
-                                                beam.section.frame);
-    if (!e.mass_centroid_offset_m.isZero()) {  // J about the centroid moved to the axis (D7b)
+    if (e.sectional_mass_given) {  // J about the axis as given, with the centroid's coupling (D7c)
+      beam.rotary_per_length =
+          beam3d::rotary_inertia_per_length(e.sectional_mass_matrix.bottomRightCorner<3, 3>().eval(), beam.section.frame);
       beam.mass_centroid_m = beam.section.frame.rightCols<2>() * e.mass_centroid_offset_m;
-      beam.rotary_per_length += e.mass_kg / e.reference_length_m * beam.mass_centroid_m *
-                                beam.mass_centroid_m.transpose();
+    } else {
+      beam.rotary_per_length =  // (D7), (D7a)
+          e.rotary_inertia_per_length_kg_m[0] > 0.0
+              ? beam3d::rotary_inertia_per_length(beam::rotary_inertia_tensor(e), beam.section.frame)
+              : beam3d::rotary_inertia_per_length(e.mass_kg, e.area_m2, e.inertia_y_m4, e.inertia_z_m4,
+                                                  e.reference_length_m, beam.section.frame);
+      if (!e.mass_centroid_offset_m.isZero()) {  // J about the centroid moved to the axis (D7b)
+        beam.mass_centroid_m = beam.section.frame.rightCols<2>() * e.mass_centroid_offset_m;
+        beam.rotary_per_length += e.mass_kg / e.reference_length_m * beam.mass_centroid_m *
+                                  beam.mass_centroid_m.transpose();
+      }
     }
     beam.expansion_per_C = material.expansion_per_C;
     beam.curvature_y_per_C_m = e.height_z_m > 0.0 ? material.expansion_per_C / e.height_z_m : 0.0;

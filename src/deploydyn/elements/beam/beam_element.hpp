@@ -44,18 +44,30 @@ struct BeamElement {
   double mass_per_length_kg_m = 0.0;  // m = it · L0 (replaces density · area)
   // J_xx (polar), J_yy, J_zz per unit length (kg·m) in the local frame; 2D: J_zz alone.
   Eigen::Vector3d rotary_inertia_per_length_kg_m = Eigen::Vector3d::Zero();
+  // The tensor's off-diagonal entries J_xy, J_xz, J_yz (kg·m; J_yz = −∫ρ y z dA), 3D; zero unless
+  // `rotary_inertia_per_length` gives six numbers (a section whose principal axes of inertia are
+  // not its local axes).
+  Eigen::Vector3d rotary_inertia_products_kg_m = Eigen::Vector3d::Zero();
+  // The full 6 × 6 sectional mass about the reference axis in the local frame, order (x, y, z
+  // translations, rotations about x, y, z): [[μ I, μ S̃ᵀ], [μ S̃, J]] (3D; docs/theory.md,
+  // "Sectional mass"). When given it is the mass's source: μ (mass_per_length_kg_m) and the mass
+  // centroid (mass_centroid_offset_m) are read off it, and J is its rotation block about the axis.
+  Eigen::Matrix<double, 6, 6> sectional_mass_matrix = Eigen::Matrix<double, 6, 6>::Zero();
+  bool sectional_mass_given = false;
   Eigen::Vector2d shear_stiffness_N = Eigen::Vector2d::Zero();        // GA_y, GA_z; 2D: GA_y
   double axial_stiffness_N = 0.0;                                     // EA
   Eigen::Vector2d bending_stiffness_Nm2 = Eigen::Vector2d::Zero();    // EI_y, EI_z; 2D: EI_z
   double torsional_stiffness_Nm2 = 0.0;                               // GJ (3D only)
   // The full sectional stiffness C about the reference axis (the nodes' line) in the local
-  // frame, order (EA, GA_y, GA_z, GJ, EI_y, EI_z) — N, N·m, N·m² by block; 3D only (a 2D
-  // beam refuses it). Symmetric positive definite; replaces the diagonal values when given
-  // (docs/theory.md, "Sections with offsets").
+  // frame, order (EA, GA_y, GA_z, GJ, EI_y, EI_z) — N, N·m, N·m² by block. A 2D beam's 3 × 3
+  // (axial, shear, bending) sits in rows and columns 0, 1, 5 (EA, GA_y, EI_z), the rest zero.
+  // Symmetric positive definite; replaces the diagonal values when given (docs/theory.md,
+  // "Sections with offsets").
   Eigen::Matrix<double, 6, 6> sectional_stiffness_matrix = Eigen::Matrix<double, 6, 6>::Zero();
   bool sectional_stiffness_given = false;
   // Local (y, z) of the elastic centroid and of the shear centre from the reference axis (m):
-  // they move C from those points to the axis (docs/theory.md, "Sections with offsets").
+  // they move C from those points to the axis (docs/theory.md, "Sections with offsets"). 2D:
+  // the centroid's e_y alone.
   Eigen::Vector2d centroid_offset_m = Eigen::Vector2d::Zero();
   Eigen::Vector2d shear_centre_offset_m = Eigen::Vector2d::Zero();
   // Local (y, z) of the mass centroid from the reference axis (m); couples ẍ with the directors.

@@ -42,32 +42,43 @@ constexpr ElementField kBeamFields[] = {
      "> 0; an error if neither it nor a density is given (nor `mass_per_length`); rotary inertia is mass · inertia / area unless `rotary_inertia_per_length`"},
     {"mass_per_length", "kg/m", "`density · area`", "> 0: the mass per unit length (the beam's mass is it · L0); not with `mass`"},
     {"rotary_inertia_per_length", "kg·m", "`mass_per_length · [I_y + I_z, I_y, I_z] / area`",
-     "a number or a vector: 3D [J_xx, J_yy, J_zz] about local x (the polar one), y, z, each > 0 and none above the sum of the other two; 2D the number J_zz > 0"},
+     "a number or a vector: 3D [J_xx, J_yy, J_zz] about local x (the polar one), y, z, each > 0 and none above the sum of the other two, or the full tensor [J_xx, J_yy, J_zz, J_xy, J_xz, J_yz] (J_yz = −∫ρ y z dA), positive definite with no principal moment above the sum of the other two; about the mass centroid; 2D the number J_zz > 0; not with `sectional_mass`"},
     {"shear_stiffness", "N", "`shear_factor · shear_modulus · area`",
      "a number or a vector: 3D [GA_y, GA_z] for shear along local y, z, each > 0; 2D the number GA_y > 0; not with `shear_factor`"},
     {"axial_stiffness", "N", "`E · area`", "> 0: EA"},
     {"bending_stiffness", "N·m²", "`E · [inertia_y, inertia_z]`",
      "a number or a vector: 3D [EI_y, EI_z] for bending about local y, z, each > 0; 2D the number EI_z > 0"},
     {"torsional_stiffness", "N·m²", "`shear_modulus · torsion`", "> 0: GJ; 3D only"},
-    {"sectional_stiffness", "N, N·m, N·m²", "diag(EA, GA_y, GA_z, GJ, EI_y, EI_z) of the keys above",
-     "a vector of 36 numbers, the rows of the full 6 × 6 C about the beam's axis in its local frame, order (axial, shear y, shear z, torsion, bending about y, about z); symmetric positive definite; 3D only; not with the stiffness keys above, `shear_factor`, `shear_modulus` or the two offsets below"},
-    {"centroid_offset", "m", "[0, 0]", "[e_y, e_z]: the elastic centroid in local (y, z) from the beam's axis; EA, EI_y, EI_z are about it; 3D only"},
-    {"shear_centre_offset", "m", "[0, 0]", "[y_s, z_s]: the shear centre in local (y, z) from the axis; GA_y, GA_z, GJ are about it; 3D only"},
-    {"mass_centroid_offset", "m", "[0, 0]", "[y_m, z_m]: the mass centroid in local (y, z) from the axis; `rotary_inertia_per_length` is about it; 3D only"},
+    {"sectional_stiffness", "N, N·m, N·m²", "diag(EA, GA_y, GA_z, GJ, EI_y, EI_z) of the keys above (2D: diag(EA, GA_y, EI_z))",
+     "3D: a vector of 36 numbers, the rows of the full 6 × 6 C about the beam's axis in its local frame, order (axial, shear y, shear z, torsion, bending about y, about z); 2D: 9 numbers, the rows of the 3 × 3 C, order (axial, shear y, bending about z); symmetric positive definite; not with the stiffness keys above, `shear_factor`, `shear_modulus` or the two offsets below"},
+    {"centroid_offset", "m", "[0, 0] (2D: 0)", "a number or a vector: 3D [e_y, e_z], 2D the number e_y: the elastic centroid in local (y, z) from the beam's axis; EA, EI_y, EI_z are about it"},
+    {"shear_centre_offset", "m", "[0, 0]", "[y_s, z_s]: the shear centre in local (y, z) from the axis; GA_y, GA_z, GJ are about it; 3D only (in the plane it couples nothing)"},
+    {"mass_centroid_offset", "m", "[0, 0]", "[y_m, z_m]: the mass centroid in local (y, z) from the axis; `rotary_inertia_per_length` is about it; 3D only; not with `sectional_mass`"},
+    {"sectional_mass", "kg/m, kg, kg·m", "[[μ I, μ S̃ᵀ], [μ S̃, J]] of the keys above",
+     "a vector of 36 numbers, the rows of the rigid section's 6 × 6 mass matrix about the beam's axis in its local frame, order (translations along x, y, z, rotations about x, y, z): μ I, the coupling μ S̃ of the mass centroid S = (0, y_m, z_m), J about the axis symmetric with J − μ(|S|² I − S Sᵀ) positive definite and no principal moment above the sum of the other two; 3D only; not with `mass`, `mass_per_length`, `rotary_inertia_per_length` or `mass_centroid_offset`"},
     {"length", "m", "distance of the nodes' initial positions", "> 0: the reference length L0"},
     {"dT", "°C", "`thermal.dT`", "a function: this beam's own ΔT(t) of its axis"},
 };
 
 constexpr std::string_view kOnly3D[] = {"inertia_y",           "torsion",         "orientation",
                                         "height_z",            "dT_gradient_z",   "section_modulus_y",
-                                        "torsional_stiffness", "sectional_stiffness", "centroid_offset",
-                                        "shear_centre_offset", "mass_centroid_offset"};
+                                        "torsional_stiffness", "mass_centroid_offset", "sectional_mass"};
+// What a `sectional_mass` sets.
+constexpr std::string_view kReplacedBySectionalMass[] = {"mass", "mass_per_length", "rotary_inertia_per_length",
+                                                         "mass_centroid_offset"};
+// A 2D beam's strains (ε, γ, κ) are the 3D ones (Γ1, Γ2, K3): its 3 × 3 C sits in these rows and
+// columns of the 6 × 6.
+constexpr int kPlaneStrains[] = {0, 1, 5};
 // What a full `sectional_stiffness` replaces, and the offsets it already holds.
 constexpr std::string_view kReplacedBySectionalStiffness[] = {
     "axial_stiffness", "shear_stiffness", "bending_stiffness", "torsional_stiffness", "shear_factor",
     "shear_modulus",   "centroid_offset", "shear_centre_offset"};
-// Relative asymmetry |C_ij − C_ji| / √(C_ii C_jj) tolerated in a given C (rounded decimals).
+// Relative asymmetry |C_ij − C_ji| / √(C_ii C_jj) tolerated in a given C or sectional mass
+// (rounded decimals), and the relative size of an entry that must be zero.
 constexpr double kSectionalAsymmetryTolerance = 1e-9;
+// How far (relative to the trace) the largest principal moment of inertia may exceed the sum of
+// the other two: round-off of a thin section's J_xx = J_yy + J_zz given in turned axes.
+constexpr double kTriangleTolerance = 1e-12;
 
 constexpr std::string_view kBeamSectionKeys[] = {"area", "inertia_z", "inertia_y", "torsion",
                                              "section_modulus_z", "section_modulus_y"};
@@ -107,27 +118,70 @@ std::optional<std::vector<double>> read_per_axis(const ElementEntryReader& entry
 }
 
 // The sectional values given directly (docs/model-format.md, `elements`, "Sectional values").
-void read_sectional_values(const ElementEntryReader& entry, bool three_d, BeamElement& beam) {
-  if (const auto inertia = read_per_axis(entry, "rotary_inertia_per_length", three_d, 3, "kg·m")) {
-    if (three_d) {
-      const Eigen::Vector3d j((*inertia)[0], (*inertia)[1], (*inertia)[2]);
-      // J_xx ≤ J_yy + J_zz and its turns: the second moments of mass of the section (theory D7)
-      // are (J_yy + J_zz − J_xx)/2 and its turns, which cannot be negative.
-      for (int axis = 0; axis < 3; ++axis) {
-        const double others = j.sum() - j[axis];
-        if (j[axis] > others) {
-          constexpr const char* kNames[] = {"J_xx", "J_yy", "J_zz"};
-          entry.fail("rotary_inertia_per_length",
-                     fmt::format("{} = {} is more than the sum {} of the other two: no section has such "
-                                 "inertias (the polar one J_xx is at most J_yy + J_zz, equal for a thin "
-                                 "section)",
-                                 kNames[axis], j[axis], others));
-        }
-      }
-      beam.rotary_inertia_per_length_kg_m = j;
-    } else {
-      beam.rotary_inertia_per_length_kg_m[2] = inertia->front();
+// The principal moments of a rotary inertia tensor per length J (kg·m) must be those of a
+// section: positive, and none above the sum of the other two (the second moments of mass
+// tr J / 2 − J of docs/theory.md (D7a) cannot be negative). Empty if so, else the problem.
+std::optional<std::string> mass_tensor_problem(const Eigen::Matrix3d& j) {
+  const Eigen::Vector3d moments = Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(j, Eigen::EigenvaluesOnly).eigenvalues();
+  if (!(moments[0] > 0.0)) {
+    return fmt::format("must be positive definite: its principal moments are {}, {}, {}", moments[0], moments[1],
+                       moments[2]);
+  }
+  if (moments[2] > moments[0] + moments[1] + kTriangleTolerance * moments.sum()) {
+    return fmt::format("has the principal moments {}, {}, {}: the largest is more than the sum of the other two, "
+                       "which no section has (the polar one is at most the sum, equal for a thin section)",
+                       moments[0], moments[1], moments[2]);
+  }
+  return std::nullopt;
+}
+
+// `rotary_inertia_per_length` in 3D: [J_xx, J_yy, J_zz], or the full tensor with J_xy, J_xz, J_yz.
+void read_rotary_inertia_3d(const ElementEntryReader& entry, BeamElement& beam) {
+  const std::optional<std::vector<double>> values = entry.optional_numbers("rotary_inertia_per_length", 3, 6, "kg·m");
+  if (!values) return;
+  if (values->size() != 3 && values->size() != 6) {
+    entry.fail("rotary_inertia_per_length",
+               fmt::format("expected 3 numbers [J_xx, J_yy, J_zz] or 6 [J_xx, J_yy, J_zz, J_xy, J_xz, J_yz] "
+                           "(kg·m), got {}",
+                           values->size()));
+  }
+  for (int axis = 0; axis < 3; ++axis) {
+    if (!((*values)[axis] > 0.0)) {
+      entry.fail("rotary_inertia_per_length",
+                 fmt::format("every value must be positive (kg·m), got {}", (*values)[axis]));
     }
+  }
+  const Eigen::Vector3d j((*values)[0], (*values)[1], (*values)[2]);
+  if (values->size() == 6) {
+    beam.rotary_inertia_products_kg_m = Eigen::Vector3d((*values)[3], (*values)[4], (*values)[5]);
+    beam.rotary_inertia_per_length_kg_m = j;
+    if (const auto problem = mass_tensor_problem(rotary_inertia_tensor(beam))) {
+      entry.fail("rotary_inertia_per_length", *problem);
+    }
+    return;
+  }
+  // J_xx ≤ J_yy + J_zz and its turns: the second moments of mass of the section (theory D7)
+  // are (J_yy + J_zz − J_xx)/2 and its turns, which cannot be negative.
+  for (int axis = 0; axis < 3; ++axis) {
+    const double others = j.sum() - j[axis];
+    if (j[axis] > others) {
+      constexpr const char* kNames[] = {"J_xx", "J_yy", "J_zz"};
+      entry.fail("rotary_inertia_per_length",
+                 fmt::format("{} = {} is more than the sum {} of the other two: no section has such "
+                             "inertias (the polar one J_xx is at most J_yy + J_zz, equal for a thin "
+                             "section)",
+                             kNames[axis], j[axis], others));
+    }
+  }
+  beam.rotary_inertia_per_length_kg_m = j;
+}
+
+// The sectional values given directly (docs/model-format.md, `elements`, "Sectional values").
+void read_sectional_values(const ElementEntryReader& entry, bool three_d, BeamElement& beam) {
+  if (three_d) {
+    read_rotary_inertia_3d(entry, beam);
+  } else if (const auto inertia = entry.optional_number("rotary_inertia_per_length", ValueSign::positive, "kg·m")) {
+    beam.rotary_inertia_per_length_kg_m[2] = *inertia;
   }
   if (const auto shear = read_per_axis(entry, "shear_stiffness", three_d, 2, "N")) {
     if (entry.has("shear_factor")) {
@@ -155,47 +209,122 @@ void read_sectional_values(const ElementEntryReader& entry, bool three_d, BeamEl
   }
 }
 
-// `sectional_stiffness` (docs/theory.md, D4a): symmetric (within rounding, then made exactly so)
-// and positive definite. Definiteness is judged on D^-½ C D^-½ (unit diagonal), so that EA ~ 1e8 N
-// and GJ ~ 1 N·m² do not hide a singular coupling.
-void read_sectional_stiffness(const ElementEntryReader& entry, BeamElement& beam) {
-  const std::optional<std::vector<double>> values = entry.optional_numbers("sectional_stiffness", 36, "N, N·m, N·m²");
-  if (!values) return;
-  for (const std::string_view key : kReplacedBySectionalStiffness) {
-    if (entry.has(key)) {
-      entry.fail(key, fmt::format("give either 'sectional_stiffness' (the full 6 × 6 C about the axis) or '{}', "
-                                  "not both: the full matrix already holds it",
-                                  key));
+// The least eigenvalue of a symmetric matrix scaled to a unit diagonal, D^-½ A D^-½: so that EA ~
+// 1e8 N and GJ ~ 1 N·m² do not hide a singular coupling. The diagonal must be positive.
+double least_scaled_eigenvalue(const Eigen::MatrixXd& a) {
+  const Eigen::VectorXd inverse_root = a.diagonal().cwiseSqrt().cwiseInverse();
+  const Eigen::MatrixXd unit_diagonal = inverse_root.asDiagonal() * a * inverse_root.asDiagonal();
+  return Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>(unit_diagonal, Eigen::EigenvaluesOnly).eigenvalues().minCoeff();
+}
+
+// A square matrix given row by row under `key` (`symbol` names its entries, 1-based): a positive
+// diagonal and symmetric within rounding. Returns it made exactly symmetric.
+Eigen::MatrixXd read_symmetric(const ElementEntryReader& entry, std::string_view key, std::string_view symbol,
+                               const std::vector<double>& values) {
+  const auto n = static_cast<Eigen::Index>(std::lround(std::sqrt(static_cast<double>(values.size()))));
+  const Eigen::MatrixXd given = Eigen::Map<const Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>>(values.data(), n, n);
+  for (Eigen::Index i = 0; i < n; ++i) {
+    if (!(given(i, i) > 0.0)) {
+      entry.fail(key, fmt::format("diagonal entry {}{}{} must be positive, got {}", symbol, i + 1, i + 1, given(i, i)));
     }
-  }
-  const Eigen::Matrix<double, 6, 6> given = Eigen::Map<const Eigen::Matrix<double, 6, 6, Eigen::RowMajor>>(values->data());
-  const Eigen::Matrix<double, 6, 1> diagonal = given.diagonal();
-  for (int i = 0; i < 6; ++i) {
-    if (!(diagonal[i] > 0.0)) {
-      entry.fail("sectional_stiffness", fmt::format("diagonal entry C{}{} must be positive, got {}", i + 1, i + 1, diagonal[i]));
-    }
-    for (int j = 0; j < i; ++j) {
-      const double scale = std::sqrt(diagonal[i] * diagonal[j]);
+    for (Eigen::Index j = 0; j < i; ++j) {
+      const double scale = std::sqrt(given(i, i) * given(j, j));
       if (!(std::abs(given(i, j) - given(j, i)) <= kSectionalAsymmetryTolerance * scale)) {
-        entry.fail("sectional_stiffness", fmt::format("must be symmetric: C{}{} = {} but C{}{} = {}", i + 1, j + 1,
-                                                      given(i, j), j + 1, i + 1, given(j, i)));
+        entry.fail(key, fmt::format("must be symmetric: {}{}{} = {} but {}{}{} = {}", symbol, i + 1, j + 1, given(i, j),
+                                    symbol, j + 1, i + 1, given(j, i)));
       }
     }
   }
-  const Eigen::Matrix<double, 6, 6> symmetric = 0.5 * (given + given.transpose());
-  const Eigen::Matrix<double, 6, 1> inverse_root = diagonal.cwiseSqrt().cwiseInverse();
-  const Eigen::Matrix<double, 6, 6> unit_diagonal = inverse_root.asDiagonal() * symmetric * inverse_root.asDiagonal();
-  const double least = Eigen::SelfAdjointEigenSolver<Eigen::Matrix<double, 6, 6>>(unit_diagonal, Eigen::EigenvaluesOnly)
-                           .eigenvalues()
-                           .minCoeff();
+  return 0.5 * (given + given.transpose());
+}
+
+// `sectional_stiffness` (docs/theory.md, D4a): 36 numbers in 3D, 9 in 2D (axial, shear, bending),
+// symmetric (within rounding, then made exactly so) and positive definite, judged on the unit
+// diagonal form.
+void read_sectional_stiffness(const ElementEntryReader& entry, bool three_d, BeamElement& beam) {
+  const std::optional<std::vector<double>> values =
+      entry.optional_numbers("sectional_stiffness", three_d ? 36 : 9, "N, N·m, N·m²");
+  if (!values) return;
+  for (const std::string_view key : kReplacedBySectionalStiffness) {
+    if (entry.has(key)) {
+      entry.fail(key, fmt::format("give either 'sectional_stiffness' (the full {} C about the axis) or '{}', "
+                                  "not both: the full matrix already holds it",
+                                  three_d ? "6 × 6" : "3 × 3", key));
+    }
+  }
+  const Eigen::MatrixXd c = read_symmetric(entry, "sectional_stiffness", "C", *values);
+  const double least = least_scaled_eigenvalue(c);
   if (!(least > kSectionalAsymmetryTolerance)) {
     entry.fail("sectional_stiffness",
                fmt::format("must be positive definite: scaled to a unit diagonal its least eigenvalue is {} (a "
                            "coupling term too large for the diagonal ones)",
                            least));
   }
-  beam.sectional_stiffness_matrix = symmetric;
+  if (three_d) {
+    beam.sectional_stiffness_matrix = c;
+  } else {
+    for (int i = 0; i < 3; ++i) {
+      for (int j = 0; j < 3; ++j) beam.sectional_stiffness_matrix(kPlaneStrains[i], kPlaneStrains[j]) = c(i, j);
+    }
+  }
   beam.sectional_stiffness_given = true;
+}
+
+// `sectional_mass` (docs/theory.md, "Sectional mass"): a rigid section's [[μ I, μ S̃ᵀ], [μ S̃, J]]
+// about the axis, S = (0, y_m, z_m). Each block is checked for that form, then μ, the mass
+// centroid and J about it must be a section's.
+void read_sectional_mass(const ElementEntryReader& entry, BeamElement& beam) {
+  constexpr std::string_view kKey = "sectional_mass";
+  const std::optional<std::vector<double>> values = entry.optional_numbers(kKey, 36, "kg/m, kg, kg·m");
+  if (!values) return;
+  for (const std::string_view key : kReplacedBySectionalMass) {
+    if (entry.has(key)) {
+      entry.fail(key, fmt::format("give either 'sectional_mass' (the 6 × 6 about the axis: it sets the mass per "
+                                  "length, the mass centroid and the rotary inertia together) or '{}', not both",
+                                  key));
+    }
+  }
+  const Eigen::Matrix<double, 6, 6> m = read_symmetric(entry, kKey, "M", *values);
+  const double mu = m(0, 0);
+  // Entries that must vanish or match, relative to √(M_ii M_jj).
+  const auto off = [&](int i, int j, double value) {
+    return !(std::abs(value) <= kSectionalAsymmetryTolerance * std::sqrt(m(i, i) * m(j, j)));
+  };
+  for (int i = 0; i < 3; ++i) {
+    for (int j = 0; j < 3; ++j) {
+      if (off(i, j, m(i, j) - (i == j ? mu : 0.0))) {
+        entry.fail(kKey, fmt::format("the translation block (rows and columns 1 to 3) must be μ I, one mass per "
+                                     "length μ = M11 = {} along x, y and z and no couplings: M{}{} = {}",
+                                     mu, i + 1, j + 1, m(i, j)));
+      }
+    }
+  }
+  // Rows 4–6, columns 1–3: μ S̃ = μ [[0, −z_m, y_m], [z_m, 0, 0], [−y_m, 0, 0]] (S_x = 0: the mass
+  // centroid lies in the section).
+  const double y_m = m(3, 2) / mu, z_m = m(4, 0) / mu;
+  Eigen::Matrix3d rigid;
+  rigid << 0.0, -m(4, 0), m(3, 2), m(4, 0), 0.0, 0.0, -m(3, 2), 0.0, 0.0;
+  for (int i = 0; i < 3; ++i) {
+    for (int j = 0; j < 3; ++j) {
+      if (off(3 + i, j, m(3 + i, j) - rigid(i, j))) {
+        entry.fail(kKey, fmt::format("the coupling block (rows 4 to 6, columns 1 to 3) must be μ S̃, S = (0, y_m, z_m) "
+                                     "the mass centroid in the section: from M43 = μ y_m and M51 = μ z_m, M{}{} must be "
+                                     "{}, got {}",
+                                     4 + i, j + 1, rigid(i, j), m(3 + i, j)));
+      }
+    }
+  }
+  const Eigen::Vector3d centroid(0.0, y_m, z_m);
+  const Eigen::Matrix3d about_centroid =
+      m.bottomRightCorner<3, 3>() - mu * (centroid.squaredNorm() * Eigen::Matrix3d::Identity() - centroid * centroid.transpose());
+  if (const auto problem = mass_tensor_problem(about_centroid)) {
+    entry.fail(kKey, "the rotation block (rows and columns 4 to 6) less the mass centroid's μ(|S|² I − S Sᵀ), the "
+                     "rotary inertia about the mass centroid, " + *problem);
+  }
+  beam.sectional_mass_matrix = m;
+  beam.sectional_mass_given = true;
+  beam.mass_per_length_kg_m = mu;
+  beam.mass_centroid_offset_m = Eigen::Vector2d(y_m, z_m);
 }
 
 // An offset [y, z] (m) in the section, zero when not given.
@@ -268,11 +397,19 @@ void read_entry(const std::string& name, const ElementEntryReader& entry, Model&
   const std::optional<double> shear_modulus = entry.optional_number("shear_modulus", ValueSign::positive, "Pa");
   beam.shear_modulus_Pa = shear_modulus.value_or(material.youngs_modulus_Pa / kYoungsToShearModulus);
   beam.shear_modulus_given = shear_modulus.has_value();
+  read_sectional_stiffness(entry, three_d, beam);
   if (three_d) {
-    read_sectional_stiffness(entry, beam);
     beam.centroid_offset_m = read_offset(entry, "centroid_offset");
     beam.shear_centre_offset_m = read_offset(entry, "shear_centre_offset");
     beam.mass_centroid_offset_m = read_offset(entry, "mass_centroid_offset");
+    read_sectional_mass(entry, beam);
+  } else {
+    beam.centroid_offset_m[0] = entry.optional_number("centroid_offset", ValueSign::any, "m").value_or(0.0);
+    if (entry.has("shear_centre_offset")) {
+      entry.fail("shear_centre_offset",
+                 "has no meaning for a 2D beam: a shear centre off the axis couples shear with torsion, which a "
+                 "beam in the plane does not have (its shear strain is the same at every point of the section)");
+    }
   }
   read_sectional_values(entry, three_d, beam);
   read_gradient(entry, "dT_gradient_y", "height_y", beam.temperature_gradient_y_C,
@@ -283,7 +420,8 @@ void read_entry(const std::string& name, const ElementEntryReader& entry, Model&
   }
 
   const std::optional<double> mass_per_length =
-      entry.optional_number("mass_per_length", ValueSign::positive, "kg/m");
+      beam.sectional_mass_given ? std::optional<double>(beam.mass_per_length_kg_m)
+                                : entry.optional_number("mass_per_length", ValueSign::positive, "kg/m");
   if (mass_per_length && entry.has("mass")) {
     entry.fail("mass_per_length",
                "give either 'mass' (kg, the whole beam's) or 'mass_per_length' (kg/m), not both");
@@ -329,14 +467,27 @@ void write_entry(const Model& model, int index, ElementEntryWriter& entry) {
       entry.number(key, value_2d);
     }
   };
+  const auto rows_of = [](const auto& matrix) {
+    std::vector<double> rows;
+    for (Eigen::Index i = 0; i < matrix.rows(); ++i) {
+      for (Eigen::Index j = 0; j < matrix.cols(); ++j) rows.push_back(matrix(i, j));
+    }
+    return rows;
+  };
   const Eigen::Vector3d& inertia = beam.rotary_inertia_per_length_kg_m;
-  if (inertia[2] > 0.0) {
+  const Eigen::Vector3d& products = beam.rotary_inertia_products_kg_m;
+  if (beam.sectional_mass_given) {
+    entry.numbers("sectional_mass", rows_of(beam.sectional_mass_matrix));
+  } else if (!products.isZero()) {
+    entry.numbers("rotary_inertia_per_length",
+                  {inertia[0], inertia[1], inertia[2], products[0], products[1], products[2]});
+  } else if (inertia[2] > 0.0) {
     per_axis("rotary_inertia_per_length", {inertia[0], inertia[1], inertia[2]}, inertia[2]);
   }
   const Eigen::Vector2d& shear = beam.shear_stiffness_N;
   if (beam.sectional_stiffness_given) {
-    const Eigen::Matrix<double, 6, 6, Eigen::RowMajor> rows = beam.sectional_stiffness_matrix;
-    entry.numbers("sectional_stiffness", std::vector<double>(rows.data(), rows.data() + rows.size()));
+    entry.numbers("sectional_stiffness", three_d ? rows_of(beam.sectional_stiffness_matrix)
+                                                 : rows_of(beam.sectional_stiffness_matrix(kPlaneStrains, kPlaneStrains)));
   } else if (shear[0] > 0.0) {
     per_axis("shear_stiffness", {shear[0], shear[1]}, shear[0]);
   } else {
@@ -345,9 +496,13 @@ void write_entry(const Model& model, int index, ElementEntryWriter& entry) {
   const auto offset = [&](std::string_view key, const Eigen::Vector2d& value) {
     if (!value.isZero()) entry.numbers(key, {value[0], value[1]});
   };
-  offset("centroid_offset", beam.centroid_offset_m);
-  offset("shear_centre_offset", beam.shear_centre_offset_m);
-  offset("mass_centroid_offset", beam.mass_centroid_offset_m);
+  if (!three_d) {
+    if (beam.centroid_offset_m[0] != 0.0) entry.number("centroid_offset", beam.centroid_offset_m[0]);
+  } else {
+    offset("centroid_offset", beam.centroid_offset_m);
+    offset("shear_centre_offset", beam.shear_centre_offset_m);
+    if (!beam.sectional_mass_given) offset("mass_centroid_offset", beam.mass_centroid_offset_m);
+  }
   // A G derived from a temperature table's E stays derived, so that it follows E(T) on reload.
   const bool derived_from_table = !beam.shear_modulus_given && model.materials[beam.material].youngs_modulus_table_Pa;
   if (shear_modulus_used(beam, model.dimension) && !derived_from_table) {
@@ -365,7 +520,9 @@ void write_entry(const Model& model, int index, ElementEntryWriter& entry) {
     if (beam.height_z_m > 0.0) entry.number("height_z", beam.height_z_m);
     if (beam.gradient_z_given) entry.function("dT_gradient_z", beam.temperature_gradient_z_C);
   }
-  if (beam.mass_per_length_kg_m > 0.0) {
+  if (beam.sectional_mass_given) {
+    // The mass is μ L0 of sectional_mass's μ.
+  } else if (beam.mass_per_length_kg_m > 0.0) {
     entry.number("mass_per_length", beam.mass_per_length_kg_m);
   } else {
     entry.number("mass", beam.mass_kg);

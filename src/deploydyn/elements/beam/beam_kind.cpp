@@ -19,6 +19,27 @@
 namespace deploydyn {
 namespace {
 
+// A 2D section's stiffnesses from the plane block of C about the axis: rows and columns 0, 1, 5
+// (Γ1, Γ2, K3 = ε, γ, κ) of the 6 × 6 (B4a).
+void set_plane_stiffness(const beam::StiffnessMatrix& c, beam2d::Section& section) {
+  section.axial_stiffness_N = c(0, 0);
+  section.shear_stiffness_N = c(1, 1);
+  section.bending_stiffness_Nm2 = c(5, 5);
+  section.axial_shear_N = c(0, 1);
+  section.axial_bending_Nm = c(0, 5);
+  section.shear_bending_Nm = c(1, 5);
+}
+
+// `to`'s stiffnesses plus factor · `share`'s.
+void add_stiffness(const beam2d::Section& share, double factor, beam2d::Section& to) {
+  to.axial_stiffness_N += factor * share.axial_stiffness_N;
+  to.shear_stiffness_N += factor * share.shear_stiffness_N;
+  to.bending_stiffness_Nm2 += factor * share.bending_stiffness_Nm2;
+  to.axial_shear_N += factor * share.axial_shear_N;
+  to.axial_bending_Nm += factor * share.axial_bending_Nm;
+  to.shear_bending_Nm += factor * share.shear_bending_Nm;
+}
+
 // One 2D beam for LocalElementGroup: (x_a, y_a, θ_a, x_b, y_b, θ_b) and its constants.
 struct Beam2dRecord {
   static constexpr int kDofs = beam2d::kDofs;
@@ -49,9 +70,7 @@ struct Beam2dRecord {
   beam2d::Section section_at(const MaterialAt& m) const {
     const double ratio = m.youngs_modulus_Pa / law.reference_youngs_modulus_Pa() - 1.0;
     beam2d::Section at = section;
-    at.axial_stiffness_N += ratio * youngs_share.axial_stiffness_N;
-    at.shear_stiffness_N += ratio * youngs_share.shear_stiffness_N;
-    at.bending_stiffness_Nm2 += ratio * youngs_share.bending_stiffness_Nm2;
+    add_stiffness(youngs_share, ratio, at);
     return at;
   }
   // δf for changes δT of the temperature and δg of the gradient: through E(T) (the shares),
@@ -59,10 +78,8 @@ struct Beam2dRecord {
   Vector force_per_temperature_change(const State& s, double change_C, double gradient_change_C) const {
     const MaterialAt& m = s.material.at;
     const double per_stiffness = m.youngs_modulus_slope_Pa_C * change_C / law.reference_youngs_modulus_Pa();
-    beam2d::Section change = youngs_share;
-    change.axial_stiffness_N *= per_stiffness;
-    change.shear_stiffness_N *= per_stiffness;
-    change.bending_stiffness_Nm2 *= per_stiffness;
+    beam2d::Section change;
+    add_stiffness(youngs_share, per_stiffness, change);
     const beam2d::ThermalStrain thermal_change{
         m.expansion_per_C * change_C,
         inverse_depth_1_m * (m.expansion_slope_per_C2 * change_C * s.gradient_C + m.expansion_per_C * gradient_change_C)};
@@ -175,13 +192,10 @@ std::unique_ptr<ElementGroup> make_beam_group_2d(const Model& model, const DofMa
       beam.dofs[i++] = dofs.index(node, "rz");
     }
     const Eigen::Vector3d chord = model.nodes[e.node_b].position_m - model.nodes[e.node_a].position_m;
-    const beam::SectionalStiffness c = beam::sectional_stiffness(e, material);  // (B4)
-    beam.section = {.axial_stiffness_N = c.axial_N,
-                    .shear_stiffness_N = c.shear_y_N,
-                    .bending_stiffness_Nm2 = c.bending_z_Nm2,
-                    .reference_length_m = e.reference_length_m,
+    beam.section = {.reference_length_m = e.reference_length_m,
                     .initial_angle_rad = std::atan2(chord[1], chord[0]),
                     .damping_time_s = material.damping_time_s};
+    set_plane_stiffness(beam::stiffness_about_axis(e, material), beam.section);  // (B4), (B4a)
     beam.mass_kg = e.mass_kg;
     beam.rotary_inertia_kg_m2 = beam::rotary_inertia_2d_kg_m2(e);  // (B8)
     beam.expansion_per_C = material.expansion_per_C;
@@ -189,10 +203,7 @@ std::unique_ptr<ElementGroup> make_beam_group_2d(const Model& model, const DofMa
     beam.temperature_change_C = &e.temperature_change_C;
     beam.temperature_gradient_C = &e.temperature_gradient_y_C;
     beam.law = MaterialLaw(material, reference_C);
-    const beam::SectionalStiffness share = beam::youngs_share(e, material);
-    beam.youngs_share = {.axial_stiffness_N = share.axial_N,
-                         .shear_stiffness_N = share.shear_y_N,
-                         .bending_stiffness_Nm2 = share.bending_z_Nm2};
+    set_plane_stiffness(beam::youngs_share_about_axis(e, material), beam.youngs_share);
     beam.inverse_depth_1_m = e.height_y_m > 0.0 ? -1.0 / e.height_y_m : 0.0;
   }
   return std::make_unique<LocalElementGroup<Beam2dRecord>>(std::move(records), model.analysis.mass);

@@ -59,6 +59,15 @@ StiffnessMatrix youngs_share_about_axis(const BeamElement& beam, const Material&
   return moved_to_axis(beam, youngs_share(beam, material));
 }
 
+Eigen::Matrix3d rotary_inertia_tensor(const BeamElement& beam) {
+  const Eigen::Vector3d& products = beam.rotary_inertia_products_kg_m;  // J_xy, J_xz, J_yz
+  Eigen::Matrix3d j = beam.rotary_inertia_per_length_kg_m.asDiagonal();
+  j(0, 1) = j(1, 0) = products[0];
+  j(0, 2) = j(2, 0) = products[1];
+  j(1, 2) = j(2, 1) = products[2];
+  return j;
+}
+
 double rotary_inertia_2d_kg_m2(const BeamElement& beam) {
   const double given = beam.rotary_inertia_per_length_kg_m[2];
   return given > 0.0 ? given * beam.reference_length_m : beam.mass_kg * beam.inertia_z_m4 / beam.area_m2;

@@ -40,6 +40,10 @@ StiffnessMatrix stiffness_about_axis(const BeamElement& beam, const Material& ma
 // youngs_share moved to the axis the same way; zero for a given `sectional_stiffness`.
 StiffnessMatrix youngs_share_about_axis(const BeamElement& beam, const Material& material);
 
+// 3D: the given rotary inertia per length about the mass centroid in the local frame (kg·m), the
+// symmetric tensor of `rotary_inertia_per_length`'s diagonal and products (zero when not given).
+Eigen::Matrix3d rotary_inertia_tensor(const BeamElement& beam);
+
 // 2D: the rotary inertia of the whole beam about local z (kg·m²), J_zz L0 or m I_z / A (B8).
 double rotary_inertia_2d_kg_m2(const BeamElement& beam);
 
