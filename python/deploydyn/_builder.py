@@ -115,12 +115,15 @@ class ModelBuilder:
         mass, length, dT as for `bar`. 3D keys (inertia_y, torsion, orientation, height_z,
         dT_gradient_z) and the other keys of a beam go by name, among them its sectional values
         as engineers give them: mass_per_length (kg/m), rotary_inertia_per_length (kg·m; 3D
-        [J_xx, J_yy, J_zz] in the local frame, 2D J_zz), shear_stiffness (N; 3D [GA_y, GA_z],
-        2D GA_y), axial_stiffness (N), bending_stiffness (N·m²; 3D [EI_y, EI_z], 2D EI_z) and
-        torsional_stiffness (N·m², 3D); in 3D also the full sectional_stiffness (36 numbers,
-        the rows of C about the axis) and the local [y, z] (m) of the centroid_offset,
-        shear_centre_offset and mass_centroid_offset. Its nodes carry a rotation: clamp one with
-        support(node, fix=["x", "y", "rotation"])."""
+        [J_xx, J_yy, J_zz] in the local frame or the full tensor [J_xx, J_yy, J_zz, J_xy, J_xz,
+        J_yz], 2D J_zz), shear_stiffness (N; 3D [GA_y, GA_z], 2D GA_y), axial_stiffness (N),
+        bending_stiffness (N·m²; 3D [EI_y, EI_z], 2D EI_z) and torsional_stiffness (N·m², 3D);
+        the full sectional_stiffness (the rows of C about the axis: 36 numbers in 3D, 9 in 2D)
+        and centroid_offset (m; 3D local [y, z], 2D the number y); in 3D also the local [y, z]
+        (m) of the shear_centre_offset and mass_centroid_offset, and the sectional_mass (36
+        numbers, the rows of the rigid section's 6 × 6 mass matrix about the axis, in place of
+        mass_per_length, rotary_inertia_per_length and mass_centroid_offset). Its nodes carry a
+        rotation: clamp one with support(node, fix=["x", "y", "rotation"])."""
         where = "ModelBuilder.beam"
         nodes = [checked.name(where, "node_a", node_a), checked.name(where, "node_b", node_b)]
         return self._element(
