@@ -26,44 +26,32 @@ using LocalJacobian = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0,
                                     kMaxConstraintEquations, kMaxConstraintDofs>;
 
 
-// A group's switched constraint as the solvers see every constraint: evaluated in the modes of
-// the history in force (Assembler::use_history), its group's slice, which it gets as data.
-class SwitchedConstraintInForce final : public Constraint {
+// The rows of a group's switched constraint (a hinge lock) among the constraints: its size and
+// pattern only. The assembler evaluates the constraint itself, in the modes it is given
+// (Assembler::evaluate_constraint), so that nothing here can read modes it was not given.
+class SwitchedConstraintRows final : public Constraint {
  public:
-  SwitchedConstraintInForce(std::unique_ptr<SwitchedConstraint> constraint, const Assembler& assembler,
-                            std::size_t group)
-      : Constraint(constraint->n_equations(), {constraint->dofs().begin(), constraint->dofs().end()}),
-        constraint_(std::move(constraint)), assembler_(assembler), group_(group) {}
+  explicit SwitchedConstraintRows(const SwitchedConstraint& constraint)
+      : Constraint(constraint.n_equations(), {constraint.dofs().begin(), constraint.dofs().end()}),
+        nonlinear_(constraint.nonlinear()) {}
 
-  void evaluate(const Eigen::VectorXd& q, double t, Eigen::Ref<Eigen::VectorXd> phi,
-                Eigen::Ref<Eigen::MatrixXd> jacobian) const override {
-    constraint_->evaluate(at(q, t), phi, jacobian);
+  void evaluate(const Eigen::VectorXd&, double, Eigen::Ref<Eigen::VectorXd>, Eigen::Ref<Eigen::MatrixXd>) const override {
+    unmoded();
   }
-  bool nonlinear() const override { return constraint_->nonlinear(); }
-  void add_hessian_term(const Eigen::VectorXd& q, double t, Eigen::Ref<const Eigen::VectorXd> lambda,
-                        Eigen::Ref<Eigen::MatrixXd> hessian) const override {
-    constraint_->add_hessian_term(at(q, t), lambda, hessian);
-  }
-  void time_derivatives(const Eigen::VectorXd& q, const Eigen::VectorXd& v, double t,
-                        Eigen::Ref<Eigen::VectorXd> phi_t, Eigen::Ref<Eigen::VectorXd> bias) const override {
-    constraint_->time_derivatives(at(q, t, &v), phi_t, bias);
+  bool nonlinear() const override { return nonlinear_; }
+  void time_derivatives(const Eigen::VectorXd&, const Eigen::VectorXd&, double, Eigen::Ref<Eigen::VectorXd>,
+                        Eigen::Ref<Eigen::VectorXd>) const override {
+    unmoded();
   }
   bool switchable() const override { return true; }
-  bool active() const override { return constraint_->active(assembler_.history_in_force(group_)); }
-  std::string describe(int row) const override {
-    return constraint_->describe(row, assembler_.history_in_force(group_));
-  }
+  std::string describe(int) const override { unmoded(); }
 
  private:
-  EvaluationPoint at(const Eigen::VectorXd& q, double t, const Eigen::VectorXd* rates = nullptr) const {
-    return {q, t, 1.0, rates, assembler_.history_in_force(group_)};
+  [[noreturn]] static void unmoded() {
+    throw std::logic_error("a switched constraint is evaluated by the assembler, in the modes it is given");
   }
-
-  std::unique_ptr<SwitchedConstraint> constraint_;
-  const Assembler& assembler_;
-  std::size_t group_;
+  bool nonlinear_;
 };
-
 
 }  // namespace
 
@@ -88,21 +76,22 @@ Assembler::Assembler(const Model& model) : model_(model), dofs_(model), frame_mo
         first_row_.push_back(n_equations_);
         n_equations_ += c->n_equations();
         n_switched_equations_ += c->n_equations();
-        constraints_.push_back(std::make_unique<SwitchedConstraintInForce>(std::move(c), *this, g));
+        if (switched_.empty()) first_switched_ = constraints_.size();
+        constraints_.push_back(std::make_unique<SwitchedConstraintRows>(*c));
+        switched_.push_back({std::move(c), g});
       }
     }
     n_switched_rows_.push_back(n_equations_ - switched_rows_.back());
   }
+  if (switched_.empty()) first_switched_ = constraints_.size();
   for (int index : driver_constraint_) driver_rows_.push_back(first_row_[index]);
   for (const SwitchingGroup* group : switching_) {
     history_offset_.push_back(n_history_);
     history_size_.push_back(group != nullptr ? group->n_history() : 0);
     n_history_ += history_size_.back();
   }
-  // In force until a run gives its own (use_history): zeros, every hinge free and not sliding
-  // (hinge_history.hpp), as paths and modes see them. Full size: history_in_force() slices it
-  // through the unchecked overload (history_in_force_ is mutable, so not const there).
-  history_in_force_ = Eigen::VectorXd::Zero(n_history_);
+  // Zeros: every hinge free and not sliding (hinge_history.hpp), as paths and checks see them.
+  free_history_ = Eigen::VectorXd::Zero(n_history_);
 
   for (const auto& group : groups_) n_matrix_entries_ += group->n_matrix_entries();
   for (const Node& node : model.nodes) n_matrix_entries_ += node.point_mass_kg != 0.0 ? model.dimension : 0;
@@ -140,12 +129,35 @@ Eigen::VectorXd Assembler::initial_coordinates() const {
   return q;
 }
 
-int Assembler::n_equations_in_force() const {
+int Assembler::n_equations_in_force(const History& history) const {
   int n = n_equations_;
-  for (const auto& c : constraints_) {
-    if (c->switchable() && !c->active()) n -= c->n_equations();
+  for (std::size_t c = first_switched_; c < constraints_.size(); ++c) {
+    if (!constraint_active(history, c)) n -= constraints_[c]->n_equations();
   }
   return n;
+}
+
+void Assembler::evaluate_constraint(const History& history, std::size_t c, const Eigen::VectorXd& q, double t,
+                                    Eigen::Ref<Eigen::VectorXd> phi, Eigen::Ref<Eigen::MatrixXd> jacobian) const {
+  if (const SwitchedEntry* s = switched_entry(c)) {
+    s->constraint->evaluate(point(history, s->group, q, t), phi, jacobian);
+  } else {
+    constraints_[c]->evaluate(q, t, phi, jacobian);
+  }
+}
+
+void Assembler::add_hessian_term(const History& history, std::size_t c, const Eigen::VectorXd& q, double t,
+                                 Eigen::Ref<const Eigen::VectorXd> lambda, Eigen::Ref<Eigen::MatrixXd> hessian) const {
+  if (const SwitchedEntry* s = switched_entry(c)) {
+    s->constraint->add_hessian_term(point(history, s->group, q, t), lambda, hessian);
+  } else {
+    constraints_[c]->add_hessian_term(q, t, lambda, hessian);
+  }
+}
+
+bool Assembler::constraint_active(const History& history, std::size_t c) const {
+  const SwitchedEntry* s = switched_entry(c);
+  return s == nullptr || s->constraint->active(history_slice(history, s->group));
 }
 
 int Assembler::n_rigid_body_conditions() const {
@@ -154,26 +166,26 @@ int Assembler::n_rigid_body_conditions() const {
   return n;
 }
 
-void Assembler::internal_force(const Eigen::VectorXd& q, double t, double thermal_factor,
+void Assembler::internal_force(const History& history, const Eigen::VectorXd& q, double t, double thermal_factor,
                                Eigen::VectorXd& f) const {
   f.setZero(n_dofs());
-  for (std::size_t g = 0; g < groups_.size(); ++g) groups_[g]->add_internal_force(point(g, q, t, thermal_factor), f);
+  for (std::size_t g = 0; g < groups_.size(); ++g) groups_[g]->add_internal_force(point(history, g, q, t, thermal_factor), f);
 }
 
-void Assembler::thermal_force_derivative(const Eigen::VectorXd& q, double t, double thermal_factor,
+void Assembler::thermal_force_derivative(const History& history, const Eigen::VectorXd& q, double t, double thermal_factor,
                                          Eigen::VectorXd& f) const {
   f.setZero(n_dofs());
   for (std::size_t g = 0; g < groups_.size(); ++g) {
-    groups_[g]->add_thermal_force_derivative(point(g, q, t, thermal_factor), f);
+    groups_[g]->add_thermal_force_derivative(point(history, g, q, t, thermal_factor), f);
   }
 }
 
-void Assembler::static_residual_time_derivative(const Eigen::VectorXd& q, double t,
+void Assembler::static_residual_time_derivative(const History& history, const Eigen::VectorXd& q, double t,
                                                 const Eigen::VectorXd& lambda,
                                                 Eigen::VectorXd& dr,
                                                 Eigen::VectorXd& dphi) const {
   dr.setZero(n_dofs());
-  for (std::size_t g = 0; g < groups_.size(); ++g) groups_[g]->add_thermal_force_rate(point(g, q, t), dr);
+  for (std::size_t g = 0; g < groups_.size(); ++g) groups_[g]->add_thermal_force_rate(point(history, g, q, t), dr);
   // Gravity does not change with t; the nodal loads change with their factors.
   add_nodal_loads([&](const NodalLoad& load) { return -load.factor.derivative(t); }, dr);
   frame_moments_.add_force_rate(q, t, -1.0, dr);
@@ -186,7 +198,7 @@ void Assembler::static_residual_time_derivative(const Eigen::VectorXd& q, double
     for (std::size_t i = 0; i < dofs.size(); ++i) dr[dofs[i]] += local[static_cast<Eigen::Index>(i)];
   }
   Eigen::VectorXd bias;  // of Φ̈; not wanted: a zero velocity keeps it cheap
-  constraint_rates(q, Eigen::VectorXd::Zero(n_dofs()), t, dphi, bias);
+  constraint_rates(history, q, Eigen::VectorXd::Zero(n_dofs()), t, dphi, bias);
 }
 
 void Assembler::external_force(double t, Eigen::VectorXd& f) const {
@@ -230,10 +242,10 @@ void Assembler::mass_times(const Eigen::VectorXd& a, Eigen::VectorXd& out) const
   }
 }
 
-void Assembler::rate_force(const Eigen::VectorXd& q, const Eigen::VectorXd& v, double t,
+void Assembler::rate_force(const History& history, const Eigen::VectorXd& q, const Eigen::VectorXd& v, double t,
                            Eigen::VectorXd& f) const {
   f.setZero(n_dofs());
-  for (std::size_t g = 0; g < groups_.size(); ++g) groups_[g]->add_rate_force(point(g, q, t, 1.0, &v), f);
+  for (std::size_t g = 0; g < groups_.size(); ++g) groups_[g]->add_rate_force(point(history, g, q, t, 1.0, &v), f);
   if (rayleigh_) {
     Eigen::VectorXd mass_times_v;
     if (rayleigh_->mass_factor_1_s() != 0.0) mass_times(v, mass_times_v);
@@ -245,18 +257,17 @@ bool Assembler::has_rate_forces() const {
   return rayleigh_ || std::any_of(groups_.begin(), groups_.end(), [](const auto& g) { return g->has_rate_forces(); });
 }
 
-void Assembler::switched_constraint_force(const Eigen::VectorXd& q, double t,
+void Assembler::switched_constraint_force(const History& history, const Eigen::VectorXd& q, double t,
                                           const Eigen::VectorXd& lambda, Eigen::VectorXd& f) const {
   f.setZero(n_dofs());
   LocalVector phi;
   LocalJacobian jacobian;
-  for (std::size_t c = 0; c < constraints_.size(); ++c) {
+  for (std::size_t c = first_switched_; c < constraints_.size(); ++c) {
     const Constraint& con = *constraints_[c];
-    if (!con.switchable()) continue;
     const std::span<const int> dofs = con.dofs();
     phi.resize(con.n_equations());
     jacobian.resize(con.n_equations(), static_cast<Eigen::Index>(dofs.size()));
-    con.evaluate(q, t, phi, jacobian);
+    evaluate_constraint(history, c, q, t, phi, jacobian);
     const auto multipliers = lambda.segment(first_row_[c], con.n_equations());
     for (std::size_t i = 0; i < dofs.size(); ++i) f[dofs[i]] += jacobian.col(i).dot(multipliers);
   }
@@ -328,22 +339,7 @@ int Assembler::n_latched(const Eigen::VectorXd& history) const {
   return n;
 }
 
-void Assembler::constraints(const Eigen::VectorXd& q, double t, Eigen::VectorXd& phi) const {
-  evaluate_constraints(q, t, nullptr, &phi, nullptr);
-}
-
-void Assembler::constraint_force(const Eigen::VectorXd& q, double t, const Eigen::VectorXd& lambda,
-                                 Eigen::VectorXd& f) const {
-  evaluate_constraints(q, t, &lambda, nullptr, &f);
-}
-
-void Assembler::constraints_and_force(const Eigen::VectorXd& q, double t,
-                                      const Eigen::VectorXd& lambda, Eigen::VectorXd& phi,
-                                      Eigen::VectorXd& f) const {
-  evaluate_constraints(q, t, &lambda, &phi, &f);
-}
-
-void Assembler::evaluate_constraints(const Eigen::VectorXd& q, double t,
+void Assembler::evaluate_constraints(const History& history, const Eigen::VectorXd& q, double t,
                                      const Eigen::VectorXd* lambda, Eigen::VectorXd* phi,
                                      Eigen::VectorXd* f) const {
   if (phi != nullptr) phi->resize(n_equations());
@@ -355,7 +351,7 @@ void Assembler::evaluate_constraints(const Eigen::VectorXd& q, double t,
     const std::span<const int> dofs = con.dofs();
     local_phi.resize(con.n_equations());
     jacobian.resize(con.n_equations(), static_cast<Eigen::Index>(dofs.size()));
-    con.evaluate(q, t, local_phi, jacobian);
+    evaluate_constraint(history, c, q, t, local_phi, jacobian);
     if (phi != nullptr) phi->segment(first_row_[c], con.n_equations()) = local_phi;
     if (f != nullptr) {
       const auto multipliers = lambda->segment(first_row_[c], con.n_equations());
@@ -364,18 +360,23 @@ void Assembler::evaluate_constraints(const Eigen::VectorXd& q, double t,
   }
 }
 
-void Assembler::constraint_rates(const Eigen::VectorXd& q, const Eigen::VectorXd& v, double t,
+void Assembler::constraint_rates(const History& history, const Eigen::VectorXd& q, const Eigen::VectorXd& v, double t,
                                  Eigen::VectorXd& phi_t, Eigen::VectorXd& bias) const {
   phi_t.resize(n_equations());
   bias.resize(n_equations());
   for (std::size_t c = 0; c < constraints_.size(); ++c) {
     const Constraint& con = *constraints_[c];
-    con.time_derivatives(q, v, t, phi_t.segment(first_row_[c], con.n_equations()),
-                         bias.segment(first_row_[c], con.n_equations()));
+    auto phi_t_rows = phi_t.segment(first_row_[c], con.n_equations());
+    auto bias_rows = bias.segment(first_row_[c], con.n_equations());
+    if (const SwitchedEntry* s = switched_entry(c)) {
+      s->constraint->time_derivatives(point(history, s->group, q, t, 1.0, &v), phi_t_rows, bias_rows);
+    } else {
+      con.time_derivatives(q, v, t, phi_t_rows, bias_rows);
+    }
   }
 }
 
-void Assembler::constraint_jacobian_times(const Eigen::VectorXd& q, double t, const Eigen::VectorXd& v,
+void Assembler::constraint_jacobian_times(const History& history, const Eigen::VectorXd& q, double t, const Eigen::VectorXd& v,
                                           Eigen::VectorXd& out) const {
   out.resize(n_equations());
   LocalVector phi;
@@ -385,7 +386,7 @@ void Assembler::constraint_jacobian_times(const Eigen::VectorXd& q, double t, co
     const std::span<const int> dofs = con.dofs();
     phi.resize(con.n_equations());
     jacobian.resize(con.n_equations(), static_cast<Eigen::Index>(dofs.size()));
-    con.evaluate(q, t, phi, jacobian);
+    evaluate_constraint(history, c, q, t, phi, jacobian);
     for (int k = 0; k < con.n_equations(); ++k) {
       double sum = 0.0;
       for (std::size_t i = 0; i < dofs.size(); ++i) sum += jacobian(k, static_cast<Eigen::Index>(i)) * v[dofs[i]];
@@ -399,7 +400,7 @@ void Assembler::constraint_jacobian_times(const Eigen::VectorXd& q, double t, co
 // Fixed order: element groups (written by the groups themselves), point masses, then per
 // constraint s·B, s·Bᵀ and (if nonlinear) H(λ).
 template <class Emit>
-void Assembler::for_each_matrix_block(const Eigen::VectorXd& q, double t,
+void Assembler::for_each_matrix_block(const History& history, const Eigen::VectorXd& q, double t,
                                       const Eigen::VectorXd& lambda, const MatrixWeights& w,
                                       Emit&& emit) const {
   for (int node = 0; node < model_.n_nodes(); ++node) {
@@ -420,7 +421,7 @@ void Assembler::for_each_matrix_block(const Eigen::VectorXd& q, double t,
     const auto n_local = static_cast<Eigen::Index>(con.dofs().size());
     phi.resize(n_eq);
     jacobian.resize(n_eq, n_local);
-    con.evaluate(q, t, phi, jacobian);
+    evaluate_constraint(history, c, q, t, phi, jacobian);
     for (int k = 0; k < n_eq; ++k) rows[k] = n_dofs() + first_row_[c] + k;
     const std::span<const int> row_span(rows.data(), n_eq);
     jacobian *= w.constraint_scale;
@@ -437,17 +438,17 @@ void Assembler::for_each_matrix_block(const Eigen::VectorXd& q, double t,
     }
     if (con.nonlinear()) {
       Eigen::MatrixXd hessian = Eigen::MatrixXd::Zero(n_local, n_local);
-      con.add_hessian_term(q, t, lambda.segment(first_row_[c], n_eq), hessian);
+      add_hessian_term(history, c, q, t, lambda.segment(first_row_[c], n_eq), hessian);
       emit(con.dofs(), con.dofs(), w.stiffness * hessian);
     }
     if (con.switchable()) {  // switched off: its rows read s Δλ̂ = 0 (constraint.hpp)
-      const Eigen::Matrix<double, 1, 1> diagonal(con.active() ? 0.0 : w.constraint_scale);
+      const Eigen::Matrix<double, 1, 1> diagonal(constraint_active(history, c) ? 0.0 : w.constraint_scale);
       for (int k = 0; k < n_eq; ++k) emit(row_span.subspan(k, 1), row_span.subspan(k, 1), diagonal);
     }
   }
 }
 
-void Assembler::iteration_matrix(const Eigen::VectorXd& q, double t, double thermal_factor,
+void Assembler::iteration_matrix(const History& history, const Eigen::VectorXd& q, double t, double thermal_factor,
                                  const Eigen::VectorXd& lambda, const MatrixWeights& w,
                                  LinearSystem& system) const {
   if (static_cast<int>(system.slots().size()) != n_matrix_entries_ || system.size() != n_unknowns()) {
@@ -460,11 +461,11 @@ void Assembler::iteration_matrix(const Eigen::VectorXd& q, double t, double ther
   MatrixWeights weights = w;
   if (rayleigh_ && w.rates != nullptr) weights.mass += w.damping * rayleigh_->mass_factor_1_s();
   for (std::size_t g = 0; g < groups_.size(); ++g) {
-    groups_[g]->add_iteration_matrix(point(g, q, t, thermal_factor, weights.rates),
+    groups_[g]->add_iteration_matrix(point(history, g, q, t, thermal_factor, weights.rates),
                                      {weights.stiffness, weights.mass, weights.damping}, values, slot);
   }
   if (rayleigh_ && w.rates != nullptr) rayleigh_->add_stiffness_block(groups_, q, t, w.damping, values, system.slots());
-  for_each_matrix_block(q, t, lambda, weights,
+  for_each_matrix_block(history, q, t, lambda, weights,
                         [&](std::span<const int> rows, std::span<const int> cols, const auto& block) {
                           for (std::size_t j = 0; j < cols.size(); ++j) {
                             for (std::size_t i = 0; i < rows.size(); ++i) values[*slot++] += block(i, j);
@@ -478,7 +479,7 @@ std::vector<MatrixEntry> Assembler::matrix_entries() const {
   const Eigen::VectorXd q = initial_coordinates();
   const Eigen::VectorXd lambda = Eigen::VectorXd::Zero(n_equations());
   for (const auto& group : groups_) group->append_matrix_entries(entries);
-  for_each_matrix_block(q, 0.0, lambda, {1.0, 1.0, 1.0, 0.0, nullptr},
+  for_each_matrix_block(free_history_, q, 0.0, lambda, {1.0, 1.0, 1.0, 0.0, nullptr},
                         [&](std::span<const int> rows, std::span<const int> cols, const auto&) {
                           for (const int col : cols) {
                             for (const int row : rows) entries.push_back({row, col});
@@ -487,10 +488,10 @@ std::vector<MatrixEntry> Assembler::matrix_entries() const {
   return entries;
 }
 
-double Assembler::stiffness_scale(const Eigen::VectorXd& q, double t) const {
+double Assembler::stiffness_scale(const History& history, const Eigen::VectorXd& q, double t) const {
   double scale = 0.0;
   for (std::size_t g = 0; g < groups_.size(); ++g) {
-    scale = std::max(scale, groups_[g]->largest_stiffness_diagonal(point(g, q, t)));
+    scale = std::max(scale, groups_[g]->largest_stiffness_diagonal(point(history, g, q, t)));
   }
   return scale > 0.0 ? scale : 1.0;
 }
@@ -537,9 +538,9 @@ double Assembler::largest_relative_change(const Eigen::VectorXd& q,
   return largest;
 }
 
-double Assembler::strain_energy(const Eigen::VectorXd& q, double t) const {
+double Assembler::strain_energy(const History& history, const Eigen::VectorXd& q, double t) const {
   double energy = 0.0;
-  for (std::size_t g = 0; g < groups_.size(); ++g) energy += groups_[g]->strain_energy(point(g, q, t));
+  for (std::size_t g = 0; g < groups_.size(); ++g) energy += groups_[g]->strain_energy(point(history, g, q, t));
   return energy;
 }
 
@@ -563,9 +564,12 @@ std::vector<double> Assembler::support_reactions(const Eigen::VectorXd& lambda) 
   return reactions;
 }
 
-std::string Assembler::describe_equation(int row) const {
+std::string Assembler::describe_equation(const History& history, int row) const {
   for (std::size_t c = constraints_.size(); c-- > 0;) {
-    if (row >= first_row_[c]) return constraints_[c]->describe(row - first_row_[c]);
+    if (row < first_row_[c]) continue;
+    const SwitchedEntry* s = switched_entry(c);
+    return s != nullptr ? s->constraint->describe(row - first_row_[c], history_slice(history, s->group))
+                        : constraints_[c]->describe(row - first_row_[c]);
   }
   return "constraint row " + std::to_string(row);
 }

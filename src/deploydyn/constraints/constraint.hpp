@@ -63,11 +63,11 @@ class Constraint {
     (void)q, (void)t, (void)lambda, (void)force;
   }
 
-  // A constraint switched on and off between steps (a hinge's latch, end stop, sticking
-  // friction). While off, it returns Φ = 0 and B = 0 and the assembler puts s on its rows'
+  // The rows of a constraint switched on and off between steps (a hinge's latch, end stop,
+  // sticking friction: constraints/switched_constraint.hpp), which the assembler evaluates in
+  // the modes it is given. While off, Φ = 0 and B = 0 and the assembler puts s on its rows'
   // diagonal, so that they read Δλ = 0: the system keeps its size and pattern.
   virtual bool switchable() const { return false; }
-  virtual bool active() const { return true; }
 
   // Plain words for equation `row` (local), used when a solve fails: "support A, x".
   virtual std::string describe(int row) const = 0;

@@ -2,9 +2,10 @@
 // A constraint that an element group switches on and off between steps (a hinge's latch, end
 // stop or sticking friction: SwitchingGroup::make_switched_constraints). Like Constraint, but
 // every call gets the group's evaluation point, whose history says whether it is on and where
-// it holds: it keeps no reference to its group's modes. The assembler presents it to the
-// solvers as a Constraint with switchable() true (assembly/assembler.cpp): while off, Φ = 0,
-// B = 0 and its rows read s Δλ = 0, so that the system keeps its size and pattern.
+// it holds: it keeps no reference to its group's modes. The assembler evaluates it in the
+// modes of each call (Assembler::at_modes; its rows among the constraints are a Constraint with
+// switchable() true, assembly/assembler.cpp): while off, Φ = 0, B = 0 and its rows read
+// s Δλ = 0, so that the system keeps its size and pattern.
 
 #include <Eigen/Core>
 #include <span>

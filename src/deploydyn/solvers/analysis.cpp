@@ -40,14 +40,15 @@ std::string settled_position_text(const Assembler& assembler, int node, const Ei
 // as rigid motions at q (assembly/free_motion.hpp), each independent one apart, and the
 // constraints that are redundant or in conflict (a large entry in some column). The coordinates
 // themselves are behind `check --all`.
-std::string describe_null_space(const Assembler& assembler, const Eigen::VectorXd& q,
+std::string describe_null_space(const AssemblerAtModes& at, const Eigen::VectorXd& q,
                                 const Eigen::MatrixXd& null_vectors) {
+  const Assembler& assembler = at.assembler();
   constexpr double kInvolved = 0.1;  // of the column's largest entry
   const Eigen::RowVectorXd largest = null_vectors.cwiseAbs().colwise().maxCoeff();
   std::vector<std::string> constraints;
   for (int i = assembler.n_dofs(); i < null_vectors.rows(); ++i) {
     if ((null_vectors.row(i).cwiseAbs().array() < kInvolved * largest.array()).all()) continue;
-    constraints.push_back(assembler.describe_equation(i - assembler.n_dofs()));
+    constraints.push_back(at.describe_equation(i - assembler.n_dofs()));
   }
   const Model& model = assembler.model();
   std::string text = describe(model, free_motions(model, assembler.dof_map(), q, null_vectors));
@@ -58,8 +59,10 @@ std::string describe_null_space(const Assembler& assembler, const Eigen::VectorX
   return text;
 }
 
-FailureReport describe_failure(const Assembler& assembler, std::string phase, double t, int step,
+// In the modes of `at`, those the failed solve ran with (a hinge lock's row reads its mode).
+FailureReport describe_failure(const AssemblerAtModes& at, std::string phase, double t, int step,
                                const Eigen::VectorXd& q, const NewtonResult& newton) {
+  const Assembler& assembler = at.assembler();
   FailureReport f;
   f.phase = std::move(phase);
   f.time_s = t;
@@ -67,10 +70,10 @@ FailureReport describe_failure(const Assembler& assembler, std::string phase, do
   f.iteration = newton.iterations;
   f.force_residual_N = newton.force_residual_N;
   f.constraint_residual = newton.constraint_residual;
-  if (newton.worst_equation >= 0) f.worst_constraint = assembler.describe_equation(newton.worst_equation);
+  if (newton.worst_equation >= 0) f.worst_constraint = at.describe_equation(newton.worst_equation);
   if (newton.worst_dof >= 0) f.worst_dof = assembler.dof_map().label(newton.worst_dof);
   f.reason = newton.failure;
-  if (newton.null_vectors.size() > 0) f.reason += "; " + describe_null_space(assembler, q, newton.null_vectors);
+  if (newton.null_vectors.size() > 0) f.reason += "; " + describe_null_space(at, q, newton.null_vectors);
   return f;
 }
 
@@ -100,7 +103,7 @@ class WorkCounter {
  public:
   explicit WorkCounter(const Assembler& assembler)
       : assembler_(assembler), dissipative_(assembler.has_rate_forces() || assembler.n_history() > 0) {}
-  void start(const MotionState& s) { forces(s, applied_, lost_); }
+  void start(const MotionState& s) { forces(s, s.history, applied_, lost_); }
   // Where a restarted run takes over the tally (solvers/restart_state.hpp).
   void resume(const RestartState& r) {
     tally_ = r.work;
@@ -110,13 +113,14 @@ class WorkCounter {
     // kept no rate forces, so they are taken at the state.
     if (dissipative_ && lost_.size() != applied_.size()) {
       Eigen::VectorXd applied;
-      forces(r.motion, applied, lost_);
+      forces(r.motion, r.motion.history, applied, lost_);
     }
   }
   const Eigen::VectorXd& applied_force() const { return applied_; }
   const Eigen::VectorXd& lost_force() const { return lost_; }
-  void advance(const Eigen::VectorXd& q_before, const MotionState& s) {
-    forces(s, applied_next_, lost_next_);
+  // `modes`: those the step ran with (ModeSwitchingStep::modes), not yet s's after its end.
+  void advance(const Eigen::VectorXd& q_before, const MotionState& s, const Eigen::VectorXd& modes) {
+    forces(s, modes, applied_next_, lost_next_);
     tally_.external_J += 0.5 * (applied_ + applied_next_).dot(s.q - q_before);
     if (dissipative_) tally_.dissipated_J += 0.5 * (lost_ + lost_next_).dot(s.q - q_before);
     applied_.swap(applied_next_);
@@ -125,28 +129,29 @@ class WorkCounter {
   // A step in which a lock engaged (ModeSwitchingStep::projected): an inelastic impact, whose
   // loss no quadrature of the lock's near-impulsive force gets right. It is what the step's
   // mechanical energy fell short of the external work, the definition of the impact's loss.
-  void advance_through_impact(const MotionState& before, const MotionState& s) {
+  void advance_through_impact(const MotionState& before, const MotionState& s, const Eigen::VectorXd& modes) {
     const WorkTally start = tally_;
-    advance(before.q, s);
+    advance(before.q, s, modes);
     tally_.dissipated_J = start.dissipated_J + (tally_.external_J - start.external_J) -
-                          (mechanical_energy(s) - mechanical_energy(before));
+                          (mechanical_energy(s, modes) - mechanical_energy(before, modes));
   }
   const WorkTally& tally() const { return tally_; }
 
  private:
-  void forces(const MotionState& s, Eigen::VectorXd& applied, Eigen::VectorXd& lost) {
+  void forces(const MotionState& s, const Eigen::VectorXd& modes, Eigen::VectorXd& applied, Eigen::VectorXd& lost) {
+    const AssemblerAtModes at = assembler_.at_modes(modes);
     assembler_.applied_loads(s.q, s.time_s, applied);
-    assembler_.constraint_force(s.q, s.time_s, s.lambda, reaction_);
+    at.constraint_force(s.q, s.time_s, s.lambda, reaction_);
     applied -= reaction_;
     if (!dissipative_) return;
-    assembler_.switched_constraint_force(s.q, s.time_s, s.lambda, switched_);
+    at.switched_constraint_force(s.q, s.time_s, s.lambda, switched_);
     applied += switched_;
-    assembler_.rate_force(s.q, s.v, s.time_s, lost);
+    at.rate_force(s.q, s.v, s.time_s, lost);
     lost += switched_;
   }
-  double mechanical_energy(const MotionState& s) {
+  double mechanical_energy(const MotionState& s, const Eigen::VectorXd& modes) {
     assembler_.mass_times(s.v, reaction_);
-    return 0.5 * s.v.dot(reaction_) + assembler_.strain_energy(s.q, s.time_s);
+    return 0.5 * s.v.dot(reaction_) + assembler_.at_modes(modes).strain_energy(s.q, s.time_s);
   }
 
   const Assembler& assembler_;
@@ -173,7 +178,7 @@ class ModeSwitchingStep {
   // From `state` by h into `next`; Newton iterations summed over the attempts.
   NewtonResult step(double h, const MotionState& state, MotionState& next, int& switches) {
     next = state;  // copies into next's storage: no allocation after the first step
-    assembler_.use_history(next.history);
+    modes_ = next.history;
     NewtonResult result = integrator_.step(h, system_, next);
     projected_ = false;
     bool switched = false;
@@ -189,13 +194,13 @@ class ModeSwitchingStep {
       used_ = next.history;
       next = state;
       next.history = used_;
-      assembler_.use_history(next.history);
+      modes_ = next.history;
       const int before = result.iterations;
       result = integrator_.step(h, system_, next);
       result.iterations += before;
     }
     if (result.converged && switched && dynamic_) {
-      assembler_.use_history(next.history);
+      modes_ = next.history;
       // λ stays the step's: the work of the lock's force over the step is in the energy
       // balance (WorkCounter), the projection's loss beside it.
       lambda_ = next.lambda;
@@ -212,6 +217,9 @@ class ModeSwitchingStep {
   }
   // Whether the last step ended with projected rates (its error estimate then means nothing).
   bool projected() const { return projected_; }
+  // The modes the last step's forces were taken in (its history before its end, or after a
+  // switch's projection): those of its energy balance.
+  const Eigen::VectorXd& modes() const { return modes_; }
 
   void drop_events() {
     events_.clear();
@@ -234,6 +242,7 @@ class ModeSwitchingStep {
   bool dynamic_;
   bool projected_ = false;
   Eigen::VectorXd used_;    // the modes an attempt ran with
+  Eigen::VectorXd modes_;   // modes()
   Eigen::VectorXd lambda_;  // the step's multipliers, kept through the projection
   std::vector<ElementEvent> events_;
   std::vector<int> groups_;  // [event] → its group
@@ -272,7 +281,7 @@ ContinuedStart continue_thermal_start(const Assembler& assembler, const Analysis
   options.newton = analysis.newton;
   options.stop = control.stop;
   options.poll = control.poll;
-  const ContinuationResult path = trace_path(assembler, options, system, state.q, state.lambda);
+  const ContinuationResult path = trace_path(assembler.at_modes(state.history), options, system, state.q, state.lambda);
   ContinuedStart out;
   out.iterations = path.total_iterations;
   out.stopped = path.end == ContinuationEnd::stopped;
@@ -348,7 +357,6 @@ RunReport run_analysis(const Assembler& assembler, RecordSink& sink, const RunCo
   if (start != nullptr) {
     // A state another run kept: no initial equilibrium, no initial rates.
     state = start->motion;
-    assembler.use_history(state.history);
     if (auto* klu = dynamic_cast<KluLinearSystem*>(&system)) klu->restore_pivot_memory(start->pivot_memory);
   } else {
   state.time_s = 0.0;
@@ -358,7 +366,6 @@ RunReport run_analysis(const Assembler& assembler, RecordSink& sink, const RunCo
   state.pseudo_a = state.a;
   state.lambda = Eigen::VectorXd::Zero(assembler.n_equations());
   state.history = assembler.initial_history();
-  assembler.use_history(state.history);
 
   const bool free_mechanism = dynamic && assembler.rigid_mobility() > 0;
   LoadPath initial_path = LoadPath::thermal_ramp(0.0);
@@ -366,10 +373,10 @@ RunReport run_analysis(const Assembler& assembler, RecordSink& sink, const RunCo
     initial_path.external_loads = false;
     // Small against the stiffness (a millionth), large enough to make the matrix regular.
     initial_path.mass_regularization =
-        kFreeMotionRegularization * assembler.stiffness_scale(state.q, 0.0) / assembler.mass_scale();
+        kFreeMotionRegularization * assembler.at_modes(state.history).stiffness_scale(state.q, 0.0) / assembler.mass_scale();
   }
   if (!free_mechanism) {
-    const StaticResult loaded = apply_initial_loads(assembler, options, options.load_steps, system, state, control);
+    const StaticResult loaded = apply_initial_loads(assembler.at_modes(state.history), options, options.load_steps, system, state, control);
     report.initial_load_steps = loaded.load_steps;
     report.initial_iterations = loaded.total_iterations;
     if (loaded.stopped) {
@@ -378,13 +385,13 @@ RunReport run_analysis(const Assembler& assembler, RecordSink& sink, const RunCo
       return finish(report);
     }
     if (loaded.path_factor < 1.0) {
-      FailureReport f = describe_failure(assembler, "initial equilibrium", 0.0, 0, state.q, loaded.newton);
+      FailureReport f = describe_failure(assembler.at_modes(state.history), "initial equilibrium", 0.0, 0, state.q, loaded.newton);
       f.reason += fmt::format(" (loads reached {:.1f}%, before the thermal strain)", 100.0 * loaded.path_factor);
       return fail(f);
     }
   }
   const StaticResult initial =
-      solve_static(assembler, options, initial_path, options.load_steps, system, state, control);
+      solve_static(assembler.at_modes(state.history), options, initial_path, options.load_steps, system, state, control);
   report.initial_load_steps += initial.load_steps;
   report.initial_iterations += initial.total_iterations;
   if (initial.stopped) {
@@ -406,24 +413,24 @@ RunReport run_analysis(const Assembler& assembler, RecordSink& sink, const RunCo
       return finish(report);
     }
     if (!continued.reached) {
-      FailureReport f = describe_failure(assembler, "initial equilibrium", 0.0, 0, state.q, initial.newton);
+      FailureReport f = describe_failure(assembler.at_modes(state.history), "initial equilibrium", 0.0, 0, state.q, initial.newton);
       f.reason = continued.met_event ? continued.reason : f.reason + "; " + continued.reason;
       return fail(f);
     }
   } else if (initial.path_factor < 1.0) {
-    FailureReport f = describe_failure(assembler, "initial equilibrium", 0.0, 0, state.q, initial.newton);
+    FailureReport f = describe_failure(assembler.at_modes(state.history), "initial equilibrium", 0.0, 0, state.q, initial.newton);
     f.reason += fmt::format(" (thermal load reached {:.1f}%)", 100.0 * initial.path_factor);
     return fail(f);
   }
   // A free mechanism may move in a dynamic run; otherwise every motion must meet stiffness.
   if (!free_mechanism) {
-    const FactorizationStatus stiffness = check_static_stiffness(assembler, system, state);
+    const FactorizationStatus stiffness = check_static_stiffness(assembler.at_modes(state.history), system, state);
     if (!stiffness.ok) {
       FailureReport f;
       f.phase = "initial equilibrium";
       f.reason = "no static stiffness at the initial state (a bifurcation or dead point, or a motion "
                  "that no bar, support or driver resists)";
-      if (stiffness.null_vectors.size() > 0) f.reason += ": " + describe_null_space(assembler, state.q, stiffness.null_vectors);
+      if (stiffness.null_vectors.size() > 0) f.reason += ": " + describe_null_space(assembler.at_modes(state.history), state.q, stiffness.null_vectors);
       return fail(f);
     }
   }
@@ -440,7 +447,7 @@ RunReport run_analysis(const Assembler& assembler, RecordSink& sink, const RunCo
       FailureReport f;
       f.phase = "initial rates";
       f.reason = status.message;
-      if (status.null_vectors.size() > 0) f.reason += "; " + describe_null_space(assembler, state.q, status.null_vectors);
+      if (status.null_vectors.size() > 0) f.reason += "; " + describe_null_space(assembler.at_modes(state.history), state.q, status.null_vectors);
       return fail(f);
     }
   }
@@ -508,7 +515,7 @@ RunReport run_analysis(const Assembler& assembler, RecordSink& sink, const RunCo
         continue;
       }
       report.status = RunStatus::failed;
-      report.failure = describe_failure(assembler, "time step", state.time_s + step, report.steps + 1, state.q, newton);
+      report.failure = describe_failure(assembler.at_modes(switching.modes()), "time step", state.time_s + step, report.steps + 1, state.q, newton);
       report.message = failure_message(report.failure);
       return finish_keeping(report);
     }
@@ -541,9 +548,9 @@ RunReport run_analysis(const Assembler& assembler, RecordSink& sink, const RunCo
     const bool at_output_time = steps.reached_output(state.time_s);
     if (at_output_time) state.time_s = steps.next_output_time();  // exactly, not up to round-off
     if (switching.projected()) {
-      work.advance_through_impact(next, state);
+      work.advance_through_impact(next, state, switching.modes());
     } else {
-      work.advance(q_before, state);
+      work.advance(q_before, state, switching.modes());
     }
     // A step between output times reaches the envelopes only, so that peaks are not missed;
     // the end of a run that every latch stopped, or that settled, is an output.

@@ -10,7 +10,7 @@ namespace {
 FactorizationStatus factorize_mass_and_constraints(const Assembler& assembler, LinearSystem& system,
                                                    const MotionState& state) {
   const int m = assembler.n_equations();
-  assembler.iteration_matrix(state.q, state.time_s, 1.0, Eigen::VectorXd::Zero(m), {1.0, 0.0, 1.0}, system);
+  assembler.at_modes(state.history).iteration_matrix(state.q, state.time_s, 1.0, Eigen::VectorXd::Zero(m), {1.0, 0.0, 1.0}, system);
   FactorizationStatus status = system.factorize();
   if (!status.ok) status.message = "cannot find consistent initial rates: " + status.message;
   return status;
@@ -23,10 +23,10 @@ void consistent_accelerations(const Assembler& assembler, LinearSystem& system, 
   const double t = state.time_s;
   Eigen::VectorXd rhs(n + m);
   Eigen::VectorXd phi_t, bias, internal, external, rate;
-  assembler.internal_force(state.q, t, 1.0, internal);
+  assembler.at_modes(state.history).internal_force(state.q, t, 1.0, internal);
   assembler.applied_loads(state.q, t, external);
-  assembler.rate_force(state.q, state.v, t, rate);
-  assembler.constraint_rates(state.q, state.v, t, phi_t, bias);
+  assembler.at_modes(state.history).rate_force(state.q, state.v, t, rate);
+  assembler.at_modes(state.history).constraint_rates(state.q, state.v, t, phi_t, bias);
   rhs.head(n) = external - internal - rate;
   rhs.tail(m) = -bias;
   system.solve(rhs);
@@ -47,7 +47,7 @@ FactorizationStatus consistent_rates(const Assembler& assembler, LinearSystem& s
 
   assembler.mass_times(from, momentum);
   rhs.head(n) = momentum;
-  assembler.constraint_rates(state.q, Eigen::VectorXd::Zero(n), state.time_s, phi_t, bias);
+  assembler.at_modes(state.history).constraint_rates(state.q, Eigen::VectorXd::Zero(n), state.time_s, phi_t, bias);
   rhs.tail(m) = -phi_t;
   system.solve(rhs);
   state.v = rhs.head(n);
@@ -70,7 +70,7 @@ FactorizationStatus consistent_rates_over_step(const Assembler& assembler, Linea
   const int n = assembler.n_dofs();
   const int m = assembler.n_equations();
   const double t = state.time_s;
-  assembler.iteration_matrix(state.q, t, 1.0, Eigen::VectorXd::Zero(m),
+  assembler.at_modes(state.history).iteration_matrix(state.q, t, 1.0, Eigen::VectorXd::Zero(m),
                              {.mass = 1.0, .stiffness = 0.0, .constraint_scale = 1.0, .damping = step_s, .rates = &from},
                              system);
   FactorizationStatus status = system.factorize();
@@ -80,8 +80,8 @@ FactorizationStatus consistent_rates_over_step(const Assembler& assembler, Linea
   }
   Eigen::VectorXd phi_t, bias, along;
   Eigen::VectorXd rhs(n + m);
-  assembler.constraint_rates(state.q, Eigen::VectorXd::Zero(n), t, phi_t, bias);
-  assembler.constraint_jacobian_times(state.q, t, from, along);
+  assembler.at_modes(state.history).constraint_rates(state.q, Eigen::VectorXd::Zero(n), t, phi_t, bias);
+  assembler.at_modes(state.history).constraint_jacobian_times(state.q, t, from, along);
   rhs.head(n).setZero();
   rhs.tail(m) = -phi_t - along;
   system.solve(rhs);

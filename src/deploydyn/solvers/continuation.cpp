@@ -44,16 +44,17 @@ struct CorrectorResult {
 
 class PathTracer {
  public:
-  PathTracer(const Assembler& assembler, const ContinuationOptions& options, LinearSystem& system)
-      : assembler_(assembler),
+  PathTracer(const AssemblerAtModes& at, const ContinuationOptions& options, LinearSystem& system)
+      : assembler_(at.assembler()),
+        at_(at),
         options_(options),
         system_(system),
-        equilibrium_(assembler, options.parameter, options.time_s),
+        equilibrium_(at, options.parameter, options.time_s),
         range_(std::abs(options.end - options.start)),
         direction_(options.end > options.start ? 1.0 : -1.0),
-        reference_q_(assembler.initial_coordinates()),
-        scale_(assembler.stiffness_scale(reference_q_, equilibrium_.time_s(options.start))),
-        stability_(assembler, options, system) {}
+        reference_q_(assembler_.initial_coordinates()),
+        scale_(at.stiffness_scale(reference_q_, equilibrium_.time_s(options.start))),
+        stability_(assembler_, options, system) {}
 
   ContinuationResult run(const Eigen::VectorXd& q0, const Eigen::VectorXd& lambda0);
 
@@ -109,6 +110,7 @@ class PathTracer {
   std::optional<Trial> switch_branch(double ds);
 
   const Assembler& assembler_;
+  AssemblerAtModes at_;  // the modes the path is traced in
   const ContinuationOptions& options_;
   LinearSystem& system_;
   ParametrizedEquilibrium equilibrium_;
@@ -451,7 +453,7 @@ std::optional<Tangent> PathTracer::start(const Eigen::VectorXd& q0, const Eigen:
       record_event(PathEventKind::singular_constraints, current, Tangent{}, 0.0);
       std::string rows;
       for (const int row : result_.events.back().dependent_rows) {
-        rows += (rows.empty() ? "" : ", ") + assembler_.describe_equation(row);
+        rows += (rows.empty() ? "" : ", ") + at_.describe_equation(row);
       }
       result_.message = "the constraint Jacobian is singular at the start (rank " +
                         std::to_string(current.constraint_rank) + " of " +
@@ -643,16 +645,17 @@ const char* to_string(ContinuationEnd end) {
   return kNames[static_cast<int>(end)];
 }
 
-ContinuationResult trace_path(const Assembler& assembler, const ContinuationOptions& options,
+ContinuationResult trace_path(const AssemblerAtModes& at, const ContinuationOptions& options,
                               LinearSystem& system, const Eigen::VectorXd& q0,
                               const Eigen::VectorXd& lambda0) {
+  const Assembler& assembler = at.assembler();
   validate(options);
   if (q0.size() != assembler.n_dofs() || lambda0.size() != assembler.n_equations()) {
     throw std::invalid_argument(fmt::format(
         "trace_path: the start state has {} coordinates and {} multipliers, the model {} and {}",
         q0.size(), lambda0.size(), assembler.n_dofs(), assembler.n_equations()));
   }
-  PathTracer tracer(assembler, options, system);
+  PathTracer tracer(at, options, system);
   return tracer.run(q0, lambda0);
 }
 

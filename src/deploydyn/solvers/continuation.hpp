@@ -203,7 +203,7 @@ struct ContinuationResult {
 
 // Traces the path from (q0, λ0), first brought to equilibrium at μ = options.start.
 // `system` must have been prepared for `assembler` (assembly/linear_system_factory.hpp).
-ContinuationResult trace_path(const Assembler& assembler, const ContinuationOptions& options,
+ContinuationResult trace_path(const AssemblerAtModes& at, const ContinuationOptions& options,
                               LinearSystem& system, const Eigen::VectorXd& q0,
                               const Eigen::VectorXd& lambda0);
 

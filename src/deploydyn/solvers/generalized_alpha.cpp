@@ -25,11 +25,12 @@ class GeneralizedAlphaEquations final : public DiscreteEquations {
   void start(const MotionState& start, double h) {
     const GeneralizedAlphaCoefficients& c = coefficients_;
     t_ = start.time_s + h;
+    modes_ = start.history;  // the step's modes (a copy: no allocation after the first step)
     c_pseudo_ = 1.0 / (c.beta * h * h);
     c_true_ = (1.0 - c.alpha_m) / (1.0 - c.alpha_f) * c_pseudo_;
     // c·M dominates as h → 0 (the paper's 1/(β h²) scaling, docs/theory.md errata); K when h
     // is large. Only its size matters, so the stiffness part is taken once, at the first step.
-    if (stiffness_scale_ == 0.0) stiffness_scale_ = assembler_.stiffness_scale(start.q, start.time_s);
+    if (stiffness_scale_ == 0.0) stiffness_scale_ = assembler_.at_modes(modes_).stiffness_scale(start.q, start.time_s);
     constraint_scale_ = c_true_ * assembler_.mass_scale() + stiffness_scale_;
     predicted_ = start.q + h * start.v + (h * h * (0.5 - c.beta)) * start.pseudo_a;
     // q̇_{n+1} = q̇_n + h (1 − γ) a_n + h γ a_{n+1} = predicted_rates + c_rate (q − q̃).
@@ -53,9 +54,9 @@ class GeneralizedAlphaEquations final : public DiscreteEquations {
     acceleration(q, acceleration_);
     const auto inertia_and_constraints = [&] {
       assembler_.mass_times(acceleration_, inertia_);
-      assembler_.constraints_and_force(q, t_, lambda, phi, reaction_);
+      assembler_.at_modes(modes_).constraints_and_force(q, t_, lambda, phi, reaction_);
     };
-    const auto internal_forces = [&] { assembler_.internal_force(q, t_, 1.0, internal_); };
+    const auto internal_forces = [&] { assembler_.at_modes(modes_).internal_force(q, t_, 1.0, internal_); };
     // Independent outputs, each summed by one thread in its usual order: on two cores the
     // residual is the same bit for bit. The split gives the cores about equal shares on the
     // 10⁵-bar roof (profile: inertia 5.7 % and constraints 5.1 % of a step against 8.5 % for the
@@ -65,7 +66,7 @@ class GeneralizedAlphaEquations final : public DiscreteEquations {
     assembler_.add_frame_moments(q, t_, -1.0, r);
     if (rate_forces_) {  // dampers, friction: f_d(q, q̇(q)) at the step's end
       rates(q);
-      assembler_.rate_force(q, rates_, t_, rate_force_);
+      assembler_.at_modes(modes_).rate_force(q, rates_, t_, rate_force_);
       r += rate_force_;
     }
     return std::max({inertia_.lpNorm<Eigen::Infinity>(), internal_.lpNorm<Eigen::Infinity>(),
@@ -74,7 +75,7 @@ class GeneralizedAlphaEquations final : public DiscreteEquations {
   void matrix(const Eigen::VectorXd& q, const Eigen::VectorXd& lambda,
               LinearSystem& system) override {
     if (rate_forces_) rates(q);
-    assembler_.iteration_matrix(q, t_, 1.0, lambda,
+    assembler_.at_modes(modes_).iteration_matrix(q, t_, 1.0, lambda,
                                 {c_true_, 1.0, constraint_scale_, rate_forces_ ? c_rate_ : 0.0,
                                  rate_forces_ ? &rates_ : nullptr},
                                 system);
@@ -97,6 +98,7 @@ class GeneralizedAlphaEquations final : public DiscreteEquations {
   double stiffness_scale_ = 0.0;   // max diag K at the first step (N/m); 0: not yet known
   Eigen::VectorXd predicted_, history_, external_, acceleration_, inertia_, internal_, reaction_;
   Eigen::VectorXd predicted_rates_, rates_, rate_force_;
+  Eigen::VectorXd modes_;  // the elements' history the step runs with (MotionState::history)
   TwoCoreChoice two_cores_;  // the residual's two halves side by side when that is faster
 };
 

@@ -41,11 +41,11 @@ EquilibriumModes modes_at_equilibrium(const Assembler& assembler, MotionState st
                                       const ModalOptions& options, const RunControl& control) {
   EquilibriumModes out;
   out.time_s = state.time_s;
-  const StaticResult equilibrium = solve_static(assembler, assembler.model().analysis,
+  const StaticResult equilibrium = solve_static(assembler.at_modes(state.history), assembler.model().analysis,
                                                 LoadPath::time_step(state.time_s, state.time_s), 1, system, state,
                                                 control);
   out.equilibrium = state;
-  return modes_about(assembler, equilibrium, std::move(out), system, options);
+  return modes_about(assembler.at_modes(state.history), equilibrium, std::move(out), system, options);
 }
 
 }  // namespace
@@ -71,8 +71,7 @@ Eigen::VectorXd posed_history(const Assembler& assembler, HingeHold hinges) {
 EquilibriumModes modes_in_pose(const Assembler& assembler, double time_s, HingeHold hinges, LinearSystem& system,
                                const ModalOptions& options, const RunControl& control) {
   Eigen::VectorXd history = posed_history(assembler, hinges);
-  assembler.use_history(history);
-  if (hinges != HingeHold::latched) return modes_at_time(assembler, time_s, system, options, control);
+  if (hinges != HingeHold::latched) return modes_at_time(assembler.at_modes(history), time_s, system, options, control);
   // Latched: from the stowed equilibrium (locks at the initial angles), the locks turned to
   // the latch angles step by step.
   const Model& model = assembler.model();
@@ -82,16 +81,14 @@ EquilibriumModes modes_in_pose(const Assembler& assembler, double time_s, HingeH
     if (e.latch_rad) largest_turn = std::max(largest_turn, std::abs(*e.latch_rad - e.initial_angle_rad));
   }
   turn_locks(model, slice, 0.0);
-  assembler.use_history(history);
   MotionState state;
   EquilibriumModes out;
   out.time_s = time_s;
-  StaticResult reached = solve_equilibrium_at(assembler, time_s, system, state, control);
+  StaticResult reached = solve_equilibrium_at(assembler.at_modes(history), time_s, system, state, control);
   const int n_turns = std::max(1, static_cast<int>(std::ceil(largest_turn / kLatchTurnStep_rad)));
   for (int k = 1; k <= n_turns && reached.newton.converged && reached.path_factor >= 1.0; ++k) {
     turn_locks(model, slice, static_cast<double>(k) / n_turns);
-    assembler.use_history(history);
-    reached = solve_static(assembler, model.analysis, LoadPath::time_step(time_s, time_s), 1, system, state, control);
+    reached = solve_static(assembler.at_modes(history), model.analysis, LoadPath::time_step(time_s, time_s), 1, system, state, control);
     if (!reached.newton.converged || reached.path_factor < 1.0) {
       out.stopped = reached.stopped;
       out.modes.message = reached.stopped ? "stopped before the equilibrium was reached"
@@ -108,7 +105,7 @@ EquilibriumModes modes_in_pose(const Assembler& assembler, double time_s, HingeH
     return out;
   }
   out.equilibrium = state;
-  out.modes = natural_modes(assembler, out.equilibrium, system, options);
+  out.modes = natural_modes(assembler.at_modes(history), out.equilibrium, system, options);
   return out;
 }
 
@@ -131,7 +128,6 @@ EquilibriumModes modes_from_state(const Assembler& assembler, const MotionState&
   MotionState state = kept;
   state.v.setZero();
   state.a.setZero();
-  assembler.use_history(state.history);
   return modes_at_equilibrium(assembler, state, system, options, control);
 }
 

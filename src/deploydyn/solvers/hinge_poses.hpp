@@ -11,7 +11,7 @@
 //            cannot take a whole deployment at once.
 // Both are the elements' history (MotionState::history, the hinges' generic slots of
 // elements/hinge/hinge_history.hpp) that a run would have in those states; the assembler
-// is given it (use_history) before the equilibrium and the modes are found.
+// evaluates in it (Assembler::at_modes) while the equilibrium and the modes are found.
 
 #include <Eigen/Core>
 #include <array>

@@ -40,11 +40,12 @@ Eigen::VectorXd ModalResult::frequencies_Hz() const {
   });
 }
 
-ModalResult natural_modes(const Assembler& assembler, const MotionState& equilibrium,
+ModalResult natural_modes(const AssemblerAtModes& at, const MotionState& equilibrium,
                           LinearSystem& system, const ModalOptions& options) {
+  const Assembler& assembler = at.assembler();
   const int n_dofs = assembler.n_dofs();
   // A hinge's lock counts only while it holds (a free hinge's turn is a motion that vibrates).
-  const int n_equations = assembler.n_equations_in_force();
+  const int n_equations = at.n_equations_in_force();
   const int n_free = n_dofs - n_equations;
   if (options.n_modes < 1 || options.n_modes > n_free) {
     throw std::invalid_argument(fmt::format(
@@ -52,11 +53,11 @@ ModalResult natural_modes(const Assembler& assembler, const MotionState& equilib
         options.n_modes, n_dofs, n_equations, std::max(n_free, 0)));
   }
   ModalResult result;
-  const double stiffness_scale = assembler.stiffness_scale(equilibrium.q, equilibrium.time_s);
+  const double stiffness_scale = at.stiffness_scale(equilibrium.q, equilibrium.time_s);
   const double sigma =
       options.shift_rad2_s2.value_or(kDefaultShiftShare * stiffness_scale / assembler.mass_scale());
   // Rows of B scaled like the stiffness block keep the bordered matrix balanced (as in Newton).
-  assembler.iteration_matrix(equilibrium.q, equilibrium.time_s, 1.0, equilibrium.lambda,
+  at.iteration_matrix(equilibrium.q, equilibrium.time_s, 1.0, equilibrium.lambda,
                              {-sigma, 1.0, stiffness_scale}, system);
   const FactorizationStatus factorization = system.factorize();
   ++result.n_factorizations;
@@ -78,8 +79,8 @@ ModalResult natural_modes(const Assembler& assembler, const MotionState& equilib
   const WeightProduct mass = [&](const Eigen::VectorXd& v, Eigen::VectorXd& out) {
     assembler.mass_times(v, out);
     if (!regularize) return;
-    assembler.constraint_jacobian_times(equilibrium.q, equilibrium.time_s, v, constrained);
-    assembler.constraint_force(equilibrium.q, equilibrium.time_s, constrained, reaction);
+    at.constraint_jacobian_times(equilibrium.q, equilibrium.time_s, v, constrained);
+    at.constraint_force(equilibrium.q, equilibrium.time_s, constrained, reaction);
     out += assembler.mass_scale() * reaction;
   };
   if (!request.dense && !options.shift_rad2_s2) request.max_restarts = options.restarts_before_shifting;
@@ -91,12 +92,12 @@ ModalResult natural_modes(const Assembler& assembler, const MotionState& equilib
     request.start = pairs.vectors;
     if (pairs.values.size() > 0 && pairs.values.minCoeff() - sigma > kShiftMoveThreshold * std::abs(sigma)) {
       request.shift = sigma + kShiftMoveShare * (pairs.values.minCoeff() - sigma);
-      assembler.iteration_matrix(equilibrium.q, equilibrium.time_s, 1.0, equilibrium.lambda,
+      at.iteration_matrix(equilibrium.q, equilibrium.time_s, 1.0, equilibrium.lambda,
                                  {-request.shift, 1.0, stiffness_scale}, system);
       ++result.n_factorizations;
       if (!system.factorize().ok) {
         request.shift = sigma;  // on a natural frequency²: back to the first shift
-        assembler.iteration_matrix(equilibrium.q, equilibrium.time_s, 1.0, equilibrium.lambda,
+        at.iteration_matrix(equilibrium.q, equilibrium.time_s, 1.0, equilibrium.lambda,
                                    {-sigma, 1.0, stiffness_scale}, system);
         system.factorize();
         ++result.n_factorizations;
@@ -115,15 +116,15 @@ ModalResult natural_modes(const Assembler& assembler, const MotionState& equilib
   return result;
 }
 
-EquilibriumModes modes_at_time(const Assembler& assembler, double time_s, LinearSystem& system,
+EquilibriumModes modes_at_time(const AssemblerAtModes& at, double time_s, LinearSystem& system,
                                const ModalOptions& options, const RunControl& control) {
   EquilibriumModes out;
   out.time_s = time_s;
-  const StaticResult equilibrium = solve_equilibrium_at(assembler, time_s, system, out.equilibrium, control);
-  return modes_about(assembler, equilibrium, std::move(out), system, options);
+  const StaticResult equilibrium = solve_equilibrium_at(at, time_s, system, out.equilibrium, control);
+  return modes_about(at, equilibrium, std::move(out), system, options);
 }
 
-EquilibriumModes modes_about(const Assembler& assembler, const StaticResult& equilibrium, EquilibriumModes out,
+EquilibriumModes modes_about(const AssemblerAtModes& at, const StaticResult& equilibrium, EquilibriumModes out,
                              LinearSystem& system, const ModalOptions& options) {
   out.stopped = equilibrium.stopped;
   if (!equilibrium.newton.converged || equilibrium.path_factor < 1.0) {
@@ -131,7 +132,7 @@ EquilibriumModes modes_about(const Assembler& assembler, const StaticResult& equ
                                             : "no static equilibrium found: " + equilibrium.newton.failure;
     return out;
   }
-  out.modes = natural_modes(assembler, out.equilibrium, system, options);
+  out.modes = natural_modes(at, out.equilibrium, system, options);
   return out;
 }
 

@@ -48,11 +48,12 @@ struct ModalResult {
   Eigen::VectorXd frequencies_Hz() const;
 };
 
-// `equilibrium`: q, λ and time of a converged static (or initial) state; `system` analysed for
+// `equilibrium`: q, λ and time of a converged static (or initial) state, in the elements'
+// modes of `at` (Assembler::at_modes; a plain Assembler: every hinge free); `system` analysed for
 // the assembler's pattern (linear_system_factory.hpp). Throws std::invalid_argument when more
 // modes are asked for than coordinates − constraint equations (the constrained system's size
 // when no constraint is redundant).
-ModalResult natural_modes(const Assembler& assembler, const MotionState& equilibrium,
+ModalResult natural_modes(const AssemblerAtModes& at, const MotionState& equilibrium,
                           LinearSystem& system, const ModalOptions& options = {});
 
 // The modes about the static equilibrium at time `time_s` (solvers/static_solver.hpp,
@@ -63,13 +64,13 @@ struct EquilibriumModes {
   ModalResult modes;     // !modes.ok: modes.message says why, also when no equilibrium was found
   bool stopped = false;  // `control` asked to stop before the equilibrium was reached
 };
-EquilibriumModes modes_at_time(const Assembler& assembler, double time_s, LinearSystem& system,
+EquilibriumModes modes_at_time(const AssemblerAtModes& at, double time_s, LinearSystem& system,
                                const ModalOptions& options = {}, const RunControl& control = {});
 
 struct StaticResult;  // solvers/static_solver.hpp
 // The modes about `out.equilibrium`, which the static solve `equilibrium` reached; when it did
 // not, none, and `out.modes.message` says why.
-EquilibriumModes modes_about(const Assembler& assembler, const StaticResult& equilibrium, EquilibriumModes out,
+EquilibriumModes modes_about(const AssemblerAtModes& at, const StaticResult& equilibrium, EquilibriumModes out,
                              LinearSystem& system, const ModalOptions& options);
 
 }  // namespace deploydyn

@@ -48,7 +48,7 @@ ModalOptions lowest_mode() {
 std::optional<OutputSampling> output_sampling(const Assembler& assembler, const MotionState& equilibrium) {
   if (!checked(assembler)) return std::nullopt;
   const auto system = make_linear_system(assembler);
-  return against_interval(assembler, natural_modes(assembler, equilibrium, *system, lowest_mode()));
+  return against_interval(assembler, natural_modes(assembler.at_modes(equilibrium.history), equilibrium, *system, lowest_mode()));
 }
 
 std::optional<OutputSampling> output_sampling(const Assembler& assembler, const RunControl& control) {

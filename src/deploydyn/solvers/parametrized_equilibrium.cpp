@@ -4,9 +4,9 @@
 
 namespace deploydyn {
 
-ParametrizedEquilibrium::ParametrizedEquilibrium(const Assembler& assembler,
+ParametrizedEquilibrium::ParametrizedEquilibrium(const AssemblerAtModes& at,
                                                  PathParameter parameter, double time_s)
-    : assembler_(assembler), parameter_(parameter), time_s_(time_s) {
+    : at_(at), assembler_(at.assembler()), parameter_(parameter), time_s_(time_s) {
   assembler_.external_force(time_s_, external_);
 }
 
@@ -15,8 +15,8 @@ double ParametrizedEquilibrium::residual(const Eigen::VectorXd& q, const Eigen::
                                          Eigen::VectorXd& phi) const {
   const double t = time_s(mu);
   if (parameter_ == PathParameter::driver) assembler_.external_force(t, external_);
-  assembler_.internal_force(q, t, thermal_factor(mu), internal_);
-  assembler_.constraints_and_force(q, t, lambda, phi, reaction_);
+  at_.internal_force(q, t, thermal_factor(mu), internal_);
+  at_.constraints_and_force(q, t, lambda, phi, reaction_);
   const double load = load_factor(mu);
   r = internal_ - load * external_ + reaction_;
   assembler_.add_frame_moments(q, t, -load, r);
@@ -30,7 +30,7 @@ void ParametrizedEquilibrium::parameter_derivative(const Eigen::VectorXd& q,
                                                    Eigen::VectorXd& dr, Eigen::VectorXd& dphi) const {
   switch (parameter_) {
     case PathParameter::thermal:
-      assembler_.thermal_force_derivative(q, time_s_, thermal_factor(mu), dr);
+      at_.thermal_force_derivative(q, time_s_, thermal_factor(mu), dr);
       dphi.setZero(assembler_.n_equations());
       return;
     case PathParameter::load:
@@ -40,7 +40,7 @@ void ParametrizedEquilibrium::parameter_derivative(const Eigen::VectorXd& q,
       dphi.setZero(assembler_.n_equations());
       return;
     case PathParameter::driver:
-      assembler_.static_residual_time_derivative(q, mu, lambda, dr, dphi);
+      at_.static_residual_time_derivative(q, mu, lambda, dr, dphi);
       return;
   }
 }
@@ -50,7 +50,7 @@ void ParametrizedEquilibrium::matrix(const Eigen::VectorXd& q, const Eigen::Vect
                                      LinearSystem& system) const {
   Assembler::MatrixWeights weights{0.0, 1.0, constraint_scale};
   weights.loads = load_factor(mu);
-  assembler_.iteration_matrix(q, time_s(mu), thermal_factor(mu), lambda, weights, system);
+  at_.iteration_matrix(q, time_s(mu), thermal_factor(mu), lambda, weights, system);
 }
 
 }  // namespace deploydyn

@@ -26,8 +26,9 @@ namespace deploydyn {
 
 class ParametrizedEquilibrium {
  public:
-  // Keeps a reference to `assembler`, which must outlive it.
-  ParametrizedEquilibrium(const Assembler& assembler, PathParameter parameter, double time_s);
+  // Keeps references to the assembler and the history of `at`, which must outlive it; the
+  // equilibria are those in its modes (a plain Assembler: every hinge free).
+  ParametrizedEquilibrium(const AssemblerAtModes& at, PathParameter parameter, double time_s);
 
   const Assembler& assembler() const { return assembler_; }
   PathParameter parameter() const { return parameter_; }
@@ -49,6 +50,7 @@ class ParametrizedEquilibrium {
               double constraint_scale, LinearSystem& system) const;
 
  private:
+  AssemblerAtModes at_;
   const Assembler& assembler_;
   PathParameter parameter_;
   double time_s_;

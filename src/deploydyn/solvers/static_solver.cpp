@@ -16,9 +16,10 @@ constexpr double kLargestMoveShare = 0.02;
 
 class StaticEquations final : public DiscreteEquations {
  public:
-  StaticEquations(const Assembler& assembler, const LoadPath& path, double t,
+  StaticEquations(const AssemblerAtModes& at, const LoadPath& path, double t,
                   double thermal_factor, double scale, double load_factor = 1.0)
-      : assembler_(assembler),
+      : at_(at),
+        assembler_(at.assembler()),
         t_(t),
         thermal_factor_(thermal_factor),
         load_factor_(load_factor),
@@ -28,14 +29,14 @@ class StaticEquations final : public DiscreteEquations {
 
   double residual(const Eigen::VectorXd& q, const Eigen::VectorXd& lambda, Eigen::VectorXd& r,
                   Eigen::VectorXd& phi) override {
-    assembler_.internal_force(q, t_, thermal_factor_, internal_);
+    at_.internal_force(q, t_, thermal_factor_, internal_);
     if (external_loads_) {
       assembler_.external_force(t_, external_);
       external_ *= load_factor_;
     } else {
       external_.setZero(q.size());
     }
-    assembler_.constraints_and_force(q, t_, lambda, phi, reaction_);
+    at_.constraints_and_force(q, t_, lambda, phi, reaction_);
     r = internal_ - external_ + reaction_;
     if (external_loads_) assembler_.add_frame_moments(q, t_, -load_factor_, r);
     return std::max({internal_.lpNorm<Eigen::Infinity>(), external_.lpNorm<Eigen::Infinity>(),
@@ -45,11 +46,12 @@ class StaticEquations final : public DiscreteEquations {
               LinearSystem& system) override {
     Assembler::MatrixWeights weights{mass_regularization_, 1.0, scale_};
     weights.loads = external_loads_ ? load_factor_ : 0.0;
-    assembler_.iteration_matrix(q, t_, thermal_factor_, lambda, weights, system);
+    at_.iteration_matrix(q, t_, thermal_factor_, lambda, weights, system);
   }
   double constraint_scale() const override { return scale_; }
 
  private:
+  AssemblerAtModes at_;  // the modes the equilibrium is sought in
   const Assembler& assembler_;
   double t_, thermal_factor_, load_factor_, scale_;
   bool external_loads_;
@@ -59,12 +61,13 @@ class StaticEquations final : public DiscreteEquations {
 
 }  // namespace
 
-StaticResult solve_static(const Assembler& assembler, const AnalysisOptions& options,
+StaticResult solve_static(const AssemblerAtModes& at, const AnalysisOptions& options,
                           const LoadPath& path, int load_steps, LinearSystem& system,
                           MotionState& state, const RunControl& control) {
+  const Assembler& assembler = at.assembler();
   StaticResult result;
   // Constraint rows scaled to the stiffness keep the matrix balanced (docs/theory.md).
-  const double scale = assembler.stiffness_scale(state.q, state.time_s);
+  const double scale = at.stiffness_scale(state.q, state.time_s);
   const double requested_increment = 1.0 / std::max(load_steps, 1);
   double increment = requested_increment;
   NewtonSolver newton(options.newton);
@@ -85,7 +88,7 @@ StaticResult solve_static(const Assembler& assembler, const AnalysisOptions& opt
     const double t = path.start_time_s + target * (path.end_time_s - path.start_time_s);
     const double thermal = path.start_thermal + target * (path.end_thermal - path.start_thermal);
     const double loads = path.start_loads + target * (path.end_loads - path.start_loads);
-    StaticEquations equations(assembler, path, t, thermal, scale, loads);
+    StaticEquations equations(at, path, t, thermal, scale, loads);
     Eigen::VectorXd q = state.q;
     Eigen::VectorXd lambda = state.lambda;
     result.newton = newton.solve(equations, system, q, lambda);
@@ -122,8 +125,9 @@ StaticResult solve_static(const Assembler& assembler, const AnalysisOptions& opt
   return result;
 }
 
-StaticResult apply_initial_loads(const Assembler& assembler, const AnalysisOptions& options, int load_steps,
+StaticResult apply_initial_loads(const AssemblerAtModes& at, const AnalysisOptions& options, int load_steps,
                                  LinearSystem& system, MotionState& state, const RunControl& control) {
+  const Assembler& assembler = at.assembler();
   Eigen::VectorXd loads;
   assembler.external_force(state.time_s, loads);
   if (loads.isZero() && !assembler.has_frame_moments()) {
@@ -131,11 +135,12 @@ StaticResult apply_initial_loads(const Assembler& assembler, const AnalysisOptio
     none.path_factor = 1.0;
     return none;
   }
-  return solve_static(assembler, options, LoadPath::load_ramp(state.time_s), load_steps, system, state, control);
+  return solve_static(at, options, LoadPath::load_ramp(state.time_s), load_steps, system, state, control);
 }
 
-StaticResult solve_equilibrium_at(const Assembler& assembler, double t, LinearSystem& system,
+StaticResult solve_equilibrium_at(const AssemblerAtModes& at, double t, LinearSystem& system,
                                   MotionState& state, const RunControl& control) {
+  const Assembler& assembler = at.assembler();
   state = MotionState{};
   state.q = assembler.initial_coordinates();
   state.v = state.a = Eigen::VectorXd::Zero(assembler.n_dofs());
@@ -144,29 +149,29 @@ StaticResult solve_equilibrium_at(const Assembler& assembler, double t, LinearSy
   LoadPath initial = LoadPath::thermal_ramp(0.0);
   if (assembler.rigid_mobility() > 0) {
     initial.mass_regularization =
-        kFreeMotionRegularization * assembler.stiffness_scale(state.q, 0.0) / assembler.mass_scale();
+        kFreeMotionRegularization * at.stiffness_scale(state.q, 0.0) / assembler.mass_scale();
   }
   StaticResult loaded;
   if (assembler.rigid_mobility() == 0) {
-    loaded = apply_initial_loads(assembler, options, options.load_steps, system, state, control);
+    loaded = apply_initial_loads(at, options, options.load_steps, system, state, control);
     if (loaded.path_factor < 1.0 || loaded.stopped) return loaded;
   }
-  StaticResult result = solve_static(assembler, options, initial, options.load_steps, system, state, control);
+  StaticResult result = solve_static(at, options, initial, options.load_steps, system, state, control);
   result.load_steps += loaded.load_steps;
   result.total_iterations += loaded.total_iterations;
   if (result.path_factor < 1.0 || result.stopped || t <= 0.0) return result;
   LoadPath to_t = LoadPath::time_step(0.0, t);
   to_t.mass_regularization = initial.mass_regularization;
-  StaticResult moved = solve_static(assembler, options, to_t, 1, system, state, control);
+  StaticResult moved = solve_static(at, options, to_t, 1, system, state, control);
   moved.load_steps += result.load_steps;
   moved.total_iterations += result.total_iterations;
   return moved;
 }
 
-FactorizationStatus check_static_stiffness(const Assembler& assembler, LinearSystem& system,
+FactorizationStatus check_static_stiffness(const AssemblerAtModes& at, LinearSystem& system,
                                            const MotionState& state) {
-  StaticEquations equations(assembler, LoadPath::thermal_ramp(state.time_s), state.time_s, 1.0,
-                            assembler.stiffness_scale(state.q, state.time_s));
+  StaticEquations equations(at, LoadPath::thermal_ramp(state.time_s), state.time_s, 1.0,
+                            at.stiffness_scale(state.q, state.time_s));
   equations.matrix(state.q, state.lambda, system);
   return system.factorize();
 }

@@ -51,8 +51,9 @@ struct StaticResult {
 };
 
 // Follows `path` in at least `load_steps` steps from state.q/state.lambda, updating `state`
-// (time included) as far as it gets. Polls `control` before every load step.
-StaticResult solve_static(const Assembler& assembler, const AnalysisOptions& options,
+// (time included) as far as it gets. Polls `control` before every load step. Here and below:
+// in the elements' modes of `at` (Assembler::at_modes; a plain Assembler: every hinge free).
+StaticResult solve_static(const AssemblerAtModes& at, const AnalysisOptions& options,
                           const LoadPath& path, int load_steps, LinearSystem& system,
                           MotionState& state, const RunControl& control = {});
 
@@ -60,20 +61,20 @@ StaticResult solve_static(const Assembler& assembler, const AnalysisOptions& opt
 // steps before the thermal strain is (LoadPath::load_ramp): a heavy load turns a beam by more
 // than a load step may (the 2 % rule above), and only a load that grows can be followed.
 // Returns path_factor 1 at once for a model without loads at t = 0.
-StaticResult apply_initial_loads(const Assembler& assembler, const AnalysisOptions& options, int load_steps,
+StaticResult apply_initial_loads(const AssemblerAtModes& at, const AnalysisOptions& options, int load_steps,
                                  LinearSystem& system, MotionState& state, const RunControl& control = {});
 
 // The static equilibrium at time `t` from the model's initial state: the thermal strain (and
 // loads) applied at t = 0 in the model's load steps, then the drivers and loads followed from
 // 0 to t (a quasi-static deployment to t). A mechanism with free motions gets the small mass
 // term of LoadPath while it is loaded. `state` is set from the initial coordinates.
-StaticResult solve_equilibrium_at(const Assembler& assembler, double t, LinearSystem& system,
+StaticResult solve_equilibrium_at(const AssemblerAtModes& at, double t, LinearSystem& system,
                                   MotionState& state, const RunControl& control = {});
 
 // Factorizes the static iteration matrix [K + H(λ), s Bᵀ; s B, 0] at `state`: singular when a
 // motion is resisted by no bar, support or driver (a bifurcation or dead point, or a free
 // mechanism). Newton does not factorize when it starts converged, so this asks explicitly.
-FactorizationStatus check_static_stiffness(const Assembler& assembler, LinearSystem& system,
+FactorizationStatus check_static_stiffness(const AssemblerAtModes& at, LinearSystem& system,
                                            const MotionState& state);
 
 }  // namespace deploydyn

@@ -54,7 +54,7 @@ StepRecord make_step_record(const Assembler& assembler, const MotionState& state
   Eigen::VectorXd momentum;
   assembler.mass_times(state.v, momentum);
   record.kinetic_energy_J = 0.5 * state.v.dot(momentum);
-  record.strain_energy_J = assembler.strain_energy(state.q, state.time_s);
+  record.strain_energy_J = assembler.at_modes(state.history).strain_energy(state.q, state.time_s);
   return record;
 }
 

@@ -15,7 +15,7 @@ class QuasiStaticSteps final : public TimeIntegrator {
 
   NewtonResult step(double h, LinearSystem& system, MotionState& state) override {
     const StaticResult r =
-        solve_static(assembler_, options_, LoadPath::time_step(state.time_s, state.time_s + h), 1,
+        solve_static(assembler_.at_modes(state.history), options_, LoadPath::time_step(state.time_s, state.time_s + h), 1,
                      system, state);
     NewtonResult newton = r.newton;
     newton.iterations = r.total_iterations;

@@ -5,6 +5,7 @@
 
 #include "deploydyn/elements/bar/bar.hpp"
 #include "deploydyn/elements/bar/bar_entry.hpp"
+#include "deploydyn/elements/bar/bar_quantities.hpp"
 #include "deploydyn/elements/heated_material.hpp"
 #include "deploydyn/elements/local_element_group.hpp"
 #include "deploydyn/model/dof_map.hpp"
@@ -87,23 +88,15 @@ struct BarRecord {
     }
     return std::sqrt(change2) / section.reference_length_m;
   }
-  // In the order of kBarQuantities.
+  // At the slots of bar_quantities.hpp.
   void results(const State& s, std::span<double> out) const {
-    out[0] = s.strain;
-    out[1] = s.mechanical_strain;
-    out[2] = s.axial_force_N;
-    out[3] = s.axial_force_N / area_m2;
-    out[4] = s.length_m;
+    out[bar::kStrain] = s.strain;
+    out[bar::kMechanicalStrain] = s.mechanical_strain;
+    out[bar::kAxialForce] = s.axial_force_N;
+    out[bar::kStress] = s.axial_force_N / area_m2;
+    out[bar::kLength] = s.length_m;
   }
   double reference_length_m() const { return section.reference_length_m; }
-};
-
-constexpr ResultQuantity kBarQuantities[] = {
-    {"strain", "strain", true},              // total Green–Lagrange ε
-    {"mstrain", "mechanical_strain", true},  // ε_m = ε − αΔT
-    {"force", "axial_force_N", true},        // true axial force N, tension positive
-    {"stress", "stress_Pa", true, false},    // N / A: the force over the unstrained section
-    {"length", "length_m", false},           // current length l
 };
 
 template <int D>
@@ -132,7 +125,7 @@ std::unique_ptr<ElementGroup> make_bars(const Model& model, const DofMap& dofs) 
 class BarKind final : public ElementKind {
  public:
   std::string_view name() const override { return "bar"; }
-  std::span<const ResultQuantity> quantities(int) const override { return kBarQuantities; }
+  std::span<const ResultQuantity> quantities(int) const override { return bar::kQuantityTable; }
   int n_elements(const Model& model) const override { return model.n_bars(); }
   const std::string& element_name(const Model& model, int element) const override {
     return model.bars[element].name;

@@ -8,6 +8,7 @@
 
 #include "deploydyn/constraints/frame_orthonormality.hpp"
 #include "deploydyn/elements/beam/beam3d.hpp"
+#include "deploydyn/elements/beam/beam_quantities.hpp"
 #include "deploydyn/elements/beam/sectional_values.hpp"
 #include "deploydyn/elements/heated_material.hpp"
 #include "deploydyn/elements/local_element_group.hpp"
@@ -149,17 +150,16 @@ struct Beam3dRecord {
     return std::max({chord, change.segment<9>(beam3d::kFrameA).norm() / std::sqrt(2.0),
                      change.segment<9>(beam3d::kFrameB).norm() / std::sqrt(2.0)});
   }
-  // In the order of the beam kind's quantities: strain, mstrain, force, shear (y), moment (z),
-  // shear_z, torque, moment_y.
+  // At the slots of beam_quantities.hpp; the resultants are (N, V_y, V_z, T, M_y, M_z).
   void results(const State& s, std::span<double> out) const {
-    out[0] = s.strain[0];
-    out[1] = s.mechanical[0];
-    out[2] = s.resultants[0];
-    out[3] = s.resultants[1];
-    out[4] = s.resultants[5];
-    out[5] = s.resultants[2];
-    out[6] = s.resultants[3];
-    out[7] = s.resultants[4];
+    out[beam::kStrain] = s.strain[0];
+    out[beam::kMechanicalStrain] = s.mechanical[0];
+    out[beam::kAxialForce] = s.resultants[0];
+    out[beam::kShearY] = s.resultants[1];
+    out[beam::kMomentZ] = s.resultants[5];
+    out[beam::kShearZ] = s.resultants[2];
+    out[beam::kTorque] = s.resultants[3];
+    out[beam::kMomentY] = s.resultants[4];
   }
   double reference_length_m() const { return section.reference_length_m; }
 };

@@ -10,6 +10,7 @@
 #include "deploydyn/elements/beam/beam3d.hpp"
 #include "deploydyn/elements/beam/beam3d_group.hpp"
 #include "deploydyn/elements/beam/beam_entry.hpp"
+#include "deploydyn/elements/beam/beam_quantities.hpp"
 #include "deploydyn/elements/beam/sectional_values.hpp"
 #include "deploydyn/elements/heated_material.hpp"
 #include "deploydyn/elements/local_element_group.hpp"
@@ -154,29 +155,16 @@ struct Beam2dRecord {
         std::hypot(change[3] - change[0], change[4] - change[1]) / section.reference_length_m;
     return std::max({chord, std::abs(change[2]), std::abs(change[5])});
   }
-  // In the order of kBeamQuantities.
+  // At the 2D slots of beam_quantities.hpp.
   void results(const State& s, std::span<double> out) const {
-    out[0] = s.strain;
-    out[1] = s.mechanical_strain;
-    out[2] = s.axial_force_N;
-    out[3] = s.shear_force_N;
-    out[4] = s.bending_moment_Nm;
+    out[beam::kStrain] = s.strain;
+    out[beam::kMechanicalStrain] = s.mechanical_strain;
+    out[beam::kAxialForce] = s.axial_force_N;
+    out[beam::kShearY] = s.shear_force_N;
+    out[beam::kMomentZ] = s.bending_moment_Nm;
   }
   double reference_length_m() const { return section.reference_length_m; }
 };
-
-// 2D: the first five; 3D: all (the 2D ones first, in the same places).
-constexpr ResultQuantity kBeamQuantities[] = {
-    {"strain", "strain", true},                   // total axial ε at the mid-point
-    {"mstrain", "mechanical_strain", true},       // ε − αΔT
-    {"force", "axial_force_N", true},             // N, tension positive
-    {"shear", "shear_force_y_N", true},           // V along local y
-    {"moment", "bending_moment_z_Nm", true},      // M_z
-    {"shear_z", "shear_force_z_N", true},         // 3D: along local z
-    {"torque", "torque_Nm", true},                // 3D: about the axis
-    {"moment_y", "bending_moment_y_Nm", true},    // 3D: about local y
-};
-constexpr int kBeamQuantities2d = 5;
 
 std::unique_ptr<ElementGroup> make_beam_group_2d(const Model& model, const DofMap& dofs) {
   std::vector<Beam2dRecord> records;
@@ -213,8 +201,8 @@ class BeamKind final : public ElementKind {
  public:
   std::string_view name() const override { return "beam"; }
   std::span<const ResultQuantity> quantities(int dimension) const override {
-    return std::span<const ResultQuantity>(kBeamQuantities).first(dimension == 2 ? kBeamQuantities2d
-                                                                               : std::size(kBeamQuantities));
+    return std::span<const ResultQuantity>(beam::kQuantityTable).first(dimension == 2 ? beam::k2dQuantities
+                                                                                    : beam::kQuantities);
   }
   int n_elements(const Model& model) const override { return model.n_beams(); }
   const std::string& element_name(const Model& model, int element) const override {

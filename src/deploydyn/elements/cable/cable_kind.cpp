@@ -6,6 +6,7 @@
 
 #include "deploydyn/elements/cable/cable.hpp"
 #include "deploydyn/elements/cable/cable_entry.hpp"
+#include "deploydyn/elements/cable/cable_quantities.hpp"
 #include "deploydyn/elements/heated_material.hpp"
 #include "deploydyn/elements/local_element_group.hpp"
 #include "deploydyn/elements/switching_group.hpp"
@@ -102,27 +103,17 @@ struct CableRecord {
     const Vector change = q - q_before;
     return (change.template tail<D>() - change.template head<D>()).norm() / initial_rest_length_m;
   }
-  // In the order of kCableQuantities.
+  // At the slots of cable_quantities.hpp.
   void results(const State& s, std::span<double> out) const {
-    out[0] = s.bar.strain;
-    out[1] = s.bar.mechanical_strain;
-    out[2] = s.bar.axial_force_N;
-    out[3] = s.section.reference_length_m;
-    out[4] = s.bar.slack ? 1.0 : 0.0;
-    out[5] = s.bar.axial_force_N / area_m2;
-    out[6] = s.bar.length_m;
+    out[cable::kStrain] = s.bar.strain;
+    out[cable::kMechanicalStrain] = s.bar.mechanical_strain;
+    out[cable::kAxialForce] = s.bar.axial_force_N;
+    out[cable::kRestLength] = s.section.reference_length_m;
+    out[cable::kIsSlack] = s.bar.slack ? 1.0 : 0.0;
+    out[cable::kStress] = s.bar.axial_force_N / area_m2;
+    out[cable::kLength] = s.bar.length_m;
   }
   double reference_length_m() const { return initial_rest_length_m; }
-};
-
-constexpr ResultQuantity kCableQuantities[] = {
-    {"strain", "strain", true},              // total Green–Lagrange ε, relative to L0(t)
-    {"mstrain", "mechanical_strain", true},  // ε_m = ε − αΔT
-    {"force", "axial_force_N", true},        // true axial force N ≥ 0; 0 when slack
-    {"rest", "rest_length_m", true},         // L0(t)
-    {"slack", "slack", true},                // 1 when slack (ε_m < 0), 0 when taut
-    {"stress", "stress_Pa", true, false},    // N / A: the force over the unstrained section
-    {"length", "length_m", false},           // current length l
 };
 
 // The cables' history (docs/theory.md, "Cables", Events): per cable 1 if it was slack at the end
@@ -193,7 +184,7 @@ std::unique_ptr<ElementGroup> make_cables(const Model& model, const DofMap& dofs
 class CableKind final : public ElementKind {
  public:
   std::string_view name() const override { return "cable"; }
-  std::span<const ResultQuantity> quantities(int) const override { return kCableQuantities; }
+  std::span<const ResultQuantity> quantities(int) const override { return cable::kQuantityTable; }
   int n_elements(const Model& model) const override { return model.n_cables(); }
   const std::string& element_name(const Model& model, int element) const override {
     return model.cables[element].name;

@@ -1,10 +1,11 @@
 #pragma once
 // The result quantities of a hinge, named once: the slot HingeGroup::results writes each into
-// and the table HingeKind::quantities gives the writers come from this one definition.
+// and the table HingeKind::quantities gives the writers come from this one definition
+// (elements/result_slots.hpp).
 
 #include <array>
 
-#include "deploydyn/elements/element.hpp"
+#include "deploydyn/elements/result_slots.hpp"
 
 namespace deploydyn::hinge {
 
@@ -25,20 +26,18 @@ enum Quantity : int {
   kQuantities
 };
 
-inline constexpr std::array<ResultQuantity, kQuantities> kQuantityTable = [] {
-  std::array<ResultQuantity, kQuantities> table{};
-  table[kAngle] = {"hinge_angle", "angle_rad", true};
-  table[kTorque] = {"hinge_torque", "torque_Nm", true};
-  table[kSpringTorque] = {"spring_torque", "spring_torque_Nm", true};
-  table[kDamperTorque] = {"damper_torque", "damper_torque_Nm", true};
-  table[kFrictionTorque] = {"friction_torque", "friction_torque_Nm", true};
-  table[kLockTorque] = {"lock_torque", "lock_torque_Nm", true};
-  table[kPinForce] = {"pin_force", "pin_force_N", true};
-  table[kDissipated] = {"dissipated", "dissipated_J", true};
-  table[kState] = {"hinge_state", "state", true};
-  table[kLatchLoad] = {"latch_load", "latch_torque_Nm", false};
-  table[kStopLoad] = {"stop_load", "stop_torque_Nm", false};
-  return table;
-}();
+inline constexpr std::array<ResultQuantity, kQuantities> kQuantityTable = quantity_table({
+    {kAngle, {"hinge_angle", "angle_rad", true}},
+    {kTorque, {"hinge_torque", "torque_Nm", true}},
+    {kSpringTorque, {"spring_torque", "spring_torque_Nm", true}},
+    {kDamperTorque, {"damper_torque", "damper_torque_Nm", true}},
+    {kFrictionTorque, {"friction_torque", "friction_torque_Nm", true}},
+    {kLockTorque, {"lock_torque", "lock_torque_Nm", true}},
+    {kPinForce, {"pin_force", "pin_force_N", true}},
+    {kDissipated, {"dissipated", "dissipated_J", true}},
+    {kState, {"hinge_state", "state", true}},
+    {kLatchLoad, {"latch_load", "latch_torque_Nm", false}},
+    {kStopLoad, {"stop_load", "stop_torque_Nm", false}},
+});
 
 }  // namespace deploydyn::hinge
