@@ -2,8 +2,8 @@
 // the roofs and the scissor arch whose mechanical steps BM_RoofStep and BM_ScissorStep time
 // (docs/performance.md, "Thermal coupling and shadows"): the target is the whole thermal part
 // ≤ 20 % of a mechanical step.
-//   BM_Shadows        one shadow update alone (MemberShadows::compute: the Embree scene rebuilt
-//                     for the members' positions, n_along × n_across rays per member)
+//   BM_Shadows        one shadow update alone (MemberShadows::compute: the members' strips in
+//                     the sun's view, their grid, n_along × n_across samples per member)
 //   BM_ThermalStep    the coupling's whole step (before_step + after_step): every member's
 //                     heat balance and ΔT(t), the shadows recomputed; `gradients:1` also the beams'
 //                     sun-to-shade differences
@@ -114,7 +114,7 @@ void time_thermal_step(benchmark::State& state, Model model, double step_across_
     }
     coupling.after_step(at, false);
   }
-  // The shadows' Embree scene allocates when rebuilt; the heat balance and ΔT(t) should not.
+  // Neither the shadows (their buffers kept) nor the heat balance and ΔT(t) should allocate.
   state.counters["allocations_per_step"] = benchmark::Counter(
       static_cast<double>(bench::heap_allocations() - allocations_before), benchmark::Counter::kAvgIterations);
   state.counters["members"] = static_cast<double>(coupling.member_names().size());

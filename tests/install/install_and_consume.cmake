@@ -37,7 +37,7 @@ endif()
 
 # The modules loaded on demand (util/optional_module.hpp) are installed, and the installed
 # command finds its own, beside it (LD_DEBUG=files: the loader names every object it opens).
-foreach(module deploydyn_hdf5 deploydyn_embree deploydyn_umfpack)
+foreach(module deploydyn_hdf5 deploydyn_umfpack)
   file(GLOB_RECURSE found ${PREFIX}/lib*/deploydyn/${module}.so)
   if(NOT found)
     message(FATAL_ERROR "not installed: ${PREFIX}/lib/deploydyn/${module}.so")

@@ -1,55 +1,85 @@
 #pragma once
 // The share of each member that the other members hide from the sun (docs/theory.md, "Shadows
-// between members"), by ray casting with Embree (Debian libembree-dev, the one file that
-// includes it is member_shadows.cpp). Runs reach it through the Embree module
-// (thermal/shadow_caster.hpp), so that only runs with shadows load Embree.
+// between members").
 //
 // Each member is a cylinder of its section's outer radius r around its axis a → b. The sun sees
 // it as its silhouette, the strip of width 2r along the axis in the plane through the axis
-// normal to s⊥ (the sun's direction s less its component along the axis); that strip, a quad,
-// is what the ray caster holds of the member (Embree's quads: a third of the cost of its round
-// curves, measured; the cylinder's ends are flat). Samples at the centres of an n_along ×
-// n_across grid on the strip each cast a ray towards the sun; a ray that meets any other
-// member's strip is in shadow, its own strip is excluded (an occlusion filter). The shadowed
-// fraction
+// normal to s⊥ (the sun's direction s less its component along the axis); the cylinder's ends
+// are taken flat. Samples at the centres of an n_along × n_across grid on the strip each look
+// towards the sun; a sample is in shadow when its ray meets any other member's strip, and
 //
-//     f_sh = (rays in shadow) / (n_along · n_across)
+//     f_sh = (samples in shadow) / (n_along · n_across)
 //
 // is the share of the member's projected area A_proj = 2r L |sin θ| in shadow, with a sampling
 // error below one row or column of the grid at each shadow edge: |Δf| ≤ 1/n_across for an
 // edge along the member, 1/n_along across it. A member end-on to the sun (|sin θ| < 1e-9) has
 // no sunlit strip: f_sh = 0 (it absorbs no direct light anyway), and it casts no shadow.
+//
+// The rays are parallel, so they are traced in the sun's view (docs/theory.md, "Tracing the rays
+// in the sun's view"): projected along s onto a plane normal to it every strip is a rectangle, a
+// sample's ray meets another member's strip exactly when the sample's projection lies in that
+// rectangle and the strip there is nearer the sun, and a uniform grid of the rectangles' bounding
+// boxes in that plane gives each member the few others that can shade it.
 
 #include <Eigen/Core>
-#include <memory>
+
+#include <cstdint>
 #include <span>
 #include <vector>
 
-#include "deploydyn/thermal/shadow_caster.hpp"
-
 namespace deploydyn::thermal {
 
-class MemberShadows final : public ShadowCaster {
+// One member's axis in the current configuration and its outer radius.
+struct MemberCapsule {
+  Eigen::Vector3d end_a_m = Eigen::Vector3d::Zero();
+  Eigen::Vector3d end_b_m = Eigen::Vector3d::Zero();
+  double radius_m = 0.0;
+};
+
+class MemberShadows {
  public:
-  // Throws std::invalid_argument for sample counts below 1, std::runtime_error when Embree
-  // cannot start.
+  // Throws std::invalid_argument for sample counts below 1.
   MemberShadows(int n_members, int samples_along, int samples_across);
-  ~MemberShadows() override;
-  MemberShadows(const MemberShadows&) = delete;
-  MemberShadows& operator=(const MemberShadows&) = delete;
 
   // The shadowed fraction of every member (in [0, 1]) of the structure `members` (as many as
-  // the constructor's n_members), lit from the unit direction `sun_direction` (towards the
-  // sun). Rebuilds the ray-casting hierarchy for the members' current positions.
+  // the constructor's n_members), lit from the direction `sun_direction` (towards the sun).
   void compute(std::span<const MemberCapsule> members, const Eigen::Vector3d& sun_direction,
-               std::span<double> shadowed_fraction) override;
+               std::span<double> shadowed_fraction);
 
  private:
-  struct Scene;
-  std::unique_ptr<Scene> scene_;
+  // A member's strip seen from the sun: the rectangle {a + ξ axis + η across, ξ ∈ [0, 1],
+  // |η| ≤ r} in the plane normal to s, and the depth towards the sun along its axis.
+  struct Silhouette {
+    Eigen::Vector2d a, axis, across;  // across: a unit vector ⟂ axis
+    double inverse_axis_squared = 0.0;
+    double radius = 0.0;
+    double depth_a = 0.0, depth_b = 0.0;  // x · s at the ends
+    Eigen::Vector2d box_min, box_max;     // the rectangle's bounding box
+  };
+  // Marks the samples of `lit` whose rays meet `occluder`'s strip at least `clearance` nearer
+  // the sun (sample_shadowed_); returns how many were not marked before.
+  int shade_samples(const Silhouette& lit, const Silhouette& occluder, double clearance);
+  struct CellRange {
+    std::int64_t x0, x1, y0, y1;
+  };
+  CellRange cells_of(const Silhouette& s) const;
+  std::size_t bucket_of(std::int64_t x, std::int64_t y) const;
+  void build_grid();
+
   int n_members_ = 0;
   int samples_along_ = 0;
   int samples_across_ = 0;
+  // Kept between updates: no allocation once the first has sized them.
+  std::vector<Silhouette> silhouettes_;
+  std::vector<int> lit_;  // members with a strip (not end-on to the sun)
+  // The grid: the cells hashed to bucket b hold cell_members_[cell_start_[b] .. cell_start_[b + 1]).
+  Eigen::Vector2d grid_origin_ = Eigen::Vector2d::Zero();
+  double cell_size_ = 1.0, inverse_cell_size_ = 1.0;
+  std::int64_t cells_across_ = 1;  // along the view's first axis
+  std::vector<double> extents_;    // of the members' boxes, for the median
+  std::vector<int> cell_start_, cell_members_;
+  std::vector<int> last_seen_by_;  // [member] → the member whose candidates last listed it
+  std::vector<char> sample_shadowed_;  // [c · n_along + i] of the member being lit
 };
 
 }  // namespace deploydyn::thermal

@@ -122,7 +122,7 @@ ThermalCoupling::ThermalCoupling(Model& model) : model_(model), dofs_(model) {
   if (environment.shadows) {
     shadow_every_steps_ = environment.shadows->every_steps;
     shadows_on_motion_ = environment.shadows->on_motion;
-    shadows_ = member_shadows_from_module(static_cast<int>(members_.size()), environment.shadows->samples_along,
+    shadows_ = std::make_unique<MemberShadows>(static_cast<int>(members_.size()), environment.shadows->samples_along,
                                                environment.shadows->samples_across);
     shadow_tolerance_m_ = std::numeric_limits<double>::infinity();
     for (const HeatedElement& member : members_) {

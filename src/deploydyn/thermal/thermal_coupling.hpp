@@ -7,7 +7,7 @@
 // interface, ΔT(t) = T − T_ref varying linearly from T_n to T_n+1 over the step
 // (ElementKind::set_element_temperature_change), as it sees a given ΔT(t) table.
 //
-// With `shadows` (docs/theory.md, "Shadows between members") it casts rays from every member
+// With `shadows` (docs/theory.md, "Shadows between members") it traces rays from every member
 // towards the sun at t = 0 and after every `every` accepted steps (thermal/member_shadows.hpp),
 // from the configuration reached; the steps between use the last shadowed fractions. With
 // `every: auto` after the accepted steps at which a member end has moved across the sun by more
@@ -35,7 +35,7 @@
 #include "deploydyn/solvers/step_hook.hpp"
 #include "deploydyn/thermal/conduction_network.hpp"
 #include "deploydyn/thermal/member_heat_balance.hpp"
-#include "deploydyn/thermal/shadow_caster.hpp"
+#include "deploydyn/thermal/member_shadows.hpp"
 #include "deploydyn/thermal/section_temperature_difference.hpp"
 
 namespace deploydyn::thermal {
@@ -133,7 +133,7 @@ class ThermalCoupling final : public StepHook {
   OutputCallback on_output_;
   std::optional<ConductionNetwork> conduction_;  // when the environment asks for conduction
 
-  std::unique_ptr<ShadowCaster> shadows_;   // when the environment asks for shadows
+  std::unique_ptr<MemberShadows> shadows_;  // when the environment asks for shadows
   int shadow_every_steps_ = 1;
   bool shadows_on_motion_ = false;          // every: auto
   double shadow_tolerance_m_ = 0.0;         // δ of every: auto

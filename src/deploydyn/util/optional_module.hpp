@@ -9,7 +9,6 @@
 //   module            library       loaded when
 //   deploydyn_hdf5    HDF5          a run writes history.h5 (`output: {hdf5: true}`)
 //   deploydyn_mpi     Open MPI      `deploydyn study` was started by mpirun
-//   deploydyn_embree  Embree, TBB   an environment casts shadows between members
 //   deploydyn_umfpack UMFPACK (CHOLMOD, LAPACK, BLAS, gfortran)   `linear_solver: umfpack`
 //
 // Each module holds its own copy of the class it offers, from the static library, where the
