@@ -192,12 +192,23 @@ class ModeSwitchingStep {
       ++switches;
       switched = true;
       used_ = next.history;
+      // Newton of the retake starts where the last attempt converged: the same equations, only
+      // the switched hinges' terms changed (docs/theory.md, "Hinges").
+      attempt_q_.swap(next.q);
+      attempt_lambda_.swap(next.lambda);
       next = state;
       next.history = used_;
       modes_ = next.history;
       const int before = result.iterations;
-      result = integrator_.step(h, system_, next);
+      result = integrator_.step_from(h, system_, next, attempt_q_, attempt_lambda_);
       result.iterations += before;
+      if (!result.converged) {  // as before: from the predictor, before the step counts as failed
+        const int warm = result.iterations;
+        next = state;
+        next.history = used_;
+        result = integrator_.step(h, system_, next);
+        result.iterations += warm;
+      }
     }
     if (result.converged && switched && dynamic_) {
       modes_ = next.history;
@@ -244,6 +255,7 @@ class ModeSwitchingStep {
   Eigen::VectorXd used_;    // the modes an attempt ran with
   Eigen::VectorXd modes_;   // modes()
   Eigen::VectorXd lambda_;  // the step's multipliers, kept through the projection
+  Eigen::VectorXd attempt_q_, attempt_lambda_;  // where the last attempt converged
   std::vector<ElementEvent> events_;
   std::vector<int> groups_;  // [event] → its group
 };

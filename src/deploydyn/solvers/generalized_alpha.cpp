@@ -130,11 +130,23 @@ GeneralizedAlphaIntegrator::GeneralizedAlphaIntegrator(const Assembler& assemble
 GeneralizedAlphaIntegrator::~GeneralizedAlphaIntegrator() = default;
 
 NewtonResult GeneralizedAlphaIntegrator::step(double h, LinearSystem& system, MotionState& state) {
-  const GeneralizedAlphaCoefficients& c = coefficients_;
   equations_->start(state, h);
   // Start Newton from the constant-acceleration guess q_n + h q̇_n + ½ h² a_n.
   q_ = state.q + h * state.v + (0.5 * h * h) * state.pseudo_a;
   lambda_ = state.lambda;
+  return solve(h, system, state);
+}
+
+NewtonResult GeneralizedAlphaIntegrator::step_from(double h, LinearSystem& system, MotionState& state,
+                                                   const Eigen::VectorXd& q, const Eigen::VectorXd& lambda) {
+  equations_->start(state, h);
+  q_ = q;
+  lambda_ = lambda;
+  return solve(h, system, state);
+}
+
+NewtonResult GeneralizedAlphaIntegrator::solve(double h, LinearSystem& system, MotionState& state) {
+  const GeneralizedAlphaCoefficients& c = coefficients_;
   NewtonResult result = newton_.solve(*equations_, system, q_, lambda_);
   if (!result.converged) return result;
 

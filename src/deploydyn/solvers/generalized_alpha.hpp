@@ -44,6 +44,9 @@ class GeneralizedAlphaIntegrator final : public TimeIntegrator {
   // Advances `state` by h. On failure `state` is left at the start of the step. Reuses its
   // work vectors: after the first step, a step allocates nothing.
   NewtonResult step(double h, LinearSystem& system, MotionState& state) override;
+  // The step with Newton started at (q, λ) (TimeIntegrator::step_from).
+  NewtonResult step_from(double h, LinearSystem& system, MotionState& state, const Eigen::VectorXd& q,
+                         const Eigen::VectorXd& lambda) override;
 
   // Estimate of the local error in q of the step that led to `state` from `before`:
   // ‖h² (β − 1/6) (a_{n+1} − a_n)‖∞ (m), the gap to a third-order Taylor step
@@ -60,6 +63,9 @@ class GeneralizedAlphaIntegrator final : public TimeIntegrator {
   GeneralizedAlphaCoefficients coefficients_;
   std::unique_ptr<GeneralizedAlphaEquations> equations_;
   NewtonSolver newton_;
+  // Newton from q_, lambda_ (set by the caller), then the update of `state`.
+  NewtonResult solve(double h, LinearSystem& system, MotionState& state);
+
   Eigen::VectorXd q_, lambda_, pseudo_a_;  // the step's iterate, kept for their storage
 };
 

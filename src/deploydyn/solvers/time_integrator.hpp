@@ -23,6 +23,16 @@ class TimeIntegrator {
 
   // Advances `state` by h. On failure `state` may be left anywhere; the caller keeps a copy.
   virtual NewtonResult step(double h, LinearSystem& system, MotionState& state) = 0;
+  // The same step again, its Newton started at (q, λ) instead of the scheme's predictor: a
+  // step retaken with other modes from the last attempt's converged iterate, which the modes
+  // that switched move only locally (docs/theory.md, "Hinges"). The equations are the step's,
+  // so the solution is the same to Newton's tolerance. Default: step() (a scheme whose Newton
+  // takes no starting point).
+  virtual NewtonResult step_from(double h, LinearSystem& system, MotionState& state, const Eigen::VectorXd& q,
+                                 const Eigen::VectorXd& lambda) {
+    (void)q, (void)lambda;
+    return step(h, system, state);
+  }
   // Estimate of the local error in q (m) of the step that led to `after` from `before`; 0 for
   // a scheme without one (adaptive stepping then only cuts steps that fail).
   virtual double local_error(double h, const MotionState& before,
