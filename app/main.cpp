@@ -484,18 +484,29 @@ int main(int argc, char** argv) {
   bool list_all = false;
   check->add_flag("--all", list_all, "List every node, element, joint and driver name (else the first few of each)");
 
+  // A light start (docs/performance.md, 2026-11-29): a run, a check or --version (answered as soon
+  // as it is read) builds only run's and check's options; the other seven commands' only when the
+  // first word may name them or asks for the help that lists them.
+  const std::string first_word = argc > 1 ? argv[1] : "";
+  const bool every_command = first_word != "run" && first_word != "check" && first_word != "--version";
   cli::GenerateArguments generate_arguments;
-  CLI::App* generate = cli::add_generate_command(app, generate_arguments);
   cli::StudyArguments study_arguments;
-  CLI::App* study = cli::add_study_command(app, study_arguments);
   cli::ModesArguments modes_arguments;
-  CLI::App* modes = cli::add_modes_command(app, modes_arguments);
   cli::WindowArguments window_arguments;
-  CLI::App* window = cli::add_window_command(app, window_arguments);
   cli::ReportArguments report_arguments;
-  CLI::App* report = cli::add_report_command(app, report_arguments);
-  CLI::App* plot = cli::add_plot_command(app);
-  CLI::App* animate = cli::add_animate_command(app);
+  CLI::App *generate = nullptr, *study = nullptr, *modes = nullptr, *window = nullptr, *report = nullptr,
+           *plot = nullptr, *animate = nullptr;
+  if (every_command) {
+    generate = cli::add_generate_command(app, generate_arguments);
+    study = cli::add_study_command(app, study_arguments);
+    modes = cli::add_modes_command(app, modes_arguments);
+    window = cli::add_window_command(app, window_arguments);
+    report = cli::add_report_command(app, report_arguments);
+    plot = cli::add_plot_command(app);
+    animate = cli::add_animate_command(app);
+  }
+  // Whether the command line chose that command (never one not built).
+  const auto chosen = [](const CLI::App* command) { return command != nullptr && command->parsed(); };
 
   // CLI11 would only say "a subcommand is required"; name the word it did not know instead.
   if (const std::string first = argc > 1 ? argv[1] : "-"; first[0] != '-' && first != "run" && first != "check" &&
@@ -514,16 +525,16 @@ int main(int argc, char** argv) {
 
   try {
     // Every command that computes for long stops on a signal the same way: at its next step.
-    if (*run || *modes || *window || *study) stop_on_signals();
+    if (*run || chosen(modes) || chosen(window) || chosen(study)) stop_on_signals();
     if (run->count("--at") > 0) restart.time_s = restart_at_s;
     if (*run) return run_command(model_file, out_dir, run->count("--out") > 0, force, sets, quiet, restart);
-    if (*generate) return cli::generate_command(generate_arguments);
-    if (*modes) return cli::modes_command(modes_arguments, g_stop);
-    if (*report) return cli::report_command(report_arguments);
-    if (*plot) return cli::run_plot_script("deploydyn_plot.py", plot->remaining());
-    if (*animate) return cli::run_plot_script("deploydyn_animate.py", animate->remaining());
-    if (*window) return cli::window_command(window_arguments, g_stop);
-    if (*study) return cli::study_command(study_arguments, g_stop);
+    if (chosen(generate)) return cli::generate_command(generate_arguments);
+    if (chosen(modes)) return cli::modes_command(modes_arguments, g_stop);
+    if (chosen(report)) return cli::report_command(report_arguments);
+    if (chosen(plot)) return cli::run_plot_script("deploydyn_plot.py", plot->remaining());
+    if (chosen(animate)) return cli::run_plot_script("deploydyn_animate.py", animate->remaining());
+    if (chosen(window)) return cli::window_command(window_arguments, g_stop);
+    if (chosen(study)) return cli::study_command(study_arguments, g_stop);
     return check_command(model_file, sets, list_all);
   } catch (const InputError& e) {
     print_error(e.what());
@@ -536,8 +547,8 @@ int main(int argc, char** argv) {
     return kExitBadInput;
   } catch (const std::bad_alloc&) {
     // No text may be allocated now: a fixed line, naming what the command was doing.
-    std::fputs(*study ? "error: out of memory while loading or running the study\n"
-               : *generate ? "error: out of memory while generating the model\n"
+    std::fputs(chosen(study) ? "error: out of memory while loading or running the study\n"
+               : chosen(generate) ? "error: out of memory while generating the model\n"
                            : "error: out of memory while loading or solving the model\n",
                stderr);
     return kExitSolverFailure;
