@@ -15,11 +15,12 @@
 // edge along the member, 1/n_along across it. A member end-on to the sun (|sin θ| < 1e-9) has
 // no sunlit strip: f_sh = 0 (it absorbs no direct light anyway), and it casts no shadow.
 //
-// The rays are parallel, so they are traced in the sun's view (docs/theory.md, "Tracing the rays
-// in the sun's view"): projected along s onto a plane normal to it every strip is a rectangle, a
-// sample's ray meets another member's strip exactly when the sample's projection lies in that
-// rectangle and the strip there is nearer the sun, and a uniform grid of the rectangles' bounding
-// boxes in that plane gives each member the few others that can shade it.
+// The rays are parallel, so they are traced in the sun's view (docs/theory.md, the same
+// section, "Tracing the rays in the sun's view"): projected along s onto a plane normal to it
+// every strip is a rectangle, a sample's ray meets another member's strip exactly when the
+// sample's projection lies in that rectangle and the strip there is nearer the sun, and a grid
+// of the rectangles' bounding boxes in that plane gives each member the few others that can
+// shade it. Tested against Embree's rays from the same samples (tests/support/ray_cast_shadows.hpp).
 
 #include <Eigen/Core>
 
