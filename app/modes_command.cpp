@@ -13,6 +13,7 @@
 #include "deploydyn/io/text_file.hpp"
 #include "deploydyn/runs/modes_to_folder.hpp"
 #include "deploydyn/runs/restart_from_folder.hpp"
+#include "deploydyn/thermal/thermal_coupling.hpp"
 #include "exit_codes.hpp"
 
 namespace deploydyn::cli {
@@ -59,8 +60,8 @@ CLI::App* add_modes_command(CLI::App& app, ModesArguments& arguments) {
 int modes_command(const ModesArguments& arguments, const std::atomic<bool>& stop) {
   Model model = load_model(arguments.model_file, parse_overrides(arguments.sets));
   if (model.environment) {
-    fmt::print(stderr, "warning: {}: modes do not use the model's environment: its members are at the reference "
-                       "temperature (ΔT = 0); `run` computes the environment's temperatures\n", arguments.model_file);
+    fmt::print(stderr, "{}: the modes are taken in the environment's steady temperature field at t = 0, the structure "
+                       "as the file places it; `run` follows the temperatures in time\n", arguments.model_file);
   }
   ModalSettings& modal = model.analysis.modal;
   if (model.analysis.type != AnalysisType::modal) {
@@ -80,7 +81,8 @@ int modes_command(const ModesArguments& arguments, const std::atomic<bool>& stop
   if (!arguments.hinges.empty()) start.hinges = kHingeHolds.find(arguments.hinges).value();
   start.from_folder = arguments.from_folder;
   // Hinge locks count when they hold (--hinges held or latched: the modal analysis checks again).
-  const Assembler assembler(model);
+  const thermal::SteadyModel steady(model, 0.0);  // run_modes_to_folder takes the same
+  const Assembler assembler(steady.model());
   const int n_equations = assembler.n_equations_in_force();
   if (const int n_free = assembler.n_dofs() - n_equations; modal.n_modes > n_free) {
     throw InputError(fmt::format("--count {}", modal.n_modes), 0, 0, "",

@@ -228,7 +228,9 @@ py::dict modes_in_memory(const LoadedModel& loaded, const py::object& stop, cons
   StopWatch watch(stop);
   std::vector<double> rows;
   const ModalRun run = watch.run([&] {
-    const Assembler assembler(loaded.model);  // std::invalid_argument → ValueError
+    // With an environment: in its steady field at t = 0, as `deploydyn modes`.
+    const thermal::SteadyModel steady(loaded.model, 0.0);
+    const Assembler assembler(steady.model());  // std::invalid_argument → ValueError
     std::optional<RestartState> kept;
     if (restart.restart()) kept = restart_state_for(loaded.model, assembler, restart);
     int n_frames = 0;
@@ -515,10 +517,8 @@ py::dict continuation_of(const LoadedModel& loaded, const std::string& parameter
                                 parameter + "'");
   }
   // A model with an environment is traced in its steady temperature field at `time_s`.
-  const std::optional<Model> settled =
-      loaded.model.environment ? std::optional(thermal::with_steady_temperatures(loaded.model, time_s)) : std::nullopt;
-  const Model& traced = settled ? *settled : loaded.model;
-  const Assembler assembler(traced);  // std::invalid_argument → ValueError
+  const thermal::SteadyModel traced(loaded.model, time_s);
+  const Assembler assembler(traced.model());  // std::invalid_argument → ValueError
   ContinuationOptions options;
   options.parameter = *path_parameter;
   options.start = start;
@@ -537,7 +537,7 @@ py::dict continuation_of(const LoadedModel& loaded, const std::string& parameter
   options.stop = watch.flag();  // ends the path "stopped", keeping its points
   // At each point as it is reached (the elements' history in force), history.csv's columns as
   // path.csv holds them (results/path_quantities.hpp).
-  const PathQuantities quantities(traced);
+  const PathQuantities quantities(traced.model());
   const ParametrizedEquilibrium at_point(assembler, options.parameter, options.time_s);
   std::vector<double> rows;
   options.on_point = [&](const PathPoint& p, const PathEvent* /*event*/) {
@@ -610,7 +610,9 @@ py::dict continuation_of(const LoadedModel& loaded, const std::string& parameter
 // that state's time (`times` then holds that time), as `deploydyn modes --hinges/--from`.
 py::dict modes_at(const LoadedModel& loaded, int n_modes, std::vector<double> times, const py::object& stop,
                   const std::string& hinges, const std::optional<std::filesystem::path>& from_folder) {
-  const Assembler assembler(loaded.model);  // std::invalid_argument → ValueError
+  // With an environment: in its steady field at t = 0, as `deploydyn modes`.
+  const thermal::SteadyModel steady(loaded.model, 0.0);
+  const Assembler assembler(steady.model());  // std::invalid_argument → ValueError
   const std::optional<HingeHold> hold = kHingeHolds.find(hinges);
   if (!hold) throw std::invalid_argument("Model.modes: hinges must be 'free', 'held' or 'latched', not '" + hinges + "'");
   const HingeHold hinge_hold = *hold;

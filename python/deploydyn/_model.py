@@ -292,7 +292,9 @@ class Model:
         hinges of a spring-driven structure, as `deploydyn modes --hinges`: "free" (as they are),
         "held" (every hinge with a spring, latch, stop or friction held at its initial angle, the
         stowed structure) or "latched" (every latch locked at its latch angle, the deployed
-        structure); docs/theory.md, "Modes of stowed and deployed states". from_: a result folder
+        structure); docs/theory.md, "Modes of stowed and deployed states". A model with an
+        `environment` has its modes in the environment's steady temperature field at t = 0
+        (docs/theory.md, "The steady field of an environment"). from_: a result folder
         of a run of this model, as `deploydyn modes --from`: the modes of the last state it kept
         (its positions, time and hinge modes), at that state's time ("times"); `at` and
         `hinges` are then not used."""

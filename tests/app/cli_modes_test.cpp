@@ -2,9 +2,13 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
 #include <fstream>
 #include <sstream>
 #include <string>
+#include <vector>
 
 #include "support/cli.hpp"
 
@@ -83,13 +87,67 @@ TEST(ModesCommand, SaysWhenAnEquilibriumIsUnstable) {
   EXPECT_NE(outcome.output.find("unstable (ω² < 0)"), std::string::npos) << outcome.output;
 }
 
-// The environment's temperatures are computed in time by `run`; modes and the window use given
-// ΔT only, and say so rather than ignore the environment silently.
-TEST(ModesCommand, ModesAndWindowSayTheyDoNotUseTheEnvironment) {
+// The ω² column of `modes`' table, in the order printed.
+std::vector<double> printed_omega2(const std::string& output) {
+  std::vector<double> omega2;
+  std::istringstream lines(output);
+  for (std::string line; std::getline(lines, line);) {
+    std::istringstream fields(line);
+    double t = 0.0, w2 = 0.0;
+    int mode = 0;
+    if (fields >> t >> mode >> w2) omega2.push_back(w2);
+  }
+  return omega2;
+}
+
+// The modes of a model with an environment are those of its steady field at t = 0 (docs/theory.md,
+// "The steady field of an environment"): a steel string of two tubes pinned at both ends,
+// broadside to the sun in orbit, settles at T*⁴ = α_s S/(ε σ π) + T_sink⁴ (263 K, below
+// T_ref: in tension), and its modes equal those of the same string at the given ΔT = T* − T_ref,
+// not those at ΔT = 0.
+TEST(ModesCommand, ModesOfAnEnvironmentModelAreThoseOfItsSteadyField) {
+  const ScratchFolder folder("modes_environment");
+  std::filesystem::create_directories(folder.path());
+  const double steady_K = std::pow(0.5 * 1361.0 / (0.8 * 5.670374419e-8 * M_PI) + 81.0, 0.25);
+  const auto write = [&](const std::string& name, const std::string& load) {
+    const std::filesystem::path file = folder.path() / name;
+    std::ofstream(file) << R"(name: sunlit string
+nodes: {A: [0, 0, 0], M: [0.5, 0, 0], B: [1, 0, 0]}
+materials:
+  steel: {E: 2.0e11, alpha: 1.2e-5, density: 7850, specific_heat: 490, absorptivity: 0.5, emissivity: 0.8}
+sections: {tube: {shape: circular_tube, outer_diameter: 0.02, wall_thickness: 0.001}}
+elements:
+  left: {nodes: [A, M], section: tube, material: steel}
+  right: {nodes: [M, B], section: tube, material: steel}
+supports: [{node: A}, {node: B}]
+)" << load << "\nanalysis: {type: static, end: 1, step: 0.5}\n";
+    return file.string();
+  };
+  const auto in_the_sun =
+      run_cli("modes " + write("sun.yaml", "environment: {type: orbit, sun_direction: [0, 0, 1], reference_temperature: 293.15}") +
+              " --count 3");
+  ASSERT_EQ(in_the_sun.exit_code, 0) << in_the_sun.output;
+  EXPECT_NE(in_the_sun.output.find("steady"), std::string::npos) << in_the_sun.output;
+  const auto given = run_cli("modes " + write("given.yaml", "thermal: {dT: " + std::to_string(steady_K - 293.15) + "}") +
+                             " --count 3");
+  ASSERT_EQ(given.exit_code, 0) << given.output;
+  const auto cold = run_cli("modes " + write("cold.yaml", "thermal: {dT: 0}") + " --count 3");
+  ASSERT_EQ(cold.exit_code, 0) << cold.output;
+  const std::vector<double> sun = printed_omega2(in_the_sun.output), at_dT = printed_omega2(given.output),
+                            at_zero = printed_omega2(cold.output);
+  ASSERT_EQ(sun.size(), 3u) << in_the_sun.output;
+  ASSERT_EQ(at_dT.size(), 3u) << given.output;
+  ASSERT_EQ(at_zero.size(), 3u) << cold.output;
+  // The lowest two: the string's sideways modes, their stiffness the tension's alone.
+  EXPECT_NEAR(sun[0], at_dT[0], 1e-5 * at_dT[0]);  // the table prints 8 digits
+  EXPECT_NEAR(sun[1], at_dT[1], 1e-5 * at_dT[1]);
+  EXPECT_NEAR(sun[2], at_dT[2], 1e-5 * at_dT[2]);
+  EXPECT_GT(sun[0], 100.0 * std::max(std::abs(at_zero[0]), 1e-3));  // untensioned, sideways is free
+}
+
+// The uniform window uses given ΔT only, and says so rather than ignore the environment silently.
+TEST(ModesCommand, TheUniformWindowSaysItDoesNotUseTheEnvironment) {
   const std::string model = std::string(DEPLOYDYN_SOURCE_DIR) + "/examples/thermal/boom_out_of_eclipse.yaml";
-  const auto modes = run_cli("modes " + model + " --count 1");
-  EXPECT_EQ(modes.exit_code, 0) << modes.output;
-  EXPECT_NE(modes.output.find("modes do not use the model's environment"), std::string::npos) << modes.output;
   const auto without = run_cli("modes " + example_path("parallel.yaml") + " --count 1");
   EXPECT_EQ(without.output.find("environment"), std::string::npos) << without.output;
   const ScratchFolder folder("window_environment");

@@ -21,6 +21,7 @@
 #include "deploydyn/runs/run_folder.hpp"
 #include "deploydyn/solvers/hinge_poses.hpp"
 #include "deploydyn/solvers/step_record.hpp"
+#include "deploydyn/thermal/thermal_coupling.hpp"
 #include "deploydyn/output/summary_writer.hpp"
 #include "deploydyn/output/vtk_writer.hpp"
 
@@ -148,7 +149,7 @@ namespace {
 class ModesRun final : public FolderRun {
  public:
   ModesRun(const Model& model, EachModes each, const ModesStart& start)
-      : assembler_(model), each_(std::move(each)), start_(start) {  // may throw before any file is touched
+      : steady_(model, 0.0), assembler_(steady_.model()), each_(std::move(each)), start_(start) {  // may throw before any file is touched
     if (!start.from_folder.empty()) kept_ = restart_state_for(model, assembler_, RestartOptions{start.from_folder, std::nullopt, false});
   }
 
@@ -198,6 +199,9 @@ class ModesRun final : public FolderRun {
  private:
   const Model& model() const { return assembler_.model(); }
 
+  // With an environment: the modes in its steady field at t = 0 (docs/theory.md, "The steady
+  // field of an environment").
+  thermal::SteadyModel steady_;
   Assembler assembler_;
   EachModes each_;
   ModesStart start_;

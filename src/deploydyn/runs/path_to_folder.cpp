@@ -163,9 +163,9 @@ class PathRun final : public FolderRun {
   // The path's verdict is left in `verdict` when given. A model with an environment is traced
   // in its steady temperature field at t = 0 (docs/theory.md, "The steady field of an environment").
   PathRun(const Model& given, std::optional<Verdict>* verdict)
-      : settled_(given.environment ? std::optional(thermal::with_steady_temperatures(given, 0.0)) : std::nullopt),
+      : settled_(given, 0.0),
         wall_start_(std::chrono::steady_clock::now()),
-        assembler_(settled_ ? *settled_ : given),  // may throw before any file is touched
+        assembler_(settled_.model()),  // may throw before any file is touched
         verdict_(verdict),
         watch_(assembler_.model()) {
     if (const std::string why = spring_driven_limit(given, "a continuation"); !why.empty()) {
@@ -266,7 +266,7 @@ class PathRun final : public FolderRun {
     return record;
   }
 
-  std::optional<Model> settled_;  // with an environment: the model in its steady field
+  thermal::SteadyModel settled_;  // with an environment: the model in its steady field
   std::chrono::steady_clock::time_point wall_start_;
   Assembler assembler_;
   ContinuationResult result_;

@@ -159,4 +159,24 @@ class ThermalCoupling final : public StepHook {
 // take a given field (`window --load model`).
 Model with_steady_temperatures(const Model& model, double time_s);
 
+// The model an analysis of equilibria (continuation, the window's `model` load, modes) takes:
+// `given` itself, or, when it has an environment, its copy in the environment's steady field at
+// `time_s` (with_steady_temperatures; docs/theory.md, "The steady field of an environment").
+// Holds the copy: not to be copied or moved, so that model() stays where it is.
+class SteadyModel {
+ public:
+  SteadyModel(const Model& given, double time_s)
+      : given_(&given), settled_(given.environment ? std::optional(with_steady_temperatures(given, time_s)) : std::nullopt) {}
+  SteadyModel(const SteadyModel&) = delete;
+  SteadyModel& operator=(const SteadyModel&) = delete;
+
+  const Model& model() const { return settled_ ? *settled_ : *given_; }
+  // Whether the temperatures are the environment's steady field.
+  bool settled() const { return settled_.has_value(); }
+
+ private:
+  const Model* given_;
+  std::optional<Model> settled_;
+};
+
 }  // namespace deploydyn::thermal
