@@ -5,7 +5,7 @@ import numpy as np
 import pytest
 
 import deploydyn
-from conftest import run_cli
+from conftest import SOURCE_DIR, run_cli
 
 
 def oscillator(mass_kind, **analysis):
@@ -110,17 +110,7 @@ def test_modal_model_runs_in_memory_and_into_a_folder(tmp_path, mass_kind, share
     assert isinstance(model.modes(count=1)["omega2"], np.ndarray)
 
 
-SUNLIT_STRING = """name: sunlit string
-nodes: {A: [0, 0, 0], M: [0.5, 0, 0], B: [1, 0, 0]}
-materials:
-  steel: {E: 2.0e11, alpha: 1.2e-5, density: 7850, specific_heat: 490, absorptivity: 0.5, emissivity: 0.8}
-sections: {tube: {shape: circular_tube, outer_diameter: 0.02, wall_thickness: 0.001}}
-elements:
-  left: {nodes: [A, M], section: tube, material: steel}
-  right: {nodes: [M, B], section: tube, material: steel}
-supports: [{node: A}, {node: B}]
-analysis: {type: static, end: 1, step: 0.5}
-"""
+SUNLIT_STRING = SOURCE_DIR / "tests" / "thermal" / "models" / "sunlit_string.yaml"
 
 
 def test_the_modes_of_a_model_with_an_environment_are_those_of_its_steady_field(tmp_path):
@@ -132,7 +122,7 @@ def test_the_modes_of_a_model_with_an_environment_are_those_of_its_steady_field(
     for name, load in (("sun", "environment: {type: orbit, sun_direction: [0, 0, 1], reference_temperature: 293.15}"),
                        ("given", f"thermal: {{dT: {steady_K - 293.15!r}}}"), ("cold", "thermal: {dT: 0}")):
         files[name] = tmp_path / f"{name}.yaml"
-        files[name].write_text(SUNLIT_STRING + load + "\n")
+        files[name].write_text(SUNLIT_STRING.read_text() + load + "\n")
     sun, given, cold = (deploydyn.load(files[n]).modes(count=3)["omega2"][0] for n in ("sun", "given", "cold"))
     assert sun == pytest.approx(given, rel=1e-10)
     assert sun[0] > 100.0 * max(abs(cold[0]), 1e-3)  # untensioned, the string is free sideways

@@ -111,16 +111,8 @@ TEST(ModesCommand, ModesOfAnEnvironmentModelAreThoseOfItsSteadyField) {
   const double steady_K = std::pow(0.5 * 1361.0 / (0.8 * 5.670374419e-8 * M_PI) + 81.0, 0.25);
   const auto write = [&](const std::string& name, const std::string& load) {
     const std::filesystem::path file = folder.path() / name;
-    std::ofstream(file) << R"(name: sunlit string
-nodes: {A: [0, 0, 0], M: [0.5, 0, 0], B: [1, 0, 0]}
-materials:
-  steel: {E: 2.0e11, alpha: 1.2e-5, density: 7850, specific_heat: 490, absorptivity: 0.5, emissivity: 0.8}
-sections: {tube: {shape: circular_tube, outer_diameter: 0.02, wall_thickness: 0.001}}
-elements:
-  left: {nodes: [A, M], section: tube, material: steel}
-  right: {nodes: [M, B], section: tube, material: steel}
-supports: [{node: A}, {node: B}]
-)" << load << "\nanalysis: {type: static, end: 1, step: 0.5}\n";
+    std::ofstream(file) << read_text(std::string(DEPLOYDYN_SOURCE_DIR) + "/tests/thermal/models/sunlit_string.yaml")
+                        << load << "\n";
     return file.string();
   };
   const auto in_the_sun =
