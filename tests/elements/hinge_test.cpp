@@ -4,11 +4,15 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <bit>
+#include <cstdint>
+#include <numbers>
 #include <cmath>
 #include <string>
 #include <vector>
 
 #include "deploydyn/assembly/assembler.hpp"
+#include "deploydyn/constraints/hinge_angle.hpp"
 #include "deploydyn/elements/element_kinds.hpp"
 #include "deploydyn/elements/hinge/hinge_history.hpp"
 #include "deploydyn/elements/hinge/hinge_kind.hpp"
@@ -129,6 +133,98 @@ elements:
 joints: {pin: {type: pin, nodes: [B, C]}}
 supports: [{node: A, fix: [x, y, rotation]}]
 )");
+}
+
+// The hinge group keeps θ, ∇θ (∇²θ once asked for) of each hinge at its last two
+// configurations, shared by the forces, the iteration matrix and the step's end (hinge_group.cpp,
+// KinematicsLease). Through it, in an order that hits, evicts and revisits it (the matrix first
+// or the forces first, a point 1e-12 m away in one coordinate), forces and matrix are those of a
+// group that evaluates each point afresh, bit for bit.
+void check_shared_kinematics_match_fresh(const std::string& yaml) {
+  const Model model = load_model_from_string(yaml, "hinge");
+  const Assembler reused(model);
+  const ElementGroup& group = *reused.element_groups()[hinge_group_index()];
+  const int n = reused.n_dofs();
+  const Eigen::VectorXd v = Eigen::VectorXd::LinSpaced(n, 0.3, -0.7);
+  std::vector<double> history(static_cast<std::size_t>(switching(group).n_history()));
+  switching(group).initial_history(history);
+  history[hinge::history::kMode] = static_cast<double>(HingeMode::free);
+  history[hinge::history::kSlip] = 1.0;
+  std::vector<Eigen::VectorXd> points(3, reused.initial_coordinates());
+  for (int i = 0; i < n; ++i) {
+    points[0][i] += 0.05 * std::sin(1.0 + 3.0 * i);
+    points[1][i] += 0.04 * std::cos(2.0 + 5.0 * i);
+  }
+  points[2] = points[0];
+  points[2][n - 1] += 1e-12;  // B moves by 1e-12 m
+  const int order[] = {0, 0, 1, 0, 2, 1, 2, 0, 0};
+  for (std::size_t step = 0; step < std::size(order); ++step) {
+    const Eigen::VectorXd& q = points[static_cast<std::size_t>(order[step])];
+    Eigen::VectorXd f;
+    Eigen::MatrixXd m;
+    if (step % 2 == 0) {
+      f = hinge_force(group, n, q, v, history);
+      m = dense_block(group, n, q, v, history, 1.0, 0.7);
+    } else {
+      m = dense_block(group, n, q, v, history, 1.0, 0.7);
+      f = hinge_force(group, n, q, v, history);
+    }
+    const Assembler fresh(model);
+    const ElementGroup& fresh_group = *fresh.element_groups()[hinge_group_index()];
+    const Eigen::VectorXd f_fresh = hinge_force(fresh_group, n, q, v, history);
+    const Eigen::MatrixXd m_fresh = dense_block(fresh_group, n, q, v, history, 1.0, 0.7);
+    EXPECT_TRUE((f.array() == f_fresh.array()).all()) << "step " << step << "\n" << f.transpose() << "\n" << f_fresh.transpose();
+    EXPECT_TRUE((m.array() == m_fresh.array()).all()) << "step " << step << "\n" << m << "\n\n" << m_fresh;
+  }
+  // The near point is a point of its own: its force is not that of points[0] (which a memo
+  // that compared q to a tolerance would give).
+  const Eigen::VectorXd f0 = hinge_force(group, n, points[0], v, history);
+  const Eigen::VectorXd f2 = hinge_force(group, n, points[2], v, history);
+  EXPECT_FALSE((f0.array() == f2.array()).all());
+}
+
+TEST(Hinge, SharedKinematicsMatchFreshEvaluationBetweenBars2D) {
+  check_shared_kinematics_match_fresh(R"(
+nodes: {A: [-1, 0.1], H: [0, 0], B: [0.8, 0.5]}
+materials: {steel: {E: 2.0e11, alpha: 1.2e-5}}
+elements:
+  a: {nodes: [A, H], area: 1.0e-4, material: steel, mass: 1, dT: 40}
+  b: {nodes: [H, B], area: 1.0e-4, material: steel, mass: 1}
+  h: {type: hinge, nodes: [A, H, B], stiffness: 7, rest_angle: -2.0, damping: 0.3, friction: 0.2, pin_radius: 0.01}
+supports: [{node: A}]
+)");
+}
+
+TEST(Hinge, SharedKinematicsMatchFreshEvaluationBetweenBars3D) {
+  check_shared_kinematics_match_fresh(R"(
+nodes: {A: [-1, 0.1, 0.2], H: [0, 0, 0], B: [0.8, 0.5, -0.3]}
+materials: {steel: {E: 2.0e11, alpha: 1.2e-5}}
+elements:
+  a: {nodes: [A, H], area: 1.0e-4, material: steel, mass: 1, dT: -60}
+  b: {nodes: [H, B], area: 1.0e-4, material: steel, mass: 1}
+  h: {type: hinge, nodes: [A, H, B], axis: [0.2, 0.3, 1], stiffness: 7, rest_angle: -2.0, damping: 0.3,
+      friction: 0.2, pin_radius: 0.01}
+supports: [{node: A}]
+)");
+}
+
+// HingeAngle::wrapped skips std::remainder for |angle| < 2π: the same bits as remainder,
+// at the edges of its shortcuts (±π, ±2π, one ulp either side) and beyond them.
+TEST(Hinge, WrappedAngleIsRemainderBitForBit) {
+  const double pi = std::numbers::pi, turn = 2.0 * pi;
+  std::vector<double> angles = {0.0, -0.0, 1e-300, -1e-300, 0.3, -2.9, 4.0, -4.0, 6.2, -6.2, 7.0, -9.5, 20.0, -1e5};
+  for (const double edge : {pi, turn, 1.5 * turn, 0.5 * pi}) {
+    for (const double sign : {1.0, -1.0}) {
+      const double a = sign * edge;
+      angles.insert(angles.end(), {a, std::nextafter(a, 0.0), std::nextafter(a, 2.0 * a)});
+    }
+  }
+  for (int i = 0; i <= 4000; ++i) angles.push_back(-3.0 * turn + 6.0 * turn * i / 4000.0);
+  for (const double a : angles) {
+    const double expected = std::remainder(a, turn), got = HingeAngle::wrapped(a);
+    EXPECT_EQ(std::bit_cast<std::uint64_t>(got), std::bit_cast<std::uint64_t>(expected)) << fmt::format("{:a}", a);
+  }
+  EXPECT_TRUE(std::isnan(HingeAngle::wrapped(std::nan(""))));
 }
 
 // The results: the angle of the geometry, and the spring's torque k (θ_r − θ) in the opening

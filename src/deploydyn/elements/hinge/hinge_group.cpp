@@ -1,7 +1,11 @@
 #include "deploydyn/elements/hinge/hinge_group.hpp"
 
 #include <algorithm>
+#include <array>
+#include <atomic>
+#include <bit>
 #include <cmath>
+#include <cstdint>
 #include <numbers>
 
 #include "deploydyn/elements/hinge/hinge_contact.hpp"
@@ -67,6 +71,7 @@ class HingeGroup final : public ElementGroup, public SwitchingGroup {
       if (records_[i].element->has_lock()) lock_index_[i] = n_locks++;
     }
     sites_.resize(records_.size());
+    kinematics_.resize(records_.size());
     for (std::size_t i = 0; i < records_.size(); ++i) {
       const HingeElement& e = *records_[i].element;
       if (e.stop_contact.compliant()) {
@@ -83,10 +88,11 @@ class HingeGroup final : public ElementGroup, public SwitchingGroup {
   int n_rigid_body_conditions() const override { return 0; }
 
   void add_internal_force(const EvaluationPoint& at, Eigen::VectorXd& f) const override {
+    KinematicsLease lease(*this);
     for (std::size_t i = 0; i < records_.size(); ++i) {
       const HingeRecord& r = records_[i];
       if (r.element->stiffness_Nm_per_rad == 0.0 && sites_[i].empty()) continue;
-      const HingeKinematics k = r.angle_and_gradient(r.gather(at.q));
+      const HingeKinematics& k = lease.at(i, r.gather(at.q), false);
       double torque = spring_torque(r, k.angle_rad);
       if (!sites_[i].empty()) torque += contact_torques(i, history_of(at.history, static_cast<int>(i)), k.angle_rad, 0.0).elastic;
       scatter(r, torque * k.gradient, f);
@@ -149,12 +155,13 @@ class HingeGroup final : public ElementGroup, public SwitchingGroup {
   //   friction f = s μ r |N| ∇θ:  ∂f/∂q = s μ r (∇θ ∇|N|ᵀ + |N| ∇²θ)
   void add_iteration_matrix(const EvaluationPoint& at, const TangentWeights& w, std::span<double> values,
                             const int*& slot) const override {
+    KinematicsLease lease(*this);
     for (std::size_t i = 0; i < records_.size(); ++i) {
       const HingeRecord& r = records_[i];
       const HingeElement& e = *r.element;
       const int n = r.n_dofs();
       const HingeVector q_local = r.gather(at.q);
-      const HingeKinematics k = r.kinematics(q_local);
+      const HingeKinematics& k = lease.at(i, q_local, true);
       HingeMatrix m = HingeMatrix::Zero(n, n);
       if (e.stiffness_Nm_per_rad != 0.0) {
         m += (w.stiffness * e.stiffness_Nm_per_rad) *
@@ -197,12 +204,13 @@ class HingeGroup final : public ElementGroup, public SwitchingGroup {
     });
   }
   void add_rate_force(const EvaluationPoint& at, Eigen::VectorXd& f) const override {
+    KinematicsLease lease(*this);
     for (std::size_t i = 0; i < records_.size(); ++i) {
       const HingeRecord& r = records_[i];
       const bool slides = sliding(i, at);
       if (r.element->damping_Nms_per_rad == 0.0 && !slides && sites_[i].empty()) continue;
       const HingeVector q_local = r.gather(at.q);
-      const HingeKinematics k = r.angle_and_gradient(q_local);
+      const HingeKinematics& k = lease.at(i, q_local, false);
       const double slip = slides ? hinge_state(at.history, i).slip : 0.0;
       const HingeVector rates = r.gather(*at.rates);
       const HingeTorques torques = rate_torques(r, k, q_local, rates, at.t, slip);
@@ -273,19 +281,20 @@ class HingeGroup final : public ElementGroup, public SwitchingGroup {
   StepVerdict end_step(const StepEnds& ends, std::span<const double> before, std::span<double> after,
                        std::vector<ElementEvent>& events) const override {
     std::copy(before.begin(), before.end(), after.begin());
+    KinematicsLease lease(*this);  // θ at the step's two ends, shared by the three below
     // First the switches: a latch or stop reached, a sliding hinge come to rest, a lock that
     // lets go. Any of them: the step again with the new modes, nothing else written.
     bool switched = false;
     for (std::size_t i = 0; i < records_.size() && ends.may_switch; ++i) {
-      switched |= switch_mode(i, ends, before.subspan(i * kHistorySlots, kHistorySlots),
+      switched |= switch_mode(lease, i, ends, before.subspan(i * kHistorySlots, kHistorySlots),
                               after.subspan(i * kHistorySlots, kHistorySlots), events);
     }
     if (switched) return StepVerdict::redo;
     for (std::size_t i = 0; i < records_.size(); ++i) {
-      accumulate(i, ends, before.subspan(i * kHistorySlots, kHistorySlots),
+      accumulate(lease, i, ends, before.subspan(i * kHistorySlots, kHistorySlots),
                  after.subspan(i * kHistorySlots, kHistorySlots));
       if (!sites_[i].empty()) {
-        track_contacts(i, ends, before.subspan(i * kHistorySlots, kHistorySlots),
+        track_contacts(lease, i, ends, before.subspan(i * kHistorySlots, kHistorySlots),
                        after.subspan(i * kHistorySlots, kHistorySlots), events);
       }
     }
@@ -331,6 +340,75 @@ class HingeGroup final : public ElementGroup, public SwitchingGroup {
 
 
  private:
+  // θ, ∇θ (∇²θ once asked for) of each hinge at its last two configurations. The residual's
+  // internal and rate forces, the iteration matrix at the same q, the step's end (q before and
+  // after, in three places) and the energy balance's rate force each evaluated them afresh:
+  // 5.1–5.3 × the bars' cost per step (docs/performance.md, "Hinges and cables at scale").
+  // A memo of a pure function of the hinge's q (compared bit for bit), so results are the same
+  // bit for bit. One thread at a time: a call that finds it taken (records are built on the
+  // writer thread, the residual's internal forces on a helper thread) evaluates without it.
+  struct CachedKinematics {
+    HingeVector q;
+    HingeKinematics k;
+    bool valid = false;
+    bool with_hessian = false;
+  };
+  struct KinematicsSlots {
+    std::array<CachedKinematics, 2> entries;
+    int newest = 0;
+  };
+  class KinematicsLease {
+   public:
+    explicit KinematicsLease(const HingeGroup& group)
+        : group_(group), owned_(!group.kinematics_in_use_.test_and_set(std::memory_order_acquire)) {}
+    ~KinematicsLease() {
+      if (owned_) group_.kinematics_in_use_.clear(std::memory_order_release);
+    }
+    KinematicsLease(const KinematicsLease&) = delete;
+    KinematicsLease& operator=(const KinematicsLease&) = delete;
+    // Hinge i's θ, ∇θ at its local q, with ∇²θ when `hessian`; valid until the next call but
+    // one (no copy: a copy of ∇²θ cost as much as the memo saved).
+    const HingeKinematics& at(std::size_t i, const HingeVector& q, bool hessian) {
+      const HingeRecord& r = group_.records_[i];
+      if (!owned_) {
+        scratch_index_ = 1 - scratch_index_;
+        return scratch_[scratch_index_] = hessian ? r.kinematics(q) : r.angle_and_gradient(q);
+      }
+      KinematicsSlots& slots = group_.kinematics_[i];
+      for (int e = 0; e < 2; ++e) {
+        CachedKinematics& c = slots.entries[static_cast<std::size_t>(e)];
+        if (!c.valid || !same_bits(c.q, q)) continue;
+        if (hessian && !c.with_hessian) {
+          c.k.hessian = r.angle_hessian(q);
+          c.with_hessian = true;
+        }
+        slots.newest = e;
+        return c.k;
+      }
+      slots.newest = 1 - slots.newest;  // the older entry makes room
+      CachedKinematics& c = slots.entries[static_cast<std::size_t>(slots.newest)];
+      c.q = q;
+      c.k = hessian ? r.kinematics(q) : r.angle_and_gradient(q);
+      c.valid = true;
+      c.with_hessian = hessian;
+      return c.k;
+    }
+
+   private:
+    static bool same_bits(const HingeVector& a, const HingeVector& b) {
+      if (a.size() != b.size()) return false;
+      for (Eigen::Index j = 0; j < a.size(); ++j) {
+        if (std::bit_cast<std::uint64_t>(a[j]) != std::bit_cast<std::uint64_t>(b[j])) return false;
+      }
+      return true;
+    }
+
+    const HingeGroup& group_;
+    bool owned_;
+    HingeKinematics scratch_[2];  // without the memo
+    std::size_t scratch_index_ = 0;
+  };
+
   // Without drivers a hinge starts held, or sticking when it has friction (static friction
   // holds it until its torque exceeds μ r |N|); with drivers, free.
   int initial_mode(const HingeRecord& r) const {
@@ -395,10 +473,11 @@ class HingeGroup final : public ElementGroup, public SwitchingGroup {
   // After an accepted step of hinge i: when a contact began (and a compliant latch caught), its
   // impact rate, its duration estimated from the step, and whether it is still resolved.
   // The duration from the step's impulse: I = ∫M dt / |Δδ̇| (trapezoid), π √(I/k).
-  void track_contacts(std::size_t i, const StepEnds& ends, std::span<const double> before, std::span<double> after,
+  void track_contacts(KinematicsLease& lease, std::size_t i, const StepEnds& ends, std::span<const double> before, std::span<double> after,
                       std::vector<ElementEvent>& events) const {
     const HingeRecord& r = records_[i];
-    const HingeKinematics k0 = r.angle_and_gradient(r.gather(ends.q_before)), k1 = r.angle_and_gradient(r.gather(ends.q_after));
+    const HingeKinematics& k0 = lease.at(i, r.gather(ends.q_before), false);
+    const HingeKinematics& k1 = lease.at(i, r.gather(ends.q_after), false);
     const double rate0 = k0.gradient.dot(r.gather(ends.v_before)), rate1 = k1.gradient.dot(r.gather(ends.v_after));
     const double t0 = ends.time_before_s, t1 = ends.time_after_s;
     bool touching = false;
@@ -433,7 +512,7 @@ class HingeGroup final : public ElementGroup, public SwitchingGroup {
   }
 
   // The switch of hinge i at the end of a step, if any, into `after` and `events`.
-  bool switch_mode(std::size_t i, const StepEnds& ends, std::span<const double> before,
+  bool switch_mode(KinematicsLease& lease, std::size_t i, const StepEnds& ends, std::span<const double> before,
                    std::span<double> after, std::vector<ElementEvent>& events) const {
     const HingeRecord& r = records_[i];
     const HingeElement& e = *r.element;
@@ -446,8 +525,8 @@ class HingeGroup final : public ElementGroup, public SwitchingGroup {
       return true;
     };
     const HingeVector q1 = r.gather(ends.q_after);
-    const HingeKinematics k1 = r.angle_and_gradient(q1);
-    const HingeKinematics k0 = r.angle_and_gradient(r.gather(ends.q_before));
+    const HingeKinematics& k1 = lease.at(i, q1, false);
+    const HingeKinematics& k0 = lease.at(i, r.gather(ends.q_before), false);
     const double angle0 = k0.angle_rad, angle1 = k1.angle_rad;
     const double lock = lock_torque(i, mode, ends);
     switch (mode) {
@@ -501,13 +580,13 @@ class HingeGroup final : public ElementGroup, public SwitchingGroup {
   // Dissipated energy by the trapezoidal rule in θ, ½ (T_n + T_{n+1}) (θ_{n+1} − θ_n), of the
   // resisting damper, friction and lock torques; the lock torque and the sliding direction at
   // the step's end.
-  void accumulate(std::size_t i, const StepEnds& ends, std::span<const double> before,
+  void accumulate(KinematicsLease& lease, std::size_t i, const StepEnds& ends, std::span<const double> before,
                   std::span<double> after) const {
     const HingeRecord& r = records_[i];
     const auto mode = static_cast<HingeMode>(static_cast<int>(before[kMode]));
     const HingeVector q1 = r.gather(ends.q_after), v1 = r.gather(ends.v_after);
-    const HingeKinematics k1 = r.angle_and_gradient(q1);
-    const double angle0 = r.angle_and_gradient(r.gather(ends.q_before)).angle_rad;
+    const HingeKinematics& k1 = lease.at(i, q1, false);
+    const double angle0 = lease.at(i, r.gather(ends.q_before), false).angle_rad;
     const double slip = mode == HingeMode::free && r.element->friction_coefficient > 0.0 ? before[kSlip] : 0.0;
     const HingeTorques torques = rate_torques(r, k1, q1, v1, ends.time_after_s, slip);
     const double lock = lock_torque(i, mode, ends);
@@ -535,6 +614,8 @@ class HingeGroup final : public ElementGroup, public SwitchingGroup {
   bool driven_ = false;
   std::vector<int> lock_index_;  // [hinge] → its lock among make_switched_constraints(), −1 without
   std::vector<std::vector<ContactSite>> sites_;  // [hinge] → its compliant stops and latch
+  mutable std::vector<KinematicsSlots> kinematics_;  // [hinge], KinematicsLease
+  mutable std::atomic_flag kinematics_in_use_;
 };
 
 }  // namespace

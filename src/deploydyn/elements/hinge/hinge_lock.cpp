@@ -10,8 +10,10 @@ void HingeLock::evaluate(const EvaluationPoint& at, Eigen::Ref<Eigen::VectorXd> 
                          Eigen::Ref<Eigen::MatrixXd> jacobian) const {
   const HingeState s = state(at);
   if (s.mode == HingeMode::free) {
-    phi.setZero();
-    jacobian.setZero();
+    // A plain loop: Eigen's setZero on this 1 × n strided block was 5 % of a hinged chain's
+    // step (its locks are free after the first step, evaluated with every residual and matrix).
+    phi[0] = 0.0;
+    for (Eigen::Index c = 0; c < jacobian.cols(); ++c) jacobian(0, c) = 0.0;
     return;
   }
   const HingeKinematics k = record_.angle_and_gradient(record_.gather(at.q));

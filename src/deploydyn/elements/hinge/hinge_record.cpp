@@ -33,18 +33,16 @@ HingeKinematics HingeRecord::angle_and_gradient(const HingeVector& q) const {
   return k;
 }
 
+HingeMatrix HingeRecord::angle_hessian(const HingeVector& q) const {
+  if (element->form == HingeElement::Form::rotations) return HingeMatrix::Zero(2, 2);
+  const Eigen::Vector3d u = arm(q, dimension, 0), v = arm(q, dimension, 1);
+  if (dimension == 2) return geometry.hessian<2>(u, v);
+  return geometry.hessian<3>(u, v);
+}
+
 HingeKinematics HingeRecord::kinematics(const HingeVector& q) const {
   HingeKinematics k = angle_and_gradient(q);
-  if (element->form == HingeElement::Form::rotations) {
-    k.hessian = HingeMatrix::Zero(2, 2);
-    return k;
-  }
-  const Eigen::Vector3d u = arm(q, dimension, 0), v = arm(q, dimension, 1);
-  if (dimension == 2) {
-    k.hessian = geometry.hessian<2>(u, v);
-  } else {
-    k.hessian = geometry.hessian<3>(u, v);
-  }
+  k.hessian = angle_hessian(q);
   return k;
 }
 

@@ -67,6 +67,8 @@ struct HingeRecord {
   // more, and ∇²θ is most of a hinge's cost per residual (docs/performance.md, "Hinges and
   // cables at scale").
   HingeKinematics angle_and_gradient(const HingeVector& q) const;
+  // ∇²θ alone (what kinematics adds to angle_and_gradient).
+  HingeMatrix angle_hessian(const HingeVector& q) const;
   // At thermal factor 1 (friction acts in a run, not in a path in ΔT).
   PinForce pin_force(const HingeVector& q, double t) const;
 };
