@@ -97,8 +97,8 @@ void check_derivatives(const std::string& yaml) {
   (void)zero;
 }
 
-TEST(Hinge, ForceAndMatrixMatchFiniteDifferencesBetweenBars2D) {
-  check_derivatives(R"(
+// A hinge with a spring, a damper and friction between two bars, one of them heated.
+constexpr const char* kHingeBetweenBars2D = R"(
 nodes: {A: [-1, 0.1], H: [0, 0], B: [0.8, 0.5]}
 materials: {steel: {E: 2.0e11, alpha: 1.2e-5}}
 elements:
@@ -106,11 +106,8 @@ elements:
   b: {nodes: [H, B], area: 1.0e-4, material: steel, mass: 1}
   h: {type: hinge, nodes: [A, H, B], stiffness: 7, rest_angle: -2.0, damping: 0.3, friction: 0.2, pin_radius: 0.01}
 supports: [{node: A}]
-)");
-}
-
-TEST(Hinge, ForceAndMatrixMatchFiniteDifferencesBetweenBars3D) {
-  check_derivatives(R"(
+)";
+constexpr const char* kHingeBetweenBars3D = R"(
 nodes: {A: [-1, 0.1, 0.2], H: [0, 0, 0], B: [0.8, 0.5, -0.3]}
 materials: {steel: {E: 2.0e11, alpha: 1.2e-5}}
 elements:
@@ -119,7 +116,14 @@ elements:
   h: {type: hinge, nodes: [A, H, B], axis: [0.2, 0.3, 1], stiffness: 7, rest_angle: -2.0, damping: 0.3,
       friction: 0.2, pin_radius: 0.01}
 supports: [{node: A}]
-)");
+)";
+
+TEST(Hinge, ForceAndMatrixMatchFiniteDifferencesBetweenBars2D) {
+  check_derivatives(kHingeBetweenBars2D);
+}
+
+TEST(Hinge, ForceAndMatrixMatchFiniteDifferencesBetweenBars3D) {
+  check_derivatives(kHingeBetweenBars3D);
 }
 
 TEST(Hinge, ForceAndMatrixMatchFiniteDifferencesBetweenBeamNodes) {
@@ -184,28 +188,11 @@ void check_shared_kinematics_match_fresh(const std::string& yaml) {
 }
 
 TEST(Hinge, SharedKinematicsMatchFreshEvaluationBetweenBars2D) {
-  check_shared_kinematics_match_fresh(R"(
-nodes: {A: [-1, 0.1], H: [0, 0], B: [0.8, 0.5]}
-materials: {steel: {E: 2.0e11, alpha: 1.2e-5}}
-elements:
-  a: {nodes: [A, H], area: 1.0e-4, material: steel, mass: 1, dT: 40}
-  b: {nodes: [H, B], area: 1.0e-4, material: steel, mass: 1}
-  h: {type: hinge, nodes: [A, H, B], stiffness: 7, rest_angle: -2.0, damping: 0.3, friction: 0.2, pin_radius: 0.01}
-supports: [{node: A}]
-)");
+  check_shared_kinematics_match_fresh(kHingeBetweenBars2D);
 }
 
 TEST(Hinge, SharedKinematicsMatchFreshEvaluationBetweenBars3D) {
-  check_shared_kinematics_match_fresh(R"(
-nodes: {A: [-1, 0.1, 0.2], H: [0, 0, 0], B: [0.8, 0.5, -0.3]}
-materials: {steel: {E: 2.0e11, alpha: 1.2e-5}}
-elements:
-  a: {nodes: [A, H], area: 1.0e-4, material: steel, mass: 1, dT: -60}
-  b: {nodes: [H, B], area: 1.0e-4, material: steel, mass: 1}
-  h: {type: hinge, nodes: [A, H, B], axis: [0.2, 0.3, 1], stiffness: 7, rest_angle: -2.0, damping: 0.3,
-      friction: 0.2, pin_radius: 0.01}
-supports: [{node: A}]
-)");
+  check_shared_kinematics_match_fresh(kHingeBetweenBars3D);
 }
 
 // HingeAngle::wrapped skips std::remainder for |angle| < 2π: the same bits as remainder,
