@@ -125,9 +125,9 @@ void MemberShadows::build_grid() {
   }
   // The median, not the mean: a few long members (an arch's ties) must not coarsen the grid.
   std::nth_element(extents_.begin(), extents_.begin() + static_cast<std::ptrdiff_t>(extents_.size() / 2), extents_.end());
-  cell_size_ = std::max(extents_[extents_.size() / 2], 1e-12 * (1.0 + grid_origin_.cwiseAbs().maxCoeff()));
-  inverse_cell_size_ = 1.0 / cell_size_;
-  cells_across_ = static_cast<std::int64_t>(std::min((far_corner.x() - grid_origin_.x()) / cell_size_, 1e9)) + 1;
+  const double cell_size = std::max(extents_[extents_.size() / 2], 1e-12 * (1.0 + grid_origin_.cwiseAbs().maxCoeff()));
+  inverse_cell_size_ = 1.0 / cell_size;
+  cells_across_ = static_cast<std::int64_t>(std::min((far_corner.x() - grid_origin_.x()) / cell_size, 1e9)) + 1;
   std::size_t buckets = 16;
   while (buckets < 4 * lit_.size()) buckets *= 2;
 

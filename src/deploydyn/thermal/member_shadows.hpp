@@ -75,7 +75,7 @@ class MemberShadows {
   std::vector<int> lit_;  // members with a strip (not end-on to the sun)
   // The grid: the cells hashed to bucket b hold cell_members_[cell_start_[b] .. cell_start_[b + 1]).
   Eigen::Vector2d grid_origin_ = Eigen::Vector2d::Zero();
-  double cell_size_ = 1.0, inverse_cell_size_ = 1.0;
+  double inverse_cell_size_ = 1.0;  // 1 / the median member box's size
   std::int64_t cells_across_ = 1;  // along the view's first axis
   std::vector<double> extents_;    // of the members' boxes, for the median
   std::vector<int> cell_start_, cell_members_;
