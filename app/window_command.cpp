@@ -12,6 +12,7 @@
 #include "deploydyn/io/model_loader.hpp"
 #include "deploydyn/runs/window_folder.hpp"
 #include "deploydyn/solvers/deployability_window.hpp"
+#include "deploydyn/solvers/window_regimes.hpp"
 #include "exit_codes.hpp"
 
 namespace deploydyn::cli {
@@ -164,9 +165,10 @@ int window_command(const WindowArguments& arguments, const std::atomic<bool>& st
   fmt::print("{}\n{}\n", side_line("cold", window.cold, level), side_line("hot", window.hot, level));
   std::string previous;
   const double step = window_regime_step(options);
+  const WindowRegimes regimes(window);
   for (int i = 0; lo + i * step <= hi + 1e-9 * step; ++i) {
     const double dT = lo + i * step;
-    const std::string regime = window_regime(window, dT);
+    const std::string regime = regimes.at(dT);
     if (regime != previous) fmt::print("  from {} = {:+g}{}: {}\n", level.name, dT, level.unit, regime);
     previous = regime;
   }

@@ -20,6 +20,7 @@
 #include "deploydyn/io/model_loader.hpp"
 #include "deploydyn/runs/window_folder.hpp"
 #include "deploydyn/solvers/static_solver.hpp"
+#include "deploydyn/solvers/window_regimes.hpp"
 #include "support/cli.hpp"
 #include "support/csv_table.hpp"
 

@@ -14,6 +14,7 @@
 #include "deploydyn/output/checked_file.hpp"
 #include "deploydyn/output/output_error.hpp"
 #include "deploydyn/solvers/hinge_poses.hpp"
+#include "deploydyn/solvers/window_regimes.hpp"
 #include "deploydyn/thermal/thermal_coupling.hpp"
 
 namespace deploydyn {
@@ -112,9 +113,10 @@ std::string window_json(const Model& model, const WindowOrigin& origin, const Wi
   j["hot"] = side_json(window.hot);
   ordered_json regimes = ordered_json::array();
   const int n_steps = static_cast<int>(std::round((window.hot.reach_C - window.cold.reach_C) / regime_step_C));
+  const WindowRegimes regime(window);
   for (int i = 0; i <= n_steps; ++i) {
     const double dT = window.cold.reach_C + i * regime_step_C;
-    regimes.push_back({{"dT", dT}, {"regime", window_regime(window, dT)}});
+    regimes.push_back({{"dT", dT}, {"regime", regime.at(dT)}});
   }
   j["regimes"] = regimes;
   ordered_json deployments = ordered_json::array();

@@ -6,8 +6,6 @@
 #include <limits>
 #include <memory>
 #include <stdexcept>
-#include <unordered_map>
-#include <unordered_set>
 
 #include "deploydyn/assembly/linear_system_factory.hpp"
 #include "deploydyn/solvers/path_stability.hpp"
@@ -287,29 +285,6 @@ WindowResult deployability_window(const Model& model, const WindowOptions& optio
     }
   }
   return window;
-}
-
-std::string window_regime(const WindowResult& window, double delta_t_C, double stress_free_strain) {
-  const WindowSide& side = delta_t_C < 0.0 ? window.cold : window.hot;
-  if (const auto edge = side.threshold(); edge && std::abs(delta_t_C) >= std::abs(edge->delta_t_C)) {
-    return edge->kind == PathEventKind::bifurcation ? "snaps" : "jams";
-  }
-  // Per position, the sample nearest below |ΔT| on the same side says whether it is stressed.
-  // One pass over the samples: positions × samples took minutes for 10⁴ positions, long after
-  // Ctrl-C had stopped the window itself.
-  const std::unordered_set<double> positions(window.times_s.begin(), window.times_s.end());
-  std::unordered_map<double, const WindowSample*> nearest;  // per position
-  for (const WindowSample& s : window.samples) {
-    if (s.delta_t_C * delta_t_C < 0.0 || std::abs(s.delta_t_C) > std::abs(delta_t_C) || !positions.contains(s.time_s)) {
-      continue;
-    }
-    const WindowSample*& best = nearest[s.time_s];
-    if (best == nullptr || std::abs(s.delta_t_C) > std::abs(best->delta_t_C)) best = &s;
-  }
-  for (const auto& [time_s, sample] : nearest) {
-    if (sample->peak_mechanical_strain > stress_free_strain) return "stressed";
-  }
-  return "stress-free";
 }
 
 }  // namespace deploydyn

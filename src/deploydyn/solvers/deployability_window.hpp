@@ -130,9 +130,4 @@ WindowResult deployability_window(const Model& model, const WindowOptions& optio
 // deployment that has one, in the deployments' order.
 std::vector<WindowSample> window_rows(const WindowResult& window);
 
-// The regime at ΔT: beyond the side's threshold "snaps" (a bifurcation) or "jams" (a limit
-// point or a dead centre); else "stressed" when, at some driver position, the last sample
-// reached before ΔT has a mechanical strain above `stress_free_strain`; else "stress-free".
-std::string window_regime(const WindowResult& window, double delta_t_C, double stress_free_strain = 1e-9);
-
 }  // namespace deploydyn
