@@ -16,6 +16,7 @@
 #include "deploydyn/elements/element_kinds.hpp"
 #include "deploydyn/elements/hinge/hinge_history.hpp"
 #include "deploydyn/elements/hinge/hinge_kind.hpp"
+#include "deploydyn/elements/hinge/hinge_tangent.hpp"
 #include "deploydyn/elements/switching_group.hpp"
 #include "deploydyn/io/model_loader.hpp"
 #include "support/finite_difference.hpp"
@@ -212,6 +213,47 @@ TEST(Hinge, WrappedAngleIsRemainderBitForBit) {
     EXPECT_EQ(std::bit_cast<std::uint64_t>(got), std::bit_cast<std::uint64_t>(expected)) << fmt::format("{:a}", a);
   }
   EXPECT_TRUE(std::isnan(HingeAngle::wrapped(std::nan(""))));
+}
+
+// add_hinge_tangent writes ∇θ (a ∇θ + c ∇²θ q̇ + w)ᵀ + b ∇²θ at the hinge's fixed size (2, 6
+// or 9 unknowns): against the terms summed one by one on dynamic-size matrices (how the group
+// wrote its block before), to round-off, in the slots' column-major order, each term alone and
+// all of them together.
+void check_tangent_at_size(int n) {
+  HingeKinematics k;
+  k.gradient = HingeVector::LinSpaced(n, 0.7, -1.3);
+  const Eigen::MatrixXd a = Eigen::MatrixXd::NullaryExpr(n, n, [](Eigen::Index i, Eigen::Index j) {
+    return std::sin(1.0 + 2.0 * static_cast<double>(i) + 3.0 * static_cast<double>(j));
+  });
+  k.hessian = a + a.transpose();
+  const HingeVector rates = HingeVector::LinSpaced(n, -0.4, 0.9);
+  const HingeVector pin = HingeVector::LinSpaced(n, 2.0, 0.5);
+  for (int terms = 1; terms < 16; ++terms) {
+    HingeTangent t;
+    Eigen::MatrixXd expected = Eigen::MatrixXd::Zero(n, n);
+    const Eigen::MatrixXd g = k.gradient, h = k.hessian;
+    if (terms & 1) t.gradient = 3.5, expected += 3.5 * g * g.transpose();
+    if (terms & 2) t.hessian = -0.8, expected += -0.8 * h;
+    if (terms & 4) {
+      t.hessian_rates = 1.7, t.rates = rates;
+      expected += 1.7 * g * (h * Eigen::VectorXd(rates)).transpose();
+    }
+    if (terms & 8) t.pin = pin, expected += g * Eigen::VectorXd(pin).transpose();
+    std::vector<double> values(static_cast<std::size_t>(n * n), 1.0);  // added to, not overwritten
+    std::vector<int> slots(values.size());
+    for (std::size_t i = 0; i < slots.size(); ++i) slots[i] = static_cast<int>(i);
+    const int* slot = slots.data();
+    add_hinge_tangent(t, k, n, values, slot);
+    EXPECT_EQ(slot, slots.data() + slots.size());
+    const Eigen::Map<const Eigen::MatrixXd> got(values.data(), n, n);
+    const Eigen::MatrixXd ones = Eigen::MatrixXd::Ones(n, n);
+    EXPECT_LT((got - ones - expected).lpNorm<Eigen::Infinity>(), 1e-14 * expected.lpNorm<Eigen::Infinity>())
+        << "n = " << n << ", terms " << terms << "\n" << got - ones << "\n\n" << expected;
+  }
+}
+
+TEST(Hinge, FixedSizeTangentIsTheTermsSummedOneByOne) {
+  for (const int n : {2, 6, kMaxHingeDofs}) check_tangent_at_size(n);
 }
 
 // The results: the angle of the geometry, and the spring's torque k (θ_r − θ) in the opening

@@ -12,6 +12,7 @@
 #include "deploydyn/elements/hinge/hinge_history.hpp"
 #include "deploydyn/elements/hinge/hinge_lock.hpp"
 #include "deploydyn/elements/hinge/hinge_quantities.hpp"
+#include "deploydyn/elements/hinge/hinge_tangent.hpp"
 #include "deploydyn/elements/switching_group.hpp"
 
 namespace deploydyn {
@@ -162,39 +163,38 @@ class HingeGroup final : public ElementGroup, public SwitchingGroup {
       const int n = r.n_dofs();
       const HingeVector q_local = r.gather(at.q);
       const HingeKinematics& k = lease.at(i, q_local, true);
-      HingeMatrix m = HingeMatrix::Zero(n, n);
+      // The factors of ∇θ∇θᵀ, ∇²θ and ∇θ (∇²θ q̇)ᵀ of each term (hinge_tangent.hpp).
+      HingeTangent t;
       if (e.stiffness_Nm_per_rad != 0.0) {
-        m += (w.stiffness * e.stiffness_Nm_per_rad) *
-             (k.gradient * k.gradient.transpose() + (k.angle_rad - e.rest_angle_rad) * k.hessian);
+        t.gradient += w.stiffness * e.stiffness_Nm_per_rad;
+        t.hessian += w.stiffness * e.stiffness_Nm_per_rad * (k.angle_rad - e.rest_angle_rad);
       }
+      if (at.rates != nullptr) t.rates = r.gather(*at.rates);
       if (!sites_[i].empty()) {  // T(θ, θ̇) ∇θ: ∂T/∂θ ∇θ∇θᵀ + T ∇²θ + ∂T/∂θ̇ (∇θ (∇²θ q̇)ᵀ, ∇θ∇θᵀ)
         const std::span<const double> h = history_of(at.history, static_cast<int>(i));
         if (at.rates == nullptr) {
           const ContactTorques c = contact_torques(i, h, k.angle_rad, 0.0);
-          m += w.stiffness * (c.elastic_per_angle * k.gradient * k.gradient.transpose() + c.elastic * k.hessian);
+          t.gradient += w.stiffness * c.elastic_per_angle;
+          t.hessian += w.stiffness * c.elastic;
         } else {
-          const HingeVector rates = r.gather(*at.rates);
-          const ContactTorques c = contact_torques(i, h, k.angle_rad, k.gradient.dot(rates));
-          m += w.stiffness * (c.per_angle * k.gradient * k.gradient.transpose() + c.total * k.hessian +
-                              c.per_rate * k.gradient * (k.hessian * rates).transpose());
-          m += (w.damping * c.per_rate) * k.gradient * k.gradient.transpose();
+          const ContactTorques c = contact_torques(i, h, k.angle_rad, k.gradient.dot(t.rates));
+          t.gradient += w.stiffness * c.per_angle + w.damping * c.per_rate;
+          t.hessian += w.stiffness * c.total;
+          t.hessian_rates += w.stiffness * c.per_rate;
         }
       }
       if (at.rates != nullptr && e.damping_Nms_per_rad != 0.0) {
-        const HingeVector rates = r.gather(*at.rates);
-        const double angular_rate = k.gradient.dot(rates);
-        m += (w.stiffness * e.damping_Nms_per_rad) *
-             (k.gradient * (k.hessian * rates).transpose() + angular_rate * k.hessian);
-        m += (w.damping * e.damping_Nms_per_rad) * k.gradient * k.gradient.transpose();
+        t.gradient += w.damping * e.damping_Nms_per_rad;
+        t.hessian += w.stiffness * e.damping_Nms_per_rad * k.gradient.dot(t.rates);
+        t.hessian_rates += w.stiffness * e.damping_Nms_per_rad;
       }
       if (at.rates != nullptr && sliding(i, at)) {
         const PinForce p = r.pin_force(q_local, at.t);
         const double scale = w.stiffness * hinge_state(at.history, i).slip * e.friction_coefficient * e.pin_radius_m;
-        m += scale * (k.gradient * p.gradient.transpose() + p.magnitude_N * k.hessian);
+        t.hessian += scale * p.magnitude_N;
+        t.pin = scale * p.gradient;
       }
-      for (int col = 0; col < n; ++col) {
-        for (int row = 0; row < n; ++row) values[*slot++] += m(row, col);
-      }
+      add_hinge_tangent(t, k, n, values, slot);
     }
   }
 

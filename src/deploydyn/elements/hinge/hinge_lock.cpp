@@ -24,7 +24,7 @@ void HingeLock::evaluate(const EvaluationPoint& at, Eigen::Ref<Eigen::VectorXd> 
 void HingeLock::add_hessian_term(const EvaluationPoint& at, Eigen::Ref<const Eigen::VectorXd> lambda,
                                  Eigen::Ref<Eigen::MatrixXd> hessian) const {
   if (!active(at.history)) return;
-  hessian += lambda[0] * record_.kinematics(record_.gather(at.q)).hessian;
+  hessian += lambda[0] * record_.angle_hessian(record_.gather(at.q));  // ∇²θ alone: no θ, ∇θ
 }
 
 void HingeLock::time_derivatives(const EvaluationPoint& at, Eigen::Ref<Eigen::VectorXd> phi_t,
@@ -33,7 +33,7 @@ void HingeLock::time_derivatives(const EvaluationPoint& at, Eigen::Ref<Eigen::Ve
   bias.setZero();
   if (!active(at.history)) return;
   const HingeVector rates = record_.gather(*at.rates);
-  bias[0] = rates.dot(record_.kinematics(record_.gather(at.q)).hessian * rates);  // q̇ᵀ ∇²θ q̇
+  bias[0] = rates.dot(record_.angle_hessian(record_.gather(at.q)) * rates);  // q̇ᵀ ∇²θ q̇
 }
 
 std::string HingeLock::describe(int /*row*/, std::span<const double> history) const {
