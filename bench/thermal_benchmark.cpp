@@ -10,6 +10,8 @@
 //   BM_ThermalStepOnMotion  the same with `every: auto`, the structure drifting 0.2 mm a step
 //                     across the sun: the shadows recast every 13th step (also
 //                     BM_ScissorThermalStepOnMotion)
+//   BM_ThermalStepDeforming  shadows every step, the roof deforming: its joints moving relative to
+//                     each other by up to 0.08 mm a step (…Fast: 0.63 mm)
 // Arguments: roofs as BM_RoofStep's (units, trusses: 10 × 3, 10 × 26, 10 × 263 units of
 // 10 trusses, ≈ 10², 10³, 10⁴ bars, and the planar 10⁴-unit roof); units 0 the scissor ring
 // example, 1000 the arch of BM_ScissorStep.
@@ -19,6 +21,8 @@
 
 #include <Eigen/Geometry>
 
+#include <cmath>
+#include <numbers>
 #include <vector>
 
 #include "deploydyn/generators/scissor.hpp"
@@ -92,24 +96,41 @@ Eigen::VectorXd node_positions(const Model& model) {
   return q;
 }
 
-// With `step_across_sun_m` > 0 every node moves by that much a step ⟂ to the sun (a rigid
-// drift: the shadows stay, but every: auto must see the motion), to time `every: auto`.
-void time_thermal_step(benchmark::State& state, Model model, double step_across_sun_m = 0.0) {
-  if (step_across_sun_m > 0.0) model.environment->shadows->on_motion = true;
+// How the nodes move across the sun (⟂ to it and to z) between steps: all alike by `drift_m` a
+// step (a rigid drift: the shadows stay, but every: auto must see the motion), and relative to
+// each other by a standing wave of amplitude `wave_m`, wave_m sin(2π k/400) sin(2x + 0.3y) at
+// step k (x, y the node's coordinates in m): up to 0.08 mm a step for wave_m = 5 mm, as a roof
+// deploying through 90° in a minute moves its 0.3 m posts' tips in a 10 ms step.
+struct NodeMotion {
+  double drift_m = 0.0;
+  double wave_m = 0.0;
+  bool any() const { return drift_m > 0.0 || wave_m > 0.0; }
+};
+
+void time_thermal_step(benchmark::State& state, Model model, NodeMotion motion = {}) {
+  if (motion.drift_m > 0.0) model.environment->shadows->on_motion = true;
   thermal::ThermalCoupling coupling(model);
   MotionState at;
   at.q = node_positions(model);
+  const Eigen::VectorXd start = at.q;
   const DofMap dofs(model);
   const Eigen::Vector3d sun = model.environment->orbit.sun_direction.normalized();
-  const Eigen::Vector3d drift = step_across_sun_m * sun.cross(Eigen::Vector3d::UnitZ()).normalized();
+  const Eigen::Vector3d across_sun = sun.cross(Eigen::Vector3d::UnitZ()).normalized();
   const double h = 1e-3;
   const long updates_before = coupling.n_shadow_updates();
   const long allocations_before = bench::heap_allocations();
+  long step = 0;
   for (auto _ : state) {
     coupling.before_step(at, h);
-    if (step_across_sun_m > 0.0) {
+    if (motion.any()) {
+      ++step;
+      const double wave = motion.wave_m * std::sin(2.0 * std::numbers::pi * static_cast<double>(step) / 400.0);
       for (int node = 0; node < model.n_nodes(); ++node) {
-        for (int k = 0; k < model.dimension; ++k) at.q[dofs.index(node, k)] += drift[k];
+        const Eigen::Vector3d& x = model.nodes[node].position_m;
+        const double moved = static_cast<double>(step) * motion.drift_m + wave * std::sin(2.0 * x.x() + 0.3 * x.y());
+        for (int k = 0; k < model.dimension; ++k) {
+          at.q[dofs.index(node, k)] = start[dofs.index(node, k)] + moved * across_sun[k];
+        }
       }
     }
     coupling.after_step(at, false);
@@ -160,18 +181,31 @@ void BM_ThermalStep(benchmark::State& state) {
 // every: auto on the roofs drifting 0.2 mm a step across the sun (δ = r/4 = 2.5 mm: a recast
 // every 13th step).
 void BM_ThermalStepOnMotion(benchmark::State& state) {
-  time_thermal_step(state, roof(static_cast<int>(state.range(0)), static_cast<int>(state.range(1))), 2e-4);
+  time_thermal_step(state, roof(static_cast<int>(state.range(0)), static_cast<int>(state.range(1))), {.drift_m = 2e-4});
+}
+// The shadows updated every step on the roofs deforming (a wave of 5 mm across the sun): the
+// honest case for updates that keep what they can from the step before.
+void BM_ThermalStepDeforming(benchmark::State& state) {
+  time_thermal_step(state, roof(static_cast<int>(state.range(0)), static_cast<int>(state.range(1))), {.wave_m = 5e-3});
+}
+// The same wave at 4 cm, up to 0.63 mm a step: its joints leave the 1 cm that the candidate
+// pairs of MemberShadows::update allow (half its skin) within some 16 steps, so that the pairs
+// are listed again along the run, as for a fast deployment.
+void BM_ThermalStepDeformingFast(benchmark::State& state) {
+  time_thermal_step(state, roof(static_cast<int>(state.range(0)), static_cast<int>(state.range(1))), {.wave_m = 4e-2});
 }
 void BM_ScissorShadows(benchmark::State& state) { time_shadows(state, arch(static_cast<int>(state.range(0)), false)); }
 void BM_ScissorThermalStep(benchmark::State& state) {
   time_thermal_step(state, arch(static_cast<int>(state.range(0)), state.range(1) != 0));
 }
 void BM_ScissorThermalStepOnMotion(benchmark::State& state) {
-  time_thermal_step(state, arch(static_cast<int>(state.range(0)), state.range(1) != 0), 2e-4);
+  time_thermal_step(state, arch(static_cast<int>(state.range(0)), state.range(1) != 0), {.drift_m = 2e-4});
 }
 BENCHMARK(BM_Shadows)->Apply(roof_sizes);
 BENCHMARK(BM_ThermalStep)->Apply(roof_sizes);
 BENCHMARK(BM_ThermalStepOnMotion)->Apply(roof_sizes);
+BENCHMARK(BM_ThermalStepDeforming)->Apply(roof_sizes);
+BENCHMARK(BM_ThermalStepDeformingFast)->Apply(roof_sizes);
 BENCHMARK(BM_ScissorShadows)->ArgName("units")->Arg(0)->Arg(1000)->Unit(benchmark::kMicrosecond);
 BENCHMARK(BM_ScissorThermalStep)
     ->ArgNames({"units", "gradients"})

@@ -3,12 +3,17 @@
 // shadowed when offset by half its width; at any offset the fraction is within the sampling
 // error 1/n_across of the overlap of the two strips; a member never shades itself. On a roof
 // and on random tangles, every member's fraction equals that of the same samples' rays cast
-// with Embree (tests/support/ray_cast_shadows.hpp), the ray caster it replaced.
+// with Embree (tests/support/ray_cast_shadows.hpp), the ray caster it replaced. `update`, which
+// keeps the candidate pairs between calls (docs/theory.md, "Updating the shadows
+// incrementally"), gives compute's fractions bit for bit at every step over structures whose
+// members move relative to each other under a turning sun, and a member sliding over another
+// shades it from the same step.
 
 #include "deploydyn/thermal/member_shadows.hpp"
 
 #include <gtest/gtest.h>
 
+#include <Eigen/Geometry>
 #include <random>
 #include <vector>
 
@@ -158,6 +163,113 @@ TEST(MemberShadows, OnARoofEveryFractionIsTheRaysOne) {
                                      Eigen::Vector3d(1.0, 0.02, 0.1).normalized()}) {
     expect_as_the_rays_say(members, sun, 8, 4, "roof");
   }
+}
+
+// MemberShadows::update against compute's full trace of the same configuration.
+
+// The sun turned by `angle` about an axis oblique to it.
+Eigen::Vector3d turned_sun(double angle) {
+  const Eigen::Vector3d start = Eigen::Vector3d(0.3, 0.8, 0.5).normalized();
+  return Eigen::AngleAxisd(angle, Eigen::Vector3d(1.0, -0.2, 0.4).normalized()) * start;
+}
+
+// Steps `members` through `move` (called with the step's index before each step), comparing
+// update's fractions with compute's at every step; returns how many steps some member was shaded.
+template <class Move>
+int expect_update_as_compute(std::vector<MemberCapsule> members, int steps, Move&& move, int along = 8, int across = 4) {
+  const int n = static_cast<int>(members.size());
+  MemberShadows incremental(n, along, across), reference(n, along, across);
+  std::vector<double> updated(members.size()), traced(members.size());
+  int shaded_steps = 0;
+  for (int step = 0; step < steps; ++step) {
+    const Eigen::Vector3d sun = move(step, members);
+    incremental.update(members, sun, updated);
+    reference.compute(members, sun, traced);
+    const auto differs = std::mismatch(updated.begin(), updated.end(), traced.begin());
+    if (differs.first != updated.end()) {
+      ADD_FAILURE() << "step " << step << ", member " << (differs.first - updated.begin()) << ": update "
+                    << *differs.first << ", compute " << *differs.second;
+      return shaded_steps;
+    }
+    shaded_steps += std::any_of(traced.begin(), traced.end(), [](double f) { return f > 0.0; }) ? 1 : 0;
+  }
+  // The pairs were kept over several steps, and listed again as the members moved.
+  EXPECT_GT(incremental.n_pair_listings(), 1);
+  EXPECT_LT(incremental.n_pair_listings(), steps / 2);
+  return shaded_steps;
+}
+
+TEST(MemberShadowsUpdate, RandomMembersMovingApartAndTogetherUnderATurningSunAsTheFullTrace) {
+  std::mt19937 random(20261129);
+  std::uniform_real_distribution<double> in_box(0.0, 1.0), radius(0.005, 0.02), unit(-1.0, 1.0);
+  std::vector<MemberCapsule> members(300);
+  std::vector<Eigen::Vector3d> velocity_a, velocity_b;  // m per step, each end its own
+  for (MemberCapsule& m : members) {
+    m.end_a_m = {in_box(random), in_box(random), in_box(random)};
+    m.end_b_m = m.end_a_m + 0.3 * Eigen::Vector3d(unit(random), unit(random), unit(random));
+    m.radius_m = radius(random);
+    velocity_a.push_back(1e-3 * Eigen::Vector3d(unit(random), unit(random), unit(random)));
+    velocity_b.push_back(1e-3 * Eigen::Vector3d(unit(random), unit(random), unit(random)));
+  }
+  members[7].end_b_m = members[7].end_a_m + 0.3 * turned_sun(0.0);  // end-on to the sun at the start
+  const int shaded = expect_update_as_compute(members, 300, [&](int step, std::vector<MemberCapsule>& moving) {
+    for (std::size_t i = 0; step > 0 && i < moving.size(); ++i) {
+      moving[i].end_a_m += velocity_a[i];
+      moving[i].end_b_m += velocity_b[i];
+    }
+    return turned_sun(2e-3 * step);
+  });
+  EXPECT_EQ(shaded, 300);
+}
+
+TEST(MemberShadowsUpdate, ARoofDeformingAndDriftingUnderATurningSunAsTheFullTrace) {
+  RoofOptions options;
+  options.n_units = 26;
+  options.n_trusses = 10;
+  options.delta_t_C = 0.0;
+  options.bearings = RoofBearings::pinned;
+  const Model roof = make_roof(options);
+  std::vector<Eigen::Vector3d> nodes;
+  for (const Node& node : roof.nodes) nodes.push_back(node.position_m);
+  std::vector<MemberCapsule> members;
+  for (const BarElement& bar : roof.bars) members.push_back({nodes[bar.node_a], nodes[bar.node_b], 0.02});
+  // A wave along the roof that bends it across the sun, and a drift: the joints move
+  // relative to each other by up to 3 mm a step, the pairs are listed again every few steps.
+  const Eigen::Vector3d across_sun = turned_sun(0.0).cross(Eigen::Vector3d::UnitZ()).normalized();
+  expect_update_as_compute(members, 150, [&](int step, std::vector<MemberCapsule>& moving) {
+    const auto at = [&](const Eigen::Vector3d& x) {
+      const double wave = 0.05 * std::sin(2.0 * x.x() + 0.04 * step) * std::min(1.0, step / 50.0);
+      return Eigen::Vector3d(x + Eigen::Vector3d(1e-3 * step, 0.0, 0.0) + wave * across_sun);
+    };
+    for (std::size_t i = 0; i < moving.size(); ++i) {
+      moving[i].end_a_m = at(nodes[roof.bars[i].node_a]);
+      moving[i].end_b_m = at(nodes[roof.bars[i].node_b]);
+    }
+    return turned_sun(1e-5 * step);
+  });
+}
+
+TEST(MemberShadowsUpdate, AMemberSlidingOverAnotherShadesItFromTheSameStepAsInTheFullTrace) {
+  // The upper member starts 5 cm aside of the lower one, its silhouette 3 cm off, beyond the
+  // skin (2 r): not a candidate. It slides over it and on past it by 0.5 mm a step, the sun
+  // above: listed as a candidate once it has come within the skin, it starts to shade between
+  // two listings, at the step the full trace does.
+  const double r = 0.01;
+  const std::vector<MemberCapsule> members{MemberCapsule{{0, 0, 0}, {1, 0, 0}, r},
+                                           MemberCapsule{{0, 0.05, 0.1}, {1, 0.05, 0.1}, r}};
+  const int shaded_steps = expect_update_as_compute(members, 201, [&](int step, std::vector<MemberCapsule>& moving) {
+    moving[1].end_a_m.y() = moving[1].end_b_m.y() = 0.05 - 5e-4 * step;
+    return Eigen::Vector3d::UnitZ();
+  });
+  // The outer sample column, at 0.75 r, is under the upper strip while |y| ≤ 1.75 r: 71 steps.
+  EXPECT_NEAR(shaded_steps, 71, 2);
+}
+
+TEST(MemberShadowsUpdate, SizesAreChecked) {
+  MemberShadows shadows(3, 4, 4);
+  std::vector<MemberCapsule> members(2);
+  std::vector<double> fractions(2);
+  EXPECT_THROW(shadows.update(members, Eigen::Vector3d::UnitZ(), fractions), std::invalid_argument);
 }
 
 }  // namespace

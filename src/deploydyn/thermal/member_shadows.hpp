@@ -21,6 +21,12 @@
 // sample's projection lies in that rectangle and the strip there is nearer the sun, and a grid
 // of the rectangles' bounding boxes in that plane gives each member the few others that can
 // shade it. Tested against Embree's rays from the same samples (tests/support/ray_cast_shadows.hpp).
+//
+// `update` gives compute's fractions bit for bit at a fraction of its cost while the structure
+// moves little between calls (docs/theory.md, the same section, "Updating the shadows
+// incrementally"): the pairs that can shade each other are listed once from the members'
+// silhouettes widened by a skin, and listed again only when some member's end has moved in the
+// sun's view (relative to the structure's centroid, the sun's turn included) by half the skin.
 
 #include <Eigen/Core>
 
@@ -46,6 +52,10 @@ class MemberShadows {
   // the constructor's n_members), lit from the direction `sun_direction` (towards the sun).
   void compute(std::span<const MemberCapsule> members, const Eigen::Vector3d& sun_direction,
                std::span<double> shadowed_fraction);
+  // The same fractions as compute's, from the candidate pairs kept since their last listing.
+  void update(std::span<const MemberCapsule> members, const Eigen::Vector3d& sun_direction,
+              std::span<double> shadowed_fraction);
+  long n_pair_listings() const { return n_pair_listings_; }  // by update, since construction
 
  private:
   // A member's strip seen from the sun: the rectangle {a + ξ axis + η across, ξ ∈ [0, 1],
@@ -56,6 +66,10 @@ class MemberShadows {
     double radius = 0.0;
     double depth_a = 0.0, depth_b = 0.0;  // x · s at the ends
     Eigen::Vector2d box_min, box_max;     // the rectangle's bounding box
+    bool lit = false;                     // false end-on to the sun: no strip, the rest unset
+  };
+  struct Box {
+    Eigen::Vector2d min, max;
   };
   // Marks the samples of `lit` whose rays meet `occluder`'s strip at least `clearance` nearer
   // the sun (sample_shadowed_); returns how many were not marked before.
@@ -63,9 +77,20 @@ class MemberShadows {
   struct CellRange {
     std::int64_t x0, x1, y0, y1;
   };
-  CellRange cells_of(const Silhouette& s) const;
+  CellRange cells_of(const Box& box) const;
   std::size_t bucket_of(std::int64_t x, std::int64_t y) const;
-  void build_grid();
+  void check_sizes(std::span<const MemberCapsule> members, std::span<const double> shadowed_fraction) const;
+  // Each member's silhouette in the sun's view (sun_ the unit direction), lit_ those with one.
+  void see_from_the_sun(std::span<const MemberCapsule> members, const Eigen::Vector3d& sun);
+  void build_grid(std::span<const int> members);  // over grid_boxes_ of `members`
+  // Calls candidate(j) once for each member j listed in the cells of member i's grid box, until it returns false.
+  template <class Candidate>
+  void for_each_in_cells_of(int i, Candidate&& candidate);
+  // shade_samples after the cheap tests (boxes apart, the occluder nowhere nearer the sun).
+  int shade_by(const Silhouette& lit, const Silhouette& occluder);
+  // update's candidate pairs: listed again from `members`, and whether those listed still hold.
+  void list_pairs(std::span<const MemberCapsule> members);
+  bool pairs_still_hold(std::span<const MemberCapsule> members) const;
 
   int n_members_ = 0;
   int samples_along_ = 0;
@@ -73,6 +98,10 @@ class MemberShadows {
   // Kept between updates: no allocation once the first has sized them.
   std::vector<Silhouette> silhouettes_;
   std::vector<int> lit_;  // members with a strip (not end-on to the sun)
+  Eigen::Vector3d sun_ = Eigen::Vector3d::UnitZ();
+  Eigen::Vector3d view_x_ = Eigen::Vector3d::UnitX(), view_y_ = Eigen::Vector3d::UnitY();  // e1, e2
+  std::vector<Box> grid_boxes_;  // [member], the boxes the grid was built from
+  std::vector<int> everyone_;    // 0, 1, …, n_members − 1
   // The grid: the cells hashed to bucket b hold cell_members_[cell_start_[b] .. cell_start_[b + 1]).
   Eigen::Vector2d grid_origin_ = Eigen::Vector2d::Zero();
   double inverse_cell_size_ = 1.0;  // 1 / the median member box's size
@@ -81,6 +110,14 @@ class MemberShadows {
   std::vector<int> cell_start_, cell_members_;
   std::vector<int> last_seen_by_;  // [member] → the member whose candidates last listed it
   std::vector<char> sample_shadowed_;  // [c · n_along + i] of the member being lit
+  // update's candidate pairs: member i may be shaded by pair_members_[pair_start_[i] .. pair_start_[i + 1]),
+  // listed when the members' ends were seen from the sun at listed_ends_ (2 per member, relative
+  // to their centroid, (I − s sᵀ)(x − c)), with these radii, for motions up to half the skin.
+  std::vector<int> pair_start_, pair_members_;
+  std::vector<Eigen::Vector3d> listed_ends_;
+  std::vector<double> listed_radii_;
+  double skin_m_ = 0.0;
+  long n_pair_listings_ = 0;
 };
 
 }  // namespace deploydyn::thermal

@@ -173,7 +173,7 @@ void ThermalCoupling::update_shadows(const Eigen::VectorXd* q, double time_s) {
   Eigen::AlignedBox3d box;
   for (const MemberCapsule& capsule : capsules_) box.extend(capsule.end_a_m).extend(capsule.end_b_m);
   shadow_extent_m_ = capsules_.empty() ? 0.0 : box.diagonal().norm();
-  shadows_->compute(capsules_, shadow_sun_, shadowed_);
+  shadows_->update(capsules_, shadow_sun_, shadowed_);
   ++n_shadow_updates_;
   for (std::size_t i = 0; i < members_.size(); ++i) {
     bodies_[i].shadowed_fraction = shadowed_[i];
