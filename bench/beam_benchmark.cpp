@@ -1,17 +1,22 @@
 // 3D beams: pantograph canopies (support/scissor_canopy.hpp) of 2 × 3 units (the 50 beams of
 // ../shared/models/canopy3d.yaml) and 25 × 50 units (10 025 beams), one generalized-α step,
 // Newton included, the actuators turning at their mean rate from t = 0. KLU ordered without BTF
-// (`btf:0`, what 3D beam models get now) and with it (`btf:1`, as before): the two in one
-// process, so that they can be run interleaved (--benchmark_enable_random_interleaving).
+// (`btf:0`, what 3D beam models get) and with it (`btf:1`), with each node's frame constraints
+// eliminated in the solve (`frames:1`, what 3D beam models get now;
+// assembly/frame_eliminating_linear_system.hpp) or the whole matrix to KLU (`frames:0`, as
+// before): in one process, so that they can be run interleaved
+// (--benchmark_enable_random_interleaving).
 // docs/performance.md, "3D beams".
-//   BM_BeamCanopyStep/girders/units/btf/ordering   time per step, Newton iterations per step,
-//                                         unknowns, beams, KLU's operations and factor entries per LU;
+//   BM_BeamCanopyStep/girders/units/btf/ordering/frames   time per step, Newton iterations per
+//                                         step, unknowns, factored unknowns, beams, KLU's operations
+//                                         and factor entries per LU;
 //                                         ordering 0 automatic, 1 AMD, 2 two domains
 
 #include <benchmark/benchmark.h>
 
 #include <numbers>
 
+#include "deploydyn/assembly/frame_eliminating_linear_system.hpp"
 #include "deploydyn/assembly/klu_linear_system.hpp"
 #include "support/scissor_canopy.hpp"
 #include "support/stepping_run.hpp"
@@ -37,28 +42,39 @@ void BM_BeamCanopyStep(benchmark::State& state) {
   const KluOrdering ordering = state.range(3) == 1 ? KluOrdering::amd
                                : state.range(3) == 2 ? KluOrdering::two_domains : KluOrdering::automatic;
   auto klu = std::make_unique<KluLinearSystem>(ordering, blocks);
-  klu->analyze(run.assembler->n_unknowns(), run.assembler->matrix_entries());
-  KluLinearSystem& system = *klu;
-  run.system = std::move(klu);
-  const double newton_per_step = run.step_loop(state, system, kRestart_s);
+  const KluLinearSystem& factored = *klu;
+  if (state.range(4) != 0) {
+    run.system = std::make_unique<FrameEliminatingLinearSystem>(run.assembler->frame_unknowns(), std::move(klu));
+  } else {
+    run.system = std::move(klu);
+  }
+  run.system->analyze(run.assembler->n_unknowns(), run.assembler->matrix_entries());
+  const double newton_per_step = run.step_loop(state, *run.system, kRestart_s);
   state.counters["beams"] = static_cast<double>(run.model.beams.size());
-  state.counters["unknowns"] = system.size();
+  state.counters["unknowns"] = run.system->size();
+  state.counters["factored"] = factored.factored_size();
   state.counters["newton_per_step"] = newton_per_step;
-  state.counters["lu_operations"] = system.factor_operations();
-  state.counters["lu_entries"] = system.factor_nonzeros();
-  state.counters["two_domains"] = system.ordering() == KluOrdering::two_domains ? 1.0 : 0.0;
+  state.counters["lu_operations"] = factored.factor_operations();
+  state.counters["lu_entries"] = factored.factor_nonzeros();
+  state.counters["two_domains"] = factored.ordering() == KluOrdering::two_domains ? 1.0 : 0.0;
 }
 
 BENCHMARK(BM_BeamCanopyStep)
-    ->ArgNames({"girders", "units", "btf", "ordering"})
-    ->Args({2, 3, 0, 0})
-    ->Args({2, 3, 1, 0})
-    ->Args({4, 8, 0, 1})
-    ->Args({4, 8, 0, 2})
-    ->Args({10, 20, 0, 1})
-    ->Args({10, 20, 0, 2})
-    ->Args({25, 50, 0, 0})
-    ->Args({25, 50, 1, 0})
+    ->ArgNames({"girders", "units", "btf", "ordering", "frames"})
+    ->Args({2, 3, 0, 0, 1})
+    ->Args({2, 3, 1, 0, 1})
+    ->Args({2, 3, 0, 0, 0})
+    ->Args({2, 3, 1, 0, 0})
+    ->Args({4, 8, 0, 0, 1})
+    ->Args({4, 8, 0, 1, 1})
+    ->Args({4, 8, 0, 2, 1})
+    ->Args({4, 8, 0, 1, 0})
+    ->Args({10, 20, 0, 0, 1})
+    ->Args({10, 20, 0, 1, 1})
+    ->Args({10, 20, 0, 2, 1})
+    ->Args({25, 50, 0, 0, 1})
+    ->Args({25, 50, 0, 1, 1})
+    ->Args({25, 50, 0, 2, 1})
     ->Unit(benchmark::kMillisecond);
 
 }  // namespace

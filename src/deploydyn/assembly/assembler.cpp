@@ -473,6 +473,18 @@ void Assembler::iteration_matrix(const History& history, const Eigen::VectorXd& 
                         });
 }
 
+std::vector<FrameUnknowns> Assembler::frame_unknowns() const {
+  std::vector<FrameUnknowns> frames;
+  for (std::size_t c = 0; c < constraints_.size(); ++c) {
+    if (dynamic_cast<const FrameOrthonormality*>(constraints_[c].get()) == nullptr) continue;
+    FrameUnknowns frame;
+    std::copy(constraints_[c]->dofs().begin(), constraints_[c]->dofs().end(), frame.coordinates.begin());
+    frame.first_multiplier = n_dofs() + first_row_[c];
+    frames.push_back(frame);
+  }
+  return frames;
+}
+
 std::vector<MatrixEntry> Assembler::matrix_entries() const {
   std::vector<MatrixEntry> entries;
   entries.reserve(n_matrix_entries_);

@@ -20,6 +20,7 @@
 #include <vector>
 
 #include "deploydyn/assembly/frame_moments.hpp"
+#include "deploydyn/assembly/frame_unknowns.hpp"
 #include "deploydyn/assembly/linear_system.hpp"
 #include "deploydyn/assembly/rayleigh_damping.hpp"
 #include "deploydyn/constraints/constraint.hpp"
@@ -163,6 +164,9 @@ class Assembler {
   // inertia). A solver that needs a definite weight then uses M + c BᵀB, which changes nothing
   // on the allowed motions (solvers/modal_analysis.cpp).
   bool mass_definite_on_constraints_only() const { return n_element_constraints_ > 0; }
+  // The frames of the 3D beam nodes, each its coordinates and its orthonormality rows among the
+  // unknowns: what the linear solve eliminates node by node (frame_eliminating_linear_system.hpp).
+  std::vector<FrameUnknowns> frame_unknowns() const;
 
   // Weights of the iteration matrix [c_M M + c_K (K + H(λ)), s Bᵀ; s B, 0].
   // With rates given, also c_D ∂f_d/∂q̇ of the rate forces (and their c_K ∂f_d/∂q).

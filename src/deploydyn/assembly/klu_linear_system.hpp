@@ -50,8 +50,8 @@ class KluLinearSystem final : public SparseLinearSystem {
   // factorization, which refactorizations keep. pivot_memory() gives the values of the matrix
   // that made it; restore_pivot_memory factorizes them again, so that a restarted run pivots,
   // and rounds, as the run it continues did (solvers/restart_state.hpp).
-  std::vector<double> pivot_memory() const { return values_at_full_; }
-  void restore_pivot_memory(std::span<const double> memory);
+  std::vector<double> pivot_memory() const override { return values_at_full_; }
+  void restore_pivot_memory(std::span<const double> memory) override;
 
  protected:
   void analyze_pattern() override;

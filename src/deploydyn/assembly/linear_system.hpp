@@ -56,6 +56,12 @@ class LinearSystem {
   // "dense LU", "KLU", "UMFPACK": for reports and benchmarks.
   virtual const char* name() const = 0;
 
+  // What one factorization hands on to the next (KLU's pivot order, klu_linear_system.hpp), so
+  // that a restarted run pivots, and rounds, as the run it continues did; empty when the back
+  // end keeps nothing. restore_pivot_memory factorizes with it again.
+  virtual std::vector<double> pivot_memory() const { return {}; }
+  virtual void restore_pivot_memory(std::span<const double> /*memory*/) {}
+
   // The matrix as dense, for diagnosis of small systems and for tests.
   Eigen::MatrixXd to_dense() const;
   // The columns the current matrix (nearly) maps to zero: its null space's basis by sparse

@@ -1,6 +1,7 @@
 #include "deploydyn/assembly/linear_system_factory.hpp"
 
 #include "deploydyn/assembly/dense_linear_system.hpp"
+#include "deploydyn/assembly/frame_eliminating_linear_system.hpp"
 #include "deploydyn/assembly/klu_linear_system.hpp"
 #include "deploydyn/assembly/umfpack_from_module.hpp"
 
@@ -12,21 +13,26 @@ LinearSolverKind choose_linear_solver(LinearSolverKind requested, int /*n_unknow
 
 std::unique_ptr<LinearSystem> make_linear_system(const Assembler& assembler, LinearSolverKind kind) {
   // Elements that bring constraints of their own are 3D beams, six frame multipliers a node: KLU
-  // orders their matrix as it is, without BTF's matching (klu_linear_system.hpp, KluBlocks).
-  // Other models keep BTF, and their results bit for bit.
+  // orders their matrix as it is, without BTF's matching (klu_linear_system.hpp, KluBlocks), and
+  // factors it with the frames eliminated (frame_eliminating_linear_system.hpp). Other models
+  // keep BTF, and their results bit for bit.
   const KluBlocks blocks =
       assembler.mass_definite_on_constraints_only() ? KluBlocks::whole : KluBlocks::triangular;
+  std::unique_ptr<KluLinearSystem> klu;
   std::unique_ptr<LinearSystem> system;
   switch (choose_linear_solver(kind, assembler.n_unknowns())) {
-    case LinearSolverKind::klu: system = std::make_unique<KluLinearSystem>(KluOrdering::automatic, blocks); break;
+    case LinearSolverKind::klu: klu = std::make_unique<KluLinearSystem>(KluOrdering::automatic, blocks); break;
     case LinearSolverKind::klu_nested_dissection:
-      system = std::make_unique<KluLinearSystem>(KluOrdering::nested_dissection, blocks);
+      klu = std::make_unique<KluLinearSystem>(KluOrdering::nested_dissection, blocks);
       break;
-    case LinearSolverKind::klu_two_domains:
-      system = std::make_unique<KluLinearSystem>(KluOrdering::two_domains);
-      break;
+    case LinearSolverKind::klu_two_domains: klu = std::make_unique<KluLinearSystem>(KluOrdering::two_domains); break;
     case LinearSolverKind::umfpack: system = umfpack_from_module(); break;  // loads UMFPACK on demand
     default: system = std::make_unique<DenseLinearSystem>(); break;
+  }
+  if (klu) {
+    std::vector<FrameUnknowns> frames = assembler.frame_unknowns();
+    if (frames.empty()) system = std::move(klu);
+    else system = std::make_unique<FrameEliminatingLinearSystem>(std::move(frames), std::move(klu));
   }
   system->analyze(assembler.n_unknowns(), assembler.matrix_entries());
   return system;

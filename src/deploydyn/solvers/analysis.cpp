@@ -8,7 +8,6 @@
 #include <stdexcept>
 
 #include "deploydyn/assembly/free_motion.hpp"
-#include "deploydyn/assembly/klu_linear_system.hpp"
 #include "deploydyn/assembly/linear_system_factory.hpp"
 #include "deploydyn/elements/element_kinds.hpp"
 #include "deploydyn/solvers/consistent_rates.hpp"
@@ -369,7 +368,7 @@ RunReport run_analysis(const Assembler& assembler, RecordSink& sink, const RunCo
   if (start != nullptr) {
     // A state another run kept: no initial equilibrium, no initial rates.
     state = start->motion;
-    if (auto* klu = dynamic_cast<KluLinearSystem*>(&system)) klu->restore_pivot_memory(start->pivot_memory);
+    system.restore_pivot_memory(start->pivot_memory);
   } else {
   state.time_s = 0.0;
   state.q = assembler.initial_coordinates();
@@ -497,7 +496,7 @@ RunReport run_analysis(const Assembler& assembler, RecordSink& sink, const RunCo
     if (settling) kept.calm_since_s = settling->calm_since_s();
     kept.integrator_memory = integrator->memory();
     // Only KLU hands its pivot order on from one factorization to the next.
-    if (const auto* klu = dynamic_cast<const KluLinearSystem*>(&system)) kept.pivot_memory = klu->pivot_memory();
+    kept.pivot_memory = system.pivot_memory();
     states->keep(kept);
   };
   // The last state reached is kept however the run ends, unless it was kept as an output.
