@@ -15,17 +15,12 @@
 #include "deploydyn/assembly/linear_system_factory.hpp"
 #include "deploydyn/constraints/frame_orthonormality.hpp"
 #include "deploydyn/io/model_loader.hpp"
+#include "support/random_vector.hpp"
 
 namespace deploydyn {
 namespace DEPLOYDYN_FILE_SCOPE {
 
-Eigen::VectorXd uniform_vector(int n, unsigned seed) {
-  std::mt19937 random(seed);
-  std::uniform_real_distribution<double> uniform(-1.0, 1.0);
-  Eigen::VectorXd v(n);
-  for (double& x : v) x = uniform(random);
-  return v;
-}
+using testing::random_vector;
 
 double relative_difference(const Eigen::VectorXd& x, const Eigen::VectorXd& reference) {
   return (x - reference).lpNorm<Eigen::Infinity>() / reference.lpNorm<Eigen::Infinity>();
@@ -50,8 +45,8 @@ Model canopy() {
 // The canopy's iteration matrix as a step of 5 ms weighs it, at its initial state moved by
 // `shift` · random (frames no longer orthonormal) and random multipliers (the frames' Hessian).
 void assemble_canopy(const Assembler& assembler, double shift, LinearSystem& system) {
-  const Eigen::VectorXd q = assembler.initial_coordinates() + shift * uniform_vector(assembler.n_dofs(), 5);
-  const Eigen::VectorXd lambda = 1e3 * uniform_vector(assembler.n_equations(), 6);
+  const Eigen::VectorXd q = assembler.initial_coordinates() + shift * random_vector(assembler.n_dofs(), 5);
+  const Eigen::VectorXd lambda = 1e3 * random_vector(assembler.n_equations(), 6);
   Assembler::MatrixWeights weights;
   weights.mass = 1.0 / (0.25 * 0.005 * 0.005);
   weights.constraint_scale = assembler.stiffness_scale(q, 0.0);
@@ -78,7 +73,7 @@ TEST(FrameElimination, SolvesTheCanopysMatrixAsDenseLuAndPlainKlu) {
     EXPECT_EQ(eliminating->reduced().size(), assembler.n_unknowns() - 12 * static_cast<int>(assembler.frame_unknowns().size()));
     const Eigen::PartialPivLU<Eigen::MatrixXd> lu(matrix);
     for (unsigned seed = 1; seed <= 3; ++seed) {
-      const Eigen::VectorXd b = uniform_vector(assembler.n_unknowns(), seed);
+      const Eigen::VectorXd b = random_vector(assembler.n_unknowns(), seed);
       const Eigen::VectorXd dense = lu.solve(b);
       Eigen::VectorXd x = b, x_plain = b;
       eliminating->solve(x);
@@ -106,8 +101,8 @@ RandomFrameSystem random_frame_system(int n_frames, unsigned seed) {
   RandomFrameSystem s;
   s.n_dofs = kPositions + 9 * n_frames;
   s.size = s.n_dofs + 6 * n_frames + kOtherRows;
-  const Eigen::VectorXd q = uniform_vector(s.n_dofs, seed);
-  const Eigen::MatrixXd a = Eigen::MatrixXd(uniform_vector(s.n_dofs * s.n_dofs, seed + 1).reshaped(s.n_dofs, s.n_dofs));
+  const Eigen::VectorXd q = random_vector(s.n_dofs, seed);
+  const Eigen::MatrixXd a = Eigen::MatrixXd(random_vector(s.n_dofs * s.n_dofs, seed + 1).reshaped(s.n_dofs, s.n_dofs));
   for (int i = 0; i < s.n_dofs; ++i) {
     for (int j = 0; j < s.n_dofs; ++j) {
       s.entries.push_back({i, j});
@@ -134,7 +129,7 @@ RandomFrameSystem random_frame_system(int n_frames, unsigned seed) {
       for (int k = 0; k < 9; ++k) constraint_pair(frame.first_multiplier + e, dofs[k], jacobian(e, k));
     }
   }
-  const Eigen::VectorXd other = uniform_vector(2 * s.n_dofs, seed + 2);
+  const Eigen::VectorXd other = random_vector(2 * s.n_dofs, seed + 2);
   for (int r = 0; r < kOtherRows; ++r) {
     for (const int col : {0, kPositions + 1, kPositions + 5, s.n_dofs - 1}) {
       constraint_pair(s.n_dofs + 6 * n_frames + r, col, other[r * s.n_dofs + col]);
@@ -151,7 +146,7 @@ TEST(FrameElimination, SolvesAsDenseLuWithFramesFarFromOrthonormal) {
     system->analyze(s.size, s.entries);
     for (std::size_t k = 0; k < s.entries.size(); ++k) system->values()[system->slots()[k]] += s.values[k];
     ASSERT_TRUE(system->factorize().ok);
-    const Eigen::VectorXd b = uniform_vector(s.size, seed + 100);
+    const Eigen::VectorXd b = random_vector(s.size, seed + 100);
     const Eigen::VectorXd dense = system->to_dense().fullPivLu().solve(b);
     Eigen::VectorXd x = b;
     system->solve(x);

@@ -14,9 +14,12 @@
 #include "deploydyn/assembly/linear_system_factory.hpp"
 #include "deploydyn/generators/roof.hpp"
 #include "deploydyn/io/model_loader.hpp"
+#include "support/random_vector.hpp"
 
 namespace deploydyn {
 namespace DEPLOYDYN_FILE_SCOPE {
+
+using testing::random_vector;
 
 Model canopy() {
   return load_model(std::string(DEPLOYDYN_SOURCE_DIR) + "/tests/assembly/models/canopy3d.yaml");
@@ -35,14 +38,6 @@ void factorize_canopy_matrix(const Assembler& assembler, KluLinearSystem& system
   ASSERT_TRUE(system.factorize().ok);
 }
 
-Eigen::VectorXd random_vector(int n) {
-  std::mt19937 random(3);
-  std::uniform_real_distribution<double> uniform(-1.0, 1.0);
-  Eigen::VectorXd v(n);
-  for (int i = 0; i < n; ++i) v[i] = uniform(random);
-  return v;
-}
-
 // BTF's matching puts constraint rows on the multipliers' diagonal; AMD's order of that pattern
 // costs 6 × the operations (measured 1.06e7 against 1.65e6). The solutions agree.
 TEST(KluBlocks, ThreeDBeamsFactorWithAFractionOfTheOperationsWithoutBtf) {
@@ -54,7 +49,7 @@ TEST(KluBlocks, ThreeDBeamsFactorWithAFractionOfTheOperationsWithoutBtf) {
   factorize_canopy_matrix(assembler, whole);
   EXPECT_LT(whole.factor_operations(), 0.3 * triangular.factor_operations());
   EXPECT_LT(whole.factor_nonzeros(), 0.6 * triangular.factor_nonzeros());
-  const Eigen::VectorXd b = random_vector(assembler.n_unknowns());
+  const Eigen::VectorXd b = random_vector(assembler.n_unknowns(), 3);
   Eigen::VectorXd x_triangular = b, x_whole = b;
   triangular.solve(x_triangular);
   whole.solve(x_whole);

@@ -15,9 +15,12 @@
 #include "deploydyn/io/model_loader.hpp"
 #include "deploydyn/solvers/static_solver.hpp"
 #include "support/model_builder.hpp"
+#include "support/random_vector.hpp"
 
 namespace deploydyn {
 namespace DEPLOYDYN_FILE_SCOPE {
+
+using testing::random_vector;
 
 using testing::BarSpec;
 using testing::ModelBuilder;
@@ -45,14 +48,6 @@ Model warren_truss(int bays) {
   m.pin(bottom.front());
   m.support(bottom.back(), {false, true, true});
   return m.model();
-}
-
-Eigen::VectorXd random_vector(int size, unsigned seed) {
-  std::mt19937 random(seed);
-  std::uniform_real_distribution<double> uniform(-1.0, 1.0);
-  Eigen::VectorXd v(size);
-  for (double& x : v) x = uniform(random);
-  return v;
 }
 
 // The dynamic iteration matrix [cM + K, sBᵀ; sB, 0] at a perturbed configuration.

@@ -18,9 +18,12 @@
 #include "deploydyn/assembly/metis_ordering.hpp"
 #include "deploydyn/generators/roof.hpp"
 #include "deploydyn/util/run_threads.hpp"
+#include "support/random_vector.hpp"
 
 namespace deploydyn {
 namespace DEPLOYDYN_FILE_SCOPE {
+
+using testing::random_vector;
 
 // A sparse matrix by its entries (in analyze()'s order) and their values.
 struct SparseMatrix {
@@ -85,14 +88,6 @@ SparseMatrix grid(int side, double diagonal, bool multipliers, unsigned seed = 5
     }
   }
   return m;
-}
-
-Eigen::VectorXd random_vector(int n, unsigned seed) {
-  std::mt19937 random(seed);
-  std::uniform_real_distribution<double> uniform(-1.0, 1.0);
-  Eigen::VectorXd v(n);
-  for (int i = 0; i < n; ++i) v[i] = uniform(random);
-  return v;
 }
 
 // Solves A x = b with `system`, which holds A; returns x.

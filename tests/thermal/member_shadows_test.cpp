@@ -147,13 +147,18 @@ TEST(MemberShadows, OnATangleOfRandomMembersEveryFractionIsTheRaysOne) {
   }
 }
 
-TEST(MemberShadows, OnARoofEveryFractionIsTheRaysOne) {
+// The 3D roof of 10 trusses × 26 units, pinned: 1 007 bars.
+Model pinned_roof_of_1007_bars() {
   RoofOptions options;
   options.n_units = 26;
   options.n_trusses = 10;
   options.delta_t_C = 0.0;
   options.bearings = RoofBearings::pinned;
-  const Model roof = make_roof(options);
+  return make_roof(options);
+}
+
+TEST(MemberShadows, OnARoofEveryFractionIsTheRaysOne) {
+  const Model roof = pinned_roof_of_1007_bars();
   std::vector<MemberCapsule> members;
   for (const BarElement& bar : roof.bars) {
     members.push_back({roof.nodes[static_cast<std::size_t>(bar.node_a)].position_m,
@@ -223,12 +228,7 @@ TEST(MemberShadowsUpdate, RandomMembersMovingApartAndTogetherUnderATurningSunAsT
 }
 
 TEST(MemberShadowsUpdate, ARoofDeformingAndDriftingUnderATurningSunAsTheFullTrace) {
-  RoofOptions options;
-  options.n_units = 26;
-  options.n_trusses = 10;
-  options.delta_t_C = 0.0;
-  options.bearings = RoofBearings::pinned;
-  const Model roof = make_roof(options);
+  const Model roof = pinned_roof_of_1007_bars();
   std::vector<Eigen::Vector3d> nodes;
   for (const Node& node : roof.nodes) nodes.push_back(node.position_m);
   std::vector<MemberCapsule> members;
