@@ -145,7 +145,9 @@ def test_stop_ends_a_run_in_a_thread_keeping_its_history(tmp_path, into_folder):
 
 def test_stop_ends_a_continuation_in_a_thread_keeping_its_points():
     model = deploydyn.roof(3000)
-    path, late = in_thread(lambda stop: model.continuation("driver", end=5.0, max_steps=10**6, stop=stop))
+    # 1.5 s: the path has 19 points after 0.5 s on a quiet machine, but at load 8 its set-up took
+    # all of 0.5 s and left one; the test needs two before the stop.
+    path, late = in_thread(lambda stop: model.continuation("driver", end=5.0, max_steps=10**6, stop=stop), after=1.5)
     assert late < LATE
     assert path["end"] == "stopped"
     assert len(path["mu"]) > 1 and 0 < path["mu"][-1] < 5.0
