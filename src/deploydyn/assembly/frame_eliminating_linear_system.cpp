@@ -3,9 +3,10 @@
 #include <Eigen/QR>
 #include <algorithm>
 #include <cstdint>
-#include <numeric>
 #include <stdexcept>
 #include <unordered_map>
+
+#include "deploydyn/assembly/compressed_columns.hpp"
 
 namespace deploydyn {
 namespace {
@@ -27,14 +28,13 @@ FrameEliminatingLinearSystem::FrameEliminatingLinearSystem(std::vector<FrameUnkn
 
 void FrameEliminatingLinearSystem::build_storage(std::span<const MatrixEntry> entries) {
   // The whole pattern, repeats sharing a slot, in (column, row) order.
-  std::vector<int> order(entries.size());
-  std::iota(order.begin(), order.end(), 0);
-  const auto key = [&](int k) { return static_cast<std::int64_t>(entries[k].col) * size_ + entries[k].row; };
-  std::sort(order.begin(), order.end(), [&](int a, int b) { return key(a) < key(b); });
+  const CompressedColumns whole = compress(size_, entries, slots_);
   positions_.clear();
-  for (std::size_t i = 0; i < order.size(); ++i) {
-    if (i == 0 || key(order[i]) != key(order[i - 1])) positions_.push_back(entries[order[i]]);
-    slots_[order[i]] = static_cast<int>(positions_.size()) - 1;
+  positions_.reserve(whole.row_index.size());
+  for (int col = 0; col < size_; ++col) {
+    for (int k = whole.column_start[col]; k < whole.column_start[col + 1]; ++k) {
+      positions_.push_back({whole.row_index[k], col});
+    }
   }
   values_.assign(positions_.size(), 0.0);
 

@@ -55,8 +55,6 @@ class FrameEliminatingLinearSystem final : public LinearSystem {
   Gathered81 gather(const std::array<int, 81>& at) const;
 
   void compute_frame_bases();
-  // t_a = r_a − Σ_b K_ab δq_p,b over the rows that stay (plain and frame coordinates).
-  void subtract_particular_columns();
 
   std::vector<FrameUnknowns> frames_;
   std::unique_ptr<KluLinearSystem> reduced_;
