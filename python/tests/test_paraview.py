@@ -30,10 +30,13 @@ pytestmark = pytest.mark.skipif(
 def pvpython_under_xvfb(*args):
     """pvpython on a virtual X display of its own. `xvfb-run -a` picks the first free display
     number, and two started at once (ctest -j2) may pick the same one: ParaView then aborts with
-    "bad X server connection". A number of this process's own, and another try if it was taken."""
+    "bad X server connection". A number of this process's own, and another try if it was taken.
+    The server runs with -noreset: an X server resets when its last client leaves, and pvpython's
+    early probes connect and leave, so that its window's connection could meet the server in
+    its reset (refused, or reset by the server) and abort, in most runs on a loaded machine."""
     for attempt in range(3):
         display = 200 + (os.getpid() * 7 + attempt * 101) % 700
-        done = subprocess.run([XVFB_RUN, "-n", str(display), PVPYTHON, *args],
+        done = subprocess.run([XVFB_RUN, "-n", str(display), "-s", "-screen 0 1280x1024x24 -noreset", PVPYTHON, *args],
                               capture_output=True, text=True, timeout=300)
         if "bad X server connection" not in done.stderr and "Xvfb failed to start" not in done.stderr:
             return done
