@@ -24,6 +24,9 @@ constexpr int kMaxConstraintDofs = 24;
 using LocalVector = Eigen::Matrix<double, Eigen::Dynamic, 1, 0, kMaxConstraintEquations, 1>;
 using LocalJacobian = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0,
                                     kMaxConstraintEquations, kMaxConstraintDofs>;
+// H(λ) on the stack too: a heap-allocated one per nonlinear constraint and matrix was 115 of a
+// 100-hinge chain's 119 allocations a step (docs/performance.md, "Hinges and cables at scale").
+using LocalHessian = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, kMaxConstraintDofs, kMaxConstraintDofs>;
 
 
 // The rows of a group's switched constraint (a hinge lock) among the constraints: its size and
@@ -348,6 +351,10 @@ void Assembler::evaluate_constraints(const History& history, const Eigen::Vector
   LocalJacobian jacobian;
   for (std::size_t c = 0; c < constraints_.size(); ++c) {
     const Constraint& con = *constraints_[c];
+    if (!constraint_active(history, c)) {  // switched off: Φ = 0, B = 0, no force
+      if (phi != nullptr) phi->segment(first_row_[c], con.n_equations()).setZero();
+      continue;
+    }
     const std::span<const int> dofs = con.dofs();
     local_phi.resize(con.n_equations());
     jacobian.resize(con.n_equations(), static_cast<Eigen::Index>(dofs.size()));
@@ -414,11 +421,13 @@ void Assembler::for_each_matrix_block(const History& history, const Eigen::Vecto
   frame_moments_.for_each_block(t, -w.stiffness * w.loads, emit);  // r = … − f_M
   LocalVector phi;
   LocalJacobian jacobian;
+  LocalHessian hessian;
   std::array<int, kMaxConstraintEquations> rows{};
   for (std::size_t c = 0; c < constraints_.size(); ++c) {
     const Constraint& con = *constraints_[c];
     const int n_eq = con.n_equations();
     const auto n_local = static_cast<Eigen::Index>(con.dofs().size());
+    const bool active = constraint_active(history, c);
     phi.resize(n_eq);
     jacobian.resize(n_eq, n_local);
     evaluate_constraint(history, c, q, t, phi, jacobian);
@@ -436,13 +445,15 @@ void Assembler::for_each_matrix_block(const History& history, const Eigen::Vecto
       emit(row_span, con.dofs(), jacobian);
       emit(con.dofs(), row_span, jacobian.transpose());
     }
-    if (con.nonlinear()) {
-      Eigen::MatrixXd hessian = Eigen::MatrixXd::Zero(n_local, n_local);
+    if (con.nonlinear() && active) {
+      hessian.setZero(n_local, n_local);
       add_hessian_term(history, c, q, t, lambda.segment(first_row_[c], n_eq), hessian);
       emit(con.dofs(), con.dofs(), w.stiffness * hessian);
+    } else if (con.nonlinear()) {  // switched off: H = 0, its entries kept in the pattern
+      emit(con.dofs(), con.dofs(), LocalHessian::Zero(n_local, n_local));
     }
     if (con.switchable()) {  // switched off: its rows read s Δλ̂ = 0 (constraint.hpp)
-      const Eigen::Matrix<double, 1, 1> diagonal(constraint_active(history, c) ? 0.0 : w.constraint_scale);
+      const Eigen::Matrix<double, 1, 1> diagonal(active ? 0.0 : w.constraint_scale);
       for (int k = 0; k < n_eq; ++k) emit(row_span.subspan(k, 1), row_span.subspan(k, 1), diagonal);
     }
   }

@@ -379,7 +379,7 @@ class HingeGroup final : public ElementGroup, public SwitchingGroup {
         CachedKinematics& c = slots.entries[static_cast<std::size_t>(e)];
         if (!c.valid || !same_bits(c.q, q)) continue;
         if (hessian && !c.with_hessian) {
-          c.k.hessian = r.angle_hessian(q);
+          r.angle_hessian(q, c.k.hessian);
           c.with_hessian = true;
         }
         slots.newest = e;
@@ -388,7 +388,12 @@ class HingeGroup final : public ElementGroup, public SwitchingGroup {
       slots.newest = 1 - slots.newest;  // the older entry makes room
       CachedKinematics& c = slots.entries[static_cast<std::size_t>(slots.newest)];
       c.q = q;
-      c.k = hessian ? r.kinematics(q) : r.angle_and_gradient(q);
+      r.angle_and_gradient(q, c.k);  // in place: no copy of ∇²θ
+      if (hessian) {
+        r.angle_hessian(q, c.k.hessian);
+      } else {
+        c.k.hessian.resize(0, 0);  // as angle_and_gradient leaves it: not asked for
+      }
       c.valid = true;
       c.with_hessian = hessian;
       return c.k;

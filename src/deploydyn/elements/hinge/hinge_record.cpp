@@ -15,34 +15,53 @@ Eigen::Vector3d arm(const HingeVector& q, int dimension, int k) {
 
 }  // namespace
 
-HingeKinematics HingeRecord::angle_and_gradient(const HingeVector& q) const {
-  HingeKinematics k;
+void HingeRecord::angle_and_gradient(const HingeVector& q, HingeKinematics& k) const {
   if (element->form == HingeElement::Form::rotations) {
     k.angle_rad = q[1] - q[0];
     k.gradient.resize(2);
     k.gradient << -1.0, 1.0;
-    return k;
+    return;
   }
   const Eigen::Vector3d u = arm(q, dimension, 0), v = arm(q, dimension, 1);
   k.angle_rad = geometry.angle_near(u, v, element->initial_angle_rad);
+  k.gradient.resize(3 * dimension);
   if (dimension == 2) {
-    k.gradient = geometry.gradient<2>(u, v);
+    Eigen::Map<Eigen::Matrix<double, 6, 1>>(k.gradient.data()) = geometry.gradient<2>(u, v);
   } else {
-    k.gradient = geometry.gradient<3>(u, v);
+    Eigen::Map<Eigen::Matrix<double, 9, 1>>(k.gradient.data()) = geometry.gradient<3>(u, v);
   }
+}
+
+void HingeRecord::angle_hessian(const HingeVector& q, HingeMatrix& hessian) const {
+  if (element->form == HingeElement::Form::rotations) {
+    hessian.setZero(2, 2);
+    return;
+  }
+  const Eigen::Vector3d u = arm(q, dimension, 0), v = arm(q, dimension, 1);
+  hessian.resize(3 * dimension, 3 * dimension);  // column-major, 3D rows: contiguous
+  if (dimension == 2) {
+    Eigen::Map<Eigen::Matrix<double, 6, 6>>(hessian.data()) = geometry.hessian<2>(u, v);
+  } else {
+    Eigen::Map<Eigen::Matrix<double, 9, 9>>(hessian.data()) = geometry.hessian<3>(u, v);
+  }
+}
+
+HingeKinematics HingeRecord::angle_and_gradient(const HingeVector& q) const {
+  HingeKinematics k;
+  angle_and_gradient(q, k);
   return k;
 }
 
 HingeMatrix HingeRecord::angle_hessian(const HingeVector& q) const {
-  if (element->form == HingeElement::Form::rotations) return HingeMatrix::Zero(2, 2);
-  const Eigen::Vector3d u = arm(q, dimension, 0), v = arm(q, dimension, 1);
-  if (dimension == 2) return geometry.hessian<2>(u, v);
-  return geometry.hessian<3>(u, v);
+  HingeMatrix hessian;
+  angle_hessian(q, hessian);
+  return hessian;
 }
 
 HingeKinematics HingeRecord::kinematics(const HingeVector& q) const {
-  HingeKinematics k = angle_and_gradient(q);
-  k.hessian = angle_hessian(q);
+  HingeKinematics k;
+  angle_and_gradient(q, k);
+  angle_hessian(q, k.hessian);
   return k;
 }
 

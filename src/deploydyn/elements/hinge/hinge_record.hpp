@@ -69,6 +69,10 @@ struct HingeRecord {
   HingeKinematics angle_and_gradient(const HingeVector& q) const;
   // ∇²θ alone (what kinematics adds to angle_and_gradient).
   HingeMatrix angle_hessian(const HingeVector& q) const;
+  // The same into `k`'s θ, ∇θ and into `hessian`, in place: the hinge group's memo keeps them
+  // without a copy of ∇²θ (docs/performance.md, "Hinges and cables at scale").
+  void angle_and_gradient(const HingeVector& q, HingeKinematics& k) const;
+  void angle_hessian(const HingeVector& q, HingeMatrix& hessian) const;
   // At thermal factor 1 (friction acts in a run, not in a path in ΔT).
   PinForce pin_force(const HingeVector& q, double t) const;
 };
