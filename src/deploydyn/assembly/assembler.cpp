@@ -428,9 +428,13 @@ void Assembler::for_each_matrix_block(const History& history, const Eigen::Vecto
     const int n_eq = con.n_equations();
     const auto n_local = static_cast<Eigen::Index>(con.dofs().size());
     const bool active = constraint_active(history, c);
-    phi.resize(n_eq);
-    jacobian.resize(n_eq, n_local);
-    evaluate_constraint(history, c, q, t, phi, jacobian);
+    if (active) {
+      phi.resize(n_eq);
+      jacobian.resize(n_eq, n_local);
+      evaluate_constraint(history, c, q, t, phi, jacobian);
+    } else {
+      jacobian.setZero(n_eq, n_local);  // switched off: B = 0 (constraint.hpp)
+    }
     for (int k = 0; k < n_eq; ++k) rows[k] = n_dofs() + first_row_[c] + k;
     const std::span<const int> row_span(rows.data(), n_eq);
     jacobian *= w.constraint_scale;
