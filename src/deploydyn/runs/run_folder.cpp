@@ -50,7 +50,11 @@ RunReport run_in_folder(const Model& model, const std::filesystem::path& folder,
     write_failure = error;
   }
   const RunReport report = run.end(folder, write_failure);
-  results.finish(run.summary_json(report), short_summary_json(model, report));
+  if (std::optional<nlohmann::ordered_json> summary = run.summary_object(report)) {
+    results.finish_json(std::move(*summary), short_summary_json(model, report));
+  } else {
+    results.finish(run.summary_json(report), short_summary_json(model, report));
+  }
   if (write_failure) throw *write_failure;
   return report;
 }
