@@ -2,11 +2,11 @@
 
 #include "deploydyn/elements/element_kinds.hpp"
 #include "deploydyn/model/dof_map.hpp"
+#include "deploydyn/io/yaml_emitter.hpp"
 #include "deploydyn/util/overloaded.hpp"
 #include "deploydyn/util/stop_point.hpp"
 
 #include <fmt/format.h>
-#include <yaml-cpp/yaml.h>
 
 #include <ostream>
 #include <string>
@@ -17,23 +17,23 @@ namespace {
 // The shortest text that reads back to the same double (at most 17 significant digits).
 std::string number_text(double value) { return fmt::format("{}", value); }
 
-void emit_key(YAML::Emitter& out, const std::string& key) {
+void emit_key(YamlEmitter& out, const std::string& key) {
   out << YAML::Key << key << YAML::Value;
 }
 
-void emit_number(YAML::Emitter& out, const std::string& key, double value) {
+void emit_number(YamlEmitter& out, const std::string& key, double value) {
   emit_key(out, key);
   out << number_text(value);
 }
 
-void emit_numbers(YAML::Emitter& out, std::initializer_list<double> values) {
+void emit_numbers(YamlEmitter& out, std::initializer_list<double> values) {
   out << YAML::Flow << YAML::BeginSeq;
   for (const double value : values) out << number_text(value);
   out << YAML::EndSeq;
 }
 
 // A material property: its constant, or its table (model/property_table.hpp).
-void emit_property(YAML::Emitter& out, const std::string& key, double constant,
+void emit_property(YamlEmitter& out, const std::string& key, double constant,
                    const std::optional<PropertyTable>& table) {
   if (!table) {
     emit_number(out, key, constant);
@@ -50,13 +50,13 @@ void emit_property(YAML::Emitter& out, const std::string& key, double constant,
   out << YAML::EndMap;
 }
 
-void emit_vector(YAML::Emitter& out, const Eigen::Vector3d& vector, int dimension) {
+void emit_vector(YamlEmitter& out, const Eigen::Vector3d& vector, int dimension) {
   out << YAML::Flow << YAML::BeginSeq;
   for (int i = 0; i < dimension; ++i) out << number_text(vector[i]);
   out << YAML::EndSeq;
 }
 
-void emit_function(YAML::Emitter& out, const TimeFunction& function) {
+void emit_function(YamlEmitter& out, const TimeFunction& function) {
   const auto begin = [&](std::string_view type) {
     out << YAML::Flow << YAML::BeginMap;
     emit_key(out, "type");
@@ -138,7 +138,7 @@ void emit_function(YAML::Emitter& out, const TimeFunction& function) {
 // An entry of `elements` as its element type writes it (elements/element_entry.hpp).
 class YamlElementEntry final : public ElementEntryWriter {
  public:
-  explicit YamlElementEntry(YAML::Emitter& out) : out_(out) {}
+  explicit YamlElementEntry(YamlEmitter& out) : out_(out) {}
 
   void number(std::string_view key, double value) override { emit_number(out_, std::string(key), value); }
   void name(std::string_view key, const std::string& value) override {
@@ -163,14 +163,14 @@ class YamlElementEntry final : public ElementEntryWriter {
   }
 
  private:
-  YAML::Emitter& out_;
+  YamlEmitter& out_;
 };
 
 std::string axis_name(const SignedAxis& axis) {
   return std::string(axis.sign < 0.0 ? "-" : "") + "xyz"[axis.axis];
 }
 
-void emit_environment(YAML::Emitter& out, const Environment& environment) {
+void emit_environment(YamlEmitter& out, const Environment& environment) {
   emit_key(out, "environment");
   out << YAML::BeginMap;
   emit_key(out, "type");
@@ -234,7 +234,7 @@ void emit_environment(YAML::Emitter& out, const Environment& environment) {
   out << YAML::EndMap;
 }
 
-void emit_geometry(YAML::Emitter& out, const Model& model) {
+void emit_geometry(YamlEmitter& out, const Model& model) {
   emit_key(out, "nodes");
   out << YAML::BeginMap;
   for (const Node& node : model.nodes) {
@@ -367,7 +367,7 @@ bool has_axis(const Model& model, const DofMap& dofs, const Joint& joint) {
          dofs.index(joint.nodes[1], "R11") >= 0;
 }
 
-void emit_boundary_conditions(YAML::Emitter& out, const Model& model) {
+void emit_boundary_conditions(YamlEmitter& out, const Model& model) {
   static constexpr std::array<const char*, 3> kAxisNames{"x", "y", "z"};
   if (!model.supports.empty()) {
     emit_key(out, "supports");
@@ -527,7 +527,7 @@ void emit_boundary_conditions(YAML::Emitter& out, const Model& model) {
   }
 }
 
-void emit_analysis(YAML::Emitter& out, const Model& model) {
+void emit_analysis(YamlEmitter& out, const Model& model) {
   const AnalysisOptions& analysis = model.analysis;
   emit_key(out, "analysis");
   out << YAML::BeginMap;
@@ -667,7 +667,7 @@ void emit_analysis(YAML::Emitter& out, const Model& model) {
 }
 
 // Only what differs from the defaults, so that a model without `checks` is written as before.
-void emit_checks(YAML::Emitter& out, const CheckSettings& checks) {
+void emit_checks(YamlEmitter& out, const CheckSettings& checks) {
   const CheckSettings defaults;
   if (checks.clearance == defaults.clearance && !checks.required_clearance_m) return;
   emit_key(out, "checks");
@@ -679,7 +679,7 @@ void emit_checks(YAML::Emitter& out, const CheckSettings& checks) {
 }
 
 // Only when given, so that a model without them is written as before.
-void emit_initial_velocities(YAML::Emitter& out, const Model& model) {
+void emit_initial_velocities(YamlEmitter& out, const Model& model) {
   const InitialVelocities& velocities = model.initial_velocities;
   if (!velocities.given()) return;
   emit_key(out, "initial_velocities");
@@ -714,8 +714,9 @@ void emit_initial_velocities(YAML::Emitter& out, const Model& model) {
 
 }  // namespace
 
-void save_model(const Model& model, std::ostream& out) {
-  YAML::Emitter emitter;
+namespace {
+
+std::string emit_model(const Model& model, YamlEmitter& emitter) {
   emitter << YAML::BeginMap;
   if (!model.name.empty()) {
     emit_key(emitter, "name");
@@ -733,7 +734,25 @@ void save_model(const Model& model, std::ostream& out) {
   emit_initial_velocities(emitter, model);
   emit_checks(emitter, model.checks);
   emitter << YAML::EndMap;
-  out << emitter.c_str() << '\n';
+  return emitter.text() + '\n';
 }
+
+}  // namespace
+
+std::string model_yaml(const Model& model) {
+  try {
+    PlainYamlEmitter emitter;
+    return emit_model(model, emitter);
+  } catch (const NotPlainYaml&) {
+    return model_yaml_with_yaml_cpp(model);  // a name or text that may need quotes
+  }
+}
+
+std::string model_yaml_with_yaml_cpp(const Model& model) {
+  YamlCppEmitter emitter;
+  return emit_model(model, emitter);
+}
+
+void save_model(const Model& model, std::ostream& out) { out << model_yaml(model); }
 
 }  // namespace deploydyn

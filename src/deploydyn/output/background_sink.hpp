@@ -4,16 +4,18 @@
 // adding to it. Records keep
 // their order; finish() waits until all are written and rethrows what the sink threw.
 // The queue is bounded: a solver faster than the disk waits rather than filling memory.
+// Nothing is allocated per step once the queue has grown: its slots (states, records) are
+// reused, the solver filling one batch while the writer empties the other, and the writer
+// builds each step's record into the same StepRecord.
 
 #include <atomic>
 #include <chrono>
 #include <condition_variable>
-#include <deque>
 #include <exception>
 #include <mutex>
 #include <thread>
 #include <utility>
-#include <variant>
+#include <vector>
 
 #include "deploydyn/solvers/step_record.hpp"
 
@@ -37,25 +39,33 @@ class BackgroundSink final : public RecordSink {
   bool failed() const { return failed_.load(std::memory_order_relaxed); }
 
  private:
-  // A record, or the state to build it from.
-  struct Snapshot {
+  // A record, or the state to build it from. Slots are reused: each keeps its storage.
+  struct Item {
+    bool is_record = false;  // `record` given whole, else built from the state below
+    StepRecord record;
     const Assembler* assembler = nullptr;
     MotionState state;
     WorkTally work;
     bool output = true;
   };
-  using Item = std::variant<StepRecord, Snapshot>;
 
-  void push(Item item);
+  // The next free slot of the queue, once there is room (false: the sink failed). With the
+  // lock held.
+  Item* next_slot(std::unique_lock<std::mutex>& lock);
+  // Counts the filled slot in, waking the writer once per batch. With the lock held.
+  void queued();
   void work();
 
   static constexpr std::size_t kBatch = 64;        // records per wake-up of the writer
-  static constexpr std::size_t kMaxQueued = 1024;  // the solver waits beyond this
+  // The solver waits beyond this. The slots stay allocated until the run ends: 256 of them keep
+  // the queue's memory small (a four-bar: ~0.2 MB) and the writer busy.
+  static constexpr std::size_t kMaxQueued = 256;
   static constexpr std::chrono::milliseconds kLongestWait{100};
   RecordSink& sink_;
   std::mutex mutex_;
   std::condition_variable changed_;
-  std::deque<Item> queue_;
+  std::vector<Item> queue_;  // slots [0, n_queued_) hold what the writer has not taken
+  std::size_t n_queued_ = 0;
   bool closing_ = false;
   std::exception_ptr error_;
   std::atomic<bool> failed_{false};

@@ -230,6 +230,11 @@ ordered_json summary_head(const Model& model, const RunReport& report) {
 
 std::string summary_json(const Model& model, const Envelope& envelope, const RunReport& report,
                          const Verdict* verdict) {
+  return summary_object(model, envelope, report, verdict).dump(2);
+}
+
+ordered_json summary_object(const Model& model, const Envelope& envelope, const RunReport& report,
+                            const Verdict* verdict) {
   ordered_json j = summary_head(model, report);
   j["units"] = {{"length", "m"}, {"force", "N"}, {"torque", "N·m"}, {"time", "s"},
                 {"energy", "J"}, {"temperature_change", "°C"}};
@@ -297,7 +302,7 @@ std::string summary_json(const Model& model, const Envelope& envelope, const Run
   j["warnings"] = report.warnings;  // run_warnings (results/plausibility.hpp)
   j["files"] = files(model);
   if (verdict) j["verdict"] = verdict_json(*verdict);
-  return j.dump(2);
+  return j;
 }
 
 }  // namespace deploydyn

@@ -28,6 +28,9 @@ struct Verdict;
 // return for a run in memory. With a verdict (checks/verdict.hpp), its `verdict` at the end.
 std::string summary_json(const Model& model, const Envelope& envelope, const RunReport& report,
                          const Verdict* verdict = nullptr);
+// The same as a JSON object (summary_json is its dump(2)).
+nlohmann::ordered_json summary_object(const Model& model, const Envelope& envelope, const RunReport& report,
+                                      const Verdict* verdict = nullptr);
 
 // The files of a run's folder by role ("model", "history", "vtk"), as summary.json lists them
 // under "files": what the next run into the folder removes first.

@@ -186,31 +186,38 @@ HistoryLayout::HistoryLayout(const Model& model) {
 }
 
 void HistoryLayout::append_row(const StepRecord& r, std::vector<double>& row) const {
-  std::vector<double> full;
-  full.reserve(n_full_);
-  full.push_back(r.time_s);
-  full.insert(full.end(), r.q.begin(), r.q.end());
-  for (std::size_t i = 0; i < position_dofs_.size(); ++i) {
-    full.push_back(r.q[position_dofs_[i]] - initial_m_[i]);
-  }
+  // Walks the full row in its order and keeps the picked columns (picks_ ascend): no full row
+  // is built, so no allocation per row.
+  const std::size_t n_before = row.size();
+  std::size_t i = 0;
+  auto pick = picks_.begin();
+  const auto take = [&](double value) {
+    if (pick != picks_.end() && *pick == i) {
+      row.push_back(value);
+      ++pick;
+    }
+    ++i;
+  };
+  take(r.time_s);
+  for (const double value : r.q) take(value);
+  for (std::size_t k = 0; k < position_dofs_.size(); ++k) take(r.q[position_dofs_[k]] - initial_m_[k]);
   const auto kinds = element_kinds();
   for (std::size_t g = 0; g < r.elements.size(); ++g) {
     const auto quantities = kinds[g]->quantities(r.dimension);
     const ElementResults& results = r.elements[g];
     for (int e = 0; e < results.n_elements(); ++e) {
       for (int k = 0; k < results.n_quantities; ++k) {
-        if (quantities[static_cast<std::size_t>(k)].recorded) full.push_back(results.at(e, k));
+        if (quantities[static_cast<std::size_t>(k)].recorded) take(results.at(e, k));
       }
     }
   }
-  full.insert(full.end(), r.driver_efforts.begin(), r.driver_efforts.end());
-  full.insert(full.end(), {r.kinetic_energy_J, r.strain_energy_J, r.external_work_J, r.dissipated_J});
-  full.insert(full.end(), r.reactions.begin(), r.reactions.end());
-  if (full.size() != n_full_) {
-    throw std::invalid_argument(fmt::format("history row: the record gives {} values, the model {}",
-                                            full.size(), n_full_));
+  for (const double value : r.driver_efforts) take(value);
+  for (const double value : {r.kinetic_energy_J, r.strain_energy_J, r.external_work_J, r.dissipated_J}) take(value);
+  for (const double value : r.reactions) take(value);
+  if (i != n_full_) {
+    row.resize(n_before);
+    throw std::invalid_argument(fmt::format("history row: the record gives {} values, the model {}", i, n_full_));
   }
-  for (const std::size_t i : picks_) row.push_back(full[i]);
 }
 
 }  // namespace deploydyn

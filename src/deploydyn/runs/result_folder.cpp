@@ -186,6 +186,11 @@ void ResultFolder::finish_json(nlohmann::ordered_json final_status, nlohmann::or
               [&] { return with_existing_files(folder_, std::move(short_status), -1); });
 }
 
+void ResultFolder::finish_json(nlohmann::ordered_json final_status, const std::string& short_status) {
+  finish_with([&] { return with_existing_files(folder_, std::move(final_status), 2); },
+              [&] { return with_existing_files(folder_, std::string_view(short_status), -1); });
+}
+
 void ResultFolder::finish_with(const std::function<std::string()>& final_text,
                                const std::function<std::string()>& short_text) {
   try {

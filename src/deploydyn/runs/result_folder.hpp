@@ -62,6 +62,8 @@ class ResultFolder {
   // The same for a status made as JSON, which is then not parsed again: a study's lists 10⁵
   // cases, and an ordered_json object of n keys is parsed in n² key comparisons.
   void finish_json(nlohmann::ordered_json final_status, nlohmann::ordered_json short_status);
+  // The final status as JSON, the short one as text (parsed only if it is needed).
+  void finish_json(nlohmann::ordered_json final_status, const std::string& short_status);
 
  private:
   // finish() with the status texts made when they are needed.

@@ -1,6 +1,5 @@
 #include "deploydyn/runs/run_folder.hpp"
 
-#include <sstream>
 #include <utility>
 
 #include "deploydyn/io/model_writer.hpp"
@@ -13,9 +12,7 @@ namespace deploydyn {
 void start_run_folder(ResultFolder& results, const Model& model, const ResultFolder::Files& files) {
   results.start("model", model.name, files);
   remove_vtk_series(results.path() / kVtkFolderName);
-  std::ostringstream model_text;
-  save_model(model, model_text);
-  write_file(results.path() / kRunModelFileName, model_text.str());
+  write_file(results.path() / kRunModelFileName, model_yaml(model));
 }
 
 void record_output_failure(RunReport& report, const OutputError& error) {
@@ -53,7 +50,11 @@ RunReport run_in_folder(const Model& model, const std::filesystem::path& folder,
     write_failure = error;
   }
   const RunReport report = run.end(folder, write_failure);
-  results.finish(run.summary_json(report), short_summary_json(model, report));
+  if (std::optional<nlohmann::ordered_json> summary = run.summary_object(report)) {
+    results.finish_json(std::move(*summary), short_summary_json(model, report));
+  } else {
+    results.finish(run.summary_json(report), short_summary_json(model, report));
+  }
   if (write_failure) throw *write_failure;
   return report;
 }

@@ -16,6 +16,7 @@
 #include <atomic>
 #include <filesystem>
 #include <functional>
+#include <nlohmann/json.hpp>
 #include <optional>
 #include <string>
 
@@ -59,6 +60,11 @@ class FolderRun {
   virtual RunReport end(const std::filesystem::path& folder, std::optional<OutputError>& write_failure) = 0;
   // summary.json's final text.
   virtual std::string summary_json(const RunReport& report) const = 0;
+  // The same as a JSON object, when the run makes it so: it is then written without being
+  // dumped and parsed again. None by default: summary_json is written.
+  virtual std::optional<nlohmann::ordered_json> summary_object(const RunReport& /*report*/) const {
+    return std::nullopt;
+  }
 };
 
 // Runs `run` in `folder` (created if needed) for `model`. Throws OutputError when the folder

@@ -135,6 +135,11 @@ class HistoryRun final : public FolderRun {
     return coupling_ ? with_temperature_summary(summary, *coupling_) : summary;
   }
 
+  std::optional<nlohmann::ordered_json> summary_object(const RunReport& report) const override {
+    if (coupling_) return std::nullopt;  // its temperatures are added to the text
+    return deploydyn::summary_object(model_, envelope_, report, &run_verdict_);
+  }
+
  private:
   const Model& model_;
   Envelope& envelope_;

@@ -38,6 +38,10 @@ struct StepRecord {
 
 StepRecord make_step_record(const Assembler& assembler, const MotionState& state,
                             const WorkTally& work = {}, bool output = true);
+// The same into `record`, reusing its storage: no allocation per step but the reactions'
+// (output/background_sink.hpp builds every step's record so).
+void fill_step_record(const Assembler& assembler, const MotionState& state, const WorkTally& work, bool output,
+                      StepRecord& record);
 
 // The record of an equilibrium on a path (a continuation, a deployment of the window): at rest,
 // the drivers at `time_s`, every ΔT scaled by `thermal_factor` (Assembler::internal_force), the
