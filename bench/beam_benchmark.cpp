@@ -11,7 +11,8 @@
 //   BM_BeamCanopyStep/girders/units/btf/ordering/frames   time per step, Newton iterations per
 //                                         step, unknowns, factored unknowns, beams, KLU's operations
 //                                         and factor entries per LU;
-//                                         ordering 0 automatic, 1 AMD, 2 two domains
+//                                         ordering 0 automatic, 1 AMD, 2 two domains,
+//                                         3 nested dissection
 
 #include <benchmark/benchmark.h>
 
@@ -41,8 +42,10 @@ Model canopy_at_constant_rate(int girders, int units) {
 void BM_BeamCanopyStep(benchmark::State& state) {
   bench::SteppingRun run(canopy_at_constant_rate(static_cast<int>(state.range(0)), static_cast<int>(state.range(1))));
   const KluBlocks blocks = state.range(2) != 0 ? KluBlocks::triangular : KluBlocks::whole;
-  const KluOrdering ordering = state.range(3) == 1 ? KluOrdering::amd
-                               : state.range(3) == 2 ? KluOrdering::two_domains : KluOrdering::automatic;
+  const KluOrdering ordering = state.range(3) == 1   ? KluOrdering::amd
+                               : state.range(3) == 2 ? KluOrdering::two_domains
+                               : state.range(3) == 3 ? KluOrdering::nested_dissection
+                                                     : KluOrdering::automatic;
   auto klu = std::make_unique<KluLinearSystem>(ordering, blocks);
   const KluLinearSystem& factored = *klu;
   if (state.range(4) == 2) {
@@ -79,6 +82,7 @@ BENCHMARK(BM_BeamCanopyStep)
     ->Args({10, 20, 0, 0, 1})
     ->Args({25, 50, 0, 0, 2})
     ->Args({25, 50, 0, 1, 2})
+    ->Args({25, 50, 0, 3, 2})
     ->Unit(benchmark::kMillisecond);
 
 }  // namespace
