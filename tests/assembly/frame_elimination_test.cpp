@@ -12,6 +12,7 @@
 #include <string>
 
 #include "deploydyn/assembly/assembler.hpp"
+#include "deploydyn/assembly/klu_linear_system.hpp"
 #include "deploydyn/assembly/linear_system_factory.hpp"
 #include "deploydyn/constraints/frame_orthonormality.hpp"
 #include "deploydyn/io/model_loader.hpp"
