@@ -2,15 +2,17 @@
 // ../shared/models/canopy3d.yaml) and 25 × 50 units (10 025 beams), one generalized-α step,
 // Newton included, the actuators turning at their mean rate from t = 0. KLU ordered without BTF
 // (`btf:0`, what 3D beam models get) and with it (`btf:1`), with each node's frame constraints
-// eliminated in the solve (`frames:1`, what 3D beam models get now;
-// assembly/frame_eliminating_linear_system.hpp) or the whole matrix to KLU (`frames:0`, as
+// eliminated in the solve (`frames:1`; assembly/frame_eliminating_linear_system.hpp), with the
+// pins' and drivers' multipliers eliminated after them (`frames:2`, what 3D beam models get now;
+// assembly/multiplier_eliminating_linear_system.hpp) or the whole matrix to KLU (`frames:0`, as
 // before): in one process, so that they can be run interleaved
 // (--benchmark_enable_random_interleaving).
 // docs/performance.md, "3D beams".
 //   BM_BeamCanopyStep/girders/units/btf/ordering/frames   time per step, Newton iterations per
 //                                         step, unknowns, factored unknowns, beams, KLU's operations
 //                                         and factor entries per LU;
-//                                         ordering 0 automatic, 1 AMD, 2 two domains
+//                                         ordering 0 automatic, 1 AMD, 2 two domains,
+//                                         3 nested dissection
 
 #include <benchmark/benchmark.h>
 
@@ -18,6 +20,7 @@
 
 #include "deploydyn/assembly/frame_eliminating_linear_system.hpp"
 #include "deploydyn/assembly/klu_linear_system.hpp"
+#include "deploydyn/assembly/multiplier_eliminating_linear_system.hpp"
 #include "support/scissor_canopy.hpp"
 #include "support/stepping_run.hpp"
 
@@ -39,11 +42,16 @@ Model canopy_at_constant_rate(int girders, int units) {
 void BM_BeamCanopyStep(benchmark::State& state) {
   bench::SteppingRun run(canopy_at_constant_rate(static_cast<int>(state.range(0)), static_cast<int>(state.range(1))));
   const KluBlocks blocks = state.range(2) != 0 ? KluBlocks::triangular : KluBlocks::whole;
-  const KluOrdering ordering = state.range(3) == 1 ? KluOrdering::amd
-                               : state.range(3) == 2 ? KluOrdering::two_domains : KluOrdering::automatic;
+  const KluOrdering ordering = state.range(3) == 1   ? KluOrdering::amd
+                               : state.range(3) == 2 ? KluOrdering::two_domains
+                               : state.range(3) == 3 ? KluOrdering::nested_dissection
+                                                     : KluOrdering::automatic;
   auto klu = std::make_unique<KluLinearSystem>(ordering, blocks);
   const KluLinearSystem& factored = *klu;
-  if (state.range(4) != 0) {
+  if (state.range(4) == 2) {
+    run.system = std::make_unique<FrameEliminatingLinearSystem>(
+        run.assembler->frame_unknowns(), std::make_unique<MultiplierEliminatingLinearSystem>(std::move(klu)));
+  } else if (state.range(4) == 1) {
     run.system = std::make_unique<FrameEliminatingLinearSystem>(run.assembler->frame_unknowns(), std::move(klu));
   } else {
     run.system = std::move(klu);
@@ -56,25 +64,25 @@ void BM_BeamCanopyStep(benchmark::State& state) {
   state.counters["newton_per_step"] = newton_per_step;
   state.counters["lu_operations"] = factored.factor_operations();
   state.counters["lu_entries"] = factored.factor_nonzeros();
+  state.counters["full_factorizations"] = factored.full_factorizations();
   state.counters["two_domains"] = factored.ordering() == KluOrdering::two_domains ? 1.0 : 0.0;
 }
 
 BENCHMARK(BM_BeamCanopyStep)
     ->ArgNames({"girders", "units", "btf", "ordering", "frames"})
+    ->Args({2, 3, 0, 0, 2})
     ->Args({2, 3, 0, 0, 1})
     ->Args({2, 3, 1, 0, 1})
     ->Args({2, 3, 0, 0, 0})
-    ->Args({2, 3, 1, 0, 0})
+    ->Args({4, 8, 0, 0, 2})
+    ->Args({4, 8, 0, 1, 2})
     ->Args({4, 8, 0, 0, 1})
-    ->Args({4, 8, 0, 1, 1})
-    ->Args({4, 8, 0, 2, 1})
-    ->Args({4, 8, 0, 1, 0})
+    ->Args({10, 20, 0, 0, 2})
+    ->Args({10, 20, 0, 1, 2})
     ->Args({10, 20, 0, 0, 1})
-    ->Args({10, 20, 0, 1, 1})
-    ->Args({10, 20, 0, 2, 1})
-    ->Args({25, 50, 0, 0, 1})
-    ->Args({25, 50, 0, 1, 1})
-    ->Args({25, 50, 0, 2, 1})
+    ->Args({25, 50, 0, 0, 2})
+    ->Args({25, 50, 0, 1, 2})
+    ->Args({25, 50, 0, 3, 2})
     ->Unit(benchmark::kMillisecond);
 
 }  // namespace

@@ -17,22 +17,23 @@
 #include <vector>
 
 #include "deploydyn/assembly/frame_unknowns.hpp"
-#include "deploydyn/assembly/klu_linear_system.hpp"
+#include "deploydyn/assembly/linear_system.hpp"
 
 namespace deploydyn {
 
 class FrameEliminatingLinearSystem final : public LinearSystem {
  public:
-  // `reduced`: the back end of the reduced matrix, not yet analysed.
-  FrameEliminatingLinearSystem(std::vector<FrameUnknowns> frames, std::unique_ptr<KluLinearSystem> reduced);
+  // `reduced`: the back end of the reduced matrix, not yet analysed (KLU, or KLU behind the
+  // elimination of the remaining local multipliers, multiplier_eliminating_linear_system.hpp).
+  FrameEliminatingLinearSystem(std::vector<FrameUnknowns> frames, std::unique_ptr<LinearSystem> reduced);
 
   void solve(Eigen::Ref<Eigen::VectorXd> rhs) override;
   const char* name() const override { return "KLU"; }
   std::vector<double> pivot_memory() const override { return reduced_->pivot_memory(); }
   void restore_pivot_memory(std::span<const double> memory) override { reduced_->restore_pivot_memory(memory); }
 
-  // The factored reduced matrix, for benchmarks and tests.
-  const KluLinearSystem& reduced() const { return *reduced_; }
+  // The reduced matrix's system, for benchmarks and tests.
+  const LinearSystem& reduced() const { return *reduced_; }
 
  protected:
   void build_storage(std::span<const MatrixEntry> entries) override;
@@ -57,7 +58,7 @@ class FrameEliminatingLinearSystem final : public LinearSystem {
   void compute_frame_bases();
 
   std::vector<FrameUnknowns> frames_;
-  std::unique_ptr<KluLinearSystem> reduced_;
+  std::unique_ptr<LinearSystem> reduced_;
   std::vector<MatrixEntry> positions_;
   std::vector<int> plain_of_;              // unknown → reduced index, −1 for frame unknowns
   std::vector<int> frame_first_reduced_;   // node → its 3 reduced unknowns' first

@@ -19,4 +19,9 @@ std::unique_ptr<LinearSystem> make_linear_system(const Assembler& assembler, Lin
 // With the model's own choice (analysis.linear_solver).
 std::unique_ptr<LinearSystem> make_linear_system(const Assembler& assembler);
 
+class KluLinearSystem;
+// The KLU that factors `system` in the end, through the eliminations of frames and local
+// multipliers; null when the back end is not KLU. For benchmarks, tests and reports.
+const KluLinearSystem* factoring_klu(const LinearSystem& system);
+
 }  // namespace deploydyn
