@@ -23,6 +23,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <limits>
 #include <numbers>
 #include <stdexcept>
 
@@ -270,6 +271,25 @@ TEST(MemberShadowsUpdate, SizesAreChecked) {
   std::vector<MemberCapsule> members(2);
   std::vector<double> fractions(2);
   EXPECT_THROW(shadows.update(members, Eigen::Vector3d::UnitZ(), fractions), std::invalid_argument);
+}
+
+// A diverged state's NaN or infinity would reach the grid's float-to-integer cell index.
+TEST(MemberShadows, NonFiniteInputIsRefused) {
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  const double inf = std::numeric_limits<double>::infinity();
+  std::vector<double> fractions(2);
+  for (int field = 0; field < 4; ++field) {
+    std::array<MemberCapsule, 2> members = lit_and_above(0.0);
+    Eigen::Vector3d sun = kSunAbove;
+    if (field == 0) members[1].end_a_m.y() = nan;
+    if (field == 1) members[0].end_b_m.z() = -inf;
+    if (field == 2) members[1].radius_m = nan;
+    if (field == 3) sun.x() = nan;
+    MemberShadows shadows(2, 4, 4);
+    EXPECT_THROW(shadows.compute(members, sun, fractions), std::invalid_argument) << field;
+    EXPECT_THROW(shadows.update(members, sun, fractions), std::invalid_argument) << field;
+    EXPECT_NO_THROW(shadows.update(lit_and_above(0.0), kSunAbove, fractions)) << field;
+  }
 }
 
 }  // namespace

@@ -181,10 +181,20 @@ void MemberShadows::for_each_in_cells_of(int i, Candidate&& candidate) {
   }
 }
 
-void MemberShadows::check_sizes(std::span<const MemberCapsule> members, std::span<const double> shadowed_fraction) const {
+// Sizes that disagree, and non-finite numbers: the grid turns coordinates into integer cell
+// indices, which a NaN or an infinity would make undefined (a diverging run's last state).
+void MemberShadows::check_input(std::span<const MemberCapsule> members, const Eigen::Vector3d& sun_direction,
+                                std::span<const double> shadowed_fraction) const {
   if (static_cast<int>(members.size()) != n_members_ || static_cast<int>(shadowed_fraction.size()) != n_members_) {
     throw std::invalid_argument(fmt::format("MemberShadows: {} members and {} fractions, expected {}", members.size(),
                                             shadowed_fraction.size(), n_members_));
+  }
+  if (!sun_direction.allFinite()) throw std::invalid_argument("MemberShadows: the sun's direction is not finite");
+  for (std::size_t i = 0; i < members.size(); ++i) {
+    const MemberCapsule& m = members[i];
+    if (!m.end_a_m.allFinite() || !m.end_b_m.allFinite() || !std::isfinite(m.radius_m)) {
+      throw std::invalid_argument(fmt::format("MemberShadows: member {} has a position or radius that is not finite", i));
+    }
   }
 }
 
@@ -234,7 +244,7 @@ int MemberShadows::shade_by(const Silhouette& lit, const Silhouette& occluder) {
 
 void MemberShadows::compute(std::span<const MemberCapsule> members, const Eigen::Vector3d& sun_direction,
                             std::span<double> shadowed_fraction) {
-  check_sizes(members, shadowed_fraction);
+  check_input(members, sun_direction, shadowed_fraction);
   see_from_the_sun(members, sun_direction.normalized());
   std::fill(shadowed_fraction.begin(), shadowed_fraction.end(), 0.0);
   if (lit_.empty()) return;
@@ -331,7 +341,7 @@ bool MemberShadows::pairs_still_hold(std::span<const MemberCapsule> members) con
 
 void MemberShadows::update(std::span<const MemberCapsule> members, const Eigen::Vector3d& sun_direction,
                            std::span<double> shadowed_fraction) {
-  check_sizes(members, shadowed_fraction);
+  check_input(members, sun_direction, shadowed_fraction);
   see_from_the_sun(members, sun_direction.normalized());
   std::fill(shadowed_fraction.begin(), shadowed_fraction.end(), 0.0);
   if (lit_.empty()) return;

@@ -50,6 +50,8 @@ class MemberShadows {
 
   // The shadowed fraction of every member (in [0, 1]) of the structure `members` (as many as
   // the constructor's n_members), lit from the direction `sun_direction` (towards the sun).
+  // Both throw std::invalid_argument for other counts and for a position, radius or sun
+  // direction that is not finite.
   void compute(std::span<const MemberCapsule> members, const Eigen::Vector3d& sun_direction,
                std::span<double> shadowed_fraction);
   // The same fractions as compute's, from the candidate pairs kept since their last listing.
@@ -79,7 +81,8 @@ class MemberShadows {
   };
   CellRange cells_of(const Box& box) const;
   std::size_t bucket_of(std::int64_t x, std::int64_t y) const;
-  void check_sizes(std::span<const MemberCapsule> members, std::span<const double> shadowed_fraction) const;
+  void check_input(std::span<const MemberCapsule> members, const Eigen::Vector3d& sun_direction,
+                   std::span<const double> shadowed_fraction) const;
   // Each member's silhouette in the sun's view (sun_ the unit direction), lit_ those with one.
   void see_from_the_sun(std::span<const MemberCapsule> members, const Eigen::Vector3d& sun);
   void build_grid(std::span<const int> members);  // over grid_boxes_ of `members`
