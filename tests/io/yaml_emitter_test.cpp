@@ -40,10 +40,11 @@ TEST(YamlEmitter, EveryExampleModelIsWrittenAsYamlCppWritesIt) {
 TEST(YamlEmitter, AwkwardNamesAndTextAreWrittenAsYamlCppWritesThem) {
   const Model general =
       load_model(std::filesystem::path(DEPLOYDYN_SOURCE_DIR) / "examples/paper/general.yaml");
-  for (const std::string& name :
+  for (const char* text :
        {"A: b",    "yes",    "null", "#1",  "- x", "x ",   "'q'", "\"q\"", "a,b",         "[a]",
         "é",       "-1e-05", "1:30", "a b", "~",   "",     "?x",  "x\ty",  "line\nbreak", "*ref",
         "&anchor", "!tag",   "%x",   "@x",  "`x`", "x #y", "x:",  "x: ",   ".5",          "..."}) {
+    const std::string name = text;
     SCOPED_TRACE(name);
     Model model = general;
     model.nodes[0].name = name;
