@@ -449,12 +449,10 @@ void Assembler::for_each_matrix_block(const History& history, const Eigen::Vecto
       emit(row_span, con.dofs(), jacobian);
       emit(con.dofs(), row_span, jacobian.transpose());
     }
-    if (con.nonlinear() && active) {
+    if (con.nonlinear()) {  // switched off: H = 0, its entries kept in the pattern
       hessian.setZero(n_local, n_local);
-      add_hessian_term(history, c, q, t, lambda.segment(first_row_[c], n_eq), hessian);
+      if (active) add_hessian_term(history, c, q, t, lambda.segment(first_row_[c], n_eq), hessian);
       emit(con.dofs(), con.dofs(), w.stiffness * hessian);
-    } else if (con.nonlinear()) {  // switched off: H = 0, its entries kept in the pattern
-      emit(con.dofs(), con.dofs(), LocalHessian::Zero(n_local, n_local));
     }
     if (con.switchable()) {  // switched off: its rows read s Δλ̂ = 0 (constraint.hpp)
       const Eigen::Matrix<double, 1, 1> diagonal(active ? 0.0 : w.constraint_scale);
