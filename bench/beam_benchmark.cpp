@@ -6,10 +6,11 @@
 // pins' and drivers' multipliers eliminated after them (`frames:2`, what 3D beam models get now;
 // assembly/multiplier_eliminating_linear_system.hpp) or the whole matrix to KLU (`frames:0`, as
 // before): in one process, so that they can be run interleaved
-// (--benchmark_enable_random_interleaving).
+// (--benchmark_enable_random_interleaving). `jacobian:0` steps with the default (`auto`: modified
+// Newton for 3D beams, solvers/newton.hpp), `jacobian:1` with full Newton.
 // docs/performance.md, "3D beams".
-//   BM_BeamCanopyStep/girders/units/btf/ordering/frames   time per step, Newton iterations per
-//                                         step, unknowns, factored unknowns, beams, KLU's operations
+//   BM_BeamCanopyStep/girders/units/btf/ordering/frames/jacobian   time per step, Newton
+//                                         iterations and LUs per step, unknowns, factored unknowns, beams, KLU's operations
 //                                         and factor entries per LU;
 //                                         ordering 0 automatic, 1 AMD, 2 two domains,
 //                                         3 nested dissection
@@ -40,7 +41,9 @@ Model canopy_at_constant_rate(int girders, int units) {
 }
 
 void BM_BeamCanopyStep(benchmark::State& state) {
-  bench::SteppingRun run(canopy_at_constant_rate(static_cast<int>(state.range(0)), static_cast<int>(state.range(1))));
+  Model model = canopy_at_constant_rate(static_cast<int>(state.range(0)), static_cast<int>(state.range(1)));
+  if (state.range(5) == 1) model.analysis.newton.jacobian = NewtonOptions::Jacobian::full;
+  bench::SteppingRun run(std::move(model));
   const KluBlocks blocks = state.range(2) != 0 ? KluBlocks::triangular : KluBlocks::whole;
   const KluOrdering ordering = state.range(3) == 1   ? KluOrdering::amd
                                : state.range(3) == 2 ? KluOrdering::two_domains
@@ -57,7 +60,10 @@ void BM_BeamCanopyStep(benchmark::State& state) {
     run.system = std::move(klu);
   }
   run.system->analyze(run.assembler->n_unknowns(), run.assembler->matrix_entries());
+  const long lu_before = run.system->factorizations();
   const double newton_per_step = run.step_loop(state, *run.system, kRestart_s);
+  state.counters["lu_per_step"] =
+      static_cast<double>(run.system->factorizations() - lu_before) / static_cast<double>(state.iterations());
   state.counters["beams"] = static_cast<double>(run.model.beams.size());
   state.counters["unknowns"] = run.system->size();
   state.counters["factored"] = factored.factored_size();
@@ -69,20 +75,24 @@ void BM_BeamCanopyStep(benchmark::State& state) {
 }
 
 BENCHMARK(BM_BeamCanopyStep)
-    ->ArgNames({"girders", "units", "btf", "ordering", "frames"})
-    ->Args({2, 3, 0, 0, 2})
-    ->Args({2, 3, 0, 0, 1})
-    ->Args({2, 3, 1, 0, 1})
-    ->Args({2, 3, 0, 0, 0})
-    ->Args({4, 8, 0, 0, 2})
-    ->Args({4, 8, 0, 1, 2})
-    ->Args({4, 8, 0, 0, 1})
-    ->Args({10, 20, 0, 0, 2})
-    ->Args({10, 20, 0, 1, 2})
-    ->Args({10, 20, 0, 0, 1})
-    ->Args({25, 50, 0, 0, 2})
-    ->Args({25, 50, 0, 1, 2})
-    ->Args({25, 50, 0, 3, 2})
+    ->ArgNames({"girders", "units", "btf", "ordering", "frames", "jacobian"})
+    ->Args({2, 3, 0, 0, 2, 0})
+    ->Args({2, 3, 0, 0, 1, 1})
+    ->Args({2, 3, 0, 0, 1, 0})
+    ->Args({2, 3, 1, 0, 1, 0})
+    ->Args({2, 3, 0, 0, 0, 0})
+    ->Args({4, 8, 0, 0, 2, 0})
+    ->Args({4, 8, 0, 0, 2, 1})
+    ->Args({4, 8, 0, 1, 2, 0})
+    ->Args({4, 8, 0, 0, 1, 0})
+    ->Args({10, 20, 0, 0, 2, 0})
+    ->Args({10, 20, 0, 0, 2, 1})
+    ->Args({10, 20, 0, 1, 2, 0})
+    ->Args({10, 20, 0, 0, 1, 0})
+    ->Args({25, 50, 0, 0, 2, 0})
+    ->Args({25, 50, 0, 0, 2, 1})
+    ->Args({25, 50, 0, 1, 2, 0})
+    ->Args({25, 50, 0, 3, 2, 0})
     ->Unit(benchmark::kMillisecond);
 
 }  // namespace

@@ -4,7 +4,8 @@
 // same solution within the tolerance; it keeps the LU across solves, renews it when the
 // residual stops contracting or another solver factorized the system, and a solve it cannot
 // finish is done again with full Newton. On the paper's linkage and a 3D roof, runs with reuse
-// end where full Newton's do.
+// end where full Newton's do. `jacobian: auto`, the default, reuses the LU in the time steps of a
+// 3D beam model and keeps full Newton, bit for bit, for bar models.
 
 #include "deploydyn/solvers/newton.hpp"
 
@@ -12,6 +13,7 @@
 
 #include <vector>
 
+#include "deploydyn/assembly/assembler.hpp"
 #include "deploydyn/assembly/dense_linear_system.hpp"
 #include "deploydyn/generators/roof.hpp"
 #include "deploydyn/io/model_loader.hpp"
@@ -198,6 +200,41 @@ TEST(ModifiedNewton, RunsEndWhereFullNewtonsEnd) {
     const Eigen::VectorXd& qa = a.records.back().q;
     const Eigen::VectorXd& qb = b.records.back().q;
     EXPECT_LT((qa - qb).cwiseAbs().maxCoeff(), 1e-7) << base.name;
+  }
+}
+
+// The default, `auto`: a 3D beam model's time steps keep their LU and end where full Newton's
+// do; a bar model's run is full Newton's bit for bit; an explicit choice is kept.
+TEST(ModifiedNewton, AutoReusesTheLuForThreeDBeamsOnly) {
+  Model beams = load_model(std::string(DEPLOYDYN_SOURCE_DIR) + "/examples/beams/frame3d.yaml");
+  beams.analysis.end_time_s = 0.1;
+  const Model bars = load_model(testing::example_path("general.yaml"));
+  ASSERT_EQ(beams.analysis.newton.jacobian, NewtonOptions::Jacobian::automatic);
+  ASSERT_EQ(bars.analysis.newton.jacobian, NewtonOptions::Jacobian::automatic);
+  EXPECT_EQ(resolved_jacobian(beams.analysis.newton, Assembler(beams)).jacobian, NewtonOptions::Jacobian::reuse);
+  EXPECT_EQ(resolved_jacobian(bars.analysis.newton, Assembler(bars)).jacobian, NewtonOptions::Jacobian::full);
+  NewtonOptions chosen = beams.analysis.newton;
+  chosen.jacobian = NewtonOptions::Jacobian::full;
+  EXPECT_EQ(resolved_jacobian(chosen, Assembler(beams)).jacobian, NewtonOptions::Jacobian::full);
+
+  for (const bool three_d_beams : {true, false}) {
+    const Model& base = three_d_beams ? beams : bars;
+    Model full = base;
+    full.analysis.newton.jacobian = NewtonOptions::Jacobian::full;
+    const testing::RunResult a = testing::run(base), b = testing::run(full);
+    ASSERT_EQ(a.report.status, RunStatus::completed) << a.report.message;
+    ASSERT_EQ(b.report.status, RunStatus::completed) << b.report.message;
+    ASSERT_EQ(a.report.steps, b.report.steps);
+    const Eigen::VectorXd& q_auto = a.records.back().q;
+    const Eigen::VectorXd& q_full = b.records.back().q;
+    if (three_d_beams) {
+      EXPECT_LT(a.report.factorizations, a.report.newton_iterations / 2);
+      EXPECT_LT((q_auto - q_full).cwiseAbs().maxCoeff(), 1e-9);
+    } else {
+      EXPECT_EQ(a.report.factorizations, a.report.newton_iterations);
+      EXPECT_EQ(a.report.newton_iterations, b.report.newton_iterations);
+      EXPECT_TRUE(q_auto == q_full) << "bit for bit";
+    }
   }
 }
 

@@ -1691,8 +1691,9 @@ class ModelReader {
     spec.expect_keys(model_keys::kNewton);
     NewtonOptions& newton = model_.analysis.newton;
     if (const auto jacobian = spec.find("jacobian")) {
-      newton.jacobian = jacobian->choice({"full", "reuse"}) == 0 ? NewtonOptions::Jacobian::full
-                                                                 : NewtonOptions::Jacobian::reuse;
+      constexpr std::array kinds{NewtonOptions::Jacobian::automatic, NewtonOptions::Jacobian::full,
+                                 NewtonOptions::Jacobian::reuse};
+      newton.jacobian = kinds[jacobian->choice({"auto", "full", "reuse"})];
     }
     if (const auto max_iterations = spec.find("max_iterations")) {
       newton.max_iterations = max_iterations->integer(1);

@@ -187,9 +187,11 @@ struct NewtonOptions {
   double constraint_tolerance_m = 1e-10;  // ‖Φ‖∞ (m or rad·m)
   double displacement_tolerance_m = 1e-12;  // ‖Δq‖∞ that counts as converged
   // full: a new matrix and LU every iteration; reuse: modified Newton, keeping the last LU
-  // (across steps too) while the residual contracts fast enough (solvers/newton.hpp).
-  enum class Jacobian { full, reuse };
-  Jacobian jacobian = Jacobian::full;
+  // (across steps too) while the residual contracts fast enough (solvers/newton.hpp);
+  // automatic: reuse in the time steps of models whose matrix costs most against a residual,
+  // full otherwise (solvers/newton.hpp, resolved_jacobian).
+  enum class Jacobian { automatic, full, reuse };
+  Jacobian jacobian = Jacobian::automatic;
 };
 
 // Time integrator. All three are members of the generalized-α family in the form of Arnold &

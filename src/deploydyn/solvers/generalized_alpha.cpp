@@ -125,7 +125,7 @@ GeneralizedAlphaIntegrator::GeneralizedAlphaIntegrator(const Assembler& assemble
                                                        const AnalysisOptions& options)
     : coefficients_(GeneralizedAlphaCoefficients::from(options.integrator)),
       equations_(std::make_unique<GeneralizedAlphaEquations>(assembler, coefficients_)),
-      newton_(options.newton) {}
+      newton_(resolved_jacobian(options.newton, assembler)) {}
 
 GeneralizedAlphaIntegrator::~GeneralizedAlphaIntegrator() = default;
 

@@ -5,13 +5,25 @@
 #include <algorithm>
 #include <limits>
 
+#include "deploydyn/assembly/assembler.hpp"
 #include "deploydyn/solvers/convergence_test.hpp"
 
 namespace deploydyn {
 
+NewtonOptions resolved_jacobian(NewtonOptions options, const Assembler& assembler) {
+  if (options.jacobian != NewtonOptions::Jacobian::automatic) return options;
+  // 3D beams: every node's frame brings six rows and a 9 × 9 block to eliminate, and each beam
+  // a dense tangent, so a new matrix and LU cost several residuals; on the canopy modified
+  // Newton takes 0.44 against 0.69 ms a step (docs/performance.md, "3D beams"). Bar models keep
+  // full Newton, about one iteration a step, and their results bit for bit.
+  options.jacobian = assembler.mass_definite_on_constraints_only() ? NewtonOptions::Jacobian::reuse
+                                                                   : NewtonOptions::Jacobian::full;
+  return options;
+}
+
 NewtonResult NewtonSolver::solve(DiscreteEquations& equations, LinearSystem& system,
                                  Eigen::VectorXd& q, Eigen::VectorXd& lambda) {
-  if (options_.jacobian == NewtonOptions::Jacobian::full) return iterate(equations, system, q, lambda, false);
+  if (options_.jacobian != NewtonOptions::Jacobian::reuse) return iterate(equations, system, q, lambda, false);
   q_start_ = q;
   lambda_start_ = lambda;
   NewtonResult reused = iterate(equations, system, q, lambda, true);

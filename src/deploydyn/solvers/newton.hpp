@@ -19,6 +19,8 @@
 // contracts. The LU is renewed at the start of the next solve when the last one took more
 // iterations than the mean cost per solve since the LU was made, the LU counted as
 // kLuCostInIterations iterations (an age-replacement rule, docs/theory.md "Modified Newton").
+// NewtonOptions::jacobian = automatic is full Newton here; a time integrator resolves it for
+// its model first (resolved_jacobian).
 
 #include <string>
 
@@ -26,6 +28,8 @@
 #include "deploydyn/solvers/discrete_equations.hpp"
 
 namespace deploydyn {
+
+class Assembler;
 
 struct NewtonResult {
   bool converged = false;
@@ -39,6 +43,10 @@ struct NewtonResult {
   Eigen::MatrixXd null_vectors;         // when the matrix was singular (see FactorizationStatus)
   bool singular = false;               // the failure was a singular matrix
 };
+
+// What `jacobian: auto` means for the time steps of this model: reuse where the iteration
+// matrix costs most against a residual, full otherwise (docs/theory.md, "Modified Newton").
+NewtonOptions resolved_jacobian(NewtonOptions options, const Assembler& assembler);
 
 // Keeps its work vectors from one solve to the next: no heap work in a time step's Newton loop.
 class NewtonSolver {
