@@ -275,6 +275,8 @@ void Assembler::switched_constraint_force(const History& history, const Eigen::V
   LocalVector phi;
   LocalJacobian jacobian;
   for (std::size_t c = first_switched_; c < constraints_.size(); ++c) {
+    // Switched off: B = 0, no force (its evaluation added ±0 to entries never −0: the same bits).
+    if (!constraint_active(history, c)) continue;
     const Constraint& con = *constraints_[c];
     const std::span<const int> dofs = con.dofs();
     phi.resize(con.n_equations());
