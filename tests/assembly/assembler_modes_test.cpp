@@ -124,5 +124,35 @@ TEST_F(AssemblerModes, TheAssemblersOwnEvaluationsHaveEveryHingeFree) {
   EXPECT_TRUE(phi.tail(assembler.n_switched_equations()).isZero(0.0));  // free: the locks read Φ = 0
 }
 
+// A free lock's B, Bᵀ and H(λ) are zeros whose entries the pattern keeps, and the iteration
+// matrix moves past them instead of adding them (Assembler::for_each_matrix_block, ZeroBlock).
+// With h1 free (not sliding) the matrix is the one with h1 latched at λ = 0 but for h1's lock
+// row and column: zeros and s on the diagonal instead of B. Every other entry in its place.
+TEST_F(AssemblerModes, AFreeLockLeavesEveryOtherEntryInItsPlace) {
+  const Assembler assembler(model_);
+  const auto system = make_linear_system(assembler);
+  const Eigen::VectorXd latched = history(assembler, 0);
+  Eigen::VectorXd free = latched;
+  free[kMode] = static_cast<double>(HingeMode::free);  // h1: slip 0 as latched, so no friction
+  const int n = assembler.n_dofs();
+  Eigen::VectorXd q = assembler.initial_coordinates(), v = Eigen::VectorXd::LinSpaced(n, 0.3, -0.7);
+  for (int i = 0; i < n; ++i) q[i] += 0.05 * std::sin(1.0 + 3.0 * i);
+  const int lock_row = n + assembler.n_equations() - assembler.n_switched_equations();  // h1's lock
+  Eigen::VectorXd lambda = Eigen::VectorXd::LinSpaced(assembler.n_equations(), -2.0, 3.0);
+  lambda[lock_row - n] = 0.0;  // latched: H(λ) = 0 as well
+  const double scale = 2.0;
+  const auto dense = [&](const Eigen::VectorXd& h) {
+    assembler.at_modes(h).iteration_matrix(q, 0.3, 1.0, lambda, {1.0, 1.0, scale, 0.5, &v}, *system);
+    return system->to_dense();
+  };
+  const Eigen::MatrixXd with_free = dense(free), with_latched = dense(latched);
+  EXPECT_GT(with_latched.row(lock_row).head(n).cwiseAbs().maxCoeff(), 0.0);  // B: the test sees the lock
+  Eigen::MatrixXd expected = with_latched;
+  expected.row(lock_row).setZero();
+  expected.col(lock_row).setZero();
+  expected(lock_row, lock_row) = scale;
+  EXPECT_TRUE(with_free.cwiseEqual(expected).all()) << (with_free - expected).cwiseAbs().maxCoeff();
+}
+
 }  // namespace
 }  // namespace deploydyn

@@ -196,6 +196,71 @@ TEST(Hinge, SharedKinematicsMatchFreshEvaluationBetweenBars3D) {
   check_shared_kinematics_match_fresh(kHingeBetweenBars3D);
 }
 
+// The step's end takes θ at its start from the last step's end (KinematicsLease::
+// remember_step_end, θ alone: HingeRecord::angle) instead of evaluating θ, ∇θ there again.
+// Three step ends, with forces at other points between them as Newton evaluates them, write the
+// history (the dissipated energy from θ at both ends), the verdict and the events of a fresh
+// group at each end, bit for bit; and θ alone is angle_and_gradient's θ bit for bit.
+void check_step_ends_match_fresh(const std::string& yaml) {
+  const Model model = load_model_from_string(yaml, "hinge");
+  const Assembler reused(model);
+  const ElementGroup& group = *reused.element_groups()[hinge_group_index()];
+  const int n = reused.n_dofs();
+  std::vector<Eigen::VectorXd> q(4, reused.initial_coordinates()), v(4, Eigen::VectorXd::LinSpaced(n, 0.3, -0.7));
+  for (std::size_t k = 1; k < q.size(); ++k) {
+    for (int i = 0; i < n; ++i) q[k][i] += 0.01 * static_cast<double>(k) * std::sin(1.0 + 3.0 * i + static_cast<double>(k));
+    v[k] *= std::cos(static_cast<double>(k));
+  }
+  std::vector<double> before(static_cast<std::size_t>(switching(group).n_history()));
+  switching(group).initial_history(before);
+  before[hinge::history::kMode] = static_cast<double>(HingeMode::free);
+  const Eigen::VectorXd lambda = Eigen::VectorXd::Zero(reused.n_equations());
+  for (std::size_t k = 0; k + 1 < q.size(); ++k) {
+    const Eigen::VectorXd iterate = 0.5 * (q[k] + q[k + 1]);  // Newton's points evict the step's start
+    hinge_force(group, n, iterate, v[k + 1], before);
+    hinge_force(group, n, q[k + 1], v[k + 1], before);
+    const double lock_torque = 0.0;  // the lock's λ, once the hinge sticks
+    const StepEnds ends{0.1 * static_cast<double>(k), 0.1 * static_cast<double>(k + 1), q[k], v[k], q[k + 1], v[k + 1],
+                        lambda, true, std::span<const double>(&lock_torque, 1)};
+    std::vector<double> after(before.size()), after_fresh(before.size());
+    std::vector<ElementEvent> events, events_fresh;
+    const StepVerdict verdict = switching(group).end_step(ends, before, after, events);
+    const Assembler fresh(model);
+    const StepVerdict verdict_fresh =
+        switching(*fresh.element_groups()[hinge_group_index()]).end_step(ends, before, after_fresh, events_fresh);
+    EXPECT_EQ(verdict, verdict_fresh) << "step " << k;
+    EXPECT_EQ(events.size(), events_fresh.size()) << "step " << k;
+    for (std::size_t j = 0; j < after.size(); ++j) {
+      EXPECT_EQ(std::bit_cast<std::uint64_t>(after[j]), std::bit_cast<std::uint64_t>(after_fresh[j])) << "step " << k << ", slot " << j;
+    }
+    if (verdict == StepVerdict::accept) EXPECT_NE(after[hinge::history::kDissipated], before[hinge::history::kDissipated]);
+    before = after;
+  }
+  const HingeRecord record = [&] {
+    HingeRecord r;
+    r.element = &model.hinges[0];
+    r.dimension = model.dimension;
+    for (const int node : model.hinges[0].nodes) {
+      for (int axis = 0; axis < model.dimension; ++axis) r.dofs.push_back(reused.dof_map().index(node, axis));
+    }
+    r.geometry = HingeAngle(model.dimension == 2 ? Eigen::Vector3d::UnitZ() : model.hinges[0].axis);
+    return r;
+  }();
+  for (const Eigen::VectorXd& x : q) {
+    const HingeVector local = record.gather(x);
+    EXPECT_EQ(std::bit_cast<std::uint64_t>(record.angle(local)),
+              std::bit_cast<std::uint64_t>(record.angle_and_gradient(local).angle_rad));
+  }
+}
+
+TEST(Hinge, StepEndsThroughTheMemoMatchFreshGroupsBetweenBars2D) {
+  check_step_ends_match_fresh(kHingeBetweenBars2D);
+}
+
+TEST(Hinge, StepEndsThroughTheMemoMatchFreshGroupsBetweenBars3D) {
+  check_step_ends_match_fresh(kHingeBetweenBars3D);
+}
+
 // HingeAngle::wrapped skips std::remainder for |angle| < 2π: the same bits as remainder,
 // at the edges of its shortcuts (±π, ±2π, one ulp either side) and beyond them.
 TEST(Hinge, WrappedAngleIsRemainderBitForBit) {

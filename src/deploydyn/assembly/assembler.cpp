@@ -7,6 +7,7 @@
 #include <cmath>
 #include <limits>
 #include <stdexcept>
+#include <type_traits>
 
 #include "deploydyn/assembly/model_constraints.hpp"
 #include "deploydyn/constraints/frame_orthonormality.hpp"
@@ -27,6 +28,14 @@ using LocalJacobian = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0,
 // H(λ) on the stack too: a heap-allocated one per nonlinear constraint and matrix was 115 of a
 // 100-hinge chain's 119 allocations a step (docs/performance.md, "Hinges and cables at scale").
 using LocalHessian = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, kMaxConstraintDofs, kMaxConstraintDofs>;
+// The B, Bᵀ or H block of a switched-off constraint: zeros whose entries the pattern keeps. The
+// iteration matrix moves past them instead of adding them (a free lock's blocks were 6 % of a
+// hinged chain's step, docs/performance.md "Hinges and cables at scale"); adding +0 changed
+// nothing but a −0 entry's sign.
+struct ZeroBlock {
+  std::size_t rows = 0, cols = 0;
+  double operator()(std::size_t, std::size_t) const { return 0.0; }
+};
 
 
 // The rows of a group's switched constraint (a hinge lock) among the constraints: its size and
@@ -266,6 +275,8 @@ void Assembler::switched_constraint_force(const History& history, const Eigen::V
   LocalVector phi;
   LocalJacobian jacobian;
   for (std::size_t c = first_switched_; c < constraints_.size(); ++c) {
+    // Switched off: B = 0, no force (its evaluation added ±0 to entries never −0: the same bits).
+    if (!constraint_active(history, c)) continue;
     const Constraint& con = *constraints_[c];
     const std::span<const int> dofs = con.dofs();
     phi.resize(con.n_equations());
@@ -428,15 +439,29 @@ void Assembler::for_each_matrix_block(const History& history, const Eigen::Vecto
     const int n_eq = con.n_equations();
     const auto n_local = static_cast<Eigen::Index>(con.dofs().size());
     const bool active = constraint_active(history, c);
-    if (active) {
-      phi.resize(n_eq);
-      jacobian.resize(n_eq, n_local);
-      evaluate_constraint(history, c, q, t, phi, jacobian);
-    } else {
-      jacobian.setZero(n_eq, n_local);  // switched off: B = 0 (constraint.hpp)
-    }
     for (int k = 0; k < n_eq; ++k) rows[k] = n_dofs() + first_row_[c] + k;
     const std::span<const int> row_span(rows.data(), n_eq);
+    if (!active) {  // switched off: B = 0, H = 0 (constraint.hpp), their entries kept in the pattern
+      const auto n = static_cast<std::size_t>(n_local);
+      if (con.jacobian_diagonal()) {
+        for (int k = 0; k < n_eq; ++k) {
+          emit(row_span.subspan(k, 1), con.dofs().subspan(k, 1), ZeroBlock{1, 1});
+          emit(con.dofs().subspan(k, 1), row_span.subspan(k, 1), ZeroBlock{1, 1});
+        }
+      } else {
+        emit(row_span, con.dofs(), ZeroBlock{row_span.size(), n});
+        emit(con.dofs(), row_span, ZeroBlock{n, row_span.size()});
+      }
+      if (con.nonlinear()) emit(con.dofs(), con.dofs(), ZeroBlock{n, n});
+      if (con.switchable()) {  // its rows read s Δλ̂ = 0 (constraint.hpp)
+        const Eigen::Matrix<double, 1, 1> diagonal(w.constraint_scale);
+        for (int k = 0; k < n_eq; ++k) emit(row_span.subspan(k, 1), row_span.subspan(k, 1), diagonal);
+      }
+      continue;
+    }
+    phi.resize(n_eq);
+    jacobian.resize(n_eq, n_local);
+    evaluate_constraint(history, c, q, t, phi, jacobian);
     jacobian *= w.constraint_scale;
     if (con.jacobian_diagonal()) {
       assert(jacobian.isDiagonal(0.0));  // the pattern holds the diagonal only
@@ -449,13 +474,13 @@ void Assembler::for_each_matrix_block(const History& history, const Eigen::Vecto
       emit(row_span, con.dofs(), jacobian);
       emit(con.dofs(), row_span, jacobian.transpose());
     }
-    if (con.nonlinear()) {  // switched off: H = 0, its entries kept in the pattern
+    if (con.nonlinear()) {
       hessian.setZero(n_local, n_local);
-      if (active) add_hessian_term(history, c, q, t, lambda.segment(first_row_[c], n_eq), hessian);
+      add_hessian_term(history, c, q, t, lambda.segment(first_row_[c], n_eq), hessian);
       emit(con.dofs(), con.dofs(), w.stiffness * hessian);
     }
-    if (con.switchable()) {  // switched off: its rows read s Δλ̂ = 0 (constraint.hpp)
-      const Eigen::Matrix<double, 1, 1> diagonal(active ? 0.0 : w.constraint_scale);
+    if (con.switchable()) {  // switched on: its rows' diagonal is 0
+      const Eigen::Matrix<double, 1, 1> diagonal(0.0);
       for (int k = 0; k < n_eq; ++k) emit(row_span.subspan(k, 1), row_span.subspan(k, 1), diagonal);
     }
   }
@@ -480,6 +505,10 @@ void Assembler::iteration_matrix(const History& history, const Eigen::VectorXd& 
   if (rayleigh_ && w.rates != nullptr) rayleigh_->add_stiffness_block(groups_, q, t, w.damping, values, system.slots());
   for_each_matrix_block(history, q, t, lambda, weights,
                         [&](std::span<const int> rows, std::span<const int> cols, const auto& block) {
+                          if constexpr (std::is_same_v<std::decay_t<decltype(block)>, ZeroBlock>) {
+                            slot += rows.size() * cols.size();  // nothing to add
+                            return;
+                          }
                           for (std::size_t j = 0; j < cols.size(); ++j) {
                             for (std::size_t i = 0; i < rows.size(); ++i) values[*slot++] += block(i, j);
                           }

@@ -353,9 +353,14 @@ class HingeGroup final : public ElementGroup, public SwitchingGroup {
     bool valid = false;
     bool with_hessian = false;
   };
+  // And θ at the last accepted step's end, which the next step's end asks for as its start:
+  // by then the Newton iterates had evicted it, one θ, ∇θ a hinge and step evaluated again.
   struct KinematicsSlots {
     std::array<CachedKinematics, 2> entries;
     int newest = 0;
+    HingeVector end_q;
+    double end_angle_rad = 0.0;
+    bool end_valid = false;
   };
   class KinematicsLease {
    public:
@@ -397,6 +402,26 @@ class HingeGroup final : public ElementGroup, public SwitchingGroup {
       c.valid = true;
       c.with_hessian = hessian;
       return c.k;
+    }
+
+    // θ alone at q: the last step's end, an entry's, or evaluated without evicting either entry.
+    double angle(std::size_t i, const HingeVector& q) const {
+      const HingeRecord& r = group_.records_[i];
+      if (!owned_) return r.angle(q);
+      const KinematicsSlots& slots = group_.kinematics_[i];
+      if (slots.end_valid && same_bits(slots.end_q, q)) return slots.end_angle_rad;
+      for (const CachedKinematics& c : slots.entries) {
+        if (c.valid && same_bits(c.q, q)) return c.k.angle_rad;
+      }
+      return r.angle(q);
+    }
+    // θ at an accepted step's end, for the next step's end.
+    void remember_step_end(std::size_t i, const HingeVector& q, double angle_rad) {
+      if (!owned_) return;
+      KinematicsSlots& slots = group_.kinematics_[i];
+      slots.end_q = q;
+      slots.end_angle_rad = angle_rad;
+      slots.end_valid = true;
     }
 
    private:
@@ -529,10 +554,8 @@ class HingeGroup final : public ElementGroup, public SwitchingGroup {
       events.push_back({t, static_cast<int>(i), what, value});
       return true;
     };
-    const HingeVector q1 = r.gather(ends.q_after);
-    const HingeKinematics& k1 = lease.at(i, q1, false);
-    const HingeKinematics& k0 = lease.at(i, r.gather(ends.q_before), false);
-    const double angle0 = k0.angle_rad, angle1 = k1.angle_rad;
+    const HingeVector q1 = r.gather(ends.q_after), q0 = r.gather(ends.q_before);
+    const double angle1 = lease.angle(i, q1), angle0 = lease.angle(i, q0);
     const double lock = lock_torque(i, mode, ends);
     switch (mode) {
       case HingeMode::free: {
@@ -547,8 +570,8 @@ class HingeGroup final : public ElementGroup, public SwitchingGroup {
         // falling chain of 100 hinged bars: without it, hinges went back and forth between
         // sticking and slipping up to the 8 redos of nearly every step, 20 Newton iterations).
         if (e.friction_coefficient > 0.0 && slip != 0.0 && !driven_ && before[kFrictionSwitched] == 0.0) {
-          const double rate0 = k0.gradient.dot(r.gather(ends.v_before));
-          const double rate1 = k1.gradient.dot(r.gather(ends.v_after));
+          const double rate0 = lease.at(i, q0, false).gradient.dot(r.gather(ends.v_before));
+          const double rate1 = lease.at(i, q1, false).gradient.dot(r.gather(ends.v_after));
           if (rate1 * slip < 0.0) {  // came to rest inside the step: stick where θ̇ = 0
             const double share = rate0 != rate1 ? std::clamp(rate0 / (rate0 - rate1), 0.0, 1.0) : 0.0;
             const double rest = angle0 + share * (angle1 - angle0);
@@ -591,7 +614,8 @@ class HingeGroup final : public ElementGroup, public SwitchingGroup {
     const auto mode = static_cast<HingeMode>(static_cast<int>(before[kMode]));
     const HingeVector q1 = r.gather(ends.q_after), v1 = r.gather(ends.v_after);
     const HingeKinematics& k1 = lease.at(i, q1, false);
-    const double angle0 = lease.at(i, r.gather(ends.q_before), false).angle_rad;
+    const double angle0 = lease.angle(i, r.gather(ends.q_before));
+    lease.remember_step_end(i, q1, k1.angle_rad);
     const double slip = mode == HingeMode::free && r.element->friction_coefficient > 0.0 ? before[kSlip] : 0.0;
     const HingeTorques torques = rate_torques(r, k1, q1, v1, ends.time_after_s, slip);
     const double lock = lock_torque(i, mode, ends);

@@ -15,6 +15,11 @@ Eigen::Vector3d arm(const HingeVector& q, int dimension, int k) {
 
 }  // namespace
 
+double HingeRecord::angle(const HingeVector& q) const {
+  if (element->form == HingeElement::Form::rotations) return q[1] - q[0];
+  return geometry.angle_near(arm(q, dimension, 0), arm(q, dimension, 1), element->initial_angle_rad);
+}
+
 void HingeRecord::angle_and_gradient(const HingeVector& q, HingeKinematics& k) const {
   if (element->form == HingeElement::Form::rotations) {
     k.angle_rad = q[1] - q[0];

@@ -63,6 +63,8 @@ struct HingeRecord {
   }
 
   HingeKinematics kinematics(const HingeVector& q) const;
+  // θ alone, the same bits as angle_and_gradient's: the step's end needs θ at its start.
+  double angle(const HingeVector& q) const;
   // θ and ∇θ only (the hessian left empty): forces, energies and the modes' tests need no
   // more, and ∇²θ is most of a hinge's cost per residual (docs/performance.md, "Hinges and
   // cables at scale").
