@@ -233,7 +233,9 @@ void check_step_ends_match_fresh(const std::string& yaml) {
     for (std::size_t j = 0; j < after.size(); ++j) {
       EXPECT_EQ(std::bit_cast<std::uint64_t>(after[j]), std::bit_cast<std::uint64_t>(after_fresh[j])) << "step " << k << ", slot " << j;
     }
-    if (verdict == StepVerdict::accept) EXPECT_NE(after[hinge::history::kDissipated], before[hinge::history::kDissipated]);
+    if (verdict == StepVerdict::accept) {
+      EXPECT_NE(after[hinge::history::kDissipated], before[hinge::history::kDissipated]);
+    }
     before = after;
   }
   const HingeRecord record = [&] {
