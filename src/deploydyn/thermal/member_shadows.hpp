@@ -68,8 +68,17 @@ class MemberShadows {
     double radius = 0.0;
     double depth_a = 0.0, depth_b = 0.0;  // x · s at the ends
     Eigen::Vector2d box_min, box_max;     // the rectangle's bounding box
+    // The parallelogram of the sample centres, middle ± half_run ± half_width (from the first to
+    // the last sample along, the outer rows across), for shade_by's quick rejects; |axis|; and
+    // the size of the coordinates, for their round-off.
+    Eigen::Vector2d middle, half_run, half_width;
+    double axis_length = 0.0;
+    double coordinate_size = 0.0;
     bool lit = false;                     // false end-on to the sun: no strip, the rest unset
   };
+  // Whether no sample centre of `lit` can lie in `occluder`'s rectangle: outside the band across
+  // it or beyond its ends, by more than any round-off of shade_samples' arithmetic.
+  static bool samples_clear_of(const Silhouette& lit, const Silhouette& occluder);
   struct Box {
     Eigen::Vector2d min, max;
   };
