@@ -42,7 +42,15 @@ struct RowCondition {
   // Narrows [low, high] to the ξ where it holds on some row of [eta_low, eta_high].
   void clip(double eta_low, double eta_high, double& low, double& high) const {
     const double c_a = at_centre + per_eta * eta_low, c_b = at_centre + per_eta * eta_high;
-    const double c_low = std::min(c_a, c_b), c_high = std::max(c_a, c_b);
+    narrow(std::min(c_a, c_b), std::max(c_a, c_b), low, high);
+  }
+  // The same on the one row at η, with fewer operations: clip(η, η) takes c_low = c_high = c(η).
+  void clip_row(double eta, double& low, double& high) const {
+    const double c = at_centre + per_eta * eta;
+    narrow(c, c, low, high);
+  }
+  // For c(η) within [c_low, c_high].
+  void narrow(double c_low, double c_high, double& low, double& high) const {
     if (slope == 0.0) {
       if (c_high < below || c_low > above) high = -1.0;
     } else if (slope > 0.0) {
@@ -51,20 +59,6 @@ struct RowCondition {
     } else {
       low = std::max(low, (above - c_low) * inverse_slope);
       high = std::min(high, (below - c_high) * inverse_slope);
-    }
-  }
-  // The same on the one row at η, with fewer operations: clip(η, η) takes c_low = c_high = c(η),
-  // so its bounds are these, bit for bit.
-  void clip_row(double eta, double& low, double& high) const {
-    const double c = at_centre + per_eta * eta;
-    if (slope == 0.0) {
-      if (c < below || c > above) high = -1.0;
-    } else if (slope > 0.0) {
-      low = std::max(low, (below - c) * inverse_slope);
-      high = std::min(high, (above - c) * inverse_slope);
-    } else {
-      low = std::max(low, (above - c) * inverse_slope);
-      high = std::min(high, (below - c) * inverse_slope);
     }
   }
 };
@@ -299,13 +293,13 @@ void MemberShadows::compute(std::span<const MemberCapsule> members, const Eigen:
   const int n_samples = samples_along_ * samples_across_;
   for (const int i : lit_) {
     const Silhouette& lit = silhouettes_[static_cast<std::size_t>(i)];
-    std::fill(sample_shadowed_.begin(), sample_shadowed_.end(), char{0});
-    int shadowed = 0;
+    int shadowed = 0;  // the samples start unmarked: cleared after the last member that marked any
     for_each_in_cells_of(i, [&](int j) {
       if (j != i) shadowed += shade_by(lit, silhouettes_[static_cast<std::size_t>(j)]);
       return shadowed < n_samples;
     });
     shadowed_fraction[static_cast<std::size_t>(i)] = static_cast<double>(shadowed) / n_samples;
+    if (shadowed > 0) std::fill(sample_shadowed_.begin(), sample_shadowed_.end(), char{0});
   }
 }
 
@@ -392,14 +386,14 @@ void MemberShadows::update(std::span<const MemberCapsule> members, const Eigen::
   const int n_samples = samples_along_ * samples_across_;
   for (const int i : lit_) {
     const Silhouette& lit = silhouettes_[static_cast<std::size_t>(i)];
-    std::fill(sample_shadowed_.begin(), sample_shadowed_.end(), char{0});
-    int shadowed = 0;
+    int shadowed = 0;  // the samples start unmarked: cleared after the last member that marked any
     for (int m = pair_start_[static_cast<std::size_t>(i)]; m < pair_start_[static_cast<std::size_t>(i) + 1]; ++m) {
       const Silhouette& other = silhouettes_[static_cast<std::size_t>(pair_members_[static_cast<std::size_t>(m)])];
       if (other.lit) shadowed += shade_by(lit, other);
       if (shadowed == n_samples) break;
     }
     shadowed_fraction[static_cast<std::size_t>(i)] = static_cast<double>(shadowed) / n_samples;
+    if (shadowed > 0) std::fill(sample_shadowed_.begin(), sample_shadowed_.end(), char{0});
   }
 }
 
