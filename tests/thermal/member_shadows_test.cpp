@@ -87,9 +87,10 @@ TEST(MemberShadows, AnEdgeAcrossTheMemberIsWithinOneRowAlong) {
 }
 
 // shade_by clears a pair before the exact test when no sample centre can lie in the occluder's
-// rectangle, by a margin above round-off (10⁻⁹ of the coordinates): an occluder's edge 10⁻¹¹ m
-// inside the outer sample row, or the last sample column, must still shade it, and 10⁻¹¹ m
-// outside must not, the pair turned and moved every way with its sun.
+// rectangle nearer the sun, by a margin above round-off (10⁻⁹ of the coordinates): an occluder's
+// edge 10⁻¹¹ m inside the outer sample row, or the last sample column, or its strip 10⁻¹¹ m
+// beyond the clearance above the samples, must still shade them, and 10⁻¹¹ m short must not,
+// the pair turned and moved every way with its sun.
 TEST(MemberShadows, AnOccludersEdgeJustInsideTheOuterSamplesShadesThem) {
   std::mt19937 random(29);
   std::uniform_real_distribution<double> unit(-1.0, 1.0);
@@ -112,7 +113,11 @@ TEST(MemberShadows, AnOccludersEdgeJustInsideTheOuterSamplesShadesThem) {
       // An upper member from x₀ on covers the last column (x = 15/16) while x₀ ≤ 15/16: 4 samples.
       const std::array<MemberCapsule, 2> beyond{placed({0, 0, 0}, {1, 0, 0}),
                                                 placed({15.0 / 16.0 - inside_m, 0, 0.1}, {2, 0, 0.1})};
-      for (const auto& [members, expected] : {std::pair{beside, covers ? 0.25 : 0.0}, std::pair{beyond, covers ? 0.125 : 0.0}}) {
+      // An upper member right above, nearer the sun by the clearance (10⁻³ r) and a little more, or less.
+      const std::array<MemberCapsule, 2> barely_above{placed({0, 0, 0}, {1, 0, 0}),
+                                                      placed({-0.5, 0, 1e-3 * r + inside_m}, {1.5, 0, 1e-3 * r + inside_m})};
+      for (const auto& [members, expected] : {std::pair{beside, covers ? 0.25 : 0.0}, std::pair{beyond, covers ? 0.125 : 0.0},
+                                              std::pair{barely_above, covers ? 1.0 : 0.0}}) {
         MemberShadows traced(2, 8, 4), updated(2, 8, 4);
         EXPECT_EQ(shadowed(traced, members, sun)[0], expected) << "turn " << turn << ", inside by " << inside_m;
         std::array<double, 2> fractions{-1.0, -1.0};

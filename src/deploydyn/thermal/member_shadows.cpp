@@ -240,12 +240,15 @@ void MemberShadows::see_from_the_sun(std::span<const MemberCapsule> members, con
     s.half_run = (0.5 - 0.5 / samples_along_) * s.axis;  // to the first and last sample centres
     s.half_width = (1.0 - 1.0 / samples_across_) * s.radius * s.across;  // to the outer rows' centres
     s.axis_length = s.axis.norm();
-    s.coordinate_size = std::max(s.box_min.cwiseAbs().maxCoeff(), s.box_max.cwiseAbs().maxCoeff());
+    s.depth_middle = 0.5 * (s.depth_a + s.depth_b);
+    s.half_run_rise = (0.5 - 0.5 / samples_along_) * (s.depth_b - s.depth_a);
+    s.coordinate_size = std::max({s.box_min.cwiseAbs().maxCoeff(), s.box_max.cwiseAbs().maxCoeff(), std::abs(s.depth_a),
+                                  std::abs(s.depth_b)});
     lit_.push_back(static_cast<int>(i));
   }
 }
 
-bool MemberShadows::samples_clear_of(const Silhouette& lit, const Silhouette& occluder) {
+bool MemberShadows::samples_clear_of(const Silhouette& lit, const Silhouette& occluder, double clearance) {
   // A linear function over the parallelogram middle ± half_run ± half_width takes its extremes
   // at the corners: value at the middle ± (|half_run · w| + |half_width · w|). shade_samples
   // finds the same conditions to round-off of a few ulps of the coordinates; the margin, 10⁻⁹ of
@@ -261,8 +264,19 @@ bool MemberShadows::samples_clear_of(const Silhouette& lit, const Silhouette& oc
   const double along = offset.dot(occluder.axis);
   const double along_spread = std::abs(lit.half_run.dot(occluder.axis)) + std::abs(lit.half_width.dot(occluder.axis));
   const double along_margin = margin * occluder.axis_length;
-  return along + along_spread < -along_margin ||
-         along - along_spread > occluder.axis_length * occluder.axis_length + along_margin;
+  if (along + along_spread < -along_margin ||
+      along - along_spread > occluder.axis_length * occluder.axis_length + along_margin) {
+    return true;
+  }
+  // Nearer the sun: the occluder's depth at α(P) = (P − a') · d' / |d'|², extended linearly as
+  // shade_samples' third condition extends it, less the sample's, at least the clearance. Its
+  // round-off grows with the occluder's rise per length seen, |Δz'| / |d'|.
+  const double rise = occluder.depth_b - occluder.depth_a;
+  const double per_along = rise * occluder.inverse_axis_squared;  // the depth per unit of (P − a') · d'
+  const double nearer = occluder.depth_a + along * per_along - lit.depth_middle;
+  const double nearer_spread = std::abs(lit.half_run.dot(occluder.axis) * per_along - lit.half_run_rise) +
+                               std::abs(lit.half_width.dot(occluder.axis) * per_along);
+  return nearer + nearer_spread < clearance - margin * (1.0 + std::abs(rise) / occluder.axis_length);
 }
 
 int MemberShadows::shade_by(const Silhouette& lit, const Silhouette& occluder) {
@@ -274,7 +288,7 @@ int MemberShadows::shade_by(const Silhouette& lit, const Silhouette& occluder) {
   const double clearance = 1e-3 * lit.radius;
   // Nowhere nearer the sun than the farthest sample: it shades none.
   if (std::max(occluder.depth_a, occluder.depth_b) - std::min(lit.depth_a, lit.depth_b) < clearance) return 0;
-  if (samples_clear_of(lit, occluder)) return 0;
+  if (samples_clear_of(lit, occluder, clearance)) return 0;
   return shade_samples(lit, occluder, clearance);
 }
 

@@ -72,13 +72,15 @@ class MemberShadows {
     // the last sample along, the outer rows across), for shade_by's quick rejects; |axis|; and
     // the size of the coordinates, for their round-off.
     Eigen::Vector2d middle, half_run, half_width;
+    double depth_middle = 0.0, half_run_rise = 0.0;  // the depth there, and its change to the outer samples
     double axis_length = 0.0;
-    double coordinate_size = 0.0;
+    double coordinate_size = 0.0;  // the largest of the view's coordinates and the depths
     bool lit = false;                     // false end-on to the sun: no strip, the rest unset
   };
-  // Whether no sample centre of `lit` can lie in `occluder`'s rectangle: outside the band across
-  // it or beyond its ends, by more than any round-off of shade_samples' arithmetic.
-  static bool samples_clear_of(const Silhouette& lit, const Silhouette& occluder);
+  // Whether no sample centre of `lit` can lie in `occluder`'s rectangle with the occluder there
+  // `clearance` nearer the sun: outside the band across it, beyond its ends, or behind it, by
+  // more than any round-off of shade_samples' arithmetic.
+  static bool samples_clear_of(const Silhouette& lit, const Silhouette& occluder, double clearance);
   struct Box {
     Eigen::Vector2d min, max;
   };
