@@ -39,26 +39,17 @@ struct RowCondition {
   double at_centre, per_eta, slope, below, above;
   double inverse_slope = slope != 0.0 ? 1.0 / slope : 0.0;
 
-  // Narrows [low, high] to the ξ where it holds on some row of [eta_low, eta_high].
-  void clip(double eta_low, double eta_high, double& low, double& high) const {
-    const double c_a = at_centre + per_eta * eta_low, c_b = at_centre + per_eta * eta_high;
-    narrow(std::min(c_a, c_b), std::max(c_a, c_b), low, high);
-  }
-  // The same on the one row at η, with fewer operations: clip(η, η) takes c_low = c_high = c(η).
+  // Narrows [low, high] to the ξ where it holds on the sample row at η.
   void clip_row(double eta, double& low, double& high) const {
     const double c = at_centre + per_eta * eta;
-    narrow(c, c, low, high);
-  }
-  // For c(η) within [c_low, c_high].
-  void narrow(double c_low, double c_high, double& low, double& high) const {
     if (slope == 0.0) {
-      if (c_high < below || c_low > above) high = -1.0;
+      if (c < below || c > above) high = -1.0;
     } else if (slope > 0.0) {
-      low = std::max(low, (below - c_high) * inverse_slope);
-      high = std::min(high, (above - c_low) * inverse_slope);
+      low = std::max(low, (below - c) * inverse_slope);
+      high = std::min(high, (above - c) * inverse_slope);
     } else {
-      low = std::max(low, (above - c_low) * inverse_slope);
-      high = std::min(high, (below - c_high) * inverse_slope);
+      low = std::max(low, (above - c) * inverse_slope);
+      high = std::min(high, (below - c) * inverse_slope);
     }
   }
 };
@@ -71,39 +62,27 @@ int MemberShadows::shade_samples(const Silhouette& lit, const Silhouette& occlud
   // coordinates there, α(ξ) along the occluder's axis and β(ξ) across it, are in [0, 1] and
   // [−r, r], and the occluder's strip there, at depth z_a' + α Δz', is nearer the sun by the
   // clearance: three conditions linear in ξ, so the row's shaded samples are one run of them.
-  // Most candidates shade none of the strip's samples: the conditions are set up one at a time,
-  // each narrowing the ξ where the strip may be shaded on some row, until no sample's centre
-  // ξ_i = (i + ½)/n_along is left there. Each row's run lies within the strip's (its η within
-  // [−r, r]), so no sample there is none on any row. The band across the occluder fails most;
-  // a joint's neighbours overlap it only near the joint, often short of the first sample.
+  // shade_by calls it only for the pairs that samples_clear_of could not clear: most of them
+  // shade some sample, so the rows are run through at once.
   const auto first_sample = [&](double from) { return std::max(0, static_cast<int>(std::ceil(from * samples_along_ - 0.5))); };
   const auto last_sample = [&](double to) {
     return std::min(samples_along_ - 1, static_cast<int>(std::floor(to * samples_along_ - 0.5)));
   };
-  double low = 0.0, high = 1.0;
-  const auto none_left = [&] { return !(low <= high) || first_sample(low) > last_sample(high); };
   const Eigen::Vector2d offset = lit.a - occluder.a;
   const RowCondition across{offset.dot(occluder.across), lit.across.dot(occluder.across), lit.axis.dot(occluder.across),
                             -occluder.radius, occluder.radius};
-  across.clip(-lit.radius, lit.radius, low, high);
-  if (none_left()) return 0;
   const double alpha_0 = offset.dot(occluder.axis) * occluder.inverse_axis_squared;
   const double alpha_1 = lit.axis.dot(occluder.axis) * occluder.inverse_axis_squared;
   const double alpha_eta = lit.across.dot(occluder.axis) * occluder.inverse_axis_squared;
   const RowCondition along{alpha_0, alpha_eta, alpha_1, 0.0, 1.0};
-  along.clip(-lit.radius, lit.radius, low, high);
-  if (none_left()) return 0;
   // The depth by which the occluder's strip is nearer the sun than the sample.
   const double occluder_rise = occluder.depth_b - occluder.depth_a, lit_rise = lit.depth_b - lit.depth_a;
   const RowCondition nearer{occluder.depth_a + alpha_0 * occluder_rise - lit.depth_a, alpha_eta * occluder_rise,
                             alpha_1 * occluder_rise - lit_rise, clearance, std::numeric_limits<double>::infinity()};
-  nearer.clip(-lit.radius, lit.radius, low, high);
-  if (none_left()) return 0;
   int newly = 0;
   for (int c = 0; c < samples_across_; ++c) {
     const double eta = (2.0 * (c + 0.5) / samples_across_ - 1.0) * lit.radius;
-    low = 0.0;
-    high = 1.0;
+    double low = 0.0, high = 1.0;
     across.clip_row(eta, low, high);
     along.clip_row(eta, low, high);
     nearer.clip_row(eta, low, high);

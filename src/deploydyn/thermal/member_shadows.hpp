@@ -100,7 +100,8 @@ class MemberShadows {
   // Calls candidate(j) once for each member j listed in the cells of member i's grid box, until it returns false.
   template <class Candidate>
   void for_each_in_cells_of(int i, Candidate&& candidate);
-  // shade_samples after the cheap tests (boxes apart, the occluder nowhere nearer the sun).
+  // shade_samples after the cheap tests (boxes apart, the occluder nowhere nearer the sun,
+  // samples_clear_of).
   int shade_by(const Silhouette& lit, const Silhouette& occluder);
   // update's candidate pairs: listed again from `members`, and whether those listed still hold.
   void list_pairs(std::span<const MemberCapsule> members);
