@@ -1,7 +1,9 @@
 // Shadows between members (thermal/member_shadows.hpp) against the geometry of their
 // silhouettes: a member behind a parallel one of the same width is fully shadowed, half
 // shadowed when offset by half its width; at any offset the fraction is within the sampling
-// error 1/n_across of the overlap of the two strips; a member never shades itself. On a roof
+// error 1/n_across of the overlap of the two strips; a member never shades itself; an
+// occluder's edge 10⁻¹¹ m inside the outer samples still shades them (the quick reject before
+// the exact test keeps a margin above round-off). On a roof
 // and on random tangles, every member's fraction equals that of the same samples' rays cast
 // with Embree (tests/support/ray_cast_shadows.hpp), the ray caster it replaced. `update`, which
 // keeps the candidate pairs between calls (docs/theory.md, "Updating the shadows
