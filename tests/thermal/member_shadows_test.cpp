@@ -1,7 +1,9 @@
 // Shadows between members (thermal/member_shadows.hpp) against the geometry of their
 // silhouettes: a member behind a parallel one of the same width is fully shadowed, half
 // shadowed when offset by half its width; at any offset the fraction is within the sampling
-// error 1/n_across of the overlap of the two strips; a member never shades itself. On a roof
+// error 1/n_across of the overlap of the two strips; a member never shades itself; an
+// occluder's edge 10⁻¹¹ m inside the outer samples still shades them (the quick reject before
+// the exact test keeps a margin above round-off). On a roof
 // and on random tangles, every member's fraction equals that of the same samples' rays cast
 // with Embree (tests/support/ray_cast_shadows.hpp), the ray caster it replaced. `update`, which
 // keeps the candidate pairs between calls (docs/theory.md, "Updating the shadows
@@ -84,6 +86,48 @@ TEST(MemberShadows, AnEdgeAcrossTheMemberIsWithinOneRowAlong) {
   const Eigen::Vector3d sun(-std::sin(std::numbers::pi / 6), 0.0, std::cos(std::numbers::pi / 6));
   MemberShadows fine(2, 64, 4);
   EXPECT_NEAR(shadowed(fine, members, sun)[0], 0.5 + 0.1 * std::tan(std::numbers::pi / 6), 1.0 / 64 + 1e-12);
+}
+
+// shade_by clears a pair before the exact test when no sample centre can lie in the occluder's
+// rectangle nearer the sun, by a margin above round-off (10⁻⁹ of the coordinates): an occluder's
+// edge 10⁻¹¹ m inside the outer sample row, or the last sample column, or its strip 10⁻¹¹ m
+// beyond the clearance above the samples, must still shade them, and 10⁻¹¹ m short must not,
+// the pair turned and moved every way with its sun.
+TEST(MemberShadows, AnOccludersEdgeJustInsideTheOuterSamplesShadesThem) {
+  std::mt19937 random(29);
+  std::uniform_real_distribution<double> unit(-1.0, 1.0);
+  constexpr double r = kRadius_m, tiny_m = 1e-11;
+  for (int turn = 0; turn < 20; ++turn) {
+    const Eigen::Matrix3d rotation =
+        turn == 0 ? Eigen::Matrix3d::Identity()
+                  : Eigen::Quaterniond(unit(random), unit(random), unit(random), unit(random)).normalized().toRotationMatrix();
+    const Eigen::Vector3d shift = turn == 0 ? Eigen::Vector3d::Zero() : Eigen::Vector3d(unit(random), unit(random), unit(random));
+    const auto placed = [&](const Eigen::Vector3d& a, const Eigen::Vector3d& b) {
+      return MemberCapsule{rotation * a + shift, rotation * b + shift, r};
+    };
+    const Eigen::Vector3d sun = rotation * kSunAbove;
+    for (const double inside_m : {tiny_m, -tiny_m}) {
+      const bool covers = inside_m > 0.0;
+      // Along 8 × across 4 samples on the lower member, x ∈ [0, 1]: rows at y = ±r/4, ±3r/4,
+      // columns at x = (i + ½)/8. An upper band |y − y₀| ≤ r reaches the row at 3r/4 while y₀ ≤ 7r/4.
+      const std::array<MemberCapsule, 2> beside{placed({0, 0, 0}, {1, 0, 0}),
+                                                placed({-0.5, 1.75 * r - inside_m, 0.1}, {1.5, 1.75 * r - inside_m, 0.1})};
+      // An upper member from x₀ on covers the last column (x = 15/16) while x₀ ≤ 15/16: 4 samples.
+      const std::array<MemberCapsule, 2> beyond{placed({0, 0, 0}, {1, 0, 0}),
+                                                placed({15.0 / 16.0 - inside_m, 0, 0.1}, {2, 0, 0.1})};
+      // An upper member right above, nearer the sun by the clearance (10⁻³ r) and a little more, or less.
+      const std::array<MemberCapsule, 2> barely_above{placed({0, 0, 0}, {1, 0, 0}),
+                                                      placed({-0.5, 0, 1e-3 * r + inside_m}, {1.5, 0, 1e-3 * r + inside_m})};
+      for (const auto& [members, expected] : {std::pair{beside, covers ? 0.25 : 0.0}, std::pair{beyond, covers ? 0.125 : 0.0},
+                                              std::pair{barely_above, covers ? 1.0 : 0.0}}) {
+        MemberShadows traced(2, 8, 4), updated(2, 8, 4);
+        EXPECT_EQ(shadowed(traced, members, sun)[0], expected) << "turn " << turn << ", inside by " << inside_m;
+        std::array<double, 2> fractions{-1.0, -1.0};
+        updated.update(members, sun, fractions);
+        EXPECT_EQ(fractions[0], expected) << "turn " << turn << ", inside by " << inside_m;
+      }
+    }
+  }
 }
 
 TEST(MemberShadows, AMemberDoesNotShadeItself) {

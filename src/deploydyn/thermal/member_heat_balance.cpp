@@ -18,7 +18,8 @@ double absorbed_power_W(const LumpedMember& member, const Eigen::Vector3d& axis,
   // members hardly hide from each other.
   const double lit = 1.0 - member.shadowed_fraction;
   const double direct_W = around.direct_W_m2 * projected_area_m2(member, axis, around.sun_direction);
-  const double diffuse_W = around.diffuse_W_m2 * member.sunlit_width_m * axis.norm();
+  // In orbit there is no diffuse light: its term is 0 without the axis's length (a square root).
+  const double diffuse_W = around.diffuse_W_m2 == 0.0 ? 0.0 : around.diffuse_W_m2 * member.sunlit_width_m * axis.norm();
   return member.absorptivity * (lit * direct_W + diffuse_W);
 }
 

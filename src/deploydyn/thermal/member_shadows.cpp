@@ -39,18 +39,17 @@ struct RowCondition {
   double at_centre, per_eta, slope, below, above;
   double inverse_slope = slope != 0.0 ? 1.0 / slope : 0.0;
 
-  // Narrows [low, high] to the ξ where it holds on some row of [eta_low, eta_high].
-  void clip(double eta_low, double eta_high, double& low, double& high) const {
-    const double c_a = at_centre + per_eta * eta_low, c_b = at_centre + per_eta * eta_high;
-    const double c_low = std::min(c_a, c_b), c_high = std::max(c_a, c_b);
+  // Narrows [low, high] to the ξ where it holds on the sample row at η.
+  void clip_row(double eta, double& low, double& high) const {
+    const double c = at_centre + per_eta * eta;
     if (slope == 0.0) {
-      if (c_high < below || c_low > above) high = -1.0;
+      if (c < below || c > above) high = -1.0;
     } else if (slope > 0.0) {
-      low = std::max(low, (below - c_high) * inverse_slope);
-      high = std::min(high, (above - c_low) * inverse_slope);
+      low = std::max(low, (below - c) * inverse_slope);
+      high = std::min(high, (above - c) * inverse_slope);
     } else {
-      low = std::max(low, (above - c_low) * inverse_slope);
-      high = std::min(high, (below - c_high) * inverse_slope);
+      low = std::max(low, (above - c) * inverse_slope);
+      high = std::min(high, (below - c) * inverse_slope);
     }
   }
 };
@@ -63,40 +62,30 @@ int MemberShadows::shade_samples(const Silhouette& lit, const Silhouette& occlud
   // coordinates there, α(ξ) along the occluder's axis and β(ξ) across it, are in [0, 1] and
   // [−r, r], and the occluder's strip there, at depth z_a' + α Δz', is nearer the sun by the
   // clearance: three conditions linear in ξ, so the row's shaded samples are one run of them.
-  // Most candidates shade none of the strip's samples: the conditions are set up one at a time,
-  // each narrowing the ξ where the strip may be shaded on some row, until no sample's centre
-  // ξ_i = (i + ½)/n_along is left there. Each row's run lies within the strip's (its η within
-  // [−r, r]), so no sample there is none on any row. The band across the occluder fails most;
-  // a joint's neighbours overlap it only near the joint, often short of the first sample.
+  // shade_by calls it only for the pairs that samples_clear_of could not clear: most of them
+  // shade some sample, so the rows are run through at once.
   const auto first_sample = [&](double from) { return std::max(0, static_cast<int>(std::ceil(from * samples_along_ - 0.5))); };
   const auto last_sample = [&](double to) {
     return std::min(samples_along_ - 1, static_cast<int>(std::floor(to * samples_along_ - 0.5)));
   };
-  double low = 0.0, high = 1.0;
-  const auto none_left = [&] { return !(low <= high) || first_sample(low) > last_sample(high); };
   const Eigen::Vector2d offset = lit.a - occluder.a;
   const RowCondition across{offset.dot(occluder.across), lit.across.dot(occluder.across), lit.axis.dot(occluder.across),
                             -occluder.radius, occluder.radius};
-  across.clip(-lit.radius, lit.radius, low, high);
-  if (none_left()) return 0;
   const double alpha_0 = offset.dot(occluder.axis) * occluder.inverse_axis_squared;
   const double alpha_1 = lit.axis.dot(occluder.axis) * occluder.inverse_axis_squared;
   const double alpha_eta = lit.across.dot(occluder.axis) * occluder.inverse_axis_squared;
   const RowCondition along{alpha_0, alpha_eta, alpha_1, 0.0, 1.0};
-  along.clip(-lit.radius, lit.radius, low, high);
-  if (none_left()) return 0;
   // The depth by which the occluder's strip is nearer the sun than the sample.
   const double occluder_rise = occluder.depth_b - occluder.depth_a, lit_rise = lit.depth_b - lit.depth_a;
   const RowCondition nearer{occluder.depth_a + alpha_0 * occluder_rise - lit.depth_a, alpha_eta * occluder_rise,
                             alpha_1 * occluder_rise - lit_rise, clearance, std::numeric_limits<double>::infinity()};
-  nearer.clip(-lit.radius, lit.radius, low, high);
-  if (none_left()) return 0;
   int newly = 0;
   for (int c = 0; c < samples_across_; ++c) {
     const double eta = (2.0 * (c + 0.5) / samples_across_ - 1.0) * lit.radius;
-    low = 0.0;
-    high = 1.0;
-    for (const RowCondition* condition : {&across, &along, &nearer}) condition->clip(eta, eta, low, high);
+    double low = 0.0, high = 1.0;
+    across.clip_row(eta, low, high);
+    along.clip_row(eta, low, high);
+    nearer.clip_row(eta, low, high);
     if (!(low <= high)) continue;
     for (int i = first_sample(low), last = last_sample(high); i <= last; ++i) {
       char& shaded = sample_shadowed_[static_cast<std::size_t>(c * samples_along_ + i)];
@@ -226,8 +215,47 @@ void MemberShadows::see_from_the_sun(std::span<const MemberCapsule> members, con
     const Eigen::Vector2d half_width = s.radius * s.across.cwiseAbs();
     s.box_min = s.a.cwiseMin(s.a + s.axis) - half_width;
     s.box_max = s.a.cwiseMax(s.a + s.axis) + half_width;
+    s.middle = s.a + 0.5 * s.axis;
+    s.half_run = (0.5 - 0.5 / samples_along_) * s.axis;  // to the first and last sample centres
+    s.half_width = (1.0 - 1.0 / samples_across_) * s.radius * s.across;  // to the outer rows' centres
+    s.axis_length = s.axis.norm();
+    s.depth_middle = 0.5 * (s.depth_a + s.depth_b);
+    s.half_run_rise = (0.5 - 0.5 / samples_along_) * (s.depth_b - s.depth_a);
+    s.coordinate_size = std::max({s.box_min.cwiseAbs().maxCoeff(), s.box_max.cwiseAbs().maxCoeff(), std::abs(s.depth_a),
+                                  std::abs(s.depth_b)});
     lit_.push_back(static_cast<int>(i));
   }
+}
+
+bool MemberShadows::samples_clear_of(const Silhouette& lit, const Silhouette& occluder, double clearance) {
+  // A linear function over the parallelogram middle ± half_run ± half_width takes its extremes
+  // at the corners: value at the middle ± (|half_run · w| + |half_width · w|). shade_samples
+  // finds the same conditions to round-off of a few ulps of the coordinates; the margin, 10⁻⁹ of
+  // them (and 1 nm), is far above it, so a pair cleared here is one it would find shading no
+  // sample: the fractions are unchanged, bit for bit.
+  const double margin = 1e-9 * (1.0 + std::max(lit.coordinate_size, occluder.coordinate_size));
+  const Eigen::Vector2d offset = lit.middle - occluder.a;
+  // Across the occluder: |β| ≤ r' on its strip.
+  const double beta = offset.dot(occluder.across);
+  const double beta_spread = std::abs(lit.half_run.dot(occluder.across)) + std::abs(lit.half_width.dot(occluder.across));
+  if (std::abs(beta) - beta_spread > occluder.radius + margin) return true;
+  // Along it: 0 ≤ (P − a') · d' ≤ |d'|² on its strip.
+  const double along = offset.dot(occluder.axis);
+  const double along_spread = std::abs(lit.half_run.dot(occluder.axis)) + std::abs(lit.half_width.dot(occluder.axis));
+  const double along_margin = margin * occluder.axis_length;
+  if (along + along_spread < -along_margin ||
+      along - along_spread > occluder.axis_length * occluder.axis_length + along_margin) {
+    return true;
+  }
+  // Nearer the sun: the occluder's depth at α(P) = (P − a') · d' / |d'|², extended linearly as
+  // shade_samples' third condition extends it, less the sample's, at least the clearance. Its
+  // round-off grows with the occluder's rise per length seen, |Δz'| / |d'|.
+  const double rise = occluder.depth_b - occluder.depth_a;
+  const double per_along = rise * occluder.inverse_axis_squared;  // the depth per unit of (P − a') · d'
+  const double nearer = occluder.depth_a + along * per_along - lit.depth_middle;
+  const double nearer_spread = std::abs(lit.half_run.dot(occluder.axis) * per_along - lit.half_run_rise) +
+                               std::abs(lit.half_width.dot(occluder.axis) * per_along);
+  return nearer + nearer_spread < clearance - margin * (1.0 + std::abs(rise) / occluder.axis_length);
 }
 
 int MemberShadows::shade_by(const Silhouette& lit, const Silhouette& occluder) {
@@ -239,6 +267,7 @@ int MemberShadows::shade_by(const Silhouette& lit, const Silhouette& occluder) {
   const double clearance = 1e-3 * lit.radius;
   // Nowhere nearer the sun than the farthest sample: it shades none.
   if (std::max(occluder.depth_a, occluder.depth_b) - std::min(lit.depth_a, lit.depth_b) < clearance) return 0;
+  if (samples_clear_of(lit, occluder, clearance)) return 0;
   return shade_samples(lit, occluder, clearance);
 }
 
@@ -257,13 +286,13 @@ void MemberShadows::compute(std::span<const MemberCapsule> members, const Eigen:
   const int n_samples = samples_along_ * samples_across_;
   for (const int i : lit_) {
     const Silhouette& lit = silhouettes_[static_cast<std::size_t>(i)];
-    std::fill(sample_shadowed_.begin(), sample_shadowed_.end(), char{0});
-    int shadowed = 0;
+    int shadowed = 0;  // the samples start unmarked: cleared after the last member that marked any
     for_each_in_cells_of(i, [&](int j) {
       if (j != i) shadowed += shade_by(lit, silhouettes_[static_cast<std::size_t>(j)]);
       return shadowed < n_samples;
     });
     shadowed_fraction[static_cast<std::size_t>(i)] = static_cast<double>(shadowed) / n_samples;
+    if (shadowed > 0) std::fill(sample_shadowed_.begin(), sample_shadowed_.end(), char{0});
   }
 }
 
@@ -350,14 +379,14 @@ void MemberShadows::update(std::span<const MemberCapsule> members, const Eigen::
   const int n_samples = samples_along_ * samples_across_;
   for (const int i : lit_) {
     const Silhouette& lit = silhouettes_[static_cast<std::size_t>(i)];
-    std::fill(sample_shadowed_.begin(), sample_shadowed_.end(), char{0});
-    int shadowed = 0;
+    int shadowed = 0;  // the samples start unmarked: cleared after the last member that marked any
     for (int m = pair_start_[static_cast<std::size_t>(i)]; m < pair_start_[static_cast<std::size_t>(i) + 1]; ++m) {
       const Silhouette& other = silhouettes_[static_cast<std::size_t>(pair_members_[static_cast<std::size_t>(m)])];
       if (other.lit) shadowed += shade_by(lit, other);
       if (shadowed == n_samples) break;
     }
     shadowed_fraction[static_cast<std::size_t>(i)] = static_cast<double>(shadowed) / n_samples;
+    if (shadowed > 0) std::fill(sample_shadowed_.begin(), sample_shadowed_.end(), char{0});
   }
 }
 

@@ -68,8 +68,19 @@ class MemberShadows {
     double radius = 0.0;
     double depth_a = 0.0, depth_b = 0.0;  // x · s at the ends
     Eigen::Vector2d box_min, box_max;     // the rectangle's bounding box
+    // The parallelogram of the sample centres, middle ± half_run ± half_width (from the first to
+    // the last sample along, the outer rows across), for shade_by's quick rejects; |axis|; and
+    // the size of the coordinates, for their round-off.
+    Eigen::Vector2d middle, half_run, half_width;
+    double depth_middle = 0.0, half_run_rise = 0.0;  // the depth there, and its change to the outer samples
+    double axis_length = 0.0;
+    double coordinate_size = 0.0;  // the largest of the view's coordinates and the depths
     bool lit = false;                     // false end-on to the sun: no strip, the rest unset
   };
+  // Whether no sample centre of `lit` can lie in `occluder`'s rectangle with the occluder there
+  // `clearance` nearer the sun: outside the band across it, beyond its ends, or behind it, by
+  // more than any round-off of shade_samples' arithmetic.
+  static bool samples_clear_of(const Silhouette& lit, const Silhouette& occluder, double clearance);
   struct Box {
     Eigen::Vector2d min, max;
   };
@@ -89,7 +100,8 @@ class MemberShadows {
   // Calls candidate(j) once for each member j listed in the cells of member i's grid box, until it returns false.
   template <class Candidate>
   void for_each_in_cells_of(int i, Candidate&& candidate);
-  // shade_samples after the cheap tests (boxes apart, the occluder nowhere nearer the sun).
+  // shade_samples after the cheap tests (boxes apart, the occluder nowhere nearer the sun,
+  // samples_clear_of).
   int shade_by(const Silhouette& lit, const Silhouette& occluder);
   // update's candidate pairs: listed again from `members`, and whether those listed still hold.
   void list_pairs(std::span<const MemberCapsule> members);

@@ -163,16 +163,18 @@ void ThermalCoupling::update_shadows(const Eigen::VectorXd* q, double time_s) {
       capsule.end_b_m = model_.nodes[member.node_b].position_m;
     } else {
       for (int k = 0; k < model_.dimension; ++k) {
-        capsule.end_a_m[k] = (*q)[dofs_.index(member.node_a, k)];
-        capsule.end_b_m[k] = (*q)[dofs_.index(member.node_b, k)];
+        capsule.end_a_m[k] = (*q)[member.first_dof_a + k];
+        capsule.end_b_m[k] = (*q)[member.first_dof_b + k];
       }
     }
     capsule.radius_m = member.outer_radius_m;
   }
   shadow_sun_ = surroundings_at(*model_.environment, time_s).sun_direction.normalized();
-  Eigen::AlignedBox3d box;
-  for (const MemberCapsule& capsule : capsules_) box.extend(capsule.end_a_m).extend(capsule.end_b_m);
-  shadow_extent_m_ = capsules_.empty() ? 0.0 : box.diagonal().norm();
+  if (shadows_on_motion_) {  // only every: auto asks how far the sun's turn moves a shadow
+    Eigen::AlignedBox3d box;
+    for (const MemberCapsule& capsule : capsules_) box.extend(capsule.end_a_m).extend(capsule.end_b_m);
+    shadow_extent_m_ = capsules_.empty() ? 0.0 : box.diagonal().norm();
+  }
   shadows_->update(capsules_, shadow_sun_, shadowed_);
   ++n_shadow_updates_;
   for (std::size_t i = 0; i < members_.size(); ++i) {
