@@ -154,6 +154,7 @@ const BadModelCase kBadModels[] = {
      "must be a whole multiple of step = 0.001 s, got 0.0015 (1.5 steps)"},
     {"load_steps_not_integer.yaml", 5, "analysis.load_steps", "expected an integer, got 2.5"},
     {"beta_out_of_range.yaml", 5, "analysis.integrator.beta", "must be in (0, 0.5], got 0.7"},
+    {"newton_jacobian_unknown.yaml", 5, "analysis.newton.jacobian", "must be one of auto, full, reuse, got 'sometimes'"},
     {"bad_function_type.yaml", 8, "drivers.motor.profile.type",
      "must be one of constant, smooth_step, smooth_trapezoid, paper_eq23, table, polynomial, harmonic, "
      "cosine_ramp, cycloidal, piecewise, sum, got 'sine'"},
