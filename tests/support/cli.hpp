@@ -68,11 +68,13 @@ inline std::string read_text(const std::filesystem::path& file) {
   return text.str();
 }
 
-// A fresh, empty folder under the system's temporary folder, removed again on destruction.
+// A fresh, empty folder under the system's temporary folder, removed again on destruction. Its
+// name carries the process id: two suites run at once (two build trees, two worktrees) would
+// otherwise share it, and a run's result folder lock then fails the other's command.
 class ScratchFolder {
  public:
   explicit ScratchFolder(const std::string& name)
-      : path_(std::filesystem::temp_directory_path() / ("deploydyn_" + name)) {
+      : path_(std::filesystem::temp_directory_path() / ("deploydyn_" + name + "_" + std::to_string(::getpid()))) {
     std::filesystem::remove_all(path_);
   }
   ~ScratchFolder() { std::filesystem::remove_all(path_); }
