@@ -1690,11 +1690,7 @@ class ModelReader {
   void read_newton(const YamlValue& spec) {
     spec.expect_keys(model_keys::kNewton);
     NewtonOptions& newton = model_.analysis.newton;
-    if (const auto jacobian = spec.find("jacobian")) {
-      constexpr std::array kinds{NewtonOptions::Jacobian::automatic, NewtonOptions::Jacobian::full,
-                                 NewtonOptions::Jacobian::reuse};
-      newton.jacobian = kinds[jacobian->choice({"auto", "full", "reuse"})];
-    }
+    if (const auto jacobian = spec.find("jacobian")) newton.jacobian = jacobian->choice(kJacobianKinds);
     if (const auto max_iterations = spec.find("max_iterations")) {
       newton.max_iterations = max_iterations->integer(1);
     }

@@ -635,11 +635,7 @@ void emit_analysis(YamlEmitter& out, const Model& model) {
   emit_number(out, "tol_constraint", analysis.newton.constraint_tolerance_m);
   emit_number(out, "tol_displacement", analysis.newton.displacement_tolerance_m);
   emit_key(out, "jacobian");
-  switch (analysis.newton.jacobian) {
-    case NewtonOptions::Jacobian::automatic: out << "auto"; break;
-    case NewtonOptions::Jacobian::full: out << "full"; break;
-    case NewtonOptions::Jacobian::reuse: out << "reuse"; break;
-  }
+  out << to_string(analysis.newton.jacobian);
   out << YAML::EndMap;
   out << YAML::EndMap;
 

@@ -193,6 +193,12 @@ struct NewtonOptions {
   enum class Jacobian { automatic, full, reuse };
   Jacobian jacobian = Jacobian::automatic;
 };
+inline constexpr NameTable kJacobianKinds{std::array{
+    NamedValue<NewtonOptions::Jacobian>{NewtonOptions::Jacobian::automatic, "auto"},
+    NamedValue<NewtonOptions::Jacobian>{NewtonOptions::Jacobian::full, "full"},
+    NamedValue<NewtonOptions::Jacobian>{NewtonOptions::Jacobian::reuse, "reuse"},
+}};
+inline const char* to_string(NewtonOptions::Jacobian kind) { return kJacobianKinds.name(kind).data(); }
 
 // Time integrator. All three are members of the generalized-α family in the form of Arnold &
 // Brüls (2007) for constrained systems (solvers/generalized_alpha.hpp):
